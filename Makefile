@@ -1,0 +1,30 @@
+# Quick start (see README): `make demo` runs the flagship example, `make test` the test suite.
+# Both create .venv (with the Python found below) and install sealsim into it when needed.
+PYTHON ?= $(shell command -v python3.11 2>/dev/null || command -v python3)
+VENV   := .venv
+BIN    := $(VENV)/bin
+STAMP  := $(VENV)/.sealsim-installed
+DEMO_CASE := examples/rotary/speed_cycle.toml
+DEMO_OUT  := results/speed_cycle
+
+.PHONY: demo test bench clean
+
+$(STAMP): pyproject.toml
+	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install --quiet --disable-pip-version-check -e ".[test]"
+	@touch $(STAMP)
+
+demo: $(STAMP)
+	$(BIN)/sealsim rotary run $(DEMO_CASE) --out $(DEMO_OUT) --force
+
+# pytest exits with 5 when it collected no tests: that must fail, not pass silently.
+test: $(STAMP)
+	@$(BIN)/python -m pytest -n 2 -q; rc=$$?; \
+	if [ $$rc -eq 5 ]; then echo "make test: pytest collected no tests" >&2; exit 1; fi; \
+	exit $$rc
+
+bench: $(STAMP)
+	@for b in benchmarks/bench_*.py; do echo "== $$b"; $(BIN)/python $$b || exit 1; done
+
+clean:
+	rm -rf $(VENV) results .pytest_cache .hypothesis

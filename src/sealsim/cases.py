@@ -1,0 +1,280 @@
+"""Case files: TOML documents validated by pydantic models whose quantities carry units.
+
+A case model is a :class:`CaseModel` whose physical fields are declared with :func:`Q`::
+
+    class Seal(CaseModel):
+        shaft_diameter: Q("length", gt=0)
+
+In a case file the value is a string with a unit (``shaft_diameter = "80 mm"``); after
+validation the attribute holds the SI float (0.08).  Dumping a model writes the quantities back
+as strings with units, so the *resolved case* (all defaults filled in) written next to every
+result can be read again to reproduce it.
+
+Every validation problem becomes one :class:`~sealsim.errors.InputError` whose message lists,
+per problem, the field path (``seal.shaft_diameter``), the value given and what is allowed.
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+import tomllib
+from pathlib import Path
+from typing import Annotated, Any, TypeVar
+
+import pydantic
+import tomli_w
+from pydantic import BaseModel, ConfigDict, PlainSerializer, PlainValidator, WithJsonSchema
+
+from sealsim.errors import InputError
+from sealsim.units import DIMENSIONS, format_quantity, parse_quantity
+
+__all__ = [
+    "CaseModel",
+    "Q",
+    "apply_overrides",
+    "dump_case_toml",
+    "dump_variants_toml",
+    "expand_variants",
+    "format_validation_error",
+    "load_toml",
+    "validate_case",
+]
+
+ModelT = TypeVar("ModelT", bound=BaseModel)
+
+
+class CaseModel(BaseModel):
+    """Base of all case models: unknown fields are errors, instances are immutable."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True, validate_default=True)
+
+
+def Q(dimension: str, *, gt: float | None = None, ge: float | None = None,  # noqa: N802
+      lt: float | None = None, le: float | None = None):
+    """Type of a case-file quantity of the given dimension with optional bounds (in SI).
+
+    Parameters
+    ----------
+    dimension : str
+        A key of :data:`sealsim.units.DIMENSIONS`, e.g. ``"length"``.
+    gt, ge, lt, le : float, optional
+        Bounds in SI units (e.g. kelvin for temperatures).
+
+    Examples
+    --------
+    >>> class Shaft(CaseModel):
+    ...     diameter: Q("length", gt=0)
+    >>> Shaft(diameter="80 mm").diameter
+    0.08
+    >>> Shaft(diameter="80 mm").model_dump()
+    {'diameter': '80 mm'}
+    """
+    if dimension not in DIMENSIONS:
+        raise KeyError(f"unknown dimension {dimension!r}; choose from {sorted(DIMENSIONS)}")
+    dim = DIMENSIONS[dimension]
+
+    def bound_text(value: float) -> str:
+        return format_quantity(value, dimension)
+
+    def validate(value: Any) -> float:
+        si = parse_quantity(value, dimension)
+        for bound, ok, word in ((gt, lambda b: si > b, ">"), (ge, lambda b: si >= b, ">="),
+                                (lt, lambda b: si < b, "<"), (le, lambda b: si <= b, "<=")):
+            if bound is not None and not ok(bound):
+                raise ValueError(f"{value!r} is out of range: must be {word} {bound_text(bound)}")
+        return si
+
+    rng = [f"{w} {bound_text(b)}" for b, w in ((gt, ">"), (ge, ">="), (lt, "<"), (le, "<="))
+           if b is not None]
+    description = f"{dim.name}, e.g. {dim.example!r}" + (f"; {', '.join(rng)}" if rng else "")
+    return Annotated[
+        float,
+        PlainValidator(validate),
+        PlainSerializer(lambda v: format_quantity(v, dimension), return_type=str),
+        WithJsonSchema({"type": "string", "description": description}),
+    ]
+
+
+def load_toml(path: str | Path) -> dict[str, Any]:
+    """Read a TOML file; a missing file or a syntax error becomes an :class:`InputError`."""
+    path = Path(path)
+    try:
+        with path.open("rb") as fh:
+            return tomllib.load(fh)
+    except FileNotFoundError as exc:
+        raise InputError(f"case file {str(path)!r} does not exist") from exc
+    except IsADirectoryError as exc:
+        raise InputError(f"case file {str(path)!r} is a directory, expected a .toml file") from exc
+    except tomllib.TOMLDecodeError as exc:
+        raise InputError(f"case file {str(path)!r} is not valid TOML: {exc}") from exc
+    except UnicodeDecodeError as exc:
+        raise InputError(f"case file {str(path)!r} is not UTF-8 text") from exc
+
+
+def validate_case(model: type[ModelT], data: Any, source: str = "case") -> ModelT:
+    """Validate ``data`` against ``model``; any problem becomes one :class:`InputError`.
+
+    Parameters
+    ----------
+    model : type
+        The pydantic case model.
+    data : dict
+        Parsed case data (e.g. from :func:`load_toml`).
+    source : str
+        Where the data came from (a file name), shown in the error message.
+    """
+    try:
+        return model.model_validate(data)
+    except pydantic.ValidationError as exc:
+        raise InputError(format_validation_error(exc, source, model)) from None
+
+
+def format_validation_error(exc: pydantic.ValidationError, source: str,
+                            model: type[BaseModel] | None = None) -> str:
+    """One readable message for all problems in a pydantic ValidationError."""
+    problems = []
+    for err in exc.errors(include_url=False):
+        loc = ".".join(str(p) for p in err["loc"]) or "(top level)"
+        kind = err["type"]
+        given = err.get("input")
+        if kind == "missing":
+            hint = _field_hint(model, err["loc"])
+            problems.append(f"{loc}: required field is missing" + (f" ({hint})" if hint else ""))
+        elif kind == "extra_forbidden":
+            allowed = _allowed_fields(model, err["loc"][:-1])
+            problems.append(f"{loc}: unknown field" +
+                            (f"; allowed fields: {', '.join(allowed)}" if allowed else ""))
+        elif kind in ("literal_error", "enum"):
+            expected = err.get("ctx", {}).get("expected", "")
+            problems.append(f"{loc}: {given!r} is not allowed; choose one of {expected}")
+        else:
+            msg = err["msg"].removeprefix("Value error, ")
+            if kind in ("value_error", "assertion_error") and isinstance(given, str | int | float):
+                if repr(given) in msg:
+                    problems.append(f"{loc}: {msg}")
+                else:
+                    problems.append(f"{loc}: {msg} (got {_short(given)})")
+            else:
+                problems.append(f"{loc}: {msg} (got {_short(given)})")
+    head = f"invalid {source}:" if len(problems) > 1 else f"invalid {source}: "
+    return head + ("\n  " + "\n  ".join(problems) if len(problems) > 1 else problems[0])
+
+
+def _short(value: Any) -> str:
+    text = repr(value)
+    if isinstance(value, float) and math.isnan(value):
+        return "nan"
+    return text if len(text) <= 80 else text[:77] + "..."
+
+
+def _submodel(model: type[BaseModel] | None, loc: tuple) -> type[BaseModel] | None:
+    for part in loc:
+        if model is None or not isinstance(part, str) or part not in model.model_fields:
+            return None
+        annotation = model.model_fields[part].annotation
+        model = annotation if isinstance(annotation, type) and issubclass(annotation,
+                                                                          BaseModel) else None
+    return model
+
+
+def _allowed_fields(model, loc) -> list[str]:
+    sub = _submodel(model, tuple(loc))
+    return sorted(sub.model_fields) if sub is not None else []
+
+
+def _field_hint(model, loc) -> str:
+    sub = _submodel(model, tuple(loc[:-1]))
+    if sub is None or loc[-1] not in sub.model_fields:
+        return ""
+    schema = sub.model_json_schema().get("properties", {}).get(loc[-1], {})
+    return schema.get("description", "")
+
+
+def apply_overrides(base: dict[str, Any], overrides: dict[str, Any]) -> dict[str, Any]:
+    """Deep-merge ``overrides`` into a copy of ``base`` (tables merge, values replace).
+
+    Examples
+    --------
+    >>> apply_overrides({"seal": {"lip_style": "plain", "d": "80 mm"}},
+    ...                 {"seal": {"lip_style": "wave"}})
+    {'seal': {'lip_style': 'wave', 'd': '80 mm'}}
+    """
+    merged = copy.deepcopy(base)
+    for key, value in overrides.items():
+        if isinstance(value, dict) and isinstance(merged.get(key), dict):
+            merged[key] = apply_overrides(merged[key], value)
+        else:
+            merged[key] = copy.deepcopy(value)
+    return merged
+
+
+def dump_case_toml(case: BaseModel, header: str | None = None) -> str:
+    """TOML text of a case with every default filled in, readable by the same model."""
+    data = _drop_none(case.model_dump(mode="json"))
+    text = tomli_w.dumps(data)
+    if header:
+        text = "".join(f"# {line}\n" for line in header.splitlines()) + "\n" + text
+    return text
+
+
+def _drop_none(value):
+    # TOML has no null: absent optional fields stay absent (their default is None).
+    if isinstance(value, dict):
+        return {k: _drop_none(v) for k, v in value.items() if v is not None}
+    if isinstance(value, list):
+        return [_drop_none(v) for v in value]
+    return value
+
+
+DEFAULT_VARIANT = "base"
+
+
+def expand_variants(model: type[ModelT], data: dict[str, Any],
+                    source: str = "case") -> dict[str, ModelT]:
+    """Validate a case with optional ``[variants.NAME]`` tables that override base fields.
+
+    Without variants the case is one variant named ``"base"``.  With variants, each variant is
+    the base deep-merged with its overrides (:func:`apply_overrides`) and validated on its own;
+    error messages name the variant (``variants.wave.seal.lip_style: ...``).
+
+    Examples
+    --------
+    >>> class Lip(CaseModel):
+    ...     width: Q("length", gt=0)
+    ...     style: str = "plain"
+    >>> cases = expand_variants(Lip, {"width": "0.15 mm", "variants": {"w": {"style": "wave"}}})
+    >>> {name: case.style for name, case in cases.items()}
+    {'w': 'wave'}
+    """
+    data = dict(data)
+    variants = data.pop("variants", None)
+    if variants is None:
+        return {DEFAULT_VARIANT: validate_case(model, data, source)}
+    if not isinstance(variants, dict) or not variants:
+        raise InputError(f"invalid {source}: variants must be a table of named overrides, "
+                         f"e.g. [variants.wave] seal.lip_style = 'wave' (got {variants!r})")
+    cases: dict[str, ModelT] = {}
+    problems: list[str] = []
+    for name, overrides in variants.items():
+        if not isinstance(overrides, dict):
+            problems.append(f"variants.{name}: expected a table of overrides, got {overrides!r}")
+            continue
+        try:
+            cases[name] = validate_case(model, apply_overrides(data, overrides),
+                                        f"{source}, variant {name!r}")
+        except InputError as exc:
+            problems.append(str(exc))
+    if problems:
+        raise InputError("\n".join(problems))
+    return cases
+
+
+def dump_variants_toml(cases: dict[str, BaseModel], header: str | None = None) -> str:
+    """Resolved TOML for a set of variants; :func:`expand_variants` reads it back unchanged."""
+    data = {"variants": {name: _drop_none(case.model_dump(mode="json"))
+                         for name, case in cases.items()}}
+    text = tomli_w.dumps(data)
+    if header:
+        text = "".join(f"# {line}\n" for line in header.splitlines()) + "\n" + text
+    return text

@@ -1,0 +1,43 @@
+"""Command-line interface: ``sealsim COMMAND ...``.
+
+The CLI holds no physics: each command parses options, calls the Python API and writes results
+through :class:`sealsim.output.ResultFolder`.  Errors a user can fix (bad input, an existing
+result folder) are printed as one message and exit with status 2; a model that fails for valid
+input exits with status 1 and says where it failed.
+"""
+
+from __future__ import annotations
+
+import typer
+
+from sealsim import __version__
+from sealsim.cli._common import console
+from sealsim.cli.properties import material_app, oil_app
+
+app = typer.Typer(
+    name="sealsim",
+    help="sealsim -- friction, temperature and dynamics of elastomeric seals.",
+    no_args_is_help=True,
+    add_completion=False,
+    pretty_exceptions_enable=False,
+)
+app.add_typer(oil_app, name="oil")
+app.add_typer(material_app, name="material")
+
+
+def _version(value: bool) -> None:
+    if value:
+        console.print(f"sealsim {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def _root(
+    version: bool = typer.Option(False, "--version", callback=_version, is_eager=True,
+                                 help="Print the sealsim version and exit."),
+) -> None:
+    """sealsim -- friction, temperature and dynamics of elastomeric seals."""
+
+
+def main() -> None:  # pragma: no cover - thin entry point, exercised through CliRunner
+    app()

@@ -1,0 +1,70 @@
+"""Helpers shared by the CLI commands: consoles, error handling, JSON output."""
+
+from __future__ import annotations
+
+import functools
+import json
+import math
+from typing import Any
+
+import typer
+from rich.console import Console
+from rich.text import Text
+
+from sealsim.errors import SealsimError
+
+console = Console(highlight=False)
+err_console = Console(stderr=True, highlight=False)
+
+
+def guarded(func):
+    """Turn sealsim errors into one printed message and the documented exit status."""
+
+    @functools.wraps(func)
+    def wrapper(*args, **kwargs):
+        try:
+            return func(*args, **kwargs)
+        except SealsimError as exc:
+            kind = "input error" if exc.exit_code == 2 else "error"
+            err_console.print(Text(f"{kind}: ", style="bold red") + Text(str(exc)))
+            raise typer.Exit(exc.exit_code) from None
+        except KeyboardInterrupt:
+            err_console.print(Text("interrupted: no results were written", style="bold red"))
+            raise typer.Exit(130) from None
+
+    return wrapper
+
+
+def print_json(data: Any) -> None:
+    """Print JSON to stdout (plain text, no rich markup); NaN is written as null."""
+    typer.echo(json.dumps(_finite(data), indent=2))
+
+
+def _finite(value):
+    if isinstance(value, dict):
+        return {k: _finite(v) for k, v in value.items()}
+    if isinstance(value, list | tuple):
+        return [_finite(v) for v in value]
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    return value
+
+
+def parse_celsius_list(text: str | None, default: list[float], option: str) -> list[float]:
+    """Parse a comma-separated list of temperatures in °C (e.g. ``"20,40,100"``)."""
+    from sealsim.errors import InputError
+
+    if text is None:
+        return default
+    values = []
+    for part in text.split(","):
+        try:
+            value = float(part)
+        except ValueError:
+            raise InputError(f"{option}: {part.strip()!r} is not a number; give temperatures in "
+                             "degC separated by commas, e.g. '20,40,100'") from None
+        if not math.isfinite(value) or value < -273.15:
+            raise InputError(f"{option}: {value!r} degC is not a valid temperature "
+                             "(must be finite and >= -273.15 degC)")
+        values.append(value)
+    return values

@@ -1,0 +1,42 @@
+"""Exception types for sealsim users.
+
+One type per kind of failure, each with a message that names what to change:
+
+* :class:`InputError` -- a case file, a parameter or a CLI option is invalid.  The message
+  names the field, the value given and what is allowed.  The CLI exits with status 2.
+* :class:`ResultExistsError` -- an output folder already holds results and ``--force`` was
+  not given (status 2).
+* :class:`ModelError` -- a valid input led to a run that could not be completed (a solver that
+  did not converge, a state out of its physical range).  The message says at which step or
+  load it failed (status 1).
+"""
+
+from __future__ import annotations
+
+
+class SealsimError(Exception):
+    """Base class of all errors sealsim reports to a user."""
+
+    exit_code = 1
+
+
+class InputError(SealsimError, ValueError):
+    """Invalid user input: the message names the field, the value and what is allowed."""
+
+    exit_code = 2
+
+
+class ResultExistsError(SealsimError, FileExistsError):
+    """An output folder already holds results and overwriting was not requested."""
+
+    exit_code = 2
+
+
+class ModelError(SealsimError, RuntimeError):
+    """A model could not be evaluated for valid input (e.g. no convergence at a load step)."""
+
+    exit_code = 1
+
+
+class ConvergenceError(ModelError):
+    """A nonlinear or time-stepping solver did not converge; the message says where."""

@@ -1,0 +1,191 @@
+"""Units at the edges: quantities written as strings ("80 mm", "1500 rpm", "55 degC") are
+parsed with pint and converted to SI floats; everything inside sealsim works in SI.
+
+SI units used internally: m, s, kg, K, Pa, N, W, J, rad/s for angular speed, m³ for volume,
+m²/s for kinematic viscosity, Pa·s for dynamic viscosity.
+
+Angular speed accepts ``rpm``, ``rad/s`` or ``rev/s`` (or ``rps``); ``Hz`` is refused for
+angular speed because pint treats 1 Hz as 1 rad/s, whereas engineers mean 1 rev/s.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass
+
+import pint
+
+from sealsim.errors import InputError
+
+ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+ureg.define("rps = revolution / second")
+
+
+@dataclass(frozen=True)
+class Dimension:
+    """A physical dimension accepted by a case-file field.
+
+    Parameters
+    ----------
+    name : str
+        Human-readable name used in error messages ("length").
+    si_unit : str
+        Unit that values are converted to (the SI unit inside sealsim).
+    example : str
+        An example quantity string shown in error messages.
+    display_unit : str
+        Unit used when writing a resolved case back to a file.
+    """
+
+    name: str
+    si_unit: str
+    example: str
+    display_unit: str | None = None
+
+    @property
+    def dimensionality(self):
+        return ureg.Quantity(1.0, self.si_unit).dimensionality
+
+    @property
+    def output_unit(self) -> str:
+        return self.display_unit or self.si_unit
+
+
+DIMENSIONS: dict[str, Dimension] = {
+    d.name: d
+    for d in [
+        Dimension("length", "m", "80 mm", display_unit="mm"),
+        Dimension("area", "m**2", "20 cm**2"),
+        Dimension("volume", "m**3", "0.2 L", display_unit="L"),
+        Dimension("time", "s", "30 s"),
+        Dimension("mass", "kg", "1.5 kg"),
+        Dimension("force", "N", "30 N"),
+        Dimension("pressure", "Pa", "6 bar", display_unit="bar"),
+        Dimension("temperature", "K", "55 degC", display_unit="degC"),
+        Dimension("temperature_difference", "K", "10 K"),
+        Dimension("angular_speed", "rad/s", "1500 rpm", display_unit="rpm"),
+        Dimension("velocity", "m/s", "0.5 m/s"),
+        Dimension("frequency", "Hz", "10 Hz"),
+        Dimension("kinematic_viscosity", "m**2/s", "68 mm**2/s"),
+        Dimension("dynamic_viscosity", "Pa*s", "12 mPa*s"),
+        Dimension("density", "kg/m**3", "880 kg/m**3"),
+        Dimension("stiffness", "N/m", "2 N/m"),
+        Dimension("damping", "N*s/m", "0.4 N*s/m"),
+        Dimension("force_per_length", "N/m", "0.3 N/mm"),
+        Dimension("thermal_conductivity", "W/(m*K)", "45 W/(m*K)"),
+        Dimension("specific_heat", "J/(kg*K)", "460 J/(kg*K)"),
+        Dimension("heat_transfer_coefficient", "W/(m**2*K)", "12 W/(m**2*K)"),
+        Dimension("thermal_expansion", "1/K", "2e-4 1/K"),
+        Dimension("power", "W", "50 W"),
+        Dimension("energy", "J", "100 J"),
+        Dimension("dimensionless", "", "0.3"),
+        Dimension("inverse_pressure", "1/Pa", "20 1/GPa"),
+        Dimension("flow_conductance", "m**3/(s*Pa)", "2 dm**3/(s*bar)"),
+    ]
+}
+
+_NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|[-+]?nan|[-+]?inf)\s*(.*)$",
+                     re.IGNORECASE)
+
+
+def parse_quantity(value, dimension: str, field: str | None = None) -> float:
+    """Parse a quantity with units and return its magnitude in SI.
+
+    Parameters
+    ----------
+    value : str or float
+        A string "number unit" (e.g. ``"80 mm"``), or a plain number for dimensionless
+        fields.  A plain number for a dimensional field is refused: the unit must be explicit.
+    dimension : str
+        Key of :data:`DIMENSIONS` (e.g. ``"length"``).
+    field : str, optional
+        Field name that error messages start with.
+
+    Returns
+    -------
+    float
+        Magnitude in the SI unit of the dimension.
+
+    Raises
+    ------
+    InputError
+        Unknown unit, wrong dimension, missing unit, not finite.
+
+    Examples
+    --------
+    >>> parse_quantity("80 mm", "length")
+    0.08
+    >>> round(parse_quantity("55 degC", "temperature"), 2)
+    328.15
+    >>> round(parse_quantity("1500 rpm", "angular_speed"), 3)
+    157.08
+    """
+    dim = DIMENSIONS[dimension]
+    prefix = f"{field}: " if field else ""
+    if isinstance(value, ureg.Quantity):
+        value = f"{float(value.magnitude)!r} {value.units:~}"
+    if isinstance(value, bool):
+        raise InputError(prefix + f"{value!r} is not a quantity; expected a {dim.name} "
+                         f"such as {dim.example!r}")
+    if isinstance(value, (int, float)):
+        if dimension != "dimensionless":
+            raise InputError(prefix + f"{value!r} has no unit; write it with a {dim.name} unit, "
+                             f"e.g. {dim.example!r}")
+        magnitude = float(value)
+    elif isinstance(value, str):
+        magnitude = _parse_string(value, dim, field)
+    else:
+        raise InputError(prefix + f"{value!r} is not a quantity; expected a {dim.name} "
+                         f"such as {dim.example!r}")
+    if not math.isfinite(magnitude):
+        raise InputError(prefix + f"{value!r} is not a finite number; expected a {dim.name} "
+                         f"such as {dim.example!r}")
+    return magnitude
+
+
+def _parse_string(text: str, dim: Dimension, field: str | None) -> float:
+    prefix = f"{field}: " if field else ""
+    match = _NUMBER.match(text)
+    if not match:
+        raise InputError(prefix + f"{text!r} is not 'number unit'; expected a {dim.name} "
+                         f"such as {dim.example!r}")
+    number, unit = match.group(1), match.group(2).strip()
+    if dim.name == "angular_speed" and re.search(r"\bhz\b|hertz", unit, re.IGNORECASE):
+        raise InputError(prefix + f"{text!r} -- Hz is ambiguous for a rotational speed; "
+                         "use rpm, rev/s or rad/s")
+    try:
+        quantity = ureg.Quantity(float(number), unit or "dimensionless")
+    except (pint.errors.UndefinedUnitError, pint.errors.DefinitionSyntaxError,
+            AttributeError, TypeError, ValueError, AssertionError) as exc:
+        raise InputError(prefix + f"unknown unit {unit!r} in {text!r}; expected a {dim.name} "
+                         f"such as {dim.example!r}") from exc
+    except Exception as exc:  # pint's parser raises a variety of types on garbage input
+        raise InputError(prefix + f"cannot read {text!r} as a quantity; expected a {dim.name} "
+                         f"such as {dim.example!r}") from exc
+    if quantity.dimensionality != dim.dimensionality:
+        got = f"dimension {quantity.dimensionality}" if unit else "no unit"
+        raise InputError(prefix + f"{text!r} has {got}, expected a {dim.name} "
+                         f"(e.g. {dim.example!r})")
+    try:
+        return float(quantity.to(dim.si_unit).magnitude)
+    except pint.errors.PintError as exc:  # pragma: no cover - guarded by the check above
+        raise InputError(prefix + f"cannot convert {text!r} to {dim.si_unit}") from exc
+
+
+def format_quantity(value: float, dimension: str) -> str:
+    """Format an SI value as a quantity string that :func:`parse_quantity` reads back.
+
+    Examples
+    --------
+    >>> format_quantity(0.08, "length")
+    '80 mm'
+    >>> format_quantity(328.15, "temperature")
+    '55 degC'
+    """
+    dim = DIMENSIONS[dimension]
+    if dimension == "dimensionless":
+        return f"{value:.12g}"
+    magnitude = ureg.Quantity(value, dim.si_unit).to(dim.output_unit).magnitude
+    unit = dim.output_unit.replace("**", "^")
+    return f"{magnitude:.12g} {unit}"
