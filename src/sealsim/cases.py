@@ -47,7 +47,8 @@ ModelT = TypeVar("ModelT", bound=BaseModel)
 class CaseModel(BaseModel):
     """Base of all case models: unknown fields are errors, instances are immutable."""
 
-    model_config = ConfigDict(extra="forbid", frozen=True, validate_default=True)
+    # Defaults are written in SI (floats) and trusted; user input must carry units.
+    model_config = ConfigDict(extra="forbid", frozen=True, validate_default=False)
 
 
 def Q(dimension: str, *, gt: float | None = None, ge: float | None = None,  # noqa: N802

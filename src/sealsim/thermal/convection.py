@@ -1,0 +1,215 @@
+"""Convective heat transfer coefficients for shafts, seals and housings.
+
+Sources: Incropera, DeWitt, Bergman & Lavine, *Fundamentals of Heat and Mass Transfer*, 6th ed.
+(2007): rotating cylinder (Kays & Bjorklund 1958, §7.8), horizontal cylinder in free convection
+(Churchill & Chu 1975, Eq. 9.34), vertical plate (Churchill & Chu 1975, Eq. 9.26); linearised
+grey-body radiation.  Air properties are evaluated from simple fits valid 250--400 K.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = [
+    "STEFAN_BOLTZMANN",
+    "air_properties",
+    "free_convection_horizontal_cylinder",
+    "free_convection_vertical_plate",
+    "radiation_coefficient",
+    "rotating_cylinder_coefficient",
+    "rotating_cylinder_nusselt",
+]
+
+STEFAN_BOLTZMANN = 5.670374419e-8  # W/(m² K⁴)
+GRAVITY = 9.80665  # m/s²
+
+
+def rotating_cylinder_nusselt(reynolds, prandtl):
+    """Nusselt number of a cylinder rotating in a quiescent fluid (Kays & Bjorklund).
+
+    ``Nu_D = 0.133·Re_D^(2/3)·Pr^(1/3)``, Re_D = Ω·D²/ν, stated for Re_D < 4.3e5 and
+    0.7 < Pr < 670 (Incropera §7.8).  sealsim also uses it for Pr up to a few thousand
+    (cold gear oil); the Pr^(1/3) dependence is the laminar-boundary-layer scaling.
+
+    Parameters
+    ----------
+    reynolds : array_like
+        Rotational Reynolds number Ω·D²/ν [-].
+    prandtl : array_like
+        Prandtl number of the fluid [-].
+
+    Returns
+    -------
+    numpy.ndarray
+        Nu_D [-].
+
+    Examples
+    --------
+    >>> round(float(rotating_cylinder_nusselt(6.8e4, 190)), 0)
+    1274.0
+    """
+    re = np.maximum(np.asarray(reynolds, dtype=float), 0.0)
+    return 0.133 * re ** (2.0 / 3.0) * np.asarray(prandtl, dtype=float) ** (1.0 / 3.0)
+
+
+def rotating_cylinder_coefficient(angular_speed, diameter, kinematic_viscosity, conductivity,
+                                  prandtl):
+    """Heat transfer coefficient of a rotating shaft, h = Nu_D·k/D with Kays & Bjorklund.
+
+    Parameters
+    ----------
+    angular_speed : array_like
+        Ω [rad/s] (its magnitude is used).
+    diameter : float
+        Shaft diameter D [m].
+    kinematic_viscosity : array_like
+        ν of the fluid [m²/s].
+    conductivity : array_like
+        k of the fluid [W/(m·K)].
+    prandtl : array_like
+        Pr of the fluid [-].
+
+    Returns
+    -------
+    numpy.ndarray
+        h [W/(m²·K)].
+
+    Examples
+    --------
+    >>> round(float(rotating_cylinder_coefficient(157.1, 0.08, 1.48e-5, 0.127, 190)), -1)
+    2020.0
+    """
+    re = np.abs(np.asarray(angular_speed, dtype=float)) * diameter**2 / np.asarray(
+        kinematic_viscosity, dtype=float)
+    return rotating_cylinder_nusselt(re, prandtl) * np.asarray(conductivity, dtype=float) / diameter
+
+
+def free_convection_horizontal_cylinder(diameter, delta_t, kinematic_viscosity, diffusivity,
+                                        conductivity, expansion):
+    """Free convection from a horizontal cylinder, Churchill & Chu (Incropera Eq. 9.34).
+
+    ``Nu = {0.60 + 0.387·Ra^(1/6) / [1 + (0.559/Pr)^(9/16)]^(8/27)}²``, Ra = gβΔT D³/(να).
+
+    Parameters
+    ----------
+    diameter : float
+        D [m].
+    delta_t : array_like
+        |T_surface − T_fluid| [K].
+    kinematic_viscosity, diffusivity : array_like
+        ν and α of the fluid [m²/s].
+    conductivity : array_like
+        k of the fluid [W/(m·K)].
+    expansion : array_like
+        Volumetric expansion coefficient β [1/K].
+
+    Returns
+    -------
+    numpy.ndarray
+        h [W/(m²·K)].
+
+    Examples
+    --------
+    >>> nu, alpha, k = air_properties(300.0)[:3]
+    >>> round(float(free_convection_horizontal_cylinder(0.08, 20.0, nu, alpha, k, 1/300)), 1)
+    4.7
+    """
+    nu = np.asarray(kinematic_viscosity, dtype=float)
+    alpha = np.asarray(diffusivity, dtype=float)
+    ra = GRAVITY * np.asarray(expansion) * np.abs(np.asarray(delta_t, dtype=float)) \
+        * diameter**3 / (nu * alpha)
+    pr = nu / alpha
+    nusselt = (0.60 + 0.387 * ra ** (1 / 6) / (1 + (0.559 / pr) ** (9 / 16)) ** (8 / 27)) ** 2
+    return nusselt * np.asarray(conductivity, dtype=float) / diameter
+
+
+def free_convection_vertical_plate(height, delta_t, kinematic_viscosity, diffusivity,
+                                   conductivity, expansion):
+    """Free convection from a vertical plate, Churchill & Chu (Incropera Eq. 9.26).
+
+    ``Nu_L = {0.825 + 0.387·Ra^(1/6) / [1 + (0.492/Pr)^(9/16)]^(8/27)}²``.
+
+    Parameters
+    ----------
+    height : float
+        Plate height L [m].
+    delta_t : array_like
+        |T_surface − T_fluid| [K].
+    kinematic_viscosity, diffusivity : array_like
+        ν and α [m²/s].
+    conductivity : array_like
+        k [W/(m·K)].
+    expansion : array_like
+        β [1/K].
+
+    Returns
+    -------
+    numpy.ndarray
+        h [W/(m²·K)].
+
+    Examples
+    --------
+    >>> nu, alpha, k = air_properties(313.0)[:3]
+    >>> round(float(free_convection_vertical_plate(0.3, 40.0, nu, alpha, k, 1/313)), 1)
+    5.2
+    """
+    nu = np.asarray(kinematic_viscosity, dtype=float)
+    alpha = np.asarray(diffusivity, dtype=float)
+    ra = GRAVITY * np.asarray(expansion) * np.abs(np.asarray(delta_t, dtype=float)) \
+        * height**3 / (nu * alpha)
+    pr = nu / alpha
+    nusselt = (0.825 + 0.387 * ra ** (1 / 6) / (1 + (0.492 / pr) ** (9 / 16)) ** (8 / 27)) ** 2
+    return nusselt * np.asarray(conductivity, dtype=float) / height
+
+
+def radiation_coefficient(surface_temperature, surroundings_temperature, emissivity=0.9):
+    """Linearised radiation coefficient h_r = εσ(T_s + T_∞)(T_s² + T_∞²).
+
+    Parameters
+    ----------
+    surface_temperature, surroundings_temperature : array_like
+        Temperatures [K].
+    emissivity : float
+        Grey-body emissivity ε [-] (painted cast iron ≈ 0.9).
+
+    Returns
+    -------
+    numpy.ndarray
+        h_r [W/(m²·K)].
+
+    Examples
+    --------
+    >>> round(float(radiation_coefficient(333.15, 293.15)), 1)
+    6.3
+    """
+    ts = np.asarray(surface_temperature, dtype=float)
+    ta = np.asarray(surroundings_temperature, dtype=float)
+    return emissivity * STEFAN_BOLTZMANN * (ts + ta) * (ts**2 + ta**2)
+
+
+def air_properties(temperature):
+    """Properties of dry air at 1 atm: ν [m²/s], α [m²/s], k [W/(m·K)], Pr [-].
+
+    Power-law fits to Incropera Table A.4 (250--400 K, within 2 %).
+
+    Parameters
+    ----------
+    temperature : array_like
+        T [K].
+
+    Returns
+    -------
+    tuple of numpy.ndarray
+        (ν, α, k, Pr).
+
+    Examples
+    --------
+    >>> nu, alpha, k, pr = air_properties(300.0)
+    >>> round(float(nu) * 1e6, 2), round(float(k), 4), round(float(pr), 3)
+    (15.89, 0.0263, 0.707)
+    """
+    t = np.asarray(temperature, dtype=float) / 300.0
+    nu = 15.89e-6 * t**1.72
+    k = 0.0263 * t**0.83
+    pr = 0.707 * t**-0.04
+    return nu, nu / pr, k, pr
