@@ -30,7 +30,7 @@ import numpy as np
 import pandas as pd
 
 from sealsim.errors import InputError, ModelError
-from sealsim.properties.elastomers import ServiceRangeWarning
+from sealsim.properties.elastomers import ServiceRangeWarning, get_elastomer
 from sealsim.properties.oils import OilRangeWarning
 from sealsim.rotary.case import RotaryCase
 from sealsim.rotary.friction import FrictionState, LipSealFriction, LipSealFrictionParameters
@@ -44,7 +44,8 @@ from sealsim.thermal.convection import (
 )
 from sealsim.tribology.rubber_friction import GroschMasterCurve
 
-__all__ = ["RotaryModel", "RotaryResult", "housing_defaults", "simulate", "steady_state"]
+__all__ = ["RotaryModel", "RotaryResult", "friction_map", "housing_defaults", "lip_seal_friction",
+           "lip_style", "simulate", "steady_state"]
 
 CELSIUS_0 = 273.15
 STEEL_DENSITY, STEEL_SPECIFIC_HEAT = 7850.0, 460.0
@@ -89,6 +90,33 @@ def housing_defaults(sump_volume: float) -> tuple[float, float, float]:
     return outer, wetted, outer * HOUSING_WALL * STEEL_DENSITY
 
 
+def lip_style(case: RotaryCase) -> LipStyle:
+    """The lip style of a case, with the case's wave-lip parameters."""
+    seal = case.seal
+    if seal.lip_style == "plain":
+        return LIP_STYLES["plain"]
+    w = seal.wave
+    return LipStyle("wave", w.film_factor, w.track_amplitude, w.lip_heat_exchange_factor)
+
+
+def lip_seal_friction(case: RotaryCase) -> LipSealFriction:
+    """The friction model (seal + oil + elastomer + parameters) of a case."""
+    seal, fr = case.seal, case.friction
+    return LipSealFriction(
+        LipSealFrictionParameters(
+            shaft_diameter=seal.shaft_diameter, contact_width=seal.contact_width,
+            radial_force=seal.radial_force, radial_force_temperature=seal.radial_force_temperature,
+            spring_share=seal.spring_share, film_coefficient=fr.film_coefficient_um * 1e-6,
+            film_exponent=fr.film_exponent, film_floor=fr.film_floor,
+            film_factor=lip_style(case).film_factor,
+            roughness=math.hypot(seal.shaft_roughness, seal.lip_roughness),
+            rms_slope=seal.shaft_rms_slope, asperity_wavelength=fr.asperity_wavelength,
+            kappa=fr.persson_kappa,
+            master_curve=GroschMasterCurve(fr.mu_peak, fr.mu_low, fr.peak_speed_at_reference,
+                                           fr.master_curve_width_decades)),
+        case.oil.build(), get_elastomer(seal.material))
+
+
 @dataclass
 class RotaryModel:
     """A case turned into its friction model, thermal network and coefficient laws."""
@@ -97,26 +125,10 @@ class RotaryModel:
 
     def __post_init__(self):
         c = self.case
-        self.oil = c.oil.build()
-        from sealsim.properties.elastomers import get_elastomer
-
-        self.elastomer = get_elastomer(c.seal.material)
-        self.style = self._lip_style()
-        seal, fr = c.seal, c.friction
-        self.friction = LipSealFriction(
-            LipSealFrictionParameters(
-                shaft_diameter=seal.shaft_diameter, contact_width=seal.contact_width,
-                radial_force=seal.radial_force,
-                radial_force_temperature=seal.radial_force_temperature,
-                spring_share=seal.spring_share, film_coefficient=fr.film_coefficient_um * 1e-6,
-                film_exponent=fr.film_exponent, film_floor=fr.film_floor,
-                film_factor=self.style.film_factor,
-                roughness=math.hypot(seal.shaft_roughness, seal.lip_roughness),
-                rms_slope=seal.shaft_rms_slope, asperity_wavelength=fr.asperity_wavelength,
-                kappa=fr.persson_kappa,
-                master_curve=GroschMasterCurve(fr.mu_peak, fr.mu_low, fr.peak_speed_at_reference,
-                                               fr.master_curve_width_decades)),
-            self.oil, self.elastomer)
+        self.friction = lip_seal_friction(c)
+        self.oil, self.elastomer = self.friction.oil, self.friction.elastomer
+        self.style = lip_style(c)
+        seal = c.seal
         env = c.environment
         self.shaft_solid = Solid("shaft", env.shaft_conductivity, env.shaft_density,
                                  env.shaft_specific_heat)
@@ -159,13 +171,6 @@ class RotaryModel:
             Link("sump", "housing", env.oil_housing_heat_transfer * self.wetted_area),
             Link("housing", "ambient", env.housing_heat_transfer * self.housing_area),
         ]
-
-    def _lip_style(self) -> LipStyle:
-        seal = self.case.seal
-        if seal.lip_style == "plain":
-            return LIP_STYLES["plain"]
-        w = seal.wave
-        return LipStyle("wave", w.film_factor, w.track_amplitude, w.lip_heat_exchange_factor)
 
     # -- convection ------------------------------------------------------------------------
     def coefficients(self, angular_speed: float, sump_temperature: float) -> dict[str, float]:
@@ -349,7 +354,6 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
         float(speeds[0]), model.start_temperature), 0.0, float(speeds[0]),
         np.full(model.network.n, model.start_temperature), model.start_temperature)],
         columns=TIMESERIES_COLUMNS), frame], ignore_index=True)
-    frame.loc[0, ["torque_Nm", "power_W", "F_lub_N", "F_material_N"]] = 0.0  # at rest at t=0
 
     stored = float(capacity @ temps - stored0)
     energy = {"generated": generated, "stored": stored, "dissipated": dissipated,
@@ -458,3 +462,37 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-4,
             "T_sump_C": t_sump - CELSIUS_0, "film_um": float(state.film) * 1e6,
             "F_lub_N": float(state.force_lubricant), "F_material_N": float(state.force_material),
             "iterations": iteration}
+
+
+def friction_map(case: RotaryCase, speeds_rpm, temperatures_c) -> pd.DataFrame:
+    """Friction of the case's seal over a speed × contact-temperature grid (no heat transfer).
+
+    Vectorised: one call evaluates the whole grid.
+
+    Parameters
+    ----------
+    case : RotaryCase
+        Seal, oil and friction parameters are used; environment and duty are ignored.
+    speeds_rpm : array_like
+        Shaft speeds [rpm] (> 0).
+    temperatures_c : array_like
+        Contact temperatures [°C].
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per grid point: speed_rpm, T_contact_C, torque_Nm, power_W, film_um,
+        F_lub_N, F_material_N, mu_eff, duty_parameter.
+    """
+    friction = lip_seal_friction(case)
+    n, t = np.meshgrid(np.asarray(speeds_rpm, float), np.asarray(temperatures_c, float))
+    omega = n.ravel() * np.pi / 30.0
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", (ServiceRangeWarning, OilRangeWarning))
+        state = friction.evaluate(omega, t.ravel() + CELSIUS_0)
+    return pd.DataFrame({
+        "speed_rpm": n.ravel(), "T_contact_C": t.ravel(), "torque_Nm": state.torque,
+        "power_W": state.power, "film_um": state.film * 1e6, "F_lub_N": state.force_lubricant,
+        "F_material_N": state.force_material,
+        "mu_eff": np.abs(state.torque) * 2 / case.seal.shaft_diameter / state.lip_force,
+        "duty_parameter": friction.duty_parameter(state, omega)})

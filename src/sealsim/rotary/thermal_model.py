@@ -238,7 +238,7 @@ def build_thermal_grid(section: SealSection, shaft: Solid, rubber: Solid, case: 
     del unassigned
     face_groups = {name: np.nonzero(mask)[0] for name, mask in groups.items()}
 
-    i_surface = int(np.searchsorted(r_edges, r_, side="left")) - 1
+    i_surface = int(np.argmin(np.abs(r_edges - r_))) - 1  # the shaft's outermost row
     zc1 = 0.5 * (z_edges[:-1] + z_edges[1:])
     in_band = (zc1 > -band / 2) & (zc1 < band / 2)
     contact_cells = conduction.index[i_surface, in_band]

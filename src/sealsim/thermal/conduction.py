@@ -110,10 +110,10 @@ def graded_edges(breakpoints: Sequence[float], fine: Sequence[float],
                 sb *= growth
         sizes = np.array(left + right[::-1])
         sizes *= length / sizes.sum()
-        edges.extend(a + np.cumsum(sizes))
-    out = np.array(edges)
-    out[-1] = bps[-1]
-    return out
+        segment = a + np.cumsum(sizes)
+        segment[-1] = b  # exactly: callers locate features by their breakpoints
+        edges.extend(segment)
+    return np.array(edges)
 
 
 @dataclass(frozen=True)
