@@ -32,6 +32,7 @@ __all__ = [
     "Link",
     "Solid",
     "ThermalNetwork",
+    "factorise",
     "graded_edges",
 ]
 
@@ -164,7 +165,7 @@ class AxisymmetricConduction:
     >>> steel = Solid("steel", 45.0, 7850.0, 460.0)
     >>> m = AxisymmetricConduction([0, 0.01, 0.02], [0, 0.01], [[0], [0]], [steel])
     >>> m.n_cells, round(float(m.capacity.sum()), 3)  # π·0.02²·0.01 m³ · ρ·c
-    (2, 45.376)
+    (2, 45.377)
     """
 
     def __init__(self, r_edges, z_edges, material, solids: Sequence[Solid]):
@@ -390,6 +391,16 @@ class ThermalNetwork:
         return k, f
 
 
+def factorise(matrix: sp.csc_matrix):
+    """Sparse LU of a symmetric network matrix.
+
+    The conduction matrices are symmetric; a minimum-degree ordering of A + Aᵀ with symmetric
+    pivoting gives about half the fill of SuperLU's default column ordering (COLAMD), and so
+    faster factorisations and solves.
+    """
+    return spla.splu(matrix, permc_spec="MMD_AT_PLUS_A", options={"SymmetricMode": True})
+
+
 class BackwardEulerStepper:
     """Backward-Euler time stepping of a :class:`ThermalNetwork` with cached factorisations.
 
@@ -410,7 +421,7 @@ class BackwardEulerStepper:
         entry = self._cache.get(full_key)
         if entry is None:
             k, f = build()
-            lu = spla.splu((sp.diags(self.network.capacity / dt) + k).tocsc())
+            lu = factorise((sp.diags(self.network.capacity / dt) + k).tocsc())
             entry = (lu, k, f)
             if len(self._cache) >= self.max_cache:
                 self._cache.pop(next(iter(self._cache)))

@@ -92,7 +92,7 @@ def grosch_friction_coefficient(speed, log10_shift_factor, curve=DEFAULT_MASTER_
     >>> round(float(grosch_friction_coefficient(0.01, -8.1)), 2)
     1.0
     >>> round(float(grosch_friction_coefficient(10.0, -8.1)), 2)
-    0.51
+    0.38
     """
     v = np.abs(np.asarray(speed, dtype=float))
     with np.errstate(divide="ignore"):
