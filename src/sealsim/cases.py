@@ -19,6 +19,7 @@ from __future__ import annotations
 import copy
 import math
 import tomllib
+import typing
 from pathlib import Path
 from typing import Annotated, Any, TypeVar
 
@@ -107,10 +108,10 @@ def load_toml(path: str | Path) -> dict[str, Any]:
         raise InputError(f"case file {str(path)!r} does not exist") from exc
     except IsADirectoryError as exc:
         raise InputError(f"case file {str(path)!r} is a directory, expected a .toml file") from exc
-    except tomllib.TOMLDecodeError as exc:
-        raise InputError(f"case file {str(path)!r} is not valid TOML: {exc}") from exc
     except UnicodeDecodeError as exc:
         raise InputError(f"case file {str(path)!r} is not UTF-8 text") from exc
+    except ValueError as exc:  # TOMLDecodeError, and integers tomllib cannot convert
+        raise InputError(f"case file {str(path)!r} is not valid TOML: {exc}") from exc
 
 
 def validate_case(model: type[ModelT], data: Any, source: str = "case") -> ModelT:
@@ -169,13 +170,24 @@ def _short(value: Any) -> str:
     return text if len(text) <= 80 else text[:77] + "..."
 
 
+def _model_in(annotation) -> type[BaseModel] | None:
+    """The case model inside an annotation (``Model``, ``Model | None``, ``list[Model]``)."""
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return annotation
+    for arg in typing.get_args(annotation):
+        found = _model_in(arg)
+        if found is not None:
+            return found
+    return None
+
+
 def _submodel(model: type[BaseModel] | None, loc: tuple) -> type[BaseModel] | None:
     for part in loc:
-        if model is None or not isinstance(part, str) or part not in model.model_fields:
+        if isinstance(part, int):  # index into a list of sub-models
+            continue
+        if model is None or part not in model.model_fields:
             return None
-        annotation = model.model_fields[part].annotation
-        model = annotation if isinstance(annotation, type) and issubclass(annotation,
-                                                                          BaseModel) else None
+        model = _model_in(model.model_fields[part].annotation)
     return model
 
 

@@ -24,6 +24,10 @@ from sealsim.errors import InputError, ResultExistsError
 
 __all__ = ["ResultFolder", "atomic_write_bytes", "atomic_write_text"]
 
+# mkstemp/mkdtemp create private (0600/0700) entries; results get the user's normal modes
+_UMASK = os.umask(0)
+os.umask(_UMASK)
+
 
 def atomic_write_bytes(path: str | Path, data: bytes) -> Path:
     """Write ``data`` to ``path`` via a temporary file in the same folder and a rename."""
@@ -34,6 +38,7 @@ def atomic_write_bytes(path: str | Path, data: bytes) -> Path:
             fh.write(data)
             fh.flush()
             os.fsync(fh.fileno())
+        os.chmod(tmp, 0o666 & ~_UMASK)
         os.replace(tmp, path)
     except BaseException:
         Path(tmp).unlink(missing_ok=True)
@@ -94,6 +99,7 @@ class ResultFolder:
             parent.mkdir(parents=True, exist_ok=True)
             self._staging = Path(tempfile.mkdtemp(dir=parent, prefix=f".{self.path.name}.",
                                                   suffix=".partial"))
+            os.chmod(self._staging, 0o777 & ~_UMASK)
         except OSError as exc:
             raise InputError(f"cannot create output folder {str(self.path)!r}: {exc}") from exc
         return self

@@ -19,6 +19,7 @@ import pint
 from sealsim.errors import InputError
 
 ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+ureg.define("rev = revolution")
 ureg.define("rps = revolution / second")
 
 
@@ -85,6 +86,9 @@ DIMENSIONS: dict[str, Dimension] = {
     ]
 }
 
+# stacked or huge exponents (10**10**8, m**99999999), refused before pint evaluates them
+_RUNAWAY_POWER = re.compile(
+    r"(\*\*|\^)\s*[-+(]*\s*\d[\d.eE+-]*\s*\)?\s*(\*\*|\^)|(\*\*|\^)\s*[-+(]*\s*\d{4,}")
 _NUMBER = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?|[-+]?nan|[-+]?inf)\s*(.*)$",
                      re.IGNORECASE)
 
@@ -132,7 +136,11 @@ def parse_quantity(value, dimension: str, field: str | None = None) -> float:
         if dimension != "dimensionless":
             raise InputError(prefix + f"{value!r} has no unit; write it with a {dim.name} unit, "
                              f"e.g. {dim.example!r}")
-        magnitude = float(value)
+        try:
+            magnitude = float(value)
+        except OverflowError:
+            raise InputError(prefix + f"number too large; expected a {dim.name} such as "
+                                      f"{dim.example!r}") from None
     elif isinstance(value, str):
         magnitude = _parse_string(value, dim, field)
     else:
@@ -151,7 +159,9 @@ def _parse_string(text: str, dim: Dimension, field: str | None) -> float:
         raise InputError(prefix + f"{text!r} is not 'number unit'; expected a {dim.name} "
                          f"such as {dim.example!r}")
     number, unit = match.group(1), match.group(2).strip()
-    if dim.name == "angular_speed" and re.search(r"\bhz\b|hertz", unit, re.IGNORECASE):
+    if _RUNAWAY_POWER.search(unit):  # pint would evaluate e.g. 10**10**8 for minutes
+        raise InputError(prefix + f"unit {unit!r} in {text!r} has an exponent that is too large")
+    if dim.name == "angular_speed" and re.search(r"hz|hertz", unit, re.IGNORECASE):
         raise InputError(prefix + f"{text!r} -- Hz is ambiguous for a rotational speed; "
                          "use rpm, rev/s or rad/s")
     try:

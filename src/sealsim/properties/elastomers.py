@@ -1769,7 +1769,7 @@ def load_elastomer_file(path: str | Path) -> dict[str, Elastomer]:
             doc = tomllib.load(fh)
     except FileNotFoundError:
         raise InputError(f"elastomer file {str(p)!r} does not exist") from None
-    except tomllib.TOMLDecodeError as exc:
+    except ValueError as exc:  # TOMLDecodeError and integers tomllib cannot convert
         raise InputError(f"elastomer file {str(p)!r} is not valid TOML: {exc}") from None
     out: dict[str, Elastomer] = {}
     for key, table in doc.items():

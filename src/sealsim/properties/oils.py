@@ -1071,7 +1071,7 @@ def _parse_oils(text: str, origin: str, allow_aliases: bool
                 ) -> tuple[dict[str, Oil], dict[str, str]]:
     try:
         data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as err:
+    except ValueError as err:  # TOMLDecodeError and integers tomllib cannot convert
         raise InputError(f"{origin}: not a valid TOML file: {err}") from None
     extra = sorted(set(data) - {"oils"})
     if extra or not isinstance(data.get("oils"), dict):

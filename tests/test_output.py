@@ -1,0 +1,141 @@
+"""Result folders: all-or-nothing, never overwrite without force, no half-written files."""
+
+from __future__ import annotations
+
+import os
+
+import pandas as pd
+import pytest
+
+from sealsim.errors import InputError, ResultExistsError
+from sealsim.output import ResultFolder, atomic_write_bytes, atomic_write_text
+
+
+def _tree(path):
+    """Relative paths of everything below ``path`` (hidden entries included), sorted."""
+    return sorted(str(p.relative_to(path)) for p in path.rglob("*"))
+
+
+def _old_results(tmp_path):
+    out = tmp_path / "run"
+    out.mkdir()
+    (out / "summary.json").write_text('{"torque_Nm": 0.5}')
+    return out
+
+
+def test_new_folder_gets_all_files_and_nothing_else(tmp_path):
+    out = tmp_path / "new" / "run"  # parent does not exist yet
+    with ResultFolder(out) as folder:
+        folder.write_text("case.toml", "x = 1\n")
+        folder.write_json("summary.json", {"a": 1.5})
+        folder.write_csv("series.csv", pd.DataFrame({"t_s": [0.0, 1.0]}))
+        assert not out.exists()  # nothing is visible before the run succeeded
+    assert _tree(out) == ["case.toml", "series.csv", "summary.json"]
+    assert (out / "series.csv").read_text().splitlines() == ["t_s", "0.0", "1.0"]
+    assert _tree(out.parent) == ["run", "run/case.toml", "run/series.csv", "run/summary.json"]
+
+
+def test_refuses_non_empty_folder_without_force_before_writing(tmp_path):
+    out = _old_results(tmp_path)
+    before = _tree(tmp_path)
+    with pytest.raises(ResultExistsError, match="--force"):
+        ResultFolder(out)  # refused at construction, i.e. before any computing
+    assert _tree(tmp_path) == before  # no staging folder, no change
+    assert (out / "summary.json").read_text() == '{"torque_Nm": 0.5}'
+
+
+def test_force_replaces_old_results(tmp_path):
+    out = _old_results(tmp_path)
+    with ResultFolder(out, force=True) as folder:
+        folder.write_text("new.txt", "new")
+        assert (out / "summary.json").exists()  # old results stay until success
+    assert _tree(out) == ["new.txt"]  # old file gone, not merged
+    assert _tree(tmp_path) == ["run", "run/new.txt"]  # no backup or staging folder left
+
+
+@pytest.mark.parametrize("force", [False, True])
+def test_failure_inside_the_block_leaves_the_previous_folder_untouched(tmp_path, force):
+    out = tmp_path / "run"
+    if force:
+        out = _old_results(tmp_path)
+    before = {p: p.read_bytes() for p in out.rglob("*")} if out.exists() else None
+    with pytest.raises(RuntimeError, match="solver blew up"):
+        with ResultFolder(out, force=force) as folder:
+            folder.write_text("partial.csv", "t,x\n0,1\n")
+            raise RuntimeError("solver blew up")
+    if force:
+        assert {p: p.read_bytes() for p in out.rglob("*")} == before
+        assert _tree(tmp_path) == ["run", "run/summary.json"]  # no staging folder behind
+    else:
+        assert _tree(tmp_path) == []  # no target, no staging folder
+
+
+def test_interrupt_inside_the_block_leaves_nothing(tmp_path):
+    out = tmp_path / "run"
+    with pytest.raises(KeyboardInterrupt):
+        with ResultFolder(out) as folder:
+            folder.write_text("a.txt", "a")
+            raise KeyboardInterrupt
+    assert _tree(tmp_path) == []
+
+
+def test_empty_existing_folder_is_fine_without_force(tmp_path):
+    out = tmp_path / "run"
+    out.mkdir()
+    with ResultFolder(out) as folder:
+        folder.write_text("a.txt", "a")
+    assert _tree(out) == ["a.txt"]
+
+
+def test_path_that_is_a_file_is_an_input_error(tmp_path):
+    target = tmp_path / "results.txt"
+    target.write_text("not a folder")
+    with pytest.raises(InputError, match="is a file"):
+        ResultFolder(target, force=True)  # even force must not delete a file
+    assert target.read_text() == "not a folder"
+
+
+def test_use_outside_with_block_is_a_programming_error(tmp_path):
+    with pytest.raises(RuntimeError, match="with"):
+        ResultFolder(tmp_path / "run").write_text("a.txt", "a")
+
+
+def test_atomic_write_leaves_no_temporary_files(tmp_path):
+    target = tmp_path / "data.txt"
+    atomic_write_text(target, "first")
+    atomic_write_text(target, "second")  # replacing an existing file
+    assert target.read_text() == "second"
+    assert _tree(tmp_path) == ["data.txt"]
+
+
+def test_failed_atomic_write_keeps_the_old_file_and_no_temporary(tmp_path):
+    target = tmp_path / "data.bin"
+    atomic_write_bytes(target, b"old")
+    with pytest.raises(TypeError):
+        atomic_write_bytes(target, "not bytes")  # fails inside the write
+    assert target.read_bytes() == b"old"
+    assert _tree(tmp_path) == ["data.bin"]
+
+
+def test_failed_figure_save_leaves_no_temporary(tmp_path):
+    class BrokenFigure:
+        def savefig(self, path, **kwargs):
+            with open(path, "wb") as fh:
+                fh.write(b"half a png")
+            raise OSError("disk full")
+
+    out = tmp_path / "run"
+    with pytest.raises(OSError, match="disk full"):
+        with ResultFolder(out) as folder:
+            folder.savefig("plot.png", BrokenFigure())
+    assert _tree(tmp_path) == []
+
+
+def test_results_get_normal_permissions(tmp_path):
+    # result files are for sharing (the PNG written by savefig already gets 0666 & ~umask)
+    umask = os.umask(0)
+    os.umask(umask)
+    with ResultFolder(tmp_path / "run") as folder:
+        folder.write_text("a.txt", "a")
+    assert (tmp_path / "run" / "a.txt").stat().st_mode & 0o777 == 0o666 & ~umask
+    assert (tmp_path / "run").stat().st_mode & 0o777 == 0o777 & ~umask

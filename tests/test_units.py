@@ -1,0 +1,132 @@
+"""Units at the edges: sealsim.units.parse_quantity / format_quantity."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from sealsim.errors import InputError
+from sealsim.units import DIMENSIONS, format_quantity, parse_quantity
+
+# Conversions are exact up to float rounding of the conversion factors: 1e-12 relative.
+REL = 1e-12
+
+
+@pytest.mark.parametrize(
+    ("text", "dimension", "si"),
+    [
+        ("80 mm", "length", 0.08),
+        ("3.5 in", "length", 3.5 * 0.0254),
+        ("1500 rpm", "angular_speed", 1500 * 2 * math.pi / 60),
+        ("2 rev/s", "angular_speed", 4 * math.pi),
+        ("2 rps", "angular_speed", 4 * math.pi),  # sealsim defines rps = rev/s
+        ("10 rad/s", "angular_speed", 10.0),
+        ("55 degC", "temperature", 328.15),
+        ("300 K", "temperature", 300.0),
+        ("0.2 L", "volume", 2e-4),
+        ("6 bar", "pressure", 6e5),
+        ("12 mPa*s", "dynamic_viscosity", 0.012),
+        ("68 mm**2/s", "kinematic_viscosity", 68e-6),
+        ("10 Hz", "frequency", 10.0),  # Hz is fine where a frequency is meant
+        ("  -1.5e3 N  ", "force", -1500.0),  # sign, exponent, surrounding blanks
+        ("0.3", "dimensionless", 0.3),
+    ],
+)
+def test_parse_quantity_converts_to_si(text, dimension, si):
+    assert parse_quantity(text, dimension) == pytest.approx(si, rel=REL)
+
+
+def test_plain_number_is_fine_for_dimensionless():
+    assert parse_quantity(0.25, "dimensionless") == 0.25
+    assert parse_quantity(2, "dimensionless") == 2.0
+
+
+@pytest.mark.parametrize(
+    ("text", "dimension", "expected_words"),
+    [
+        ("80 kg", "length", ["'80 kg'", "length", "80 mm"]),  # names value, dimension, example
+        ("6 m", "pressure", ["'6 m'", "pressure"]),
+        ("55 degC", "length", ["length"]),
+    ],
+)
+def test_wrong_dimension_is_an_input_error(text, dimension, expected_words):
+    with pytest.raises(InputError) as err:
+        parse_quantity(text, dimension)
+    for word in expected_words:
+        assert word in str(err.value)
+
+
+@pytest.mark.parametrize("text", ["80 furlongz", "3 mmm", "5 m/(s"])
+def test_unknown_unit_is_an_input_error(text):
+    with pytest.raises(InputError, match="unknown unit|cannot read"):
+        parse_quantity(text, "length")
+
+
+@pytest.mark.parametrize("value", ["80", 80, 80.0])
+def test_missing_unit_is_an_input_error(value):
+    # a bare number for a dimensional field is ambiguous (mm? m?): refused, with an example
+    with pytest.raises(InputError, match="no unit") as err:
+        parse_quantity(value, "length")
+    assert "80 mm" in str(err.value)
+
+
+@pytest.mark.parametrize(
+    ("value", "dimension"),
+    [("nan mm", "length"), ("inf bar", "pressure"), ("-inf K", "temperature"),
+     (float("nan"), "dimensionless"), (float("inf"), "dimensionless"), ("1e400 m", "length")],
+)
+def test_non_finite_values_are_refused(value, dimension):
+    with pytest.raises(InputError, match="finite"):
+        parse_quantity(value, dimension)
+
+
+@pytest.mark.parametrize("text", [
+    "25 Hz", "25 hertz", "25 1/s*Hz/Hz Hz",
+    "25 kHz",
+])
+def test_hz_is_refused_for_angular_speed(text):
+    # pint takes 1 Hz = 1 rad/s whereas engineers mean 1 rev/s: ambiguous, so refused
+    with pytest.raises(InputError, match="rpm"):
+        parse_quantity(text, "angular_speed")
+
+
+@pytest.mark.parametrize("value", [True, None, [80, "mm"], {"value": 80}, b"80 mm"])
+def test_non_quantity_types_are_refused(value):
+    with pytest.raises(InputError, match="not a quantity"):
+        parse_quantity(value, "length")
+
+
+def test_field_name_starts_the_message():
+    with pytest.raises(InputError) as err:
+        parse_quantity("80 kg", "length", field="seal.shaft_diameter")
+    assert str(err.value).startswith("seal.shaft_diameter: ")
+
+
+@pytest.mark.parametrize(
+    ("si", "dimension", "text"),
+    [(0.08, "length", "80 mm"), (328.15, "temperature", "55 degC"),
+     (6e5, "pressure", "6 bar"), (2e-4, "volume", "0.2 L"), (0.3, "dimensionless", "0.3")],
+)
+def test_format_quantity_writes_display_units(si, dimension, text):
+    assert format_quantity(si, dimension) == text
+
+
+def _si_values(dimension: str):
+    if dimension == "temperature":
+        # absolute temperatures; near 0 K the degC offset would cost relative precision
+        return st.floats(min_value=1.0, max_value=1e4)
+    magnitude = st.floats(min_value=1e-12, max_value=1e12)
+    return st.one_of(magnitude, magnitude.map(lambda v: -v), st.just(0.0))
+
+
+@settings(max_examples=200, deadline=None)
+@given(data=st.data(), dimension=st.sampled_from(sorted(DIMENSIONS)))
+def test_format_then_parse_round_trips(data, dimension):
+    value = data.draw(_si_values(dimension))
+    back = parse_quantity(format_quantity(value, dimension), dimension)
+    # format_quantity keeps 12 significant digits: 1e-9 relative leaves room for the unit
+    # conversion (e.g. K -> degC -> K); abs 1e-300 only for the exact zero
+    assert back == pytest.approx(value, rel=1e-9, abs=1e-300)
