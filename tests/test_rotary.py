@@ -222,3 +222,16 @@ def test_cli_bad_case_is_one_clear_message(tmp_path):
     assert result.exit_code == 2
     assert "seal.shaft_diameter" in result.output and "Traceback" not in result.output
     assert not (tmp_path / "o").exists()
+
+
+def test_duty_steps_with_ramp_interpolate_speed():
+    # a step with ramp = 60 s rises linearly from the previous speed, then holds
+    case = _case(duty={"steps": [{"speed": "500 rpm", "duration": "2 min"},
+                                 {"speed": "1500 rpm", "duration": "3 min", "ramp": "60 s"}]})
+    times, speeds, steps = case.duty.profile()
+    assert steps == [(0.0, 120.0), (120.0, 300.0)]
+    mid_ramp = np.interp(150.0, times, speeds) * 30 / math.pi
+    assert mid_ramp == pytest.approx(1000.0)  # halfway between 500 and 1500 rpm
+    frame = simulate(case).timeseries
+    during = frame[(frame["time_s"] > 120) & (frame["time_s"] < 180)]
+    assert len(during) >= 5 and np.all(np.diff(during["speed_rpm"]) > 0)
