@@ -16,6 +16,7 @@ __all__ = [
     "free_convection_horizontal_cylinder",
     "free_convection_vertical_plate",
     "radiation_coefficient",
+    "rayleigh_number",
     "rotating_cylinder_coefficient",
     "rotating_cylinder_nusselt",
 ]
@@ -84,6 +85,35 @@ def rotating_cylinder_coefficient(angular_speed, diameter, kinematic_viscosity, 
     return rotating_cylinder_nusselt(re, prandtl) * np.asarray(conductivity, dtype=float) / diameter
 
 
+def rayleigh_number(length, delta_t, kinematic_viscosity, diffusivity, expansion):
+    """Rayleigh number Ra = g·β·|ΔT|·L³/(ν·α) of free convection (Incropera Eq. 9.25).
+
+    Parameters
+    ----------
+    length : float
+        Characteristic length L [m].
+    delta_t : array_like
+        |T_surface − T_fluid| [K].
+    kinematic_viscosity, diffusivity : array_like
+        ν and α of the fluid [m²/s].
+    expansion : array_like
+        Volumetric expansion coefficient β [1/K].
+
+    Returns
+    -------
+    numpy.ndarray
+        Ra [-].
+
+    Examples
+    --------
+    >>> f"{float(rayleigh_number(0.1, 10.0, 1.6e-5, 2.2e-5, 1/300)):.3g}"
+    '9.29e+05'
+    """
+    return (GRAVITY * np.asarray(expansion, dtype=float)
+            * np.abs(np.asarray(delta_t, dtype=float)) * length**3
+            / (np.asarray(kinematic_viscosity, dtype=float) * np.asarray(diffusivity, dtype=float)))
+
+
 def free_convection_horizontal_cylinder(diameter, delta_t, kinematic_viscosity, diffusivity,
                                         conductivity, expansion):
     """Free convection from a horizontal cylinder, Churchill & Chu (Incropera Eq. 9.34).
@@ -114,11 +144,8 @@ def free_convection_horizontal_cylinder(diameter, delta_t, kinematic_viscosity, 
     >>> round(float(free_convection_horizontal_cylinder(0.08, 20.0, nu, alpha, k, 1/300)), 1)
     4.7
     """
-    nu = np.asarray(kinematic_viscosity, dtype=float)
-    alpha = np.asarray(diffusivity, dtype=float)
-    ra = GRAVITY * np.asarray(expansion) * np.abs(np.asarray(delta_t, dtype=float)) \
-        * diameter**3 / (nu * alpha)
-    pr = nu / alpha
+    ra = rayleigh_number(diameter, delta_t, kinematic_viscosity, diffusivity, expansion)
+    pr = np.asarray(kinematic_viscosity, dtype=float) / np.asarray(diffusivity, dtype=float)
     nusselt = (0.60 + 0.387 * ra ** (1 / 6) / (1 + (0.559 / pr) ** (9 / 16)) ** (8 / 27)) ** 2
     return nusselt * np.asarray(conductivity, dtype=float) / diameter
 
@@ -153,11 +180,8 @@ def free_convection_vertical_plate(height, delta_t, kinematic_viscosity, diffusi
     >>> round(float(free_convection_vertical_plate(0.3, 40.0, nu, alpha, k, 1/313)), 1)
     5.2
     """
-    nu = np.asarray(kinematic_viscosity, dtype=float)
-    alpha = np.asarray(diffusivity, dtype=float)
-    ra = GRAVITY * np.asarray(expansion) * np.abs(np.asarray(delta_t, dtype=float)) \
-        * height**3 / (nu * alpha)
-    pr = nu / alpha
+    ra = rayleigh_number(height, delta_t, kinematic_viscosity, diffusivity, expansion)
+    pr = np.asarray(kinematic_viscosity, dtype=float) / np.asarray(diffusivity, dtype=float)
     nusselt = (0.825 + 0.387 * ra ** (1 / 6) / (1 + (0.492 / pr) ** (9 / 16)) ** (8 / 27)) ** 2
     return nusselt * np.asarray(conductivity, dtype=float) / height
 
