@@ -6,7 +6,9 @@ A case model is a :class:`CaseModel` whose physical fields are declared with :fu
         shaft_diameter: Q("length", gt=0)
 
 In a case file the value is a string with a unit (``shaft_diameter = "80 mm"``); after
-validation the attribute holds the SI float (0.08).  Dumping a model writes the quantities back
+validation the attribute holds the SI float (0.08).  Case files are validated with
+:func:`validate_case`, which requires the unit; a model built in Python also accepts a plain
+number, taken as the value in SI units (``Seal(shaft_diameter=0.08)``).  Dumping a model writes the quantities back
 as strings with units, so the *resolved case* (all defaults filled in) written next to every
 result can be read again to reproduce it.
 
@@ -25,7 +27,14 @@ from typing import Annotated, Any, TypeVar
 
 import pydantic
 import tomli_w
-from pydantic import BaseModel, ConfigDict, PlainSerializer, PlainValidator, WithJsonSchema
+from pydantic import (
+    BaseModel,
+    ConfigDict,
+    PlainSerializer,
+    PlainValidator,
+    ValidationInfo,
+    WithJsonSchema,
+)
 
 from sealsim.errors import InputError
 from sealsim.units import DIMENSIONS, format_quantity, parse_quantity
@@ -71,6 +80,8 @@ def Q(dimension: str, *, gt: float | None = None, ge: float | None = None,  # no
     0.08
     >>> Shaft(diameter="80 mm").model_dump()
     {'diameter': '80 mm'}
+    >>> Shaft(diameter=0.08).diameter   # from Python: SI
+    0.08
     """
     if dimension not in DIMENSIONS:
         raise KeyError(f"unknown dimension {dimension!r}; choose from {sorted(DIMENSIONS)}")
@@ -79,8 +90,15 @@ def Q(dimension: str, *, gt: float | None = None, ge: float | None = None,  # no
     def bound_text(value: float) -> str:
         return format_quantity(value, dimension)
 
-    def validate(value: Any) -> float:
-        si = parse_quantity(value, dimension)
+    def validate(value: Any, info: ValidationInfo) -> float:
+        if (isinstance(value, int | float) and not isinstance(value, bool)
+                and dimension != "dimensionless"
+                and not (info.context or {}).get("require_units")):
+            si = float(value)  # built in Python: a plain number is a value in SI units
+            if not math.isfinite(si):
+                raise ValueError(f"{value!r} is not a finite number")
+        else:
+            si = parse_quantity(value, dimension)
         for bound, ok, word in ((gt, lambda b: si > b, ">"), (ge, lambda b: si >= b, ">="),
                                 (lt, lambda b: si < b, "<"), (le, lambda b: si <= b, "<=")):
             if bound is not None and not ok(bound):
@@ -93,7 +111,8 @@ def Q(dimension: str, *, gt: float | None = None, ge: float | None = None,  # no
     return Annotated[
         float,
         PlainValidator(validate),
-        PlainSerializer(lambda v: format_quantity(v, dimension), return_type=str),
+        PlainSerializer(lambda v: float(v) if dimension == "dimensionless"
+                        else format_quantity(v, dimension), return_type=float | str),
         WithJsonSchema({"type": "string", "description": description}),
     ]
 
@@ -114,7 +133,8 @@ def load_toml(path: str | Path) -> dict[str, Any]:
         raise InputError(f"case file {str(path)!r} is not valid TOML: {exc}") from exc
 
 
-def validate_case(model: type[ModelT], data: Any, source: str = "case") -> ModelT:
+def validate_case(model: type[ModelT], data: Any, source: str = "case",
+                  require_units: bool = True) -> ModelT:
     """Validate ``data`` against ``model``; any problem becomes one :class:`InputError`.
 
     Parameters
@@ -125,9 +145,13 @@ def validate_case(model: type[ModelT], data: Any, source: str = "case") -> Model
         Parsed case data (e.g. from :func:`load_toml`).
     source : str
         Where the data came from (a file name), shown in the error message.
+
+    require_units : bool
+        Quantities must carry units (``"80 mm"``): a plain number is refused, because in a
+        file it is ambiguous.  ``False`` for values built in Python, where numbers are SI.
     """
     try:
-        return model.model_validate(data)
+        return model.model_validate(data, context={"require_units": require_units})
     except pydantic.ValidationError as exc:
         raise InputError(format_validation_error(exc, source, model)) from None
 
@@ -137,7 +161,7 @@ def format_validation_error(exc: pydantic.ValidationError, source: str,
     """One readable message for all problems in a pydantic ValidationError."""
     problems = []
     for err in exc.errors(include_url=False):
-        loc = ".".join(str(p) for p in err["loc"]) or "(top level)"
+        loc = ".".join(str(p) for p in _clean_location(model, err["loc"])) or "(top level)"
         kind = err["type"]
         given = err.get("input")
         if kind == "missing":
@@ -170,25 +194,56 @@ def _short(value: Any) -> str:
     return text if len(text) <= 80 else text[:77] + "..."
 
 
-def _model_in(annotation) -> type[BaseModel] | None:
-    """The case model inside an annotation (``Model``, ``Model | None``, ``list[Model]``)."""
-    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
-        return annotation
-    for arg in typing.get_args(annotation):
-        found = _model_in(arg)
-        if found is not None:
-            return found
-    return None
-
-
 def _submodel(model: type[BaseModel] | None, loc: tuple) -> type[BaseModel] | None:
     for part in loc:
         if isinstance(part, int):  # index into a list of sub-models
             continue
         if model is None or part not in model.model_fields:
             return None
-        model = _model_in(model.model_fields[part].annotation)
+        members = _models_in(model.model_fields[part].annotation)
+        model = members[0] if len(members) == 1 else None
     return model
+
+
+def _models_in(annotation) -> list[type[BaseModel]]:
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return [annotation]
+    return [m for arg in typing.get_args(annotation) for m in _models_in(arg)]
+
+
+def _tags(model: type[BaseModel]) -> set[str]:
+    """Names pydantic may put in an error location for this member of a union."""
+    tags = {model.__name__}
+    for field in model.model_fields.values():
+        if typing.get_origin(field.annotation) is typing.Literal:
+            tags.update(str(v) for v in typing.get_args(field.annotation))
+    return tags
+
+
+def _clean_location(model: type[BaseModel] | None, loc: tuple) -> tuple:
+    """Error location as written in the file: drop the tags pydantic inserts for unions.
+
+    ``friction.lugre.sigma0`` (tag ``lugre`` of a discriminated union) becomes
+    ``friction.sigma0``; ``seal.material`` stays as it is.
+    """
+    out: list = []
+    current: list[type[BaseModel]] = [model] if model is not None else []
+    for part in loc:
+        if isinstance(part, int):
+            out.append(part)
+            continue
+        if len(current) > 1:  # a union: the part may be the member's tag
+            chosen = [m for m in current if part in _tags(m)]
+            if chosen:
+                current = chosen[:1]
+                continue
+        if len(current) == 1 and part in current[0].model_fields:
+            out.append(part)
+            current = _models_in(current[0].model_fields[part].annotation)
+            continue
+        out.append(part)
+        current = []
+    return tuple(out)
 
 
 def _allowed_fields(model, loc) -> list[str]:
@@ -284,7 +339,12 @@ def expand_variants(model: type[ModelT], data: dict[str, Any],
 
 
 def dump_variants_toml(cases: dict[str, BaseModel], header: str | None = None) -> str:
-    """Resolved TOML for a set of variants; :func:`expand_variants` reads it back unchanged."""
+    """Resolved TOML for a set of variants; :func:`expand_variants` reads it back unchanged.
+
+    A single variant named ``"base"`` (a case without variants) is written as a plain case.
+    """
+    if list(cases) == [DEFAULT_VARIANT]:
+        return dump_case_toml(cases[DEFAULT_VARIANT], header)
     data = {"variants": {name: _drop_none(case.model_dump(mode="json"))
                          for name, case in cases.items()}}
     text = tomli_w.dumps(data)

@@ -72,6 +72,7 @@ DIMENSIONS: dict[str, Dimension] = {
         Dimension("dynamic_viscosity", "Pa*s", "12 mPa*s"),
         Dimension("density", "kg/m**3", "880 kg/m**3"),
         Dimension("stiffness", "N/m", "2 N/m"),
+        Dimension("force_rate", "N/s", "20 N/s"),
         Dimension("damping", "N*s/m", "0.4 N*s/m"),
         Dimension("force_per_length", "N/m", "0.3 N/mm"),
         Dimension("thermal_conductivity", "W/(m*K)", "45 W/(m*K)"),

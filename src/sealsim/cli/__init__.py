@@ -12,6 +12,7 @@ import typer
 
 from sealsim import __version__
 from sealsim.cli._common import console
+from sealsim.cli.friction import friction_app
 from sealsim.cli.properties import material_app, oil_app
 from sealsim.cli.rotary import rotary_app
 
@@ -25,6 +26,7 @@ app = typer.Typer(
 app.add_typer(oil_app, name="oil")
 app.add_typer(material_app, name="material")
 app.add_typer(rotary_app, name="rotary")
+app.add_typer(friction_app, name="friction")
 
 
 def _version(value: bool) -> None:

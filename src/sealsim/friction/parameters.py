@@ -1,0 +1,52 @@
+"""Named parameter sets of the friction laws, stored as data in ``parameter_sets.toml``.
+
+Each set records its source and how well it is verified ([V] verified, [M] memory, [R]
+reconstructed / illustrative -- the tags of the project's reference notes).  Use a set from a
+case file with ``parameter_set = "canudas1995"`` in the ``[law]`` table (explicit fields
+override it), or from Python:
+
+>>> from sealsim.friction import LuGre
+>>> law = LuGre.from_parameter_set("canudas1995", warn=False)
+>>> law.params.sigma0, law.params.static_force
+(100000.0, 1.5)
+>>> sorted(PARAMETER_SETS["lugre"])
+['canudas1995']
+"""
+
+from __future__ import annotations
+
+import tomllib
+from importlib import resources
+from typing import Any
+
+__all__ = ["PARAMETER_SETS", "parameter_set_source", "parameter_set_values"]
+
+
+def _load() -> dict[str, dict[str, dict[str, Any]]]:
+    text = resources.files("sealsim.friction").joinpath("parameter_sets.toml").read_text("utf-8")
+    return tomllib.loads(text)
+
+
+#: ``{law: {set name: {field: value, "source": text}}}`` as read from parameter_sets.toml
+PARAMETER_SETS: dict[str, dict[str, dict[str, Any]]] = _load()
+
+
+def parameter_set_values(law: str, name: str) -> dict[str, Any]:
+    """Field values of a named set (without its ``source``).
+
+    Raises
+    ------
+    ValueError
+        Unknown set; the message lists the sets of that law.
+    """
+    sets = PARAMETER_SETS.get(law, {})
+    if name not in sets:
+        choices = ", ".join(repr(s) for s in sorted(sets)) or "none"
+        raise ValueError(f"parameter_set {name!r} is not known for law {law!r}; "
+                         f"choose one of {choices}")
+    return {k: v for k, v in sets[name].items() if k != "source"}
+
+
+def parameter_set_source(law: str, name: str) -> str:
+    """Where the numbers of a named set come from (with its [V]/[M]/[R] tag)."""
+    return PARAMETER_SETS[law][name]["source"]

@@ -1,0 +1,558 @@
+"""The Θ rate-and-state friction law of seed 001 (Heipl & Murrenhoff, Carlson–Batista type).
+
+A lubrication state Θ ∈ [0, 1] per contact moves between dry/boundary friction (Θ = 0) and
+full hydrodynamic friction (Θ = 1)::
+
+    dΘ/dt = −Θ/τ + (|v|/α)·(F_ref/F_N)^n·(1 − Θ)                         (seed Eq. 4, [R])
+    F     = F_N·[f_a·(1 − Θ) + f_b·Θ]·sgn(v) + γ·b·v                    (seed Eq. 5, [R])
+
+The seed's equations are only partly legible; this is the reconstruction of
+pneumatic_friction.md §1.3 with the following choices (each marked [R], to be checked against
+the original paper):
+
+* **State term −Θ/τ** ("melting of the film defined by a time constant"): at rest the film is
+  squeezed out and Θ relaxes towards the dry state with time constant τ [s], so the break-away
+  force grows with dwell time and saturates: F_brk(t_d) = F_N·[f_a − (f_a − f_b)·Θ0·e^(−t_d/τ)].
+* **Rate term (|v|/α)(1 − Θ)**: shear builds the film over a characteristic sliding length α [m].
+* **Load F_N in the rate term** as (F_ref/F_N)^n (n = 1 by default): the sliding length needed
+  to build the film grows with the load, α_eff = α·(F_N/F_ref)^n.  Higher load → lower steady
+  Θ at every speed and a transition velocity v* = (α/τ)·(F_N/F_ref)^n that grows with load →
+  the "weakly developed transition" of seed Fig. 6 (upper loop).  Reason for the rate term and
+  not τ: the seed names F_N as a factor added to the description of the rate term, and a load
+  that only changed τ would also change the dwell-time behaviour, which the seed attributes to τ
+  alone.  F_ref only fixes the unit (α is the sliding length at F_N = F_ref).
+* **Force**: the seed distinguishes a static part F_a and a dynamic part F_b, with F_N and b as
+  the interfaces to the FE model.  Here F_a, F_b are *friction coefficients* f_a, f_b [-] that
+  multiply F_N (so the FE maps F_N(Δp, T) set the friction level, replacing the linear pressure
+  scaling of seed Eq. 3), weighted by the state: dry part f_a·(1 − Θ), mixed/boundary part
+  f_b·Θ; the viscous part γ·b·v with γ [N·s/m²] the grease/viscosity coefficient of the seed.
+* **Convention Θ = 0 dry, 1 hydrodynamic** (as the issue and the reference notes).  The labels
+  of seed Fig. 6 (dry at the top of the state axis) suggest the paper plots the complementary
+  variable 1 − Θ; the physics is the same.
+
+Steady state (closed form): Θ_ss(v) = |v|/(|v| + v*), v* = (α/τ)·(F_N/F_ref)^n, so
+F_ss(v) = F_N·[f_a·v* + f_b·|v|]/(|v| + v*)·sgn(v) + γ·b·v -- a Stribeck-shaped curve without an
+explicit Stribeck exponential.  The state lags behind the velocity with the time constant
+τ_eff = 1/(1/τ + |v|/α_eff), so F–v loops open up (hysteresis) more the faster v changes.
+
+**Sticking.**  At v = 0 the friction force balances the applied force up to the break-away level
+F_N·[f_a(1 − Θ) + f_b·Θ] (true sticking, no creep; resolved for all laws in
+:mod:`sealsim.friction.hybrid`).  Alternatively, with ``bristle_stiffness`` σ0 set, the law gets
+a second state, a LuGre bristle z [m] that saturates at that level::
+
+    dz/dt = v − σ0·|v|·z/g_Θ,   g_Θ = F_N·[f_a(1 − Θ) + f_b·Θ],   F = σ0·z + σ1·dz/dt + γ·b·v
+
+(the structure of Yanada's lubricant-film LuGre, §1.4).  This smooth variant has the same steady
+curve, adds pre-sliding, and suits implicit ODE solvers of coupled models (no switching).
+
+Θ stays in [0, 1] exactly: for constant v the state equation is linear and the exact step is a
+convex combination of the old Θ and Θ_ss ∈ [0, 1).
+
+References
+----------
+.. [1] O. Heipl, H. Murrenhoff, "Rate- and state-dependent friction model for elastomeric
+   seals" (seed 001), Eq. 4 and 5, Fig. 6.
+.. [2] J. M. Carlson, A. A. Batista, "Constitutive relation for the friction between lubricated
+   surfaces", Phys. Rev. E 53, 4153, 1996 (model structure [M]).
+.. [3] pneumatic_friction.md §1.3 (reconstruction [R]), §1.4 (Yanada & Sekikawa 2008 [M]).
+"""
+
+from __future__ import annotations
+
+from typing import Literal
+
+import numpy as np
+from pydantic import model_validator
+
+from sealsim.cases import Q
+from sealsim.friction.base import (
+    NO_INPUTS,
+    ContactInputs,
+    FrictionLaw,
+    LawParameters,
+    Partials,
+    affine_scan,
+    as_state,
+    as_velocity,
+    validate_parameters,
+)
+from sealsim.friction.lugre import _lugre_affine, lugre_bristle_rate
+
+__all__ = [
+    "Theta",
+    "ThetaParameters",
+    "theta_breakaway_after_dwell",
+    "theta_force",
+    "theta_friction_level",
+    "theta_rate",
+    "theta_steady",
+    "theta_steady_force",
+    "theta_step",
+    "theta_transition_velocity",
+]
+
+
+# --------------------------------------------------------------------------------------------
+# Pure functions
+# --------------------------------------------------------------------------------------------
+def _load_factor(normal_force, reference_normal_force, load_exponent):
+    """(F_N/F_ref)^n [-]."""
+    return (np.asarray(normal_force, dtype=float) / reference_normal_force) ** load_exponent
+
+
+def _shear_rate(v, tau, alpha, normal_force, reference_normal_force, load_exponent):
+    """r = |v|/α·(F_ref/F_N)^n [1/s] (inf for F_N = 0 while sliding, 0 at rest)."""
+    speed = np.abs(np.asarray(v, dtype=float))
+    p = _load_factor(normal_force, reference_normal_force, load_exponent)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        r = speed / (alpha * p)
+    return np.where(speed > 0, np.where(p > 0, r, np.inf), 0.0)
+
+
+def theta_transition_velocity(tau, alpha, normal_force, reference_normal_force,
+                              load_exponent=1.0):
+    """Transition velocity of the steady Θ curve, v* = (α/τ)·(F_N/F_ref)^n.
+
+    Parameters
+    ----------
+    tau : array_like
+        Film relaxation time constant τ [s].
+    alpha : array_like
+        Characteristic sliding length α [m] at F_N = F_ref.
+    normal_force : array_like
+        Normal force F_N [N].
+    reference_normal_force : array_like
+        Reference load F_ref [N].
+    load_exponent : array_like
+        Load exponent n [-].
+
+    Returns
+    -------
+    ndarray
+        v* [m/s]; Θ_ss(v*) = 1/2.
+
+    Examples
+    --------
+    >>> float(theta_transition_velocity(2.0, 0.1, 200.0, 100.0))
+    0.1
+    """
+    return np.asarray(alpha, dtype=float) / tau * _load_factor(normal_force,
+                                                               reference_normal_force,
+                                                               load_exponent)
+
+
+def theta_rate(theta, v, tau, alpha, normal_force, reference_normal_force, load_exponent=1.0):
+    """dΘ/dt of the reconstructed seed Eq. 4.
+
+    .. math:: \\dot\\Theta = -\\frac{\\Theta}{\\tau}
+              + \\frac{|v|}{\\alpha}\\left(\\frac{F_{ref}}{F_N}\\right)^n (1 - \\Theta)
+
+    Parameters
+    ----------
+    theta : array_like
+        Lubrication state Θ [-] (0 dry, 1 hydrodynamic).
+    v : array_like
+        Sliding velocity [m/s].
+    tau : array_like
+        Film relaxation time constant τ [s].
+    alpha : array_like
+        Characteristic sliding length α [m].
+    normal_force : array_like
+        Normal force F_N [N], > 0.
+    reference_normal_force : array_like
+        Reference load F_ref [N].
+    load_exponent : array_like
+        Load exponent n [-].
+
+    Returns
+    -------
+    ndarray
+        dΘ/dt [1/s].
+
+    Examples
+    --------
+    >>> float(theta_rate(0.5, 0.0, 2.0, 0.1, 100.0, 100.0))        # at rest: −Θ/τ
+    -0.25
+    >>> float(theta_rate(0.5, 0.05, 2.0, 0.1, 100.0, 100.0))       # v = v*: steady at 1/2
+    0.0
+    """
+    theta = np.asarray(theta, dtype=float)
+    p = _load_factor(normal_force, reference_normal_force, load_exponent)
+    return -theta / tau + np.abs(np.asarray(v, dtype=float)) / (alpha * p) * (1.0 - theta)
+
+
+def theta_steady(v, tau, alpha, normal_force, reference_normal_force, load_exponent=1.0):
+    """Steady lubrication state at constant velocity (closed form of Eq. 4).
+
+    .. math:: \\Theta_{ss}(v) = \\frac{|v|}{|v| + v^*}, \\qquad
+              v^* = \\frac{\\alpha}{\\tau}\\left(\\frac{F_N}{F_{ref}}\\right)^n
+
+    Parameters are those of :func:`theta_rate`.
+
+    Returns
+    -------
+    ndarray
+        Θ_ss [-] in [0, 1).
+
+    Examples
+    --------
+    >>> theta_steady([0.0, 0.05, 0.45], 2.0, 0.1, 100.0, 100.0)
+    array([0. , 0.5, 0.9])
+    """
+    speed = np.abs(np.asarray(v, dtype=float))
+    v_star = theta_transition_velocity(tau, alpha, normal_force, reference_normal_force,
+                                       load_exponent)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(speed > 0, speed / (speed + v_star), 0.0)
+
+
+def theta_step(theta, v, dt, tau, alpha, normal_force, reference_normal_force,
+               load_exponent=1.0):
+    """Exact Θ after ``dt`` with v and F_N held constant.
+
+    .. math:: \\Theta(t+\\Delta t) = \\Theta_{ss} + (\\Theta - \\Theta_{ss})\\,
+              e^{-(1/\\tau + r)\\Delta t}, \\qquad r = \\frac{|v|}{\\alpha}
+              \\left(\\frac{F_{ref}}{F_N}\\right)^n
+
+    A convex combination of Θ and Θ_ss: Θ stays in [0, 1] for any dt >= 0.
+
+    Parameters are those of :func:`theta_rate` plus ``dt`` [s].
+
+    Returns
+    -------
+    ndarray
+        Θ at the end of the step [-].
+
+    Examples
+    --------
+    >>> float(theta_step(0.8, 0.0, 2.0, 2.0, 0.1, 100.0, 100.0))   # dwell of one τ
+    0.294...
+    """
+    a, b = _theta_affine(v, dt, tau, alpha, normal_force, reference_normal_force,
+                         load_exponent)
+    return a * np.asarray(theta, dtype=float) + b
+
+
+def _theta_affine(v, dt, tau, alpha, normal_force, reference_normal_force, load_exponent):
+    r = _shear_rate(v, tau, alpha, normal_force, reference_normal_force, load_exponent)
+    decay = -np.expm1(-(1.0 / tau + r) * dt)           # 1 − e^{−λ dt} in [0, 1]
+    theta_ss = theta_steady(v, tau, alpha, normal_force, reference_normal_force, load_exponent)
+    return 1.0 - decay, theta_ss * decay
+
+
+def theta_friction_level(theta, normal_force, f_a, f_b):
+    """Boundary-friction level g_Θ = F_N·[f_a·(1 − Θ) + f_b·Θ] [N] (seed Eq. 5, [R]).
+
+    This is the sliding force without the viscous part and, at rest, the break-away force.
+
+    Parameters
+    ----------
+    theta : array_like
+        Lubrication state Θ [-].
+    normal_force : array_like
+        Normal force F_N [N].
+    f_a : array_like
+        Dry (static) friction coefficient f_a [-] (seed F_a).
+    f_b : array_like
+        Friction coefficient with a full film f_b [-] (seed F_b).
+
+    Returns
+    -------
+    ndarray
+        g_Θ [N].
+
+    Examples
+    --------
+    >>> theta_friction_level([0.0, 1.0], 100.0, 0.5, 0.1)
+    array([50., 10.])
+    """
+    theta = np.asarray(theta, dtype=float)
+    return np.asarray(normal_force, dtype=float) * (f_a * (1.0 - theta) + f_b * theta)
+
+
+def theta_force(theta, v, normal_force, contact_width, f_a, f_b, gamma):
+    """Sliding friction force of the Θ law (seed Eq. 5, reconstructed).
+
+    .. math:: F = F_N\\,[f_a(1-\\Theta) + f_b\\Theta]\\operatorname{sgn}(v) + \\gamma\\,b\\,v
+
+    Parameters
+    ----------
+    theta : array_like
+        Lubrication state Θ [-].
+    v : array_like
+        Sliding velocity [m/s].
+    normal_force : array_like
+        Normal force F_N [N].
+    contact_width : array_like
+        Contact width b [m].
+    f_a, f_b : array_like
+        Dry and full-film friction coefficients [-].
+    gamma : array_like
+        Viscous coefficient γ [N·s/m²] (force per contact width and velocity).
+
+    Returns
+    -------
+    ndarray
+        Friction force [N] (0 at v = 0; the force at rest is resolved by the hybrid logic).
+
+    Examples
+    --------
+    >>> float(theta_force(0.5, 1.0, 100.0, 1e-3, 0.5, 0.1, 1e4))
+    40.0
+    """
+    v = np.asarray(v, dtype=float)
+    return (theta_friction_level(theta, normal_force, f_a, f_b) * np.sign(v)
+            + gamma * np.asarray(contact_width, dtype=float) * v)
+
+
+def theta_steady_force(v, normal_force, contact_width, tau, alpha, f_a, f_b, gamma,
+                       reference_normal_force, load_exponent=1.0):
+    """Steady friction force of the Θ law (closed form).
+
+    .. math:: F_{ss}(v) = F_N\\,\\frac{f_a v^* + f_b |v|}{|v| + v^*}\\operatorname{sgn}(v)
+              + \\gamma\\,b\\,v
+
+    Parameters are those of :func:`theta_force` and :func:`theta_rate`.
+
+    Returns
+    -------
+    ndarray
+        Steady friction force [N].
+
+    Examples
+    --------
+    >>> theta_steady_force([0.05, 1.0], 100.0, 1e-3, 2.0, 0.1, 0.5, 0.1, 1e4, 100.0)
+    array([30.5 , 21.9047619])
+    """
+    theta = theta_steady(v, tau, alpha, normal_force, reference_normal_force, load_exponent)
+    return theta_force(theta, v, normal_force, contact_width, f_a, f_b, gamma)
+
+
+def theta_breakaway_after_dwell(dwell, theta0, tau, normal_force, f_a, f_b):
+    """Break-away force after resting for ``dwell`` [s] from the state Θ0.
+
+    .. math:: F_{brk}(t_d) = F_N\\,[f_a - (f_a - f_b)\\,\\Theta_0\\,e^{-t_d/\\tau}]
+
+    Grows with the dwell time and saturates at F_N·f_a (the dry level).
+
+    Parameters
+    ----------
+    dwell : array_like
+        Dwell (rest) time t_d [s].
+    theta0 : array_like
+        Lubrication state when the motion stopped [-].
+    tau : array_like
+        Film relaxation time constant [s].
+    normal_force : array_like
+        Normal force F_N [N].
+    f_a, f_b : array_like
+        Dry and full-film friction coefficients [-].
+
+    Returns
+    -------
+    ndarray
+        Break-away force [N].
+
+    Examples
+    --------
+    >>> theta_breakaway_after_dwell([0.0, 2.0, 1e3], 0.8, 2.0, 100.0, 0.5, 0.1)
+    array([18. , 38.227..., 50. ])
+    """
+    theta = np.asarray(theta0, dtype=float) * np.exp(-np.asarray(dwell, dtype=float) / tau)
+    return theta_friction_level(theta, normal_force, f_a, f_b)
+
+
+# --------------------------------------------------------------------------------------------
+# Parameters and law object
+# --------------------------------------------------------------------------------------------
+class ThetaParameters(LawParameters):
+    """Parameters of the Θ law (seed 001 Eq. 4/5 as reconstructed, see module docstring)."""
+
+    law: Literal["theta"] = "theta"
+    tau: Q("time", gt=0)
+    alpha: Q("length", gt=0)
+    f_a: Q("dimensionless", ge=0)
+    f_b: Q("dimensionless", ge=0)
+    gamma: Q("dynamic_viscosity", ge=0) = 0.0
+    reference_normal_force: Q("force", gt=0)
+    load_exponent: Q("dimensionless", ge=0, le=10) = 1.0
+    bristle_stiffness: Q("stiffness", gt=0) | None = None
+    bristle_damping: Q("damping", ge=0) = 0.0
+
+    @model_validator(mode="after")
+    def _check(self):
+        if self.bristle_stiffness is not None and (self.f_a <= 0 or self.f_b <= 0):
+            raise ValueError("with bristle_stiffness the friction coefficients f_a and f_b must "
+                             f"be > 0 (the bristles saturate at F_N*f), got f_a = {self.f_a:g}, "
+                             f"f_b = {self.f_b:g}")
+        if self.bristle_stiffness is None and self.bristle_damping:
+            raise ValueError("bristle_damping needs bristle_stiffness")
+        return self
+
+
+class Theta(FrictionLaw):
+    """The Θ rate-and-state law of seed 001 (see the module docstring for the equations).
+
+    States: ``("theta",)``, or ``("theta", "z")`` with bristles (``bristle_stiffness``).
+    Inputs: ``normal_force`` F_N [N] (> 0) and ``contact_width`` b [m] (>= 0).
+
+    Parameters
+    ----------
+    params : ThetaParameters, optional
+        Or keyword arguments (SI): ``tau`` τ [s], ``alpha`` α [m], ``f_a``, ``f_b`` [-],
+        ``gamma`` γ [N·s/m²], ``reference_normal_force`` F_ref [N], ``load_exponent`` n [-],
+        ``bristle_stiffness`` σ0 [N/m] (optional), ``bristle_damping`` σ1 [N·s/m].
+
+    Examples
+    --------
+    >>> law = Theta.from_parameter_set("pneumatic_demo")
+    >>> inputs = ContactInputs(normal_force=100.0, contact_width=1e-3)
+    >>> law.steady_state([0.05], inputs)
+    array([[0.5]])
+    >>> law.steady_force([0.05], inputs)
+    array([30.5])
+    >>> law.breakaway_force(np.array([[0.0]]), inputs)
+    array([50.])
+    """
+
+    name = "theta"
+
+    def __init__(self, params: ThetaParameters | None = None, **values):
+        self.params = params if params is not None else validate_parameters(
+            ThetaParameters, values, "theta parameters")
+
+    @classmethod
+    def from_parameter_set(cls, name: str, **overrides):
+        return cls(validate_parameters(ThetaParameters, {"parameter_set": name, **overrides},
+                                       "theta parameters"))
+
+    @property
+    def bristles(self) -> bool:
+        """True for the variant with a pre-sliding bristle state."""
+        return self.params.bristle_stiffness is not None
+
+    @property
+    def state_names(self):  # type: ignore[override]
+        return ("theta", "z") if self.bristles else ("theta",)
+
+    @property
+    def has_stiction(self) -> bool:  # type: ignore[override]
+        return not self.bristles
+
+    affine = True
+
+    # -- inputs --------------------------------------------------------------------------
+    def _fn(self, inputs: ContactInputs):
+        return inputs.require("normal_force", "theta", positive=True)
+
+    def _b(self, inputs: ContactInputs):
+        return inputs.require("contact_width", "theta", nonnegative=True)
+
+    def _rate_args(self, inputs):
+        p = self.params
+        return (p.tau, p.alpha, self._fn(inputs), p.reference_normal_force, p.load_exponent)
+
+    def level(self, theta, inputs: ContactInputs):
+        """Boundary friction level g_Θ [N] (break-away force at rest)."""
+        p = self.params
+        return theta_friction_level(theta, self._fn(inputs), p.f_a, p.f_b)
+
+    def relaxed_storage(self, z):
+        z = np.asarray(z, dtype=float)
+        if not self.bristles:
+            return np.zeros(z.shape[-1])
+        return 0.5 * self.params.bristle_stiffness * z[1] ** 2
+
+    def initial_state(self, n: int = 1):
+        """Dry, relaxed contacts (Θ = 0 after a long rest; z = 0)."""
+        return np.zeros((self.n_states, n))
+
+    # -- interface -----------------------------------------------------------------------
+    def derivatives(self, z, v, inputs: ContactInputs = NO_INPUTS):
+        v = as_velocity(v)
+        z = as_state(z, self.n_states)
+        dtheta = theta_rate(z[0], v, *self._rate_args(inputs))
+        if not self.bristles:
+            return dtheta[None, :]
+        dz = lugre_bristle_rate(z[1], v, self.params.bristle_stiffness,
+                                self.level(z[0], inputs))
+        return np.stack(np.broadcast_arrays(dtheta, dz))
+
+    def force(self, z, v, inputs: ContactInputs = NO_INPUTS):
+        p = self.params
+        v = as_velocity(v)
+        z = as_state(z, self.n_states)
+        if not self.bristles:
+            return theta_force(z[0], v, self._fn(inputs), self._b(inputs), p.f_a, p.f_b, p.gamma)
+        zdot = lugre_bristle_rate(z[1], v, p.bristle_stiffness, self.level(z[0], inputs))
+        return (p.bristle_stiffness * z[1] + p.bristle_damping * zdot
+                + p.gamma * self._b(inputs) * v)
+
+    def partials(self, z, v, inputs: ContactInputs = NO_INPUTS):
+        p = self.params
+        v = as_velocity(v)
+        z = as_state(z, self.n_states)
+        fn = self._fn(inputs)
+        b = self._b(inputs)
+        load = _load_factor(fn, p.reference_normal_force, p.load_exponent)
+        r = np.abs(v) / (p.alpha * load)
+        shape = np.broadcast_shapes(v.shape, z.shape[1:], np.shape(fn), np.shape(b))
+        d_tt = np.broadcast_to(-1.0 / p.tau - r, shape)
+        d_tv = np.broadcast_to(np.sign(v) / (p.alpha * load) * (1.0 - z[0]), shape)
+        dlevel = fn * (p.f_b - p.f_a)                       # ∂g_Θ/∂Θ
+        if not self.bristles:
+            return Partials(d_tt[None, None], d_tv[None],
+                            np.broadcast_to(dlevel * np.sign(v), shape)[None].copy(),
+                            np.broadcast_to(p.gamma * b, shape).copy())
+        s0, s1 = p.bristle_stiffness, p.bristle_damping
+        g = self.level(z[0], inputs)
+        d_zt = s0 * np.abs(v) * z[1] * dlevel / g ** 2
+        d_zz = -s0 * np.abs(v) / g
+        d_zv = 1.0 - s0 * np.sign(v) * z[1] / g
+        jac = np.zeros((2, 2) + shape)
+        jac[0, 0] = d_tt
+        jac[1, 0] = d_zt
+        jac[1, 1] = d_zz
+        dzdv = np.stack([d_tv, np.broadcast_to(d_zv, shape)])
+        dfdz = np.stack([np.broadcast_to(s1 * d_zt, shape),
+                         np.broadcast_to(s0 + s1 * d_zz, shape)])
+        return Partials(jac, dzdv, dfdz, np.broadcast_to(s1 * d_zv + p.gamma * b, shape).copy())
+
+    def step(self, z, v, dt, inputs: ContactInputs = NO_INPUTS):
+        v = as_velocity(v)
+        z = as_state(z, self.n_states)
+        theta1 = theta_step(z[0], v, dt, *self._rate_args(inputs))
+        if not self.bristles:
+            return theta1[None, :]
+        g_mid = self.level(0.5 * (z[0] + theta1), inputs)
+        a, b = _lugre_affine(v, dt, self.params.bristle_stiffness, g_mid)
+        z1 = a * z[1] + b
+        return np.stack(np.broadcast_arrays(theta1, z1))
+
+    def _affine_trajectory(self, z0, v, dt, inputs):
+        a, b = _theta_affine(v, dt[:, None], *self._rate_args(inputs))
+        theta = affine_scan(a, b, z0[0])
+        if not self.bristles:
+            return theta[:, None, :]
+        g_mid = self.level(0.5 * (theta[:-1] + theta[1:]), inputs)
+        a_z, b_z = _lugre_affine(v, dt[:, None], self.params.bristle_stiffness, g_mid)
+        zb = affine_scan(a_z, b_z, z0[1])
+        return np.stack(np.broadcast_arrays(theta, zb), axis=1)
+
+    def steady_state(self, v, inputs: ContactInputs = NO_INPUTS):
+        v = as_velocity(v)
+        theta = theta_steady(v, *self._rate_args(inputs))
+        if not self.bristles:
+            return np.atleast_2d(theta)
+        z = np.sign(v) * self.level(theta, inputs) / self.params.bristle_stiffness
+        return np.stack(np.broadcast_arrays(theta, z))
+
+    def steady_force(self, v, inputs: ContactInputs = NO_INPUTS):
+        p = self.params
+        return theta_steady_force(as_velocity(v), self._fn(inputs), self._b(inputs), p.tau,
+                                  p.alpha, p.f_a, p.f_b, p.gamma, p.reference_normal_force,
+                                  p.load_exponent)
+
+    def breakaway_force(self, z, inputs: ContactInputs = NO_INPUTS):
+        z = as_state(z, self.n_states)
+        return self.level(z[0], inputs)
