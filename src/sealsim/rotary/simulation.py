@@ -225,14 +225,15 @@ class RotaryModel:
             "seal_pocket": th.seal_air_factor * h_air,
         }
 
-    def pocket_exchange(self, angular_speed: float) -> Link:
-        """Air pocket ↔ ambient: the shaft's air-side coefficient over the annular opening."""
-        h = self.coefficients(angular_speed, self.start_temperature)["shaft_air"]
-        return Link("air_pocket", "ambient", h * self.grid.pocket_opening_area)
-
     def assemble(self, angular_speed: float, sump_temperature: float):
-        return self.network.assemble(self.coefficients(angular_speed, sump_temperature),
-                                     [*self.links, self.pocket_exchange(angular_speed)])
+        """Network matrices at this speed and sump temperature.
+
+        The air pocket exchanges with the ambient through its annular opening with the shaft's
+        air-side coefficient.
+        """
+        h = self.coefficients(angular_speed, sump_temperature)
+        pocket = Link("air_pocket", "ambient", h["shaft_air"] * self.grid.pocket_opening_area)
+        return self.network.assemble(h, [*self.links, pocket])
 
     def fixed_temperatures(self) -> np.ndarray:
         env = self.case.environment
@@ -310,7 +311,7 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
     t_contact = model.contact_temperature(temps)
     dt = num.min_time_step
     generated = dissipated = 0.0
-    oil_low, notes = model.oil.min_temperature, []
+    notes: list[str] = []
     service_max = model.elastomer.service_range[1]
     k_break = 1
     last_report = -1.0
@@ -368,8 +369,6 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
         notes.append(f"contact temperature reached {frame['T_contact_C'].max():.0f} degC, above "
                      f"the service limit of {model.elastomer.name} "
                      f"({service_max - CELSIUS_0:.0f} degC)")
-    if oil_low is not None and frame["T_sump_C"].min() < oil_low - CELSIUS_0:
-        notes.append("sump temperature fell below the oil's lowest usable temperature")
     result = RotaryResult(case, frame, _step_summary(frame, steps, speeds, times), energy, notes,
                           {"time_steps": len(rows), "factorisations": stepper.factorisations,
                            "thermal_nodes": model.network.n_cells})
@@ -399,7 +398,8 @@ def _step_summary(frame: pd.DataFrame, steps, speeds, times) -> list[dict]:
     for start, stop in steps:
         lo = max(start, stop - AVERAGING_WINDOW)
         entry = {"start_s": float(start), "end_s": float(stop),
-                 "speed_rpm": float(np.interp(stop - 1e-9, times, speeds)) * 30 / math.pi}
+                 "speed_rpm": round(float(np.interp(stop - 1e-9, times, speeds)) * 30 / math.pi,
+                                    6)}
         for column in ("torque_Nm", "power_W", "T_contact_C", "T_groove_C", "T_sump_C"):
             entry[column] = _time_average(t, frame[column].to_numpy(), lo, stop)
         out.append(entry)
