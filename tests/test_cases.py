@@ -394,7 +394,7 @@ def test_fuzz_parse_quantity_returns_float_or_input_error(text):
 def test_huge_integer_in_a_case_file_is_an_input_error(tmp_path):
     path = tmp_path / "case.toml"
     path.write_text(dump_case_toml(validate_case(Case, VALID)).replace(
-        'friction_coefficient = "0.25"', "friction_coefficient = 1" + "0" * 400))
+        "friction_coefficient = 0.25", "friction_coefficient = 1" + "0" * 400))
     with pytest.raises(InputError, match="friction_coefficient"):
         validate_case(Case, load_toml(path))
 

@@ -15,6 +15,7 @@ from sealsim.cli._common import console
 from sealsim.cli.friction import friction_app
 from sealsim.cli.properties import material_app, oil_app
 from sealsim.cli.rotary import rotary_app
+from sealsim.cli.structure import structure_app
 
 app = typer.Typer(
     name="sealsim",
@@ -27,6 +28,7 @@ app.add_typer(oil_app, name="oil")
 app.add_typer(material_app, name="material")
 app.add_typer(rotary_app, name="rotary")
 app.add_typer(friction_app, name="friction")
+app.add_typer(structure_app, name="structure")
 
 
 def _version(value: bool) -> None:

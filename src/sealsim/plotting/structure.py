@@ -1,0 +1,160 @@
+"""Figures of the structural seal model: deformed section with stress and contact pressure,
+load-state curves, characteristic maps. Figures are pyplot-free; plotting never changes
+results."""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.collections import PolyCollection
+
+from sealsim.plotting import new_figure
+
+__all__ = ["plot_map", "plot_section", "plot_states"]
+
+_LABELS = {
+    "sealing_surface": "sealing surface",
+    "groove_bottom": "groove bottom",
+    "wall_upstream": "groove wall (upstream)",
+    "wall_downstream": "groove wall (downstream)",
+}
+
+
+def plot_section(state, title: str = ""):
+    """Deformed cross-section coloured by von Mises stress, with the rigid gland lines, and
+    the contact pressure profiles p(z) on the sealing surface and the groove bottom.
+
+    Parameters
+    ----------
+    state : StateResult
+        One load state (:func:`sealsim.structure.results.extract`).
+    title : str
+        Figure title.
+    """
+    fig, (ax, axp) = new_figure(2, 1, width=11.0, height=4.6,
+                                gridspec_kw={"width_ratios": [1.0, 1.25]})
+    pts = state.deformed_points * 1e3
+    polys = pts[state.cells]
+    vm = state.von_mises / 1e6
+    coll = PolyCollection(polys, array=vm, cmap="viridis", edgecolors="face", linewidths=0.2)
+    ax.add_collection(coll)
+    cb = fig.colorbar(coll, ax=ax, shrink=0.85)
+    cb.set_label("von Mises stress [MPa]")
+    lo, hi = pts.min(axis=0), pts.max(axis=0)
+    span = (hi - lo).max()
+    pad = 0.25 * span
+    walls = [ln.point[0] * 1e3 for ln in state.lines if abs(ln.normal[0]) > 0.5]
+    xlim = (min([lo[0], *walls]) - pad, max([hi[0], *walls]) + pad)
+    ylim = (lo[1] - pad, hi[1] + pad)
+    radial = {ln.name: ln.point[1] * 1e3 for ln in state.lines if abs(ln.normal[1]) > 0.5}
+    y_seal = radial.get("sealing_surface")
+    y_groove = radial.get("groove_bottom")
+    hatch = 0.08 * span
+    for line in state.lines:
+        x0, y0 = np.array(line.point) * 1e3
+        if abs(line.normal[1]) > 0.5:  # radial surface: horizontal line
+            side = -np.sign(line.normal[1])
+            ax.fill_between(xlim, y0, y0 + side * hatch, color="0.82", lw=0)
+            ax.plot(xlim, [y0, y0], color="0.25", lw=2.0)
+        else:  # groove wall: from the groove bottom to a small clearance gap at the seal side
+            if y_seal is not None and y_groove is not None:
+                gap = 0.04 * abs(y_groove - y_seal)
+                y_end = y_seal + np.sign(y_groove - y_seal) * gap
+                ys = [y_groove, y_end]
+            else:
+                ys = list(ylim)
+            side = -np.sign(line.normal[0])
+            ax.fill_betweenx(ys, x0, x0 + side * hatch, color="0.82", lw=0)
+            ax.plot([x0, x0], ys, color="0.25", lw=2.0)
+    ax.set_xlim(*xlim)
+    ax.set_ylim(*ylim)
+    ax.set_aspect("equal")
+    ax.set_xlabel("axial position z [mm] (fluid pressure from the left)")
+    ax.set_ylabel("radius r [mm]")
+    ax.set_title(f"squeeze {state.squeeze * 100:.3g} %, {state.pressure / 1e5:.3g} bar, "
+                 f"{state.temperature - 273.15:.4g} °C", fontsize=10)
+    for name, style in (("sealing_surface", "-o"), ("groove_bottom", "--s")):
+        s = state.surfaces.get(name)
+        if s is None or s.position.size == 0:
+            continue
+        z = np.concatenate([[s.edge_low], s.position, [s.edge_high]]) * 1e3
+        p = np.concatenate([[0.0], s.pressure, [0.0]]) / 1e6
+        label = (f"{_LABELS[name]}: F = {s.force:.1f} N, b = {s.width * 1e3:.3f} mm, "
+                 f"p_max = {s.p_max / 1e6:.2f} MPa")
+        axp.plot(z, p, style, ms=2.5, lw=1.2, label=label)
+    if state.pressure > 0:
+        axp.axhline(state.pressure / 1e6, color="0.5", lw=0.8, ls=":",
+                    label=f"fluid pressure {state.pressure / 1e5:.3g} bar")
+    axp.set_xlabel("axial position z [mm]")
+    axp.set_ylabel("contact pressure [MPa]")
+    axp.set_ylim(bottom=0.0)
+    axp.grid(alpha=0.3)
+    axp.legend(fontsize=8, loc="upper left")
+    if title:
+        fig.suptitle(title)
+    return fig
+
+
+def plot_states(frame, x: str | None = None, title: str = ""):
+    """F_N, b and peak pressures over the load states of a ``result.csv`` frame.
+
+    ``x`` is the column on the horizontal axis; by default time for a temperature history,
+    the load states (labelled) for a squeeze-then-pressure path, else the varying load.
+    """
+    labels = None
+    if x is None:
+        spans = {c: float(np.ptp(frame[c].to_numpy())) for c in
+                 ("temperature_C", "pressure_bar", "squeeze")}
+        if spans["temperature_C"] > 0:
+            x = "time_s"  # a temperature history (seed 001 Fig. 8 is over time)
+        elif spans["squeeze"] > 0 and spans["pressure_bar"] > 0:
+            x = "load state"
+            labels = [f"{s * 100:.3g} %" if k == 0 or s != frame["squeeze"].iloc[k - 1]
+                      else f"{p:.3g} bar"
+                      for k, (s, p) in enumerate(zip(frame["squeeze"], frame["pressure_bar"],
+                                                     strict=True))]
+        else:
+            x = "pressure_bar" if spans["pressure_bar"] > 0 else "squeeze"
+    fig, axes = new_figure(3, 1, width=12.0, height=3.6)
+    xs = np.arange(len(frame)) if x == "load state" else frame[x].to_numpy()
+    axes[0].plot(xs, frame["F_N_N"], "-o", ms=3, label="sealing surface F_N")
+    axes[0].plot(xs, frame["F_groove_bottom_N"], "--s", ms=3, label="groove bottom")
+    axes[0].set_ylabel("normal force (360°) [N]")
+    axes[1].plot(xs, frame["b_mm"], "-o", ms=3)
+    axes[1].set_ylabel("contact width b [mm]")
+    axes[2].plot(xs, frame["p_max_MPa"], "-o", ms=3, label="sealing surface")
+    axes[2].plot(xs, frame["p_max_groove_bottom_MPa"], "--s", ms=3, label="groove bottom")
+    axes[2].set_ylabel("peak contact pressure [MPa]")
+    for ax in axes:
+        ax.grid(alpha=0.3)
+        if labels is not None:
+            ax.set_xticks(xs, labels, rotation=60, fontsize=8)
+            ax.set_xlabel("load state (squeeze, then pressure)")
+        else:
+            ax.set_xlabel({"time_s": "time [s]", "pressure_bar": "pressure [bar]",
+                           "squeeze": "squeeze [-]"}.get(x, x))
+    axes[0].legend(fontsize=8)
+    axes[2].legend(fontsize=8)
+    if title:
+        fig.suptitle(title)
+    return fig
+
+
+def plot_map(dataset, squeeze_index: int = 0, title: str = ""):
+    """F_N and b over pressure for every temperature of a characteristic map."""
+    fig, axes = new_figure(2, 1, width=11.0, height=4.0)
+    ds = dataset.isel(squeeze=squeeze_index)
+    p = ds["pressure"].values / 1e5
+    for t in ds["temperature"].values:
+        sel = ds.sel(temperature=t)
+        label = f"{t - 273.15:.4g} °C"
+        axes[0].plot(p, sel["F_N"].values, "-o", ms=3, label=label)
+        axes[1].plot(p, sel["b"].values * 1e3, "-o", ms=3, label=label)
+    axes[0].set_ylabel("F_N (360°) [N]")
+    axes[1].set_ylabel("contact width b [mm]")
+    for ax in axes:
+        ax.set_xlabel("pressure [bar]")
+        ax.grid(alpha=0.3)
+    axes[0].legend(fontsize=8, title="temperature")
+    s = float(dataset["squeeze"].values[squeeze_index])
+    fig.suptitle(title or f"characteristic map, squeeze {s * 100:.3g} %")
+    return fig

@@ -1,0 +1,499 @@
+r"""Seal materials for the FE model: nearly incompressible Mooney–Rivlin with thermal expansion,
+temperature-dependent constants, and a thermo-viscoelastic (Prony series + WLF) variant.
+
+The strain energy per unit undeformed volume follows seed 001, Eq. (6)/(7):
+
+.. math::
+
+    W = C_{10}\,(\bar I_1 - 3) + C_{01}\,(\bar I_2 - 3) + U(J / J_\mathrm{th}),
+    \qquad J_\mathrm{th} = \bigl(1 + \alpha\,(T - T_0)\bigr)^3,
+
+with the isochoric invariants :math:`\bar I_1 = J^{-2/3} I_1`, :math:`\bar I_2 = J^{-4/3} I_2`
+of :math:`C = F^T F` and the volumetric energy :math:`U = K/2\,(\bar J - 1)^2` of FElupe's
+mixed (constant cell pressure) formulation. Thermal expansion is therefore a change of the
+volumetric part only (seed 001: "equivalent to a change in the third invariant"): the
+stress-free volume of every cell is :math:`J_\mathrm{th} V`.
+
+The isochoric part is an FElupe *umat* (methods ``gradient([F, statevars])`` and
+``hessian([F, statevars])`` on arrays of shape ``(3, 3, quadrature points, cells)``) with
+analytic first Piola–Kirchhoff stress and tangent; the volumetric part is added by
+:class:`felupe.SolidBodyNearlyIncompressible`.
+
+Thermo-viscoelasticity (seed 001, Eq. (8)/(9)) is a finite-strain generalised Maxwell model
+in reduced time (Simo 1987; Holzapfel 2000, §6.10): the equilibrium branch is the
+Mooney–Rivlin stress :math:`\bar S_\infty` scaled with :math:`T/T_p` (rubber elasticity); each
+Prony term :math:`i` carries an internal stress :math:`Q_i` (second Piola–Kirchhoff),
+
+.. math::
+
+    Q_i^{n+1} = e^{-\xi_i} Q_i^n + \beta_i\,e^{-\xi_i/2}\,(\bar S^{n+1} - \bar S^n), \qquad
+    \xi_i = \frac{\Delta t}{a_T(T)\,\tau_i}, \qquad \beta_i = E_i / E_\infty,
+
+and :math:`S = (T/T_p)\,\bar S + \sum_i Q_i`, where :math:`\bar S` is the isochoric
+Mooney–Rivlin stress whose small-strain Young's modulus is :math:`E_\infty` at the Prony
+reference temperature :math:`T_p`. Far above :math:`T_g` the shift factor
+:math:`a_T \ll 1` relaxes every branch within a step (equilibrium); below :math:`T_g` the
+branches freeze and strain increments meet the glassy modulus.
+
+References
+----------
+- O. Heipl, H. Murrenhoff, seed 001, Eq. (6)–(9).
+- J. C. Simo, "On a fully three-dimensional finite-strain viscoelastic damage model",
+  Comput. Methods Appl. Mech. Eng. 60 (1987) 153–173.
+- G. A. Holzapfel, Nonlinear Solid Mechanics, Wiley 2000, §6.10.
+- M. L. Williams, R. F. Landel, J. D. Ferry, J. Am. Chem. Soc. 77 (1955) 3701 (WLF).
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from sealsim.errors import InputError
+
+__all__ = [
+    "HyperelasticSealMaterial",
+    "MooneyRivlinIsochoric",
+    "ViscoelasticMooneyRivlin",
+    "ViscoelasticSealMaterial",
+    "material_from_elastomer",
+    "mooney_rivlin_young_modulus",
+    "thermal_volume_ratio",
+]
+
+
+def thermal_volume_ratio(temperature, reference_temperature, expansion):
+    r"""Stress-free volume ratio of free thermal expansion, :math:`(1 + \alpha\,\Delta T)^3`.
+
+    Parameters
+    ----------
+    temperature : float or array_like
+        T [K].
+    reference_temperature : float
+        T_0 [K] at which the seal geometry is given (stress-free, J_th = 1).
+    expansion : float
+        Linear coefficient of thermal expansion α [1/K].
+
+    Returns
+    -------
+    float or numpy.ndarray
+        J_th [-].
+
+    Examples
+    --------
+    >>> round(thermal_volume_ratio(373.15, 293.15, 2e-4), 6)
+    1.048772
+    """
+    ratio = (1.0 + expansion * (np.asarray(temperature, dtype=float) - reference_temperature)) ** 3
+    return float(ratio) if np.ndim(ratio) == 0 else ratio
+
+
+def mooney_rivlin_young_modulus(c10, c01):
+    """Small-strain Young's modulus of an incompressible Mooney–Rivlin solid, E = 6 (C10 + C01).
+
+    Parameters
+    ----------
+    c10, c01 : float
+        Mooney–Rivlin constants [Pa].
+
+    Returns
+    -------
+    float
+        E [Pa].
+
+    Examples
+    --------
+    >>> mooney_rivlin_young_modulus(0.8e6, 0.2e6)
+    6000000.0
+    """
+    return 6.0 * (c10 + c01)
+
+
+# -- isochoric Mooney–Rivlin umat ---------------------------------------------------------------
+
+def _kinematics(F):
+    """Invariants and inverse of F (3, 3, ...)."""
+    C = np.einsum("ki...,kj...->ij...", F, F)
+    I1 = np.einsum("ii...->...", C)
+    trCC = np.einsum("ij...,ji...->...", C, C)
+    I2 = 0.5 * (I1**2 - trCC)
+    J = np.linalg.det(np.moveaxis(F, (0, 1), (-2, -1)))
+    iF = np.moveaxis(np.linalg.inv(np.moveaxis(F, (0, 1), (-2, -1))), (-2, -1), (0, 1))
+    iFT = np.swapaxes(iF, 0, 1)
+    return C, I1, I2, J, iFT
+
+
+def _mr_stress(F, c10, c01):
+    """First Piola–Kirchhoff stress of the isochoric Mooney–Rivlin energy."""
+    C, I1, I2, J, iFT = _kinematics(F)
+    j23 = J ** (-2.0 / 3.0)
+    j43 = j23 * j23
+    FC = np.einsum("ik...,kj...->ij...", F, C)
+    dI2 = 2.0 * (I1 * F - FC)
+    P = c10 * j23 * (2.0 * F - (2.0 / 3.0) * I1 * iFT)
+    if c01 != 0.0:
+        P = P + c01 * j43 * (dI2 - (4.0 / 3.0) * I2 * iFT)
+    return P
+
+
+def _mr_tangent(F, c10, c01):
+    """dP/dF (3, 3, 3, 3, ...) of the isochoric Mooney–Rivlin energy."""
+    C, I1, I2, J, iFT = _kinematics(F)
+    j23 = J ** (-2.0 / 3.0)
+    j43 = j23 * j23
+    eye = np.eye(3)
+    extra = (None,) * (F.ndim - 2)
+    II = np.einsum("ik,jl->ijkl", eye, eye)[(...,) + extra]  # δ_ik δ_JL
+    iFT_iFT = np.einsum("ij...,kl...->ijkl...", iFT, iFT)
+    iFT_x = np.einsum("il...,kj...->ijkl...", iFT, iFT)  # F^-T_iL F^-T_kJ
+    F_iFT = np.einsum("ij...,kl...->ijkl...", F, iFT)
+    iFT_F = np.einsum("ij...,kl...->ijkl...", iFT, F)
+    A = c10 * j23 * (2.0 * II - (4.0 / 3.0) * (iFT_F + F_iFT)
+                     + (4.0 / 9.0) * I1 * iFT_iFT + (2.0 / 3.0) * I1 * iFT_x)
+    if c01 != 0.0:
+        b = np.einsum("iK...,kK...->ik...", F, F)
+        FC = np.einsum("ik...,kj...->ij...", F, C)
+        B2 = 2.0 * (I1 * F - FC)
+        dB2 = (4.0 * np.einsum("ij...,kl...->ijkl...", F, F) + 2.0 * I1 * II
+               - 2.0 * np.einsum("ik,lj...->ijkl...", eye, C)
+               - 2.0 * np.einsum("il...,kj...->ijkl...", F, F)
+               - 2.0 * np.einsum("ik...,jl->ijkl...", b, eye))
+        A = A + c01 * j43 * (dB2 - (4.0 / 3.0) * (np.einsum("ij...,kl...->ijkl...", B2, iFT)
+                                                   + np.einsum("ij...,kl...->ijkl...", iFT, B2))
+                             + (16.0 / 9.0) * I2 * iFT_iFT + (4.0 / 3.0) * I2 * iFT_x)
+    return A
+
+
+class MooneyRivlinIsochoric:
+    r"""Isochoric Mooney–Rivlin FElupe umat with analytic stress and tangent.
+
+    :math:`\hat\psi = C_{10}(\bar I_1 - 3) + C_{01}(\bar I_2 - 3)`; the volumetric part is
+    added by :class:`felupe.SolidBodyNearlyIncompressible`. The constants may be changed
+    between load increments (temperature dependence).
+
+    Parameters
+    ----------
+    c10, c01 : float
+        Mooney–Rivlin constants [Pa].
+
+    Examples
+    --------
+    >>> umat = MooneyRivlinIsochoric(0.8e6, 0.2e6)
+    >>> F = np.eye(3).reshape(3, 3, 1, 1)
+    >>> float(np.abs(umat.gradient([F, None])[0]).max())
+    0.0
+    """
+
+    def __init__(self, c10: float, c01: float):
+        self.c10 = float(c10)
+        self.c01 = float(c01)
+
+    def gradient(self, x):
+        F, statevars = x[0], x[-1]
+        return [_mr_stress(F, self.c10, self.c01), statevars]
+
+    def hessian(self, x):
+        return [_mr_tangent(x[0], self.c10, self.c01)]
+
+
+class ViscoelasticMooneyRivlin:
+    r"""Finite-strain generalised Maxwell (Prony) model on the isochoric Mooney–Rivlin stress.
+
+    State variables per quadrature point: the previous isochoric stress :math:`\bar S^n` and
+    the branch stresses :math:`Q_i^n` (9 components each). Set :attr:`xi` (the reduced time
+    increments :math:`\Delta t / (a_T \tau_i)`) and :attr:`theta` (T/T_p) before each
+    increment. See the module docstring for the update.
+
+    Parameters
+    ----------
+    c10, c01 : float
+        Mooney–Rivlin constants [Pa] of the equilibrium branch at the Prony reference
+        temperature (6 (C10 + C01) = E∞).
+    betas : array_like
+        Relative branch moduli β_i = E_i / E∞ [-].
+
+    Examples
+    --------
+    >>> umat = ViscoelasticMooneyRivlin(0.4e6, 0.1e6, betas=[10.0])
+    >>> umat.x[-1].shape
+    (18,)
+    """
+
+    def __init__(self, c10: float, c01: float, betas):
+        self.c10 = float(c10)
+        self.c01 = float(c01)
+        self.betas = np.asarray(betas, dtype=float)
+        self.nterms = self.betas.size
+        self.xi = np.zeros(self.nterms)  # relaxed nothing: glassy response by default
+        self.theta = 1.0
+        self.x = [np.eye(3), np.zeros(9 * (self.nterms + 1))]
+
+    def _history(self, statevars, shape):
+        sv = statevars.reshape(self.nterms + 1, 3, 3, *shape)
+        s_old = sv[0]
+        q_old = sv[1:]
+        decay = np.exp(-self.xi).reshape(-1, *([1] * (q_old.ndim - 1)))
+        half = (self.betas * np.exp(-0.5 * self.xi)).reshape(-1, *([1] * (q_old.ndim - 1)))
+        H = np.sum(decay * q_old - half * s_old[None], axis=0)
+        gamma = self.theta + float(np.sum(self.betas * np.exp(-0.5 * self.xi)))
+        return s_old, q_old, decay, half, H, gamma
+
+    def gradient(self, x):
+        F, statevars = x[0], x[-1]
+        shape = F.shape[2:]
+        P_inf = _mr_stress(F, self.c10, self.c01)
+        iF = np.moveaxis(np.linalg.inv(np.moveaxis(F, (0, 1), (-2, -1))), (-2, -1), (0, 1))
+        S_new = np.einsum("iK...,Kj...->ij...", iF, P_inf)
+        s_old, q_old, decay, half, H, gamma = self._history(statevars, shape)
+        q_new = decay * q_old + half * (S_new[None] - s_old[None])
+        P = gamma * P_inf + np.einsum("iK...,KJ...->iJ...", F, H)
+        new = np.concatenate([S_new[None], q_new], axis=0).reshape(statevars.shape)
+        return [P, new]
+
+    def hessian(self, x):
+        F, statevars = x[0], x[-1]
+        shape = F.shape[2:]
+        _, _, _, _, H, gamma = self._history(statevars, shape)
+        A = gamma * _mr_tangent(F, self.c10, self.c01)
+        A = A + np.einsum("ik,LJ...->iJkL...", np.eye(3), H)
+        return [A]
+
+
+# -- seal materials: constants as functions of temperature --------------------------------------
+
+@dataclass
+class HyperelasticSealMaterial:
+    r"""Nearly incompressible Mooney–Rivlin seal material with thermal expansion.
+
+    Parameters
+    ----------
+    c10, c01 : float or callable
+        Mooney–Rivlin constants [Pa], constants or functions of temperature T [K].
+    bulk_modulus : float or callable
+        K [Pa] (constant or function of T).
+    thermal_expansion : float
+        Linear CTE α [1/K].
+    reference_temperature : float
+        T_0 [K]: the geometry is stress-free at this temperature.
+    name : str
+        Label for outputs.
+
+    Examples
+    --------
+    >>> m = HyperelasticSealMaterial(0.8e6, 0.2e6, 2e9, 2e-4, 293.15)
+    >>> m.set_state(293.15, 0.0)
+    >>> m.umat.c10, round(m.volume_ratio, 3)
+    (800000.0, 1.0)
+    """
+
+    c10: object
+    c01: object
+    bulk_modulus: object
+    thermal_expansion: float
+    reference_temperature: float
+    name: str = "Mooney-Rivlin"
+    temperature: float = field(init=False, default=float("nan"))
+    volume_ratio: float = field(init=False, default=1.0)
+    kind: str = field(init=False, default="hyperelastic")
+
+    def __post_init__(self):
+        self.temperature = self.reference_temperature
+        c10, c01, k = self.constants(self.reference_temperature)
+        _check_constants(c10, c01, k, self.reference_temperature)
+        self.umat = MooneyRivlinIsochoric(c10, c01)
+
+    def constants(self, temperature: float) -> tuple[float, float, float]:
+        """(C10, C01, K) [Pa] at temperature T [K]."""
+        def ev(v):
+            return float(v(temperature)) if callable(v) else float(v)
+        return ev(self.c10), ev(self.c01), ev(self.bulk_modulus)
+
+    def bulk(self, temperature: float) -> float:
+        return self.constants(temperature)[2]
+
+    def shear_modulus(self, temperature: float | None = None) -> float:
+        """Small-strain shear modulus 2 (C10 + C01) [Pa]."""
+        c10, c01, _ = self.constants(self.temperature if temperature is None else temperature)
+        return 2.0 * (c10 + c01)
+
+    def set_state(self, temperature: float, time_increment: float) -> None:
+        """Set the temperature [K] of the next increment (time increment [s] unused)."""
+        c10, c01, k = self.constants(temperature)
+        _check_constants(c10, c01, k, temperature)
+        self.umat.c10, self.umat.c01 = c10, c01
+        self.temperature = float(temperature)
+        self.volume_ratio = thermal_volume_ratio(temperature, self.reference_temperature,
+                                                 self.thermal_expansion)
+
+    def equilibrium(self) -> HyperelasticSealMaterial:
+        return self
+
+
+@dataclass
+class ViscoelasticSealMaterial:
+    r"""Thermo-viscoelastic seal material: Mooney–Rivlin equilibrium branch + Prony series in
+    reduced time with a shift factor a_T(T) (WLF above T_g).
+
+    Parameters
+    ----------
+    c10, c01 : float
+        Mooney–Rivlin constants [Pa] of the *equilibrium* branch at ``prony_temperature``.
+    bulk_modulus : float
+        K [Pa].
+    moduli : array_like
+        Prony moduli E_i [Pa].
+    relaxation_times : array_like
+        τ_i [s] at ``prony_temperature``.
+    equilibrium_modulus : float
+        E∞ [Pa] at ``prony_temperature`` (β_i = E_i / E∞).
+    shift : callable
+        log10 a_T(T) relative to ``prony_temperature`` (T [K] → [-]).
+    thermal_expansion : float
+        α [1/K].
+    reference_temperature : float
+        T_0 [K] of the stress-free geometry.
+    prony_temperature : float
+        T_p [K] of the Prony series.
+
+    Examples
+    --------
+    >>> m = ViscoelasticSealMaterial(0.4e6, 0.1e6, 2e9, [30e6], [1.0], 3e6,
+    ...                              lambda T: -(T - 250.0) / 10.0, 2e-4, 293.15, 293.15)
+    >>> m.set_state(293.15, 1.0)
+    >>> float(m.umat.xi[0])  # a_T = 10**-4.3: relaxed within the step (capped)
+    700.0
+    """
+
+    c10: float
+    c01: float
+    bulk_modulus: float
+    moduli: object
+    relaxation_times: object
+    equilibrium_modulus: float
+    shift: object
+    thermal_expansion: float
+    reference_temperature: float
+    prony_temperature: float
+    name: str = "thermo-viscoelastic Mooney-Rivlin"
+    temperature: float = field(init=False, default=float("nan"))
+    volume_ratio: float = field(init=False, default=1.0)
+    kind: str = field(init=False, default="viscoelastic")
+
+    def __post_init__(self):
+        self.moduli = np.asarray(self.moduli, dtype=float)
+        self.relaxation_times = np.asarray(self.relaxation_times, dtype=float)
+        if self.moduli.shape != self.relaxation_times.shape or self.moduli.ndim != 1:
+            raise InputError("Prony series: moduli and relaxation_times must be equally long "
+                             f"lists (got {self.moduli.size} and {self.relaxation_times.size})")
+        if np.any(self.moduli < 0) or np.any(self.relaxation_times <= 0):
+            raise InputError("Prony series: moduli must be >= 0 Pa and relaxation times > 0 s")
+        _check_constants(self.c10, self.c01, self.bulk_modulus, self.prony_temperature)
+        self.umat = ViscoelasticMooneyRivlin(self.c10, self.c01,
+                                             self.moduli / self.equilibrium_modulus)
+        self.temperature = self.reference_temperature
+
+    def bulk(self, temperature: float) -> float:
+        return float(self.bulk_modulus)
+
+    def shear_modulus(self, temperature: float | None = None) -> float:
+        """Current small-strain tangent shear modulus [Pa] (equilibrium + unrelaxed branches)."""
+        u = self.umat
+        g = u.theta + float(np.sum(u.betas * np.exp(-0.5 * u.xi)))
+        return 2.0 * (self.c10 + self.c01) * g
+
+    def log10_shift(self, temperature: float) -> float:
+        value = float(self.shift(temperature))
+        if not math.isfinite(value):
+            value = 300.0  # frozen: no relaxation within any step
+        return min(value, 300.0)
+
+    def set_state(self, temperature: float, time_increment: float) -> None:
+        """Set temperature [K] and time increment [s] of the next increment.
+
+        The reduced time increment uses a_T at the mid-increment temperature.
+        """
+        t_mid = 0.5 * (float(temperature) + self.temperature)
+        log_a = self.log10_shift(t_mid)
+        dt = max(float(time_increment), 0.0)
+        with np.errstate(over="ignore", under="ignore"):
+            reduced = dt / 10.0 ** log_a if log_a < 300 else 0.0
+            self.umat.xi = np.minimum(reduced / self.relaxation_times, 700.0)
+        self.umat.theta = float(temperature) / self.prony_temperature
+        self.temperature = float(temperature)
+        self.volume_ratio = thermal_volume_ratio(temperature, self.reference_temperature,
+                                                 self.thermal_expansion)
+
+    def equilibrium(self) -> HyperelasticSealMaterial:
+        """The fully relaxed (long-time) hyperelastic material (for characteristic maps)."""
+        tp = self.prony_temperature
+        return HyperelasticSealMaterial(lambda T: self.c10 * T / tp, lambda T: self.c01 * T / tp,
+                                        self.bulk_modulus, self.thermal_expansion,
+                                        self.reference_temperature, name=self.name + " (relaxed)")
+
+
+def _check_constants(c10, c01, k, temperature):
+    ok = all(math.isfinite(v) for v in (c10, c01, k)) and c10 > 0 and c01 >= 0
+    if not ok or k <= 10 * 2 * (c10 + c01) / 3:
+        raise InputError(
+            f"material constants at {temperature - 273.15:.1f} degC are invalid: C10 = {c10!r} Pa "
+            f"(must be > 0), C01 = {c01!r} Pa (>= 0), bulk modulus K = {k!r} Pa (must be finite "
+            "and well above the shear modulus for a nearly incompressible rubber)")
+
+
+def material_from_elastomer(elastomer, model: str = "hyperelastic", *,
+                            reference_temperature: float,
+                            temperature_dependent: bool = True,
+                            frequency: float | None = None):
+    """Build a seal material from a catalogue :class:`~sealsim.properties.elastomers.Elastomer`.
+
+    Parameters
+    ----------
+    elastomer : Elastomer
+        Catalogue entry (``get_elastomer("NBR")``).
+    model : {"hyperelastic", "viscoelastic"}
+        ``"hyperelastic"``: Mooney–Rivlin with C10(T), C01(T) scaled with E(T) at the test
+        frequency (``Elastomer.mooney_rivlin``) -- meaningful above ≈ T_g + 25 K.
+        ``"viscoelastic"``: equilibrium Mooney–Rivlin with 6 (C10 + C01) = E∞ (same C01/C10
+        as the catalogue), the catalogue Prony series and its WLF/Arrhenius shift.
+    reference_temperature : float
+        T_0 [K] at which the geometry is stress-free (installation temperature).
+    temperature_dependent : bool
+        Hyperelastic only: False keeps the constants at the catalogue reference temperature.
+    frequency : float, optional
+        Frequency [Hz] of E(T) for the hyperelastic constants (default: the test frequency).
+    """
+    e = elastomer
+    if model == "hyperelastic":
+        if temperature_dependent:
+            def consts(T, i):
+                with warnings.catch_warnings():
+                    warnings.simplefilter("ignore")
+                    return float(e.mooney_rivlin(T, frequency)[i])
+            c10 = lambda T: consts(T, 0)
+            c01 = lambda T: consts(T, 1)
+        else:
+            c10, c01 = e.c10, e.c01
+        return HyperelasticSealMaterial(c10, c01, e.bulk_modulus, e.thermal_expansion,
+                                        reference_temperature, name=e.name)
+    if model == "viscoelastic":
+        if e.prony is None:
+            raise InputError(f"material.model = 'viscoelastic' needs a Prony series, but "
+                             f"{e.name} has none; use model = 'hyperelastic' or another material")
+        e_inf, e_i, tau_i = e.prony
+        tp = float(e.prony_reference_temperature or e.reference_temperature)
+        ratio = e.c01 / e.c10
+        c10 = e_inf / 6.0 / (1.0 + ratio)
+        c01 = c10 * ratio
+
+        def shift(T):
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                return float(e.log10_shift_factor(T, reference_temperature=tp))
+        return ViscoelasticSealMaterial(c10, c01, e.bulk_modulus, e_i, tau_i, e_inf, shift,
+                                        e.thermal_expansion, reference_temperature, tp,
+                                        name=e.name + " (Prony/WLF)")
+    raise InputError(f"material.model: {model!r} is not allowed; choose 'hyperelastic' or "
+                     "'viscoelastic'")

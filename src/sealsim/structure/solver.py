@@ -1,0 +1,209 @@
+"""Incremental solution of a seal model along a load path, with automatic cutback.
+
+A load path is a list of :class:`LoadStep` (squeeze, pressure, temperature and time targets,
+each ramped linearly from the previous state in a number of increments). Each increment is
+solved by Newton–Raphson iterations on FElupe's assembled items and partitioned solver
+(:mod:`felupe.solve`); the wetted surface of the fluid pressure is updated before every
+iteration, and an increment has converged when the residual is small *and* the wetted surface
+no longer changes. An increment that does not converge is restored and cut in half, down
+to ``min_fraction`` of the step's increment; then a :class:`~sealsim.errors.ConvergenceError`
+names the step, the increment and the load (squeeze, pressure, temperature) it failed at.
+"""
+
+from __future__ import annotations
+
+import warnings
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import felupe as fem
+import numpy as np
+
+from sealsim.errors import ConvergenceError
+from sealsim.structure.model import LoadState, SealModel
+
+__all__ = ["LoadStep", "describe_state", "solve"]
+
+
+@dataclass(frozen=True)
+class LoadStep:
+    """A step of the load path: ramp to the given targets (None keeps the current value).
+
+    Parameters
+    ----------
+    name : str
+        Label used in messages ("squeeze", "pressure", "temperature").
+    squeeze : float, optional
+        Target squeeze [-].
+    pressure : float, optional
+        Target fluid pressure [Pa].
+    temperature : float, optional
+        Target temperature [K].
+    duration : float
+        Duration of the step [s] (viscoelastic material; 0 = instantaneous).
+    increments : int
+        Number of equal increments.
+    record : str
+        "all": a result for every increment, "end": only the last one, "none".
+    """
+
+    name: str
+    squeeze: float | None = None
+    pressure: float | None = None
+    temperature: float | None = None
+    duration: float = 0.0
+    increments: int = 10
+    record: str = "all"
+
+    def target(self, start: LoadState) -> LoadState:
+        return LoadState(
+            start.squeeze if self.squeeze is None else self.squeeze,
+            start.pressure if self.pressure is None else self.pressure,
+            start.temperature if self.temperature is None else self.temperature,
+            start.time + self.duration,
+        )
+
+
+def describe_state(state: LoadState) -> str:
+    """Human-readable load, e.g. 'squeeze 20 %, pressure 3.5 bar, temperature 20 degC'."""
+    return (f"squeeze {state.squeeze * 100:.4g} %, pressure {state.pressure / 1e5:.4g} bar, "
+            f"temperature {state.temperature - 273.15:.4g} degC")
+
+
+def _assemble(model: SealModel):
+    """Residual vector and tangent matrix of all items (FElupe assembly)."""
+    field = model.field
+    f = None
+    K = None
+    for item in model.items:
+        item.field.link(field)
+        r = item.assemble.vector(field=item.field)
+        k = item.assemble.matrix()
+        f = r if f is None else f + r
+        K = k if K is None else K + k
+    return np.asarray(f.toarray()).ravel(), K.tocsr()
+
+
+def _newton(model: SealModel, ext0, tol: float, maxiter: int, update_wetting: bool) -> int:
+    """Newton–Raphson iterations with FElupe's partitioned solver.
+
+    The wetted surface of the fluid pressure (its edges follow the contact edges) is
+    re-evaluated before every iteration until it has settled -- its length changes by less
+    than 1e-4 of the cord diameter -- and is then frozen, so that an edge node flickering in
+    and out of contact cannot keep Newton from converging. Convergence: settled wetted surface
+    and a residual of the free dofs below ``tol`` relative to the reactions. Raises
+    NewtonConvergenceError otherwise (the caller cuts the increment back).
+    """
+    scale = 1e-6 * model.force_scale
+    field = model.field
+    wet_tol = 1e-4 * model.assembly.seal.cord_diameter
+    frozen = not update_wetting
+    for iteration in range(maxiter):
+        if not frozen and iteration > 0:
+            # once the wetted surface has settled (or after 8 iterations) it is frozen, so
+            # that a flickering edge node cannot keep Newton from converging
+            frozen = model.update_wetting() <= wet_tol or iteration >= 8
+        with np.errstate(all="ignore"):
+            f, K = _assemble(model)
+        if not np.all(np.isfinite(f)):
+            raise fem.NewtonConvergenceError(f"non-finite residual in iteration {iteration}")
+        if iteration > 0:
+            fnorm = np.linalg.norm(f[model.dof1]) / max(np.linalg.norm(f[model.dof0]), scale)
+            if fnorm < tol and frozen:
+                for item in model.items:
+                    item.results.update_statevars()
+                return iteration
+        system = fem.solve.partition(field, K, model.dof1, model.dof0, f)
+        with np.errstate(all="ignore"), warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            du = fem.solve.solve(*system, ext0)
+        if not np.all(np.isfinite(du)):
+            raise fem.NewtonConvergenceError(f"singular system in iteration {iteration}")
+        field[0].values[:] += du.reshape(field[0].values.shape)
+    raise fem.NewtonConvergenceError(f"not converged in {maxiter} iterations")
+
+
+def _increment(model: SealModel, target: LoadState, tol, maxiter):
+    dt = target.time - model.state.time
+    ext0 = model.set_load(target, dt)
+    model.update_wetting()
+    iterations = _newton(model, ext0, tol, maxiter, update_wetting=True)
+    model.newton_iterations.append(iterations)
+    model.state = target
+    return iterations
+
+
+def solve(model: SealModel, steps: list[LoadStep], *,
+          on_state: Callable | None = None, tol: float = 1e-8, maxiter: int = 25,
+          max_cutbacks: int = 8) -> list:
+    """Drive ``model`` through ``steps``; return the recorded results.
+
+    Parameters
+    ----------
+    model : SealModel
+        The model, in its current state (a fresh model starts unloaded at the installation
+        temperature).
+    steps : list of LoadStep
+        The load path.
+    on_state : callable, optional
+        ``on_state(model)`` → result object for each recorded state (default
+        :func:`sealsim.structure.results.extract`).
+    tol : float
+        Newton tolerance: norm of the residual of the free dofs relative to the reactions.
+    maxiter : int
+        Newton iterations per attempt.
+    max_cutbacks : int
+        An increment is halved at most this many times in a row (smallest increment
+        ``0.5 ** max_cutbacks`` of the step's increment).
+
+    Returns
+    -------
+    list
+        One result per recorded increment.
+
+    Raises
+    ------
+    ConvergenceError
+        If an increment cannot be solved even after ``max_cutbacks`` halvings.
+    """
+    if on_state is None:
+        from sealsim.structure.results import extract as on_state
+    records = []
+    for number, step in enumerate(steps):
+        start = model.state
+        target = step.target(start)
+        n = max(int(step.increments), 1)
+        done = 0.0
+        dfrac = 1.0 / n
+        smallest = dfrac * 0.5 ** max_cutbacks
+        k = 0
+        while done < 1.0 - 1e-12:
+            frac = min(done + dfrac, 1.0)
+            state = start.interpolate(target, frac)
+            cp = model.checkpoint()
+            try:
+                _increment(model, state, tol, maxiter)
+            except (fem.NewtonConvergenceError, ArithmeticError, np.linalg.LinAlgError,
+                    RuntimeError, ValueError) as exc:
+                model.restore(cp)
+                if dfrac * 0.5 < smallest * (1 - 1e-9):
+                    raise ConvergenceError(
+                        f"the FE model did not converge in step {number + 1} "
+                        f"({step.name}) at {describe_state(state)} (load fraction "
+                        f"{frac:.4g} of the step, increment {dfrac:.3g} after {max_cutbacks} "
+                        f"cutbacks); last converged state: {describe_state(model.state)}. "
+                        "Try more increments, a coarser load step, a smaller squeeze or "
+                        f"another mesh ({type(exc).__name__}: {str(exc).strip()[:120]})"
+                    ) from None
+                dfrac *= 0.5
+                continue
+            done = frac
+            k += 1
+            on_grid = abs(done * n - round(done * n)) < 1e-9
+            if on_grid:
+                # grow the increment back towards the nominal one
+                dfrac = min(1.0 / n, 2 * dfrac)
+                last = done >= 1.0 - 1e-12
+                if step.record == "all" or (step.record == "end" and last):
+                    records.append(on_state(model))
+    return records

@@ -1,0 +1,120 @@
+"""The ``sealsim structure`` commands on the shipped examples (shortened where needed)."""
+
+import json
+import tomllib
+from pathlib import Path
+
+import pandas as pd
+import pytest
+import tomli_w
+from typer.testing import CliRunner
+
+from sealsim.cases import apply_overrides
+from sealsim.cli.structure import structure_app
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples" / "structure"
+RESULT_COLUMNS = ["squeeze", "pressure_bar", "temperature_C", "F_N_N",
+                  "F_N_per_length_N_per_mm", "b_mm", "p_max_MPa", "p_mean_MPa"]
+runner = CliRunner()
+
+
+def shortened(tmp_path, name, overrides):
+    """A copy of an example with overrides (coarser mesh, fewer load states)."""
+    with open(EXAMPLES / name, "rb") as fh:
+        data = tomllib.load(fh)
+    path = tmp_path / name
+    path.write_text(tomli_w.dumps(apply_overrides(data, overrides)))
+    return path
+
+
+def invoke(*args):
+    result = runner.invoke(structure_app, [str(a) for a in args])
+    return result
+
+
+def test_oring_rod_example(tmp_path):
+    case = shortened(tmp_path, "oring_rod.toml", {"mesh": {"level": "coarse"}})
+    out = tmp_path / "rod"
+    result = invoke("run", case, "--out", out, "--quiet")
+    assert result.exit_code == 0, result.output
+    frame = pd.read_csv(out / "result.csv")
+    assert list(frame.columns[:3]) == RESULT_COLUMNS[:3]
+    assert set(RESULT_COLUMNS) <= set(frame.columns)
+    assert len(frame) == 5 + 6  # five squeeze states, six pressures
+    squeeze = frame.iloc[:5]
+    assert squeeze["F_N_N"].is_monotonic_increasing and squeeze["b_mm"].is_monotonic_increasing
+    assert frame.iloc[5:]["F_N_N"].is_monotonic_increasing
+    profiles = pd.read_csv(out / "profiles.csv")
+    assert {"surface", "position_mm", "contact_pressure_MPa"} <= set(profiles.columns)
+    for name in ("section_installed.png", "section_final.png", "states.png",
+                 "case_resolved.toml", "summary.json"):
+        assert (out / name).is_file()
+    summary = json.loads((out / "summary.json").read_text())
+    assert summary["max_equilibrium_error"] < 1e-6
+    # the resolved case runs again unchanged (reproducible)
+    again = invoke("run", out / "case_resolved.toml", "--out", tmp_path / "again", "--quiet")
+    assert again.exit_code == 0, again.output
+    assert pd.read_csv(tmp_path / "again" / "result.csv")["F_N_N"].iloc[-1] == pytest.approx(
+        frame["F_N_N"].iloc[-1], rel=1e-9)
+    # an existing result folder is refused (exit 2) unless --force
+    refused = invoke("run", case, "--out", out, "--quiet")
+    assert refused.exit_code == 2 and "--force" in refused.output
+
+
+def test_oring_map_example(tmp_path):
+    case = shortened(tmp_path, "oring_map.toml", {
+        "mesh": {"level": "coarse"},
+        "map": {"pressure": ["0 bar", "5 bar", "10 bar"],
+                "temperature": ["20 degC", "60 degC"], "workers": 2}})
+    out = tmp_path / "map"
+    result = invoke("map", case, "--out", out, "--quiet")
+    assert result.exit_code == 0, result.output
+    from sealsim.structure import load_map
+
+    m = load_map(out / "map.nc")
+    f, b = m(7.5e5, 313.15)
+    assert 0 < f and 0 < b < 4e-3
+    assert "[map]" in m.dataset.attrs["case"]
+    assert (out / "map.png").is_file() and (out / "map.csv").is_file()
+
+
+def test_oring_cooling_example(tmp_path):
+    case = shortened(tmp_path, "oring_cooling.toml", {
+        "load": {"temperature": ["-45 degC"], "temperature_increments": 13}})
+    out = tmp_path / "cool"
+    result = invoke("run", case, "--out", out, "--quiet")
+    assert result.exit_code == 0, result.output
+    frame = pd.read_csv(out / "result.csv")
+    cooling = frame[frame["time_s"] > 3660.0 + 1.0]
+    assert cooling["temperature_C"].iloc[-1] == pytest.approx(-45.0)
+    # the groove contact is lost below T_g (seed 001 Fig. 8)
+    assert cooling["F_groove_bottom_N"].iloc[-1] == 0.0
+
+
+@pytest.mark.parametrize("overrides, message", [
+    ({"load": {"squeeze": [1.0]}}, "load.squeeze"),
+    ({"seal": {"cord_diameter": "-4 mm"}}, "seal.cord_diameter"),
+    ({"gland": {"groove_width": "3 mm"}}, "too narrow"),
+    ({"material": {"elastomer": "XYZ"}}, "XYZ"),
+])
+def test_bad_input_exits_2(tmp_path, overrides, message):
+    case = shortened(tmp_path, "oring_rod.toml", overrides)
+    result = invoke("run", case, "--out", tmp_path / "bad", "--quiet")
+    assert result.exit_code == 2
+    assert message in result.output
+    assert not (tmp_path / "bad").exists()  # nothing written
+
+
+def test_map_without_grid_is_refused(tmp_path):
+    result = invoke("map", EXAMPLES / "oring_rod.toml", "--out", tmp_path / "m", "--quiet")
+    assert result.exit_code == 2 and "[map]" in result.output
+
+
+def test_registered_in_main_app():
+    from sealsim.cli import app
+
+    names = [g.name for g in app.registered_groups]
+    if "structure" not in names:
+        pytest.skip("structure_app is not registered in sealsim.cli yet (lead's step)")
+    result = runner.invoke(app, ["structure", "--help"])
+    assert result.exit_code == 0 and "run" in result.output and "map" in result.output

@@ -1,0 +1,189 @@
+"""Unit tests of the structural seal model's building blocks (no FE solves)."""
+
+import numpy as np
+import pytest
+
+from sealsim.cases import validate_case
+from sealsim.errors import InputError
+from sealsim.structure.analytic import (
+    cylinder_between_flats_approach,
+    cylinder_between_flats_force,
+    hertz_line_contact,
+)
+from sealsim.structure.case import StructureCase
+from sealsim.structure.geometry import Gland, ORing, SealAssembly, gland_fill
+from sealsim.structure.loads import segment_moments, wetted_fractions
+from sealsim.structure.maps import HermiteGrid
+from sealsim.structure.material import (
+    ViscoelasticMooneyRivlin,
+    _mr_stress,
+    _mr_tangent,
+    thermal_volume_ratio,
+)
+from sealsim.structure.mesh import MESH_LEVELS, mesh_oring
+from sealsim.structure.results import contact_width
+
+RNG = np.random.default_rng(7)
+
+
+def _energy(F, c10, c01):
+    C = np.einsum("ki...,kj...->ij...", F, F)
+    i1 = np.einsum("ii...", C)
+    i2 = 0.5 * (i1**2 - np.einsum("ij...,ji...", C, C))
+    J = np.linalg.det(np.moveaxis(F, (0, 1), (-2, -1)))
+    return c10 * (J ** (-2 / 3) * i1 - 3) + c01 * (J ** (-4 / 3) * i2 - 3)
+
+
+def test_mooney_rivlin_stress_and_tangent_match_finite_differences():
+    # independent reference: central differences of the strain energy W(F) and of P(F);
+    # step 1e-6 on O(1) entries -> truncation ~1e-12, round-off ~1e-10: tolerance 1e-7
+    F = np.eye(3)[..., None, None] + 0.2 * RNG.standard_normal((3, 3, 2, 3))
+    c10, c01 = 0.8, 0.3
+    P, A = _mr_stress(F, c10, c01), _mr_tangent(F, c10, c01)
+    h = 1e-6
+    for k in range(3):
+        for L in range(3):
+            dF = np.zeros_like(F)
+            dF[k, L] = h
+            dW = (_energy(F + dF, c10, c01) - _energy(F - dF, c10, c01)) / (2 * h)
+            dP = (_mr_stress(F + dF, c10, c01) - _mr_stress(F - dF, c10, c01)) / (2 * h)
+            assert np.allclose(P[k, L], dW, atol=1e-7)
+            assert np.allclose(A[:, :, k, L], dP, atol=1e-7)
+
+
+def test_mooney_rivlin_small_strain_shear_modulus():
+    # linearisation: simple shear gamma -> P_12 = G gamma with G = 2 (C10 + C01) (to O(gamma^3))
+    g = 1e-5
+    F = np.eye(3).copy()
+    F[0, 1] = g
+    P = _mr_stress(F[..., None, None], 0.8e6, 0.2e6)
+    assert P[0, 1, 0, 0] == pytest.approx(2 * (0.8e6 + 0.2e6) * g, rel=1e-6)
+
+
+def test_viscoelastic_tangent_and_limits():
+    # consistent tangent (finite differences, tolerance as above)
+    F = np.eye(3)[..., None, None] + 0.1 * RNG.standard_normal((3, 3, 1, 2))
+    u = ViscoelasticMooneyRivlin(0.5, 0.1, [3.0, 10.0])
+    u.xi = np.array([0.2, 2.0])
+    u.theta = 0.9
+    sv = RNG.standard_normal((27, 1, 2))
+    A = u.hessian([F, sv])[0]
+    h = 1e-6
+    for k in range(3):
+        for L in range(3):
+            dF = np.zeros_like(F)
+            dF[k, L] = h
+            dP = (u.gradient([F + dF, sv])[0] - u.gradient([F - dF, sv])[0]) / (2 * h)
+            assert np.allclose(A[:, :, k, L], dP, atol=1e-7)
+    # glassy limit (xi = 0, no history): stiffness scaled by theta + sum(beta) (exact)
+    zero = np.zeros((27, 1, 1))
+    Fs = np.eye(3).copy()
+    Fs[0, 1] = 1e-6
+    u.xi = np.zeros(2)
+    u.theta = 1.0
+    P = u.gradient([Fs[..., None, None], zero])[0]
+    assert P[0, 1, 0, 0] == pytest.approx(14.0 * 2 * 0.6 * 1e-6, rel=1e-5)
+
+
+def test_thermal_volume_ratio():
+    # (1 + alpha dT)^3 by hand: alpha 2e-4, dT 100 K -> 1.02^3
+    assert thermal_volume_ratio(393.15, 293.15, 2e-4) == pytest.approx(1.02**3, rel=1e-12)
+
+
+def test_hertz_formulas_are_consistent():
+    # the inverse of the approach formula returns the force (brentq tolerance 1e-12)
+    d = cylinder_between_flats_approach(800.0, 2e-3, 6e6)
+    assert cylinder_between_flats_force(d, 2e-3, 6e6) == pytest.approx(800.0, rel=1e-9)
+    a, p0 = hertz_line_contact(800.0, 2e-3, 6e6)
+    assert np.pi * a * p0 / 2 == pytest.approx(800.0, rel=1e-12)  # elliptic pressure integral
+
+
+def test_geometry_input_errors():
+    with pytest.raises(InputError, match="cord_diameter"):
+        ORing(-4e-3, 20e-3)
+    with pytest.raises(InputError, match="too narrow"):
+        SealAssembly(ORing(4e-3, 20e-3), Gland("rod", 20e-3, 3.5e-3))
+    a = SealAssembly(ORing(4e-3, 20e-3), Gland("rod", 20e-3, 4.2e-3))
+    with pytest.raises(InputError, match="100 %"):
+        a.check_squeeze(1.0)
+    with pytest.raises(InputError, match="gland too small"):
+        a.check_fill(0.3, 1.0)
+    with pytest.raises(InputError, match="arrangement"):
+        Gland("wiper", 20e-3, 5e-3)
+    # gland fill by hand: pi*2^2 / (3.2 * 5.4) mm^2
+    assert gland_fill(ORing(4e-3, 20e-3), Gland("rod", 20e-3, 5.4e-3), 0.2) == pytest.approx(
+        np.pi * 4 / (3.2 * 5.4), rel=1e-12)
+
+
+def test_installation_path_keeps_gland_depth():
+    a = SealAssembly(ORing(4e-3, 19e-3), Gland("rod", 20e-3, 5.4e-3))
+    for s in (0.0, 0.05, 0.1, 0.2):
+        lines = a.lines(s, 293.15, installation_squeeze=0.1)
+        h = lines[1].point[1] - lines[0].point[1]
+        assert h == pytest.approx(4e-3 * (1 - s), rel=1e-12)
+    assert a.lines(0.0, 293.15, 0.1)[0].point[1] == pytest.approx(9.5e-3)  # free ID / 2
+    assert a.lines(0.1, 293.15, 0.1)[0].point[1] == pytest.approx(10e-3)  # on the rod
+
+
+def test_mesh_levels_are_valid():
+    ring = ORing(4e-3, 20e-3)
+    for level in MESH_LEVELS:
+        m = mesh_oring(ring, (0.0, 12e-3), level)
+        assert len(np.unique(m.cells)) == m.npoints  # no orphan nodes
+        r = np.linalg.norm(m.points[m.boundary] - [0.0, 12e-3], axis=1)
+        assert np.allclose(r, 2e-3, rtol=1e-12)  # boundary nodes on the circle
+        area = 0.5 * np.abs(np.sum(
+            m.points[m.boundary, 0] * np.roll(m.points[m.boundary, 1], -1)
+            - np.roll(m.points[m.boundary, 0], -1) * m.points[m.boundary, 1]))
+        n = len(m.boundary)
+        assert area == pytest.approx(0.5 * n * 4e-6 * np.sin(2 * np.pi / n), rel=0.05)
+
+
+def test_segment_moments_and_wetting():
+    m, _ = segment_moments(np.array([0.25]), np.array([0.75]))
+    assert m[:, 0] == pytest.approx([0.25, 0.25])
+    pc = np.array([0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 1.0, 0.0])
+    s0, s1 = wetted_fractions(pc, np.ones(8), 0)
+    # forward edge: p^2 from (1, 4) over length 1 -> zero 1/3 before node 3
+    assert s1[2] == pytest.approx(1 - 1 / 3)
+    assert s0[6] == pytest.approx(1 / 3) and s1[6] == 1.0
+    assert np.all(s1[3:6] == 0.0)
+
+
+def test_contact_width_hertz_profile():
+    # exact for an elliptic (Hertz) profile sampled on any grid
+    x = np.linspace(-1.0, 1.0, 17)
+    p = np.sqrt(np.clip(0.63**2 - x**2, 0.0, None))
+    b, _, _ = contact_width(x, p)
+    # p^2 is taken linear next to the edge: for the elliptic profile the error is O(h^2 / a),
+    # here 0.1 %
+    assert b == pytest.approx(1.26, rel=2e-3)
+    assert contact_width(x, np.zeros_like(x))[0] == 0.0
+
+
+def test_hermite_grid_reproduces_cubic_and_nodes():
+    x = np.array([0.0, 0.3, 0.7, 1.0])
+    y = np.array([250.0, 300.0, 320.0, 400.0])
+    f = (np.sin(3 * x)[:, None] + (y[None, :] / 100) ** 2)[..., None]
+    g = HermiteGrid([x, y], f)
+    X, Y = np.meshgrid(x, y, indexing="ij")
+    assert np.allclose(g.evaluate(np.c_[X.ravel(), Y.ravel()])[:, 0], f.ravel(), rtol=1e-13)
+    lin = (2 * x[:, None] - 0.01 * y[None, :])[..., None]  # linear data: exact everywhere
+    gl = HermiteGrid([x, y], lin)
+    assert gl.evaluate_scalar((0.41, 333.3))[0] == pytest.approx(0.82 - 3.333, abs=1e-12)
+
+
+def test_case_validation_messages():
+    base = {"seal": {"cord_diameter": "4 mm", "inner_diameter": "20 mm"},
+            "gland": {"sealing_diameter": "20 mm", "groove_width": "5.4 mm"},
+            "load": {"squeeze": [0.1]}}
+    validate_case(StructureCase, base)
+    bad = dict(base, load={"squeeze": [1.0]})
+    with pytest.raises(InputError, match=r"load.squeeze.0.*out of range"):
+        validate_case(StructureCase, bad)
+    bad = dict(base, seal={"cord_diameter": "-4 mm", "inner_diameter": "20 mm"})
+    with pytest.raises(InputError, match="seal.cord_diameter"):
+        validate_case(StructureCase, bad)
+    bad = dict(base, load={"squeeze": [0.1], "temperature_rate": "fast"})
+    with pytest.raises(InputError, match="temperature_rate"):
+        validate_case(StructureCase, bad)

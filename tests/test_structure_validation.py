@@ -1,0 +1,207 @@
+"""Validation of the axisymmetric seal FE model against independent references.
+
+Every assertion states its reference and why the tolerance is what it is. Coarse meshes are
+used where the reference allows it (the whole file runs in well under a minute).
+"""
+
+import numpy as np
+import pytest
+
+from sealsim.errors import ConvergenceError
+from sealsim.structure.analytic import cylinder_between_flats_force, hertz_line_contact
+from sealsim.structure.geometry import Gland, ORing, SealAssembly
+from sealsim.structure.material import HyperelasticSealMaterial, material_from_elastomer
+from sealsim.structure.mesh import mesh_oring
+from sealsim.structure.model import SealModel
+from sealsim.structure.solver import LoadStep, solve
+
+C10, C01, K = 0.8e6, 0.2e6, 2e9
+E = 6 * (C10 + C01)  # small-strain Young's modulus of the incompressible Mooney-Rivlin solid
+RING = ORing(4e-3, 20e-3)
+
+
+def hyperelastic(alpha=2e-4, t0=293.15):
+    return HyperelasticSealMaterial(C10, C01, K, alpha, t0)
+
+
+def rod_model(level="coarse", squeeze=0.2, material=None, **kw):
+    a = SealAssembly(RING, Gland("rod", 20e-3, 5.4e-3), kw.pop("inner", 0.0),
+                     kw.pop("outer", 0.0))
+    mesh = mesh_oring(a.seal, a.centre, level)
+    return SealModel(a, mesh, material or hyperelastic(), installation_squeeze=squeeze, **kw)
+
+
+@pytest.fixture(scope="module")
+def pressurised():
+    """Coarse axisymmetric O-ring: squeeze 20 %, then 0 -> 10 bar in 2.5 bar steps."""
+    model = rod_model()
+    states = solve(model, [LoadStep("squeeze", squeeze=0.2, increments=5, record="end"),
+                           LoadStep("pressure", pressure=10e5, increments=4, record="all")])
+    return model, states
+
+
+def test_plane_strain_cylinder_between_flats_matches_hertz():
+    """Plane-strain cylinder squeezed 3 % and 5 % between two rigid flats vs Hertz/Johnson.
+
+    Reference: Johnson, Contact Mechanics (1985), §4.2/§5.6 (line contact, rigid flats,
+    incompressible). Tolerance 5 % (issue): Hertz is a small-strain theory; at 5 % squeeze
+    a/R = 0.2, and the FE (finite strain, 0.027 mm elements at the contact) measured
+    F +1.6 %, b +0.3 %, p_max +0.3 %.
+    """
+    a = SealAssembly(RING, Gland("rod", 20e-3, 8e-3))
+    mesh = mesh_oring(a.seal, a.centre, n_arc=48, n_wall=16, n_radial=12, arc_grading=8)
+    model = SealModel(a, mesh, hyperelastic(), installation_squeeze=0.05, axisymmetric=False,
+                      walls=False)
+    states = solve(model, [LoadStep("squeeze", squeeze=0.03, increments=3, record="end"),
+                           LoadStep("squeeze", squeeze=0.05, increments=2, record="end")])
+    for s in states:
+        force = cylinder_between_flats_force(s.squeeze * RING.cord_diameter, RING.radius, E)
+        half_width, p0 = hertz_line_contact(s.F_N, RING.radius, E)
+        assert s.F_N == pytest.approx(force, rel=0.05)
+        assert s.b == pytest.approx(2 * half_width, rel=0.05)
+        assert s.p_max == pytest.approx(p0, rel=0.05)
+        # both flats carry the same force (plane strain: exact equilibrium, solver tolerance)
+        assert s.surfaces["groove_bottom"].force == pytest.approx(s.F_N, rel=1e-6)
+
+
+def test_global_equilibrium_and_penetration(pressurised):
+    """Sum of all reactions + fluid load = 0 axially, = hoop force 2π∫P_θθ dA radially.
+
+    Reference: equilibrium of the axisymmetric section (∮ r t_r ds = ∫ σ_θθ da), evaluated
+    from the stresses independently of the assembled forces. Tolerance 1e-6 of F_N: the Newton
+    tolerance is 1e-8 of the reactions. The rod and groove-bottom forces differ by the hoop
+    force (here > 10 % of F_N, so the check is not trivial).
+    """
+    _, states = pressurised
+    for s in states:
+        assert abs(s.axial_imbalance) < 1e-6
+        assert abs(s.radial_imbalance) < 1e-6
+        gap = s.surfaces["groove_bottom"].force - s.F_N
+        assert abs(gap) > 0.1 * s.F_N
+        # penalty penetration: below 2 µm = 0.25 % of the 0.8 mm squeeze displacement
+        # (measured 0.3-0.7 µm on this coarse mesh, 0.13-0.25 µm on the fine one)
+        assert s.max_penetration < 2e-6
+        # the anti-rolling spring (in place of static friction) carries a small moment: as a
+        # friction force at the cord radius it is < 2 % of F_N (measured 0.1-0.5 %), far below
+        # what static friction (mu 0.1-0.5) can hold
+        assert abs(s.rolling_moment) / RING.radius < 0.02 * s.F_N
+
+
+def test_pressure_raises_normal_force(pressurised):
+    """F_N rises with the fluid pressure, by about p × (projected wetted area) per bar.
+
+    Reference: the fluid load on the upstream face pushes the ring into the gland; a lower
+    bound for the rise of the rod force is the pressure on the ring's free half-face
+    projected radially is not exact, so the test asserts monotone growth with a slope
+    between 0.2 and 2 times p·(π d/2)·2πR_rod (the load on a half-cylinder face).
+    """
+    _, states = pressurised
+    forces = np.array([s.F_N for s in states])
+    pressures = np.array([s.pressure for s in states])
+    assert np.all(np.diff(forces) > 0)
+    slope = np.polyfit(pressures, forces, 1)[0]
+    scale = RING.radius * 2 * np.pi * 10e-3
+    assert 0.2 * scale < slope < 2.0 * scale
+    # the downstream wall takes the axial fluid load
+    assert states[-1].surfaces["wall_downstream"].force > states[0].surfaces[
+        "wall_downstream"].force
+
+
+def test_mesh_refinement_changes_force_and_width_less_than_two_percent():
+    """Medium vs fine mesh at squeeze 20 %, 0 and 10 bar: F_N and b change < 2 % (issue).
+
+    Measured: F_N 0.1-0.2 %, b 0.03-0.6 %. The coarse level is not converged in b (2.4 %
+    at 10 bar) and is only used where a reference allows it.
+    """
+    out = {}
+    for level in ("medium", "fine"):
+        model = rod_model(level)
+        out[level] = solve(model, [
+            LoadStep("squeeze", squeeze=0.2, increments=5, record="end"),
+            LoadStep("pressure", pressure=10e5, increments=5, record="end")])
+    for m, f in zip(out["medium"], out["fine"]):
+        assert m.F_N == pytest.approx(f.F_N, rel=0.02)
+        assert m.b == pytest.approx(f.b, rel=0.02)
+
+
+def test_heating_raises_force_through_expansion():
+    """Heating 20 -> 100 °C with temperature-independent constants and rigid metal parts.
+
+    Reference: without thermal expansion the state does not change (same energy; up to the
+    settling tolerance of the wetted surface, 1e-4 of the cord: measured 3e-5 relative);
+    with α = 1.9e-4 1/K the ring's volume grows by 4.6 % in a gland of fixed size, so F_N must
+    rise clearly (> 5 %; measured about +25 %).
+    """
+    forces = {}
+    for alpha in (0.0, 1.9e-4):
+        model = rod_model(material=hyperelastic(alpha))
+        states = solve(model, [LoadStep("squeeze", squeeze=0.15, increments=4, record="end"),
+                               LoadStep("heat", temperature=373.15, increments=4,
+                                        record="end")])
+        forces[alpha] = (states[0].F_N, states[1].F_N)
+    cold, hot = forces[0.0]
+    assert hot == pytest.approx(cold, rel=1e-4)
+    cold, hot = forces[1.9e-4]
+    assert hot > 1.05 * cold
+
+
+def test_cooling_below_glass_transition_lowers_force_faster():
+    """Thermo-viscoelastic NBR (catalogue Prony series, WLF/Arrhenius), squeeze 15 %, 1 h
+    hold, cooling 20 -> -60 °C at 1 K/min (seed 001, Fig. 8).
+
+    Reference (seed 001): the sealing force falls slowly while the rubber can relax, much
+    faster below T_g (-25 °C), the groove contact is lost, afterwards the rod force rises by
+    thermal shrinkage. Asserted: mean slope between T_g and T_g - 10 K at least 3x the mean
+    slope between 10 and -10 °C (measured about 6x), groove-bottom force reaching zero below
+    T_g, rod force at -60 °C above its minimum.
+    """
+    from sealsim.properties.elastomers import get_elastomer
+
+    nbr = get_elastomer("NBR")
+    material = material_from_elastomer(nbr, "viscoelastic", reference_temperature=293.15)
+    model = rod_model(material=material, squeeze=0.15, inner=11.5e-6, outer=11.5e-6)
+    states = solve(model, [
+        LoadStep("installation", squeeze=0.15, increments=6, duration=60.0, record="end"),
+        LoadStep("hold", duration=3600.0, increments=2, record="end"),
+        LoadStep("cooling", temperature=213.15, duration=80 * 60.0, increments=40,
+                 record="all")])
+    t = np.array([s.temperature for s in states])
+    f = np.array([s.F_N for s in states])
+    groove = np.array([s.surfaces["groove_bottom"].force for s in states])
+
+    def slope(hi, lo):
+        i, j = np.argmin(abs(t - hi)), np.argmin(abs(t - lo))
+        return (f[i] - f[j]) / (t[i] - t[j])
+
+    tg = nbr.glass_transition
+    assert slope(tg, tg - 10.0) > 3 * slope(283.15, 263.15) > 0
+    lost = t[groove == 0.0]
+    assert lost.size and lost.max() < tg
+    assert f[-1] > f.min() * 1.5
+
+
+def test_convergence_error_names_the_load():
+    """A squeeze of 30 % in one increment with 2 Newton iterations and no cutback cannot
+    converge: the error must say at which load."""
+    model = rod_model(squeeze=0.3)
+    with pytest.raises(ConvergenceError, match=r"squeeze 30 %.*pressure 0 bar.*20 degC"):
+        solve(model, [LoadStep("squeeze", squeeze=0.3, increments=1)], maxiter=2,
+              max_cutbacks=0)
+
+
+def test_piston_seal_arrangement():
+    """Piston seal (groove in the piston, sealing on the bore, outside the ring).
+
+    Reference: global equilibrium as above (tolerance 1e-6 of F_N, Newton tolerance 1e-8);
+    the bore stays at its radius (rigid, no temperature change: exact); both contacts carry
+    load and the bore force rises with the pressure."""
+    a = SealAssembly(ORing(3e-3, 44e-3), Gland("piston", 50e-3, 4e-3))
+    mesh = mesh_oring(a.seal, a.centre, "coarse")
+    model = SealModel(a, mesh, hyperelastic(), installation_squeeze=0.15)
+    states = solve(model, [LoadStep("squeeze", squeeze=0.15, increments=4, record="end"),
+                           LoadStep("pressure", pressure=6e5, increments=2, record="end")])
+    for s in states:
+        assert abs(s.axial_imbalance) < 1e-6 and abs(s.radial_imbalance) < 1e-6
+        assert s.surfaces["groove_bottom"].force > 0 and s.F_N > 0
+        assert s.surfaces["sealing_surface"].radius == pytest.approx(25e-3, rel=1e-9)
+    assert states[1].F_N > states[0].F_N
