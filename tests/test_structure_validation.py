@@ -145,6 +145,30 @@ def test_heating_raises_force_through_expansion():
     assert hot > 1.05 * cold
 
 
+def test_default_material_force_rises_with_temperature_like_seed_001():
+    """Catalogue NBR with the default entropic scaling, heated 20 -> 80 °C at 15 % squeeze.
+
+    References: (1) rubber elasticity G ∝ T (Treloar): for the same deformation of a nearly
+    incompressible solid the force scales with the shear modulus, so without thermal
+    expansion F_N(80 °C)/F_N(20 °C) = 353.15/293.15 (2 %: the bulk modulus, 1000x the shear
+    modulus, is not scaled); (2) seed 001 (Fig. 10, 12/13): a warmer seal presses harder, and
+    thermal expansion adds to the entropic stiffening.
+    """
+    from sealsim.properties.elastomers import get_elastomer
+
+    nbr = get_elastomer("NBR")
+    steps = [LoadStep("squeeze", squeeze=0.15, increments=4, record="end"),
+             LoadStep("heat", temperature=353.15, increments=3, record="end")]
+    forces = {}
+    for label, expansion in (("no expansion", 0.0), ("catalogue", nbr.thermal_expansion)):
+        material = material_from_elastomer(nbr, reference_temperature=293.15)
+        material.thermal_expansion = expansion
+        cold, hot = solve(rod_model(squeeze=0.15, material=material), steps)
+        forces[label] = hot.F_N / cold.F_N
+    assert forces["no expansion"] == pytest.approx(353.15 / 293.15, rel=0.02)
+    assert forces["catalogue"] > forces["no expansion"]
+
+
 def test_cooling_below_glass_transition_lowers_force_faster():
     """Thermo-viscoelastic NBR (catalogue Prony series, WLF/Arrhenius), squeeze 15 %, 1 h
     hold, cooling 20 -> -60 °C at 1 K/min (seed 001, Fig. 8).

@@ -14,19 +14,46 @@ Every command that writes results does so through :class:`ResultFolder`:
 from __future__ import annotations
 
 import json
+import math
 import os
 import shutil
 import tempfile
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from sealsim.errors import InputError, ResultExistsError
 
-__all__ = ["ResultFolder", "atomic_write_bytes", "atomic_write_text"]
+__all__ = ["ResultFolder", "atomic_write_bytes", "atomic_write_text", "json_ready"]
 
 # mkstemp/mkdtemp create private (0600/0700) entries; results get the user's normal modes
 _UMASK = os.umask(0)
 os.umask(_UMASK)
+
+
+def json_ready(value: Any) -> Any:
+    """Make results JSON-safe: numpy scalars become Python numbers, NaN/inf become None.
+
+    JSON has no NaN; a missing value (e.g. no break-away in a run) is written as null.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> json_ready({"a": np.float64(1.5), "b": [float("nan"), np.int64(2)]})
+    {'a': 1.5, 'b': [None, 2]}
+    """
+    if isinstance(value, dict):
+        return {k: json_ready(v) for k, v in value.items()}
+    if isinstance(value, list | tuple):
+        return [json_ready(v) for v in value]
+    if isinstance(value, bool | np.bool_):
+        return bool(value)
+    if isinstance(value, np.integer):
+        return int(value)
+    if isinstance(value, float | np.floating):
+        return float(value) if math.isfinite(value) else None
+    return value
 
 
 def atomic_write_bytes(path: str | Path, data: bytes) -> Path:
@@ -128,7 +155,9 @@ class ResultFolder:
         return atomic_write_text(self.file(name), text)
 
     def write_json(self, name: str, data: Any) -> Path:
-        return self.write_text(name, json.dumps(data, indent=2, allow_nan=False) + "\n")
+        """Write JSON (numpy values and NaN made JSON-safe by :func:`json_ready`)."""
+        return self.write_text(name, json.dumps(json_ready(data), indent=2, allow_nan=False)
+                               + "\n")
 
     def write_csv(self, name: str, frame, **kwargs) -> Path:
         """Write a pandas DataFrame as CSV (no index unless asked)."""

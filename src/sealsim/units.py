@@ -65,6 +65,7 @@ DIMENSIONS: dict[str, Dimension] = {
         Dimension("pressure", "Pa", "6 bar", display_unit="bar"),
         Dimension("temperature", "K", "55 degC", display_unit="degC"),
         Dimension("temperature_difference", "K", "10 K"),
+        Dimension("temperature_rate", "K/s", "1 K/min", display_unit="K/min"),
         Dimension("angular_speed", "rad/s", "1500 rpm", display_unit="rpm"),
         Dimension("velocity", "m/s", "0.5 m/s"),
         Dimension("frequency", "Hz", "10 Hz"),

@@ -13,6 +13,7 @@ import typer
 from sealsim import __version__
 from sealsim.cli._common import console
 from sealsim.cli.friction import friction_app
+from sealsim.cli.pneumatic import pneumatic_app
 from sealsim.cli.properties import material_app, oil_app
 from sealsim.cli.rotary import rotary_app
 from sealsim.cli.structure import structure_app
@@ -29,6 +30,7 @@ app.add_typer(material_app, name="material")
 app.add_typer(rotary_app, name="rotary")
 app.add_typer(friction_app, name="friction")
 app.add_typer(structure_app, name="structure")
+app.add_typer(pneumatic_app, name="pneumatic")
 
 
 def _version(value: bool) -> None:

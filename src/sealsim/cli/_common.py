@@ -12,6 +12,7 @@ from rich.console import Console
 from rich.text import Text
 
 from sealsim.errors import SealsimError
+from sealsim.output import json_ready
 
 console = Console(highlight=False)
 err_console = Console(stderr=True, highlight=False)
@@ -37,17 +38,7 @@ def guarded(func):
 
 def print_json(data: Any) -> None:
     """Print JSON to stdout (plain text, no rich markup); NaN is written as null."""
-    typer.echo(json.dumps(_finite(data), indent=2))
-
-
-def _finite(value):
-    if isinstance(value, dict):
-        return {k: _finite(v) for k, v in value.items()}
-    if isinstance(value, list | tuple):
-        return [_finite(v) for v in value]
-    if isinstance(value, float) and not math.isfinite(value):
-        return None
-    return value
+    typer.echo(json.dumps(json_ready(data), indent=2))
 
 
 def parse_celsius_list(text: str | None, default: list[float], option: str) -> list[float]:

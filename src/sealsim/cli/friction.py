@@ -108,7 +108,7 @@ def run(
 
     with folder:
         folder.write_csv("timeseries.csv", table, float_format="%.10g")
-        folder.write_json("summary.json", _finite(summary))
+        folder.write_json("summary.json", summary)
         loops = last_cycles(shown)
         steady_f = {k2: steady_f[k1] for k1, k2 in zip(shown, loops) if k1 in steady_f}
         steady_theta = {k2: steady_theta[k1] for k1, k2 in zip(shown, loops)
@@ -127,18 +127,3 @@ def run(
         console.print(f"{name}: dissipated {s['dissipated_energy_J']:.4g} J, "
                       f"break-away [N]: {brk}")
     console.print(f"results written to {out}")
-
-
-def _finite(value):
-    """Replace non-finite floats by None (JSON has no NaN)."""
-    if isinstance(value, dict):
-        return {k: _finite(v) for k, v in value.items()}
-    if isinstance(value, list | tuple):
-        return [_finite(v) for v in value]
-    if isinstance(value, float | np.floating):
-        return float(value) if np.isfinite(value) else None
-    if isinstance(value, np.integer):
-        return int(value)
-    if isinstance(value, np.bool_):
-        return bool(value)
-    return value

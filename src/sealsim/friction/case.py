@@ -34,7 +34,7 @@ from typing import Annotated, Any, Literal
 import numpy as np
 from pydantic import Field
 
-from sealsim.cases import CaseModel, Q, dump_variants_toml, expand_variants
+from sealsim.cases import CaseModel, Q, expand_variants
 from sealsim.errors import InputError
 from sealsim.friction import LAWS, make_law
 from sealsim.friction.base import ContactInputs, FrictionLaw

@@ -25,15 +25,12 @@ further squeeze values, then the pressures (at the last squeeze), then the tempe
 
 from __future__ import annotations
 
-import math
 from typing import Annotated, Literal
 
-import pydantic
 from pydantic import Field, field_validator
 
 from sealsim.cases import CaseModel, Q
 from sealsim.structure.geometry import MAX_SQUEEZE
-from sealsim.units import ureg
 
 __all__ = [
     "GlandSpec",
@@ -49,20 +46,6 @@ __all__ = [
 Squeeze = Q("dimensionless", gt=0.0, le=MAX_SQUEEZE)
 Pressure = Q("pressure", ge=0.0, le=100e6)
 Temperature = Q("temperature", gt=0.0, le=773.15)
-
-
-def _rate(value) -> float:
-    """Temperature rate like '1 K/min' → K/s."""
-    if isinstance(value, (int, float)) and not isinstance(value, bool):
-        raise ValueError(f"{value!r} has no unit; write e.g. '1 K/min'")
-    try:
-        q = ureg.Quantity(str(value)).to("K/s")
-    except Exception:
-        raise ValueError(f"{value!r} is not a temperature rate such as '1 K/min'") from None
-    v = float(q.magnitude)
-    if not (math.isfinite(v) and v > 0):
-        raise ValueError(f"{value!r} must be a positive rate such as '1 K/min'")
-    return v
 
 
 class SealSection(CaseModel):
@@ -88,7 +71,12 @@ class MaterialSpec(CaseModel):
 
     elastomer: str = "NBR"
     model: Literal["hyperelastic", "viscoelastic"] = "hyperelastic"
-    temperature_dependent: bool = True
+    temperature_scaling: Literal["entropic", "modulus", "none"] = Field(
+        "entropic", description=(
+            "hyperelastic constants vs temperature: 'entropic' C(T) = C(T_ref)·T/T_ref "
+            "(rubber elasticity, equilibrium state; above about Tg + 30 K), 'modulus' with "
+            "the catalogue's E(T) at its test frequency (includes viscoelastic softening), "
+            "'none' constant"))
     c10: Q("pressure", gt=0.0) | None = None
     c01: Q("pressure", ge=0.0) | None = None
     bulk_modulus: Q("pressure", gt=0.0) | None = None
@@ -118,9 +106,7 @@ class LoadSpec(CaseModel):
     temperature: list[Temperature] = Field(default_factory=list)
     temperature_increments: Annotated[int, Field(ge=1, le=10000)] = 4
     """Temperature rate of the temperature steps (sets their duration), e.g. "1 K/min"."""
-    temperature_rate: Annotated[float, pydantic.BeforeValidator(_rate),
-                                pydantic.PlainSerializer(lambda v: f"{v * 60:.12g} K/min",
-                                                         return_type=str)] = 1.0 / 60.0
+    temperature_rate: Q("temperature_rate", gt=0.0) = 1.0 / 60.0
     record_increments: bool = False
 
 

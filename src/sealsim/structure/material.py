@@ -445,7 +445,7 @@ def _check_constants(c10, c01, k, temperature):
 
 def material_from_elastomer(elastomer, model: str = "hyperelastic", *,
                             reference_temperature: float,
-                            temperature_dependent: bool = True,
+                            temperature_scaling: str = "entropic",
                             frequency: float | None = None):
     """Build a seal material from a catalogue :class:`~sealsim.properties.elastomers.Elastomer`.
 
@@ -454,28 +454,47 @@ def material_from_elastomer(elastomer, model: str = "hyperelastic", *,
     elastomer : Elastomer
         Catalogue entry (``get_elastomer("NBR")``).
     model : {"hyperelastic", "viscoelastic"}
-        ``"hyperelastic"``: Mooney–Rivlin with C10(T), C01(T) scaled with E(T) at the test
-        frequency (``Elastomer.mooney_rivlin``) -- meaningful above ≈ T_g + 25 K.
+        ``"hyperelastic"``: Mooney–Rivlin with the catalogue constants, scaled with
+        temperature as ``temperature_scaling`` says.
         ``"viscoelastic"``: equilibrium Mooney–Rivlin with 6 (C10 + C01) = E∞ (same C01/C10
         as the catalogue), the catalogue Prony series and its WLF/Arrhenius shift.
     reference_temperature : float
         T_0 [K] at which the geometry is stress-free (installation temperature).
-    temperature_dependent : bool
-        Hyperelastic only: False keeps the constants at the catalogue reference temperature.
+    temperature_scaling : {"entropic", "modulus", "none"}
+        Hyperelastic only.  ``"entropic"`` (default): C(T) = C(T_ref)·T/T_ref, the
+        equilibrium modulus of rubber elasticity, G = n·k·T (Treloar, *The Physics of Rubber
+        Elasticity*, 1975, ch. 4).  A seal at rest is in (near) equilibrium, which is also what
+        seed 001 assumes for slow cooling above Tg; valid above ≈ T_g + 30 K, below that use
+        ``model = "viscoelastic"``.  ``"modulus"``: scaled with the catalogue's E(T) at
+        ``frequency``, which includes the viscoelastic softening of the glass-transition tail
+        (a dynamic, not a sealing-force, property).  ``"none"``: constant.
     frequency : float, optional
-        Frequency [Hz] of E(T) for the hyperelastic constants (default: the test frequency).
+        Frequency [Hz] of E(T) for ``"modulus"`` (default: the catalogue's test frequency).
     """
     e = elastomer
     if model == "hyperelastic":
-        if temperature_dependent:
+        if temperature_scaling == "entropic":
+            def c10(T):
+                return e.c10 * T / e.reference_temperature
+
+            def c01(T):
+                return e.c01 * T / e.reference_temperature
+        elif temperature_scaling == "modulus":
             def consts(T, i):
                 with warnings.catch_warnings():
                     warnings.simplefilter("ignore")
                     return float(e.mooney_rivlin(T, frequency)[i])
-            c10 = lambda T: consts(T, 0)
-            c01 = lambda T: consts(T, 1)
-        else:
+
+            def c10(T):
+                return consts(T, 0)
+
+            def c01(T):
+                return consts(T, 1)
+        elif temperature_scaling == "none":
             c10, c01 = e.c10, e.c01
+        else:
+            raise InputError(f"material.temperature_scaling: {temperature_scaling!r} is not "
+                             "allowed; choose 'entropic', 'modulus' or 'none'")
         return HyperelasticSealMaterial(c10, c01, e.bulk_modulus, e.thermal_expansion,
                                         reference_temperature, name=e.name)
     if model == "viscoelastic":

@@ -71,7 +71,7 @@ def build_material(case: StructureCase, *, equilibrium: bool = False):
             raise InputError(f"material: {exc}") from None
     t0 = case.load.installation_temperature
     material = material_from_elastomer(elastomer, spec.model, reference_temperature=t0,
-                                       temperature_dependent=spec.temperature_dependent)
+                                       temperature_scaling=spec.temperature_scaling)
     if equilibrium:
         material = material.equilibrium()
     return material

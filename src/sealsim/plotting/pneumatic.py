@@ -1,0 +1,149 @@
+"""Figures of pneumatic cylinder results (seed 001 Fig. 10, Figs. 12/13, friction vs velocity).
+
+All functions read the ``timeseries`` frames of :class:`sealsim.pneumatic.PneumaticResult`
+(columns ``time_s``, ``x_m``, ``v_m_s``, ``p1_bar``, ``p2_bar``, ``F_friction_N``, per seal
+``F_<name>_N``, ``F_N_<name>_N``, ``theta_<name>``) and return pyplot-free figures.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+
+from sealsim.plotting import new_figure
+
+__all__ = ["friction_stroke_figure", "friction_velocity_figure", "pressure_stroke_figure",
+           "timeseries_figure"]
+
+_COLOURS = ["tab:blue", "tab:red", "tab:green", "tab:orange", "tab:purple", "tab:brown"]
+
+
+def _colour(k: int) -> str:
+    return _COLOURS[k % len(_COLOURS)]
+
+
+def pressure_stroke_figure(frames: dict[str, pd.DataFrame], title: str = ""):
+    """Chamber pressures and stroke against time, all variants (like seed 001 Fig. 10).
+
+    Upper panel: p1 (cap side, solid) and p2 (rod side, dashed) [bar abs]; lower panel: piston
+    position [mm]; the valve command is shaded in the lower panel (extend: grey).
+    """
+    fig, axes = new_figure(1, 2, width=8.0, height=6.0, sharex=True)
+    ax_p, ax_x = axes
+    for k, (name, f) in enumerate(frames.items()):
+        c = _colour(k)
+        t = f["time_s"].to_numpy()
+        ax_p.plot(t, f["p1_bar"], color=c, lw=1.4, label=f"{name}: p1 (cap side)")
+        ax_p.plot(t, f["p2_bar"], color=c, lw=1.2, ls="--", label=f"{name}: p2 (rod side)")
+        ax_x.plot(t, f["x_m"] * 1e3, color=c, lw=1.6, label=name)
+    first = next(iter(frames.values()))
+    t = first["time_s"].to_numpy()
+    extend = first["valve_command"].to_numpy() > 0
+    ax_x.fill_between(t, 0, 1, where=extend, color="0.85", alpha=0.6, lw=0,
+                      transform=ax_x.get_xaxis_transform(), label="valve: extend")
+    ax_p.set_ylabel("Chamber pressure [bar abs]")
+    ax_x.set_ylabel("Stroke x [mm]")
+    ax_x.set_xlabel("Time [s]")
+    for ax in axes:
+        ax.grid(True, alpha=0.3)
+        ax.legend(loc="best", fontsize=7, ncol=2)
+    if title:
+        fig.suptitle(title)
+    return fig
+
+
+def friction_stroke_figure(frames: dict[str, pd.DataFrame], strokes: dict[str, float] | None
+                           = None, title: str = ""):
+    """Friction force against stroke, one panel per variant (like seed 001 Figs. 12/13).
+
+    The total friction of all seals (positive against extension); the loop is run clockwise:
+    positive friction while extending, negative while retracting.  Only samples where the
+    piston moves (|v| > 1 mm/s) are drawn with a line, so that the rests at the end stops do not
+    add vertical strokes.
+    """
+    n = len(frames)
+    fig, axes = new_figure(n, 1, width=4.2 * n + 0.8, height=4.2, sharey=True, squeeze=False)
+    for k, (name, f) in enumerate(frames.items()):
+        ax = axes[0][k]
+        x = f["x_m"].to_numpy() * 1e3
+        friction = f["F_friction_N"].to_numpy().copy()
+        moving = np.abs(f["v_m_s"].to_numpy()) > 1e-3
+        friction[~moving] = np.nan
+        ax.plot(x, friction, color=_colour(k), lw=1.4, label="simulated (all seals)")
+        ax.axhline(0.0, color="0.6", lw=0.7)
+        ax.set_xlabel("Stroke x [mm]")
+        ax.set_title(name, fontsize=10)
+        ax.grid(True, alpha=0.3)
+        if strokes and name in strokes:
+            ax.set_xlim(-0.03 * strokes[name] * 1e3, 1.03 * strokes[name] * 1e3)
+    axes[0][0].set_ylabel("Friction force [N]")
+    axes[0][0].legend(loc="best", fontsize=8)
+    if title:
+        fig.suptitle(title)
+    return fig
+
+
+def friction_velocity_figure(frames: dict[str, pd.DataFrame], title: str = ""):
+    """Total friction force against piston velocity, all variants (the dynamic F–v loops of
+    seed 001 Fig. 2/3 as the cylinder runs through them)."""
+    fig, ax = new_figure(width=6.6, height=4.6)
+    for k, (name, f) in enumerate(frames.items()):
+        v = f["v_m_s"].to_numpy()
+        friction = f["F_friction_N"].to_numpy()
+        ax.plot(v, friction, color=_colour(k), lw=1.0, label=name)
+    ax.axhline(0.0, color="0.6", lw=0.7)
+    ax.axvline(0.0, color="0.6", lw=0.7)
+    ax.set_xlabel("Piston velocity v [m/s]")
+    ax.set_ylabel("Friction force [N]")
+    ax.grid(True, alpha=0.3)
+    ax.legend(loc="best", fontsize=8)
+    if title:
+        ax.set_title(title, fontsize=10)
+    return fig
+
+
+def timeseries_figure(frame: pd.DataFrame, seal_names: list[str], title: str = ""):
+    """Everything of one variant against time: stroke and velocity, pressures, air
+    temperatures, friction per seal, normal force per seal, Θ per seal."""
+    thetas = [n for n in seal_names if f"theta_{n}" in frame]
+    loads = [n for n in seal_names if f"F_N_{n}_N" in frame]
+    rows = 4 + (1 if loads else 0) + (1 if thetas else 0)
+    fig, axes = new_figure(1, rows, width=8.0, height=1.9 * rows + 0.6, sharex=True)
+    axes = np.atleast_1d(axes)
+    t = frame["time_s"].to_numpy()
+    ax = axes[0]
+    ax.plot(t, frame["x_m"] * 1e3, color="k", lw=1.4, label="x [mm]")
+    ax.set_ylabel("Stroke [mm]")
+    twin = ax.twinx()
+    twin.plot(t, frame["v_m_s"], color="tab:gray", lw=0.9, label="v")
+    twin.set_ylabel("v [m/s]", color="tab:gray")
+    axes[1].plot(t, frame["p1_bar"], color="tab:blue", lw=1.3, label="p1 (cap side)")
+    axes[1].plot(t, frame["p2_bar"], color="tab:red", lw=1.3, label="p2 (rod side)")
+    axes[1].set_ylabel("Pressure [bar abs]")
+    axes[2].plot(t, frame["T1_C"], color="tab:blue", lw=1.2, label="T1")
+    axes[2].plot(t, frame["T2_C"], color="tab:red", lw=1.2, label="T2")
+    axes[2].set_ylabel("Air temp. [°C]")
+    axes[3].plot(t, frame["F_friction_N"], color="k", lw=1.3, label="total")
+    for k, n in enumerate(seal_names):
+        axes[3].plot(t, frame[f"F_{n}_N"], color=_colour(k), lw=0.9, label=n)
+    axes[3].set_ylabel("Friction [N]")
+    row = 4
+    if loads:
+        for k, n in enumerate(loads):
+            axes[row].plot(t, frame[f"F_N_{n}_N"], color=_colour(seal_names.index(n)), lw=1.1,
+                           label=n)
+        axes[row].set_ylabel("Normal force F_N [N]")
+        row += 1
+    if thetas:
+        for n in thetas:
+            axes[row].plot(t, frame[f"theta_{n}"], color=_colour(seal_names.index(n)), lw=1.1,
+                           label=n)
+        axes[row].set_ylabel("Θ [-] (0 dry)")
+        axes[row].set_ylim(-0.02, 1.02)
+    axes[-1].set_xlabel("Time [s]")
+    for a in axes:
+        a.grid(True, alpha=0.3)
+        a.legend(loc="upper right", fontsize=7, ncol=3)
+    if title:
+        fig.suptitle(title)
+    return fig

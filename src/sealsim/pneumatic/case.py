@@ -1,0 +1,427 @@
+"""Pneumatic cylinder case files (TOML, quantities with units), validated by pydantic.
+
+A case (see ``examples/pneumatic/cylinder_32.toml``)::
+
+    title = "Ø32 cylinder"
+
+    [cylinder]                       # geometry, moving mass, end stops, cushioning
+    bore = "32 mm"
+    rod_diameter = "12 mm"
+    stroke = "100 mm"
+    dead_volume_cap = "5 cm**3"      # chamber 1 (port A) at x = 0, incl. tubing to the valve
+    dead_volume_rod = "5 cm**3"      # chamber 2 (port B) at x = stroke
+    piston_mass = "0.4 kg"           # piston + rod
+    incline = "0 deg"                # extend direction above the horizontal (gravity)
+    temperature = "25 degC"          # barrel (wall heat); default air.temperature
+    seal_temperature = "25 degC"     # seals; default the barrel temperature
+    cushion_rod = { length = "10 mm", conductance = "0.1 dm**3/(s*bar)" }   # optional
+
+    [load]                           # on the rod; force > 0 resists extension
+    mass = "2 kg"
+    force = "50 N"
+
+    [air]
+    supply_pressure = "6 bar"        # gauge
+    temperature = "25 degC"          # ambient and supply air
+    heat_transfer_coefficient = "30 W/(m**2*K)"
+
+    [valve]
+    type = "5/2"                     # or "5/3" with centre = "closed" | "exhaust" | "pressure"
+    conductance = "1 dm**3/(s*bar)"  # ISO 6358 C of each path, b below
+    critical_pressure_ratio = 0.3
+    time_constant = "5 ms"           # spool lag; delay = dead time
+    meter_out = { conductance_a = "0.2 dm**3/(s*bar)", conductance_b = "0.2 dm**3/(s*bar)" }
+
+    [controller]                     # mode = "cycle" (PLC) or "position" (test rig)
+    mode = "cycle"
+    duration = "4 s"
+    steps = [{ command = "extend", duration = "1 s" }, { command = "retract", duration = "1 s" }]
+
+    [[seals]]                        # piston seal, rod seal, wiper: any friction law
+    name = "piston"
+    location = "piston"
+    friction = { law = "theta", parameter_set = "pneumatic_demo" }
+    map = { analytic = { cord_diameter = "2.5 mm", squeeze = 0.12 } }   # or file / structure_case
+
+    [variants.T55C]
+    cylinder.seal_temperature = "55 degC"
+
+:func:`load_pneumatic_cases` validates a file (every problem in one
+:class:`~sealsim.errors.InputError` naming the field); :func:`build_seals` makes the seal objects
+(friction law + contact map).  From Python, numbers are SI: ``PneumaticCase(cylinder={"bore":
+0.032, ...}, ...)``.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from pathlib import Path
+from typing import Annotated, Any, Literal
+
+from pydantic import Field, model_validator
+
+from sealsim.cases import CaseModel, Q, expand_variants, load_toml
+from sealsim.errors import InputError
+from sealsim.friction import make_law
+from sealsim.friction.bench import profile_type
+from sealsim.friction.case import LawParameters
+from sealsim.pneumatic.contact_maps import (
+    AnalyticContactMap,
+    FEContactMap,
+    build_or_load_fe_map,
+)
+from sealsim.pneumatic.seals import Seal
+
+__all__ = [
+    "AirModel",
+    "CylinderModel",
+    "PneumaticCase",
+    "SealModel",
+    "ValveModel",
+    "build_seals",
+    "load_pneumatic_case_file",
+    "load_pneumatic_cases",
+]
+
+
+# -- cylinder -------------------------------------------------------------------------------
+class EndStopModel(CaseModel):
+    """Elastic end stops (bumper rings): stiff spring–damper contacts."""
+
+    stiffness: Q("stiffness", gt=0) = 2.0e6
+    damping: Q("damping", ge=0) = 2.0e3
+    damping_depth: Q("length", gt=0) = 5.0e-5
+
+
+class CushionModel(CaseModel):
+    """End cushioning: over the last ``length`` of the stroke the air leaving the chamber must
+    pass the cushioning needle (conductance C); air entering passes a check valve."""
+
+    length: Q("length", gt=0)
+    conductance: Q("flow_conductance", gt=0)
+    entry: Q("length", gt=0) = 1.0e-3
+
+
+class CylinderModel(CaseModel):
+    """Double-acting single-rod cylinder (x = 0 retracted, x = stroke extended).
+
+    ``temperature`` is the temperature of the cylinder body -- the barrel wall the chamber air
+    exchanges heat with; default ``air.temperature``.  ``seal_temperature`` is the temperature
+    of the seals (where their contact maps are evaluated) unless a seal gives its own; default
+    the body temperature.  Seed 001 (Fig. 10) varies the temperature of the seals to show the
+    effect of their contact force on the motion."""
+
+    bore: Q("length", gt=0)
+    rod_diameter: Q("length", gt=0)
+    stroke: Q("length", gt=0)
+    dead_volume_cap: Q("volume", gt=0)
+    dead_volume_rod: Q("volume", gt=0)
+    piston_mass: Q("mass", gt=0)
+    incline: Q("dimensionless", ge=-math.pi / 2, le=math.pi / 2) = 0.0
+    temperature: Q("temperature", gt=0) | None = None
+    seal_temperature: Q("temperature", gt=0) | None = None
+    end_stops: EndStopModel = EndStopModel()
+    cushion_cap: CushionModel | None = None
+    cushion_rod: CushionModel | None = None
+
+    @model_validator(mode="after")
+    def _check(self):
+        if self.rod_diameter >= self.bore:
+            raise ValueError(f"rod_diameter ({self.rod_diameter * 1e3:g} mm) must be smaller "
+                             f"than the bore ({self.bore * 1e3:g} mm)")
+        for name in ("cushion_cap", "cushion_rod"):
+            c = getattr(self, name)
+            if c is not None and c.length >= self.stroke:
+                raise ValueError(f"{name}.length ({c.length * 1e3:g} mm) must be shorter than "
+                                 f"the stroke ({self.stroke * 1e3:g} mm)")
+        return self
+
+
+class LoadModel(CaseModel):
+    """External load on the rod (force > 0 resists extension)."""
+
+    mass: Q("mass", ge=0) = 0.0
+    force: Q("force") = 0.0
+    stiffness: Q("stiffness", ge=0) = 0.0
+    spring_free_position: Q("length") = 0.0
+    viscous: Q("damping", ge=0) = 0.0
+
+
+class AirModel(CaseModel):
+    """Supply, ambient and heat transfer."""
+
+    supply_pressure: Q("pressure", gt=0)
+    ambient_pressure: Q("pressure", gt=0) = 101325.0
+    temperature: Q("temperature", gt=0) = 293.15
+    supply_temperature: Q("temperature", gt=0) | None = None
+    heat_transfer_coefficient: Q("heat_transfer_coefficient", ge=0) = 30.0
+
+    @property
+    def supply_absolute(self) -> float:
+        return self.supply_pressure + self.ambient_pressure
+
+    @property
+    def supply_air_temperature(self) -> float:
+        return self.temperature if self.supply_temperature is None else self.supply_temperature
+
+
+# -- valve ------------------------------------------------------------------------------------
+class MeterOutModel(CaseModel):
+    """One-way flow control valves in the lines to the ports: throttle on the way out of the
+    chamber, free flow (check valve) on the way in."""
+
+    conductance_a: Q("flow_conductance", gt=0) | None = None
+    conductance_b: Q("flow_conductance", gt=0) | None = None
+
+
+class ValveModel(CaseModel):
+    """Directional valve with ISO 6358 flow paths and a switching dynamics."""
+
+    type: Literal["5/2", "5/3"] = "5/2"
+    centre: Literal["closed", "exhaust", "pressure"] = "closed"
+    conductance: Q("flow_conductance", gt=0)
+    critical_pressure_ratio: Q("dimensionless", ge=0, lt=1) = 0.3
+    subsonic_index: Q("dimensionless", gt=0, le=1) = 0.5
+    laminar_ratio: Q("dimensionless", gt=0, lt=1) = 0.999
+    time_constant: Q("time", ge=0) = 0.005
+    delay: Q("time", ge=0) = 0.0
+    meter_out: MeterOutModel | None = None
+
+    @model_validator(mode="after")
+    def _check(self):
+        if self.laminar_ratio <= self.critical_pressure_ratio:
+            raise ValueError(f"laminar_ratio ({self.laminar_ratio:g}) must be larger than "
+                             f"critical_pressure_ratio ({self.critical_pressure_ratio:g})")
+        return self
+
+
+# -- controller -------------------------------------------------------------------------------
+Command = Literal["extend", "retract", "centre"]
+
+
+class StepModel(CaseModel):
+    """One PLC step: a valve command held for a duration."""
+
+    command: Command
+    duration: Q("time", gt=0)
+
+
+class CycleController(CaseModel):
+    """PLC cycle of valve commands, repeated until ``duration``."""
+
+    mode: Literal["cycle"] = "cycle"
+    duration: Q("time", gt=0)
+    steps: list[StepModel] = Field(min_length=1)
+    initial_command: Command = "retract"
+
+
+class PositionController(CaseModel):
+    """Prescribed piston position (friction test rig), the valve held at ``command``."""
+
+    mode: Literal["position"]
+    duration: Q("time", gt=0)
+    position: profile_type("length")
+    command: Command = "extend"
+
+
+Controller = Annotated[CycleController | PositionController, Field(discriminator="mode")]
+
+
+# -- seals ------------------------------------------------------------------------------------
+class AnalyticMapModel(CaseModel):
+    """Engineering estimate of F_N and b of an O-ring (see AnalyticContactMap).  ``modulus``
+    and ``thermal_expansion`` default to the catalogue values of ``elastomer``
+    (E = 6·(C10 + C01))."""
+
+    cord_diameter: Q("length", gt=0)
+    squeeze: Q("dimensionless", gt=0, lt=0.5)
+    elastomer: str = "NBR"
+    modulus: Q("pressure", gt=0) | None = None
+    thermal_expansion: Q("thermal_expansion", ge=0) | None = None
+    reference_temperature: Q("temperature", gt=0) = 293.15
+    sliding_diameter: Q("length", gt=0) | None = None
+    pressure_max: Q("pressure", gt=0) = 16e5
+    temperature_min: Q("temperature", gt=0) = 243.15
+    temperature_max: Q("temperature", gt=0) = 393.15
+
+
+class MapModel(CaseModel):
+    """Source of F_N and b: exactly one of ``file`` (a map.nc of ``sealsim structure map``),
+    ``structure_case`` (a structure case file: map built on demand and cached) or
+    ``analytic``."""
+
+    file: str | None = None
+    structure_case: str | None = None
+    analytic: AnalyticMapModel | None = None
+    squeeze: Q("dimensionless", gt=0, lt=1) | None = None
+    cache_dir: str | None = None
+
+    @model_validator(mode="after")
+    def _one_source(self):
+        given = [k for k in ("file", "structure_case", "analytic") if getattr(self, k) is not None]
+        if len(given) != 1:
+            raise ValueError("give exactly one of file = 'map.nc', structure_case = "
+                             "'seal.toml' or analytic = {...}" + (f" (got {', '.join(given)})"
+                                                                 if given else ""))
+        return self
+
+
+class SealModel(CaseModel):
+    """A seal: where it sits, its friction law and the source of its contact load."""
+
+    name: str = Field(min_length=1)
+    location: Literal["piston", "rod", "wiper"]
+    friction: LawParameters
+    map: MapModel | None = None
+    temperature: Q("temperature", gt=0) | None = None
+
+
+# -- numerics and output ----------------------------------------------------------------------
+class SolverModel(CaseModel):
+    """Time integration (scipy solve_ivp, implicit/stiff methods)."""
+
+    method: Literal["LSODA", "BDF", "Radau"] = "LSODA"
+    rtol: float = Field(1e-5, gt=0, le=1e-2)
+    max_step: Q("time", gt=0) = 0.05
+
+
+class OutputModel(CaseModel):
+    """What is written."""
+
+    sample_interval: Q("time", gt=0) = 1e-3
+
+
+class PneumaticCase(CaseModel):
+    """A pneumatic cylinder system case (see the module docstring)."""
+
+    title: str = ""
+    cylinder: CylinderModel
+    load: LoadModel = LoadModel()
+    air: AirModel
+    valve: ValveModel
+    controller: Controller
+    seals: list[SealModel] = []
+    initial_position: Q("length") | None = None
+    solver: SolverModel = SolverModel()
+    output: OutputModel = OutputModel()
+
+    @model_validator(mode="after")
+    def _check(self):
+        names = [s.name for s in self.seals]
+        dupes = sorted({n for n in names if names.count(n) > 1})
+        if dupes:
+            raise ValueError(f"seal names must be unique, repeated: {', '.join(dupes)}")
+        if self.valve.type == "5/2":
+            used = ({s.command for s in self.controller.steps} | {
+                self.controller.initial_command} if self.controller.mode == "cycle"
+                else {self.controller.command})
+            if "centre" in used:
+                raise ValueError("command 'centre' needs a 5/3 valve (valve.type = '5/3')")
+        if self.initial_position is not None and not (
+                0.0 <= self.initial_position <= self.cylinder.stroke):
+            raise ValueError(f"initial_position ({self.initial_position * 1e3:g} mm) must lie "
+                             f"within the stroke (0 ... {self.cylinder.stroke * 1e3:g} mm)")
+        if self.output.sample_interval > self.controller.duration:
+            raise ValueError("output.sample_interval must not exceed controller.duration")
+        return self
+
+
+def load_pneumatic_cases(data: dict[str, Any], source: str = "case") -> dict[str, PneumaticCase]:
+    """Validate case data with optional ``[variants.NAME]`` tables (units required)."""
+    return expand_variants(PneumaticCase, data, source)
+
+
+def load_pneumatic_case_file(path: str | Path) -> dict[str, PneumaticCase]:
+    """Read and validate a pneumatic case file; returns ``{variant: PneumaticCase}``."""
+    path = Path(path)
+    return load_pneumatic_cases(load_toml(path), f"pneumatic case {str(path)!r}")
+
+
+def body_temperature(case: PneumaticCase) -> float:
+    """Temperature of the cylinder body [K]: ``cylinder.temperature`` or ``air.temperature``."""
+    t = case.cylinder.temperature
+    return case.air.temperature if t is None else t
+
+
+# -- building the seals -----------------------------------------------------------------------
+_USES_LOAD = {"theta"}
+
+
+def _analytic_map(spec: AnalyticMapModel, diameter: float, where: str) -> AnalyticContactMap:
+    modulus, expansion = spec.modulus, spec.thermal_expansion
+    if modulus is None or expansion is None:
+        from sealsim.properties.elastomers import get_elastomer
+
+        try:
+            elastomer = get_elastomer(spec.elastomer)
+        except Exception as exc:  # unknown name: InputError or KeyError from the catalogue
+            raise InputError(f"{where}.analytic.elastomer: {exc}") from None
+        if modulus is None:
+            modulus = 6.0 * (elastomer.c10 + elastomer.c01)
+        if expansion is None:
+            expansion = elastomer.thermal_expansion
+    if spec.temperature_min >= spec.temperature_max:
+        raise InputError(f"{where}.analytic: temperature_min must be below temperature_max")
+    return AnalyticContactMap(
+        sliding_diameter=spec.sliding_diameter or diameter, cord_diameter=spec.cord_diameter,
+        squeeze=spec.squeeze, modulus=modulus, thermal_expansion=expansion,
+        reference_temperature=spec.reference_temperature, pressure_max=spec.pressure_max,
+        temperature_range=(spec.temperature_min, spec.temperature_max))
+
+
+def build_contact_map(spec: MapModel, diameter: float, base_dir: Path, where: str,
+                      progress=None):
+    """The contact map object of a seal's ``map`` table (paths relative to ``base_dir``)."""
+    if spec.analytic is not None:
+        return _analytic_map(spec.analytic, diameter, where)
+    if spec.file is not None:
+        path = Path(spec.file)
+        path = path if path.is_absolute() else base_dir / path
+        try:
+            return FEContactMap.from_file(path, squeeze=spec.squeeze)
+        except InputError as exc:
+            raise InputError(f"{where}.file: {exc}") from None
+    path = Path(spec.structure_case)
+    path = path if path.is_absolute() else base_dir / path
+    cache = None
+    if spec.cache_dir is not None:
+        cache = Path(spec.cache_dir)
+        cache = cache if cache.is_absolute() else base_dir / cache
+    try:
+        return build_or_load_fe_map(path, squeeze=spec.squeeze, cache_dir=cache,
+                                    progress=progress)
+    except InputError as exc:
+        raise InputError(f"{where}.structure_case: {exc}") from None
+
+
+def build_seals(case: PneumaticCase, base_dir: str | Path = ".", progress=None) -> list[Seal]:
+    """Seal objects of a case: friction law (one object per distinct parameter set, so seals
+    with the same law are evaluated together) and contact map."""
+    base_dir = Path(base_dir)
+    laws: dict[str, Any] = {}
+    seals = []
+    for k, spec in enumerate(case.seals):
+        where = f"seals[{k}] ({spec.name!r})"
+        key = repr(spec.friction.model_dump())
+        if key not in laws:
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always")     # e.g. LuGre passivity: kept as notes
+                laws[key] = (make_law(spec.friction), [str(w.message) for w in caught])
+        law, notes = laws[key]
+        diameter = case.cylinder.bore if spec.location == "piston" else case.cylinder.rod_diameter
+        contact_map = None
+        if spec.map is not None:
+            contact_map = build_contact_map(spec.map, diameter, base_dir, f"{where}.map",
+                                            progress)
+        elif law.name in _USES_LOAD:
+            raise InputError(f"{where}.map: the {law.name} law needs the normal force and "
+                             "contact width of the seal; give map = {analytic = {cord_diameter "
+                             "= '2.5 mm', squeeze = 0.12}} or map = {file = 'map.nc'}")
+        temperature = spec.temperature
+        if temperature is None:
+            temperature = case.cylinder.seal_temperature
+        if temperature is None:
+            temperature = body_temperature(case)
+        seals.append(Seal(spec.name, spec.location, law, contact_map, temperature, notes))
+    return seals

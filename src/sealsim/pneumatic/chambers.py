@@ -1,0 +1,306 @@
+r"""Cylinder chambers: mass and energy balance of an ideal gas with wall heat transfer.
+
+Each chamber is a uniform control volume of air (ideal gas, constant specific heats) whose
+volume changes with the piston.  sealsim integrates the chamber **mass m and internal energy
+U = m·c_v·T** (first law for an open system, Richer & Hurmuzlu 2000 [1]_)::
+
+    dm/dt = Σ G_in − Σ G_out
+    dU/dt = Σ c_p·T_up·G_in − c_p·T·Σ G_out − p·dV/dt + Q̇_wall
+    p = (γ − 1)·U/V,   T = U/(m·c_v),   Q̇_wall = h·A_w·(T_wall − T)
+
+Flows entering carry the enthalpy of their upstream node (c_p·T_supply, or c_p·T_ambient when
+air is sucked back from the exhaust); flows leaving carry the chamber's.  The same equations in
+pressure and temperature (the form of pneumatic_friction.md §3.2 b, used in the literature) are
+:func:`pressure_rate` and :func:`temperature_rate`.
+
+Why (m, U): mass and energy are then *linear* in the states, so a closed chamber conserves its
+mass exactly (dm/dt = 0 identically) and the energy bookkeeping of a run can be checked against
+the enthalpy, heat and work that crossed the boundary.  A closed adiabatic chamber gives
+dU = −p·dV with p = (γ − 1)U/V, i.e. U·V^(γ−1) = const and p·V^γ = const.
+
+**Wall heat transfer.**  Q̇ = h·A_w·(T_wall − T) with the wetted wall area A_w (barrel, end cap,
+piston face) and the wall at the temperature of the cylinder body (the barrel is a large heat
+sink on the time scale of a stroke).  The coefficient h is uncertain: the measured values of
+Carneiro & Almeida [2]_ could not be retrieved (pneumatic_friction.md §3.2, §7).  sealsim's default
+h = 30 W/(m²·K) is an engineering estimate [R]: natural convection of air in a closed vessel
+at 1 bar gives 5–10 W/(m²·K); at 6 bar (h grows about like ρ^(2/3) in turbulent natural
+convection) and with the jet of the inflow stirring the chamber, some tens of W/(m²·K) -- the
+order of magnitude used in pneumatic system models.  h = 0 gives adiabatic chambers.
+
+References
+----------
+.. [1] E. Richer, Y. Hurmuzlu, "A high performance pneumatic force actuator system: Part I --
+   nonlinear mathematical model", J. Dyn. Sys. Meas. Control 122(3), 416-425, 2000.
+.. [2] J. F. Carneiro, F. G. de Almeida, "Heat transfer evaluation of industrial pneumatic
+   cylinders", Proc. IMechE Part I: J. Systems and Control Engineering (≈ 2007) [M: title as
+   cited in pneumatic_friction.md §3.2; journal details and values not checked here].
+.. [3] pneumatic_friction.md §3.2 (chamber equations in p and T).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = [
+    "AIR_GAS_CONSTANT",
+    "AIR_HEAT_CAPACITY_RATIO",
+    "AIR_CP",
+    "AIR_CV",
+    "chamber_energy_rate",
+    "chamber_wall_area",
+    "gas_mass",
+    "gas_pressure",
+    "gas_temperature",
+    "internal_energy",
+    "pressure_rate",
+    "temperature_rate",
+    "wall_heat_flow",
+]
+
+#: Specific gas constant of dry air R [J/(kg·K)]
+AIR_GAS_CONSTANT = 287.058
+#: Heat capacity ratio of air γ [-]
+AIR_HEAT_CAPACITY_RATIO = 1.4
+#: Specific heat at constant volume c_v = R/(γ − 1) [J/(kg·K)]
+AIR_CV = AIR_GAS_CONSTANT / (AIR_HEAT_CAPACITY_RATIO - 1.0)
+#: Specific heat at constant pressure c_p = γ·R/(γ − 1) [J/(kg·K)]
+AIR_CP = AIR_HEAT_CAPACITY_RATIO * AIR_CV
+
+
+def gas_pressure(internal_energy, volume):
+    """Pressure of an ideal gas with constant specific heats, p = (γ − 1)·U/V.
+
+    Parameters
+    ----------
+    internal_energy : float or ndarray
+        Internal energy U [J] (zero at 0 K).
+    volume : float or ndarray
+        Volume V [m³], > 0.
+
+    Returns
+    -------
+    ndarray
+        Absolute pressure p [Pa].
+
+    Examples
+    --------
+    >>> float(gas_pressure(250.0, 1e-3))
+    100000.0
+    """
+    return (AIR_HEAT_CAPACITY_RATIO - 1.0) * internal_energy / volume
+
+
+def gas_temperature(mass, internal_energy):
+    """Temperature of the gas, T = U/(m·c_v).
+
+    Parameters
+    ----------
+    mass : float or ndarray
+        Gas mass m [kg], > 0.
+    internal_energy : float or ndarray
+        Internal energy U [J].
+
+    Returns
+    -------
+    ndarray
+        T [K].
+
+    Examples
+    --------
+    >>> round(float(gas_temperature(1e-3, 1e-3 * AIR_CV * 293.15)), 6)
+    293.15
+    """
+    return internal_energy / (mass * AIR_CV)
+
+
+def gas_mass(pressure, volume, temperature):
+    """Mass of an ideal gas, m = p·V/(R·T).
+
+    Parameters
+    ----------
+    pressure : float or ndarray
+        Absolute pressure [Pa].
+    volume : float or ndarray
+        Volume [m³].
+    temperature : float or ndarray
+        Temperature [K].
+
+    Returns
+    -------
+    ndarray
+        m [kg].
+
+    Examples
+    --------
+    >>> round(float(gas_mass(1e5, 1e-3, 293.15)) * 1e3, 4)   # one litre at 1 bar, 20 °C [g]
+    1.1883
+    """
+    return (np.asarray(pressure, dtype=float) * volume
+            / (AIR_GAS_CONSTANT * np.asarray(temperature, dtype=float)))
+
+
+def internal_energy(mass, temperature):
+    """Internal energy of the gas, U = m·c_v·T [J].
+
+    Examples
+    --------
+    >>> round(float(internal_energy(1.0, 300.0)))
+    215294
+    """
+    return np.asarray(mass, dtype=float) * AIR_CV * np.asarray(temperature, dtype=float)
+
+
+def wall_heat_flow(heat_transfer_coefficient, area, wall_temperature, gas_temperature):
+    """Heat flow from the wall into the gas, Q̇ = h·A_w·(T_wall − T) (Newton cooling).
+
+    Parameters
+    ----------
+    heat_transfer_coefficient : float or ndarray
+        h [W/(m²·K)], >= 0.
+    area : float or ndarray
+        Wetted wall area A_w [m²].
+    wall_temperature : float or ndarray
+        Wall temperature [K].
+    gas_temperature : float or ndarray
+        Gas temperature [K].
+
+    Returns
+    -------
+    ndarray
+        Q̇ [W] (positive: the gas is heated).
+
+    Examples
+    --------
+    >>> float(wall_heat_flow(30.0, 0.01, 293.15, 313.15))
+    -6.0
+    """
+    return heat_transfer_coefficient * area * (wall_temperature - gas_temperature)
+
+
+def chamber_wall_area(length, bore, face_area):
+    """Wetted wall area of a chamber: barrel π·D·l plus the two end faces.
+
+    Parameters
+    ----------
+    length : float or ndarray
+        Length of the air column l [m] (piston travel plus dead volume / area), >= 0.
+    bore : float
+        Bore D [m].
+    face_area : float or ndarray
+        Area of one end face [m²] (piston side; the cap or head face counted equal).
+
+    Returns
+    -------
+    ndarray
+        A_w [m²].
+
+    Examples
+    --------
+    >>> round(float(chamber_wall_area(0.1, 0.032, 8.04e-4)) * 1e4, 2)   # [cm²]
+    116.61
+    """
+    return np.pi * bore * length + 2.0 * face_area
+
+
+def chamber_energy_rate(enthalpy_in, enthalpy_out, pressure, volume_rate, heat_flow=0.0):
+    """First law for the chamber, dU/dt = H_in − H_out − p·dV/dt + Q̇.
+
+    Parameters
+    ----------
+    enthalpy_in : float or ndarray
+        Enthalpy carried in by the inflows Σ c_p·T_up·G_in [W].
+    enthalpy_out : float or ndarray
+        Enthalpy carried out, c_p·T·Σ G_out [W].
+    pressure : float or ndarray
+        Chamber pressure p [Pa].
+    volume_rate : float or ndarray
+        dV/dt [m³/s].
+    heat_flow : float or ndarray
+        Q̇ from the wall [W].
+
+    Returns
+    -------
+    ndarray
+        dU/dt [W].
+
+    Examples
+    --------
+    >>> float(chamber_energy_rate(0.0, 0.0, 5e5, 1e-4))   # expansion work 50 W
+    -50.0
+    """
+    return enthalpy_in - enthalpy_out - pressure * volume_rate + heat_flow
+
+
+def pressure_rate(pressure, volume, volume_rate, inflow, inflow_temperature, outflow,
+                  temperature, heat_flow=0.0):
+    """dp/dt of a chamber (energy equation in pressure form, pneumatic_friction.md §3.2 b).
+
+    .. math:: \\dot p = -\\gamma p \\frac{\\dot V}{V}
+              + \\frac{\\gamma R}{V}(T_{in} G_{in} - T G_{out})
+              + \\frac{\\gamma - 1}{V} \\dot Q
+
+    Parameters
+    ----------
+    pressure : float or ndarray
+        p [Pa].
+    volume, volume_rate : float or ndarray
+        V [m³], dV/dt [m³/s].
+    inflow, outflow : float or ndarray
+        Mass flows in and out [kg/s], >= 0.
+    inflow_temperature : float or ndarray
+        Temperature of the inflow [K].
+    temperature : float or ndarray
+        Chamber temperature T [K].
+    heat_flow : float or ndarray
+        Q̇ from the wall [W].
+
+    Returns
+    -------
+    ndarray
+        dp/dt [Pa/s].
+
+    References
+    ----------
+    Richer & Hurmuzlu (2000); a public Julia pneumatic cylinder script after Carneiro & Almeida
+    (pneumatic_friction.md §3.2 b).
+
+    Examples
+    --------
+    >>> float(pressure_rate(1e5, 1e-3, -1e-3, 0.0, 293.15, 0.0, 293.15))  # adiabatic: γ·p·|V̇|/V
+    140000.0
+    """
+    g = AIR_HEAT_CAPACITY_RATIO
+    p = np.asarray(pressure, dtype=float)
+    return (-g * p * volume_rate / volume
+            + g * AIR_GAS_CONSTANT / volume * (np.asarray(inflow_temperature) * inflow
+                                              - np.asarray(temperature) * outflow)
+            + (g - 1.0) / volume * heat_flow)
+
+
+def temperature_rate(pressure, volume, volume_rate, inflow, inflow_temperature, outflow,
+                     temperature, heat_flow=0.0):
+    """dT/dt of a chamber (energy equation in temperature form, pneumatic_friction.md §3.2 b).
+
+    .. math:: \\dot T = (1-\\gamma) T \\frac{\\dot V}{V}
+              + \\frac{R T}{p V}\\left[G_{in}(\\gamma T_{in} - T) - (\\gamma - 1) T G_{out}\\right]
+              + \\frac{(\\gamma - 1) T}{p V} \\dot Q
+
+    Parameters are those of :func:`pressure_rate`.
+
+    Returns
+    -------
+    ndarray
+        dT/dt [K/s].
+
+    Examples
+    --------
+    >>> float(temperature_rate(1e5, 1e-3, -1e-3, 0.0, 293.15, 0.0, 300.0))  # (γ−1)·T·|V̇|/V
+    120.0
+    """
+    g = AIR_HEAT_CAPACITY_RATIO
+    t = np.asarray(temperature, dtype=float)
+    pv = np.asarray(pressure, dtype=float) * volume
+    return ((1.0 - g) * t * volume_rate / volume
+            + AIR_GAS_CONSTANT * t / pv * (inflow * (g * np.asarray(inflow_temperature) - t)
+                                           - (g - 1.0) * t * outflow)
+            + (g - 1.0) * t / pv * heat_flow)

@@ -1,0 +1,514 @@
+r"""Contact maps of a seal: normal force F_N and contact width b over pressure × temperature.
+
+Seed 001 (Fig. 4, Fig. 9) feeds the Θ friction law of each seal with the normal force F_N and
+the contact width b taken from *characteristic diagrams* precomputed by FE.  Here a contact map
+is any object with
+
+* ``evaluate(pressure_difference, temperature) -> (normal_force, contact_width)`` -- vectorised,
+  SI (Pa, K → N, m), smooth in both arguments;
+* ``ranges`` -- ``{"pressure": (lo, hi), "temperature": (lo, hi)}`` [Pa], [K], the domain the
+  map is valid on (it is never extrapolated: callers clamp and report, or refuse);
+* ``describe()`` -- a JSON-friendly description.
+
+Three sources:
+
+* :class:`FEContactMap` -- the FE characteristic diagram of :mod:`sealsim.structure.maps`
+  (``map.nc`` written by ``sealsim structure map``), a C¹ Hermite interpolant;
+* :func:`build_or_load_fe_map` -- the same, computed on demand from a structure case file and
+  cached under a hash of the resolved case;
+* :class:`AnalyticContactMap` -- an engineering estimate for an O-ring when no FE map is given
+  (functions below, each with its source).
+
+The analytic estimate [R]: the cord of diameter d is squeezed by the fraction c between the
+counter surface and the groove bottom; Lindley's empirical load-compression law gives the force
+per unit circumference, Hertz's line contact (cylinder on a rigid flat) the contact width; a
+sealed pressure difference Δp is transmitted by the nearly incompressible rubber to the contact
+(the O-ring acts like a fluid: contact pressure = squeeze pressure + Δp over the width b);
+temperature raises the squeeze through the free thermal expansion of the cord (the gland is
+metal, its expansion is an order of magnitude smaller) and the rubbery modulus through entropy
+elasticity, E ∝ T.  Both make F_N rise with temperature, the trend of seed 001 (Fig. 8: the
+sealing force falls on cooling; Fig. 10: lower temperature, lower contact force).
+"""
+
+from __future__ import annotations
+
+import hashlib
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Protocol, runtime_checkable
+
+import numpy as np
+
+from sealsim.errors import InputError
+from sealsim.pneumatic._jit import jit
+
+__all__ = [
+    "AnalyticContactMap",
+    "ContactMap",
+    "analytic_loads",
+    "FEContactMap",
+    "build_or_load_fe_map",
+    "default_cache_dir",
+    "energised_force_per_length",
+    "hertz_contact_width",
+    "lindley_force_per_length",
+    "rubbery_modulus",
+    "thermal_squeeze",
+]
+
+
+@runtime_checkable
+class ContactMap(Protocol):
+    """What the pneumatic model needs from a contact map (see the module docstring)."""
+
+    ranges: dict[str, tuple[float, float]]
+
+    def evaluate(self, pressure_difference, temperature):
+        """(normal_force [N], contact_width [m]) at Δp [Pa] and T [K]."""
+
+    def describe(self) -> dict[str, Any]:
+        """A JSON-friendly description of the map."""
+
+
+# -- analytic estimate: pure functions --------------------------------------------------------
+def thermal_squeeze(squeeze, thermal_expansion, temperature, reference_temperature):
+    """Squeeze of an O-ring at temperature T after free thermal expansion of the cord.
+
+    The gland height h = d0·(1 − c0) stays (metal), the cord grows to d = d0·(1 + α·ΔT)::
+
+        c(T) = 1 − (1 − c0)/(1 + α·(T − T0))
+
+    Parameters
+    ----------
+    squeeze : float or ndarray
+        Squeeze c0 at the reference temperature [-] (1 − gland height / cord diameter).
+    thermal_expansion : float or ndarray
+        Linear thermal expansion coefficient α of the rubber [1/K] (NBR ≈ 1.9e-4).
+    temperature : float or ndarray
+        Temperature T [K].
+    reference_temperature : float or ndarray
+        Temperature T0 at which c0 holds (installation) [K].
+
+    Returns
+    -------
+    ndarray
+        c(T) [-].
+
+    Examples
+    --------
+    >>> round(float(thermal_squeeze(0.12, 1.9e-4, 328.15, 293.15)), 5)
+    0.12582
+    """
+    growth = 1.0 + thermal_expansion * (temperature - reference_temperature)
+    return 1.0 - (1.0 - squeeze) / growth
+
+
+def rubbery_modulus(modulus, temperature, reference_temperature):
+    """Equilibrium (rubbery) modulus at temperature T, E(T) = E0·T/T0 (entropy elasticity).
+
+    Valid on the rubbery plateau, well above the glass transition (Treloar 1975).  The
+    frequency-dependent modulus of :mod:`sealsim.properties.elastomers` falls with T between T_g
+    and ≈ 100 °C because of the viscoelastic transition; a seal's static preload relaxes to the
+    equilibrium modulus, which rises with T.
+
+    Parameters
+    ----------
+    modulus : float or ndarray
+        E0 [Pa] at T0.
+    temperature, reference_temperature : float or ndarray
+        T, T0 [K].
+
+    Returns
+    -------
+    ndarray
+        E(T) [Pa].
+
+    References
+    ----------
+    L. R. G. Treloar, The Physics of Rubber Elasticity, 3rd ed., Oxford 1975 (seed 001 ref.).
+
+    Examples
+    --------
+    >>> round(float(rubbery_modulus(8e6, 328.15, 293.15)) / 1e6, 4)
+    8.9551
+    """
+    return modulus * temperature / reference_temperature
+
+
+def lindley_force_per_length(squeeze, cord_diameter, modulus):
+    """Compression force of an O-ring cord per unit circumferential length (Lindley 1967).
+
+    .. math:: F' = E\\,d\\,(1.25\\,c^{1.5} + 50\\,c^{6})
+
+    Parameters
+    ----------
+    squeeze : float or ndarray
+        Fractional compression c [-] (0 … ≈ 0.4).
+    cord_diameter : float or ndarray
+        Cord (cross-section) diameter d [m].
+    modulus : float or ndarray
+        Young's modulus E [Pa] (≈ 6·(C10 + C01) for Mooney–Rivlin rubber).
+
+    Returns
+    -------
+    ndarray
+        F' [N/m].
+
+    References
+    ----------
+    P. B. Lindley, "Compression characteristics of laterally-unrestrained rubber O-rings",
+    J. Inst. Rubber Ind. 1, 209-213, 1967 [M: the widely quoted form, not re-checked].
+
+    Examples
+    --------
+    >>> round(float(lindley_force_per_length(0.12, 2.5e-3, 8e6)), 1)
+    1042.3
+    """
+    c = np.maximum(squeeze, 0.0)
+    return modulus * cord_diameter * (1.25 * c ** 1.5 + 50.0 * c ** 6)
+
+
+def hertz_contact_width(force_per_length, cord_diameter, modulus, poisson=0.5):
+    """Contact width b = 2a of a cylinder pressed on a rigid flat (Hertz line contact).
+
+    .. math:: a = \\sqrt{\\frac{4 F' R}{\\pi E^*}}, \\quad R = d/2, \\quad
+              E^* = \\frac{E}{1 - \\nu^2}
+
+    Parameters
+    ----------
+    force_per_length : float or ndarray
+        F' [N/m], >= 0.
+    cord_diameter : float or ndarray
+        d [m].
+    modulus : float or ndarray
+        E [Pa].
+    poisson : float
+        ν [-] (0.5: incompressible rubber).
+
+    Returns
+    -------
+    ndarray
+        b [m].
+
+    References
+    ----------
+    K. L. Johnson, Contact Mechanics, Cambridge 1985, §4.2 (also
+    :func:`sealsim.structure.analytic.hertz_line_contact`).  Hertz underestimates b at large
+    squeeze; FE maps (issue 5) replace this estimate.
+
+    Examples
+    --------
+    >>> round(float(hertz_contact_width(1042.3, 2.5e-3, 8e6)) * 1e3, 4)   # [mm]
+    0.7887
+    """
+    e_star = modulus / (1.0 - poisson ** 2)
+    f = np.maximum(force_per_length, 0.0)
+    return 2.0 * np.sqrt(4.0 * f * (0.5 * cord_diameter) / (np.pi * e_star))
+
+
+def energised_force_per_length(preload_per_length, pressure_difference, cord_diameter, modulus,
+                               poisson=0.5):
+    """Force per length of an O-ring energised by a sealed pressure difference.
+
+    The rubber transmits the pressure to the contact like a fluid (contact pressure = squeeze
+    pressure + Δp), over the Hertz width b(F') of the loaded contact::
+
+        F' = F'_0 + Δp·b(F'),   b(F') = k·sqrt(F'),   k = 2·sqrt(2·d/(π·E*))
+
+    solved in closed form: sqrt(F') = (k·Δp + sqrt(k²·Δp² + 4·F'_0))/2.  Smooth and increasing
+    in Δp, with dF'/dΔp → b at small Δp.
+
+    Parameters
+    ----------
+    preload_per_length : float or ndarray
+        F'_0 from the squeeze [N/m].
+    pressure_difference : float or ndarray
+        Δp across the seal [Pa], >= 0.
+    cord_diameter : float or ndarray
+        d [m].
+    modulus : float or ndarray
+        E [Pa].
+    poisson : float
+        ν [-].
+
+    Returns
+    -------
+    ndarray
+        F' [N/m].
+
+    References
+    ----------
+    "O-ring acts like a fluid" (contact stress = squeeze stress + system pressure):
+    Parker O-Ring Handbook ORD 5700, §1 [M]; Hertz width as in :func:`hertz_contact_width`.
+
+    Examples
+    --------
+    >>> round(float(energised_force_per_length(1042.3, 6e5, 2.5e-3, 8e6)), 1)
+    1635.0
+    """
+    e_star = modulus / (1.0 - poisson ** 2)
+    k = 2.0 * np.sqrt(2.0 * cord_diameter / (np.pi * e_star))
+    kdp = k * np.maximum(pressure_difference, 0.0)
+    root = 0.5 * (kdp + np.sqrt(kdp ** 2 + 4.0 * preload_per_length))
+    return root ** 2
+
+
+def analytic_loads(pressure_difference, preload_per_length, modulus, cord_diameter,
+                   sliding_diameter):
+    """F_N [N] and b [m] of an O-ring from its preload: :func:`energised_force_per_length`
+    and :func:`hertz_contact_width` on the circumference π·D.
+
+    Examples
+    --------
+    >>> [round(float(v), 6) for v in analytic_loads(0.0, 1000.0, 8e6, 2.5e-3, 0.032)]
+    [100.530965, 0.000773]
+    """
+    force = energised_force_per_length(preload_per_length, pressure_difference, cord_diameter,
+                                       modulus)
+    return (np.pi * sliding_diameter * force,
+            hertz_contact_width(force, cord_diameter, modulus))
+
+
+_analytic_loads = jit(analytic_loads,
+                      energised_force_per_length=jit(energised_force_per_length),
+                      hertz_contact_width=jit(hertz_contact_width))
+
+
+@dataclass(frozen=True)
+class AnalyticContactMap:
+    """Engineering estimate of F_N and b of an O-ring seal (no FE map needed) [R].
+
+    .. math::
+        c(T) &= 1 - (1 - c_0)/(1 + \\alpha (T - T_0)), \\qquad E(T) = E_0 T/T_0 \\\\
+        F'_0 &= E(T)\\,d\\,(1.25 c^{1.5} + 50 c^6) \\quad \\text{(Lindley 1967)} \\\\
+        F' &= F'_0 + \\Delta p\\, b(F'), \\qquad b = 2\\sqrt{2 F' d/(\\pi E^*)}
+              \\quad \\text{(Hertz)} \\\\
+        F_N &= \\pi D F', \\qquad b
+
+    See :func:`thermal_squeeze`, :func:`rubbery_modulus`, :func:`lindley_force_per_length`,
+    :func:`energised_force_per_length`, :func:`hertz_contact_width`.  F_N rises with Δp and
+    with T (seed 001's trend).  Typical numbers: d = 2.5 mm, c0 = 12 %, E0 = 8 MPa (NBR of the
+    catalogue, 6·(C10 + C01)) on D = 32 mm give F_N ≈ 105 N and b ≈ 0.8 mm unpressurised,
+    +57 % F_N at 6 bar, +14 % from 25 to 55 °C.
+
+    Parameters
+    ----------
+    sliding_diameter : float
+        Diameter D of the sliding surface [m] (bore for a piston seal, rod for a rod seal).
+    cord_diameter : float
+        d [m].
+    squeeze : float
+        c0 at ``reference_temperature`` [-].
+    modulus : float
+        E0 [Pa] at ``reference_temperature``.
+    thermal_expansion : float
+        α [1/K].
+    reference_temperature : float
+        T0 [K] (installation).
+    pressure_max : float
+        Largest Δp [Pa] the estimate is used for.
+    temperature_range : tuple of float
+        (T_min, T_max) [K] the estimate is used for (rubbery state).
+
+    Examples
+    --------
+    >>> m = AnalyticContactMap(0.032, 2.5e-3, 0.12, 8e6, 1.9e-4, 293.15)
+    >>> fn, b = m.evaluate([0.0, 6e5], 298.15)
+    >>> fn.round(1), (b * 1e3).round(3)
+    (array([107.7, 167.3]), array([0.793, 0.988]))
+    """
+
+    sliding_diameter: float
+    cord_diameter: float
+    squeeze: float
+    modulus: float
+    thermal_expansion: float
+    reference_temperature: float = 293.15
+    pressure_max: float = 16e5
+    temperature_range: tuple[float, float] = (243.15, 393.15)
+
+    @property
+    def ranges(self) -> dict[str, tuple[float, float]]:
+        return {"pressure": (0.0, self.pressure_max), "temperature": self.temperature_range}
+
+    def _preload(self, temperature):
+        """(F'_0 [N/m], E [Pa]) at T: the temperature-dependent part."""
+        squeeze = thermal_squeeze(self.squeeze, self.thermal_expansion, temperature,
+                                  self.reference_temperature)
+        modulus = rubbery_modulus(self.modulus, temperature, self.reference_temperature)
+        return lindley_force_per_length(squeeze, self.cord_diameter, modulus), modulus
+
+    def evaluate(self, pressure_difference, temperature):
+        """(F_N [N], b [m]) at Δp [Pa] and T [K] (vectorised)."""
+        if np.ndim(pressure_difference) > 0:
+            pressure_difference = np.asarray(pressure_difference, dtype=float)
+        if np.ndim(temperature) == 0:     # a seal's temperature is constant during a run
+            cache = self.__dict__.setdefault("_cache", {})
+            key = float(temperature)
+            if key not in cache:
+                cache[key] = self._preload(key)
+            preload, modulus = cache[key]
+        else:
+            preload, modulus = self._preload(np.asarray(temperature, dtype=float))
+        return _analytic_loads(pressure_difference, preload, modulus, self.cord_diameter,
+                               self.sliding_diameter)
+
+    def loads_function(self, temperature: float):
+        """``f(Δp) -> (F_N, b)`` at a fixed temperature T [K] (the fast path of a seal whose
+        temperature does not change during a run)."""
+        preload, modulus = self._preload(float(temperature))
+        d, diameter = self.cord_diameter, self.sliding_diameter
+
+        def loads(pressure_difference):
+            return _analytic_loads(pressure_difference, preload, modulus, d, diameter)
+        return loads
+
+    def describe(self) -> dict[str, Any]:
+        return {"source": "analytic (Lindley + Hertz + pressure energisation) [R]",
+                "sliding_diameter_m": self.sliding_diameter,
+                "cord_diameter_m": self.cord_diameter, "squeeze": self.squeeze,
+                "modulus_Pa": self.modulus, "thermal_expansion_per_K": self.thermal_expansion,
+                "reference_temperature_K": self.reference_temperature}
+
+
+# -- FE characteristic maps (issue 5) ---------------------------------------------------------
+@dataclass
+class FEContactMap:
+    """Adapter of an FE characteristic map (:class:`sealsim.structure.maps.SealMap`).
+
+    The map is interpolated with a C¹ Hermite scheme (no kinks for the ODE solver).  Its
+    pressure axis is the gauge pressure on the upstream side of the seal with the atmosphere
+    downstream; the pneumatic model evaluates it at the pressure *difference* across the seal
+    (for a piston seal with both sides pressurised the mean pressure is neglected: a nearly
+    incompressible rubber ring's contact forces depend on the difference).  Values outside the
+    map are never extrapolated: :meth:`evaluate` clamps to the grid (the simulation checks the
+    ranges before it runs and reports clamped pressures).
+
+    Parameters
+    ----------
+    seal_map : sealsim.structure.maps.SealMap
+        The map (loaded with ``extrapolate="clip"``).
+    squeeze : float, optional
+        Squeeze [-] when the map has several squeezes.
+    source : str
+        Where the map came from (file path), for :meth:`describe`.
+    """
+
+    seal_map: Any
+    squeeze: float | None = None
+    source: str = ""
+    ranges: dict[str, tuple[float, float]] = field(init=False)
+
+    def __post_init__(self):
+        r = self.seal_map.ranges
+        self.ranges = {"pressure": r["pressure"], "temperature": r["temperature"]}
+        lo, hi = r["squeeze"]
+        if hi > lo and self.squeeze is None:
+            raise InputError(f"map {self.source!r} has squeezes {lo:g} … {hi:g}: give "
+                             "map.squeeze for this seal")
+        if self.squeeze is not None and not (lo - 1e-9 <= self.squeeze <= hi + 1e-9):
+            raise InputError(f"map.squeeze = {self.squeeze:g} is outside the map {self.source!r}"
+                             f" ({lo:g} … {hi:g})")
+
+    def evaluate(self, pressure_difference, temperature):
+        """(F_N [N], b [m]); scalars use the map's fast scalar path."""
+        (plo, phi), (tlo, thi) = self.ranges["pressure"], self.ranges["temperature"]
+        if np.size(pressure_difference) == 1 and np.size(temperature) == 1:
+            p = min(max(float(np.ravel(pressure_difference)[0]), plo), phi)
+            t = min(max(float(np.ravel(temperature)[0]), tlo), thi)
+            fn, b = self.seal_map.evaluate(p, t, self.squeeze)
+            if np.ndim(pressure_difference) == 0:
+                return fn, b
+            shape = np.shape(pressure_difference)
+            return np.full(shape, fn), np.full(shape, b)
+        p = np.clip(pressure_difference, plo, phi)
+        t = np.clip(temperature, tlo, thi)
+        fn, b = self.seal_map.evaluate(p, t, self.squeeze)
+        return np.asarray(fn, dtype=float), np.asarray(b, dtype=float)
+
+    def loads_function(self, temperature: float):
+        """``f(Δp) -> (F_N, b)`` at a fixed temperature T [K]."""
+        return lambda pressure_difference: self.evaluate(pressure_difference, temperature)
+
+    def describe(self) -> dict[str, Any]:
+        return {"source": f"FE characteristic map {self.source}", "squeeze": self.squeeze,
+                "pressure_range_Pa": list(self.ranges["pressure"]),
+                "temperature_range_K": list(self.ranges["temperature"])}
+
+    @classmethod
+    def from_file(cls, path: str | Path, squeeze: float | None = None) -> FEContactMap:
+        """Read a ``map.nc`` written by ``sealsim structure map``."""
+        from sealsim.structure.maps import load_map
+
+        return cls(load_map(path, extrapolate="clip"), squeeze=squeeze, source=str(path))
+
+
+def default_cache_dir() -> Path:
+    """Folder of the map cache: ``$SEALSIM_CACHE`` or ``$XDG_CACHE_HOME/sealsim`` or
+    ``~/.cache/sealsim``, sub-folder ``maps``."""
+    root = os.environ.get("SEALSIM_CACHE")
+    if root:
+        return Path(root) / "maps"
+    xdg = os.environ.get("XDG_CACHE_HOME")
+    return (Path(xdg) if xdg else Path.home() / ".cache") / "sealsim" / "maps"
+
+
+def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = None,
+                         cache_dir: str | Path | None = None, progress=None,
+                         workers: int | None = None) -> FEContactMap:
+    """FE map of a structure case file, built on demand and cached.
+
+    The case (with a ``[map]`` table, no variants) is validated and resolved (all defaults
+    filled in); the SHA-256 of the resolved TOML names the cache file
+    ``<cache_dir>/<stem>-<hash16>.nc``.  A cached map is read; otherwise
+    :func:`sealsim.structure.maps.compute_map` runs (FE, minutes) and its result is written
+    atomically to the cache.  Any change of the structure case gives a new map.
+
+    Parameters
+    ----------
+    structure_case : path
+        Structure case file (TOML), e.g. ``examples/structure/oring_map.toml``.
+    squeeze : float, optional
+        Squeeze [-] when the map has several.
+    cache_dir : path, optional
+        Cache folder (default :func:`default_cache_dir`).
+    progress : callable, optional
+        ``progress(done, total)`` while the map is computed.
+    workers : int, optional
+        Processes for the FE map (default: the case's ``map.workers``).
+
+    Returns
+    -------
+    FEContactMap
+    """
+    from sealsim.cases import dump_case_toml, expand_variants, load_toml
+    from sealsim.output import atomic_write_bytes
+
+    try:
+        from sealsim.structure.case import StructureCase
+        from sealsim.structure.maps import compute_map
+    except ImportError as exc:  # pragma: no cover - structure package missing
+        raise InputError(f"building FE maps needs sealsim.structure ({exc})") from None
+    path = Path(structure_case)
+    cases = expand_variants(StructureCase, load_toml(path), f"structure case {str(path)!r}")
+    if len(cases) != 1:
+        raise InputError(f"structure case {str(path)!r} has variants; a seal map needs one case")
+    case = next(iter(cases.values()))
+    if case.map is None:
+        raise InputError(f"structure case {str(path)!r} has no [map] table (map.pressure and "
+                         "map.temperature grids) to build the seal's characteristic map from")
+    text = dump_case_toml(case, header="resolved sealsim structure case (all defaults filled "
+                                       "in)")
+    digest = hashlib.sha256(text.encode("utf-8")).hexdigest()[:16]
+    folder = Path(cache_dir) if cache_dir is not None else default_cache_dir()
+    target = folder / f"{path.stem}-{digest}.nc"
+    if not target.is_file():
+        try:
+            folder.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            raise InputError(f"cannot create the map cache folder {str(folder)!r}: {exc}") \
+                from None
+        dataset = compute_map(case, workers=workers, progress=progress, case_text=text)
+        atomic_write_bytes(target, dataset.to_netcdf())
+    return FEContactMap.from_file(target, squeeze=squeeze)

@@ -1,0 +1,136 @@
+"""`sealsim pneumatic run`: every example through the CLI (shortened), the result folder,
+errors with exit status 2, reproducibility of the resolved case."""
+
+from __future__ import annotations
+
+import json
+import tomllib
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+import tomli_w
+from typer.testing import CliRunner
+
+from sealsim.cases import expand_variants, load_toml
+from sealsim.cli.pneumatic import pneumatic_app
+
+EXAMPLE_DIR = Path(__file__).resolve().parents[1] / "examples" / "pneumatic"
+#: pneumatic cases (rod_seal_12.toml is the structure case cylinder_32_fe.toml builds its map from)
+EXAMPLES = sorted(p for p in EXAMPLE_DIR.glob("*.toml") if p.name != "rod_seal_12.toml")
+RUNNER = CliRunner()
+SUMMARY_KEYS = {"extend_time_s", "retract_time_s", "mean_friction_N", "peak_friction_N",
+                "air_consumption_NL", "mass_balance_rel_error", "energy_balance_rel_error"}
+
+
+def shortened(path: Path, tmp_path: Path, cap: float = 1.2) -> Path:
+    """The example with its simulated time cut to ``cap`` seconds; an FE map built on demand
+    comes from a coarse 2 x 2 version of its structure case, cached in ``tmp_path``."""
+    data = tomllib.loads(path.read_text())
+    ctrl = data["controller"]
+    seconds = float(ctrl["duration"].split()[0])
+    ctrl["duration"] = f"{min(seconds, cap)} s"
+    for seal in data.get("seals", []):
+        structure = seal.get("map", {}).get("structure_case")
+        if structure:
+            spec = tomllib.loads((path.parent / structure).read_text())
+            spec["mesh"] = {"level": "coarse"}
+            spec["map"].update(pressure=["0 bar", "8 bar"], temperature=["20 degC", "60 degC"],
+                               squeeze_increments=4, temperature_increments=1, workers=1)
+            (tmp_path / structure).write_text(tomli_w.dumps(spec))
+            seal["map"]["cache_dir"] = str(tmp_path / "cache")
+    out = tmp_path / path.name
+    out.write_text(tomli_w.dumps(data))
+    return out
+
+
+def run(*args):
+    return RUNNER.invoke(pneumatic_app, ["run", *map(str, args)])
+
+
+@pytest.mark.parametrize("example", EXAMPLES, ids=lambda p: p.stem)
+def test_example_runs_through_the_cli(example, tmp_path):
+    case = shortened(example, tmp_path)
+    out = tmp_path / "out"
+    result = run(case, "--out", out, "--quiet")
+    assert result.exit_code == 0, result.output
+    names = {p.name for p in out.iterdir()}
+    assert {"timeseries.csv", "summary.json", "case_resolved.toml", "pressure_stroke.png",
+            "friction_stroke.png", "friction_velocity.png"} <= names
+    variants = list(tomllib.loads(example.read_text()).get("variants", {"base": {}}))
+    assert {f"timeseries_{v}.png" for v in variants} <= names
+    summary = json.loads((out / "summary.json").read_text())
+    assert list(summary["variants"]) == variants
+    for s in summary["variants"].values():
+        assert SUMMARY_KEYS <= set(s)
+        assert s["mass_balance_rel_error"] < 1e-12
+        assert s["energy_balance_rel_error"] < 1e-3
+        assert s["peak_friction_N"] > 0
+    table = pd.read_csv(out / "timeseries.csv")
+    assert list(table.columns[:8]) == ["variant", "time_s", "x_m", "v_m_s", "p1_bar", "p2_bar",
+                                       "T1_C", "T2_C"]
+    assert "valve_command" in table and "F_friction_N" in table
+    for seal in tomllib.loads(example.read_text())["seals"]:
+        assert f"F_{seal['name']}_N" in table
+        if seal["friction"]["law"] == "theta":
+            assert f"F_N_{seal['name']}_N" in table and f"theta_{seal['name']}" in table
+    assert set(table["variant"]) == set(variants)
+    assert np.all(np.isfinite(table.select_dtypes("number").to_numpy()))
+    for png in out.glob("*.png"):
+        assert png.stat().st_size > 10_000
+    # the resolved case reproduces the variants (all defaults written out)
+    resolved = load_toml(out / "case_resolved.toml")
+    from sealsim.pneumatic.case import PneumaticCase
+    again = expand_variants(PneumaticCase, resolved)
+    original = expand_variants(PneumaticCase, load_toml(case))
+    assert {k: v.model_dump() for k, v in again.items()} == \
+        {k: v.model_dump() for k, v in original.items()}
+
+
+def test_existing_folder_and_force(tmp_path):
+    case = shortened(EXAMPLE_DIR / "friction_rig.toml", tmp_path, cap=0.2)
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "old.txt").write_text("keep me")
+    refused = run(case, "--out", out, "-q")
+    assert refused.exit_code == 2 and "--force" in refused.output
+    assert (out / "old.txt").read_text() == "keep me"
+    forced = run(case, "--out", out, "-q", "--force")
+    assert forced.exit_code == 0, forced.output
+    assert not (out / "old.txt").exists() and (out / "summary.json").is_file()
+
+
+@pytest.mark.parametrize("edit, message", [
+    (lambda d: d["cylinder"].update(bore="32"), "cylinder.bore: '32' has no unit"),
+    (lambda d: d["seals"][0]["friction"].update(tau="-2 s"), "seals.0.friction.tau"),
+    (lambda d: d["seals"][0].pop("map"), "the theta law needs"),
+    (lambda d: d["valve"].update(type="4/2"), "valve.type"),
+    (lambda d: d.update(speed="fast"), "speed: unknown field"),
+])
+def test_bad_case_exits_2_with_one_message(edit, message, tmp_path):
+    data = tomllib.loads((EXAMPLE_DIR / "cylinder_32.toml").read_text())
+    edit(data)
+    case = tmp_path / "bad.toml"
+    case.write_text(tomli_w.dumps(data))
+    result = run(case, "--out", tmp_path / "out", "-q")
+    assert result.exit_code == 2, result.output
+    assert message in " ".join(result.output.split())
+    assert "Traceback" not in result.output
+    assert not (tmp_path / "out").exists()
+
+
+def test_missing_case_file_exits_2(tmp_path):
+    result = run(tmp_path / "nope.toml", "--out", tmp_path / "out")
+    assert result.exit_code == 2 and "does not exist" in " ".join(result.output.split())
+
+
+def test_structure_case_of_the_fe_example_is_valid():
+    # rod_seal_12.toml is read by cylinder_32_fe.toml to build its map: it must be a valid
+    # structure case with a [map] grid covering the example (6 bar supply, 25 and 55 °C)
+    from sealsim.structure.case import StructureCase
+
+    case = expand_variants(StructureCase, load_toml(EXAMPLE_DIR / "rod_seal_12.toml"))["base"]
+    assert case.map is not None
+    assert max(case.map.pressure) >= 6e5 + 1e5
+    assert min(case.map.temperature) <= 298.15 and max(case.map.temperature) >= 328.15

@@ -1,0 +1,152 @@
+"""Contact maps of the seals: the analytic O-ring estimate and the FE characteristic maps of the
+structure package (read from map.nc, built on demand and cached)."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from sealsim.cases import apply_overrides, load_toml, validate_case
+from sealsim.errors import InputError
+from sealsim.pneumatic import PneumaticCase, simulate
+from sealsim.pneumatic import contact_maps as cm
+from sealsim.structure.analytic import hertz_line_contact
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples" / "pneumatic"
+
+TINY_STRUCTURE_CASE = """
+title = "tiny rod seal map for tests"
+[seal]
+cord_diameter = "2 mm"
+inner_diameter = "12 mm"
+[gland]
+arrangement = "rod"
+sealing_diameter = "12 mm"
+groove_width = "2.7 mm"
+[material]
+elastomer = "NBR"
+[mesh]
+level = "coarse"
+[load]
+installation_temperature = "20 degC"
+squeeze = [0.12]
+[map]
+pressure = ["0 bar", "8 bar"]
+temperature = ["20 degC", "60 degC"]
+squeeze_increments = 4
+temperature_increments = 1
+workers = 1
+"""
+
+
+def test_analytic_pieces_against_their_references():
+    # Hertz line contact (Johnson 1985 §4.2) as implemented in sealsim.structure.analytic:
+    # b = 2a, same numbers to round-off
+    a, _ = hertz_line_contact(1200.0, 1e-3, 8e6)
+    assert float(cm.hertz_contact_width(1200.0, 2e-3, 8e6)) == pytest.approx(2 * a, rel=1e-14)
+    # Lindley (1967): F' = E·d·(1.25·c^1.5 + 50·c^6)
+    assert float(cm.lindley_force_per_length(0.2, 2e-3, 8e6)) == pytest.approx(
+        8e6 * 2e-3 * (1.25 * 0.2 ** 1.5 + 50 * 0.2 ** 6), rel=1e-14)
+    # the energised force solves F' = F'_0 + Δp·b(F') (fixed point, to round-off)
+    f0, dp = 900.0, np.array([0.0, 3e5, 1e6])
+    f = cm.energised_force_per_length(f0, dp, 2e-3, 8e6)
+    assert np.allclose(f, f0 + dp * cm.hertz_contact_width(f, 2e-3, 8e6), rtol=1e-12)
+    # free thermal expansion: at ΔT = 0 the squeeze is c0; the cord grows by α·ΔT
+    assert float(cm.thermal_squeeze(0.12, 1.9e-4, 293.15, 293.15)) == pytest.approx(0.12)
+    c = float(cm.thermal_squeeze(0.12, 1.9e-4, 353.15, 293.15))
+    assert (1 - 0.12) / (1 - c) == pytest.approx(1 + 1.9e-4 * 60, rel=1e-14)
+
+
+def test_analytic_map_rises_with_pressure_and_temperature():
+    # seed 001: pressure energises the seal; heating raises the contact force (Fig. 8: it falls
+    # on cooling).  Monotone and smooth over the whole grid.
+    m = cm.AnalyticContactMap(0.032, 2e-3, 0.10, 7.98e6, 1.9e-4, 293.15)
+    dp, temps = np.meshgrid(np.linspace(0.0, 10e5, 41), np.linspace(263.15, 373.15, 12),
+                            indexing="ij")
+    fn, b = (v.reshape(dp.shape) for v in m.evaluate(dp.ravel(), temps.ravel()))
+    assert np.all(np.diff(fn, axis=0) > 0) and np.all(np.diff(fn, axis=1) > 0)
+    assert np.all(np.diff(b, axis=0) > 0)
+    # the numbers of the docstring / cylinder_32 piston seal: ≈ 64 N unpressurised at 20 °C
+    fn0, b0 = m.evaluate(0.0, 293.15)
+    assert fn0 == pytest.approx(math.pi * 0.032 * 7.98e6 * 2e-3 * (1.25 * 0.1 ** 1.5
+                                                                    + 50 * 0.1 ** 6), rel=1e-12)
+    assert 0.3e-3 < b0 < 1.0e-3
+    # the fast path at a fixed temperature gives the same numbers
+    assert m.loads_function(320.0)(4e5) == pytest.approx(m.evaluate(4e5, 320.0), rel=1e-14)
+
+
+@pytest.fixture(scope="module")
+def tiny_structure_case(tmp_path_factory):
+    path = tmp_path_factory.mktemp("structure") / "tiny_rod_seal.toml"
+    path.write_text(TINY_STRUCTURE_CASE)
+    return path
+
+
+@pytest.fixture(scope="module")
+def fe_cache(tiny_structure_case, tmp_path_factory):
+    """A cache folder in which the tiny FE map was built on demand (FElupe, ≈ 1.5 s)."""
+    cache = tmp_path_factory.mktemp("cache")
+    cm.build_or_load_fe_map(tiny_structure_case, cache_dir=cache)
+    return cache
+
+
+def test_fe_map_is_built_on_demand_and_cached(tiny_structure_case, fe_cache, tmp_path,
+                                              monkeypatch):
+    cache = fe_cache
+    m = cm.build_or_load_fe_map(tiny_structure_case, cache_dir=cache)
+    files = list(cache.glob("tiny_rod_seal-*.nc"))
+    assert len(files) == 1
+    # FE contact force of the 12 x 2 O-ring on a 12 mm rod: energised by pressure; the same
+    # order as the analytic estimate for that seal (rod seal of cylinder_32: 31 N at 0 bar)
+    fn0, b0 = m.evaluate(0.0, 293.15)
+    fn8, _ = m.evaluate(8e5, 293.15)
+    assert 15.0 < fn0 < 80.0 and fn8 > fn0 and 0.2e-3 < b0 < 1.5e-3
+    # the adapter evaluates the structure package's map object (same numbers)
+    from sealsim.structure.maps import load_map
+    ref = load_map(files[0])
+    assert m.evaluate(3e5, 310.0) == pytest.approx(ref.evaluate(3e5, 310.0), rel=1e-14)
+    # second time: read from the cache, no FE
+    monkeypatch.setattr("sealsim.structure.maps.compute_map",
+                        lambda *a, **k: pytest.fail("the cached map was recomputed"))
+    again = cm.build_or_load_fe_map(tiny_structure_case, cache_dir=cache)
+    assert again.evaluate(3e5, 310.0) == m.evaluate(3e5, 310.0)
+    assert len(list(cache.glob("*.nc"))) == 1
+    # a changed structure case is a different map (new hash)
+    changed = tmp_path / "tiny_rod_seal.toml"
+    changed.write_text(TINY_STRUCTURE_CASE.replace('squeeze = [0.12]', 'squeeze = [0.13]'))
+    with pytest.raises(pytest.fail.Exception, match="recomputed"):
+        cm.build_or_load_fe_map(changed, cache_dir=cache)
+
+
+def test_fe_map_input_errors(tmp_path):
+    with pytest.raises(InputError, match="does not exist"):
+        cm.FEContactMap.from_file(tmp_path / "missing.nc")
+    no_map = tmp_path / "no_map.toml"
+    no_map.write_text(TINY_STRUCTURE_CASE.split("[map]")[0])
+    with pytest.raises(InputError, match=r"no \[map\] table"):
+        cm.build_or_load_fe_map(no_map, cache_dir=tmp_path)
+
+
+def test_cylinder_with_an_fe_map_file(fe_cache):
+    # the rod seal reads a map.nc; F_N in the results is the map at the logged Δp, T (the
+    # cylinder runs 6 bar: inside the 0...8 bar grid), and the seal temperature outside the
+    # map's 20...60 °C is refused
+    map_file = next(fe_cache.glob("*.nc"))
+    data = load_toml(EXAMPLES / "cylinder_32.toml")
+    data = apply_overrides(data, data.pop("variants")["T25C"])
+    data["seals"][1]["map"] = {"file": str(map_file)}
+    data["controller"]["duration"] = "1 s"
+    case = validate_case(PneumaticCase, data)
+    result = simulate(case)
+    f = result.timeseries
+    fe = cm.FEContactMap.from_file(map_file)
+    expected, _ = fe.evaluate(f["dp_rod_bar"].to_numpy() * 1e5, 298.15)
+    assert np.allclose(f["F_N_rod_N"], expected, rtol=1e-12)
+    assert result.summary()["extend_time_s"] is not None
+    hot = validate_case(PneumaticCase, apply_overrides(data, {
+        "cylinder": {"seal_temperature": "80 degC"}}))
+    with pytest.raises(InputError, match=r"seals\[1\] \('rod'\).*80 degC is outside"):
+        simulate(hot)
