@@ -57,6 +57,16 @@ class PassivityWarning(FrictionWarning):
     """The parameters violate a passivity (dissipativity) condition of the law."""
 
 
+def require_static_at_least_coulomb(static_force: float, coulomb_force: float) -> None:
+    """Parameter check shared by the laws with a Stribeck curve: F_S ≥ F_C.
+
+    The Stribeck curve falls from the break-away level F_S to the Coulomb level F_C [N].
+    """
+    if static_force < coulomb_force:
+        raise ValueError(f"static_force ({static_force:g} N) must be >= coulomb_force "
+                         f"({coulomb_force:g} N)")
+
+
 def validate_parameters(model, values: dict[str, Any], source: str):
     """Build a parameter model from Python values (SI numbers allowed) or one InputError."""
     from sealsim.cases import validate_case

@@ -47,6 +47,7 @@ from sealsim.friction.base import (
     Partials,
     as_state,
     as_velocity,
+    require_static_at_least_coulomb,
     validate_parameters,
 )
 from sealsim.friction.stribeck import stribeck_level, stribeck_level_derivative
@@ -162,9 +163,7 @@ class GMSParameters(LawParameters):
 
     @model_validator(mode="after")
     def _check(self):
-        if self.static_force < self.coulomb_force:
-            raise ValueError(f"static_force ({self.static_force:g} N) must be >= coulomb_force "
-                             f"({self.coulomb_force:g} N)")
+        require_static_at_least_coulomb(self.static_force, self.coulomb_force)
         if self.fractions is not None:
             fr = np.asarray(self.fractions, dtype=float)
             if fr.size != self.n_elements or np.any(~np.isfinite(fr)) or np.any(fr <= 0) or abs(

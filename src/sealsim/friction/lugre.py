@@ -42,6 +42,7 @@ from sealsim.friction.base import (
     Partials,
     as_state,
     as_velocity,
+    require_static_at_least_coulomb,
     sign,
     validate_parameters,
     warn_passivity,
@@ -272,9 +273,7 @@ class LuGreParameters(LawParameters):
 
     @model_validator(mode="after")
     def _static_above_coulomb(self):
-        if self.static_force < self.coulomb_force:
-            raise ValueError(f"static_force ({self.static_force:g} N) must be >= coulomb_force "
-                             f"({self.coulomb_force:g} N)")
+        require_static_at_least_coulomb(self.static_force, self.coulomb_force)
         return self
 
 
