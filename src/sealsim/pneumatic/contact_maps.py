@@ -42,6 +42,7 @@ import numpy as np
 
 from sealsim.errors import InputError
 from sealsim.pneumatic._jit import jit
+from sealsim.tribology.contact import hertz_line_half_width
 
 __all__ = [
     "AnalyticContactMap",
@@ -193,8 +194,8 @@ def hertz_contact_width(force_per_length, cord_diameter, modulus, poisson=0.5):
 
     References
     ----------
-    K. L. Johnson, Contact Mechanics, Cambridge 1985, §4.2 (also
-    :func:`sealsim.structure.analytic.hertz_line_contact`).  Hertz underestimates b at large
+    K. L. Johnson, Contact Mechanics, Cambridge 1985, §4.2, via
+    :func:`sealsim.tribology.contact.hertz_line_half_width`.  Hertz underestimates b at large
     squeeze; FE maps (issue 5) replace this estimate.
 
     Examples
@@ -202,9 +203,8 @@ def hertz_contact_width(force_per_length, cord_diameter, modulus, poisson=0.5):
     >>> round(float(hertz_contact_width(1042.3, 2.5e-3, 8e6)) * 1e3, 4)   # [mm]
     0.7887
     """
-    e_star = modulus / (1.0 - poisson ** 2)
-    f = np.maximum(force_per_length, 0.0)
-    return 2.0 * np.sqrt(4.0 * f * (0.5 * cord_diameter) / (np.pi * e_star))
+    return 2.0 * hertz_line_half_width(np.maximum(force_per_length, 0.0), 0.5 * cord_diameter,
+                                       modulus, poisson)
 
 
 def energised_force_per_length(preload_per_length, pressure_difference, cord_diameter, modulus,
@@ -272,7 +272,9 @@ def analytic_loads(pressure_difference, preload_per_length, modulus, cord_diamet
 
 _analytic_loads = jit(analytic_loads,
                       energised_force_per_length=jit(energised_force_per_length),
-                      hertz_contact_width=jit(hertz_contact_width))
+                      hertz_contact_width=jit(
+                          hertz_contact_width,
+                          hertz_line_half_width=jit(hertz_line_half_width)))
 
 
 @dataclass(frozen=True)

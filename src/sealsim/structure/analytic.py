@@ -20,6 +20,8 @@ import math
 
 from scipy.optimize import brentq
 
+from sealsim.tribology.contact import hertz_line_half_width
+
 __all__ = [
     "cylinder_between_flats_approach",
     "cylinder_between_flats_force",
@@ -47,8 +49,7 @@ def hertz_line_contact(force_per_length, radius, modulus, poisson=0.5):
     >>> round(a * 1e3, 4), round(p0 / 1e6, 4)
     (0.5642, 1.1284)
     """
-    e_star = modulus / (1.0 - poisson**2)
-    a = math.sqrt(4.0 * force_per_length * radius / (math.pi * e_star))
+    a = float(hertz_line_half_width(force_per_length, radius, modulus, poisson))
     return a, 2.0 * force_per_length / (math.pi * a)
 
 

@@ -27,6 +27,7 @@ from scipy.special import erfc
 __all__ = [
     "PERSSON_KAPPA",
     "contact_modulus",
+    "hertz_line_half_width",
     "dry_contact_area_fraction",
     "greenwood_williamson_f1",
     "mixed_lubrication_factor",
@@ -62,6 +63,37 @@ def contact_modulus(youngs_modulus, poisson_ratio=0.5):
     8000000.0
     """
     return np.asarray(youngs_modulus, dtype=float) / (1.0 - poisson_ratio**2)
+
+
+def hertz_line_half_width(force_per_length, radius, modulus, poisson=0.5):
+    """Half-width of the Hertz line contact of a cylinder on a rigid flat.
+
+    ``a = √(4·P·R / (π·E*))``, E* = E/(1 − ν²) (Johnson, *Contact Mechanics*, 1985, §4.2).
+    Written with numpy only, so it also compiles with numba.
+
+    Parameters
+    ----------
+    force_per_length : array_like
+        Load per unit length P [N/m], ≥ 0.
+    radius : array_like
+        Cylinder radius R [m].
+    modulus : array_like
+        Young's modulus of the cylinder E [Pa].
+    poisson : float
+        ν [-]; 0.5 for rubber.
+
+    Returns
+    -------
+    numpy.ndarray
+        a [m]; the contact width is 2a.
+
+    Examples
+    --------
+    >>> round(float(hertz_line_half_width(1000.0, 2e-3, 6e6)) * 1e3, 4)
+    0.5642
+    """
+    e_star = modulus / (1.0 - poisson**2)
+    return np.sqrt(4.0 * force_per_length * radius / (np.pi * e_star))
 
 
 def dry_contact_area_fraction(pressure, modulus_star, rms_slope, kappa=PERSSON_KAPPA):
