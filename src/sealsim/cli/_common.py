@@ -5,10 +5,13 @@ from __future__ import annotations
 import functools
 import json
 import math
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from typing import Any
 
 import typer
 from rich.console import Console
+from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.text import Text
 
 from sealsim.errors import SealsimError
@@ -59,3 +62,25 @@ def parse_celsius_list(text: str | None, default: list[float], option: str) -> l
                              "(must be finite and >= -273.15 degC)")
         values.append(value)
     return values
+
+
+@contextmanager
+def variant_progress(label: str, quiet: bool,
+                     describe: Callable[[str, float, float], str]
+                     ) -> Iterator[Callable[[str, float, float], None]]:
+    """A progress bar (on stderr) with one task per variant of a case.
+
+    Yields ``progress(variant, done, total)`` for the study runners; ``describe`` renders the
+    text after the bar, e.g. ``"12/90 min"``.
+    """
+    with Progress(TextColumn("{task.description}"), BarColumn(), TextColumn("{task.fields[t]}"),
+                  TimeElapsedColumn(), console=err_console, disable=quiet,
+                  transient=True) as bar:
+        tasks: dict[str, Any] = {}
+
+        def progress(variant: str, done: float, total: float) -> None:
+            if variant not in tasks:
+                tasks[variant] = bar.add_task(f"{label} {variant}", total=total, t="")
+            bar.update(tasks[variant], completed=done, t=describe(variant, done, total))
+
+        yield progress

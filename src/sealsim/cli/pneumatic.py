@@ -9,9 +9,8 @@ from __future__ import annotations
 from pathlib import Path
 
 import typer
-from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
-from sealsim.cli._common import console, err_console, guarded
+from sealsim.cli._common import console, guarded, variant_progress
 
 __all__ = ["pneumatic_app"]
 
@@ -47,17 +46,11 @@ def run(
     """
     from sealsim.pneumatic.study import run_case_file
 
-    with Progress(TextColumn("{task.description}"), BarColumn(), TextColumn("{task.fields[t]}"),
-                  TimeElapsedColumn(), console=err_console, disable=quiet,
-                  transient=True) as bar:
-        tasks: dict[str, int] = {}
+    def describe(variant: str, t: float, end: float) -> str:
+        unit = "FE load paths" if variant.endswith("FE map") else "s"
+        return f"{t:.3g}/{end:.3g} {unit}"
 
-        def progress(variant: str, t: float, end: float) -> None:
-            if variant not in tasks:
-                tasks[variant] = bar.add_task(f"pneumatic {variant}", total=end, t="")
-            unit = "FE load paths" if variant.endswith("FE map") else "s"
-            bar.update(tasks[variant], completed=t, t=f"{t:.3g}/{end:.3g} {unit}")
-
+    with variant_progress("pneumatic", quiet, describe) as progress:
         results = run_case_file(case, out, force, progress)
     for name, result in results.items():
         s = result.summary()

@@ -5,9 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import typer
-from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
-
-from sealsim.cli._common import console, err_console, guarded
+from sealsim.cli._common import console, guarded, variant_progress
 
 rotary_app = typer.Typer(no_args_is_help=True, help=(
     "Radial lip seals in gearboxes (seed 000): friction torque and temperatures over speed "
@@ -30,16 +28,8 @@ def run(
     """
     from sealsim.rotary.study import run_case_file
 
-    with Progress(TextColumn("{task.description}"), BarColumn(), TextColumn("{task.fields[t]}"),
-                  TimeElapsedColumn(), console=err_console, disable=quiet,
-                  transient=True) as bar:
-        tasks: dict[str, int] = {}
-
-        def progress(variant: str, t: float, end: float) -> None:
-            if variant not in tasks:
-                tasks[variant] = bar.add_task(f"rotary {variant}", total=end, t="")
-            bar.update(tasks[variant], completed=t, t=f"{t / 60:.0f}/{end / 60:.0f} min")
-
+    with variant_progress("rotary", quiet,
+                          lambda _, t, end: f"{t / 60:.0f}/{end / 60:.0f} min") as progress:
         results = run_case_file(case, out, force, progress)
     for name, result in results.items():
         last = result.steps[-1]
