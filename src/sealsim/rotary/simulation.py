@@ -136,8 +136,8 @@ class RotaryModel:
         self.style = lip_style(c)
         seal = c.seal
         env = c.environment
-        self.shaft_solid = Solid("shaft", env.shaft_conductivity, env.shaft_density,
-                                 env.shaft_specific_heat)
+        shaft = Solid("shaft", env.shaft_conductivity, env.shaft_density,
+                      env.shaft_specific_heat)
         rubber = Solid(self.elastomer.name, self.elastomer.thermal_conductivity,
                        self.elastomer.density, self.elastomer.specific_heat)
         case_steel = Solid("case", 45.0, STEEL_DENSITY, STEEL_SPECIFIC_HEAT)
@@ -145,27 +145,24 @@ class RotaryModel:
             seal.shaft_diameter, seal.outer_diameter, seal.width,
             seal.contact_width + 2 * self.style.track_amplitude,
             env.shaft_length_oil_side, env.shaft_length_air_side, seal.spring_offset)
-        self.grid = build_thermal_grid(self.section, self.shaft_solid, rubber, case_steel,
+        self.grid = build_thermal_grid(self.section, shaft, rubber, case_steel,
                                        c.numerics.mesh_refinement)
         self.start_temperature = (env.start_temperature if env.start_temperature is not None
                                   else env.ambient_temperature)
         outer, wetted, mass = housing_defaults(env.sump_volume)
-        self.housing_area = env.housing_area if env.housing_area is not None else outer
-        self.wetted_area = wetted
-        self.housing_mass = env.housing_mass if env.housing_mass is not None else mass
+        housing_area = env.housing_area if env.housing_area is not None else outer
+        housing_mass = env.housing_mass if env.housing_mass is not None else mass
         t0 = self.start_temperature
-        self.sump_capacity = float(env.sump_volume * self.oil.density(t0)
-                                   * self.oil.specific_heat(t0))
-        self.housing_capacity = self.housing_mass * STEEL_SPECIFIC_HEAT
+        sump_capacity = float(env.sump_volume * self.oil.density(t0) * self.oil.specific_heat(t0))
         self.sump_fixed = env.sump_temperature is not None
         # air pocket: ρ·c_p of air (1.2 kg/m³ · 1007 J/(kg K)) times its volume
-        lumped = {"housing": self.housing_capacity,
+        lumped = {"housing": housing_mass * STEEL_SPECIFIC_HEAT,
                   "air_pocket": 1.2 * 1007.0 * self.grid.pocket_volume}
         fixed = ["ambient"]
         if self.sump_fixed:
             fixed.append("sump")
         else:
-            lumped = {"sump": self.sump_capacity, **lumped}
+            lumped = {"sump": sump_capacity, **lumped}
         nodes = {"shaft_oil": "sump", "shaft_air": "ambient", "shaft_end_oil": "sump",
                  "shaft_end_air": "ambient", "lip_oil": "sump", "seal_oil": "sump",
                  "seal_air": "ambient", "seal_housing": "housing",
@@ -174,8 +171,8 @@ class RotaryModel:
                                       {g: (faces, nodes[g]) for g, faces in
                                        self.grid.face_groups.items()})
         self.links = [
-            Link("sump", "housing", env.oil_housing_heat_transfer * self.wetted_area),
-            Link("housing", "ambient", env.housing_heat_transfer * self.housing_area),
+            Link("sump", "housing", env.oil_housing_heat_transfer * wetted),
+            Link("housing", "ambient", env.housing_heat_transfer * housing_area),
         ]
 
     # -- convection ------------------------------------------------------------------------

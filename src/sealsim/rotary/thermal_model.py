@@ -124,7 +124,6 @@ class LipSealThermalGrid:
     contact_cells: np.ndarray
     contact_weights: np.ndarray
     groove_cell: int
-    shaft_cells: np.ndarray
     pocket_volume: float
     pocket_opening_area: float
 
@@ -230,24 +229,20 @@ def build_thermal_grid(section: SealSection, shaft: Solid, rubber: Solid, case: 
         "shaft_pocket": shaft_face & pocket,
         "seal_pocket": seal_face & pocket,
     }
+    # faces in no group (none expected; e.g. a seal touching the domain end) are adiabatic
     assigned = np.sum([g.astype(int) for g in groups.values()], axis=0)
-    unassigned = assigned == 0
-    # remaining edge faces (none expected; e.g. a seal touching the domain end) are adiabatic
     if np.any(assigned > 1):  # pragma: no cover - a geometry bug, not user input
         raise RuntimeError("a boundary face belongs to two groups")
-    del unassigned
     face_groups = {name: np.nonzero(mask)[0] for name, mask in groups.items()}
 
     i_surface = int(np.argmin(np.abs(r_edges - r_))) - 1  # the shaft's outermost row
-    zc1 = 0.5 * (z_edges[:-1] + z_edges[1:])
+    zc1 = conduction.z_centres
     in_band = (zc1 > -band / 2) & (zc1 < band / 2)
     contact_cells = conduction.index[i_surface, in_band]
     weights = np.diff(z_edges)[in_band]
     groove_cell = conduction.cell_at(*s.groove_probe())
-    shaft_cells = np.nonzero(conduction.cell_material == STEEL)[0]
     ring = np.pi * (r_edges[1:] ** 2 - r_edges[:-1] ** 2)
     pocket_volume = float(np.sum(ring[:, None] * np.diff(z_edges)[None, :] * pocket_cells))
     opening = np.pi * (s.body_inner_radius**2 - r_**2)
     return LipSealThermalGrid(s, conduction, face_groups, contact_cells,
-                              weights / weights.sum(), groove_cell, shaft_cells,
-                              pocket_volume, opening)
+                              weights / weights.sum(), groove_cell, pocket_volume, opening)
