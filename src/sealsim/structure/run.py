@@ -198,12 +198,10 @@ def _load_cases(path):
 
 
 def _resolved_text(cases) -> str:
-    from sealsim.cases import dump_case_toml, dump_variants_toml
+    from sealsim.cases import dump_variants_toml
 
-    header = "resolved sealsim structure case (all defaults filled in)"
-    if list(cases) == ["base"]:
-        return dump_case_toml(cases["base"], header=header)
-    return dump_variants_toml(cases, header=header)
+    return dump_variants_toml(cases, header="resolved sealsim structure case (all defaults "
+                                            "filled in)")
 
 
 def run_case_file(path, out, force: bool = False, progress=None) -> dict:
