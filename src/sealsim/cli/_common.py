@@ -15,7 +15,7 @@ from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.text import Text
 
 from sealsim.errors import SealsimError, Terminated
-from sealsim.output import JSON_DIGITS, committed_folders, json_ready
+from sealsim.output import committed_folders, json_ready
 
 console = Console(highlight=False)
 err_console = Console(stderr=True, highlight=False)
@@ -62,7 +62,7 @@ def _fail(kind: str, message: str) -> None:
 
 def print_json(data: Any) -> None:
     """Print JSON to stdout (plain text, no rich markup); NaN is written as null."""
-    typer.echo(json.dumps(json_ready(data, JSON_DIGITS), indent=2))
+    typer.echo(json.dumps(json_ready(data), indent=2))
 
 
 def parse_celsius_list(text: str | None, default: list[float], option: str) -> list[float]:
