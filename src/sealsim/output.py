@@ -17,7 +17,7 @@ through :func:`run_variants`, which adds the per-variant loop and progress repor
   checked by :meth:`ResultFolder.file` so that nothing is ever written outside the folder;
 * only when the whole run succeeded is the staging folder moved into place (old results, with
   ``force``, are moved aside to ``.NAME.PID.old`` first and deleted afterwards; Ctrl-C and
-  SIGTERM are held back for these few renames).  A run that fails, is interrupted (Ctrl-C or
+  SIGTERM are held back until this is done).  A run that fails, is interrupted (Ctrl-C or
   SIGTERM) or cannot write (full disk: :class:`~sealsim.errors.OutputError` naming the file)
   leaves the target untouched and no half-written file behind;
 * staging and backup folders of processes that died (SIGKILL, power loss) are removed by the
@@ -251,12 +251,16 @@ class ResultFolder:
                              f"{exc.strerror or exc}") from exc
         self._lock()
         try:
+            if self._clean_stale():
+                raise ResultExistsError(
+                    f"output folder {self._shown()!r} was restored: an earlier run was killed "
+                    "while replacing it; check the results, then run again (with --force to "
+                    "replace them)")
             if self._identity() != self._at_start:
                 raise ResultExistsError(
                     f"output folder {self._shown()!r} was written by another run after this "
                     "one started; --force replaces only the results that existed when a run "
                     "started: check them, then run again")
-            self._clean_stale()
             try:
                 self._staging = Path(tempfile.mkdtemp(
                     dir=parent, prefix=f".{self.path.name}.{os.getpid()}.", suffix=".partial"))
@@ -277,15 +281,29 @@ class ResultFolder:
             shutil.rmtree(staging, ignore_errors=True)
             self._release()
             return
-        blocked = _in_main_thread()
-        if blocked:  # Ctrl-C/SIGTERM wait for these renames, then arrive (see _release)
-            previous = signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGINT, signal.SIGTERM})
+        if not _in_main_thread():  # signals reach Python in the main thread only
+            try:
+                self._commit(staging)
+            finally:
+                self._release()
+            return
+        # Ctrl-C/SIGTERM wait for these renames, then act (on any thread's signal delivery)
+        deferred: list[int] = []
+        handlers = {sig: signal.signal(sig, lambda signum, frame: deferred.append(signum))
+                    for sig in (signal.SIGINT, signal.SIGTERM)}
         try:
             self._commit(staging)
         finally:
+            for sig, handler in handlers.items():
+                signal.signal(sig, handler)
             self._release()
-            if blocked:
-                signal.pthread_sigmask(signal.SIG_SETMASK, previous)
+            for signum in deferred[:1]:
+                handler = handlers[signum]
+                if callable(handler):
+                    handler(signum, None)
+                elif handler == signal.SIG_DFL:
+                    raise Terminated("SIGTERM") if signum == signal.SIGTERM \
+                        else KeyboardInterrupt
 
     def _commit(self, staging: Path) -> None:
         backup = None
@@ -354,8 +372,12 @@ class ResultFolder:
             os.close(self._lock_fd)
             self._lock_fd = None
 
-    def _clean_stale(self) -> None:
-        """Remove staging/backup folders of dead processes (we hold the target's lock)."""
+    def _clean_stale(self) -> bool:
+        """Remove staging/backup folders of dead processes (we hold the target's lock).
+
+        Returns True if old results were put back (a run died between moving them aside and
+        committing its own)."""
+        restored = False
         pattern = re.compile(rf"\.{re.escape(self.path.name)}\.(\d+)\."
                              r"(?:[a-z0-9_]{8}\.partial|old)")
         for entry in self.path.parent.iterdir():
@@ -365,8 +387,10 @@ class ResultFolder:
                 continue
             if entry.name.endswith(".old") and not self.path.exists():
                 os.replace(entry, self.path)  # died before its commit: the old results return
+                restored = True
             else:
                 shutil.rmtree(entry, ignore_errors=True)
+        return restored
 
     # -- writers -------------------------------------------------------------------------
     def file(self, name: str) -> Path:
