@@ -104,6 +104,16 @@ def test_every_writer_refuses_names_that_leave_the_staging_folder(tmp_path):
     assert (tmp_path / "run" / "variant" / "ok.txt").read_text() == "fine"
 
 
+@given(st.text(max_size=70))
+def test_an_accepted_variant_name_is_one_plain_file_name(name):
+    try:
+        check_variant_name(name)
+    except InputError:
+        return
+    assert Path(name).name == name and not name.startswith(".") and name not in ("", "..")
+    assert not {"/", "\\", "\x00"} & set(name)
+
+
 SEGMENTS = st.sampled_from(["a", "b", "..", ".", "x y", "run"])
 
 
@@ -328,6 +338,30 @@ def test_bad_output_location_is_refused_before_any_simulation(where, tiny_fricti
     assert tree(tmp_path) == before
 
 
+def test_unwritable_location_is_refused_before_any_simulation(tmp_path, monkeypatch):
+    real = os.access
+    monkeypatch.setattr(os, "access", lambda path, mode: False if Path(path) == tmp_path
+                        else real(path, mode))  # as root, chmod alone would not stop writing
+    with pytest.raises(InputError, match="no write permission"):
+        run_variants({"a": 1}, tmp_path / "run", lambda *a: pytest.fail("simulated"),
+                     lambda folder, results: None)
+    assert tree(tmp_path) == {}
+
+
+def test_warnings_while_writing_plots_do_not_reach_the_user(tmp_path):
+    import warnings
+
+    def write(folder, results):
+        warnings.warn("Attempting to set identical low and high xlims", UserWarning)
+        folder.write_text("a.txt", "a")
+
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        run_variants({"a": 1}, tmp_path / "run", lambda *a: 1, write)
+    assert caught == []
+    assert tree(tmp_path / "run") == {"a.txt": b"a"}
+
+
 # -- 5. inputs checked before anything is written --------------------------------------------------
 ROTARY_CSV_CASE = """\
 [seal]
@@ -361,6 +395,18 @@ def test_bad_duty_csv_is_one_message_and_writes_nothing(content, message, tmp_pa
     one_message(text)
     assert "duty" in text and message in text
     assert tree(tmp_path) == before
+
+
+def test_duty_steps_longer_than_the_limit_name_the_field_to_raise():
+    from sealsim.rotary.case import RotaryCase
+
+    steps = [{"speed": "100 rpm", "duration": "9e5 s"}] * 2
+    data = {"seal": {"shaft_diameter": "80 mm"}, "duty": {"steps": steps}}
+    with pytest.raises(InputError, match=r"duty: the steps last 1.8e\+06 s .*raise "
+                                         r"duty.max_duration"):
+        expand_variants(RotaryCase, data)
+    data["duty"]["max_duration"] = "2e6 s"
+    assert expand_variants(RotaryCase, data)["base"].duty.max_duration == 2e6
 
 
 def test_duty_csv_with_bom_and_no_plateau_is_read():

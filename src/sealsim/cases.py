@@ -134,6 +134,9 @@ def load_toml(path: str | Path) -> dict[str, Any]:
         raise InputError(f"case file {str(path)!r} is not UTF-8 text") from exc
     except ValueError as exc:  # TOMLDecodeError, and integers tomllib cannot convert
         raise InputError(f"case file {str(path)!r} is not valid TOML: {exc}") from exc
+    except OSError as exc:  # no permission, an I/O error
+        raise InputError(f"case file {str(path)!r} cannot be read: "
+                         f"{exc.strerror or exc}") from exc
 
 
 def validate_case(model: type[ModelT], data: Any, source: str = "case",
