@@ -186,6 +186,7 @@ class ResultFolder:
         self._staging: Path | None = None
         self._lock_fd: int | None = None
         self._old_sigterm = None
+        self._created: list[Path] = []
         self._check_location(inputs)
         self._at_start = self._identity()
 
@@ -244,6 +245,7 @@ class ResultFolder:
 
     def __enter__(self) -> ResultFolder:
         parent = self.path.parent
+        self._created = [p for p in (parent, *parent.parents) if not p.exists()]
         try:
             parent.mkdir(parents=True, exist_ok=True)
         except OSError as exc:
@@ -272,14 +274,25 @@ class ResultFolder:
                 self._old_sigterm = signal.signal(signal.SIGTERM, _raise_terminated)
         except BaseException:
             self._unlock()
+            self._remove_created()
             raise
         return self
+
+    def _remove_created(self) -> None:
+        """Remove the (still empty) parent folders this run created: a failed run leaves no
+        trace."""
+        for folder in self._created:
+            try:
+                folder.rmdir()
+            except OSError:
+                break
 
     def __exit__(self, exc_type, exc, tb) -> None:
         staging, self._staging = self._staging, None
         if exc_type is not None:
             shutil.rmtree(staging, ignore_errors=True)
             self._release()
+            self._remove_created()
             return
         if not _in_main_thread():  # signals reach Python in the main thread only
             try:
