@@ -154,12 +154,15 @@ def test_nothing_is_ever_written_outside_the_target(tmp_path, monkeypatch, name,
 
 
 # -- 2. concurrent runs and --force -------------------------------------------------------------
-SLOW_FRICTION = textwrap.dedent("""
+HELD_FRICTION = textwrap.dedent("""
     import sys, time
+    from pathlib import Path
     import sealsim.friction.study as study
     real = study.run_friction_case
-    def slow(*args, **kwargs):
-        time.sleep(float(sys.argv[1]))
+    def slow(*args, **kwargs):     # hold the run until the test says go (at most 60 s)
+        end = time.monotonic() + 60
+        while sys.argv[1] != "-" and not Path(sys.argv[1]).exists() and time.monotonic() < end:
+            time.sleep(0.02)
         return real(*args, **kwargs)
     study.run_friction_case = slow
     from sealsim.cli import app
@@ -197,11 +200,13 @@ def _wait_for(path: Path, proc: subprocess.Popen, timeout: float = 60.0) -> None
 
 def test_two_concurrent_runs_to_one_out_the_second_is_refused(tiny_friction, tmp_path):
     out = tmp_path / "out"
-    first = _spawn(SLOW_FRICTION, 3.0, "friction", "run", tiny_friction, "--out", out, "-q")
+    go = tmp_path.parent / f"{tmp_path.name}.go"
+    first = _spawn(HELD_FRICTION, go, "friction", "run", tiny_friction, "--out", out, "-q")
     _wait_for(tmp_path / ".out.lock", first)
-    second = _spawn(SLOW_FRICTION, 0.0, "friction", "run", tiny_friction, "--out", out, "-q",
+    second = _spawn(HELD_FRICTION, "-", "friction", "run", tiny_friction, "--out", out, "-q",
                     "--force")
     _, err2 = second.communicate(timeout=60)
+    go.touch()  # the first run may finish now
     _, err1 = first.communicate(timeout=60)
     assert second.returncode == 2, err2
     assert "being written by another sealsim run" in " ".join(err2.split())
