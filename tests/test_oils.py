@@ -223,7 +223,7 @@ def test_unknown_oil_lists_close_matches():
     with pytest.raises(InputError) as err:
         get_oil("VG86-mineral")
     msg = str(err.value)
-    assert "VG86-mineral" in msg and "VG68-mineral" in msg and "list_oils" in msg
+    assert "VG86-mineral" in msg and "VG68-mineral" in msg and "sealsim oil list" in msg
 
 
 @pytest.mark.parametrize(

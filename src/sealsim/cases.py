@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import copy
 import math
+import re
 import tomllib
 import typing
 from pathlib import Path
@@ -43,12 +44,14 @@ __all__ = [
     "CaseModel",
     "Q",
     "apply_overrides",
+    "check_variant_name",
     "dump_case_toml",
     "dump_variants_toml",
     "expand_variants",
     "format_validation_error",
     "load_toml",
     "validate_case",
+    "validation_problems",
 ]
 
 ModelT = TypeVar("ModelT", bound=BaseModel)
@@ -131,6 +134,9 @@ def load_toml(path: str | Path) -> dict[str, Any]:
         raise InputError(f"case file {str(path)!r} is not UTF-8 text") from exc
     except ValueError as exc:  # TOMLDecodeError, and integers tomllib cannot convert
         raise InputError(f"case file {str(path)!r} is not valid TOML: {exc}") from exc
+    except OSError as exc:  # no permission, an I/O error
+        raise InputError(f"case file {str(path)!r} cannot be read: "
+                         f"{exc.strerror or exc}") from exc
 
 
 def validate_case(model: type[ModelT], data: Any, source: str = "case",
@@ -159,32 +165,47 @@ def validate_case(model: type[ModelT], data: Any, source: str = "case",
 def format_validation_error(exc: pydantic.ValidationError, source: str,
                             model: type[BaseModel] | None = None) -> str:
     """One readable message for all problems in a pydantic ValidationError."""
+    return _message(source, validation_problems(exc, model))
+
+
+def _message(source: str, problems: list[str]) -> str:
+    if len(problems) == 1:
+        return f"invalid {source}: {problems[0]}"
+    return f"invalid {source}:" + "".join(f"\n  {p}" for p in problems)
+
+
+def validation_problems(exc: pydantic.ValidationError,
+                        model: type[BaseModel] | None = None) -> list[str]:
+    """One line per problem: the field path as written in the file, the value, what is allowed.
+
+    A check across fields (a model validator) is reported at the table it belongs to, with its
+    own message naming the fields, never with the whole table as "value".
+    """
     problems = []
     for err in exc.errors(include_url=False):
-        loc = ".".join(str(p) for p in _clean_location(model, err["loc"])) or "(top level)"
+        loc = ".".join(str(p) for p in _clean_location(model, err["loc"]))
+        where = f"{loc}: " if loc else ""
         kind = err["type"]
         given = err.get("input")
         if kind == "missing":
             hint = _field_hint(model, err["loc"])
-            problems.append(f"{loc}: required field is missing" + (f" ({hint})" if hint else ""))
+            problems.append(f"{where}required field is missing" + (f" ({hint})" if hint else ""))
         elif kind == "extra_forbidden":
             allowed = _allowed_fields(model, err["loc"][:-1])
-            problems.append(f"{loc}: unknown field" +
+            problems.append(f"{where}unknown field" +
                             (f"; allowed fields: {', '.join(allowed)}" if allowed else ""))
         elif kind in ("literal_error", "enum"):
             expected = err.get("ctx", {}).get("expected", "")
-            problems.append(f"{loc}: {given!r} is not allowed; choose one of {expected}")
+            problems.append(f"{where}{given!r} is not allowed; choose one of {expected}")
         else:
-            msg = err["msg"].removeprefix("Value error, ")
-            if kind in ("value_error", "assertion_error") and isinstance(given, str | int | float):
-                if repr(given) in msg:
-                    problems.append(f"{loc}: {msg}")
-                else:
-                    problems.append(f"{loc}: {msg} (got {_short(given)})")
+            msg = err["msg"].removeprefix("Value error, ").removeprefix("Assertion failed, ")
+            if isinstance(given, dict) and kind in ("value_error", "assertion_error"):
+                problems.append(f"{where}{msg}")  # across fields: the message names them
+            elif kind in ("value_error", "assertion_error") and repr(given) in msg:
+                problems.append(f"{where}{msg}")
             else:
-                problems.append(f"{loc}: {msg} (got {_short(given)})")
-    head = f"invalid {source}:" if len(problems) > 1 else f"invalid {source}: "
-    return head + ("\n  " + "\n  ".join(problems) if len(problems) > 1 else problems[0])
+                problems.append(f"{where}{msg} (got {_short(given)})")
+    return problems
 
 
 def _short(value: Any) -> str:
@@ -297,14 +318,44 @@ def _drop_none(value):
 
 DEFAULT_VARIANT = "base"
 
+#: allowed variant names: they become file and folder names of the results
+VARIANT_NAME = re.compile(r"[A-Za-z0-9_-][A-Za-z0-9._-]{0,63}")
+
+
+def check_variant_name(name: Any, source: str = "case") -> str:
+    """``name`` if it is a safe variant name, else an :class:`InputError` naming it.
+
+    Letters, digits, ``-``, ``_`` and ``.`` (not first), at most 64 characters: variant names
+    become file names (``cycle_NAME.png``) and folders (``NAME/result.csv``), so a name like
+    ``a/../../victim`` must never reach a writer.
+
+    Examples
+    --------
+    >>> check_variant_name("sump_0.2L")
+    'sump_0.2L'
+    >>> check_variant_name("../x")
+    Traceback (most recent call last):
+    ...
+    sealsim.errors.InputError: invalid case: variant name '../x' is not allowed; use letters, \
+digits, '-', '_' and '.' (not first), at most 64 characters, e.g. [variants.wave_lip]
+    """
+    if not isinstance(name, str) or not VARIANT_NAME.fullmatch(name):
+        raise InputError(f"invalid {source}: variant name {name!r} is not allowed; use "
+                         "letters, digits, '-', '_' and '.' (not first), at most 64 "
+                         "characters, e.g. [variants.wave_lip]")
+    return name
+
 
 def expand_variants(model: type[ModelT], data: dict[str, Any],
                     source: str = "case") -> dict[str, ModelT]:
     """Validate a case with optional ``[variants.NAME]`` tables that override base fields.
 
     Without variants the case is one variant named ``"base"``.  With variants, each variant is
-    the base deep-merged with its overrides (:func:`apply_overrides`) and validated on its own;
-    error messages name the variant (``variants.wave.seal.lip_style: ...``).
+    the base deep-merged with its overrides (:func:`apply_overrides`) and validated on its own.
+    A problem shared by every variant (usually one in the base case) is reported once; others
+    name their variant (``variant 'wave': seal.lip_style: ...``).  Variant names are checked
+    by :func:`check_variant_name` (they become file names), and two names that differ only in
+    case are refused (they would be one file on Windows and macOS).
 
     Examples
     --------
@@ -322,19 +373,31 @@ def expand_variants(model: type[ModelT], data: dict[str, Any],
     if not isinstance(variants, dict) or not variants:
         raise InputError(f"invalid {source}: variants must be a table of named overrides, "
                          f"e.g. [variants.wave] seal.lip_style = 'wave' (got {variants!r})")
+    seen: dict[str, str] = {}
+    for name in variants:
+        check_variant_name(name, source)
+        if name.lower() in seen:
+            raise InputError(f"invalid {source}: variant names {seen[name.lower()]!r} and "
+                             f"{name!r} differ only in upper/lower case; they would be one "
+                             "result file on some systems")
+        seen[name.lower()] = name
     cases: dict[str, ModelT] = {}
-    problems: list[str] = []
+    problems: dict[str, list[str]] = {}
     for name, overrides in variants.items():
         if not isinstance(overrides, dict):
-            problems.append(f"variants.{name}: expected a table of overrides, got {overrides!r}")
+            problems[name] = [f"expected a table of overrides, got {_short(overrides)}"]
             continue
         try:
-            cases[name] = validate_case(model, apply_overrides(data, overrides),
-                                        f"{source}, variant {name!r}")
-        except InputError as exc:
-            problems.append(str(exc))
+            cases[name] = model.model_validate(apply_overrides(data, overrides),
+                                               context={"require_units": True})
+        except pydantic.ValidationError as exc:
+            problems[name] = validation_problems(exc, model)
     if problems:
-        raise InputError("\n".join(problems))
+        shared = [p for p in next(iter(problems.values()))
+                  if len(problems) == len(variants) and all(p in v for v in problems.values())]
+        lines = shared + [f"variant {name!r}: {p}" for name, found in problems.items()
+                          for p in found if p not in shared]
+        raise InputError(_message(source, lines))
     return cases
 
 

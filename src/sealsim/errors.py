@@ -5,10 +5,15 @@ One type per kind of failure, each with a message that names what to change:
 * :class:`InputError` -- a case file, a parameter or a CLI option is invalid.  The message
   names the field, the value given and what is allowed.  The CLI exits with status 2.
 * :class:`ResultExistsError` -- an output folder already holds results and ``--force`` was
-  not given (status 2).
+  not given, or another run is writing to it (:class:`ResultBusyError`) (status 2).
+* :class:`OutputError` -- results could not be written (full disk, permissions); the message
+  names the file and says that the output folder is unchanged (status 1).
 * :class:`ModelError` -- a valid input led to a run that could not be completed (a solver that
   did not converge, a state out of its physical range).  The message says at which step or
   load it failed (status 1).
+
+:class:`Terminated` (a :class:`KeyboardInterrupt`) is raised when SIGTERM arrives during a run,
+so the clean-up that runs for Ctrl-C runs for SIGTERM too.
 """
 
 from __future__ import annotations
@@ -30,6 +35,22 @@ class ResultExistsError(SealsimError, FileExistsError):
     """An output folder already holds results and overwriting was not requested."""
 
     exit_code = 2
+
+
+class ResultBusyError(ResultExistsError):
+    """Another run holds the lock of the output folder (two runs to one ``--out``)."""
+
+
+class OutputError(SealsimError, OSError):
+    """Results could not be written (no space left, no permission); names the file."""
+
+    exit_code = 1
+
+
+class Terminated(KeyboardInterrupt):
+    """SIGTERM during a run: handled like Ctrl-C, so staging folders are removed."""
+
+    exit_code = 143  # 128 + SIGTERM, the shell convention
 
 
 class ModelError(SealsimError, RuntimeError):

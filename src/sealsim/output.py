@@ -1,58 +1,99 @@
-"""Result folders that never lose data.
+"""Result folders that never lose data, and the run skeleton every writing command uses.
 
-Every command that writes results does so through :class:`ResultFolder`:
+Every command that writes results does so through :class:`ResultFolder` -- most simply
+through :func:`run_variants`, which adds the per-variant loop and progress reports:
 
-* an existing folder that already holds files is refused up front (before any computing)
-  unless ``force=True`` -- :class:`~sealsim.errors.ResultExistsError`;
-* results are written into a hidden staging folder next to the target, each file atomically
-  (temporary name, then :func:`os.replace`);
-* only when the whole run succeeded is the staging folder moved into place (the old results,
-  if ``force``, are moved aside first and deleted afterwards).  A run that fails or is
-  interrupted leaves the target untouched and no half-written file behind.
+* the output location is checked when the folder object is made, before any computing: an
+  existing folder that holds files is refused unless ``force=True``
+  (:class:`~sealsim.errors.ResultExistsError`), and so are a file in its place, a location
+  that cannot be written, the current folder or one of its parents, and a folder that holds
+  one of the run's input files;
+* entering the ``with`` block takes an exclusive lock (``.NAME.lock`` next to the target,
+  :func:`fcntl.flock`; it dies with the process), so a second run to the same folder is refused
+  (:class:`~sealsim.errors.ResultBusyError`) instead of silently replacing the first one's
+  results; ``force`` replaces only the results that existed when the run started;
+* results are written into a hidden staging folder ``.NAME.PID.XXXXXXXX.partial`` next to the
+  target, each file atomically (temporary name, then :func:`os.replace`), every file name
+  checked by :meth:`ResultFolder.file` so that nothing is ever written outside the folder;
+* only when the whole run succeeded is the staging folder moved into place (old results, with
+  ``force``, are moved aside to ``.NAME.PID.old`` first and deleted afterwards; Ctrl-C and
+  SIGTERM are held back until this is done).  A run that fails, is interrupted (Ctrl-C or
+  SIGTERM) or cannot write (full disk: :class:`~sealsim.errors.OutputError` naming the file)
+  leaves the target untouched and no half-written file behind;
+* staging and backup folders of processes that died (SIGKILL, power loss) are removed by the
+  next run to the same target -- a backup whose commit never happened is put back.
 """
 
 from __future__ import annotations
 
+import contextlib
+import errno
 import json
 import math
 import os
+import re
 import shutil
+import signal
 import tempfile
+import threading
+import warnings
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 import numpy as np
 
-from sealsim.errors import InputError, ResultExistsError
+from sealsim.errors import InputError, OutputError, ResultBusyError, ResultExistsError, Terminated
 
-__all__ = ["ResultFolder", "atomic_write_bytes", "atomic_write_text", "json_ready"]
+__all__ = ["JSON_DIGITS", "ResultFolder", "atomic_write_bytes", "atomic_write_text",
+           "committed_folders", "json_ready", "run_variants"]
 
 # mkstemp/mkdtemp create private (0600/0700) entries; results get the user's normal modes
 _UMASK = os.umask(0)
 os.umask(_UMASK)
 
+#: significant digits of floats in result JSON files: enough for any model result, and
+#: ``67.99999999999949`` is written as ``68.0``
+JSON_DIGITS = 12
 
-def json_ready(value: Any) -> Any:
+#: every result folder committed by this process, in order (see :func:`committed_folders`)
+_COMMITTED: list[Path] = []
+
+
+def committed_folders() -> tuple[Path, ...]:
+    """Result folders this process has committed so far (oldest first).
+
+    The CLI uses it to say truthfully, after Ctrl-C, whether the new results were written.
+    """
+    return tuple(_COMMITTED)
+
+
+def json_ready(value: Any, digits: int | None = None) -> Any:
     """Make results JSON-safe: numpy scalars become Python numbers, NaN/inf become None.
 
-    JSON has no NaN; a missing value (e.g. no break-away in a run) is written as null.
+    JSON has no NaN; a missing value (e.g. no break-away in a run) is written as null.  With
+    ``digits``, floats are rounded to that many significant digits (no ``0.30000000000000004``).
 
     Examples
     --------
     >>> import numpy as np
     >>> json_ready({"a": np.float64(1.5), "b": [float("nan"), np.int64(2)]})
     {'a': 1.5, 'b': [None, 2]}
+    >>> json_ready([67.99999999999949, 1.0e-20 / 3], digits=12)
+    [68.0, 3.33333333333e-21]
     """
     if isinstance(value, dict):
-        return {k: json_ready(v) for k, v in value.items()}
+        return {k: json_ready(v, digits) for k, v in value.items()}
     if isinstance(value, list | tuple):
-        return [json_ready(v) for v in value]
+        return [json_ready(v, digits) for v in value]
     if isinstance(value, bool | np.bool_):
         return bool(value)
     if isinstance(value, np.integer):
         return int(value)
     if isinstance(value, float | np.floating):
-        return float(value) if math.isfinite(value) else None
+        if not math.isfinite(value):
+            return None
+        return float(f"{value:.{digits}g}") if digits else float(value)
     return value
 
 
@@ -78,15 +119,49 @@ def atomic_write_text(path: str | Path, text: str) -> Path:
     return atomic_write_bytes(path, text.encode("utf-8"))
 
 
+def _pid_alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:  # exists, owned by someone else
+        return True
+    return True
+
+
+def _in_main_thread() -> bool:
+    return threading.current_thread() is threading.main_thread()
+
+
+def _raise_terminated(signum, frame):
+    raise Terminated("SIGTERM")
+
+
 class ResultFolder:
-    """A result folder written all-or-nothing.
+    """A result folder written all-or-nothing, locked against concurrent runs.
 
     Parameters
     ----------
     path : str or Path
         Target folder.
     force : bool
-        Replace a folder that already holds files.
+        Replace a folder that already holds files (only the results that were there when
+        this object was made: a folder committed meanwhile by another run is not replaced).
+    inputs : iterable of path-like
+        Files the run reads (the case file, a duty-cycle CSV): refused if they lie inside
+        ``path``, where committing the results would delete them.
+
+    Raises
+    ------
+    InputError
+        Unusable location (a file, not writable, the current folder or a parent of it, holds
+        an input file) -- when the object is made, i.e. before any computing.
+    ResultExistsError
+        ``path`` holds results and ``force`` is not set.
+    ResultBusyError
+        (on entering) another run is writing to ``path``.
+    OutputError
+        (inside the block) a result file could not be written, e.g. the disk is full.
 
     Examples
     --------
@@ -103,17 +178,65 @@ class ResultFolder:
     refused: True
     """
 
-    def __init__(self, path: str | Path, force: bool = False):
-        self.path = Path(path)
+    def __init__(self, path: str | Path, force: bool = False, inputs: Iterable[str | Path] = ()):
+        self.requested = Path(path)
+        self.path = Path(path).resolve()  # through links: stage next to the real folder
         self.force = force
-        if self.path.exists() and not self.path.is_dir():
-            raise InputError(f"output path {str(self.path)!r} is a file, expected a folder")
-        if self.path.is_dir() and any(self.path.iterdir()) and not force:
-            raise ResultExistsError(
-                f"output folder {str(self.path)!r} already holds results; "
-                "choose another folder or pass --force to replace them")
+        self.committed = False
         self._staging: Path | None = None
+        self._lock_fd: int | None = None
+        self._old_sigterm = None
+        self._created: list[Path] = []
+        self._check_location(inputs)
+        self._at_start = self._identity()
 
+    # -- checks before any computing -----------------------------------------------------------
+    def _shown(self, name: str = "") -> str:
+        return str(self.requested / name) if name else str(self.requested)
+
+    def _check_location(self, inputs: Iterable[str | Path]) -> None:
+        shown = self._shown()
+        cwd = Path.cwd().resolve()
+        if self.path == cwd or self.path in cwd.parents or self.path.parent == self.path:
+            raise InputError(f"output folder {shown!r} is the current folder or one of its "
+                             "parents; give a new sub-folder, e.g. --out results/run")
+        for item in inputs:
+            item = Path(item).resolve()
+            if self.path in item.parents:
+                raise InputError(f"input file {str(item)!r} lies inside the output folder "
+                                 f"{shown!r}; writing the results would delete it: choose "
+                                 "another output folder or move the file")
+        if self.path.exists() and not self.path.is_dir():
+            raise InputError(f"output path {shown!r} is a file, expected a folder")
+        existing = self.path.parent
+        while not existing.exists():
+            existing = existing.parent
+        if not existing.is_dir():
+            raise InputError(f"cannot create output folder {shown!r}: {str(existing)!r} is a "
+                             "file")
+        if not os.access(existing, os.W_OK | os.X_OK):
+            raise InputError(f"cannot write output folder {shown!r}: no write permission in "
+                             f"{str(existing)!r} (or a read-only file system)")
+        if self._holds_results() and not self.force:
+            raise ResultExistsError(
+                f"output folder {shown!r} already holds results; "
+                "choose another folder or pass --force to replace them")
+
+    def _holds_results(self) -> bool:
+        try:
+            return self.path.is_dir() and any(self.path.iterdir())
+        except OSError as exc:
+            raise InputError(f"cannot read output folder {self._shown()!r}: "
+                             f"{exc.strerror or exc}") from None
+
+    def _identity(self) -> tuple[int, int] | None:
+        """Which results the target holds: (device, inode) of a non-empty folder, else None."""
+        if not self._holds_results():
+            return None
+        st = self.path.stat()
+        return st.st_dev, st.st_ino
+
+    # -- lock, staging, commit -------------------------------------------------------------------
     @property
     def staging(self) -> Path:
         if self._staging is None:
@@ -121,75 +244,330 @@ class ResultFolder:
         return self._staging
 
     def __enter__(self) -> ResultFolder:
-        parent = self.path.resolve().parent
+        parent = self.path.parent
+        self._created = [p for p in (parent, *parent.parents) if not p.exists()]
         try:
             parent.mkdir(parents=True, exist_ok=True)
-            self._staging = Path(tempfile.mkdtemp(dir=parent, prefix=f".{self.path.name}.",
-                                                  suffix=".partial"))
-            os.chmod(self._staging, 0o777 & ~_UMASK)
         except OSError as exc:
-            raise InputError(f"cannot create output folder {str(self.path)!r}: {exc}") from exc
+            raise InputError(f"cannot create output folder {self._shown()!r}: "
+                             f"{exc.strerror or exc}") from exc
+        self._lock()
+        try:
+            if self._clean_stale():
+                raise ResultExistsError(
+                    f"output folder {self._shown()!r} was restored: an earlier run was killed "
+                    "while replacing it; check the results, then run again (with --force to "
+                    "replace them)")
+            if self._identity() != self._at_start:
+                raise ResultExistsError(
+                    f"output folder {self._shown()!r} was written by another run after this "
+                    "one started; --force replaces only the results that existed when a run "
+                    "started: check them, then run again")
+            try:
+                self._staging = Path(tempfile.mkdtemp(
+                    dir=parent, prefix=f".{self.path.name}.{os.getpid()}.", suffix=".partial"))
+                os.chmod(self._staging, 0o777 & ~_UMASK)
+            except OSError as exc:
+                raise InputError(f"cannot create output folder {self._shown()!r}: "
+                                 f"{exc.strerror or exc}") from exc
+            if _in_main_thread() and signal.getsignal(signal.SIGTERM) is signal.SIG_DFL:
+                self._old_sigterm = signal.signal(signal.SIGTERM, _raise_terminated)
+        except BaseException:
+            self._unlock()
+            self._remove_created()
+            raise
         return self
+
+    def _remove_created(self) -> None:
+        """Remove the (still empty) parent folders this run created: a failed run leaves no
+        trace."""
+        for folder in self._created:
+            try:
+                folder.rmdir()
+            except OSError:
+                break
 
     def __exit__(self, exc_type, exc, tb) -> None:
         staging, self._staging = self._staging, None
         if exc_type is not None:
             shutil.rmtree(staging, ignore_errors=True)
+            self._release()
+            self._remove_created()
             return
+        if not _in_main_thread():  # signals reach Python in the main thread only
+            try:
+                self._commit(staging)
+            finally:
+                self._release()
+            return
+        # Ctrl-C/SIGTERM wait for these renames, then act (on any thread's signal delivery)
+        deferred: list[int] = []
+        handlers = {sig: signal.signal(sig, lambda signum, frame: deferred.append(signum))
+                    for sig in (signal.SIGINT, signal.SIGTERM)}
+        try:
+            self._commit(staging)
+        finally:
+            for sig, handler in handlers.items():
+                signal.signal(sig, handler)
+            self._release()
+            for signum in deferred[:1]:
+                handler = handlers[signum]
+                if callable(handler):
+                    handler(signum, None)
+                elif handler == signal.SIG_DFL:
+                    raise Terminated("SIGTERM") if signum == signal.SIGTERM \
+                        else KeyboardInterrupt
+
+    def _commit(self, staging: Path) -> None:
         backup = None
-        if self.path.exists():
-            backup = self.path.with_name(f".{self.path.name}.{os.getpid()}.old")
-            os.replace(self.path, backup)
-        os.replace(staging, self.path)
+        try:
+            if self.path.exists():
+                backup = self.path.with_name(f".{self.path.name}.{os.getpid()}.old")
+                os.replace(self.path, backup)
+            try:
+                os.replace(staging, self.path)
+            except OSError:
+                if backup is not None:
+                    os.replace(backup, self.path)
+                raise
+        except OSError as exc:
+            shutil.rmtree(staging, ignore_errors=True)
+            raise OutputError(f"cannot move the results into {self._shown()!r}: "
+                              f"{exc.strerror or exc}; the folder is unchanged") from exc
+        self.committed = True
+        _COMMITTED.append(self.path)
         if backup is not None:
             shutil.rmtree(backup, ignore_errors=True)
 
+    def _release(self) -> None:
+        if self._old_sigterm is not None:
+            signal.signal(signal.SIGTERM, self._old_sigterm)
+            self._old_sigterm = None
+        self._unlock()
+
+    def _lock_path(self) -> Path:
+        return self.path.with_name(f".{self.path.name}.lock")
+
+    def _lock(self) -> None:
+        import fcntl
+
+        path = self._lock_path()
+        while True:
+            try:
+                fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o666 & ~_UMASK)
+            except OSError as exc:
+                raise InputError(f"cannot create the lock file {str(path)!r} of output folder "
+                                 f"{self._shown()!r}: {exc.strerror or exc}") from exc
+            try:
+                fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            except BlockingIOError:
+                owner = os.read(fd, 32).decode("ascii", "replace").strip()
+                os.close(fd)
+                raise ResultBusyError(
+                    f"output folder {self._shown()!r} is being written by another sealsim run"
+                    + (f" (process {owner})" if owner else "")
+                    + "; wait for it to finish or choose another folder") from None
+            # the holder before us may have removed the file after we opened it: retry then
+            try:
+                same = os.stat(path).st_ino == os.fstat(fd).st_ino
+            except FileNotFoundError:
+                same = False
+            if same:
+                break
+            os.close(fd)
+        os.ftruncate(fd, 0)
+        os.write(fd, str(os.getpid()).encode())
+        self._lock_fd = fd
+
+    def _unlock(self) -> None:
+        if self._lock_fd is not None:
+            self._lock_path().unlink(missing_ok=True)  # while still holding it (see _lock)
+            os.close(self._lock_fd)
+            self._lock_fd = None
+
+    def _clean_stale(self) -> bool:
+        """Remove staging/backup folders of dead processes (we hold the target's lock).
+
+        Returns True if old results were put back (a run died between moving them aside and
+        committing its own)."""
+        restored = False
+        pattern = re.compile(rf"\.{re.escape(self.path.name)}\.(\d+)\."
+                             r"(?:[a-z0-9_]{8}\.partial|old)")
+        for entry in self.path.parent.iterdir():
+            match = pattern.fullmatch(entry.name)
+            pid = int(match[1]) if match else None
+            if pid is None or pid == os.getpid() or _pid_alive(pid):
+                continue
+            if entry.name.endswith(".old") and not self.path.exists():
+                os.replace(entry, self.path)  # died before its commit: the old results return
+                restored = True
+            else:
+                shutil.rmtree(entry, ignore_errors=True)
+        return restored
+
     # -- writers -------------------------------------------------------------------------
     def file(self, name: str) -> Path:
-        """Final-to-be path of a result file inside the staging folder."""
-        target = self.staging / name
-        target.parent.mkdir(parents=True, exist_ok=True)
+        """Path of result file ``name`` (e.g. ``"variant/summary.json"``) in the staging folder.
+
+        Every writer builds its path here: a name that is empty, absolute, contains ``..`` or
+        would lead through a symbolic link out of the folder is refused, so that nothing is
+        ever written outside it.
+        """
+        root = self.staging
+        parts = Path(name).parts
+        if (not name or "\x00" in name or Path(name).is_absolute() or ".." in parts
+                or "\\" in name):
+            raise InputError(f"result file name {name!r} would leave the result folder")
+        target = root / name
+        real_root = root.resolve()
+        if not target.parent.resolve().is_relative_to(real_root):
+            raise InputError(f"result file name {name!r} would leave the result folder")
+        with self._writing(name):
+            target.parent.mkdir(parents=True, exist_ok=True)
+        if target.is_symlink() or not target.parent.resolve().is_relative_to(real_root):
+            raise InputError(f"result file name {name!r} would leave the result folder")
         return target
 
+    @contextlib.contextmanager
+    def _writing(self, name: str) -> Iterator[None]:
+        """An OSError (no space left, quota, I/O error) becomes one OutputError naming the file."""
+        try:
+            yield
+        except OSError as exc:
+            if isinstance(exc, OutputError):
+                raise
+            reason = exc.strerror or errno.errorcode.get(exc.errno or 0, "") or str(exc)
+            raise OutputError(f"cannot write result file {self._shown(name)!r}: {reason}; "
+                              f"nothing was written, {self._shown()!r} is unchanged") from exc
+
+    def write_bytes(self, name: str, data: bytes) -> Path:
+        target = self.file(name)
+        with self._writing(name):
+            return atomic_write_bytes(target, data)
+
     def write_text(self, name: str, text: str) -> Path:
-        return atomic_write_text(self.file(name), text)
+        return self.write_bytes(name, text.encode("utf-8"))
 
     def write_json(self, name: str, data: Any) -> Path:
-        """Write JSON (numpy values and NaN made JSON-safe by :func:`json_ready`)."""
-        return self.write_text(name, json.dumps(json_ready(data), indent=2, allow_nan=False)
-                               + "\n")
+        """Write JSON: numpy values and NaN made JSON-safe, floats rounded to
+        :data:`JSON_DIGITS` significant digits (:func:`json_ready`)."""
+        return self.write_text(name, json.dumps(json_ready(data, JSON_DIGITS), indent=2,
+                                                allow_nan=False, ensure_ascii=False) + "\n")
 
     def write_csv(self, name: str, frame, **kwargs) -> Path:
         """Write a pandas DataFrame as CSV (no index unless asked)."""
         kwargs.setdefault("index", False)
         return self.write_text(name, frame.to_csv(**kwargs))
 
-    def write_netcdf(self, name: str, dataset) -> Path:
-        """Write an xarray Dataset to netCDF atomically."""
+    def _write_via_temporary(self, name: str, write: Callable[[Path], None]) -> Path:
         target = self.file(name)
         tmp = target.with_name(f".{target.name}.tmp")
         try:
-            dataset.to_netcdf(tmp)
-            os.replace(tmp, target)
+            with self._writing(name):
+                write(tmp)
+                os.replace(tmp, target)
         finally:
             tmp.unlink(missing_ok=True)
         return target
+
+    def write_netcdf(self, name: str, dataset) -> Path:
+        """Write an xarray Dataset to netCDF atomically."""
+        return self._write_via_temporary(name, dataset.to_netcdf)
 
     def savefig(self, name: str, figure, dpi: int = 130) -> Path:
         """Save a matplotlib figure as PNG atomically.
 
         sealsim builds figures as :class:`matplotlib.figure.Figure` objects without pyplot, so
-        no GUI backend is needed and nothing has to be closed.
+        no GUI backend is needed and nothing has to be closed.  Matplotlib's layout warnings
+        are not shown: the figure is written either way.
         """
-        target = self.file(name)
-        tmp = target.with_name(f".{target.name}.tmp")
-        try:
-            figure.savefig(tmp, dpi=dpi, format="png", bbox_inches="tight")
-            os.replace(tmp, target)
-        finally:
-            tmp.unlink(missing_ok=True)
-        return target
+        def write(tmp: Path) -> None:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                figure.savefig(tmp, dpi=dpi, format="png", bbox_inches="tight")
+
+        return self._write_via_temporary(name, write)
 
     def final_path(self, name: str = "") -> Path:
-        """Where a file will be once the folder is committed."""
-        return self.path / name
+        """Where a file will be once the folder is committed (as the user gave the folder)."""
+        return self.requested / name
+
+
+CaseT = TypeVar("CaseT")
+ResultT = TypeVar("ResultT")
+
+
+def run_variants(
+    cases: Mapping[str, CaseT],
+    out: str | Path,
+    simulate: Callable[[str, CaseT, Callable[[float, float], None] | None], ResultT],
+    write: Callable[[ResultFolder, dict[str, ResultT]], None],
+    *,
+    force: bool = False,
+    inputs: Iterable[str | Path] = (),
+    progress: Callable[[str, float, float], None] | None = None,
+    write_each: Callable[[ResultFolder, str, ResultT], None] | None = None,
+) -> dict[str, ResultT]:
+    """Run every variant of a validated case into the result folder ``out``.
+
+    This is the skeleton of every command that writes results (``rotary run``, ``friction
+    run``, ``pneumatic run``, ``structure run``/``map``; new long-running commands -- studies,
+    fits, FMU builds -- should use it too, so the same guarantees hold):
+
+    1. :class:`ResultFolder` checks ``out`` before anything is computed (existing results
+       without ``force``, a file in the way, no write permission, an input file inside it);
+    2. the folder is locked for the whole run (a second run to ``out`` is refused), files are
+       staged in a hidden folder;
+    3. ``simulate(name, case, report)`` runs each variant; ``report(done, total)`` is forwarded
+       as ``progress(name, done, total)`` (``None`` without ``progress``); after each variant
+       ``write_each(folder, name, result)`` may write its files at once;
+    4. ``write(folder, results)`` writes the files of all variants (warnings raised while
+       writing -- matplotlib layout notes -- are not shown);
+    5. the staging folder replaces ``out`` atomically.  Any error, Ctrl-C or SIGTERM before
+       that leaves ``out`` as it was and removes the staging folder.
+
+    Parameters
+    ----------
+    cases : mapping
+        ``{variant name: case}``, already validated (names from
+        :func:`sealsim.cases.expand_variants` are safe as file names).
+    out : path-like
+        Result folder.
+    simulate, write, write_each : callable
+        See above.
+    force : bool
+        Replace results that ``out`` holds when the run starts.
+    inputs : iterable of path-like
+        Files the run reads (refused inside ``out``).
+    progress : callable, optional
+        ``progress(variant, done, total)``.
+
+    Returns
+    -------
+    dict
+        ``{variant name: result}``.
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> out = pathlib.Path(tempfile.mkdtemp()) / "squares"
+    >>> results = run_variants(
+    ...     {"two": 2, "three": 3}, out, lambda name, x, report: x * x,
+    ...     lambda folder, res: folder.write_json("summary.json", res))
+    >>> (out / "summary.json").read_text().split()
+    ['{', '"two":', '4,', '"three":', '9', '}']
+    """
+    with ResultFolder(out, force, inputs) as folder:
+        results: dict[str, ResultT] = {}
+        for name, case in cases.items():
+            report = None if progress is None else (
+                lambda done, total, n=name: progress(n, done, total))
+            results[name] = simulate(name, case, report)
+            if write_each is not None:
+                with warnings.catch_warnings():
+                    warnings.simplefilter("ignore")  # plot layout warnings: files are complete
+                    write_each(folder, name, results[name])
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            write(folder, results)
+    return results

@@ -14,29 +14,50 @@ from rich.console import Console
 from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.text import Text
 
-from sealsim.errors import SealsimError
-from sealsim.output import json_ready
+from sealsim.errors import SealsimError, Terminated
+from sealsim.output import committed_folders, json_ready
 
 console = Console(highlight=False)
 err_console = Console(stderr=True, highlight=False)
 
 
 def guarded(func):
-    """Turn sealsim errors into one printed message and the documented exit status."""
+    """Turn sealsim errors into one printed message and the documented exit status.
+
+    Bad input exits with 2, a failed model or an unwritable file with 1 (an ``OSError`` no
+    sealsim code anticipated is reported the same way, naming the file).  Ctrl-C (130) and
+    SIGTERM (143) say truthfully whether new results had already been committed.
+    """
 
     @functools.wraps(func)
     def wrapper(*args, **kwargs):
+        committed_before = len(committed_folders())
         try:
             return func(*args, **kwargs)
         except SealsimError as exc:
             kind = "input error" if exc.exit_code == 2 else "error"
-            err_console.print(Text(f"{kind}: ", style="bold red") + Text(str(exc)))
+            _fail(kind, str(exc))
             raise typer.Exit(exc.exit_code) from None
-        except KeyboardInterrupt:
-            err_console.print(Text("interrupted: no results were written", style="bold red"))
-            raise typer.Exit(130) from None
+        except OSError as exc:
+            where = f" {exc.filename!r}" if exc.filename else ""
+            _fail("error", f"cannot access{where}: {exc.strerror or exc}")
+            raise typer.Exit(1) from None
+        except KeyboardInterrupt as exc:
+            written = committed_folders()[committed_before:]
+            what = "terminated (SIGTERM)" if isinstance(exc, Terminated) else "interrupted"
+            if written:
+                text = (f"{what} after the results were written: "
+                        f"{', '.join(str(p) for p in written)} holds the complete new results")
+            else:
+                text = f"{what}: no results were written; the output folder is unchanged"
+            err_console.print(Text(text, style="bold red"))
+            raise typer.Exit(getattr(exc, "exit_code", 130)) from None
 
     return wrapper
+
+
+def _fail(kind: str, message: str) -> None:
+    err_console.print(Text(f"{kind}: ", style="bold red") + Text(message))
 
 
 def print_json(data: Any) -> None:

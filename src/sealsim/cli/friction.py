@@ -33,11 +33,12 @@ def run(
     out: Path = typer.Option(..., "--out", "-o", help="Result folder (must not hold results "
                                                       "unless --force)."),
     force: bool = typer.Option(False, "--force", help="Replace an existing result folder."),
+    quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress bar."),
 ) -> None:
     """Run a friction bench case: time series, summary, plots and the resolved case."""
     from sealsim.friction.study import run_case_file
 
-    with variant_progress("friction", False, lambda _, f, __: f"{100 * f:.0f} %") as progress:
+    with variant_progress("friction", quiet, lambda _, f, __: f"{100 * f:.0f} %") as progress:
         summary = run_case_file(case, out, force, progress)
     for text in summary["warnings"]:
         console.print(f"[yellow]warning:[/yellow] {text}")

@@ -66,7 +66,7 @@ def run(
 @structure_app.command("map")
 @guarded
 def map_(
-    case: Path = typer.Argument(..., help="Case file (TOML) with a [map] table"),
+    case: Path = typer.Argument(..., help="Case file (TOML) with a \\[map] table"),
     out: Path = typer.Option(..., "--out", "-o", help="Result folder to create"),
     force: bool = typer.Option(False, "--force", help="Replace an existing result folder"),
     workers: int = typer.Option(None, "--workers", "-j", min=1,

@@ -16,6 +16,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from sealsim import __version__
 from sealsim.cases import dump_variants_toml, load_toml
 from sealsim.friction.case import (
     build_law,
@@ -23,7 +24,7 @@ from sealsim.friction.case import (
     make_inputs,
     run_friction_case,
 )
-from sealsim.output import ResultFolder
+from sealsim.output import ResultFolder, run_variants
 from sealsim.plotting.friction import (
     last_cycles,
     plot_force_displacement,
@@ -53,11 +54,11 @@ def run_case_file(path: str | Path, out: str | Path, force: bool = False,
     Returns
     -------
     dict
-        The summary written to ``summary.json`` (``variants``: per-variant summaries,
-        ``warnings``: parameter warnings such as a non-passive LuGre set).
+        The summary written to ``summary.json`` (``title``, ``source``: the case file,
+        ``sealsim_version``, ``warnings``: parameter warnings such as a non-passive LuGre set,
+        ``variants``: per-variant summaries) -- the same keys as the other models' summaries.
     """
     case = Path(path)
-    folder = ResultFolder(out, force)            # refuse an existing folder before computing
     cases = load_friction_cases(load_toml(case), source=f"case file {case.name!r}")
     laws, notes = {}, []
     for name, c in cases.items():
@@ -67,14 +68,27 @@ def run_case_file(path: str | Path, out: str | Path, force: bool = False,
         for w in caught:
             if str(w.message) not in notes:
                 notes.append(str(w.message))
+    title = next(iter(cases.values())).title or case.stem
+    summary = {"title": title, "source": str(case), "sealsim_version": __version__,
+               "warnings": notes, "variants": {}}
 
-    results, summaries = {}, {}
-    for name, c in cases.items():
-        callback = None if progress is None else (lambda f, n=name: progress(n, f, 1.0))
-        results[name], summaries[name] = run_friction_case(c, laws[name], progress=callback)
-        if progress is not None:
-            progress(name, 1.0, 1.0)
+    def simulate(name, c, report):
+        result, summary["variants"][name] = run_friction_case(c, laws[name], progress=(
+            None if report is None else lambda f: report(f, 1.0)))
+        if report is not None:
+            report(1.0, 1.0)
+        return result
 
+    def write(folder: ResultFolder, results: dict) -> None:
+        _write_results(folder, cases, laws, results, summary)
+
+    run_variants(cases, out, simulate, write, force=force, inputs=[case], progress=progress)
+    return summary
+
+
+def _write_results(folder: ResultFolder, cases: dict, laws: dict, results: dict,
+                   summary: dict) -> None:
+    """Table, summary, figures and resolved case of the variants of a friction case."""
     steady_f, steady_theta = {}, {}
     for name, c in cases.items():
         if not c.output.steady_curve:
@@ -88,7 +102,7 @@ def run_case_file(path: str | Path, out: str | Path, force: bool = False,
         if "theta" in law.state_names:
             steady_theta[name] = (v, law.steady_state(v, inputs)[0])
 
-    title = next(iter(cases.values())).title or case.stem
+    title = summary["title"]
     max_rows = min(c.output.max_rows for c in cases.values())
     shown = {name: r.decimated(max_rows) for name, r in results.items()}
     frames = []
@@ -97,23 +111,20 @@ def run_case_file(path: str | Path, out: str | Path, force: bool = False,
         frame.insert(0, "variant", name)
         frames.append(frame)
     table = pd.concat(frames, ignore_index=True)
-    summary = {"title": title, "case_file": str(case), "warnings": notes,
-               "variants": summaries}
 
-    with folder:
-        folder.write_csv("timeseries.csv", table, float_format="%.10g")
-        folder.write_json("summary.json", summary)
-        loops = last_cycles(shown)
-        steady_f = {k2: steady_f[k1] for k1, k2 in zip(shown, loops) if k1 in steady_f}
-        steady_theta = {k2: steady_theta[k1] for k1, k2 in zip(shown, loops)
-                        if k1 in steady_theta}
-        folder.savefig("force_velocity.png", plot_force_velocity(loops, steady_f, title))
-        fig = plot_theta_velocity(loops, steady_theta, title)
-        if fig is not None:
-            folder.savefig("theta_velocity.png", fig)
-        folder.savefig("force_displacement.png", plot_force_displacement(loops, title))
-        folder.savefig("timeseries.png", plot_timeseries(shown, title))
-        folder.write_text("case_resolved.toml", dump_variants_toml(
-            cases, header=f"Resolved case of {case.name} (all defaults filled in); "
-                          "rerun with: sealsim friction run THIS_FILE --out DIR"))
-    return summary
+    folder.write_csv("timeseries.csv", table, float_format="%.10g")
+    folder.write_json("summary.json", summary)
+    loops = last_cycles(shown)
+    steady_f = {k2: steady_f[k1] for k1, k2 in zip(shown, loops) if k1 in steady_f}
+    steady_theta = {k2: steady_theta[k1] for k1, k2 in zip(shown, loops)
+                    if k1 in steady_theta}
+    folder.savefig("force_velocity.png", plot_force_velocity(loops, steady_f, title))
+    fig = plot_theta_velocity(loops, steady_theta, title)
+    if fig is not None:
+        folder.savefig("theta_velocity.png", fig)
+    folder.savefig("force_displacement.png", plot_force_displacement(loops, title))
+    folder.savefig("timeseries.png", plot_timeseries(shown, title))
+    folder.write_text("case_resolved.toml", dump_variants_toml(
+        cases, header=f"Resolved case of {summary['source']} written by sealsim "
+                      f"{__version__} (all defaults filled in); "
+                      "rerun with: sealsim friction run THIS_FILE --out DIR"))

@@ -85,6 +85,23 @@ __all__ = [
 ]
 
 
+#: Temperatures of air, cylinder body and seals [K]: -60 ... +200 degC.  It covers the service
+#: ranges of every seal elastomer in the catalogue (VMQ from -50 degC, FKM up to +200 degC) and
+#: keeps the model's ideal gas with constant heat capacities honest: c_p of air is 1.003
+#: kJ/(kg K) at 250 K and 1.025 at 475 K (Cengel & Boles, Thermodynamics, Table A-2b), i.e.
+#: within 2 % of the constant value.  Beyond it the case is a typo (5000 K), not a cylinder.
+TEMPERATURE_MIN, TEMPERATURE_MAX = 213.15, 473.15
+#: Longest simulated time without asking [s]; ``solver.max_duration`` raises it.
+MAX_DURATION = 600.0
+#: Most output samples per variant without asking; ``output.max_samples`` raises it (each
+#: sample is a row of about 25 numbers in memory and in timeseries.csv).
+MAX_SAMPLES = 1_000_000
+
+
+def _temperature():
+    return Q("temperature", ge=TEMPERATURE_MIN, le=TEMPERATURE_MAX)
+
+
 # -- cylinder -------------------------------------------------------------------------------
 class EndStopModel(CaseModel):
     """Elastic end stops (bumper rings): stiff spring–damper contacts."""
@@ -119,8 +136,8 @@ class CylinderModel(CaseModel):
     dead_volume_rod: Q("volume", gt=0)
     piston_mass: Q("mass", gt=0)
     incline: Q("dimensionless", ge=-math.pi / 2, le=math.pi / 2) = 0.0
-    temperature: Q("temperature", gt=0) | None = None
-    seal_temperature: Q("temperature", gt=0) | None = None
+    temperature: _temperature() | None = None
+    seal_temperature: _temperature() | None = None
     end_stops: EndStopModel = EndStopModel()
     cushion_cap: CushionModel | None = None
     cushion_rod: CushionModel | None = None
@@ -153,8 +170,8 @@ class AirModel(CaseModel):
 
     supply_pressure: Q("pressure", gt=0)
     ambient_pressure: Q("pressure", gt=0) = 101325.0
-    temperature: Q("temperature", gt=0) = 293.15
-    supply_temperature: Q("temperature", gt=0) | None = None
+    temperature: _temperature() = 293.15
+    supply_temperature: _temperature() | None = None
     heat_transfer_coefficient: Q("heat_transfer_coefficient", ge=0) = 30.0
 
     @property
@@ -274,7 +291,7 @@ class SealModel(CaseModel):
     location: Literal["piston", "rod", "wiper"]
     friction: LawParameters
     map: MapModel | None = None
-    temperature: Q("temperature", gt=0) | None = None
+    temperature: _temperature() | None = None
 
 
 # -- numerics and output ----------------------------------------------------------------------
@@ -284,12 +301,18 @@ class SolverModel(CaseModel):
     method: Literal["LSODA", "BDF", "Radau"] = "LSODA"
     rtol: float = Field(1e-5, gt=0, le=1e-2)
     max_step: Q("time", gt=0) = 0.05
+    max_duration: Q("time", gt=0) = Field(MAX_DURATION, description=(
+        "longest controller.duration that is run (default 600 s, several minutes of "
+        "computing): a guard against a unit slip; raise it for longer runs"))
 
 
 class OutputModel(CaseModel):
     """What is written."""
 
     sample_interval: Q("time", gt=0) = 1e-3
+    max_samples: int = Field(MAX_SAMPLES, gt=0, description=(
+        "most samples (rows of timeseries.csv) per variant, controller.duration / "
+        "sample_interval + 1; raise it, or choose a longer sample_interval"))
 
 
 class PneumaticCase(CaseModel):
@@ -311,19 +334,31 @@ class PneumaticCase(CaseModel):
         names = [s.name for s in self.seals]
         dupes = sorted({n for n in names if names.count(n) > 1})
         if dupes:
-            raise ValueError(f"seal names must be unique, repeated: {', '.join(dupes)}")
+            raise ValueError(f"seals: the names must be unique, repeated: {', '.join(dupes)}")
         if self.valve.type == "5/2":
             used = ({s.command for s in self.controller.steps} | {
                 self.controller.initial_command} if self.controller.mode == "cycle"
                 else {self.controller.command})
             if "centre" in used:
-                raise ValueError("command 'centre' needs a 5/3 valve (valve.type = '5/3')")
+                raise ValueError("controller: command 'centre' needs a 5/3 valve "
+                                 "(valve.type = '5/3')")
         if self.initial_position is not None and not (
                 0.0 <= self.initial_position <= self.cylinder.stroke):
             raise ValueError(f"initial_position ({self.initial_position * 1e3:g} mm) must lie "
-                             f"within the stroke (0 ... {self.cylinder.stroke * 1e3:g} mm)")
-        if self.output.sample_interval > self.controller.duration:
+                             f"within cylinder.stroke (0 ... {self.cylinder.stroke * 1e3:g} mm)")
+        duration, interval = self.controller.duration, self.output.sample_interval
+        if interval > duration:
             raise ValueError("output.sample_interval must not exceed controller.duration")
+        if duration > self.solver.max_duration:
+            raise ValueError(f"controller.duration ({duration:.6g} s) exceeds solver.max_duration "
+                             f"({self.solver.max_duration:.6g} s); raise solver.max_duration "
+                             f"(e.g. max_duration = '{duration:.3g} s') for a longer run")
+        samples = duration / interval + 1
+        if samples > self.output.max_samples:
+            raise ValueError(f"controller.duration / output.sample_interval gives {samples:.3g} "
+                             f"samples, more than output.max_samples ({self.output.max_samples}"
+                             "); choose a longer output.sample_interval or raise "
+                             "output.max_samples")
         return self
 
 

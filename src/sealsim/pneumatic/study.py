@@ -18,7 +18,7 @@ import pandas as pd
 
 from sealsim import __version__
 from sealsim.cases import dump_variants_toml
-from sealsim.output import ResultFolder
+from sealsim.output import ResultFolder, run_variants
 from sealsim.pneumatic.case import PneumaticCase, build_seals, load_pneumatic_case_file
 from sealsim.pneumatic.simulation import TIMESERIES_COLUMNS, PneumaticResult, simulate
 
@@ -155,14 +155,16 @@ def run_cases(cases: dict[str, PneumaticCase], base_dir: str | Path = ".",
               ) -> dict[str, PneumaticResult]:
     """Simulate every variant; ``progress(variant, simulated_time, end_time)`` (and
     ``progress("<variant>: FE map", done, total)`` while a seal's FE map is built)."""
-    results = {}
-    for name, case in cases.items():
-        maps = None if progress is None else (
-            lambda done, total, n=name: progress(f"{n}: FE map", done, total))
-        seals = build_seals(case, base_dir, maps)
-        callback = None if progress is None else (lambda t, end, n=name: progress(n, t, end))
-        results[name] = simulate(case, seals, base_dir, progress=callback)
-    return results
+    return {name: _run_variant(name, case, base_dir, progress) for name, case in cases.items()}
+
+
+def _run_variant(name: str, case: PneumaticCase, base_dir: str | Path,
+                 progress: Callable[[str, float, float], None] | None) -> PneumaticResult:
+    maps = None if progress is None else (
+        lambda done, total: progress(f"{name}: FE map", done, total))
+    seals = build_seals(case, base_dir, maps)
+    callback = None if progress is None else (lambda t, end: progress(name, t, end))
+    return simulate(case, seals, base_dir, progress=callback)
 
 
 def run_case_file(path: str | Path, out: str | Path, force: bool = False,
@@ -183,11 +185,10 @@ def run_case_file(path: str | Path, out: str | Path, force: bool = False,
     """
     path = Path(path)
     cases = load_pneumatic_case_file(path)
-    folder = ResultFolder(out, force)  # refuse an existing folder before computing
-    results = run_cases(cases, path.parent, progress)
-    with folder:
-        write_results(folder, results, source=str(path))
-    return results
+    return run_variants(
+        cases, out, lambda name, case, _: _run_variant(name, case, path.parent, progress),
+        lambda folder, results: write_results(folder, results, source=str(path)),
+        force=force, inputs=[path])
 
 
 def write_results(folder: ResultFolder, results: dict[str, PneumaticResult],
@@ -220,10 +221,6 @@ def write_results(folder: ResultFolder, results: dict[str, PneumaticResult],
     folder.savefig("friction_stroke.png", friction_stroke_figure(frames, strokes, title))
     folder.savefig("friction_velocity.png", friction_velocity_figure(frames, title))
     for name, r in results.items():
-        folder.savefig(f"timeseries_{_safe(name)}.png",
+        folder.savefig(f"timeseries_{name}.png",
                        timeseries_figure(r.timeseries, r.seal_names,
                                          f"{title} -- {name}" if title else name))
-
-
-def _safe(name: str) -> str:
-    return "".join(ch if ch.isalnum() or ch in "-_." else "_" for ch in name)

@@ -1841,6 +1841,6 @@ def get_elastomer(name: str) -> Elastomer:
     close = difflib.get_close_matches(key, list(cat), n=3, cutoff=0.4)
     hint = f" Did you mean {', '.join(close)}?" if close else ""
     raise InputError(
-        f"unknown elastomer {name!r}.{hint} Available: {', '.join(cat)}; define others with "
-        f"Elastomer.from_dict or load_elastomer_file"
+        f"unknown elastomer {name!r}.{hint} Available: {', '.join(cat)} ('sealsim material "
+        f"list'); define others in a file given with --material-file"
     )

@@ -1187,6 +1187,7 @@ def get_oil(name: str | Oil, extra: Mapping[str, Oil] | None = None) -> Oil:
     close = difflib.get_close_matches(key, list(shown), n=5, cutoff=0.6)
     hint = (f"; close matches: {', '.join(repr(shown[c]) for c in close)}" if close
             else "")
-    raise InputError(f"unknown oil {name!r}{hint}; see sealsim.properties.oils.list_oils() for "
-                     "the catalogue, or load your own with load_oil_file()")
+    raise InputError(f"unknown oil {name!r}{hint}; 'sealsim oil list' shows the catalogue; "
+                     "give your own oil with nu40, nu100 and density15 in the case file, or "
+                     "with --oil-file")
 

@@ -226,12 +226,20 @@ class DutyStep(CaseModel):
         return self
 
 
+#: Longest duty cycle run without asking [s] (about 11.6 days); ``duty.max_duration`` raises it.
+MAX_DUTY_DURATION = 1.0e6
+
+
 class DutyCycle(CaseModel):
     """Speed over time: a list of steps, or a CSV file with columns time_s, speed_rpm."""
 
     steps: list[DutyStep] | None = None
     csv: str | None = Field(None, description="CSV with columns time_s, speed_rpm "
                                               "(relative paths: from the case file)")
+    max_duration: Q("time", gt=0) = Field(MAX_DUTY_DURATION, description=(
+        "longest duty cycle that is run (default 1e6 s, about 11.6 days, a few minutes of "
+        "computing): a guard against a unit slip such as '1000 h' for '1000 s'; raise it "
+        "for longer runs"))
 
     @model_validator(mode="after")
     def _one_source(self):
@@ -239,7 +247,18 @@ class DutyCycle(CaseModel):
             raise ValueError("give either steps = [...] or csv = 'file.csv'")
         if self.steps is not None and not self.steps:
             raise ValueError("steps must not be empty")
+        if self.steps is not None:
+            too_long = self._too_long(sum(s.duration for s in self.steps), "the steps last")
+            if too_long:
+                raise ValueError(too_long)
         return self
+
+    def _too_long(self, total: float, what: str) -> str:
+        if total <= self.max_duration:
+            return ""
+        return (f"{what} {total:.6g} s in total, more than duty.max_duration = "
+                f"{self.max_duration:.6g} s; raise duty.max_duration (e.g. max_duration = "
+                f"'{total:.3g} s') to run it")
 
     def profile(self, base_dir: Path | None = None) -> tuple[np.ndarray, np.ndarray,
                                                               list[tuple[float, float]]]:
@@ -270,28 +289,55 @@ class DutyCycle(CaseModel):
                 t += step.duration
                 previous = step.speed
             return np.array(times), np.array(speeds), steps
-        return _read_duty_csv(Path(self.csv) if base_dir is None else base_dir / self.csv)
+        path = Path(self.csv) if base_dir is None else base_dir / self.csv
+        times, speeds, steps = _read_duty_csv(path)
+        too_long = self._too_long(float(times[-1]), f"the CSV {str(path)!r} lasts")
+        if too_long:
+            raise InputError(f"duty: {too_long}")
+        return times, speeds, steps
 
 
 def _read_duty_csv(path: Path):
+    """Break points, speeds and constant-speed steps of a duty-cycle CSV (every problem an
+    InputError naming the file and row)."""
+    where = f"duty.csv: {str(path)!r}"
     try:
-        with path.open(newline="") as fh:
-            rows = list(csv.DictReader(fh))
+        # utf-8-sig: a byte-order mark (spreadsheet export) is not part of the first header
+        with path.open(newline="", encoding="utf-8-sig") as fh:
+            reader = csv.DictReader(fh)
+            header = reader.fieldnames or []
+            rows = list(reader)
     except FileNotFoundError:
-        raise InputError(f"duty.csv: file {str(path)!r} does not exist") from None
-    if not rows or not {"time_s", "speed_rpm"} <= set(rows[0]):
-        raise InputError(f"duty.csv: {str(path)!r} needs the columns time_s, speed_rpm")
+        raise InputError(f"{where} does not exist") from None
+    except IsADirectoryError:
+        raise InputError(f"{where} is a folder, expected a CSV file") from None
+    except UnicodeDecodeError:
+        raise InputError(f"{where} is not a UTF-8 text file (a CSV with columns time_s, "
+                         "speed_rpm)") from None
+    except (OSError, csv.Error) as exc:  # no permission, NUL bytes of a binary file
+        raise InputError(f"{where} cannot be read as CSV: "
+                         f"{getattr(exc, 'strerror', None) or exc}") from None
+    header = [h.strip() for h in header if h is not None]
+    if not {"time_s", "speed_rpm"} <= set(header):
+        raise InputError(f"{where} needs the columns time_s, speed_rpm; its header is "
+                         f"{', '.join(header) or '(empty)'}")
+    if not rows:
+        raise InputError(f"{where} has a header but no data rows")
+    rows = [{(k or "").strip(): v for k, v in r.items()} for r in rows]
     try:
         times = np.array([float(r["time_s"]) for r in rows])
         rpm = np.array([float(r["speed_rpm"]) for r in rows])
     except (TypeError, ValueError) as exc:
-        raise InputError(f"duty.csv: {str(path)!r} has a non-numeric value ({exc})") from None
+        raise InputError(f"{where} has a non-numeric or missing value ({exc})") from None
     if len(times) < 2 or not np.all(np.isfinite(times)) or not np.all(np.isfinite(rpm)):
-        raise InputError(f"duty.csv: {str(path)!r} needs at least two finite rows")
+        raise InputError(f"{where} needs at least two finite rows")
     if times[0] != 0 or np.any(np.diff(times) < 0):
-        raise InputError(f"duty.csv: time_s in {str(path)!r} must start at 0 and not decrease")
+        raise InputError(f"{where}: time_s must start at 0 and not decrease")
+    if times[-1] <= 0:
+        raise InputError(f"{where}: every row is at time_s = 0; the duty cycle needs a "
+                         "duration (time_s of the last row > 0)")
     if np.any(rpm < 0) or np.any(rpm > 5000 * 60 / (2 * np.pi)):
-        raise InputError(f"duty.csv: speed_rpm in {str(path)!r} must be within 0-47746 rpm")
+        raise InputError(f"{where}: speed_rpm must be within 0-47746 rpm")
     speeds = rpm * np.pi / 30.0
     steps, start = [], 0
     for k in range(1, len(times) + 1):  # plateaus of constant speed are the summary steps
@@ -299,6 +345,8 @@ def _read_duty_csv(path: Path):
             if times[k - 1] > times[start]:
                 steps.append((float(times[start]), float(times[k - 1])))
             start = k
+    if not steps:  # a measured trace without exact plateaus: summarise it as one step
+        steps = [(0.0, float(times[-1]))]
     return times, speeds, steps
 
 

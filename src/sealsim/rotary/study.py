@@ -15,7 +15,7 @@ import pandas as pd
 
 from sealsim import __version__
 from sealsim.cases import dump_variants_toml, expand_variants, load_toml
-from sealsim.output import ResultFolder
+from sealsim.output import ResultFolder, run_variants
 from sealsim.plotting.rotary import cycle_figure, stribeck_figure, variants_figure
 from sealsim.rotary.case import RotaryCase
 from sealsim.rotary.simulation import RotaryResult, friction_map, simulate
@@ -41,6 +41,9 @@ def run_case_file(path: str | Path, out: str | Path, force: bool = False,
                   ) -> dict[str, RotaryResult]:
     """Simulate every variant of a case file and write the result folder ``out``.
 
+    The case, its duty-cycle CSV files and the output location are all checked before the
+    first simulation starts (see :func:`sealsim.output.run_variants`).
+
     Parameters
     ----------
     path : str or Path
@@ -54,14 +57,16 @@ def run_case_file(path: str | Path, out: str | Path, force: bool = False,
     """
     path = Path(path)
     cases = load_rotary_case(path)
-    folder = ResultFolder(out, force)  # refuse an existing folder before computing
-    results = {}
-    for name, case in cases.items():
-        callback = None if progress is None else (lambda t, end, n=name: progress(n, t, end))
-        results[name] = simulate(case, base_dir=path.parent, progress=callback)
-    with folder:
-        write_results(folder, results, source=str(path))
-    return results
+    inputs = [path]
+    for case in cases.values():  # read every duty CSV now: a bad one is refused up front
+        case.duty.profile(path.parent)
+        if case.duty.csv is not None:
+            inputs.append(path.parent / case.duty.csv)
+    return run_variants(
+        cases, out, lambda name, case, report: simulate(case, base_dir=path.parent,
+                                                        progress=report),
+        lambda folder, results: write_results(folder, results, source=str(path)),
+        force=force, inputs=inputs, progress=progress)
 
 
 def write_results(folder: ResultFolder, results: dict[str, RotaryResult], source: str = "") -> None:

@@ -221,46 +221,50 @@ def run_case_file(path, out, force: bool = False, progress=None) -> dict:
     progress : callable, optional
         ``progress(variant, done, total)``.
     """
-    from sealsim.output import ResultFolder
+    from sealsim.output import run_variants
+
+    cases = _load_cases(path)
+    many = len(cases) > 1
+
+    def write_variant(folder, name, result):
+        _write_variant(folder, f"{name}/" if many else "", name, cases[name], result)
+
+    return run_variants(
+        cases, out, lambda name, case, report: run_case(case, progress=report),
+        lambda folder, runs: folder.write_text("case_resolved.toml", _resolved_text(cases)),
+        force=force, inputs=[path], progress=progress, write_each=write_variant)
+
+
+def _write_variant(folder, prefix: str, name: str, case: StructureCase, result: RunResult):
+    """Tables, figures and summary of one solved variant (into sub-folder ``prefix``)."""
     from sealsim.plotting.structure import plot_section, plot_states
     from sealsim.structure.results import profiles_frame, results_frame
 
-    cases = _load_cases(path)
-    folder = ResultFolder(out, force)
-    runs = {}
-    with folder:
-        for name, case in cases.items():
-            prefix = "" if len(cases) == 1 else f"{name}/"
-            cb = None if progress is None else (lambda d, t, n=name: progress(n, d, t))
-            result = run_case(case, progress=cb)
-            runs[name] = result
-            frame = results_frame(result.states)
-            folder.write_csv(prefix + "result.csv", frame)
-            folder.write_csv(prefix + "profiles.csv", profiles_frame(result.states))
-            title = case.title or f"{case.seal.cord_diameter * 1e3:g} mm O-ring, " \
-                                  f"{case.gland.arrangement} seal, {case.material.elastomer}"
-            installed = len(case.load.squeeze) - 1 + (1 if case.load.hold_time > 0 else 0)
-            if case.load.record_increments:
-                installed = case.load.squeeze_increments - 1
-            first = result.states[min(installed, len(result.states) - 1)] \
-                if len(result.states) > 1 else result.states[0]
-            folder.savefig(prefix + "section_installed.png", plot_section(first, title))
-            folder.savefig(prefix + "section_final.png", plot_section(result.states[-1], title))
-            folder.savefig(prefix + "states.png", plot_states(frame, title=title))
-            last = frame.iloc[-1]
-            folder.write_json(prefix + "summary.json", {
-                "variant": name,
-                "dofs": result.ndofs,
-                "wall_time_s": round(result.wall_time, 3),
-                "load_states": len(frame),
-                "final": {k: float(last[k]) for k in SUMMARY_KEYS},
-                "max_equilibrium_error": float(max(
-                    max(abs(s.axial_imbalance), abs(s.radial_imbalance))
-                    for s in result.states)),
-                "max_penetration_um": float(frame["max_penetration_um"].max()),
-            })
-        folder.write_text("case_resolved.toml", _resolved_text(cases))
-    return runs
+    frame = results_frame(result.states)
+    folder.write_csv(prefix + "result.csv", frame)
+    folder.write_csv(prefix + "profiles.csv", profiles_frame(result.states))
+    title = case.title or f"{case.seal.cord_diameter * 1e3:g} mm O-ring, " \
+                          f"{case.gland.arrangement} seal, {case.material.elastomer}"
+    installed = len(case.load.squeeze) - 1 + (1 if case.load.hold_time > 0 else 0)
+    if case.load.record_increments:
+        installed = case.load.squeeze_increments - 1
+    first = result.states[min(installed, len(result.states) - 1)] \
+        if len(result.states) > 1 else result.states[0]
+    folder.savefig(prefix + "section_installed.png", plot_section(first, title))
+    folder.savefig(prefix + "section_final.png", plot_section(result.states[-1], title))
+    folder.savefig(prefix + "states.png", plot_states(frame, title=title))
+    last = frame.iloc[-1]
+    folder.write_json(prefix + "summary.json", {
+        "variant": name,
+        "dofs": result.ndofs,
+        "wall_time_s": round(result.wall_time, 3),
+        "load_states": len(frame),
+        "final": {k: float(last[k]) for k in SUMMARY_KEYS},
+        "max_equilibrium_error": float(max(
+            max(abs(s.axial_imbalance), abs(s.radial_imbalance))
+            for s in result.states)),
+        "max_penetration_um": float(frame["max_penetration_um"].max()),
+    })
 
 
 def map_case_file(path, out, force: bool = False, progress=None, workers: int | None = None):
@@ -270,7 +274,7 @@ def map_case_file(path, out, force: bool = False, progress=None, workers: int | 
     ``map.csv`` (flat table in engineering units), ``map.png`` and ``case_resolved.toml``.
     Only cases without variants.
     """
-    from sealsim.output import ResultFolder
+    from sealsim.output import run_variants
     from sealsim.plotting.structure import plot_map
     from sealsim.structure.maps import compute_map
 
@@ -282,10 +286,13 @@ def map_case_file(path, out, force: bool = False, progress=None, workers: int | 
     if case.map is None:
         raise InputError(f"{path}: the case has no [map] table with map.pressure and "
                          "map.temperature grids")
-    folder = ResultFolder(out, force)
     text = _resolved_text(cases)
-    with folder:
-        ds = compute_map(case, workers=workers, progress=progress, case_text=text)
+
+    def compute(name, case, report):
+        return compute_map(case, workers=workers, progress=progress, case_text=text)
+
+    def write(folder, results):
+        ds = results["map"]
         folder.write_netcdf("map.nc", ds)
         flat = ds.to_dataframe().reset_index()
         table = flat.assign(
@@ -301,7 +308,8 @@ def map_case_file(path, out, force: bool = False, progress=None, workers: int | 
             name = "map.png" if ds.sizes["squeeze"] == 1 else f"map_squeeze{i}.png"
             folder.savefig(name, plot_map(ds, i, title=case.title))
         folder.write_text("case_resolved.toml", text)
-    return ds
+
+    return run_variants({"map": case}, out, compute, write, force=force, inputs=[path])["map"]
 
 
 __all__ += ["map_case_file", "run_case_file"]
