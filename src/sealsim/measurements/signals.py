@@ -111,7 +111,7 @@ def sliding_phases(time, velocity, threshold=None, min_duration=0.5, settle=0.2)
     time, velocity : array_like
         Samples [s], [m/s].
     threshold : float, optional
-        Speed above which the contact slides [m/s]; default 30 % of the 90th percentile of |v|.
+        Speed above which the contact slides [m/s]; default 10 % of the 90th percentile of |v|.
     min_duration : float
         Shortest phase kept [s].
     settle : float
@@ -139,7 +139,7 @@ def sliding_phases(time, velocity, threshold=None, min_duration=0.5, settle=0.2)
         raise InputError(f"sliding_phases: settle must be in [0, 1), got {settle!r}")
     speed = np.abs(v)
     if threshold is None:
-        threshold = 0.3 * float(np.percentile(speed, 90)) if speed.size else 0.0
+        threshold = 0.1 * float(np.percentile(speed, 90)) if speed.size else 0.0
     sliding = (speed > threshold) & (threshold > 0)
     direction = np.where(sliding, np.sign(v), 0).astype(int)
     change = np.flatnonzero(np.diff(direction)) + 1
