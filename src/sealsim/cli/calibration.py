@@ -1,4 +1,5 @@
-"""Calibration commands, registered on the model apps: ``sealsim friction fit``.
+"""Calibration commands, registered on the model apps: ``sealsim friction fit``,
+``sealsim pneumatic compare``.
 
 The commands hold no physics: :mod:`sealsim.calibration` fits and writes the results; the
 command shows progress, prints the fitted values, the prediction errors and why a fit failed.
@@ -12,6 +13,7 @@ import typer
 
 from sealsim.cli._common import console, err_console, guarded, variant_progress
 from sealsim.cli.friction import friction_app
+from sealsim.cli.pneumatic import pneumatic_app
 
 
 @friction_app.command("fit")
@@ -45,3 +47,25 @@ def fit(
         for text in summary["failure"]:
             err_console.print(f"[bold red]fit failed:[/bold red] {text}")
         raise typer.Exit(1)
+
+
+@pneumatic_app.command("compare")
+@guarded
+def compare(
+    compare_file: Path = typer.Argument(..., help="Compare file (TOML): the pneumatic case and "
+                                                  "the measured x(t), p1(t), p2(t)."),
+    out: Path = typer.Option(..., "--out", "-o", help="Result folder (must not hold results "
+                                                      "unless --force)."),
+    force: bool = typer.Option(False, "--force", help="Replace an existing result folder."),
+    quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress bar."),
+) -> None:
+    """Simulate a cylinder case and compare it with a measured run (RMSE, R², overlays)."""
+    from sealsim.calibration.pneumatic_compare import run_pneumatic_compare_file
+
+    with variant_progress("pneumatic", quiet, lambda _, t, e: f"{t:.3g}/{e:.3g} s") as progress:
+        report = run_pneumatic_compare_file(compare_file, out, force, progress)
+    for name, s in report["signals"].items():
+        r2 = "-" if s["r2"] is None else f"{s['r2']:.4f}"
+        console.print(f"{name}: RMSE {s['rmse']:.4g} {s['unit']}, max error "
+                      f"{s['max_abs_error']:.4g} {s['unit']}, R² {r2}")
+    console.print(f"results written to {out}")

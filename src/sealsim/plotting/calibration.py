@@ -7,7 +7,7 @@ import numpy as np
 
 from sealsim.plotting import new_figure
 
-__all__ = ["plot_overlay", "plot_parity"]
+__all__ = ["plot_overlay", "plot_parity", "plot_signals"]
 
 
 def plot_overlay(name: str, role: str, time, position, measured, predicted, title: str = ""):
@@ -76,4 +76,28 @@ def plot_parity(points, title: str = "", quantity: str = "friction level", unit:
     ax.legend(loc="upper left", fontsize=8)
     ax.set_title((f"{title}\n" if title else "") + f"R² = {r2:.3f}" if np.isfinite(r2)
                  else title)
+    return fig
+
+
+def plot_signals(time, curves, title: str = ""):
+    """Measured and model signals over time, one panel each.
+
+    Parameters
+    ----------
+    time : array_like
+        [s].
+    curves : dict of name -> (measured, model, unit)
+        Signals in display units.
+    """
+    fig, axes = new_figure(1, len(curves), width=8.0, height=2.4 * len(curves), sharex=True,
+                           squeeze=False)
+    for ax, (name, (meas, model, unit)) in zip(axes[:, 0], curves.items()):
+        ax.plot(time, meas, lw=0.8, color="0.45", label="measured")
+        ax.plot(time, model, lw=1.0, color="C3", label="model")
+        ax.set_ylabel(f"{name.replace('_', ' ')} [{unit}]")
+        ax.grid(alpha=0.3)
+    axes[0, 0].legend(loc="best")
+    axes[-1, 0].set_xlabel("time [s]")
+    if title:
+        fig.suptitle(title)
     return fig
