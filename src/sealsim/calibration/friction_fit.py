@@ -305,7 +305,7 @@ def fit_friction(case: FrictionFitCase, runs: list[PreparedRun], progress=None) 
         hi = np.array([math.log(bounds[i][1]) if lg else bounds[i][1]
                        for i, lg in zip(idx, logs)])
         x0 = np.clip(to_x(values), lo, hi)
-        n_res = 1
+        n_res = 1                     # size of the penalty vector, set by the first evaluation
         n_res = residuals(x0).size
         if n_res < len(idx):
             raise InputError(f"stage {stage!r}: {n_res} data points cannot determine "
