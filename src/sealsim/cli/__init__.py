@@ -18,6 +18,8 @@ from sealsim.cli.properties import material_app, oil_app
 from sealsim.cli.rotary import rotary_app
 from sealsim.cli.structure import structure_app
 
+import sealsim.cli.calibration  # noqa: E402,F401  (registers the fit/compare commands)
+
 app = typer.Typer(
     name="sealsim",
     help="sealsim -- friction, temperature and dynamics of elastomeric seals.",

@@ -1,0 +1,17 @@
+"""Calibration and validation against measurements: identify friction-law parameters from rig
+data and report how well the model predicts runs it was not fitted to.
+
+* :mod:`.case` -- fit case files (law, contact source, parameters with bounds and stages,
+  measurements with role fit/validate);
+* :mod:`.friction_fit` -- the model of a measured run and the staged robust fit;
+* :mod:`.statistics` -- standard errors, correlations, identifiability from the Jacobian;
+* :mod:`.study` -- a case file to a result folder (``sealsim friction fit``).
+"""
+
+from sealsim.calibration.case import FrictionFitCase
+from sealsim.calibration.friction_fit import FitResult, fit_friction, predict_run, prepare_run
+from sealsim.calibration.statistics import parameter_statistics
+from sealsim.calibration.study import load_fit_case, run_friction_fit_file
+
+__all__ = ["FitResult", "FrictionFitCase", "fit_friction", "load_fit_case",
+           "parameter_statistics", "predict_run", "prepare_run", "run_friction_fit_file"]

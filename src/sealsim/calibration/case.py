@@ -1,0 +1,193 @@
+"""Friction-fit case files: one friction law, its contact source, the parameters to fit and the
+measurements (see ``examples/calibration/tudelft_oring.toml``)::
+
+    title = "O-ring 25 mm, TU Delft rig"
+
+    [friction]                        # any law of sealsim.friction with its starting values
+    law = "theta"
+    parameter_set = "pneumatic_demo"
+    bristle_stiffness = "5000 N/m"
+
+    [contact]                         # where F_N and b come from (laws that use them: Θ)
+    location = "piston"               # the seal separates the pressurised side from ambient
+    sliding_diameter = "25 mm"
+    temperature = "20 degC"
+    map = { structure_case = "oring_25_piston.toml" }   # or file = "map.nc", or analytic = {...}
+
+    [fit]
+    loss = "soft_l1"                  # robust loss of scipy.optimize.least_squares
+    f_scale = "0.5 N"                 # residual size where the robust loss sets in
+    parameters = [
+      { name = "f_a", bounds = [0.001, 2.0], stage = "steady" },
+      { name = "bristle_stiffness", bounds = ["100 N/m", "1e6 N/m"], stage = "dynamic" },
+    ]
+    tied = { f_b = "f_a" }            # optional: law fields that follow a fitted parameter
+
+    [[measurements]]
+    name = "1 bar"
+    file = "../data/tudelft_pneumatic_friction/O-ring_1bar.csv"
+    format = "tudelft"                # or columns = { time = { column = 1, unit = "ms" }, ... }
+    bore = "25 mm"
+    role = "fit"                      # or "validate": predicted, never fitted
+
+Stages: ``steady`` parameters are fitted first to the friction level of every sliding phase
+(the steady sweep); ``dynamic`` parameters then to the whole friction time series with the
+steady ones fixed (the literature's staged identification, e.g. Canudas de Wit et al. 1995,
+Heipl & Murrenhoff).
+"""
+
+from __future__ import annotations
+
+from typing import Any, Literal
+
+from pydantic import Field, TypeAdapter, model_validator
+
+from sealsim.cases import CaseModel, Q
+from sealsim.errors import InputError
+from sealsim.friction.case import LawParameters
+from sealsim.measurements.readers import QUANTITIES, ColumnSpec
+from sealsim.pneumatic.case import MapModel
+
+__all__ = ["ContactModel", "FitParameter", "FrictionFitCase", "MeasurementModel",
+           "parse_law_value"]
+
+
+class FitParameter(CaseModel):
+    """A parameter of the law to fit: its field name, bounds (quantities) and stage."""
+
+    name: str
+    bounds: tuple[Any, Any]
+    initial: Any = None
+    stage: Literal["steady", "dynamic"] = "steady"
+
+
+class FitSettings(CaseModel):
+    """Robust bounded least squares (scipy.optimize.least_squares, method 'trf')."""
+
+    loss: Literal["linear", "soft_l1", "huber", "cauchy", "arctan"] = "soft_l1"
+    f_scale: Q("force", gt=0) = 0.5
+    max_evaluations: int = Field(200, ge=5, le=100000)
+    max_samples: int = Field(4000, ge=50, le=1_000_000)
+    parameters: list[FitParameter] = Field(min_length=1)
+    tied: dict[str, str] = Field(default_factory=dict, description=(
+        "law fields that take the value of a fitted parameter, e.g. {f_b = 'f_a'}"))
+
+
+class SignalSettings(CaseModel):
+    """How the measured signals are processed (:mod:`sealsim.measurements.signals`)."""
+
+    velocity_window: Q("time", gt=0) = 0.2
+    sliding_threshold: Q("velocity", gt=0) | None = None
+    min_phase_duration: Q("time", gt=0) = 0.5
+    settle: Q("dimensionless", ge=0, lt=0.95) = 0.2
+
+
+class ContactModel(CaseModel):
+    """Source of F_N and b of the seal (the ``map`` table of a pneumatic seal)."""
+
+    location: Literal["piston", "rod"] = "piston"
+    sliding_diameter: Q("length", gt=0)
+    temperature: Q("temperature", gt=0) = 293.15
+    map: MapModel | None = None
+
+
+class ColumnModel(CaseModel):
+    """One column of a measurement table: 1-based index or header name, pint unit."""
+
+    column: int | str
+    unit: str
+    scale: float = 1.0
+
+
+class MeasurementModel(CaseModel):
+    """A measured run: a file, how to read it, its role and the conditions not measured."""
+
+    name: str = Field(min_length=1)
+    file: str
+    role: Literal["fit", "validate"]
+    format: Literal["tudelft"] | None = None
+    bore: Q("length", gt=0) | None = None
+    columns: dict[str, ColumnModel] | None = None
+    delimiter: str | None = None
+    header: bool = False
+    skip_rows: int | None = Field(None, ge=0)
+    pressure: Q("pressure") | None = None
+    temperature: Q("temperature", gt=0) | None = None
+
+    @model_validator(mode="after")
+    def _check(self):
+        if (self.format is None) == (self.columns is None):
+            raise ValueError("give exactly one of format = 'tudelft' or a columns table")
+        if self.format == "tudelft" and self.bore is None:
+            raise ValueError("format 'tudelft' needs bore (e.g. bore = '25 mm')")
+        if self.columns is not None:
+            unknown = sorted(set(self.columns) - set(QUANTITIES))
+            if unknown:
+                raise ValueError(f"unknown column quantities {unknown}; choose from "
+                                 f"{sorted(QUANTITIES)}")
+            missing = {"time", "friction"} - set(self.columns)
+            if missing:
+                raise ValueError(f"columns must include {sorted(missing)}")
+            if "position" not in self.columns and "velocity" not in self.columns:
+                raise ValueError("columns must include position or velocity")
+        return self
+
+    def column_specs(self) -> list[ColumnSpec]:
+        return [ColumnSpec(q, c.column, c.unit, c.scale) for q, c in (self.columns or {}).items()]
+
+
+class FrictionFitCase(CaseModel):
+    """A friction-law fit (see the module docstring)."""
+
+    title: str = ""
+    friction: LawParameters
+    contact: ContactModel | None = None
+    signals: SignalSettings = SignalSettings()
+    fit: FitSettings
+    measurements: list[MeasurementModel] = Field(min_length=1)
+
+    @model_validator(mode="after")
+    def _check(self):
+        names = [m.name for m in self.measurements]
+        dupes = sorted({n for n in names if names.count(n) > 1})
+        if dupes:
+            raise ValueError(f"measurement names must be unique, repeated: {dupes}")
+        if not any(m.role == "fit" for m in self.measurements):
+            raise ValueError("at least one measurement needs role = 'fit'")
+        fields = type(self.friction).model_fields
+        pnames = [p.name for p in self.fit.parameters]
+        for p in self.fit.parameters:
+            if p.name in ("law", "parameter_set") or p.name not in fields:
+                allowed = sorted(f for f in fields if f not in ("law", "parameter_set"))
+                raise ValueError(f"fit parameter {p.name!r} is not a parameter of the "
+                                 f"{self.friction.law} law; choose from {allowed}")
+            if pnames.count(p.name) > 1:
+                raise ValueError(f"fit parameter {p.name!r} is listed twice")
+        for target, source in self.fit.tied.items():
+            if target not in fields or target in ("law", "parameter_set"):
+                raise ValueError(f"fit.tied: {target!r} is not a parameter of the "
+                                 f"{self.friction.law} law")
+            if source not in pnames:
+                raise ValueError(f"fit.tied.{target}: {source!r} is not a fitted parameter "
+                                 f"(fitted: {pnames})")
+            if target in pnames:
+                raise ValueError(f"fit.tied.{target}: it is fitted itself; remove one of the two")
+        return self
+
+
+def parse_law_value(params, name: str, value, where: str) -> float:
+    """A value of the law field ``name`` (a quantity string with its unit) in SI.
+
+    Uses the field's own type, so the units and the range are those of the law model.
+    """
+    field = type(params).model_fields[name]
+    try:
+        parsed = TypeAdapter(field.rebuild_annotation()).validate_python(
+            value, context={"require_units": True})
+    except Exception as exc:  # pydantic.ValidationError: one readable line
+        text = str(exc).splitlines()
+        detail = text[-1].strip() if text else str(exc)
+        raise InputError(f"{where}: {value!r} is not a valid {name}: {detail}") from None
+    if parsed is None or isinstance(parsed, bool) or not isinstance(parsed, int | float):
+        raise InputError(f"{where}: {value!r} is not a number for {name}")
+    return float(parsed)

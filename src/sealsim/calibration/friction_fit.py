@@ -1,0 +1,375 @@
+"""Identification of friction-law parameters from measured friction (staged, robust, bounded).
+
+The model of a measured run: the seal slides with the measured velocity v(t) (from the position
+by a Savitzky–Golay differentiator, :func:`sealsim.measurements.smooth_derivative`); its normal
+force F_N(t) and contact width b(t) come from the contact map at the measured pressure
+difference; the friction law is integrated along v(t) with its exact per-step update
+(:meth:`sealsim.friction.FrictionLaw.trajectory`) and gives F(t).  Measured friction carries an
+offset (load-cell zero, the area the pressure acts on); every comparison is offset-free: the
+offset of the sliding phases (:func:`sealsim.measurements.friction_level`) is removed from the
+measured signal.
+
+Fit (scipy.optimize.least_squares, trust-region reflective with bounds, robust loss):
+
+1. *steady* parameters against the median friction of every sliding phase (the steady sweep),
+   the model's steady force at the phase's velocities and loads;
+2. *dynamic* parameters against the friction time series, steady parameters fixed.
+
+Strictly positive parameters are fitted in log space (they span decades, e.g. stiffnesses);
+their standard errors are mapped back by the delta method.  The uncertainty comes from the
+Jacobian (:func:`sealsim.calibration.statistics.parameter_statistics`).
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+from scipy.optimize import least_squares
+
+from sealsim.calibration.case import FrictionFitCase, MeasurementModel, parse_law_value
+from sealsim.calibration.statistics import parameter_statistics
+from sealsim.errors import InputError
+from sealsim.friction import make_law
+from sealsim.friction.base import ContactInputs, FrictionLaw, validate_parameters
+from sealsim.measurements import (
+    Measurement,
+    friction_level,
+    phase_mask,
+    read_measurement,
+    sliding_phases,
+    smooth_derivative,
+)
+
+__all__ = ["FitResult", "PreparedRun", "fit_friction", "predict_run", "prepare_run",
+           "run_metrics"]
+
+
+@dataclass
+class PreparedRun:
+    """A measured run ready for the model: SI arrays at the samples."""
+
+    spec: MeasurementModel
+    measurement: Measurement
+    time: np.ndarray
+    position: np.ndarray
+    velocity: np.ndarray
+    friction: np.ndarray           # measured, offset removed
+    offset: float
+    level: float
+    phases: list
+    pressure: np.ndarray           # gauge pressure on the pressurised side [Pa]
+    pressure_difference: np.ndarray
+    temperature: float
+    normal_force: np.ndarray | None = None
+    contact_width: np.ndarray | None = None
+    samples: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
+
+    @property
+    def name(self) -> str:
+        return self.spec.name
+
+
+def _resolve(path: str, base_dir: Path) -> Path:
+    p = Path(path)
+    return p if p.is_absolute() else base_dir / p
+
+
+def prepare_run(case: FrictionFitCase, spec: MeasurementModel, contact_map=None,
+                base_dir: str | Path = ".") -> PreparedRun:
+    """Read a measurement, derive v(t), find the sliding phases, evaluate F_N(t), b(t).
+
+    Raises
+    ------
+    InputError
+        Bad file (file/row/column named), no sliding phase, a pressure outside the contact
+        map's range.
+    """
+    path = _resolve(spec.file, Path(base_dir))
+    where = f"measurement {spec.name!r} ({path})"
+    options = {"bore": spec.bore} if spec.format == "tudelft" else None
+    table = {} if spec.format else {"delimiter": spec.delimiter, "header": spec.header}
+    if spec.skip_rows is not None:
+        table["skip_rows"] = spec.skip_rows
+    m = read_measurement(path, format=spec.format,
+                         columns=spec.column_specs() if spec.columns else None,
+                         options=options, name=spec.name, **table)
+    t = m.time
+    sig = case.signals
+    if m.has("position"):
+        x = m.column("position")
+        v = m.column("velocity") if m.has("velocity") else smooth_derivative(
+            t, x, window=sig.velocity_window)
+    else:
+        v = m.column("velocity")
+        x = np.concatenate([[0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * np.diff(t))])
+    try:
+        phases = sliding_phases(t, v, sig.sliding_threshold, sig.min_phase_duration, sig.settle)
+        level, offset = friction_level(m.column("friction"), phases)
+    except InputError as exc:
+        raise InputError(f"{where}: {exc}") from None
+    if m.has("pressure"):
+        p = m.column("pressure")
+    elif spec.pressure is not None:
+        p = np.full(t.shape, spec.pressure)
+    else:
+        p = np.zeros(t.shape)
+    temperature = spec.temperature if spec.temperature is not None else (
+        case.contact.temperature if case.contact is not None else 293.15)
+    dp = np.abs(p)          # piston seal: pressurised side | ambient; rod seal: chamber | ambient
+    run = PreparedRun(spec, m, t, x, v, m.column("friction") - offset, offset, level, phases,
+                      p, dp, temperature)
+    if contact_map is not None:
+        lo, hi = contact_map.ranges["pressure"]
+        tol = 0.02 * max(hi - lo, 1.0)
+        if dp.max() > hi + tol or dp.min() < lo - tol:
+            raise InputError(
+                f"{where}: pressure difference {dp.min() / 1e5:.3g} … {dp.max() / 1e5:.3g} bar "
+                f"exceeds the contact map's range {lo / 1e5:g} … {hi / 1e5:g} bar; extend the "
+                "map's pressure grid (it is never extrapolated)")
+        tlo, thi = contact_map.ranges["temperature"]
+        if not tlo - 1e-6 <= temperature <= thi + 1e-6:
+            raise InputError(f"{where}: temperature {temperature - 273.15:g} degC is outside "
+                             f"the contact map ({tlo - 273.15:g} … {thi - 273.15:g} degC)")
+        fn, b = contact_map.evaluate(np.clip(dp, lo, hi), temperature)
+        run.normal_force = np.asarray(fn, dtype=float)
+        run.contact_width = np.asarray(b, dtype=float)
+    stride = max(1, int(math.ceil(t.size / case.fit.max_samples)))
+    run.samples = np.arange(0, t.size, stride)
+    return run
+
+
+def _inputs(run: PreparedRun, index=slice(None), column=False) -> ContactInputs:
+    def pick(a):
+        if a is None:
+            return None
+        a = a[index]
+        return a[:, None] if column else a
+    return ContactInputs(normal_force=pick(run.normal_force),
+                         contact_width=pick(run.contact_width),
+                         pressure_a=pick(run.pressure), pressure_b=0.0,
+                         temperature=run.temperature)
+
+
+def predict_run(law: FrictionLaw, run: PreparedRun) -> np.ndarray:
+    """Model friction F(t) [N] at the samples of a run (the law driven by the measured v(t),
+    starting from rest)."""
+    v = run.velocity
+    n = v.size
+    if law.n_states == 0:
+        return law.force(np.zeros((0, n)), v, _inputs(run))
+    mid = slice(1, None)
+    v_mid = 0.5 * (v[1:] + v[:-1])
+    dt = np.diff(run.time)
+    # inputs at the end of each step (the per-step arrays of trajectory, shape (N, 1))
+    z = law.trajectory(law.initial_state(1), v_mid, dt, _inputs(run, mid, column=True))
+    states = z[:, :, 0].T                                      # (n_states, n samples)
+    return law.force(states, v, _inputs(run))
+
+
+def steady_phase_forces(law: FrictionLaw, run: PreparedRun) -> np.ndarray:
+    """Median steady friction of the model over each sliding phase [N]."""
+    out = []
+    for ph in run.phases:
+        sel = slice(ph.start, ph.stop)
+        out.append(float(np.median(law.steady_force(run.velocity[sel], _inputs(run, sel)))))
+    return np.array(out)
+
+
+def measured_phase_forces(run: PreparedRun) -> np.ndarray:
+    """Median measured (offset-free) friction over each sliding phase [N]."""
+    return np.array([float(np.median(run.friction[p.start:p.stop])) for p in run.phases])
+
+
+def run_metrics(run: PreparedRun, predicted: np.ndarray) -> dict[str, Any]:
+    """The comparison numbers of one run (report.json ``measurements.NAME``).
+
+    ``F_measured_N`` / ``F_predicted_N``: offset-free friction level of the sliding phases
+    (half the difference of the medians in the two directions); ``rmse_N`` and ``r2`` over all
+    samples of the offset-free friction time series.
+    """
+    f_pred, _ = friction_level(predicted, run.phases)
+    resid = run.friction - predicted
+    ss_tot = float(np.sum((run.friction - run.friction.mean()) ** 2))
+    return {"role": run.spec.role,
+            "pressure_bar": float(np.median(run.pressure)) / 1e5,
+            "F_measured_N": run.level, "F_predicted_N": f_pred,
+            "rel_error": (f_pred - run.level) / run.level if run.level else None,
+            "rmse_N": float(np.sqrt(np.mean(resid ** 2))),
+            "r2": 1.0 - float(np.sum(resid ** 2)) / ss_tot if ss_tot > 0 else None}
+
+
+# -- the fit ------------------------------------------------------------------------------------
+@dataclass
+class FitResult:
+    """Outcome of :func:`fit_friction`."""
+
+    params: Any                        # the law's parameter model with the fitted values
+    names: list[str]
+    values: np.ndarray
+    standard_errors: np.ndarray
+    correlation: np.ndarray
+    identifiable: np.ndarray
+    reasons: list[list[str]]
+    stages: list[dict]
+    status: str                        # "ok" or "failed"
+    failure: list[str]
+    warnings: list[str]
+    bounds: list[tuple[float, float]]
+    initial: list[float]
+    stage_of: list[str]
+
+
+def _make(params_model, values: dict[str, float]):
+    data = {**params_model.model_dump(exclude={"parameter_set"}), **values}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        params = validate_parameters(type(params_model), data, "fitted parameters")
+        return params, make_law(params)
+
+
+def _log_space(lo: float, hi: float) -> bool:
+    return lo > 0 and hi > 0
+
+
+def fit_friction(case: FrictionFitCase, runs: list[PreparedRun], progress=None) -> FitResult:
+    """Fit the case's parameters to the runs with role ``fit`` (see the module docstring).
+
+    Deterministic: no random start, finite-difference Jacobians of fixed step.
+    """
+    start = case.friction
+    names, bounds, initial, stage_of = [], [], [], []
+    for k, p in enumerate(case.fit.parameters):
+        where = f"fit.parameters[{k}] ({p.name!r})"
+        lo = parse_law_value(start, p.name, p.bounds[0], f"{where}.bounds[0]")
+        hi = parse_law_value(start, p.name, p.bounds[1], f"{where}.bounds[1]")
+        if not lo < hi:
+            raise InputError(f"{where}.bounds: lower bound {p.bounds[0]!r} must be below the "
+                             f"upper bound {p.bounds[1]!r}")
+        x0 = (parse_law_value(start, p.name, p.initial, f"{where}.initial")
+              if p.initial is not None else getattr(start, p.name))
+        if x0 is None:
+            raise InputError(f"{where}: the law has no value for {p.name}; give initial")
+        if not lo <= x0 <= hi:
+            x0 = math.sqrt(lo * hi) if _log_space(lo, hi) else 0.5 * (lo + hi)
+        names.append(p.name)
+        bounds.append((lo, hi))
+        initial.append(float(x0))
+        stage_of.append(p.stage)
+    fit_runs = [r for r in runs if r.spec.role == "fit"]
+    tied = case.fit.tied
+
+    def with_ties(vals):
+        return {**vals, **{target: vals[source] for target, source in tied.items()}}
+
+    values = dict(zip(names, initial))
+    stages, notes = [], []
+    failure: list[str] = []
+    all_jac_rows = {}
+    for stage in ("steady", "dynamic"):
+        idx = [i for i, s in enumerate(stage_of) if s == stage]
+        if not idx:
+            continue
+        logs = [_log_space(*bounds[i]) for i in idx]
+
+        def to_x(vals, idx=idx, logs=logs):
+            return np.array([math.log(vals[names[i]]) if lg else vals[names[i]]
+                             for i, lg in zip(idx, logs)])
+
+        def to_values(x, idx=idx, logs=logs):
+            out = dict(values)
+            for xi, i, lg in zip(x, idx, logs):
+                out[names[i]] = float(math.exp(xi) if lg else xi)
+            return out
+
+        def residuals(x, stage=stage, to_values=to_values):
+            try:
+                _, law = _make(start, with_ties(to_values(x)))
+            except InputError:
+                return np.full(n_res, 1e6)
+            parts = []
+            for r in fit_runs:
+                if stage == "steady":
+                    parts.append(measured_phase_forces(r) - steady_phase_forces(law, r))
+                else:
+                    parts.append((r.friction - predict_run(law, r))[r.samples])
+            res = np.concatenate(parts)
+            return np.where(np.isfinite(res), res, 1e6)
+
+        lo = np.array([math.log(bounds[i][0]) if lg else bounds[i][0]
+                       for i, lg in zip(idx, logs)])
+        hi = np.array([math.log(bounds[i][1]) if lg else bounds[i][1]
+                       for i, lg in zip(idx, logs)])
+        x0 = np.clip(to_x(values), lo, hi)
+        n_res = 1                     # size of the penalty vector, set by the first evaluation
+        n_res = residuals(x0).size
+        if n_res < len(idx):
+            raise InputError(f"stage {stage!r}: {n_res} data points cannot determine "
+                             f"{len(idx)} parameters ({', '.join(names[i] for i in idx)})")
+        if progress is not None:
+            progress(stage, 0.0, 1.0)
+        sol = least_squares(residuals, x0, bounds=(lo, hi), loss=case.fit.loss,
+                            f_scale=case.fit.f_scale, max_nfev=case.fit.max_evaluations,
+                            x_scale=1.0, diff_step=1e-6, method="trf")
+        values = to_values(sol.x)
+        # Jacobian of the plain residuals w.r.t. the parameters themselves (delta method)
+        jac = sol.jac.copy() if case.fit.loss == "linear" else _plain_jacobian(residuals, sol.x)
+        for col, (i, lg) in enumerate(zip(idx, logs)):
+            if lg:
+                jac[:, col] /= values[names[i]]
+        all_jac_rows[stage] = (idx, jac, sol.fun if case.fit.loss == "linear"
+                               else residuals(sol.x))
+        at_bound = [names[i] for i, a, lg, xi, l_, h_ in zip(idx, sol.active_mask, logs, sol.x,
+                                                             lo, hi)
+                    if a != 0 or min(xi - l_, h_ - xi) <= 1e-6 * max(1.0, abs(h_ - l_))]
+        for name in at_bound:
+            i = names.index(name)
+            failure.append(f"{name} = {values[name]:.6g} ended at a bound {bounds[i]}: the "
+                           "optimum lies outside the bounds or the data do not determine it; "
+                           "widen the bounds or fix the parameter")
+        if not sol.success:
+            failure.append(f"stage {stage!r}: least_squares stopped: {sol.message}")
+        stages.append({"stage": stage, "parameters": [names[i] for i in idx],
+                       "n_residuals": int(n_res), "evaluations": int(sol.nfev),
+                       "cost": float(sol.cost), "message": sol.message,
+                       "values": {names[i]: values[names[i]] for i in idx}})
+        if progress is not None:
+            progress(stage, 1.0, 1.0)
+    n = len(names)
+    se = np.full(n, np.nan)
+    corr = np.full((n, n), np.nan)
+    identifiable = np.ones(n, dtype=bool)
+    reasons: list[list[str]] = [[] for _ in range(n)]
+    for stage, (idx, jac, res) in all_jac_rows.items():
+        stats = parameter_statistics(jac, res, values=[values[names[i]] for i in idx],
+                                     names=[names[i] for i in idx])
+        for a, i in enumerate(idx):
+            se[i] = stats["standard_errors"][a]
+            identifiable[i] = stats["identifiable"][a]
+            reasons[i] = stats["reasons"][a]
+            for b, j in enumerate(idx):
+                corr[i, j] = stats["correlation"][a, b]
+    for i, name in enumerate(names):
+        if not identifiable[i]:
+            notes.append(f"{name} is not identifiable from the fit data: {'; '.join(reasons[i])}")
+    params, _ = _make(start, with_ties(values))
+    return FitResult(params, names, np.array([values[k] for k in names]), se, corr,
+                     identifiable, reasons, stages, "failed" if failure else "ok", failure,
+                     notes, bounds, initial, stage_of)
+
+
+def _plain_jacobian(fun, x, step=1e-6):
+    """Central-difference Jacobian of the residuals (without the robust loss weighting)."""
+    f0 = fun(x)
+    jac = np.empty((f0.size, x.size))
+    for k in range(x.size):
+        h = step * max(1.0, abs(x[k]))
+        xp, xm = x.copy(), x.copy()
+        xp[k] += h
+        xm[k] -= h
+        jac[:, k] = (fun(xp) - fun(xm)) / (2 * h)
+    return jac

@@ -1,0 +1,134 @@
+"""Compare a measured cylinder run -- x(t), p1(t), p2(t) -- with a simulation of its case
+(what ``sealsim pneumatic compare`` calls).
+
+A compare file (TOML)::
+
+    case = "../pneumatic/cylinder_32.toml"   # the pneumatic case (paths relative to this file)
+    variant = "T25C"                          # when the case has variants
+
+    [measurement]
+    file = "run.csv"
+    delimiter = ","
+    header = true
+    pressure = "gauge"                        # or "absolute": how p1, p2 were measured
+    columns = { time = { column = "t", unit = "s" }, position = { column = "x", unit = "mm" },
+                pressure_1 = { column = "p1", unit = "bar" },
+                pressure_2 = { column = "p2", unit = "bar" } }
+
+The model is sampled at the measured times (linear interpolation of its output, which is
+sampled finer); per signal the RMSE, the largest deviation and R² are reported, plus the
+extend/retract times of both.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Literal
+
+import numpy as np
+import pandas as pd
+from pydantic import Field
+
+from sealsim.calibration.case import ColumnModel
+from sealsim.cases import CaseModel, load_toml, validate_case
+from sealsim.errors import InputError
+from sealsim.measurements import ColumnSpec, read_table
+from sealsim.output import ResultFolder
+from sealsim.pneumatic.case import load_pneumatic_case_file
+from sealsim.pneumatic.simulation import simulate
+from sealsim.plotting.calibration import plot_signals
+
+__all__ = ["CompareCase", "compare_signals", "run_pneumatic_compare_file"]
+
+SIGNALS = {"position": ("x_m", 1.0, "mm", 1e3), "pressure_1": ("p1_bar", 1e5, "bar", 1e-5),
+           "pressure_2": ("p2_bar", 1e5, "bar", 1e-5)}
+
+
+class CompareMeasurement(CaseModel):
+    file: str
+    columns: dict[str, ColumnModel]
+    delimiter: str | None = None
+    header: bool = False
+    skip_rows: int = Field(0, ge=0)
+    pressure: Literal["gauge", "absolute"] = "gauge"
+
+
+class CompareCase(CaseModel):
+    """A measured run and the pneumatic case that should reproduce it."""
+
+    case: str
+    variant: str | None = None
+    measurement: CompareMeasurement
+
+
+def compare_signals(measured, model) -> dict[str, float]:
+    """RMSE, largest deviation and R² of a model signal against a measured one.
+
+    Examples
+    --------
+    >>> compare_signals(np.array([0.0, 1.0, 2.0]), np.array([0.0, 1.0, 2.0]))
+    {'rmse': 0.0, 'max_abs_error': 0.0, 'r2': 1.0}
+    """
+    measured = np.asarray(measured, dtype=float)
+    resid = measured - np.asarray(model, dtype=float)
+    ss_tot = float(np.sum((measured - measured.mean()) ** 2))
+    return {"rmse": float(np.sqrt(np.mean(resid ** 2))),
+            "max_abs_error": float(np.max(np.abs(resid))),
+            "r2": 1.0 - float(np.sum(resid ** 2)) / ss_tot if ss_tot > 0 else None}
+
+
+def run_pneumatic_compare_file(path: str | Path, out: str | Path, force: bool = False,
+                               progress=None) -> dict:
+    """Simulate the case of a compare file, compare with the measurement, write ``out``:
+    ``report.json`` (per signal: rmse, max_abs_error, r2 in the signal's unit), ``comparison.csv``
+    and ``comparison.png`` (x, p1, p2 over time, measured and model)."""
+    path = Path(path)
+    folder = ResultFolder(out, force)
+    spec = validate_case(CompareCase, load_toml(path), f"compare file {str(path)!r}")
+    base = path.parent
+    case_path = Path(spec.case) if Path(spec.case).is_absolute() else base / spec.case
+    cases = load_pneumatic_case_file(case_path)
+    if spec.variant is None and len(cases) > 1:
+        raise InputError(f"{path}: variant: the case has variants {sorted(cases)}; name one")
+    name = spec.variant or next(iter(cases))
+    if name not in cases:
+        raise InputError(f"{path}: variant {name!r} is not in {sorted(cases)}")
+    m = spec.measurement
+    wanted = set(m.columns) - {"time"}
+    if "time" not in m.columns or not wanted <= set(SIGNALS) or not wanted:
+        raise InputError(f"{path}: measurement.columns needs time and at least one of "
+                         f"{sorted(SIGNALS)} (got {sorted(m.columns)})")
+    mfile = Path(m.file) if Path(m.file).is_absolute() else base / m.file
+    measured = read_table(mfile, [ColumnSpec(q, c.column, c.unit, c.scale)
+                                  for q, c in m.columns.items()],
+                          delimiter=m.delimiter, header=m.header, skip_rows=m.skip_rows)
+    case = cases[name]
+    result = simulate(case, base_dir=case_path.parent,
+                      progress=None if progress is None else lambda t, e: progress(name, t, e))
+    frame = result.timeseries
+    t_model = frame["time_s"].to_numpy()
+    t = measured.time
+    if t[0] < t_model[0] - 1e-9 or t[-1] > t_model[-1] + 1e-9:
+        raise InputError(f"{mfile}: measured time {t[0]:g} … {t[-1]:g} s lies outside the "
+                         f"simulated {t_model[0]:g} … {t_model[-1]:g} s; set "
+                         "controller.duration of the case to cover it")
+    gauge = case.air.ambient_pressure if m.pressure == "gauge" else 0.0
+    report, table, curves = {"variant": name, "signals": {}}, {"time_s": t}, {}
+    for q in sorted(wanted):
+        column, si_per_model_unit, unit, display = SIGNALS[q]
+        model = np.interp(t, t_model, frame[column].to_numpy() * si_per_model_unit)
+        meas = measured.column(q)
+        if q != "position":
+            model = model - gauge          # the model's pressures are absolute
+        report["signals"][q] = {"unit": unit, **{
+            k: (v * display if v is not None and k != "r2" else v)
+            for k, v in compare_signals(meas, model).items()}}
+        table[f"{q}_measured_{unit}"] = meas * display
+        table[f"{q}_model_{unit}"] = model * display
+        curves[q] = (meas * display, model * display, unit)
+    with folder:
+        folder.write_json("report.json", report)
+        folder.write_csv("comparison.csv", pd.DataFrame(table), float_format="%.8g")
+        folder.savefig("comparison.png", plot_signals(t, curves, f"{case.title or name}: "
+                                                      f"measured vs model"))
+    return report

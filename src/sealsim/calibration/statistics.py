@@ -1,0 +1,107 @@
+"""Uncertainty of fitted parameters from the Jacobian of the residuals (Gauss–Newton).
+
+For residuals r(θ) with m samples and n parameters at the optimum θ̂, the covariance of the
+estimate is approximated by (Bates & Watts 1988, §2.3)::
+
+    C = s²·(JᵀJ)⁻¹,   s² = Σ r_i² / (m − n),   J = ∂r/∂θ at θ̂
+
+standard errors are sqrt(diag C) and the correlation matrix C_ij/sqrt(C_ii C_jj).  (JᵀJ)⁻¹ is
+formed from the singular value decomposition of J; directions whose singular value is below
+``rcond``·σ_max carry no information from the data -- the parameters along them are *not
+identifiable* (their standard error is infinite).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["parameter_statistics"]
+
+
+def parameter_statistics(jacobian, residuals, *, rcond=1e-8, max_relative_error=0.5,
+                         max_correlation=0.995, values=None, names=None):
+    """Standard errors, correlations and identifiability of fitted parameters.
+
+    Parameters
+    ----------
+    jacobian : array_like, shape (m, n)
+        ∂r/∂θ at the optimum (θ in the units the errors are wanted in).
+    residuals : array_like, shape (m,)
+        Residuals at the optimum.
+    rcond : float
+        Relative singular value below which a direction counts as undetermined.
+    max_relative_error : float
+        A parameter whose standard error exceeds this fraction of |value| is flagged.
+    max_correlation : float
+        |correlation| above which two parameters are flagged as not separable.
+    values : array_like, shape (n,), optional
+        Parameter values (for the relative error test).
+    names : list of str, optional
+        Parameter names used in the messages.
+
+    Returns
+    -------
+    dict
+        ``standard_errors`` (n,), ``correlation`` (n, n), ``covariance`` (n, n),
+        ``residual_variance`` s², ``identifiable`` (n,) bool, ``reasons`` (list of str per
+        parameter, empty when identifiable), ``singular_values``.
+
+    References
+    ----------
+    D. M. Bates, D. G. Watts, Nonlinear Regression Analysis and Its Applications, Wiley 1988.
+
+    Examples
+    --------
+    >>> x = np.linspace(0.0, 1.0, 11)
+    >>> J = np.column_stack([np.ones_like(x), x])       # straight line a + b·x
+    >>> r = 0.01 * np.array([1, -1] * 5 + [0])
+    >>> s = parameter_statistics(J, r)
+    >>> bool(s["identifiable"].all()), s["standard_errors"].round(4).tolist()
+    (True, [0.0059, 0.0101])
+    >>> s = parameter_statistics(np.column_stack([x, x]), r)   # two copies of one parameter
+    >>> s["identifiable"].tolist()
+    [False, False]
+    """
+    J = np.atleast_2d(np.asarray(jacobian, dtype=float))
+    r = np.asarray(residuals, dtype=float)
+    m, n = J.shape
+    names = list(names) if names is not None else [f"parameter {k}" for k in range(n)]
+    dof = max(m - n, 1)
+    s2 = float(np.sum(r ** 2) / dof)
+    if not np.all(np.isfinite(J)):
+        bad = np.full(n, np.inf)
+        return {"standard_errors": bad, "correlation": np.full((n, n), np.nan),
+                "covariance": np.full((n, n), np.inf), "residual_variance": s2,
+                "identifiable": np.zeros(n, dtype=bool),
+                "reasons": [["the model is not differentiable here (non-finite Jacobian)"]] * n,
+                "singular_values": np.full(n, np.nan)}
+    _, sv, vt = np.linalg.svd(J, full_matrices=False)
+    keep = sv > rcond * (sv[0] if sv.size and sv[0] > 0 else 1.0)
+    inv = np.zeros_like(sv)
+    inv[keep] = 1.0 / sv[keep] ** 2
+    cov = s2 * (vt.T * inv) @ vt
+    reasons: list[list[str]] = [[] for _ in range(n)]
+    # parameters with a share in a null direction are undetermined
+    for k in np.flatnonzero(~keep):
+        for i in np.flatnonzero(np.abs(vt[k]) > 0.1):
+            reasons[i].append("the data do not determine it (its effect is zero or cancels "
+                              "with other parameters)")
+    se = np.sqrt(np.clip(np.diag(cov), 0.0, None))
+    se[[bool(rs) for rs in reasons]] = np.inf
+    with np.errstate(invalid="ignore", divide="ignore"):
+        corr = cov / np.outer(np.sqrt(np.diag(cov)), np.sqrt(np.diag(cov)))
+    for i in range(n):
+        for j in range(n):
+            if i != j and np.isfinite(corr[i, j]) and abs(corr[i, j]) > max_correlation:
+                reasons[i].append(f"correlated with {names[j]} (r = {corr[i, j]:.4f}): the "
+                                  "data determine only a combination of the two")
+    if values is not None:
+        vals = np.asarray(values, dtype=float)
+        for i in range(n):
+            if np.isfinite(se[i]) and se[i] > max_relative_error * abs(vals[i]):
+                reasons[i].append(f"standard error {se[i]:.3g} is more than "
+                                  f"{100 * max_relative_error:g} % of its value {vals[i]:.3g}")
+    identifiable = np.array([not rs for rs in reasons])
+    return {"standard_errors": se, "correlation": corr, "covariance": cov,
+            "residual_variance": s2, "identifiable": identifiable, "reasons": reasons,
+            "singular_values": sv}

@@ -1,0 +1,71 @@
+"""Calibration commands, registered on the model apps: ``sealsim friction fit``,
+``sealsim pneumatic compare``.
+
+The commands hold no physics: :mod:`sealsim.calibration` fits and writes the results; the
+command shows progress, prints the fitted values, the prediction errors and why a fit failed.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import typer
+
+from sealsim.cli._common import console, err_console, guarded, variant_progress
+from sealsim.cli.friction import friction_app
+from sealsim.cli.pneumatic import pneumatic_app
+
+
+@friction_app.command("fit")
+@guarded
+def fit(
+    case: Path = typer.Argument(..., help="Fit case file (TOML), e.g. examples/calibration/"
+                                          "tudelft_oring.toml."),
+    out: Path = typer.Option(..., "--out", "-o", help="Result folder (must not hold results "
+                                                      "unless --force)."),
+    force: bool = typer.Option(False, "--force", help="Replace an existing result folder."),
+    quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress bar."),
+) -> None:
+    """Fit friction-law parameters to measurements; report the error on held-out runs."""
+    from sealsim.calibration.study import run_friction_fit_file
+
+    with variant_progress("fit", quiet, lambda _, d, n: f"{d:g}/{n:g}") as progress:
+        summary = run_friction_fit_file(case, out, force, progress)
+    report = summary["report"]
+    for name, p in report["parameters"].items():
+        se = p["standard_error"]
+        console.print(f"{name} = {p['value']:.6g} ± {se:.2g} (1 s.e., SI)" if se is not None
+                      else f"{name} = {p['value']:.6g} (not determined)")
+    for name, m in report["measurements"].items():
+        console.print(f"{name} ({m['role']}): friction level measured {m['F_measured_N']:.3f} N,"
+                      f" model {m['F_predicted_N']:.3f} N, error {100 * m['rel_error']:+.1f} %, "
+                      f"RMSE {m['rmse_N']:.3f} N, R² {m['r2']:.3f}")
+    for text in summary["warnings"]:
+        console.print(f"[yellow]warning:[/yellow] {text}")
+    console.print(f"results written to {out}")
+    if summary["status"] != "ok":
+        for text in summary["failure"]:
+            err_console.print(f"[bold red]fit failed:[/bold red] {text}")
+        raise typer.Exit(1)
+
+
+@pneumatic_app.command("compare")
+@guarded
+def compare(
+    compare_file: Path = typer.Argument(..., help="Compare file (TOML): the pneumatic case and "
+                                                  "the measured x(t), p1(t), p2(t)."),
+    out: Path = typer.Option(..., "--out", "-o", help="Result folder (must not hold results "
+                                                      "unless --force)."),
+    force: bool = typer.Option(False, "--force", help="Replace an existing result folder."),
+    quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress bar."),
+) -> None:
+    """Simulate a cylinder case and compare it with a measured run (RMSE, R², overlays)."""
+    from sealsim.calibration.pneumatic_compare import run_pneumatic_compare_file
+
+    with variant_progress("pneumatic", quiet, lambda _, t, e: f"{t:.3g}/{e:.3g} s") as progress:
+        report = run_pneumatic_compare_file(compare_file, out, force, progress)
+    for name, s in report["signals"].items():
+        r2 = "-" if s["r2"] is None else f"{s['r2']:.4f}"
+        console.print(f"{name}: RMSE {s['rmse']:.4g} {s['unit']}, max error "
+                      f"{s['max_abs_error']:.4g} {s['unit']}, R² {r2}")
+    console.print(f"results written to {out}")

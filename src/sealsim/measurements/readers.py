@@ -1,0 +1,350 @@
+"""Readers of rig measurements: text tables whose columns are mapped to quantities and units.
+
+A measurement file is a table of numbers (comma, semicolon or whitespace separated, optional
+header line).  A *column mapping* says which column holds which quantity and in which unit::
+
+    columns = { time = { column = 1, unit = "ms" },
+                position = { column = "x", unit = "mm" },      # a header name, or 1-based index
+                friction = { column = 4, unit = "N" } }
+
+Values are converted to SI with pint (:data:`sealsim.units.ureg`) and returned as a
+:class:`Measurement` (a pandas DataFrame with one SI column per quantity).  Every problem in a
+file -- a cell that is not a number, a missing column, a time that goes backwards, a wrong unit
+-- is one :class:`~sealsim.errors.InputError` naming the file, the row (1-based line number in
+the file) and the column.
+
+Named readers for known rigs (:data:`FORMATS`):
+
+* ``"tudelft"`` -- the pneumatic piston-seal friction rig of Zillen, Vallery & Smit (TU Delft
+  2021, CC0): whitespace columns time [ms], laser [V], pressure [V], force [V], position [mm],
+  pressure [bar gauge], rod force [N].  The friction force on the piston is
+  ``p·A − F_rod`` (source convention), returned with sealsim's sign: the force the seal
+  resists the motion with, positive when the velocity is positive
+  (:func:`read_tudelft`).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pandas as pd
+import pint
+
+from sealsim.errors import InputError
+from sealsim.units import ureg
+
+__all__ = [
+    "FORMATS",
+    "QUANTITIES",
+    "ColumnSpec",
+    "Measurement",
+    "read_measurement",
+    "read_table",
+    "read_tudelft",
+]
+
+#: quantity name -> SI unit it is stored in (gauge pressures: pressures relative to ambient)
+QUANTITIES: dict[str, str] = {
+    "time": "s",
+    "position": "m",
+    "velocity": "m/s",
+    "friction": "N",
+    "force": "N",
+    "pressure": "Pa",
+    "pressure_1": "Pa",
+    "pressure_2": "Pa",
+    "temperature": "K",
+    "torque": "N*m",
+    "speed": "rad/s",
+}
+
+
+@dataclass(frozen=True)
+class ColumnSpec:
+    """Where a quantity is in a table and its unit.
+
+    Parameters
+    ----------
+    quantity : str
+        A key of :data:`QUANTITIES`.
+    column : int or str
+        1-based column index, or the column's name in the header line.
+    unit : str
+        pint unit of the values in the file (``"ms"``, ``"mm"``, ``"bar"``, ``"degC"``).
+    scale : float
+        Factor applied before the unit conversion (e.g. −1 to flip a sign convention).
+    """
+
+    quantity: str
+    column: int | str
+    unit: str
+    scale: float = 1.0
+
+
+@dataclass
+class Measurement:
+    """A measured run: SI columns named by quantity (``time`` [s], ``position`` [m],
+    ``friction`` [N], ``pressure`` [Pa gauge], ...; see :data:`QUANTITIES`).
+
+    Parameters
+    ----------
+    name : str
+        Label of the run.
+    source : str
+        The file it was read from (for messages).
+    data : pandas.DataFrame
+        One column per quantity, SI.
+    conditions : dict
+        Conditions not measured (``{"temperature": 293.15}``), SI.
+    """
+
+    name: str
+    source: str
+    data: pd.DataFrame
+    conditions: dict[str, float] = field(default_factory=dict)
+
+    def has(self, quantity: str) -> bool:
+        return quantity in self.data.columns
+
+    def column(self, quantity: str) -> np.ndarray:
+        """A quantity as a float array; an InputError names the run if it is missing."""
+        if quantity not in self.data.columns:
+            raise InputError(f"measurement {self.name!r} ({self.source}): has no {quantity} "
+                             f"column (it has {', '.join(self.data.columns)})")
+        return self.data[quantity].to_numpy(dtype=float)
+
+    @property
+    def time(self) -> np.ndarray:
+        return self.column("time")
+
+
+def _si_factor(unit: str, quantity: str, where: str):
+    """A function converting magnitudes in ``unit`` to the SI unit of ``quantity``."""
+    if quantity not in QUANTITIES:
+        raise InputError(f"{where}: unknown quantity {quantity!r}; choose from "
+                         f"{', '.join(sorted(QUANTITIES))}")
+    target = QUANTITIES[quantity]
+    if re.search(r"(\*\*|\^)\s*\d{3,}", unit):
+        raise InputError(f"{where}: unit {unit!r} has an exponent that is too large")
+    try:
+        q = ureg.Quantity(1.0, unit)
+        q.to(target)
+    except pint.errors.DimensionalityError:
+        raise InputError(f"{where}: unit {unit!r} is not a unit of {quantity} "
+                         f"(expected something convertible to {target})") from None
+    except Exception:
+        raise InputError(f"{where}: unknown unit {unit!r} for {quantity} "
+                         f"(e.g. {target!r})") from None
+
+    def convert(values: np.ndarray) -> np.ndarray:
+        return np.asarray(ureg.Quantity(values, unit).to(target).magnitude, dtype=float)
+    return convert
+
+
+def _split(line: str, delimiter: str | None) -> list[str]:
+    if delimiter is None:
+        return line.split()
+    return [cell.strip() for cell in line.split(delimiter)]
+
+
+def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | None = None,
+               header: bool = False, skip_rows: int = 0, comment: str = "#",
+               name: str | None = None) -> Measurement:
+    """Read a text table of numbers with a column mapping (see the module docstring).
+
+    Parameters
+    ----------
+    path : path
+        The file.
+    columns : list of ColumnSpec
+        Which quantities to read; ``time`` is required.
+    delimiter : str, optional
+        Column separator (``","``, ``";"``, ``"\\t"``); None: any whitespace.
+    header : bool
+        The first line after ``skip_rows`` names the columns.
+    skip_rows : int
+        Lines to skip at the top (start-up samples, preambles).
+    comment : str
+        Lines starting with this are ignored.
+    name : str, optional
+        Label of the run (default: the file stem).
+
+    Returns
+    -------
+    Measurement
+
+    Raises
+    ------
+    InputError
+        Missing file, a cell that is not a finite number (file, row, column named), a missing
+        column, a time that does not increase, fewer than 3 rows.
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> f = pathlib.Path(tempfile.mkdtemp()) / "run.csv"
+    >>> _ = f.write_text("t,x,F\\n0,0,1.5\\n10,0.1,1.6\\n20,0.2,1.4\\n")
+    >>> m = read_table(f, [ColumnSpec("time", "t", "ms"), ColumnSpec("position", "x", "mm"),
+    ...                    ColumnSpec("friction", "F", "N")], delimiter=",", header=True)
+    >>> m.data["time"].tolist(), m.data["position"].tolist()
+    ([0.0, 0.01, 0.02], [0.0, 0.0001, 0.0002])
+    """
+    path = Path(path)
+    label = str(path)
+    try:
+        text = path.read_text(encoding="utf-8", errors="strict")
+    except FileNotFoundError:
+        raise InputError(f"measurement file {label!r} does not exist") from None
+    except IsADirectoryError:
+        raise InputError(f"measurement file {label!r} is a directory") from None
+    except UnicodeDecodeError as exc:
+        raise InputError(f"measurement file {label!r} is not UTF-8 text (byte {exc.start})") \
+            from None
+    if "time" not in {c.quantity for c in columns}:
+        raise InputError(f"{label}: the column mapping needs a time column")
+    lines = [(k + 1, line) for k, line in enumerate(text.splitlines())]
+    lines = lines[skip_rows:]
+    lines = [(n, s) for n, s in lines if s.strip() and not s.lstrip().startswith(comment)]
+    names: list[str] = []
+    if header:
+        if not lines:
+            raise InputError(f"{label}: no header line found")
+        names = _split(lines[0][1], delimiter)
+        lines = lines[1:]
+    if len(lines) < 3:
+        raise InputError(f"{label}: only {len(lines)} data rows; a measurement needs at least 3")
+    indices = []
+    for spec in columns:
+        where = f"{label}, column {spec.column!r} ({spec.quantity})"
+        if isinstance(spec.column, str):
+            if spec.column not in names:
+                raise InputError(f"{where}: no column named {spec.column!r}"
+                                 + (f"; the header has {', '.join(names)}" if names
+                                    else "; set header = true or give a 1-based column index"))
+            indices.append(names.index(spec.column))
+        else:
+            if spec.column < 1:
+                raise InputError(f"{where}: column indices start at 1")
+            indices.append(spec.column - 1)
+    values = np.empty((len(lines), len(columns)))
+    for r, (lineno, line) in enumerate(lines):
+        cells = _split(line, delimiter)
+        for c, (idx, spec) in enumerate(zip(indices, columns)):
+            if idx >= len(cells):
+                raise InputError(f"{label}, row {lineno}: has {len(cells)} columns, column "
+                                 f"{idx + 1} ({spec.quantity}) is missing")
+            try:
+                value = float(cells[idx])
+            except ValueError:
+                raise InputError(f"{label}, row {lineno}, column {idx + 1} ({spec.quantity}): "
+                                 f"{cells[idx]!r} is not a number") from None
+            if not math.isfinite(value):
+                raise InputError(f"{label}, row {lineno}, column {idx + 1} ({spec.quantity}): "
+                                 f"{cells[idx]!r} is not a finite number")
+            values[r, c] = value
+    data = {}
+    for c, spec in enumerate(columns):
+        convert = _si_factor(spec.unit, spec.quantity, f"{label}, column {spec.column!r}")
+        data[spec.quantity] = convert(values[:, c] * spec.scale)
+    time = data["time"]
+    bad = np.flatnonzero(np.diff(time) <= 0)
+    if bad.size:
+        r = int(bad[0]) + 1
+        raise InputError(f"{label}, row {lines[r][0]}, column {indices[0] + 1} (time): time "
+                         f"{values[r, 0]:g} does not increase (previous row: "
+                         f"{values[r - 1, 0]:g}); the time column must be strictly increasing")
+    return Measurement(name or path.stem, label, pd.DataFrame(data))
+
+
+def read_tudelft(path: str | Path, bore: float, skip_rows: int = 15,
+                 name: str | None = None) -> Measurement:
+    """Read a raw file of the TU Delft pneumatic friction rig (Zillen et al. 2021).
+
+    Columns (whitespace, no header): time [ms], laser [V], pressure [V], force [V],
+    position [mm], pressure [bar gauge], rod force [N].  The friction force on the piston is
+
+    .. math:: F_f = -(p\\,A - F_{rod}), \\qquad A = \\pi D^2/4
+
+    with the sign flipped with respect to the source so that it is sealsim's convention (the
+    force resisting the motion, the sign of the velocity): in the source's files the friction
+    p·A − F_rod is negative while the position increases.
+
+    Parameters
+    ----------
+    path : path
+        One of the rig's ``*.csv`` files.
+    bore : float
+        Bore diameter D [m] (25 mm or 25.7 mm for the files of the data set).
+    skip_rows : int
+        Start-up samples at the top of the file (the data set's README: about 15).
+    name : str, optional
+        Label of the run.
+
+    Returns
+    -------
+    Measurement
+        Columns ``time`` [s], ``position`` [m], ``pressure`` [Pa gauge], ``force`` (rod) [N],
+        ``friction`` [N].
+
+    References
+    ----------
+    E. Zillen, H. Vallery, G. Smit, "3D printed pneumatic actuator", TU Delft, 2021, data
+    repository EvaZillen/3D-printed-pneumatic-actuator, CC0 1.0.
+    """
+    if not (bore > 0 and math.isfinite(bore)):
+        raise InputError(f"tudelft reader: bore must be > 0, got {bore!r} m")
+    m = read_table(path, [ColumnSpec("time", 1, "ms"), ColumnSpec("position", 5, "mm"),
+                          ColumnSpec("pressure", 6, "bar"), ColumnSpec("force", 7, "N")],
+                   skip_rows=skip_rows, name=name)
+    area = math.pi * bore ** 2 / 4.0
+    m.data["friction"] = m.data["force"] - m.data["pressure"] * area
+    return m
+
+
+#: named rig formats: name -> (reader, required options with their dimension)
+FORMATS: dict[str, tuple[Any, dict[str, str]]] = {
+    "tudelft": (read_tudelft, {"bore": "length"}),
+}
+
+
+def read_measurement(path: str | Path, *, format: str | None = None,  # noqa: A002
+                     columns: list[ColumnSpec] | None = None, options: dict | None = None,
+                     name: str | None = None, **table_options) -> Measurement:
+    """Read a measurement with a named format or a column mapping.
+
+    Parameters
+    ----------
+    path : path
+        The file.
+    format : str, optional
+        A key of :data:`FORMATS` (``"tudelft"``); its options (SI) in ``options``.
+    columns : list of ColumnSpec, optional
+        Column mapping for :func:`read_table` (when no format is given).
+    options : dict, optional
+        Options of the named format, e.g. ``{"bore": 0.025}``.
+    name : str, optional
+        Label of the run.
+    **table_options
+        ``delimiter``, ``header``, ``skip_rows``, ``comment`` of :func:`read_table`.
+    """
+    if (format is None) == (columns is None):
+        raise InputError(f"measurement {str(path)!r}: give exactly one of format = "
+                         f"{' | '.join(repr(k) for k in FORMATS)} or a columns mapping")
+    if format is not None:
+        if format not in FORMATS:
+            raise InputError(f"measurement {str(path)!r}: unknown format {format!r}; choose "
+                             f"one of {', '.join(repr(k) for k in FORMATS)} or give columns")
+        reader, required = FORMATS[format]
+        options = dict(options or {})
+        missing = [k for k in required if k not in options]
+        if missing:
+            raise InputError(f"measurement {str(path)!r}: format {format!r} needs "
+                             f"{', '.join(missing)} (e.g. bore = '25 mm')")
+        return reader(path, name=name, **options,
+                      **{k: v for k, v in table_options.items() if k == "skip_rows"})
+    return read_table(path, columns, name=name, **table_options)

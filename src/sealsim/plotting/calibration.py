@@ -1,0 +1,103 @@
+"""Figures of fits against measurements: overlays (friction vs time and vs stroke) and the
+parity plot of measured vs predicted levels with a ±20 % band (seed 000 Fig. 10 style)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from sealsim.plotting import new_figure
+
+__all__ = ["plot_overlay", "plot_parity", "plot_signals"]
+
+
+def plot_overlay(name: str, role: str, time, position, measured, predicted, title: str = ""):
+    """Measured and model friction of one run: vs time (left) and vs stroke (right).
+
+    Parameters
+    ----------
+    time, position : array_like
+        [s], [m].
+    measured, predicted : array_like
+        Offset-free friction [N].
+    """
+    fig, (ax_t, ax_x) = new_figure(2, 1, width=11.0, height=4.0)
+    t = np.asarray(time)
+    x = np.asarray(position) * 1e3
+    ax_t.plot(t, measured, lw=0.7, color="0.45", label="measured")
+    ax_t.plot(t, predicted, lw=1.0, color="C3", label="model")
+    ax_t.set_xlabel("time [s]")
+    ax_t.set_ylabel("friction force [N]")
+    ax_t.legend(loc="best")
+    ax_x.plot(x, measured, lw=0.5, color="0.45", label="measured")
+    ax_x.plot(x, predicted, lw=0.8, color="C3", label="model")
+    ax_x.set_xlabel("position [mm]")
+    ax_x.set_ylabel("friction force [N]")
+    for ax in (ax_t, ax_x):
+        ax.axhline(0.0, color="k", lw=0.5)
+        ax.grid(alpha=0.3)
+    kind = "fitted" if role == "fit" else "predicted (not fitted)"
+    fig.suptitle(f"{title}\n{name}: {kind}" if title else f"{name}: {kind}")
+    return fig
+
+
+def plot_parity(points, title: str = "", quantity: str = "friction level", unit: str = "N",
+                band: float = 0.2):
+    """Predicted vs measured with the ±``band`` relative band and R².
+
+    Parameters
+    ----------
+    points : list of (label, role, measured, predicted)
+        One point per measurement (or step); role "fit" or "validate".
+    """
+    fig, ax = new_figure(1, 1, width=5.5, height=5.0)
+    meas = np.array([p[2] for p in points], dtype=float)
+    pred = np.array([p[3] for p in points], dtype=float)
+    top = 1.15 * max(float(np.max(meas)), float(np.max(pred)), 1e-12)
+    line = np.array([0.0, top])
+    ax.plot(line, line, "k-", lw=0.8, label="1:1")
+    ax.fill_between(line, (1 - band) * line, (1 + band) * line, color="C0", alpha=0.12,
+                    label=f"±{100 * band:g} %")
+    for role, marker, color in (("fit", "o", "C0"), ("validate", "s", "C3")):
+        sel = [i for i, p in enumerate(points) if p[1] == role]
+        if sel:
+            ax.scatter(meas[sel], pred[sel], marker=marker, color=color, zorder=3,
+                       label="fitted" if role == "fit" else "validation (not fitted)")
+    for label, _, m, p in points:
+        ax.annotate(str(label), (m, p), textcoords="offset points", xytext=(5, -10),
+                    fontsize=8)
+    ss_tot = float(np.sum((meas - meas.mean()) ** 2))
+    r2 = 1.0 - float(np.sum((meas - pred) ** 2)) / ss_tot if ss_tot > 0 else float("nan")
+    ax.set_xlim(0, top)
+    ax.set_ylim(0, top)
+    ax.set_aspect("equal")
+    ax.set_xlabel(f"measured {quantity} [{unit}]")
+    ax.set_ylabel(f"predicted {quantity} [{unit}]")
+    ax.grid(alpha=0.3)
+    ax.legend(loc="upper left", fontsize=8)
+    ax.set_title((f"{title}\n" if title else "") + f"R² = {r2:.3f}" if np.isfinite(r2)
+                 else title)
+    return fig
+
+
+def plot_signals(time, curves, title: str = ""):
+    """Measured and model signals over time, one panel each.
+
+    Parameters
+    ----------
+    time : array_like
+        [s].
+    curves : dict of name -> (measured, model, unit)
+        Signals in display units.
+    """
+    fig, axes = new_figure(1, len(curves), width=8.0, height=2.4 * len(curves), sharex=True,
+                           squeeze=False)
+    for ax, (name, (meas, model, unit)) in zip(axes[:, 0], curves.items()):
+        ax.plot(time, meas, lw=0.8, color="0.45", label="measured")
+        ax.plot(time, model, lw=1.0, color="C3", label="model")
+        ax.set_ylabel(f"{name.replace('_', ' ')} [{unit}]")
+        ax.grid(alpha=0.3)
+    axes[0, 0].legend(loc="best")
+    axes[-1, 0].set_xlabel("time [s]")
+    if title:
+        fig.suptitle(title)
+    return fig

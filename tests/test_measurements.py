@@ -1,0 +1,147 @@
+"""Readers of measurement files and the signal processing of sealsim.measurements."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from sealsim.errors import InputError
+from sealsim.measurements import (
+    ColumnSpec,
+    SlidingPhase,
+    friction_level,
+    read_measurement,
+    read_table,
+    read_tudelft,
+    sliding_phases,
+    smooth_derivative,
+    step_averages,
+)
+
+DATA = Path(__file__).resolve().parents[1] / "examples" / "data" / "tudelft_pneumatic_friction"
+COLUMNS = [ColumnSpec("time", "t", "ms"), ColumnSpec("position", "x", "mm"),
+           ColumnSpec("friction", "F", "N"), ColumnSpec("pressure", "p", "bar")]
+
+
+def write(tmp_path, text, name="run.csv"):
+    path = tmp_path / name
+    path.write_text(text)
+    return path
+
+
+def test_column_mapping_converts_units_with_pint(tmp_path):
+    path = write(tmp_path, "# rig export\nt,x,F,p,T\n0,0,1.5,1,20\n10,0.5,1.6,2,25\n20,1,1.4,3,30\n")
+    m = read_table(path, [*COLUMNS, ColumnSpec("temperature", "T", "degC")], delimiter=",",
+                   header=True)
+    # exact unit conversions: ms -> s, mm -> m, bar -> Pa, degC -> K
+    assert m.data["time"].tolist() == pytest.approx([0.0, 0.01, 0.02], abs=1e-15)
+    assert m.data["position"].tolist() == pytest.approx([0.0, 5e-4, 1e-3], abs=1e-15)
+    assert m.data["pressure"].tolist() == pytest.approx([1e5, 2e5, 3e5], rel=1e-12)
+    assert m.data["temperature"].tolist() == pytest.approx([293.15, 298.15, 303.15], rel=1e-12)
+    # index columns (1-based) and whitespace work the same
+    path2 = write(tmp_path, "0 0 1.5\n10 0.5 1.6\n20 1 1.4\n", "ws.txt")
+    m2 = read_table(path2, [ColumnSpec("time", 1, "ms"), ColumnSpec("position", 2, "mm"),
+                            ColumnSpec("friction", 3, "N", scale=-1.0)])
+    assert m2.data["friction"].tolist() == [-1.5, -1.6, -1.4]
+
+
+@pytest.mark.parametrize("text, expected", [
+    ("t,x,F,p\n0,0,1,1\n10,abc,1,1\n20,1,1,1\n", ["row 3", "column 2", "(position)", "'abc'"]),
+    ("t,x,F,p\n0,0,1,1\n10,1,1\n20,1,1,1\n", ["row 3", "column 4", "missing"]),
+    ("t,x,F,p\n0,0,1,1\n10,nan,1,1\n20,1,1,1\n", ["row 3", "column 2", "not a finite"]),
+    ("t,x,F,p\n0,0,1,1\n10,1,1,1\n5,1,1,1\n", ["row 4", "column 1", "does not increase"]),
+    ("t,x,F,p\n0,0,1,1\n", ["at least 3"]),
+])
+def test_bad_files_name_file_row_and_column(tmp_path, text, expected):
+    path = write(tmp_path, text)
+    with pytest.raises(InputError) as err:
+        read_table(path, COLUMNS, delimiter=",", header=True)
+    assert str(path) in str(err.value)
+    for part in expected:
+        assert part in str(err.value)
+
+
+def test_bad_mappings_are_input_errors(tmp_path):
+    path = write(tmp_path, "t,x,F,p\n0,0,1,1\n10,1,1,1\n20,1,1,1\n")
+    with pytest.raises(InputError, match="no column named 'y'"):
+        read_table(path, [ColumnSpec("time", "t", "ms"), ColumnSpec("position", "y", "mm")],
+                   delimiter=",", header=True)
+    with pytest.raises(InputError, match="not a unit of position"):
+        read_table(path, [ColumnSpec("time", "t", "ms"), ColumnSpec("position", "x", "bar")],
+                   delimiter=",", header=True)
+    with pytest.raises(InputError, match="unknown unit"):
+        read_table(path, [ColumnSpec("time", "t", "ms"), ColumnSpec("position", "x", "furlongz")],
+                   delimiter=",", header=True)
+    with pytest.raises(InputError, match="does not exist"):
+        read_table(tmp_path / "missing.csv", COLUMNS)
+    with pytest.raises(InputError, match="unknown format"):
+        read_measurement(path, format="nope")
+    with pytest.raises(InputError, match="needs bore"):
+        read_measurement(DATA / "O-ring_1bar.csv", format="tudelft")
+
+
+@pytest.mark.parametrize("name", ["O-ring_1bar.csv", "O-ring_7bar.csv"])
+def test_tudelft_reader_gives_friction_against_the_motion(name):
+    m = read_tudelft(DATA / name, bore=0.025)
+    raw = np.loadtxt(DATA / name)[15:]
+    # friction = -(p·A - F_rod) with A = π·(25 mm)²/4 (the data set's README), SI
+    area = np.pi * 0.025 ** 2 / 4
+    assert np.allclose(m.column("friction"), raw[:, 6] - raw[:, 5] * 1e5 * area, atol=1e-12)
+    assert np.allclose(m.time, raw[:, 0] / 1e3)
+    v = smooth_derivative(m.time, m.column("position"))
+    phases = sliding_phases(m.time, v)
+    # ten strokes each way, each a phase of several seconds
+    assert len(phases) == 20 and all(p.t_stop - p.t_start > 1.5 for p in phases)
+    level, offset = friction_level(m.column("friction"), phases)
+    # sealsim's sign: friction dissipates, F·v > 0 in every sliding phase (after the offset)
+    f = m.column("friction") - offset
+    for p in phases:
+        assert np.median(f[p.start:p.stop] * v[p.start:p.stop]) > 0
+    assert 2.0 < level < 12.0
+
+
+def test_smooth_derivative_is_exact_for_parabolas_and_averages_noise():
+    t = np.sort(np.random.default_rng(1).uniform(0, 2, 400))    # jittered clock
+    x = 0.3 + 0.01 * t - 0.02 * t ** 2
+    assert np.allclose(smooth_derivative(t, x, window=0.2), 0.01 - 0.04 * t, atol=1e-3)
+    # noise of 20 µm on a 10 mm/s ramp: the 0.2 s window brings the velocity noise to well
+    # below 1 mm/s (a plain finite difference at 100 Hz would give about 3 mm/s)
+    t = np.arange(0, 5, 0.01)
+    noisy = 0.01 * t + np.random.default_rng(2).normal(0, 20e-6, t.size)
+    v = smooth_derivative(t, noisy, window=0.2)
+    assert np.std(v[20:-20] - 0.01) < 1e-3
+
+
+def test_no_sliding_phase_is_a_clear_error():
+    t = np.linspace(0, 5, 501)
+    with pytest.raises(InputError, match="no sliding phase found"):
+        sliding_phases(t, np.zeros_like(t))
+    with pytest.raises(InputError, match="both directions"):
+        friction_level(np.ones(10), [SlidingPhase(0, 10, 1, 0.0, 1.0, 0.01)])
+
+
+@settings(max_examples=40, deadline=None)
+@given(offset=st.floats(-50, 50), level=st.floats(0.1, 100))
+def test_friction_level_is_offset_free(offset, level):
+    t = np.linspace(0, 8, 801)
+    v = 0.01 * np.sign(np.sin(np.pi * t / 2))
+    phases = sliding_phases(t, v)
+    got_level, got_offset = friction_level(level * np.sign(v) + offset, phases)
+    assert got_level == pytest.approx(level, rel=1e-9)
+    assert got_offset == pytest.approx(offset, abs=1e-9 * max(1.0, level))
+
+
+def test_step_averages_use_the_last_30_s_of_each_step():
+    t = np.arange(0.0, 300.0, 0.5)
+    speed = np.select([t < 100, t < 200], [100.0, 300.0], 50.0)
+    # the signal settles exponentially after every step (10 s), so the last 30 s are steady
+    torque = speed / 100 + np.exp(-(t % 100) / 10.0)
+    steps = step_averages(t, speed, {"torque": torque}, window=30.0)
+    assert [s["setpoint"] for s in steps] == [100.0, 300.0, 50.0]
+    # mean of 1 + e^(-t/10) over 70 ... 99.5 s: exp(-7) order -> within 1e-3
+    assert [s["torque"] for s in steps] == pytest.approx([1.0, 3.0, 0.5], abs=1e-3)
+    assert step_averages(t, speed, {"torque": torque}, window=150.0) == []
