@@ -8,7 +8,7 @@
 
 >>> from sealsim.thermal import rotating_cylinder_coefficient
 >>> round(float(rotating_cylinder_coefficient(157.0, 0.06, 1e-4, 0.13, 1200.0)))
-1012
+972
 """
 
 from sealsim.thermal.conduction import (

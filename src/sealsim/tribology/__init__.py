@@ -11,7 +11,7 @@
 The rotary lip seal model (:mod:`sealsim.rotary.friction`) composes them.
 
 >>> from sealsim.tribology import film_ratio
->>> film_ratio(0.5e-6, 0.25e-6)
+>>> float(film_ratio(0.5e-6, 0.25e-6))
 2.0
 """
 
