@@ -24,6 +24,7 @@ b from a contact map of :mod:`sealsim.pneumatic.contact_maps`.
 from __future__ import annotations
 
 import math
+import warnings
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
@@ -315,7 +316,7 @@ def _check_ranges(contact_map, pressure: np.ndarray, temperature: np.ndarray) ->
 def _friction_law(law):
     """A friction law object from a name, a ``[friction]`` table or a law object."""
     from sealsim.friction import PARAMETER_SETS, make_law
-    from sealsim.friction.base import FrictionLaw
+    from sealsim.friction.base import FrictionLaw, PassivityWarning
 
     if isinstance(law, FrictionLaw):
         return law
@@ -330,7 +331,11 @@ def _friction_law(law):
         law = {"law": law, "parameter_set": sets[0]}
     if not isinstance(law, Mapping):
         raise InputError(f"law: {law!r} is not a law name, a [friction] table or a law object")
-    return make_law(_law_parameters(law))
+    params = _law_parameters(law)
+    with warnings.catch_warnings():
+        # passivity concerns fast velocity changes, not the steady friction computed here
+        warnings.simplefilter("ignore", PassivityWarning)
+        return make_law(params)
 
 
 def _law_parameters(table: Mapping[str, Any]):

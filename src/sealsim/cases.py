@@ -196,7 +196,7 @@ def wrong_kind_message(model: type[BaseModel], data: Any) -> str | None:
     ...     cylinder: dict
     >>> PneumaticCase.__module__ = "sealsim.pneumatic.case"
     >>> wrong_kind_message(PneumaticCase, {"seal": {}, "gland": {}, "mesh": {}})
-    'this looks like a structure case (it has the tables gland, mesh), not a pneumatic case: run it with sealsim structure run (or sealsim structure map)'
+    'this looks like a structure case (it has the tables gland, mesh), not a pneumatic case: ...'
     """
     name = f"{model.__module__}.{model.__qualname__}"
     expected = next((kind for kind in CASE_KINDS if kind.model == name), None)

@@ -49,7 +49,7 @@ from __future__ import annotations
 import tomllib
 from collections.abc import Mapping
 from pathlib import Path
-from typing import Any, Literal
+from typing import Any
 
 import pydantic
 from pydantic import Field, model_validator
@@ -131,7 +131,7 @@ class OilEntry(CaseModel):
 class CatalogueOilEntry(OilEntry):
     """An oil of the built-in catalogue: may also give ``aliases`` (other names)."""
 
-    aliases: list[str] = []
+    aliases: list[str] = Field(default_factory=list)
 
 
 #: older oil-file keys (unit in the name) -> (field, unit of the plain number)
@@ -258,22 +258,24 @@ class ElastomerEntry(CaseModel):
     def elastomer_arguments(self, name: str) -> dict[str, Any]:
         """Keyword arguments of ``Elastomer(...)``; values not given are left out (the
         Elastomer defaults apply; ``wlf_c1``/``wlf_c2`` are then the caller's)."""
-        given = dict(
-            name=name, description=self.description, source=self.source,
-            hardness_shore_a=self.hardness_shore_a, glass_transition=self.glass_transition,
-            reference_temperature=self.reference_temperature,
-            service_range=(self.service_min, self.service_max), density=self.density,
-            thermal_conductivity=self.thermal_conductivity, specific_heat=self.specific_heat,
-            thermal_expansion=self.thermal_expansion, c10=self.c10, c01=self.c01,
-            bulk_modulus=self.bulk_modulus, wlf_c1=self.wlf.c1, wlf_c2=self.wlf.c2,
-            wlf_reference_temperature=(self.glass_transition
-                                       if self.wlf.reference_temperature is None
-                                       else self.wlf.reference_temperature),
-            glassy_modulus=self.modulus.glassy, rubbery_modulus=self.modulus.rubbery,
-            test_frequency=self.modulus.test_frequency,
-            transition_location=self.modulus.transition_log10_frequency,
-            transition_width=self.modulus.transition_width_decades,
-            transition_asymmetry=self.modulus.transition_asymmetry)
+        wlf, modulus = self.wlf, self.modulus
+        given = {
+            "name": name, "description": self.description, "source": self.source,
+            "hardness_shore_a": self.hardness_shore_a, "glass_transition": self.glass_transition,
+            "reference_temperature": self.reference_temperature,
+            "service_range": (self.service_min, self.service_max), "density": self.density,
+            "thermal_conductivity": self.thermal_conductivity,
+            "specific_heat": self.specific_heat, "thermal_expansion": self.thermal_expansion,
+            "c10": self.c10, "c01": self.c01, "bulk_modulus": self.bulk_modulus,
+            "wlf_c1": wlf.c1, "wlf_c2": wlf.c2,
+            "wlf_reference_temperature": (self.glass_transition
+                                          if wlf.reference_temperature is None
+                                          else wlf.reference_temperature),
+            "glassy_modulus": modulus.glassy, "rubbery_modulus": modulus.rubbery,
+            "test_frequency": modulus.test_frequency,
+            "transition_location": modulus.transition_log10_frequency,
+            "transition_width": modulus.transition_width_decades,
+            "transition_asymmetry": modulus.transition_asymmetry}
         if self.dma is not None:
             given["dma_table"] = (tuple(self.dma.temperature), tuple(self.dma.modulus))
             given["dma_frequency"] = self.dma.frequency

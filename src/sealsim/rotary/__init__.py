@@ -34,7 +34,7 @@ _EXPORTS = {
     "simulate": "simulation", "steady_state": "simulation",
     "load_rotary_case": "study", "run_case_file": "study",
 }
-__all__ = sorted(_EXPORTS)
+__all__ = list(_EXPORTS)
 
 
 def __getattr__(name):
