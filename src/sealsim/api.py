@@ -163,8 +163,8 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
     return _rows_out(rows, shape, LIP_SEAL_COLUMNS)
 
 
-def seal_friction(seal, velocity, pressure=0.0, temperature="20 degC",
-                  law: str | Mapping[str, Any] | Any = None, *, diameter=None):
+def seal_friction(seal, velocity, pressure=0.0, temperature="20 degC", law=None, *,
+                  diameter=None):
     """Steady friction force of a reciprocating seal over sliding velocity.
 
     The seal's normal force F_N and contact width b come from a contact map at the pressure
@@ -196,7 +196,7 @@ def seal_friction(seal, velocity, pressure=0.0, temperature="20 degC",
         Seal temperature (plain number: K), default 20 °C.
     law : str, mapping or FrictionLaw, optional
         The friction law: a law name whose parameters are its only named set
-        (``"theta"``, ``"lugre"``), a ``[friction]`` table of a case file
+        (``"theta"``: ``pneumatic_demo``), a ``[friction]`` table of a case file
         (``{"law": "stribeck", "parameter_set": "pneumatic_demo", "coulomb_force": "12 N"}``)
         or a law object of :mod:`sealsim.friction`.  Default :data:`DEFAULT_LAW` (the Θ law
         with illustrative parameters, not fitted to measurements).
