@@ -355,11 +355,12 @@ def read_elastomer_table(table: Mapping[str, Any], name: str | None = None, orig
         raise InputError(f"elastomer field 'name' must be a non-empty string; got {name!r}")
     where = f"{origin}: elastomer {name!r}" if origin else f"elastomer {name!r}"
     data, renamed = _upgrade_legacy(table, LEGACY_ELASTOMER_KEYS[""], where)
+    legacy = bool(renamed)
     for section, keys in LEGACY_ELASTOMER_KEYS.items():
         if section and isinstance(data.get(section), Mapping):
-            data[section], more = _upgrade_legacy(data[section], keys, f"{where} [{section}]")
-            renamed.update({f"{section}.{old}": f"{section}.{new}" for old, new in more.items()})
-    names = _written_names(LEGACY_ELASTOMER_KEYS) if renamed else {}
+            data[section], renamed = _upgrade_legacy(data[section], keys, f"{where} [{section}]")
+            legacy = legacy or bool(renamed)
+    names = _written_names(LEGACY_ELASTOMER_KEYS) if legacy else {}
     return name, _validate(ElastomerEntry, data, where, names), where, names
 
 
