@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import re
 import warnings
 
 import numpy as np
@@ -543,18 +544,17 @@ def test_from_dict_defaults():
     ],
 )
 def test_from_dict_bad_values_name_the_field(overrides, field):
-    with pytest.raises(InputError, match=f"field '{field}"):
+    # the field as written in the file: "field 'KEY' (checked ...)" or "KEY: required ..."
+    with pytest.raises(InputError, match=f"(field '|: ){re.escape(field)}"):
         Elastomer.from_dict(_user_dict(**overrides), name="bad")
 
 
 def test_from_dict_missing_and_unknown_fields():
     d = _user_dict()
     del d["density_kg_m3"]
-    with pytest.raises(InputError, match="missing field 'density_kg_m3'"):
+    with pytest.raises(InputError, match="density_kg_m3: required field is missing"):
         Elastomer.from_dict(d, name="x")
-    with pytest.raises(
-        InputError, match="unknown field 'densty_kg_m3'.*did you mean 'density_kg_m3'"
-    ):
+    with pytest.raises(InputError, match="densty_kg_m3: unknown field; allowed fields: .*density"):
         Elastomer.from_dict(_user_dict(densty_kg_m3=1200.0), name="x")
     with pytest.raises(InputError, match="name"):
         Elastomer.from_dict(_user_dict())

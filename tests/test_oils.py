@@ -312,7 +312,7 @@ def test_load_user_oil_file(tmp_path):
          "nu40"),
         ('family = "mineral"\nnu40_mm2_s = 68.0\nnu100_mm2_s = 8.7\nrho15_kg_m3 = 0.88\n',
          "rho15"),
-        ('family = "mineral"\nnu40_mm2_s = 68.0\nrho15_kg_m3 = 880.0\n', "nu100_mm2_s"),
+        ('family = "mineral"\nnu40_mm2_s = 68.0\nrho15_kg_m3 = 880.0\n', "nu100"),
         ('family = "mineral"\nnu40_mm2_s = "68"\nnu100_mm2_s = 8.7\nrho15_kg_m3 = 880.0\n',
          "nu40_mm2_s"),
         (('family = "mineral"\nnu40_mm2_s = 68.0\nnu100_mm2_s = 8.7\nrho15_kg_m3 = 880.0\n'

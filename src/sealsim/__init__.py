@@ -2,6 +2,18 @@
 
 The package is layered: ``properties`` (oils, elastomers) feed the physical topic modules,
 which feed the coupled simulations; ``cli`` and ``plotting`` sit on top and hold no physics.
+
+One-call answers at the top level (:mod:`sealsim.api`, imported on first use so that
+``import sealsim`` stays quick):
+
+* :func:`lip_seal_torque` -- steady torque, power, contact temperature and film of a radial
+  lip seal (``sealsim.lip_seal_torque("60 mm", "1500 rpm", "ISO VG 220", "70 degC")``);
+* :func:`seal_friction` -- steady friction of a reciprocating seal over velocity, with F_N and
+  b from an FE map or the analytic O-ring estimate.
+
+The subpackages hold the long-form API: :mod:`sealsim.rotary`, :mod:`sealsim.pneumatic`,
+:mod:`sealsim.friction`, :mod:`sealsim.structure`, :mod:`sealsim.properties`,
+:mod:`sealsim.tribology`, :mod:`sealsim.thermal`, :mod:`sealsim.calibration`.
 """
 
 from importlib.metadata import PackageNotFoundError, version
@@ -13,6 +25,24 @@ try:
 except PackageNotFoundError:  # pragma: no cover - only when run from an uninstalled tree
     __version__ = "0+unknown"
 
+#: top-level names imported on first use: name -> module
+_LAZY = {"lip_seal_torque": "sealsim.api", "seal_friction": "sealsim.api"}
+
+
+def __getattr__(name: str):
+    if name in _LAZY:
+        import importlib
+
+        value = getattr(importlib.import_module(_LAZY[name]), name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module 'sealsim' has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_LAZY))
+
+
 __all__ = [
     "ConvergenceError",
     "InputError",
@@ -20,4 +50,6 @@ __all__ = [
     "ResultExistsError",
     "SealsimError",
     "__version__",
+    "lip_seal_torque",
+    "seal_friction",
 ]

@@ -23,6 +23,7 @@ import math
 import re
 import tomllib
 import typing
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Annotated, Any, TypeVar
 
@@ -41,10 +42,13 @@ from sealsim.errors import InputError
 from sealsim.units import DIMENSIONS, format_quantity, parse_quantity
 
 __all__ = [
+    "CASE_KINDS",
+    "CaseKind",
     "CaseModel",
     "Q",
     "apply_overrides",
     "check_variant_name",
+    "detect_case_kind",
     "dump_case_toml",
     "dump_variants_toml",
     "expand_variants",
@@ -52,6 +56,7 @@ __all__ = [
     "load_toml",
     "validate_case",
     "validation_problems",
+    "wrong_kind_message",
 ]
 
 ModelT = TypeVar("ModelT", bound=BaseModel)
@@ -120,6 +125,89 @@ def Q(dimension: str, *, gt: float | None = None, ge: float | None = None,  # no
     ]
 
 
+@dataclass(frozen=True)
+class CaseKind:
+    """A kind of case file, recognised by top-level tables that no other kind has.
+
+    Parameters
+    ----------
+    name : str
+        What the case is, e.g. ``"structure"``.
+    model : str
+        Qualified name of its case model (a string: this module never imports the models).
+    command : str
+        The command that runs it.
+    tables : frozenset of str
+        Top-level tables (fields of ``model``) that no other kind's model has.
+    """
+
+    name: str
+    model: str
+    command: str
+    tables: frozenset[str]
+
+
+#: The kinds of case file; tests check ``tables`` against the models' fields.
+CASE_KINDS = (
+    CaseKind("rotary", "sealsim.rotary.case.RotaryCase", "sealsim rotary run",
+             frozenset({"duty", "environment", "oil", "thermal", "numerics"})),
+    CaseKind("structure", "sealsim.structure.case.StructureCase",
+             "sealsim structure run (or sealsim structure map)",
+             frozenset({"gland", "material", "mesh", "map"})),
+    CaseKind("pneumatic", "sealsim.pneumatic.case.PneumaticCase", "sealsim pneumatic run",
+             frozenset({"cylinder", "air", "valve", "controller", "seals",
+                        "initial_position"})),
+    CaseKind("friction", "sealsim.friction.case.FrictionCase", "sealsim friction run",
+             frozenset({"bench", "inputs"})),
+    CaseKind("friction fit", "sealsim.calibration.case.FrictionFitCase", "sealsim friction fit",
+             frozenset({"fit", "measurements", "contact", "signals"})),
+    CaseKind("pneumatic compare", "sealsim.calibration.pneumatic_compare.CompareCase",
+             "sealsim pneumatic compare", frozenset({"case", "variant", "measurement"})),
+)
+
+
+def detect_case_kind(data: Any) -> CaseKind | None:
+    """The kind of case whose own top-level tables ``data`` has, if exactly one kind matches.
+
+    Examples
+    --------
+    >>> detect_case_kind({"seal": {}, "gland": {}, "load": {}}).name
+    'structure'
+    >>> detect_case_kind({"seal": {}}) is None   # rotary and structure cases both have a seal
+    True
+    """
+    if not isinstance(data, dict):
+        return None
+    found = [kind for kind in CASE_KINDS if kind.tables & set(data)]
+    return found[0] if len(found) == 1 else None
+
+
+def wrong_kind_message(model: type[BaseModel], data: Any) -> str | None:
+    """A message if ``data`` is a case of another kind than ``model`` (else ``None``).
+
+    Every ``run`` command reads its case through :func:`expand_variants` or
+    :func:`validate_case`, which call this when validation fails, so a structure case given to
+    ``sealsim pneumatic run`` gets "this looks like a structure case ...: run it with sealsim
+    structure run" instead of a list of unknown fields.
+
+    Examples
+    --------
+    >>> class PneumaticCase(CaseModel):   # stands for sealsim.pneumatic.case.PneumaticCase
+    ...     cylinder: dict
+    >>> PneumaticCase.__module__ = "sealsim.pneumatic.case"
+    >>> wrong_kind_message(PneumaticCase, {"seal": {}, "gland": {}, "mesh": {}})
+    'this looks like a structure case (it has the tables gland, mesh), not a pneumatic case: ...'
+    """
+    name = f"{model.__module__}.{model.__qualname__}"
+    expected = next((kind for kind in CASE_KINDS if kind.model == name), None)
+    found = detect_case_kind(data)
+    if expected is None or found is None or found is expected:
+        return None
+    tables = ", ".join(sorted(found.tables & set(data)))
+    return (f"this looks like a {found.name} case (it has the tables {tables}), not a "
+            f"{expected.name} case: run it with {found.command}")
+
+
 def load_toml(path: str | Path) -> dict[str, Any]:
     """Read a TOML file; a missing file or a syntax error becomes an :class:`InputError`."""
     path = Path(path)
@@ -159,6 +247,9 @@ def validate_case(model: type[ModelT], data: Any, source: str = "case",
     try:
         return model.model_validate(data, context={"require_units": require_units})
     except pydantic.ValidationError as exc:
+        wrong_kind = wrong_kind_message(model, data)
+        if wrong_kind:
+            raise InputError(f"invalid {source}: {wrong_kind}") from None
         raise InputError(format_validation_error(exc, source, model)) from None
 
 
@@ -370,6 +461,9 @@ def expand_variants(model: type[ModelT], data: dict[str, Any],
     variants = data.pop("variants", None)
     if variants is None:
         return {DEFAULT_VARIANT: validate_case(model, data, source)}
+    wrong_kind = wrong_kind_message(model, data)
+    if wrong_kind:  # a case of another model: one clear message, not one per variant
+        raise InputError(f"invalid {source}: {wrong_kind}")
     if not isinstance(variants, dict) or not variants:
         raise InputError(f"invalid {source}: variants must be a table of named overrides, "
                          f"e.g. [variants.wave] seal.lip_style = 'wave' (got {variants!r})")

@@ -6,21 +6,45 @@ m²/s for kinematic viscosity, Pa·s for dynamic viscosity.
 
 Angular speed accepts ``rpm``, ``rad/s`` or ``rev/s`` (or ``rps``); ``Hz`` is refused for
 angular speed because pint treats 1 Hz as 1 rad/s, whereas engineers mean 1 rev/s.
+
+pint is imported on first use (:func:`unit_registry`, or the module attribute ``ureg``), so
+modules that only need :data:`ZERO_CELSIUS_K` stay quick to import.
 """
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 from dataclasses import dataclass
 
-import pint
+import numpy as np
 
 from sealsim.errors import InputError
 
-ureg = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
-ureg.define("rev = revolution")
-ureg.define("rps = revolution / second")
+#: 0 degC in kelvin [K] (the definition of the Celsius scale, SI Brochure, 9th ed., 2.3.1).
+ZERO_CELSIUS_K = 273.15
+
+
+@functools.cache
+def unit_registry():
+    """The pint ``UnitRegistry`` of sealsim (created on first use; also ``sealsim.units.ureg``).
+
+    Offset units convert to base units automatically (``"55 degC"`` -> 328.15 K); ``rev`` and
+    ``rps`` are defined.
+    """
+    import pint
+
+    registry = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+    registry.define("rev = revolution")
+    registry.define("rps = revolution / second")
+    return registry
+
+
+def __getattr__(name: str):
+    if name == "ureg":
+        return unit_registry()
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 @dataclass(frozen=True)
@@ -46,7 +70,7 @@ class Dimension:
 
     @property
     def dimensionality(self):
-        return ureg.Quantity(1.0, self.si_unit).dimensionality
+        return unit_registry().Quantity(1.0, self.si_unit).dimensionality
 
     @property
     def output_unit(self) -> str:
@@ -129,7 +153,7 @@ def parse_quantity(value, dimension: str, field: str | None = None) -> float:
     """
     dim = DIMENSIONS[dimension]
     prefix = f"{field}: " if field else ""
-    if isinstance(value, ureg.Quantity):
+    if isinstance(value, unit_registry().Quantity):
         value = f"{float(value.magnitude)!r} {value.units:~}"
     if isinstance(value, bool):
         raise InputError(prefix + f"{value!r} is not a quantity; expected a {dim.name} "
@@ -155,6 +179,9 @@ def parse_quantity(value, dimension: str, field: str | None = None) -> float:
 
 
 def _parse_string(text: str, dim: Dimension, field: str | None) -> float:
+    import pint
+
+    ureg = unit_registry()
     prefix = f"{field}: " if field else ""
     match = _NUMBER.match(text)
     if not match:
@@ -198,6 +225,78 @@ def format_quantity(value: float, dimension: str) -> str:
     dim = DIMENSIONS[dimension]
     if dimension == "dimensionless":
         return f"{value:.12g}"
-    magnitude = ureg.Quantity(value, dim.si_unit).to(dim.output_unit).magnitude
+    magnitude = unit_registry().Quantity(value, dim.si_unit).to(dim.output_unit).magnitude
     unit = dim.output_unit.replace("**", "^")
     return f"{magnitude:.12g} {unit}"
+
+
+def to_si(value, dimension: str, field: str | None = None, *, plain_is_si: bool = True):
+    """A quantity, or an array of quantities, as SI magnitudes (the Python API's inputs).
+
+    Parameters
+    ----------
+    value : str, float, pint.Quantity, or a list/array of these
+        ``"1500 rpm"``, a pint quantity (scalar or array, of :func:`unit_registry`), a list
+        such as ``["1000 rpm", "2000 rpm"]``, or plain numbers, which are SI values when
+        ``plain_is_si``.
+    dimension : str
+        Key of :data:`DIMENSIONS`.
+    field : str, optional
+        Argument name that error messages start with.
+    plain_is_si : bool
+        Accept plain numbers as SI values.  ``False`` where a plain number is ambiguous (a
+        rotational speed: rpm or rad/s?); it is then an error that asks for a unit.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        A float for a scalar input, a float array (same shape) for a list or an array.
+
+    Raises
+    ------
+    InputError
+        No unit where one is required, a wrong dimension, an unknown unit, a value that is not
+        finite.
+
+    Examples
+    --------
+    >>> to_si(["1 bar", "6 bar"], "pressure").tolist()
+    [100000.0, 600000.0]
+    >>> to_si(0.06, "length")
+    0.06
+    >>> to_si(1500, "angular_speed", "speed", plain_is_si=False)
+    Traceback (most recent call last):
+    ...
+    sealsim.errors.InputError: speed: 1500 has no unit; a plain number is ambiguous for an \
+angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
+    """
+    dim = DIMENSIONS[dimension]
+    prefix = f"{field}: " if field else ""
+    quantity_type = unit_registry().Quantity
+    if isinstance(value, quantity_type) and np.ndim(value.magnitude) > 0:
+        if dimension == "angular_speed" and "hertz" in str(value.units):
+            raise InputError(prefix + "Hz is ambiguous for a rotational speed; use rpm, rev/s "
+                             "or rad/s")
+        if value.dimensionality != dim.dimensionality:
+            raise InputError(prefix + f"unit {value.units:~} has dimension "
+                             f"{value.dimensionality}, expected a {dim.name} (e.g. "
+                             f"{dim.example!r})")
+        si = np.asarray(value.to(dim.si_unit).magnitude, dtype=float)
+    elif isinstance(value, list | tuple | np.ndarray):
+        array = np.asarray(value, dtype=object)
+        si = np.array([to_si(v, dimension, field, plain_is_si=plain_is_si)
+                       for v in array.ravel()], dtype=float).reshape(array.shape)
+        return si
+    elif isinstance(value, int | float | np.number) and not isinstance(value, bool | np.bool_):
+        if not plain_is_si and dimension != "dimensionless":
+            why = (" a plain number is ambiguous for an angular speed (rpm or rad/s?):"
+                   if dimension == "angular_speed" else "")
+            raise InputError(prefix + f"{value!r} has no unit;{why} write it with its unit, e.g. "
+                             f"'{value!r} {dim.example.split(' ', 1)[1]}'")
+        si = np.asarray(float(value))
+    else:
+        return parse_quantity(value, dimension, field)
+    if not np.all(np.isfinite(si)):
+        raise InputError(prefix + f"{value!r} is not finite; expected a {dim.name} such as "
+                         f"{dim.example!r}")
+    return float(si) if si.ndim == 0 else si

@@ -1,7 +1,8 @@
 """``sealsim oil ...`` and ``sealsim material ...``: look up, tabulate and plot properties.
 
-The commands hold no physics: they call :mod:`sealsim.properties`, convert units for display
-(°C, mm²/s, mPa·s, MPa) and write plots through :class:`sealsim.output.ResultFolder`.
+The commands hold no physics: the tables come from :mod:`sealsim.properties.tables`; the
+commands print them (°C, mm²/s, mPa·s, MPa) and write plots through
+:class:`sealsim.output.ResultFolder`.
 
 JSON output (``--json``) uses one key per value with the unit in the key name:
 
@@ -23,13 +24,10 @@ JSON output (``--json``) uses one key per value with the unit in the key name:
 from __future__ import annotations
 
 import math
-import warnings
 from enum import Enum
 from pathlib import Path
-from typing import Any
 
 import numpy as np
-import pandas as pd
 import typer
 from rich import box
 from rich.table import Table
@@ -42,16 +40,28 @@ from sealsim.plotting.properties import modulus_temperature_figure, viscosity_te
 from sealsim.properties import oils as oils_module
 from sealsim.properties.elastomers import (
     Elastomer,
-    ServiceRangeWarning,
     get_elastomer,
     list_elastomers,
     load_elastomer_file,
 )
-from sealsim.properties.oils import Oil, OilRangeWarning, get_oil, list_oils, load_oil_file
+from sealsim.properties.oils import Oil, get_oil, list_oils, load_oil_file
+from sealsim.properties.tables import (
+    celsius,
+    default_material_temperatures,
+    find_material,
+    material_details,
+    material_rows,
+    material_summary,
+    modulus_curves,
+    oil_rows,
+    oil_summary,
+    unique_by_name,
+    viscosity_curves,
+)
+from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["material_app", "oil_app"]
 
-ZERO_CELSIUS = 273.15  # K
 DEFAULT_OIL_TEMPERATURES_C = [20.0, 40.0, 60.0, 80.0, 100.0]
 VISCOSITY_PNG = "viscosity_temperature.png"
 VISCOSITY_CSV = "viscosity_temperature.csv"
@@ -80,21 +90,6 @@ class Chart(str, Enum):
 # ---------------------------------------------------------------------------------------------
 
 
-def _c(kelvin: float) -> float:
-    return float(kelvin) - ZERO_CELSIUS
-
-
-def _check_celsius(values: list[float], lo_k: float, hi_k: float, option: str,
-                   what: str) -> np.ndarray:
-    """Temperatures [degC] → K, refusing values outside [lo_k, hi_k] with a message in degC."""
-    t = np.asarray(values, dtype=float) + ZERO_CELSIUS
-    bad = t[(t < lo_k) | (t > hi_k)]
-    if bad.size:
-        raise InputError(f"{option}: {_c(bad[0]):g} degC is outside {what}; allowed: "
-                         f"{_c(lo_k):.2f} to {_c(hi_k):.2f} degC")
-    return t
-
-
 def _positive(value: float, option: str, unit: str) -> float:
     if not (math.isfinite(value) and value > 0):
         raise InputError(f"{option}: {value!r} {unit} is not allowed; give a finite value > 0")
@@ -104,7 +99,7 @@ def _positive(value: float, option: str, unit: str) -> float:
 def _grid_celsius(t_min: float, t_max: float) -> np.ndarray:
     """Plot temperatures [degC]: whole-degree steps from t_min to t_max (both included)."""
     for value, name in ((t_min, "--t-min"), (t_max, "--t-max")):
-        if not math.isfinite(value) or value < -ZERO_CELSIUS:
+        if not math.isfinite(value) or value < -ZERO_CELSIUS_K:
             raise InputError(f"{name}: {value!r} degC is not a valid temperature "
                              "(must be finite and >= -273.15 degC)")
     if not t_max > t_min:
@@ -119,183 +114,8 @@ def _extra_oils(oil_file: Path | None) -> dict[str, Oil]:
     return load_oil_file(oil_file) if oil_file is not None else {}
 
 
-def _unique(items: list[Any]) -> list[Any]:
-    """Items without repeats (by name), in order: ``VG68`` and ``VG68-mineral`` are one oil."""
-    seen: dict[str, Any] = {}
-    for item in items:
-        seen.setdefault(item.name, item)
-    return list(seen.values())
-
-
-# -- oils ---------------------------------------------------------------------------------------
-
-def oil_summary(oil: Oil, origin: str = "catalogue") -> dict[str, Any]:
-    """JSON-ready catalogue row of an oil (units in the key names)."""
-    return {
-        "name": oil.name,
-        "family": oil.family,
-        "origin": origin,
-        "nu40_mm2_s": oil.nu40 * 1e6,
-        "nu100_mm2_s": oil.nu100 * 1e6,
-        "viscosity_index": oil.viscosity_index,
-        "rho15_kg_m3": oil.rho15,
-        "min_temperature_C": _c(oil.min_temperature),
-        "source": oil.source,
-    }
-
-
-def oil_rows(oil: Oil, temperatures_c: list[float]) -> tuple[list[dict[str, float]], list[str]]:
-    """Property table of an oil at temperatures [degC] and the notes to show with it.
-
-    Raises InputError for temperatures below the oil's minimum temperature or outside the
-    range of the correlations; a viscosity below 2 mm²/s (extrapolated ASTM D341) is a note.
-    """
-    t = _check_celsius(temperatures_c, *oils_module.T_RANGE, "--temperatures",
-                       "the range of the oil correlations")
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always", OilRangeWarning)
-        oil.check_temperature(t, name="--temperatures")
-    notes = [str(w.message) for w in caught if issubclass(w.category, OilRangeWarning)]
-    nu = np.atleast_1d(oil.kinematic_viscosity(t))
-    eta = np.atleast_1d(oil.dynamic_viscosity(t))
-    rho = np.atleast_1d(oil.density(t))
-    k = np.atleast_1d(oil.thermal_conductivity(t))
-    cp = np.atleast_1d(oil.specific_heat(t))
-    rows = [{"temperature_C": float(tc), "nu_mm2_s": float(nu[i] * 1e6),
-             "eta_Pa_s": float(eta[i]), "rho_kg_m3": float(rho[i]), "k_W_mK": float(k[i]),
-             "cp_J_kgK": float(cp[i])} for i, tc in enumerate(temperatures_c)]
-    return rows, notes
-
-
-def viscosity_curves(oils: list[Oil], temperatures_c: np.ndarray
-                     ) -> tuple[pd.DataFrame, list[str]]:
-    """ν(T) of each oil on a grid [degC]: a DataFrame (the CSV) and notes on omitted ranges.
-
-    Values below an oil's minimum temperature or with ν < 2 mm²/s (outside ASTM D341) are
-    left empty (NaN) rather than extrapolated.
-    """
-    t = _check_celsius(list(temperatures_c), *oils_module.T_RANGE, "--t-min/--t-max",
-                       "the range of the oil correlations")
-    frame = pd.DataFrame({"temperature_C": temperatures_c})
-    notes = []
-    for oil in oils:
-        with np.errstate(over="ignore"):
-            nu = np.asarray(oil.kinematic_viscosity(t), dtype=float)
-        cold = t < oil.min_temperature
-        thin = ~cold & ~(nu >= oils_module.NU_MIN_D341)
-        if cold.any():
-            notes.append(f"{oil.name}: not drawn below {_c(oil.min_temperature):.0f} degC "
-                         "(its lowest temperature of use)")
-        if thin.any():
-            notes.append(f"{oil.name}: not drawn from {_c(t[thin].min()):.0f} degC up "
-                         "(viscosity below 2 mm^2/s, outside ASTM D341)")
-        frame[f"nu_{oil.name}_mm2_s"] = np.where(cold | thin, np.nan, nu * 1e6)
-    return frame, notes
-
-
-# -- elastomers ---------------------------------------------------------------------------------
-
 def _extra_materials(material_file: Path | None) -> dict[str, Elastomer]:
     return load_elastomer_file(material_file) if material_file is not None else {}
-
-
-def find_material(name: str, extra: dict[str, Elastomer]) -> Elastomer:
-    """Material ``name`` (case-insensitive) from ``extra`` first, then the catalogue."""
-    for key, material in extra.items():
-        if key.casefold() == name.strip().casefold():
-            return material
-    try:
-        return get_elastomer(name)
-    except InputError as exc:
-        if extra:
-            raise InputError(f"{exc}; the material file defines: {', '.join(extra)}") from None
-        raise
-
-
-def material_summary(m: Elastomer, origin: str = "catalogue") -> dict[str, Any]:
-    """JSON-ready catalogue row of an elastomer (units in the key names)."""
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", ServiceRangeWarning)
-        e_ref = m.modulus(m.reference_temperature)
-    return {
-        "name": m.name,
-        "description": m.description,
-        "origin": origin,
-        "glass_transition_C": _c(m.glass_transition),
-        "service_min_C": _c(m.service_range[0]),
-        "service_max_C": _c(m.service_range[1]),
-        "density_kg_m3": m.density,
-        "hardness_shore_a": m.hardness_shore_a,
-        "reference_temperature_C": _c(m.reference_temperature),
-        "test_frequency_Hz": m.test_frequency,
-        "E_reference_Pa": float(e_ref),
-        "source": m.source,
-    }
-
-
-def material_details(m: Elastomer, origin: str = "catalogue") -> dict[str, Any]:
-    """All properties of ``material show`` (without the table)."""
-    return {
-        **material_summary(m, origin),
-        "thermal_conductivity_W_mK": m.thermal_conductivity,
-        "specific_heat_J_kgK": m.specific_heat,
-        "thermal_expansion_1_K": m.thermal_expansion,
-        "c10_Pa": m.c10,
-        "c01_Pa": m.c01,
-        "bulk_modulus_Pa": m.bulk_modulus,
-        "wlf_c1": m.wlf_c1,
-        "wlf_c2_K": m.wlf_c2,
-        "wlf_reference_temperature_C": _c(m.wlf_reference_temperature),
-        "glassy_modulus_Pa": m.glassy_modulus,
-        "rubbery_modulus_Pa": m.rubbery_modulus,
-        "modulus_model": "DMA table" if m.dma_table is not None else "master curve",
-    }
-
-
-def default_material_temperatures(m: Elastomer) -> list[float]:
-    """Service range in 20 degC steps [degC] (both ends included)."""
-    lo, hi = round(_c(m.service_range[0]), 2), round(_c(m.service_range[1]), 2)
-    inner = np.arange(math.ceil(lo / 20.0) * 20.0, hi, 20.0)
-    return [lo] + [float(v) for v in inner if lo + 5.0 < v < hi - 5.0] + [hi]
-
-
-def material_rows(m: Elastomer, temperatures_c: list[float], frequency: float
-                  ) -> tuple[list[dict[str, float]], list[str]]:
-    """E(T) and a_T of a material at temperatures [degC]; notes for values outside service."""
-    lo, hi = m.allowed_range
-    t = _check_celsius(temperatures_c, lo, hi, "--temperatures",
-                       f"the range where the {m.name} model is meaningful (T_g - 100 K to the "
-                       "service maximum + 50 K)")
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", ServiceRangeWarning)  # reported below, in degC
-        e = np.atleast_1d(m.modulus(t, frequency))
-        log_at = np.atleast_1d(m.log10_shift_factor(t))
-    s_lo, s_hi = m.service_range
-    outside = [tc for tc, tk in zip(temperatures_c, t, strict=True) if not s_lo <= tk <= s_hi]
-    notes = []
-    if outside:
-        notes.append(f"{m.name}: {', '.join(f'{v:g}' for v in outside)} degC outside the service "
-                     f"range {_c(s_lo):g} to {_c(s_hi):g} degC; values shown for information")
-    rows = [{"temperature_C": float(tc), "E_Pa": float(e[i]), "a_T": float(10.0 ** log_at[i]),
-             "log10_a_T": float(log_at[i])} for i, tc in enumerate(temperatures_c)]
-    return rows, notes
-
-
-def modulus_curves(materials: list[Elastomer], temperatures_c: np.ndarray, frequency: float
-                   ) -> pd.DataFrame:
-    """E(T) [Pa] of each material on a grid [degC]; empty (NaN) outside its allowed range."""
-    t = np.asarray(temperatures_c, dtype=float) + ZERO_CELSIUS
-    frame = pd.DataFrame({"temperature_C": temperatures_c})
-    for m in materials:
-        lo, hi = m.allowed_range
-        ok = (t >= lo) & (t <= hi)
-        e = np.full(t.shape, np.nan)
-        if ok.any():
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore", ServiceRangeWarning)  # shown dashed in the plot
-                e[ok] = m.modulus(t[ok], frequency)
-        frame[f"E_{m.name}_Pa"] = e
-    return frame
 
 
 # ---------------------------------------------------------------------------------------------
@@ -351,7 +171,7 @@ def _g(value: float | None, digits: int = 4) -> str:
 
 OIL_FILE_OPTION = typer.Option(
     None, "--oil-file", help="TOML file with your own oils (one table oils.NAME each, with "
-    "family, nu40_mm2_s, nu100_mm2_s, rho15_kg_m3, ...), used next to the catalogue.")
+    "family, nu40 = '68 mm^2/s', nu100, density15, ...), used next to the catalogue.")
 JSON_OPTION = typer.Option(False, "--json", help="Print machine-readable JSON instead of a table.")
 
 
@@ -402,7 +222,7 @@ def oil_show(
     extra = _extra_oils(oil_file)
     oil = get_oil(name, extra)
     temps = parse_celsius_list(temperatures, DEFAULT_OIL_TEMPERATURES_C, "--temperatures")
-    rows, notes = oil_rows(oil, temps)
+    rows, notes = oil_rows(oil, temps, "--temperatures")
     origin = str(oil_file) if oil.name in extra else "catalogue"
     info = {**oil_summary(oil, origin),
             "pressure_viscosity_coefficient_1_Pa": oil.pressure_viscosity_coefficient,
@@ -446,14 +266,14 @@ def oil_plot(
     left empty (not extrapolated).
     """
     extra = _extra_oils(oil_file)
-    oils = _unique([get_oil(n, extra) for n in names])
+    oils = unique_by_name([get_oil(n, extra) for n in names])
     grid = _grid_celsius(t_min, t_max)
     folder = ResultFolder(out, force=force)  # refuse an existing folder before any work
-    frame, notes = viscosity_curves(oils, grid)
+    frame, notes = viscosity_curves(oils, grid, "--t-min/--t-max")
     if frame.drop(columns="temperature_C").isna().all().all():
         raise InputError(f"nothing to plot between {grid[0]:g} and {grid[-1]:g} degC: "
                          + "; ".join(notes) + "; change --t-min/--t-max")
-    t_k = grid + ZERO_CELSIUS
+    t_k = grid + ZERO_CELSIUS_K
     curves = {oil.name: frame[f"nu_{oil.name}_mm2_s"].to_numpy() * 1e-6 for oil in oils}
     ref = np.array([oils_module.T40, oils_module.T100])
     shown = (ref >= t_k[0]) & (ref <= t_k[-1])
@@ -534,7 +354,7 @@ def material_show(
     m = find_material(name, extra)
     freq = _positive(frequency, "--frequency", "Hz")
     temps = parse_celsius_list(temperatures, default_material_temperatures(m), "--temperatures")
-    rows, notes = material_rows(m, temps, freq)
+    rows, notes = material_rows(m, temps, freq, "--temperatures")
     origin = str(material_file) if m in extra.values() else "catalogue"
     info = {**material_details(m, origin), "frequency_Hz": freq}
     if json:
@@ -582,21 +402,21 @@ def material_plot(
     model is meaningful.
     """
     extra = _extra_materials(material_file)
-    materials = _unique([find_material(n, extra) for n in names])
+    materials = unique_by_name([find_material(n, extra) for n in names])
     freq = _positive(frequency, "--frequency", "Hz")
-    lo = min(_c(m.glass_transition) for m in materials) - 40.0 if t_min is None else t_min
-    hi = max(_c(m.service_range[1]) for m in materials) + 20.0 if t_max is None else t_max
+    lo = min(celsius(m.glass_transition) for m in materials) - 40.0 if t_min is None else t_min
+    hi = max(celsius(m.service_range[1]) for m in materials) + 20.0 if t_max is None else t_max
     grid = _grid_celsius(math.floor(lo / 10.0) * 10.0 if t_min is None else lo,
                          math.ceil(hi / 10.0) * 10.0 if t_max is None else hi)
     folder = ResultFolder(out, force=force)  # refuse an existing folder before any work
     frame = modulus_curves(materials, grid, freq)
     if frame.drop(columns="temperature_C").isna().all().all():
-        ranges = ", ".join(f"{m.name} {_c(m.allowed_range[0]):.0f} to "
-                           f"{_c(m.allowed_range[1]):.0f} degC" for m in materials)
+        ranges = ", ".join(f"{m.name} {celsius(m.allowed_range[0]):.0f} to "
+                           f"{celsius(m.allowed_range[1]):.0f} degC" for m in materials)
         raise InputError(f"nothing to plot between {grid[0]:g} and {grid[-1]:g} degC: the "
                          f"material models are meaningful at {ranges}; change --t-min/--t-max")
     fig = modulus_temperature_figure(
-        grid + ZERO_CELSIUS, {m.name: frame[f"E_{m.name}_Pa"].to_numpy() for m in materials},
+        grid + ZERO_CELSIUS_K, {m.name: frame[f"E_{m.name}_Pa"].to_numpy() for m in materials},
         glass_transition={m.name: m.glass_transition for m in materials},
         service_range={m.name: m.service_range for m in materials}, frequency=freq)
     with folder:

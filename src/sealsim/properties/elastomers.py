@@ -87,7 +87,6 @@ from __future__ import annotations
 import difflib
 import functools
 import math
-import tomllib
 import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -1528,11 +1527,12 @@ class Elastomer:
 
     @classmethod
     def from_dict(cls, data: Mapping[str, Any], name: str | None = None) -> Elastomer:
-        """Build an elastomer from a TOML-style table (units in the key names).
+        """Build an elastomer from a TOML table of an elastomer file.
 
-        The format is that of ``data/elastomers.toml``. Temperatures are in °C in the file
-        (``*_C``), moduli in MPa (``*_MPa``); they are converted to K and Pa. Unknown, missing or
-        invalid keys raise :class:`InputError` naming the key.
+        The format is that of ``data/elastomers.toml`` (quantities with units, see
+        :class:`sealsim.properties.catalogue.ElastomerEntry`); tables in the older format
+        (units in the key names, ``glass_transition_C = -30``) are read too.  Unknown,
+        missing or invalid fields raise :class:`InputError` naming the field.
 
         Parameters
         ----------
@@ -1547,11 +1547,12 @@ class Elastomer:
 
         Examples
         --------
-        >>> d = {"glass_transition_C": -30, "density_kg_m3": 1250,
-        ...      "thermal_conductivity_W_mK": 0.25, "specific_heat_J_kgK": 1700,
-        ...      "thermal_expansion_per_K": 2e-4, "c10_MPa": 1.0, "c01_MPa": 0.25,
-        ...      "bulk_modulus_MPa": 2000, "service_min_C": -40, "service_max_C": 100,
-        ...      "modulus": {"glassy_MPa": 2000, "rubbery_MPa": 2.7}}
+        >>> d = {"glass_transition": "-30 degC", "density": "1250 kg/m^3",
+        ...      "thermal_conductivity": "0.25 W/(m*K)", "specific_heat": "1700 J/(kg*K)",
+        ...      "thermal_expansion": "2e-4 1/K", "c10": "1.0 MPa", "c01": "0.25 MPa",
+        ...      "bulk_modulus": "2000 MPa", "service_min": "-40 degC",
+        ...      "service_max": "100 degC",
+        ...      "modulus": {"glassy": "2000 MPa", "rubbery": "2.7 MPa"}}
         >>> Elastomer.from_dict(d, name="myNBR").wlf_reference_temperature
         243.15
         """
@@ -1559,193 +1560,36 @@ class Elastomer:
 
 
 # ---------------------------------------------------------------------------------------------
-# TOML format
+# TOML format (models and reading: sealsim.properties.catalogue)
 # ---------------------------------------------------------------------------------------------
-
-_C = ("C", lambda v: v + ZERO_CELSIUS)
-_MPA = ("MPa", lambda v: v * 1e6)
-_ID = ("", lambda v: v)
-
-# toml key -> (Elastomer field, conversion, required)
-_TOP_KEYS: dict[str, tuple[str, tuple, bool]] = {
-    "name": ("name", _ID, False),
-    "description": ("description", _ID, False),
-    "source": ("source", _ID, False),
-    "hardness_shore_a": ("hardness_shore_a", _ID, False),
-    "glass_transition_C": ("glass_transition", _C, True),
-    "reference_temperature_C": ("reference_temperature", _C, False),
-    "density_kg_m3": ("density", _ID, True),
-    "thermal_conductivity_W_mK": ("thermal_conductivity", _ID, True),
-    "specific_heat_J_kgK": ("specific_heat", _ID, True),
-    "thermal_expansion_per_K": ("thermal_expansion", _ID, True),
-    "c10_MPa": ("c10", _MPA, True),
-    "c01_MPa": ("c01", _MPA, True),
-    "bulk_modulus_MPa": ("bulk_modulus", _MPA, True),
-}
-_WLF_KEYS = {
-    "c1": ("wlf_c1", _ID, False),
-    "c2_K": ("wlf_c2", _ID, False),
-    "reference_temperature_C": ("wlf_reference_temperature", _C, False),
-}
-_MODULUS_KEYS = {
-    "glassy_MPa": ("glassy_modulus", _MPA, True),
-    "rubbery_MPa": ("rubbery_modulus", _MPA, True),
-    "test_frequency_Hz": ("test_frequency", _ID, False),
-    "transition_log10_frequency": ("transition_location", _ID, False),
-    "transition_width_decades": ("transition_width", _ID, False),
-    "transition_asymmetry": ("transition_asymmetry", _ID, False),
-}
-_SECTIONS = ("wlf", "modulus", "dma", "prony")
-_SERVICE_KEYS = ("service_min_C", "service_max_C")
-
-
-def _num(where: str, key: str, value: Any) -> float:
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        raise InputError(f"{where}: field '{key}' must be a number; got {value!r}")
-    if not math.isfinite(value):
-        raise InputError(f"{where}: field '{key}' must be finite; got {value!r}")
-    return float(value)
-
-
-def _num_list(where: str, key: str, value: Any) -> tuple[float, ...]:
-    if not isinstance(value, (list, tuple)) or not value:
-        raise InputError(
-            f"{where}: field '{key}' must be a non-empty list of numbers; got {value!r}"
-        )
-    return tuple(_num(where, key, v) for v in value)
-
-
-def _check_keys(where: str, table: Mapping[str, Any], allowed: list[str]) -> None:
-    for key in table:
-        if key not in allowed:
-            close = difflib.get_close_matches(key, allowed, n=3, cutoff=0.5)
-            hint = f"; did you mean {', '.join(repr(c) for c in close)}?" if close else ""
-            raise InputError(
-                f"{where}: unknown field '{key}'{hint} Allowed: {', '.join(sorted(allowed))}"
-            )
-
-
-def _section(where: str, data: Mapping[str, Any], key: str) -> Mapping[str, Any]:
-    sec = data.get(key, {})
-    if not isinstance(sec, Mapping):
-        raise InputError(f"{where}: field '{key}' must be a table; got {sec!r}")
-    return sec
 
 
 def _from_dict(data: Mapping[str, Any], name: str | None) -> Elastomer:
-    if not isinstance(data, Mapping):
-        raise InputError(
-            f"an elastomer must be given as a table (mapping); got {type(data).__name__}"
-        )
-    name = name if name is not None else data.get("name")
-    if not isinstance(name, str) or not name.strip():
-        raise InputError(f"elastomer field 'name' must be a non-empty string; got {name!r}")
-    where = f"elastomer '{name}'"
-    _check_keys(where, data, [*_TOP_KEYS, *_SERVICE_KEYS, *_SECTIONS])
+    from sealsim.properties.catalogue import read_elastomer_table
 
-    kwargs: dict[str, Any] = {"name": name}
-    field_to_key: dict[str, str] = {
-        field: f"{prefix}{key}"
-        for keys, prefix in ((_TOP_KEYS, ""), (_WLF_KEYS, "wlf."), (_MODULUS_KEYS, "modulus."))
-        for key, (field, _, _) in keys.items()
-    }
+    return _build(*read_elastomer_table(data, name))
 
-    def take(table: Mapping[str, Any], keys: Mapping[str, tuple], prefix: str) -> None:
-        for key, (field, (_, conv), required) in keys.items():
-            full = f"{prefix}{key}"
-            if key == "name":
-                continue
-            if key not in table:
-                if required:
-                    raise InputError(f"{where}: missing field '{full}'")
-                continue
-            value = table[key]
-            if field in ("description", "source"):
-                if not isinstance(value, str):
-                    raise InputError(f"{where}: field '{full}' must be a string; got {value!r}")
-                kwargs[field] = value
-            else:
-                kwargs[field] = conv(_num(where, full, value))
-            field_to_key[field] = full
 
-    take(data, _TOP_KEYS, "")
-    wlf = _section(where, data, "wlf")
-    _check_keys(f"{where} [wlf]", wlf, list(_WLF_KEYS))
-    take(wlf, _WLF_KEYS, "wlf.")
-    if "modulus" not in data:
-        raise InputError(f"{where}: missing table 'modulus' (keys {', '.join(_MODULUS_KEYS)})")
-    mod = _section(where, data, "modulus")
-    _check_keys(f"{where} [modulus]", mod, list(_MODULUS_KEYS))
-    take(mod, _MODULUS_KEYS, "modulus.")
+def _build(name: str, entry: Any, where: str, names: Mapping[str, str]) -> Elastomer:
+    """The Elastomer of a validated file entry; a failed physical check names the field as
+    written in the file."""
+    from sealsim.properties.catalogue import elastomer_key
 
-    for key in _SERVICE_KEYS:
-        if key not in data:
-            raise InputError(f"{where}: missing field '{key}'")
-    kwargs["service_range"] = (
-        _num(where, "service_min_C", data["service_min_C"]) + ZERO_CELSIUS,
-        _num(where, "service_max_C", data["service_max_C"]) + ZERO_CELSIUS,
-    )
-    field_to_key["service_range"] = "service_min_C/service_max_C"
-
-    kwargs.setdefault("description", "")
-    kwargs.setdefault("source", "user-defined")
-    kwargs.setdefault("reference_temperature", 23.0 + ZERO_CELSIUS)
-    kwargs.setdefault("wlf_c1", WLF_UNIVERSAL.c1)
-    kwargs.setdefault("wlf_c2", WLF_UNIVERSAL.c2)
-    if "wlf_reference_temperature" not in kwargs:
-        kwargs["wlf_reference_temperature"] = kwargs["glass_transition"]
-
-    if "dma" in data:
-        dma = _section(where, data, "dma")
-        _check_keys(f"{where} [dma]", dma, ["temperature_C", "modulus_MPa", "frequency_Hz"])
-        for key in ("temperature_C", "modulus_MPa"):
-            if key not in dma:
-                raise InputError(f"{where}: missing field 'dma.{key}'")
-        t_tab = tuple(
-            v + ZERO_CELSIUS for v in _num_list(where, "dma.temperature_C", dma["temperature_C"])
-        )
-        e_tab = tuple(v * 1e6 for v in _num_list(where, "dma.modulus_MPa", dma["modulus_MPa"]))
-        kwargs["dma_table"] = (t_tab, e_tab)
-        field_to_key["dma_table"] = "dma.temperature_C/dma.modulus_MPa"
-        if "frequency_Hz" in dma:
-            kwargs["dma_frequency"] = _num(where, "dma.frequency_Hz", dma["frequency_Hz"])
-            field_to_key["dma_frequency"] = "dma.frequency_Hz"
-
-    if "prony" in data:
-        pr = _section(where, data, "prony")
-        keys = [
-            "equilibrium_modulus_MPa",
-            "moduli_MPa",
-            "relaxation_times_s",
-            "reference_temperature_C",
-        ]
-        _check_keys(f"{where} [prony]", pr, keys)
-        for key in keys[:3]:
-            if key not in pr:
-                raise InputError(f"{where}: missing field 'prony.{key}'")
-        e_inf = _num(where, "prony.equilibrium_modulus_MPa", pr["equilibrium_modulus_MPa"]) * 1e6
-        e_i = tuple(v * 1e6 for v in _num_list(where, "prony.moduli_MPa", pr["moduli_MPa"]))
-        tau = _num_list(where, "prony.relaxation_times_s", pr["relaxation_times_s"])
-        kwargs["prony"] = (e_inf, e_i, tau)
-        field_to_key["prony"] = "prony"
-        if "reference_temperature_C" in pr:
-            kwargs["prony_reference_temperature"] = (
-                _num(where, "prony.reference_temperature_C", pr["reference_temperature_C"])
-                + ZERO_CELSIUS
-            )
-            field_to_key["prony_reference_temperature"] = "prony.reference_temperature_C"
-
+    kwargs = {"wlf_c1": WLF_UNIVERSAL.c1, "wlf_c2": WLF_UNIVERSAL.c2,
+              **entry.elastomer_arguments(name)}
     try:
         return Elastomer(**kwargs)
     except InputError as exc:
         field = getattr(exc, "field", None)
-        key = field_to_key.get(field, field) if field else None
-        prefix = f"{where}: field '{key}'" if key else where
+        prefix = f"{where}: field '{elastomer_key(field, names)}'" if field else where
         raise InputError(f"{prefix} (checked after conversion to SI units): {exc}") from None
 
 
 def load_elastomer_file(path: str | Path) -> dict[str, Elastomer]:
     """Read every elastomer table of a TOML file in the catalogue format.
+
+    The format (quantities with units, like case files) is described in
+    :mod:`sealsim.properties.catalogue`.
 
     Parameters
     ----------
@@ -1763,22 +1607,11 @@ def load_elastomer_file(path: str | Path) -> dict[str, Elastomer]:
     >>> sorted(load_elastomer_file(_catalogue_path()))
     ['ACM', 'FKM', 'HNBR', 'NBR', 'VMQ']
     """
-    p = Path(path)
-    try:
-        with p.open("rb") as fh:
-            doc = tomllib.load(fh)
-    except FileNotFoundError:
-        raise InputError(f"elastomer file {str(p)!r} does not exist") from None
-    except ValueError as exc:  # TOMLDecodeError and integers tomllib cannot convert
-        raise InputError(f"elastomer file {str(p)!r} is not valid TOML: {exc}") from None
-    out: dict[str, Elastomer] = {}
-    for key, table in doc.items():
-        if not isinstance(table, Mapping):
-            raise InputError(f"{str(p)!r}: top-level key {key!r} must be a material table")
-        out[key] = _from_dict(table, table.get("name", key))
-    if not out:
-        raise InputError(f"elastomer file {str(p)!r} holds no material table")
-    return out
+    from sealsim.properties.catalogue import read_elastomer_tables, read_text_file
+
+    text = read_text_file(path, "elastomer file")
+    return {key: _build(*table) for key, table
+            in read_elastomer_tables(text, f"elastomer file {str(path)!r}").items()}
 
 
 # ---------------------------------------------------------------------------------------------

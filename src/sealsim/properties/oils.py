@@ -27,39 +27,40 @@ temperatures: it raises :class:`InputError` below
 
 Oil file format (catalogue and user files)
 ------------------------------------------
-TOML, one table per oil under ``[oils]``; plain numbers with the unit in the key name::
+TOML, one table per oil under ``[oils]``; quantities are strings with units, as in case
+files (:mod:`sealsim.properties.catalogue` has the models and every field)::
 
     [oils."VG68-mineral"]
     family = "mineral"                 # mineral | PAO | PAG | ester | other
-    nu40_mm2_s = 68.0                  # kinematic viscosity at 40 degC [mm^2/s]
-    nu100_mm2_s = 8.7                  # kinematic viscosity at 100 degC [mm^2/s]
-    rho15_kg_m3 = 880.0                # density at 15 degC [kg/m^3]
+    nu40 = "68 mm^2/s"                 # kinematic viscosity at 40 degC
+    nu100 = "8.7 mm^2/s"               # kinematic viscosity at 100 degC
+    density15 = "880 kg/m^3"           # density at 15 degC
     source = "datasheet of ..."        # where the numbers come from
 
-Instead of ``nu40_mm2_s``/``nu100_mm2_s`` an entry may give ``walther_A`` and ``walther_B``
-(ASTM D341 constants for mm^2/s and K).  Optional keys: ``min_temperature_degC``,
-``pressure_viscosity_coefficient_1_GPa``, ``thermal_conductivity_W_mK``,
-``specific_heat_J_kgK``, ``thermal_expansion_1_K``.  The built-in catalogue may also give
-``aliases`` (a list of names); user files may not.  Unknown keys are an error.
+Instead of ``nu40``/``nu100`` an entry may give ``walther_A`` and ``walther_B`` (ASTM D341
+constants for mm^2/s and K).  Optional: ``min_temperature``,
+``pressure_viscosity_coefficient``, ``thermal_conductivity``, ``specific_heat``,
+``thermal_expansion``.  The built-in catalogue may also give ``aliases`` (a list of names);
+user files may not.  Unknown fields are an error.  Files in the older format (plain numbers,
+unit in the key name: ``nu40_mm2_s = 68.0``) are still read.
 """
 
 from __future__ import annotations
 
 import difflib
 import re
-import tomllib
 import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
 from os import PathLike
-from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from sealsim.errors import InputError
+from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = [
     "FAMILIES",
@@ -78,7 +79,7 @@ __all__ = [
 ]
 
 #: Offset between degC and K [K].
-T0 = 273.15
+T0 = ZERO_CELSIUS_K
 #: Reference temperatures of the viscosity index [K].
 T40 = T0 + 40.0
 T100 = T0 + 100.0
@@ -1005,85 +1006,33 @@ specific_heat_value, thermal_expansion, source
 # Catalogue and oil files
 # ----------------------------------------------------------------------------------------------
 
-_FIELDS = {
-    # TOML key: (Oil field, factor to SI)
-    "walther_A": ("walther_A", 1.0),
-    "walther_B": ("walther_B", 1.0),
-    "rho15_kg_m3": ("rho15", 1.0),
-    "pressure_viscosity_coefficient_1_GPa": ("pressure_viscosity_coefficient", 1e-9),
-    "thermal_conductivity_W_mK": ("thermal_conductivity_value", 1.0),
-    "specific_heat_J_kgK": ("specific_heat_value", 1.0),
-    "thermal_expansion_1_K": ("thermal_expansion", 1.0),
-}
-_NUMERIC_KEYS = set(_FIELDS) | {"nu40_mm2_s", "nu100_mm2_s", "min_temperature_degC"}
-_STRING_KEYS = {"family", "source"}
-
-
 def _normalise(name: str) -> str:
     """Lookup key: case-insensitive, ignoring spaces/punctuation and a leading 'ISO'."""
     key = re.sub(r"[^0-9a-z]", "", name.casefold())
     return key[3:] if key.startswith("isovg") else key
 
 
-def _parse_oil(oil_name: str, entry: Any, origin: str, allow_aliases: bool) -> Oil:
-    where = f"{origin}: oil {oil_name!r}"
-    if not isinstance(entry, dict):
-        raise InputError(f"{where}: expected a table of fields, got {entry!r}")
-    allowed = _NUMERIC_KEYS | _STRING_KEYS | ({"aliases"} if allow_aliases else set())
-    unknown = sorted(set(entry) - allowed)
-    if unknown:
-        raise InputError(f"{where}: unknown field(s) {', '.join(unknown)}; allowed: "
-                         f"{', '.join(sorted(allowed))}")
-    for key, value in entry.items():
-        if key in _NUMERIC_KEYS and (isinstance(value, bool)
-                                     or not isinstance(value, int | float)):
-            raise InputError(f"{where}: field {key} = {value!r} must be a number")
-        if key in _STRING_KEYS and not isinstance(value, str):
-            raise InputError(f"{where}: field {key} = {value!r} must be a string")
-    for key in ("family", "rho15_kg_m3"):
-        if key not in entry:
-            raise InputError(f"{where}: missing field {key}")
-    has_nu = {"nu40_mm2_s", "nu100_mm2_s"} & set(entry)
-    has_ab = {"walther_A", "walther_B"} & set(entry)
-    if (has_nu and has_ab) or (len(has_nu) != 2 and len(has_ab) != 2):
-        raise InputError(f"{where}: give either nu40_mm2_s and nu100_mm2_s, or walther_A and "
-                         "walther_B (not both)")
-    kwargs: dict[str, Any] = {"family": entry["family"],
-                              "source": entry.get("source", f"oil file {origin}")}
-    for key, (field, factor) in _FIELDS.items():
-        if key in entry and field not in ("walther_A", "walther_B", "rho15"):
-            kwargs[field] = float(entry[key]) * factor
-    if "min_temperature_degC" in entry:
-        kwargs["min_temperature"] = round(float(entry["min_temperature_degC"]) + T0, 9)
-    try:
-        if has_nu:
-            return Oil.from_datasheet(oil_name, entry["nu40_mm2_s"] * 1e-6,
-                                      entry["nu100_mm2_s"] * 1e-6,
-                                      float(entry["rho15_kg_m3"]), **kwargs)
-        return Oil.from_walther(oil_name, float(entry["walther_A"]), float(entry["walther_B"]),
-                                float(entry["rho15_kg_m3"]), **kwargs)
-    except InputError as err:
-        raise InputError(f"{origin}: {err} (TOML keys carry the unit: nu40_mm2_s in mm^2/s, "
-                         "rho15_kg_m3 in kg/m^3, min_temperature_degC in degC)") from None
+def _read_oils(text: str, origin: str, catalogue: bool
+               ) -> tuple[dict[str, Oil], dict[str, str]]:
+    """Oils of an oil file's text (validated by :mod:`sealsim.properties.catalogue`) and the
+    catalogue's aliases ``{alias: name}``; names and aliases must not clash."""
+    from sealsim.properties.catalogue import read_oil_tables
 
-
-def _parse_oils(text: str, origin: str, allow_aliases: bool
-                ) -> tuple[dict[str, Oil], dict[str, str]]:
-    try:
-        data = tomllib.loads(text)
-    except ValueError as err:  # TOMLDecodeError and integers tomllib cannot convert
-        raise InputError(f"{origin}: not a valid TOML file: {err}") from None
-    extra = sorted(set(data) - {"oils"})
-    if extra or not isinstance(data.get("oils"), dict):
-        raise InputError(f"{origin}: expected only [oils.\"NAME\"] tables"
-                         + (f"; unknown top-level key(s) {', '.join(extra)}" if extra else ""))
     oils: dict[str, Oil] = {}
     aliases: dict[str, str] = {}
     seen: dict[str, str] = {}
-    for oil_name, entry in data["oils"].items():
-        oil = _parse_oil(oil_name, entry, origin, allow_aliases)
-        names = [oil_name, *(entry.get("aliases", []) if allow_aliases else [])]
-        for alias in names:
+    for oil_name, (entry, note) in read_oil_tables(text, origin, catalogue).items():
+        kwargs = entry.oil_arguments(origin)
+        try:
+            if entry.nu40 is not None:
+                oil = Oil.from_datasheet(oil_name, entry.nu40, entry.nu100, entry.density15,
+                                         **kwargs)
+            else:
+                oil = Oil.from_walther(oil_name, entry.walther_A, entry.walther_B,
+                                       entry.density15, **kwargs)
+        except InputError as err:
+            raise InputError(f"{origin}: {err}{note}") from None
+        for alias in [oil_name, *getattr(entry, "aliases", [])]:
             key = _normalise(alias)
             if key in seen:
                 raise InputError(f"{origin}: oil name or alias {alias!r} of {oil_name!r} clashes "
@@ -1098,8 +1047,8 @@ def _parse_oils(text: str, origin: str, allow_aliases: bool
 @lru_cache(maxsize=1)
 def _catalogue() -> tuple[dict[str, Oil], dict[str, str]]:
     path = resources.files("sealsim.properties").joinpath("data", "oils.toml")
-    return _parse_oils(path.read_text(encoding="utf-8"), "sealsim catalogue oils.toml",
-                       allow_aliases=True)
+    return _read_oils(path.read_text(encoding="utf-8"), "sealsim catalogue oils.toml",
+                      catalogue=True)
 
 
 def list_oils() -> list[str]:
@@ -1117,7 +1066,8 @@ def list_oils() -> list[str]:
 
 
 def load_oil_file(path: str | PathLike[str]) -> dict[str, Oil]:
-    """Read user oils from a TOML file in the catalogue format (see the module docstring).
+    """Read user oils from a TOML file in the catalogue format (see
+    :mod:`sealsim.properties.catalogue`).
 
     Parameters
     ----------
@@ -1135,12 +1085,9 @@ def load_oil_file(path: str | PathLike[str]) -> dict[str, Oil]:
         If the file cannot be read or an entry is invalid; the message names the file, the oil
         and the field.
     """
-    p = Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except OSError as err:
-        raise InputError(f"oil file {str(p)!r} cannot be read: {err.strerror or err}") from None
-    return _parse_oils(text, str(p), allow_aliases=False)[0]
+    from sealsim.properties.catalogue import read_text_file
+
+    return _read_oils(read_text_file(path, "oil file"), str(path), catalogue=False)[0]
 
 
 def get_oil(name: str | Oil, extra: Mapping[str, Oil] | None = None) -> Oil:

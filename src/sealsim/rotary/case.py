@@ -373,8 +373,19 @@ class RotaryCase(CaseModel):
     environment: Environment = Environment()
     thermal: ThermalSpec = ThermalSpec()
     friction: Friction = Friction()
-    duty: DutyCycle
+    duty: DutyCycle | None = Field(None, description=(
+        "speed over time, needed by a transient run (sealsim rotary run, simulate); "
+        "steady_state needs none"))
     numerics: Numerics = Numerics()
+
+    def duty_cycle(self) -> DutyCycle:
+        """The duty cycle; an :class:`InputError` if the case has none (a transient run needs
+        one, a steady operating point does not)."""
+        if self.duty is None:
+            raise InputError("duty: a transient run needs a duty cycle: give [duty] with "
+                             "steps = [{speed = '1000 rpm', duration = '10 min'}] or "
+                             "csv = 'file.csv'")
+        return self.duty
 
     @model_validator(mode="after")
     def _temperatures_in_oil_range(self):

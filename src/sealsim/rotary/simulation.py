@@ -293,7 +293,7 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
     RotaryResult
     """
     model = RotaryModel(case)
-    times, speeds, steps = case.duty.profile(base_dir)
+    times, speeds, steps = case.duty_cycle().profile(base_dir)
     end = float(times[-1])
     breaks = np.unique(times)
     num = case.numerics

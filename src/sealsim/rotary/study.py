@@ -59,9 +59,10 @@ def run_case_file(path: str | Path, out: str | Path, force: bool = False,
     cases = load_rotary_case(path)
     inputs = [path]
     for case in cases.values():  # read every duty CSV now: a bad one is refused up front
-        case.duty.profile(path.parent)
-        if case.duty.csv is not None:
-            inputs.append(path.parent / case.duty.csv)
+        duty = case.duty_cycle()
+        duty.profile(path.parent)
+        if duty.csv is not None:
+            inputs.append(path.parent / duty.csv)
     return run_variants(
         cases, out, lambda name, case, report: simulate(case, base_dir=path.parent,
                                                         progress=report),

@@ -1,0 +1,139 @@
+"""The cache of FE characteristic maps built on demand: list it, clear it.
+
+A seal whose contact map comes from a structure case (``map = { structure_case = ... }``)
+gets its FE map built once and stored as ``<case stem>-<hash16>.nc`` in the cache folder
+(:func:`~sealsim.pneumatic.contact_maps.default_cache_dir`: ``$SEALSIM_CACHE/maps``, else
+``$XDG_CACHE_HOME/sealsim/maps``, else ``~/.cache/sealsim/maps``); the hash is that of the
+resolved structure case, so a changed case gets a new file and old ones are never read again.
+Maps are a few hundred kB each; removing one only means it is built again when needed.
+
+Only files this cache writes are touched: ``*.nc`` maps and the temporary files of
+interrupted writes (``.NAME.nc.*.tmp``), which :func:`clear_cached_maps` removes once they are
+an hour old (a map being written right now is never removed half-way).
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+from sealsim.errors import InputError
+from sealsim.pneumatic.contact_maps import default_cache_dir
+
+__all__ = ["STALE_TEMPORARY_AGE", "CachedMap", "cache_folder", "clear_cached_maps",
+           "list_cached_maps"]
+
+#: Age after which a temporary file of an interrupted map write is removed by a clear [s]
+#: (writing a map takes well under a second; the FE computation comes before it).
+STALE_TEMPORARY_AGE = 3600.0
+
+
+@dataclass(frozen=True)
+class CachedMap:
+    """One file of the map cache.
+
+    Attributes
+    ----------
+    path : Path
+        The file.
+    size : int
+        Size [bytes].
+    modified : float
+        When it was written [s since the epoch].
+    complete : bool
+        False for a temporary file left by an interrupted write.
+    """
+
+    path: Path
+    size: int
+    modified: float
+    complete: bool = True
+
+    def age(self, now: float | None = None) -> float:
+        """Time since it was written [s]."""
+        return (time.time() if now is None else now) - self.modified
+
+
+def cache_folder(cache_dir: str | Path | None = None) -> Path:
+    """The cache folder: ``cache_dir``, or the default one; an existing file is refused."""
+    folder = Path(cache_dir) if cache_dir is not None else default_cache_dir()
+    if folder.exists() and not folder.is_dir():
+        raise InputError(f"map cache {str(folder)!r} is not a folder")
+    return folder
+
+
+def list_cached_maps(cache_dir: str | Path | None = None) -> list[CachedMap]:
+    """The maps in the cache (and leftovers of interrupted writes), newest first.
+
+    Parameters
+    ----------
+    cache_dir : path, optional
+        Cache folder; default :func:`~sealsim.pneumatic.contact_maps.default_cache_dir`.
+        A folder that does not exist is an empty cache.
+
+    Returns
+    -------
+    list of CachedMap
+    """
+    folder = cache_folder(cache_dir)
+    if not folder.is_dir():
+        return []
+    found = []
+    for pattern, complete in (("*.nc", True), (".*.nc.*.tmp", False)):
+        for path in folder.glob(pattern):
+            try:
+                stat = path.stat()
+            except FileNotFoundError:  # removed meanwhile (another clear)
+                continue
+            if path.is_file():
+                found.append(CachedMap(path, stat.st_size, stat.st_mtime, complete))
+    return sorted(found, key=lambda m: (-m.modified, m.path.name))
+
+
+def clear_cached_maps(cache_dir: str | Path | None = None, older_than: float | None = None,
+                      dry_run: bool = False, now: float | None = None) -> list[CachedMap]:
+    """Remove cached maps, all of them or those written more than ``older_than`` ago.
+
+    Temporary files of interrupted writes are removed when they are older than both
+    ``older_than`` and :data:`STALE_TEMPORARY_AGE`.
+
+    Parameters
+    ----------
+    cache_dir : path, optional
+        Cache folder; default :func:`~sealsim.pneumatic.contact_maps.default_cache_dir`.
+    older_than : float, optional
+        Keep maps written within this time [s]; ``None``: remove every map.
+    dry_run : bool
+        Only say what would be removed.
+    now : float, optional
+        The current time [s since the epoch] (for tests).
+
+    Returns
+    -------
+    list of CachedMap
+        The files removed (or that would be removed).
+
+    Raises
+    ------
+    InputError
+        ``older_than`` negative or not finite; a file that cannot be removed (named).
+    """
+    if older_than is not None and not (older_than >= 0 and older_than < float("inf")):
+        raise InputError(f"older_than: {older_than!r} s must be a finite time >= 0")
+    now = time.time() if now is None else now
+    removed = []
+    for entry in list_cached_maps(cache_dir):
+        limit = older_than or 0.0
+        if not entry.complete:
+            limit = max(limit, STALE_TEMPORARY_AGE)
+        if (older_than is not None or not entry.complete) and entry.age(now) <= limit:
+            continue
+        if not dry_run:
+            try:
+                entry.path.unlink(missing_ok=True)
+            except OSError as exc:
+                raise InputError(f"cannot remove {str(entry.path)!r} from the map cache: "
+                                 f"{exc.strerror or exc}") from None
+        removed.append(entry)
+    return removed

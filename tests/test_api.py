@@ -1,0 +1,215 @@
+"""The one-call API (sealsim.lip_seal_torque, sealsim.seal_friction) against the long-form API
+it wraps, its unit handling and its errors; the optional duty cycle of a rotary case."""
+
+from __future__ import annotations
+
+import math
+import subprocess
+import sys
+
+import numpy as np
+import pandas as pd
+import pytest
+import xarray as xr
+from typer.testing import CliRunner
+
+import sealsim
+from sealsim.cases import validate_case
+from sealsim.cli import app
+from sealsim.errors import InputError
+from sealsim.friction import ContactInputs, Stribeck, Theta
+from sealsim.pneumatic.contact_maps import AnalyticContactMap, FEContactMap
+from sealsim.properties import get_elastomer
+from sealsim.rotary.case import RotaryCase
+from sealsim.rotary.simulation import simulate, steady_state
+from sealsim.units import to_si, unit_registry
+
+RPM = math.pi / 30.0
+
+
+def _long_form_case(**environment) -> RotaryCase:
+    return validate_case(RotaryCase, {"seal": {"shaft_diameter": "60 mm"},
+                                      "oil": {"name": "VG220-mineral"},
+                                      "environment": environment})
+
+
+# -- lip_seal_torque ---------------------------------------------------------------------------
+def test_lip_seal_torque_is_the_steady_state_of_the_case():
+    r = sealsim.lip_seal_torque(shaft_diameter="60 mm", speed="1500 rpm", oil="ISO VG 220",
+                                sump_temperature="70 degC")
+    ref = steady_state(_long_form_case(sump_temperature="70 degC"), 1500 * RPM)
+    # the same computation: identical numbers, not just close ones
+    for key in ("torque_Nm", "power_W", "T_contact_C", "T_groove_C", "T_sump_C", "film_um",
+                "F_lub_N", "F_material_N"):
+        assert r[key] == ref[key], key
+    assert r["speed_rpm"] == pytest.approx(1500.0, rel=1e-12)
+    assert r["shaft_diameter_mm"] == pytest.approx(60.0, rel=1e-12)
+    # physics sanity: power = torque x speed (exact up to rounding)
+    assert r["power_W"] == pytest.approx(r["torque_Nm"] * 1500 * RPM, rel=1e-12)
+
+
+def test_lip_seal_torque_vectorised_one_row_per_point():
+    speeds = unit_registry().Quantity(np.array([500.0, 3000.0]), "rpm")
+    frame = sealsim.lip_seal_torque(0.06, speeds, "VG220-mineral",
+                                    ["50 degC", "90 degC"])  # broadcast pairwise
+    assert isinstance(frame, pd.DataFrame) and len(frame) == 2
+    for k, (rpm, sump) in enumerate([(500.0, "50 degC"), (3000.0, "90 degC")]):
+        ref = steady_state(_long_form_case(sump_temperature=sump), rpm * RPM)
+        assert frame.loc[k, "torque_Nm"] == ref["torque_Nm"]
+        assert frame.loc[k, "T_contact_C"] == ref["T_contact_C"]
+    # a free sump (no sump_temperature) heats up by the seal alone: the case default
+    free = sealsim.lip_seal_torque("60 mm", "1000 rpm", "VG220-mineral")
+    assert free["torque_Nm"] == steady_state(_long_form_case(), 1000 * RPM)["torque_Nm"]
+
+
+def test_lip_seal_torque_options_reach_the_case():
+    r = sealsim.lip_seal_torque("80 mm", "1000 rpm", {"name": "my gear oil", "nu40": "150 mm^2/s",
+                                                      "nu100": "14.7 mm^2/s",
+                                                      "density15": "890 kg/m^3"},
+                                "60 degC", material="FKM", lip_style="wave",
+                                case={"environment": {"sump_volume": "0.2 L"}})
+    case = validate_case(RotaryCase, {
+        "seal": {"shaft_diameter": "80 mm", "material": "FKM", "lip_style": "wave"},
+        "oil": {"name": "my gear oil", "nu40": "150 mm^2/s", "nu100": "14.7 mm^2/s",
+                "density15": "890 kg/m^3"},
+        "environment": {"sump_temperature": "60 degC", "sump_volume": "0.2 L"}})
+    assert r["torque_Nm"] == steady_state(case, 1000 * RPM)["torque_Nm"]
+
+
+@pytest.mark.parametrize(("kwargs", "words"), [
+    ({"speed": 1500}, ["speed", "no unit", "rpm or rad/s"]),
+    ({"speed": [1000, 2000]}, ["speed", "no unit"]),
+    ({"speed": "25 Hz"}, ["Hz is ambiguous"]),
+    ({"speed": "-10 rpm"}, ["speed", ">= 0"]),
+    ({"speed": "1500 m"}, ["speed", "angular_speed"]),
+    ({"oil": "ISO VG 230"}, ["unknown oil", "close matches", "VG320"]),
+    ({"material": "NRB"}, ["unknown elastomer", "NBR"]),
+    ({"shaft_diameter": "2 mm"}, ["seal.shaft_diameter", "out of range"]),
+    ({"sump_temperature": "70 degF", "oil": "VG32"}, []),  # valid: 21 degC
+])
+def test_lip_seal_torque_errors_name_the_argument(kwargs, words):
+    args = {"shaft_diameter": "60 mm", "speed": "1500 rpm", "oil": "VG220",
+            "sump_temperature": "70 degC", **kwargs}
+    if not words:
+        assert sealsim.lip_seal_torque(**args)["T_sump_C"] == pytest.approx(21.111, abs=1e-3)
+        return
+    with pytest.raises(InputError) as info:
+        sealsim.lip_seal_torque(**args)
+    for word in words:
+        assert word in str(info.value)
+
+
+# -- rotary case without a duty cycle ----------------------------------------------------------
+def test_rotary_case_needs_no_duty_for_steady_state(tmp_path):
+    case = RotaryCase(seal={"shaft_diameter": 0.06})
+    assert case.duty is None
+    assert steady_state(case, 100.0)["torque_Nm"] > 0
+    with pytest.raises(InputError, match="duty: a transient run needs a duty cycle"):
+        simulate(case)
+    path = tmp_path / "no_duty.toml"
+    path.write_text('[seal]\nshaft_diameter = "60 mm"\n')
+    result = CliRunner().invoke(app, ["rotary", "run", str(path), "--out", str(tmp_path / "o")])
+    assert result.exit_code == 2 and "duty" in result.output and "Traceback" not in result.output
+    assert not (tmp_path / "o").exists()
+
+
+# -- seal_friction -----------------------------------------------------------------------------
+def _nbr_oring_map(diameter=0.012) -> AnalyticContactMap:
+    nbr = get_elastomer("NBR")
+    return AnalyticContactMap(sliding_diameter=diameter, cord_diameter=2e-3, squeeze=0.12,
+                              modulus=6.0 * (nbr.c10 + nbr.c01),
+                              thermal_expansion=nbr.thermal_expansion)
+
+
+def test_seal_friction_is_the_steady_force_of_the_law_on_the_map():
+    v = np.array([-0.5, 0.01, 0.1, 1.0])
+    frame = sealsim.seal_friction({"cord_diameter": "2 mm", "squeeze": 0.12}, v, "6 bar",
+                                  "40 degC", diameter="12 mm")
+    fn, b = _nbr_oring_map().evaluate(np.full(4, 6e5), np.full(4, 313.15))
+    law = Theta.from_parameter_set("pneumatic_demo")
+    ref = law.steady_force(v, ContactInputs(normal_force=fn, contact_width=b,
+                                            pressure_a=np.full(4, 6e5), pressure_b=0.0))
+    np.testing.assert_array_equal(frame["friction_N"], ref)  # same computation
+    np.testing.assert_array_equal(frame["normal_force_N"], fn)
+    assert list(frame["pressure_bar"]) == [6.0] * 4
+    assert frame["temperature_C"].to_numpy() == pytest.approx(40.0, abs=1e-12)
+    assert frame.loc[0, "friction_N"] < 0 < frame.loc[1, "friction_N"]  # opposes the motion
+
+
+def test_seal_friction_pressure_scaling_and_broadcasting():
+    # the Stribeck law's F_C = F_pr + f (p_A + p_B) gets the gauge pressure as p_A
+    law = {"law": "stribeck", "parameter_set": "pneumatic_demo"}
+    out = sealsim.seal_friction(_nbr_oring_map(), "0.05 m/s", ["0 bar", "4 bar", "8 bar"],
+                                law=law)
+    ref = Stribeck.from_parameter_set("pneumatic_demo").steady_force(
+        np.full(3, 0.05), ContactInputs(pressure_a=np.array([0.0, 4e5, 8e5])))
+    np.testing.assert_allclose(out["friction_N"], ref, rtol=1e-14)
+    one = sealsim.seal_friction(_nbr_oring_map(), 0.05, "4 bar", law=law)
+    assert isinstance(one, dict) and one["friction_N"] == pytest.approx(ref[1], rel=1e-14)
+
+
+def test_seal_friction_from_an_fe_map_file(tmp_path):
+    # a small characteristic map in the format of sealsim structure map (F_N, b over p, T)
+    p, t = np.array([0.0, 4e5, 8e5]), np.array([283.15, 333.15])
+    fn = 30.0 + 5e-5 * p[None, None, :] + 0.1 * (t[None, :, None] - 283.15)
+    ds = xr.Dataset({"F_N": (("squeeze", "temperature", "pressure"), fn),
+                     "b": (("squeeze", "temperature", "pressure"), 1e-3 + 0 * fn)},
+                    coords={"squeeze": [0.12], "temperature": t, "pressure": p})
+    path = tmp_path / "map.nc"
+    ds.to_netcdf(path)
+    v = [0.02, 0.2]
+    out = sealsim.seal_friction(path, v, "5 bar", "30 degC")
+    fe = FEContactMap.from_file(path)
+    f_n, b = fe.evaluate(np.full(2, 5e5), np.full(2, 303.15))
+    ref = Theta.from_parameter_set("pneumatic_demo").steady_force(
+        np.array(v), ContactInputs(normal_force=f_n, contact_width=b,
+                                   pressure_a=np.full(2, 5e5)))
+    np.testing.assert_allclose(out["friction_N"], ref, rtol=1e-14)
+    # linear data: the Hermite map reproduces it (interpolation round-off only)
+    assert out["normal_force_N"].to_numpy() == pytest.approx(30.0 + 25.0 + 2.0, rel=1e-9)
+    with pytest.raises(InputError, match=r"pressure: 9 bar is outside .* \(0 \.\.\. 8 bar\)"):
+        sealsim.seal_friction(path, v, "9 bar", "30 degC")
+    with pytest.raises(InputError, match="temperature: 80 degC is outside"):
+        sealsim.seal_friction(path, v, "5 bar", "80 degC")
+
+
+@pytest.mark.parametrize(("kwargs", "words"), [
+    ({"law": "stribeck"}, ["parameter sets", "modelica_friction_example"]),
+    ({"law": "friction"}, ["not a friction law", "theta"]),
+    ({"law": {"law": "coulomb"}}, ["law", "coulomb_force"]),
+    ({"diameter": None}, ["diameter of the sliding surface"]),
+    ({"seal": "seal.stl"}, ["neither a structure case"]),
+    ({"seal": {"cord_diameter": "2 mm", "squeeze": 0.12, "elastomer": "NRB"}},
+     ["unknown elastomer", "NBR"]),
+    ({"velocity": "1 rpm"}, ["velocity", "velocity"]),
+    ({"pressure": "-1 bar"}, ["pressure", ">= 0"]),
+])
+def test_seal_friction_errors(kwargs, words):
+    args = {"seal": {"cord_diameter": "2 mm", "squeeze": 0.12}, "velocity": [0.1],
+            "pressure": "2 bar", "diameter": "12 mm", **kwargs}
+    with pytest.raises(InputError) as info:
+        sealsim.seal_friction(**args)
+    for word in words:
+        assert word in str(info.value)
+
+
+# -- units at the edge -------------------------------------------------------------------------
+def test_to_si_arrays_and_quantities():
+    q = unit_registry().Quantity
+    assert to_si(q(np.array([1.0, 2.0]), "bar"), "pressure").tolist() == [1e5, 2e5]
+    assert to_si(np.array([[1.0], [2.0]]), "length").shape == (2, 1)
+    assert to_si("20 degC", "temperature") == pytest.approx(293.15, abs=1e-12)
+    for bad, match in ((q(np.array([1.0]), "Hz"), "Hz is ambiguous"),
+                       (q(np.array([1.0]), "m"), "expected a angular_speed"),
+                       ([float("nan")], "not finite"), (True, "not a quantity")):
+        with pytest.raises(InputError, match=match):
+            to_si(bad, "angular_speed", plain_is_si=True)
+
+
+def test_import_sealsim_stays_light():
+    code = ("import sys, sealsim; heavy = [m for m in ('sealsim.api', 'pint', 'pandas', "
+            "'scipy') if m in sys.modules]; print(','.join(heavy))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         check=True)
+    assert out.stdout.strip() == ""  # the one-call functions are imported on first use
+    assert callable(sealsim.lip_seal_torque) and "seal_friction" in dir(sealsim)
