@@ -94,8 +94,6 @@ class Seal(CaseModel):
         "RMS roughness Rq of the shaft (DIN 3760: Ra 0.2-0.8 um; Rq = 1.25 Ra)"))
     lip_roughness: Q("length", gt=0, le=10e-6) = Field(0.4e-6, description=(
         "RMS roughness of the run-in lip surface"))
-    shaft_rms_slope: float = Field(0.2, gt=0.0, le=2.0, description=(
-        "RMS slope of the shaft surface (ground shafts 0.1-0.3)"))
     spring_offset: Q("length", ge=-5e-3, le=5e-3) = Field(0.5e-3, description=(
         "axial offset of the garter spring plane from the contact, air side positive"))
     wave: WaveLip = WaveLip()

@@ -10,7 +10,7 @@ Every time step (backward Euler, adaptive Δt):
    ambient (seed Eq. 7, :mod:`sealsim.thermal.conduction`) → new temperatures.
 
 Step 2 uses the contact temperature of the previous step (explicit coupling).  The feedback is
-weak and stabilising (a hotter contact has thinner oil and less friction), so it needs no
+weak and stabilising (a hotter contact has thinner oil and a lower μ_dry), so it needs no
 iteration; the time-step refinement test checks that.  Energy is booked every step: heat
 generated = heat stored in cells, sump and housing + heat given to the ambient (and to a
 sump held at constant temperature).
@@ -238,7 +238,8 @@ class RotaryModel:
         return {
             "shaft_oil": h_shaft_oil,
             "shaft_air": h_air,
-            "shaft_end_oil": ends.get(env.shaft_oil_end, math.sqrt(4.0 * h_shaft_oil * k_shaft / d)),
+            "shaft_end_oil": ends.get(env.shaft_oil_end,
+                                      math.sqrt(4.0 * h_shaft_oil * k_shaft / d)),
             "shaft_end_air": ends.get(env.shaft_air_end, math.sqrt(4.0 * h_air * k_shaft / d)),
             "lip_oil": th.seal_oil_factor * h_shaft_oil * self.style.lip_heat_exchange_factor,
             "seal_oil": th.seal_oil_factor * h_shaft_oil,
@@ -512,9 +513,13 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-4,
     for iteration in range(1, max_iter + 1):
         k, f = model.assemble(angular_speed, t_sump)
         lu = factorise(k.tocsc())
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", (ServiceRangeWarning, OilRangeWarning))
-            state = model.friction.evaluate(angular_speed, t_contact)
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", (ServiceRangeWarning, OilRangeWarning))
+                state = model.friction.evaluate(angular_speed, t_contact)
+        except InputError as exc:
+            raise ModelError(f"steady state at {angular_speed * 30 / math.pi:.0f} rpm: contact "
+                             f"temperature {t_contact - CELSIUS_0:.1f} degC: {exc}") from None
         temps = lu.solve(f @ fixed + model.source(float(state.power)))
         new_contact = model.contact_temperature(temps)
         new_sump = model.sump_temperature(temps)

@@ -195,7 +195,7 @@ def film_range_note(thinnest, thickest, measured_range=MEASURED_FILM_RANGE) -> s
     Examples
     --------
     >>> film_range_note(0.3e-6, 3.1e-6)
-    'film up to 3.1 um, above the measured range of lip seal films (0.25-2.5 um): the film law is extrapolated there (thicker film, less viscous torque than it may be)'
+    'film up to 3.1 um, above the measured range of lip seal films (0.25-2.5 um): ...'
     """
     lo, hi = measured_range
     parts = []
