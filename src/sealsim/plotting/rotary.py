@@ -53,7 +53,7 @@ def cycle_figure(frame: pd.DataFrame, shaft_radius: float, title: str = ""):
 
 
 def variants_figure(frames: dict[str, pd.DataFrame], title: str = ""):
-    """Speed, torque and temperatures of all variants (like seed 000 Fig. 12/13)."""
+    """Speed, torque and temperatures of all variants (like Organisciak et al. 2014, Fig. 12/13)."""
     fig, axes = new_figure(3, 1, width=14.0, height=4.2)
     for k, (name, frame) in enumerate(frames.items()):
         colour = _COLOURS[k % len(_COLOURS)]

@@ -171,14 +171,15 @@ class ShaftSetup:
 #:   gears bathed in oil hold it at the sump temperature (in gearbox thermal networks shafts
 #:   are nodes at about oil temperature: Bauer et al., Power Transmission Engineering, Dec.
 #:   2018; del Valle, KTH 2014).  On the air side 50 mm of bare shaft lead to the coupling of a
-#:   motor flanged to the housing (an industrial gear motor, seed 000's application), which
-#:   holds the shaft end at about the housing temperature.  Housing to ambient 12 W/(m² K):
-#:   radiation 7.5 + free convection 4.8 for a 0.3 m wall 40 K above ambient (notes §7.3).
-#: * ``test_rig``: seed 000's friction rig: a motor-driven shaft, the seal in a compact test
-#:   head with a small oil bath, the friction measured on an air-bearing spindle.  30 mm of
-#:   shaft on each side; the shaft end in the oil bath and the drive coupling take no heat
-#:   (insulated); bare aluminium test head 6 W/(m² K) (free convection ≈ 5 + radiation ≈ 1,
-#:   a bright metal surface with emissivity ≈ 0.1).
+#:   motor flanged to the housing (an industrial gear motor, the application of Organisciak et
+#:   al. 2014), which holds the shaft end at about the housing temperature.  Housing to ambient
+#:   12 W/(m² K): radiation 7.5 (grey body, ε = 0.9) + free convection 4.8 (Churchill & Chu)
+#:   for a 0.3 m wall 40 K above ambient.
+#: * ``test_rig``: the friction rig of Organisciak et al. (AGMA 14FTM14, 2014): a motor-driven
+#:   shaft, the seal in a compact test head with a small oil bath, the friction measured on an
+#:   air-bearing spindle.  30 mm of shaft on each side; the shaft end in the oil bath and the
+#:   drive coupling take no heat (insulated); bare aluminium test head 6 W/(m² K) (free
+#:   convection ≈ 5 + radiation ≈ 1, a bright metal surface with emissivity ≈ 0.1).
 SETUPS: dict[str, ShaftSetup] = {
     "gearbox": ShaftSetup(shaft_length_oil_side=0.03, shaft_length_air_side=0.05,
                           shaft_oil_end="sump", shaft_air_end="housing",
@@ -199,7 +200,7 @@ class Environment(CaseModel):
     setup: Literal["gearbox", "test_rig"] = Field("gearbox", description=(
         "shaft environment: 'gearbox' (seal in a gear unit's bearing cap, shaft held at the "
         "sump temperature inside, coupling at the housing temperature outside) or 'test_rig' "
-        "(seed 000's rig: short shaft, small oil bath, insulated ends)"))
+        "(Organisciak et al.'s rig: short shaft, small oil bath, insulated ends)"))
     ambient_temperature: Q("temperature", gt=200.0, lt=400.0) = 293.15
     start_temperature: Q("temperature", gt=200.0, lt=450.0) | None = Field(
         None, description="initial temperature of shaft, seal, oil and housing; default: the "

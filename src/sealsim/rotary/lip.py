@@ -351,9 +351,9 @@ def wave_film_factor(amplitude, waves, shaft_diameter, exponent=EHL_EXPONENT,
     return float(1.0 + wedge_coefficient * np.mean(np.abs(np.sin(phi)) ** exponent))
 
 
-#: Wave lip geometry defaults (assumptions; seed 000 Fig. 11 shows the sinusoidal track but is
-#: not legible): amplitude 0.5 mm (a track several contact widths wide) and 8 waves, i.e. a
-#: contact line inclined by up to 5.7° on an 80 mm shaft.
+#: Wave lip geometry defaults (assumptions; Organisciak et al. 2014, Fig. 11 shows the
+#: sinusoidal track but is not legible): amplitude 0.5 mm (a track several contact widths wide)
+#: and 8 waves, i.e. a contact line inclined by up to 5.7° on an 80 mm shaft.
 DEFAULT_WAVE_AMPLITUDE = 0.5e-3
 DEFAULT_WAVES = 8
 

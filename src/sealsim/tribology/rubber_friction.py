@@ -9,7 +9,7 @@ glass λ ≈ 6 nm (adhesion); on rough silicon carbide λ is of the order of the
 (≈ 0.15 mm) and the peak is the hysteresis peak of the rubber deformed by the asperities.
 
 In an oil-wetted lip contact the adsorbed oil suppresses adhesion; what remains is the
-hysteresis of the lip rubber dynamically deformed by the shaft's asperities (seed 000's
+hysteresis of the lip rubber dynamically deformed by the shaft's asperities (Organisciak et al.'s
 "viscoelastic losses").  sealsim therefore places the peak at the hysteresis speed
 :func:`hysteresis_peak_speed`, v_max = λ·f_max with λ the shaft's asperity wavelength, and
 represents the curve by a Gaussian bell in log10 of the reduced speed,
@@ -35,8 +35,8 @@ __all__ = ["DEFAULT_MASTER_CURVE", "GroschMasterCurve", "grosch_friction_coeffic
 #: Grosch's ratio of adhesion-peak speed to loss-peak frequency on smooth glass, λ ≈ 6 nm.
 GROSCH_ADHESION_LENGTH = 6e-9  # m
 #: Asperity wavelength of a ground shaft that the lip rubber is excited by [m]: 50 µm, the
-#: spacing of grinding marks of Ra 0.2-0.8 µm shafts (the reference notes give 0.1-0.2 mm for
-#: Grosch's silicon carbide track, a coarser surface).
+#: spacing of grinding marks of Ra 0.2-0.8 µm shafts (Grosch's silicon carbide track, a coarser
+#: surface: ≈ 0.15 mm).
 DEFAULT_ASPERITY_WAVELENGTH = 50e-6
 #: Loss-peak frequency of the catalogue elastomers at their WLF reference temperature [Hz]
 #: (the inflection of their storage-modulus master curve, 10^-2 Hz).
@@ -119,9 +119,9 @@ class GroschMasterCurve:
 #: Default master curve for the ``μ_dry`` of seed 000 Eq. 3 (reasoning, not a fit):
 #:
 #: * μ_peak = 1.0: the hysteresis peak of nitrile rubber on a rough track, the lower end of the
-#:   1-1.5 Grosch found on silicon carbide (reference notes §6.3), the oil removing adhesion;
+#:   1-1.5 Grosch (1963) found on silicon carbide, the oil removing adhesion;
 #: * μ_low = 0.2: boundary-lubricated rubber on steel far from the peak, the middle of
-#:   0.1-0.3 (reference notes §4);
+#:   0.1-0.3 (handbook range);
 #: * peak at λ·f_max = 50 µm × 0.01 Hz at the WLF reference temperature (Tg for the
 #:   catalogue): a catalogue NBR peaks at about 70 m/s at 20 °C and 2e5 m/s at 80 °C, so lip
 #:   seal speeds lie on the rubbery flank, where μ falls as the rubber warms;
