@@ -13,13 +13,26 @@ from typer.testing import CliRunner
 from sealsim.cases import validate_case
 from sealsim.cli import app
 from sealsim.errors import InputError
-from sealsim.rotary.case import RotaryCase
-from sealsim.rotary.lip import default_radial_force, lip_force
+from sealsim.properties.elastomers import get_elastomer
+from sealsim.rotary.case import SETUPS, RotaryCase
+from sealsim.rotary.friction import LipSealFriction
+from sealsim.rotary.lip import (
+    LIP_FORCE_FREQUENCY,
+    STEEL_EXPANSION,
+    default_radial_force,
+    interference_ratio,
+    lip_force,
+    wave_film_factor,
+)
 from sealsim.rotary.simulation import friction_map, lip_seal_friction, simulate, steady_state
 from sealsim.rotary.study import load_rotary_case
+from sealsim.tribology.film import FilmRangeWarning
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples" / "rotary"
 RPM = math.pi / 30
+
+# films below 0.25 µm (low speeds) are announced by a FilmRangeWarning; tested on its own below
+pytestmark = pytest.mark.filterwarnings("ignore::sealsim.tribology.film.FilmRangeWarning")
 
 
 def _case(**sections) -> RotaryCase:
@@ -42,15 +55,31 @@ def sump_volume():
             load_rotary_case(EXAMPLES / "sump_volume.toml").items()}
 
 
-def test_wave_lip_has_less_torque_and_runs_cooler(speed_cycle):
-    # Seed 000 ("Comparison between molded wave and trimmed plain lips"): the wave lip reduces
-    # the torque by about 20 % and the self-induced temperature by more than 10 °C.  The issue
-    # asks 15-25 % (mean over the steps >= 100 rpm, last-30-s averages) and >= 10 K.
+def _wave_vs_plain(speed_cycle):
     plain, wave = speed_cycle["plain"].steps, speed_cycle["wave"].steps
     reductions = [1 - w["torque_Nm"] / p["torque_Nm"] for p, w in zip(plain, wave, strict=True)
                   if p["speed_rpm"] >= 100]
+    return np.array(reductions), plain[-1]["T_groove_C"] - wave[-1]["T_groove_C"], \
+        plain[-1]["T_contact_C"] - wave[-1]["T_contact_C"]
+
+
+def test_wave_lip_has_less_torque_and_runs_cooler(speed_cycle):
+    # Seed 000 ("Comparison between molded wave and trimmed plain lips"), the direction: with
+    # the film factor derived from the wave geometry (no assumed factor) the wave lip has less
+    # torque at every step >= 100 rpm (last-30-s averages) and ends the cycle cooler.
+    reductions, groove, contact = _wave_vs_plain(speed_cycle)
+    assert np.all(reductions > 0.05)
+    assert groove > 0 and contact > 0
+
+
+@pytest.mark.xfail(strict=True, reason="seed claim not reproduced by the derived wave "
+                   "mechanism: -14 % torque, 5 K cooler groove (README, Validation)")
+def test_wave_lip_reproduces_seed_magnitudes(speed_cycle):
+    # Seed 000: "about 20 %" less torque and "more than 10 °C" less self-induced temperature;
+    # the issue's band 15-25 % (mean over steps >= 100 rpm) and >= 10 K at the groove.
+    reductions, groove, _ = _wave_vs_plain(speed_cycle)
     assert 0.15 <= np.mean(reductions) <= 0.25
-    assert plain[-1]["T_groove_C"] - wave[-1]["T_groove_C"] >= 10.0
+    assert groove >= 10.0
 
 
 def test_bigger_sump_is_cooler_and_has_more_friction(sump_volume):
@@ -116,12 +145,157 @@ def test_friction_opposes_sliding(rpm, temperature):
 
 
 def test_lip_force_spring_share_stays():
-    # spring share constant, rubber share ∝ E(T)/E(Tref)
+    # spring share constant, rubber share ∝ E(T)/E(Tref)·δ(T)/δ(Tref)
     assert lip_force(30.0, 0.45, 0.0) == pytest.approx(0.45 * 30.0)
+    assert lip_force(30.0, 0.45, 1.0, 0.0) == pytest.approx(0.45 * 30.0)
     friction = lip_seal_friction(_case())
     forces = friction.lip_force(np.array([20.0, 60.0, 100.0]) + 273.15)
-    assert np.all(np.diff(forces) < 0)  # the rubber softens from 20 to 100 °C
+    assert np.all(np.diff(forces) < 0)  # the rubber softens and expands from 20 to 100 °C
     assert forces[0] == pytest.approx(float(default_radial_force(0.08)), rel=1e-3)
+
+
+def test_lip_interference_shrinks_with_the_rubbers_thermal_expansion():
+    # Finding 6.  The issue: "about 20 % less interference over 80 K".  Eq. (2) with the
+    # catalogue NBR (α = 1.9e-4 /K, the rubbery CTE) on steel (12e-6 /K) and the default hoop
+    # pre-strain 0.08: (1.9e-4 - 1.2e-5)·80/0.08 = 17.8 %; accepted 15-25 % (the issue's
+    # "about"); then the rubber share of the force is E-ratio x interference-ratio exactly.
+    nbr = get_elastomer("NBR")
+    loss = 1 - float(interference_ratio(373.15, 293.15, 0.08, nbr.thermal_expansion,
+                                        STEEL_EXPANSION))
+    assert loss == pytest.approx((nbr.thermal_expansion - STEEL_EXPANSION) * 80 / 0.08,
+                                 rel=1e-12)
+    assert 0.15 <= loss <= 0.25
+    case = _case()
+    seal = case.seal
+    e_ratio = nbr.modulus(373.15, LIP_FORCE_FREQUENCY) / nbr.modulus(293.15, LIP_FORCE_FREQUENCY)
+    expected = seal.radial_force * (seal.spring_share + (1 - seal.spring_share) * e_ratio
+                                    * (1 - loss))
+    assert lip_seal_friction(case).lip_force(373.15) == pytest.approx(expected, rel=1e-12)
+    # a lip ring heated beyond its pre-strain lifts off: only the spring presses
+    assert interference_ratio(600.0, 293.15, 0.02, nbr.thermal_expansion) == 0.0
+
+
+def test_friction_takes_any_lip_force_source():
+    # The lip force is a function of temperature only, so another source (an FE map) can slot
+    # in: with a constant 20 N source the model reports 20 N and F_material = μ·α·20 N.
+    base = lip_seal_friction(_case())
+    fe_like = LipSealFriction(base.parameters, base.oil, base.elastomer,
+                              lambda t: np.full(np.shape(t), 20.0))
+    state = fe_like.evaluate(100 * RPM, 353.15)
+    assert float(state.lip_force) == 20.0
+    assert float(state.force_material) == pytest.approx(
+        float(state.mu_dry * state.asperity_share) * 20.0, rel=1e-12)
+
+
+def test_effective_friction_coefficient_in_measured_range_for_the_right_reason():
+    # Finding 3.  Measured lip seal μ_eff = F_friction/F_radial: 0.2-0.6 (issue; reference
+    # notes §4 give 0.1-0.6).  Checked from 10 to 3000 rpm at 40-120 °C.  The right reason:
+    # at 10 rpm (mixed lubrication) the asperities carry most of the load (α > 0.8 at >= 40 °C)
+    # and μ_dry·α is most of μ_eff -- no real-area factor of about 0.2 in front of μ_dry.
+    frame = friction_map(_case(), np.geomspace(10, 3000, 9), [40.0, 60.0, 80.0, 100.0, 120.0])
+    assert frame["mu_eff"].between(0.2, 0.6).all()
+    slow = frame[frame["speed_rpm"] == 10.0]
+    assert (slow["asperity_share"] > 0.8).all()
+    material_part = slow["mu_dry"] * slow["asperity_share"]
+    assert np.all(material_part > 0.5 * slow["mu_eff"])
+
+
+def test_wave_film_factor_follows_the_contact_line_geometry():
+    # Finding 2.  Eq. (3): 1 + <|sin φ|^n>, tan φ = (A N/R) cos Nθ.  Small-slope closed form
+    # <|s cos|^n> = s^n Γ((n+1)/2)/(√π Γ(n/2+1)); the arctan/sin differ by O(s²) ≈ 1 % at
+    # s = 0.1 (tolerance 1 %).
+    from scipy.special import gamma
+    n, slope = 0.66, 0.5e-3 * 8 / 0.04
+    closed = 1 + slope**n * gamma((n + 1) / 2) / (math.sqrt(math.pi) * gamma(n / 2 + 1))
+    assert wave_film_factor(0.5e-3, 8, 0.08) == pytest.approx(closed, rel=0.01)
+    assert wave_film_factor(0.0, 8, 0.08) == 1.0
+    assert wave_film_factor(0.5e-3, 16, 0.08) > wave_film_factor(0.5e-3, 8, 0.08)
+    # the wave variant's film is the plain film times the factor (same lip force, viscosity)
+    plain = friction_map(_case(), [1000.0], [80.0])
+    wave = friction_map(_case(seal={"lip_style": "wave"}), [1000.0], [80.0])
+    assert wave["film_um"].iloc[0] / plain["film_um"].iloc[0] == pytest.approx(
+        wave_film_factor(0.5e-3, 8, 0.08), rel=1e-12)
+    # a calibrated factor replaces the derived one
+    calibrated = friction_map(_case(seal={"lip_style": "wave", "wave": {"film_factor": 1.4}}),
+                              [1000.0], [80.0])
+    assert calibrated["film_um"].iloc[0] / plain["film_um"].iloc[0] == pytest.approx(1.4)
+
+
+def _rise_over_sump(environment, rpm, diameter="80 mm"):
+    case = _case(seal={"shaft_diameter": diameter},
+                 environment={"sump_temperature": "80 degC", **environment})
+    return steady_state(case, rpm * RPM)["T_contact_C"] - 80.0
+
+
+def test_setups_fill_documented_defaults():
+    for name, setup in SETUPS.items():
+        env = _case(environment={"setup": name}).environment
+        assert env.shaft_length_air_side == setup.shaft_length_air_side
+        assert env.shaft_oil_end == setup.shaft_oil_end
+        assert env.housing_heat_transfer == setup.housing_heat_transfer
+    # explicit fields win over the set-up
+    assert _case(environment={"shaft_air_end": "fin"}).environment.shaft_air_end == "fin"
+
+
+def test_contact_is_above_a_held_sump_at_4_m_s_in_both_setups():
+    # Finding 1, the wrong sign: with the air-side shaft an infinite fin to 20 °C ambient the
+    # 80 mm contact ran 1.5 K BELOW an 80 °C sump at 1000 rpm (4.2 m/s).  In both documented
+    # set-ups it runs above it, and the rise grows with speed (3000 rpm, 12.6 m/s).
+    old = {"shaft_oil_end": "fin", "shaft_air_end": "fin", "shaft_length_oil_side": "60 mm",
+           "shaft_length_air_side": "80 mm"}
+    assert _rise_over_sump(old, 1000) < 0
+    for environment in ({"setup": "gearbox"}, {"setup": "test_rig"}):
+        slow, fast = _rise_over_sump(environment, 1000), _rise_over_sump(environment, 3000)
+        assert 0 < slow < fast
+
+
+@pytest.mark.xfail(strict=True, reason="the model under-predicts the published contact "
+                   "over-temperature by a factor of about 2-5 (README, Validation)")
+def test_contact_rise_within_published_ranges():
+    # Published contact over-temperatures of radial lip seals above the sump (the issue's
+    # summary of thermography/thermocouple studies; seal makers put the lip 20-50 K above the
+    # sealed oil): 15-30 K at about 4 m/s, 30-50 K at 10-13 m/s.  80 mm seal, 80 °C sump,
+    # test-rig set-up.
+    rig = {"setup": "test_rig"}
+    assert 15 <= _rise_over_sump(rig, 1000) <= 30
+    assert 30 <= _rise_over_sump(rig, 3000) <= 50
+
+
+def test_run_starts_at_the_held_sump_temperature():
+    # issue 16: with the sump held at 70 °C the run started at 20 °C (a 0.42 N m start-up
+    # spike); now shaft, seal and oil start at 70 °C, so the first torque is the 70 °C torque
+    # and changes by less than 10 % while the contact warms by a few kelvin.
+    case = _case(environment={"sump_temperature": "70 degC"},
+                 duty={"steps": [{"speed": "1500 rpm", "duration": "3 min"}]})
+    frame = simulate(case).timeseries
+    assert frame["T_contact_C"].iloc[0] == pytest.approx(70.0)
+    assert frame["T_groove_C"].iloc[0] == pytest.approx(70.0)
+    assert abs(frame["torque_Nm"].iloc[0] / frame["torque_Nm"].iloc[-1] - 1) < 0.1
+
+
+def test_run_until_steady_ends_at_the_steady_state():
+    # duty.until_steady holds the last speed until all temperatures change slower than
+    # duty.steady_rate; the end must match the directly solved steady state within 2 % of the
+    # temperature rise (what is left at 0.05 K/min) and 1 % of the torque.
+    case = _case(environment={"sump_temperature": "60 degC"},
+                 duty={"steps": [{"speed": "1500 rpm", "duration": "2 min"}], "until_steady": True},
+                 numerics={"max_time_step": "20 s"})
+    result = simulate(case)
+    last = result.timeseries.iloc[-1]
+    steady = steady_state(case, 1500 * RPM)
+    assert result.steps[-1]["end_s"] > 120.0 and "steady" in result.notes[0]
+    assert last["torque_Nm"] == pytest.approx(steady["torque_Nm"], rel=0.01)
+    assert last["T_contact_C"] - 60 == pytest.approx(steady["T_contact_C"] - 60, rel=0.02)
+
+
+def test_film_outside_measured_range_warns_once_with_a_note():
+    # Finding 5: 6000 rpm at 40 °C extrapolates the film law to about 4 µm (> 2.5 µm measured)
+    case = _case(environment={"sump_temperature": "40 degC"},
+                 duty={"steps": [{"speed": "6000 rpm", "duration": "20 s"}]})
+    with pytest.warns(FilmRangeWarning, match="above the measured range") as record:
+        result = simulate(case)
+    assert len([w for w in record if w.category is FilmRangeWarning]) == 1
+    assert any("above the measured range" in note for note in result.notes)
 
 
 def test_transient_approaches_steady_state():
@@ -210,6 +384,7 @@ def test_cli_run_writes_results_and_refuses_overwrite(tmp_path):
     # the resolved case reproduces the run
     rerun = load_rotary_case(out / "case_resolved.toml")
     assert set(rerun) == {"plain", "wave"} and rerun["wave"].seal.lip_style == "wave"
+    assert rerun["plain"].environment.shaft_air_end == "insulated"  # the test-rig set-up
     assert rerun["plain"].seal.radial_force == pytest.approx(float(default_radial_force(0.08)))
     again = runner.invoke(app, ["rotary", "run", str(case), "--out", str(out), "-q"])
     assert again.exit_code == 2 and "--force" in again.output

@@ -3,7 +3,8 @@
 ISO/TR 14179-2 puts the loss of one contact lip seal at P = 7.69e-6 * d^2 * n [W] (d in mm,
 n in rpm): a constant torque, whatever the oil, temperature or seal. This script computes
 steady-state operating points of sealsim's default DIN 3760 NBR seal of each size, with VG 68 oil
-and the sump held at 80 degC, and prints a Markdown table (the one in the README).
+and the sump held at 80 degC (the default 'gearbox' shaft environment), and prints a Markdown
+table (the one in the README).
 
     python examples/rotary/iso_comparison.py
 """

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import warnings
 from pathlib import Path
 
 import typer
@@ -27,9 +28,12 @@ def run(
     Fig. 12, stribeck.png).
     """
     from sealsim.rotary.study import run_case_file
+    from sealsim.tribology.film import FilmRangeWarning
 
     with variant_progress("rotary", quiet,
-                          lambda _, t, end: f"{t / 60:.0f}/{end / 60:.0f} min") as progress:
+                          lambda _, t, end: f"{t / 60:.0f}/{end / 60:.0f} min") as progress, \
+            warnings.catch_warnings():
+        warnings.simplefilter("ignore", FilmRangeWarning)  # printed below as a note
         results = run_case_file(case, out, force, progress)
     for name, result in results.items():
         last = result.steps[-1]

@@ -21,7 +21,9 @@ def cycle_figure(frame: pd.DataFrame, shaft_radius: float, title: str = ""):
 
     The torque panel splits the torque into its lubricant-shear and rubber parts (forces times
     the shaft radius [m]); the temperature panel shows the spring-groove temperature (the
-    seed's thermocouple), the contact temperature dashed and the sump dotted.
+    seed's thermocouple), the contact temperature and the sump in three colours and line
+    styles, so lines that lie on top of each other (a groove in oil at the sump temperature)
+    stay distinguishable.
     """
     fig, axes = new_figure(3, 1, width=13.0, height=4.0)
     t = _minutes(frame)
@@ -35,9 +37,11 @@ def cycle_figure(frame: pd.DataFrame, shaft_radius: float, title: str = ""):
     axes[1].legend(loc="best", fontsize=8)
     axes[1].set_ylabel("Friction torque [N m]")
     axes[1].set_ylim(bottom=0)
-    axes[2].plot(t, frame["T_groove_C"], color="tab:red", lw=1.8, label="spring groove")
-    axes[2].plot(t, frame["T_contact_C"], color="tab:red", lw=1.2, ls="--", label="contact")
-    axes[2].plot(t, frame["T_sump_C"], color="tab:gray", lw=1.2, ls=":", label="oil sump")
+    axes[2].plot(t, frame["T_contact_C"], color="tab:orange", lw=1.4, ls="--", label="contact")
+    axes[2].plot(t, frame["T_groove_C"], color="tab:red", lw=2.4, alpha=0.8,
+                 label="spring groove")
+    axes[2].plot(t, frame["T_sump_C"], color="tab:blue", lw=1.2, ls="-.", label="oil sump",
+                 zorder=3)
     axes[2].set_ylabel("Temperature [°C]")
     axes[2].legend(loc="best", fontsize=8)
     for ax in axes:
@@ -49,18 +53,21 @@ def cycle_figure(frame: pd.DataFrame, shaft_radius: float, title: str = ""):
 
 
 def variants_figure(frames: dict[str, pd.DataFrame], title: str = ""):
-    """Torque and temperatures of all variants side by side (like seed 000 Fig. 12/13)."""
-    fig, axes = new_figure(2, 1, width=11.0, height=4.2)
+    """Speed, torque and temperatures of all variants (like Organisciak et al. 2014, Fig. 12/13)."""
+    fig, axes = new_figure(3, 1, width=14.0, height=4.2)
     for k, (name, frame) in enumerate(frames.items()):
         colour = _COLOURS[k % len(_COLOURS)]
         t = _minutes(frame)
-        axes[0].plot(t, frame["torque_Nm"], color=colour, lw=1.6, label=name)
-        axes[1].plot(t, frame["T_groove_C"], color=colour, lw=1.6, label=f"{name}: groove")
-        axes[1].plot(t, frame["T_contact_C"], color=colour, lw=1.0, ls="--",
+        axes[0].plot(t, frame["speed_rpm"], color=colour, lw=1.6, ls=["-", "--", ":"][k % 3],
+                     label=name)
+        axes[1].plot(t, frame["torque_Nm"], color=colour, lw=1.6, label=name)
+        axes[2].plot(t, frame["T_groove_C"], color=colour, lw=1.6, label=f"{name}: groove")
+        axes[2].plot(t, frame["T_contact_C"], color=colour, lw=1.0, ls="--",
                      label=f"{name}: contact")
-    axes[0].set_ylabel("Friction torque [N m]")
-    axes[0].set_ylim(bottom=0)
-    axes[1].set_ylabel("Temperature [°C]")
+    axes[0].set_ylabel("Speed [rpm]")
+    axes[1].set_ylabel("Friction torque [N m]")
+    axes[1].set_ylim(bottom=0)
+    axes[2].set_ylabel("Temperature [°C]")
     for ax in axes:
         ax.set_xlabel("Time [min]")
         ax.grid(True, alpha=0.3)

@@ -27,6 +27,7 @@ results lists them all.
 from __future__ import annotations
 
 import csv
+from dataclasses import dataclass, fields
 from pathlib import Path
 from typing import Literal
 
@@ -38,30 +39,37 @@ from sealsim.errors import InputError
 from sealsim.properties.elastomers import get_elastomer
 from sealsim.properties.oils import FAMILIES, Oil, get_oil
 from sealsim.rotary.lip import (
-    LIP_STYLES,
+    DEFAULT_HOOP_PRESTRAIN,
+    DEFAULT_WAVE_AMPLITUDE,
+    DEFAULT_WAVES,
+    STEEL_EXPANSION,
     default_contact_width,
     default_outer_diameter,
     default_radial_force,
     default_width,
 )
-from sealsim.tribology.contact import PERSSON_KAPPA
 from sealsim.tribology.film import EHL_EXPONENT, FILM_FLOOR, film_coefficient_matching_fit
-from sealsim.tribology.rubber_friction import DEFAULT_MASTER_CURVE
+from sealsim.tribology.rubber_friction import DEFAULT_ASPERITY_WAVELENGTH, DEFAULT_MASTER_CURVE
 
-__all__ = ["DutyCycle", "DutyStep", "Environment", "Friction", "Numerics", "OilSpec",
-           "RotaryCase", "Seal", "ThermalSpec", "WaveLip"]
+__all__ = ["SETUPS", "DutyCycle", "DutyStep", "Environment", "Friction", "Numerics", "OilSpec",
+           "RotaryCase", "Seal", "ShaftSetup", "ThermalSpec", "WaveLip"]
 
 CELSIUS_0 = 273.15
 
 
 class WaveLip(CaseModel):
-    """How a wave lip differs from a plain lip (used when ``lip_style = "wave"``)."""
+    """Geometry of a wave lip (used when ``lip_style = "wave"``); see sealsim.rotary.lip."""
 
-    film_factor: float = Field(LIP_STYLES["wave"].film_factor, gt=0.5, le=3.0, description=(
-        "effective film thickness relative to a plain lip at the same viscosity and speed"))
-    track_amplitude: Q("length", ge=0, le=5e-3) = LIP_STYLES["wave"].track_amplitude
-    lip_heat_exchange_factor: float = Field(LIP_STYLES["wave"].lip_heat_exchange_factor,
-                                            ge=1.0, le=10.0)
+    track_amplitude: Q("length", ge=0, le=5e-3) = Field(DEFAULT_WAVE_AMPLITUDE, description=(
+        "axial amplitude of the sinusoidal contact line (assumption: 0.5 mm)"))
+    waves: float = Field(DEFAULT_WAVES, ge=1, le=200, description=(
+        "number of waves around the circumference (assumption: 8)"))
+    film_factor: float | None = Field(None, gt=0.5, le=3.0, description=(
+        "film thickness relative to a plain lip at the same viscosity and speed; default: "
+        "from the inclination of the contact line, 1 + <|sin phi|^0.66>; set it to calibrate"))
+    lip_heat_exchange_factor: float = Field(1.0, ge=1.0, le=10.0, description=(
+        "multiplier of the lip's oil-side heat transfer (default 1: the oil the wave pumps "
+        "carries a negligible heat flow; calibratable)"))
 
 
 class Seal(CaseModel):
@@ -77,13 +85,15 @@ class Seal(CaseModel):
     radial_force_temperature: Q("temperature", gt=200.0, lt=450.0) = 293.15
     spring_share: float = Field(0.45, ge=0.0, le=1.0, description=(
         "share of the garter spring in the radial force (reference notes: 30-60 % new)"))
+    hoop_prestrain: float = Field(DEFAULT_HOOP_PRESTRAIN, gt=0.005, le=0.5, description=(
+        "hoop strain of the lip ring stretched onto the shaft (radial interference / shaft "
+        "radius) at radial_force_temperature; sets how much interference the rubber's thermal "
+        "expansion takes away (estimate: 0.08)"))
     contact_width: Q("length", gt=10e-6, le=3e-3) | None = None
     shaft_roughness: Q("length", gt=0, le=5e-6) = Field(0.3e-6, description=(
         "RMS roughness Rq of the shaft (DIN 3760: Ra 0.2-0.8 um; Rq = 1.25 Ra)"))
     lip_roughness: Q("length", gt=0, le=10e-6) = Field(0.4e-6, description=(
         "RMS roughness of the run-in lip surface"))
-    shaft_rms_slope: float = Field(0.2, gt=0.0, le=2.0, description=(
-        "RMS slope of the shaft surface (ground shafts 0.1-0.3)"))
     spring_offset: Q("length", ge=-5e-3, le=5e-3) = Field(0.5e-3, description=(
         "axial offset of the garter spring plane from the contact, air side positive"))
     wave: WaveLip = WaveLip()
@@ -143,17 +153,66 @@ class OilSpec(CaseModel):
                                   source="user datasheet values (case file)")
 
 
-class Environment(CaseModel):
-    """Oil sump, housing, ambient, shaft."""
+@dataclass(frozen=True)
+class ShaftSetup:
+    """Defaults of a shaft environment (see :data:`SETUPS`), SI units."""
 
+    shaft_length_oil_side: float
+    shaft_length_air_side: float
+    shaft_oil_end: str
+    shaft_air_end: str
+    housing_heat_transfer: float
+
+
+#: Shaft environments.  Lengths are measured from the contact line.
+#:
+#: * ``gearbox``: the seal sits in a bearing cap of a gear unit.  On the oil side the shaft
+#:   reaches the bearing 30 mm inside and continues into the gear case, where bearings and
+#:   gears bathed in oil hold it at the sump temperature (in gearbox thermal networks shafts
+#:   are nodes at about oil temperature: Bauer et al., Power Transmission Engineering, Dec.
+#:   2018; del Valle, KTH 2014).  On the air side 50 mm of bare shaft lead to the coupling of a
+#:   motor flanged to the housing (an industrial gear motor, the application of Organisciak et
+#:   al. 2014), which holds the shaft end at about the housing temperature.  Housing to ambient
+#:   12 W/(m² K): radiation 7.5 (grey body, ε = 0.9) + free convection 4.8 (Churchill & Chu)
+#:   for a 0.3 m wall 40 K above ambient.
+#: * ``test_rig``: the friction rig of Organisciak et al. (AGMA 14FTM14, 2014): a motor-driven
+#:   shaft, the seal in a compact test head with a small oil bath, the friction measured on an
+#:   air-bearing spindle.  30 mm of shaft on each side; the shaft end in the oil bath and the
+#:   drive coupling take no heat (insulated); bare aluminium test head 6 W/(m² K) (free
+#:   convection ≈ 5 + radiation ≈ 1, a bright metal surface with emissivity ≈ 0.1).
+SETUPS: dict[str, ShaftSetup] = {
+    "gearbox": ShaftSetup(shaft_length_oil_side=0.03, shaft_length_air_side=0.05,
+                          shaft_oil_end="sump", shaft_air_end="housing",
+                          housing_heat_transfer=12.0),
+    "test_rig": ShaftSetup(shaft_length_oil_side=0.03, shaft_length_air_side=0.03,
+                           shaft_oil_end="insulated", shaft_air_end="insulated",
+                           housing_heat_transfer=6.0),
+}
+
+
+class Environment(CaseModel):
+    """Oil sump, housing, ambient, shaft.
+
+    ``setup`` chooses the shaft environment (:data:`SETUPS`): its shaft lengths, shaft-end
+    conditions and housing heat transfer are the defaults of the fields left out.
+    """
+
+    setup: Literal["gearbox", "test_rig"] = Field("gearbox", description=(
+        "shaft environment: 'gearbox' (seal in a gear unit's bearing cap, shaft held at the "
+        "sump temperature inside, coupling at the housing temperature outside) or 'test_rig' "
+        "(Organisciak et al.'s rig: short shaft, small oil bath, insulated ends)"))
     ambient_temperature: Q("temperature", gt=200.0, lt=400.0) = 293.15
     start_temperature: Q("temperature", gt=200.0, lt=450.0) | None = Field(
-        None, description="initial temperature of shaft, seal, oil and housing; "
-                          "default: ambient")
+        None, description="initial temperature of shaft, seal, oil and housing; default: the "
+                          "held sump temperature, else ambient")
     sump_volume: Q("volume", gt=1e-6, le=10.0) = 1e-3
     sump_temperature: Q("temperature", gt=200.0, lt=450.0) | None = Field(
         None, description="if given, the sump is held at this temperature (thermostat); "
                           "otherwise it heats up from the seal's friction")
+    housing_temperature: Q("temperature", gt=200.0, lt=450.0) | None = Field(
+        None, description="if given, the housing is held at this temperature (a heated test "
+                          "head, a gearbox at its operating temperature); otherwise it is a "
+                          "heat capacity between sump and ambient")
     oil_level_wetting: float = Field(0.5, ge=0.0, le=1.0, description=(
         "fraction of the shaft circumference under oil on the oil side "
         "(0.5: oil level at the shaft centre, as in seed 000's rig)"))
@@ -161,19 +220,37 @@ class Environment(CaseModel):
         None, description="outer housing area to ambient; default: a box twice the sump volume")
     housing_mass: Q("mass", gt=0) | None = Field(
         None, description="housing metal mass; default: 5 mm steel walls of housing_area")
-    housing_heat_transfer: Q("heat_transfer_coefficient", gt=0, le=1000.0) = Field(
-        12.0, description="housing to ambient: radiation 7.5 + natural convection 4.8 "
-                          "W/(m2 K) for a 0.3 m wall 40 K above ambient (notes 7.3)")
+    housing_heat_transfer: Q("heat_transfer_coefficient", gt=0, le=1000.0) | None = Field(
+        None, description="housing to ambient; default from the setup (gearbox 12, test_rig 6 "
+                          "W/(m2 K))")
     oil_housing_heat_transfer: Q("heat_transfer_coefficient", gt=0, le=10000.0) = Field(
         100.0, description="oil to the wetted housing wall (splashed walls 1e2-1e3 W/(m2 K))")
-    shaft_length_oil_side: Q("length", gt=1e-3, le=2.0) = 0.06
-    shaft_length_air_side: Q("length", gt=1e-3, le=2.0) = 0.08
-    shaft_air_end: Literal["fin", "insulated"] = Field("fin", description=(
-        "beyond shaft_length_air_side the shaft either continues bare in air (fin) or enters "
-        "a part that takes no heat, e.g. a test-rig spindle or a plastic coupling (insulated)"))
+    shaft_length_oil_side: Q("length", gt=1e-3, le=2.0) | None = Field(
+        None, description="modelled shaft from the contact into the oil side; default from the "
+                          "setup (30 mm)")
+    shaft_length_air_side: Q("length", gt=1e-3, le=2.0) | None = Field(
+        None, description="modelled shaft from the contact to the air-side end; default from "
+                          "the setup (gearbox 50 mm, test_rig 30 mm)")
+    shaft_oil_end: Literal["sump", "fin", "insulated"] | None = Field(None, description=(
+        "beyond shaft_length_oil_side the shaft is held at the sump temperature (sump: gear "
+        "case), continues bare in the oil (fin), or ends (insulated); default from the setup"))
+    shaft_air_end: Literal["housing", "fin", "insulated"] | None = Field(None, description=(
+        "beyond shaft_length_air_side the shaft enters a coupling or bearing at the housing "
+        "temperature (housing), continues bare in air (fin), or enters a part that takes no "
+        "heat, e.g. a test-rig spindle (insulated); default from the setup"))
     shaft_conductivity: Q("thermal_conductivity", gt=0) = 45.0
     shaft_density: Q("density", gt=0) = 7850.0
     shaft_specific_heat: Q("specific_heat", gt=0) = 460.0
+    shaft_expansion: Q("thermal_expansion", ge=0, le=1e-4) = Field(
+        STEEL_EXPANSION, description="linear thermal expansion of the shaft (steel 11-13e-6 1/K)")
+
+    @model_validator(mode="after")
+    def _setup_defaults(self):
+        setup = SETUPS[self.setup]
+        for item in fields(ShaftSetup):
+            if getattr(self, item.name) is None:
+                object.__setattr__(self, item.name, getattr(setup, item.name))
+        return self
 
 
 class ThermalSpec(CaseModel):
@@ -200,9 +277,12 @@ class Friction(CaseModel):
     mu_peak: float = Field(DEFAULT_MASTER_CURVE.mu_peak, gt=0, le=5)
     mu_low: float = Field(DEFAULT_MASTER_CURVE.mu_low, ge=0, le=5)
     master_curve_width_decades: float = Field(DEFAULT_MASTER_CURVE.width_decades, gt=0, le=10)
-    peak_speed_at_reference: Q("velocity", gt=0) = DEFAULT_MASTER_CURVE.peak_speed_reference
-    persson_kappa: float = Field(PERSSON_KAPPA, gt=0, le=10)
-    asperity_wavelength: Q("length", gt=0, le=1e-3) = 50e-6
+    peak_speed_at_reference: Q("velocity", gt=0) | None = Field(None, description=(
+        "speed of the friction peak at the elastomer's WLF reference temperature; default: "
+        "the hysteresis peak asperity_wavelength x loss-peak frequency of the elastomer"))
+    asperity_wavelength: Q("length", gt=0, le=1e-3) = Field(
+        DEFAULT_ASPERITY_WAVELENGTH, description="wavelength of the shaft roughness that "
+                                                 "deforms the lip rubber (ground shaft 50 um)")
 
     @model_validator(mode="after")
     def _ordered(self):
@@ -240,6 +320,11 @@ class DutyCycle(CaseModel):
         "longest duty cycle that is run (default 1e6 s, about 11.6 days, a few minutes of "
         "computing): a guard against a unit slip such as '1000 h' for '1000 s'; raise it "
         "for longer runs"))
+    until_steady: bool = Field(False, description=(
+        "hold the last speed after the cycle until the temperatures are steady (all change "
+        "slower than steady_rate), at most until max_duration"))
+    steady_rate: Q("temperature_rate", gt=0) = Field(
+        0.05 / 60.0, description="temperature rate below which until_steady stops (0.05 K/min)")
 
     @model_validator(mode="after")
     def _one_source(self):
@@ -364,6 +449,15 @@ class Numerics(CaseModel):
         return self
 
 
+def start_temperature(env: Environment) -> float:
+    """Initial temperature of a run [K]: as given, else the held sump temperature, else ambient."""
+    if env.start_temperature is not None:
+        return env.start_temperature
+    if env.sump_temperature is not None:
+        return env.sump_temperature
+    return env.ambient_temperature
+
+
 class RotaryCase(CaseModel):
     """A complete rotary lip seal case (seed 000)."""
 
@@ -391,10 +485,10 @@ class RotaryCase(CaseModel):
     def _temperatures_in_oil_range(self):
         oil = self.oil.build()
         env = self.environment
-        start = env.start_temperature if env.start_temperature is not None \
-            else env.ambient_temperature
+        start = start_temperature(env)
         for name, value in (("environment.start_temperature", start),
-                            ("environment.sump_temperature", env.sump_temperature)):
+                            ("environment.sump_temperature", env.sump_temperature),
+                            ("environment.housing_temperature", env.housing_temperature)):
             if value is not None and oil.min_temperature is not None and \
                     value < oil.min_temperature:
                 raise ValueError(f"{name} {value - CELSIUS_0:.1f} degC is below the lowest "

@@ -1,22 +1,29 @@
 """Friction torque of a radial lip seal at a given speed and contact temperature (seed 000).
 
-Composes the physics of :mod:`sealsim.tribology` exactly as seed 000 writes it:
+Composes the physics of :mod:`sealsim.tribology` as seed 000 writes it:
 
     T_torque   = (F_lub + F_material)·D/2                         (Eq. 2)
-    F_material = μ_dry(T, u)·F_tip(T)·f(A_c)                       (Eq. 3)
+    F_material = μ_dry(T, u)·F_tip(T)·f(A_c),  f = α(Λ)            (Eq. 3)
     F_lub      = η(T)·u / h_e · S_contact,  S_contact = π·D·b      (Eq. 4)
-    h_e        = film_factor · f · (η·u)^0.66  (≥ film floor)      (Eq. 5)
+    h_e        = film_factor·f_h·(η·u)^0.66·(W′/W′_ref)^−0.22·(E/E_ref)^−0.42
+                 (≥ film floor)                                    (Eq. 5, soft EHL)
 
-with f(A_c) the real contact area fraction (Persson's dry area × the Greenwood–Williamson
-mixed-lubrication factor at Λ = h_e/σ), μ_dry from the WLF-shifted Grosch master curve of the
-lip elastomer, E* from the elastomer's modulus at the asperity excitation frequency u/λ, and
-F_tip from the lip force model of :mod:`sealsim.rotary.lip`.  Everything is vectorised over
-speed and temperature, so the same object gives one operating point inside the transient
-simulation or a whole speed × temperature map.
+The seed leaves f(A_c) open ("a function of the real contact area").  sealsim takes the share
+of the lip load carried by the shaft's asperities, α(Λ) of Greenwood–Williamson at the film
+ratio Λ = h_e/σ (:func:`~sealsim.tribology.contact.asperity_load_share`): μ_dry is a
+friction coefficient, so it multiplies a load; the real contact area is already inside it.
+μ_dry comes from the WLF-shifted Grosch master curve of the lip elastomer with its hysteresis
+peak at λ·f_max (:mod:`sealsim.tribology.rubber_friction`), F_tip from a lip-force source (a
+callable of temperature, :class:`~sealsim.rotary.lip.AnalyticLipForce` by default), and the
+film's load and modulus dependence from Hamrock & Dowson's soft-EHL exponents
+(:mod:`sealsim.tribology.film`).  Everything is vectorised over speed and temperature, so the
+same object gives one operating point inside the transient simulation or a whole
+speed × temperature map.
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import NamedTuple
 
@@ -24,9 +31,17 @@ import numpy as np
 
 from sealsim.properties.elastomers import Elastomer
 from sealsim.properties.oils import Oil
-from sealsim.rotary.lip import LIP_FORCE_FREQUENCY, lip_force
-from sealsim.tribology.contact import PERSSON_KAPPA, contact_modulus, real_contact_area_fraction
-from sealsim.tribology.film import EHL_EXPONENT, FILM_FLOOR, film_ratio, film_thickness
+from sealsim.rotary.lip import LIP_FORCE_FREQUENCY
+from sealsim.tribology.contact import asperity_load_share
+from sealsim.tribology.film import (
+    EHL_EXPONENT,
+    FILM_FLOOR,
+    FILM_REFERENCE_LOAD,
+    FILM_REFERENCE_MODULUS,
+    film_ratio,
+    film_thickness,
+    soft_ehl_load_modulus_factor,
+)
 from sealsim.tribology.rubber_friction import (
     DEFAULT_MASTER_CURVE,
     GroschMasterCurve,
@@ -47,14 +62,8 @@ class LipSealFrictionParameters:
         D [m].
     contact_width : float
         Axial contact width b [m].
-    radial_force : float
-        Lip force F_ref at ``radial_force_temperature`` [N].
-    radial_force_temperature : float
-        Temperature at which the lip force was measured [K].
-    spring_share : float
-        Share of the garter spring in F_ref [-].
     film_coefficient : float
-        f of Eq. 5 [m/(Pa·m)^exponent].
+        f_h of Eq. 5 [m/(Pa·m)^exponent].
     film_exponent : float
         Exponent of η·u [-].
     film_floor : float
@@ -63,31 +72,24 @@ class LipSealFrictionParameters:
         Lip-style film multiplier [-] (1 plain).
     roughness : float
         Composite RMS roughness σ of shaft and lip [m].
-    rms_slope : float
-        RMS slope of the shaft surface [-].
-    asperity_wavelength : float
-        Wavelength of the roughness that the lip rubber is excited by [m]; sets the frequency
-        u/λ at which E* is taken.
-    kappa : float
-        Persson constant [-].
     master_curve : GroschMasterCurve
         μ_dry master curve.
+    film_reference_load : float
+        Lip load per circumference W′_ref of the seal the film law holds for [N/m].
+    film_reference_modulus : float
+        Quasi-static modulus E_ref of that seal's lip [Pa].
     """
 
     shaft_diameter: float
     contact_width: float
-    radial_force: float
-    radial_force_temperature: float
-    spring_share: float
     film_coefficient: float
     film_exponent: float = EHL_EXPONENT
     film_floor: float = FILM_FLOOR
     film_factor: float = 1.0
     roughness: float = 0.5e-6
-    rms_slope: float = 0.2
-    asperity_wavelength: float = 50e-6
-    kappa: float = PERSSON_KAPPA
     master_curve: GroschMasterCurve = field(default=DEFAULT_MASTER_CURVE)
+    film_reference_load: float = FILM_REFERENCE_LOAD
+    film_reference_modulus: float = FILM_REFERENCE_MODULUS
 
 
 class FrictionState(NamedTuple):
@@ -99,7 +101,7 @@ class FrictionState(NamedTuple):
     film_ratio: np.ndarray  # Λ [-]
     lip_force: np.ndarray  # F_tip [N]
     mu_dry: np.ndarray  # μ_dry [-]
-    area_fraction: np.ndarray  # f(A_c) [-]
+    asperity_share: np.ndarray  # α(Λ) = f(A_c) [-]
     force_lubricant: np.ndarray  # F_lub [N]
     force_material: np.ndarray  # F_material [N]
     torque: np.ndarray  # [N m], sign of the angular speed
@@ -107,35 +109,40 @@ class FrictionState(NamedTuple):
 
 
 class LipSealFriction:
-    """Friction model of one lip seal: parameters + oil + lip elastomer.
+    """Friction model of one lip seal: parameters + oil + lip elastomer + lip-force source.
+
+    Parameters
+    ----------
+    parameters : LipSealFrictionParameters
+        Geometry, film and master curve.
+    oil : Oil
+        The lubricant.
+    elastomer : Elastomer
+        The lip rubber (shift factor of μ_dry, quasi-static modulus of the film law).
+    lip_force : callable
+        ``lip_force(temperature [K]) -> F_tip [N]``, vectorised.
 
     Examples
     --------
     >>> from sealsim.properties.oils import get_oil
     >>> from sealsim.properties.elastomers import get_elastomer
+    >>> from sealsim.rotary.lip import AnalyticLipForce
     >>> from sealsim.tribology.film import film_coefficient_matching_fit
-    >>> p = LipSealFrictionParameters(0.08, 2e-4, 30.0, 293.15, 0.45,
-    ...                               film_coefficient_matching_fit())
-    >>> model = LipSealFriction(p, get_oil("VG68"), get_elastomer("NBR"))
+    >>> nbr = get_elastomer("NBR")
+    >>> p = LipSealFrictionParameters(0.08, 2.5e-4, film_coefficient_matching_fit())
+    >>> model = LipSealFriction(p, get_oil("VG68"), nbr, AnalyticLipForce(37.7, 293.15, 0.45, nbr))
     >>> state = model.evaluate(157.08, 353.15)   # 1500 rpm, 80 °C
     >>> 0.1 < float(state.torque) < 1.0
     True
     """
 
-    def __init__(self, parameters: LipSealFrictionParameters, oil: Oil, elastomer: Elastomer):
+    def __init__(self, parameters: LipSealFrictionParameters, oil: Oil, elastomer: Elastomer,
+                 lip_force: Callable[[np.ndarray], np.ndarray]):
         self.parameters = parameters
         self.oil = oil
         self.elastomer = elastomer
-        p = parameters
-        self.contact_area = np.pi * p.shaft_diameter * p.contact_width
-        self._modulus_reference = float(elastomer.modulus(p.radial_force_temperature,
-                                                          LIP_FORCE_FREQUENCY))
-
-    def lip_force(self, temperature):
-        """F_tip at the lip temperature [N] (lip force model, :func:`~sealsim.rotary.lip.lip_force`)."""
-        ratio = np.asarray(self.elastomer.modulus(temperature, LIP_FORCE_FREQUENCY)) \
-            / self._modulus_reference
-        return lip_force(self.parameters.radial_force, self.parameters.spring_share, ratio)
+        self.lip_force = lip_force
+        self.contact_area = np.pi * parameters.shaft_diameter * parameters.contact_width
 
     def evaluate(self, angular_speed, contact_temperature) -> FrictionState:
         """Friction at shaft angular speed ω [rad/s] and contact temperature [K] (broadcast)."""
@@ -145,21 +152,21 @@ class LipSealFriction:
         u = omega * p.shaft_diameter / 2.0
         speed = np.abs(u)
         eta = self.oil.dynamic_viscosity(temp)
-        h = film_thickness(eta, speed, p.film_coefficient, p.film_exponent, p.film_factor,
-                           p.film_floor)
+        f_tip = np.asarray(self.lip_force(temp), dtype=float)
+        scale = soft_ehl_load_modulus_factor(
+            f_tip / (np.pi * p.shaft_diameter), self.elastomer.modulus(temp, LIP_FORCE_FREQUENCY),
+            p.film_reference_load, p.film_reference_modulus)
+        h = film_thickness(eta, speed, p.film_coefficient, p.film_exponent,
+                           p.film_factor * scale, p.film_floor)
         lam = film_ratio(h, p.roughness)
-        f_tip = self.lip_force(temp)
-        pressure = f_tip / self.contact_area
-        excitation = np.maximum(speed / p.asperity_wavelength, 1e-3)
-        e_star = contact_modulus(self.elastomer.modulus(temp, excitation))
-        area = real_contact_area_fraction(pressure, e_star, p.rms_slope, lam, p.kappa)
+        share = asperity_load_share(lam)
         mu = grosch_friction_coefficient(speed, self.elastomer.log10_shift_factor(temp),
                                          p.master_curve)
         f_lub = viscous_friction_force(eta, speed, h, self.contact_area)
-        f_mat = np.where(speed > 0, mu * f_tip * area, 0.0)
+        f_mat = np.where(speed > 0, mu * f_tip * share, 0.0)
         torque = np.sign(omega) * (f_lub + f_mat) * p.shaft_diameter / 2.0
         power = torque * omega
-        return FrictionState(u, eta, h, lam, f_tip, mu, area, f_lub, f_mat, torque, power)
+        return FrictionState(u, eta, h, lam, f_tip, mu, share, f_lub, f_mat, torque, power)
 
     def duty_parameter(self, state: FrictionState, angular_speed):
         """Duty parameter G = η·ω·b/W' of operating points (for Stribeck-type plots)."""

@@ -1,14 +1,36 @@
 """Radial lip: default proportions, lip force vs temperature, plain and wave lip styles.
 
-The radial lip force F_tip of a garter-spring lip seal has two shares (reference notes §4):
-the garter spring (steel: its force does not change with temperature in the service range)
-and the elastomer's own interference (proportional to the rubber's quasi-static modulus).
-With the rubber share s_r = 1 − s_spring at the reference temperature T_ref,
+**Lip force.**  The radial lip force F_tip of a garter-spring lip seal has two shares: the
+garter spring (steel: its force does not change with temperature in the service range) and the
+elastomer's own interference.  The rubber share is the lip ring's elastic response to being
+stretched onto the shaft, so it scales with the rubber's quasi-static modulus E and with the
+interference δ.  With the rubber share s_r = 1 − s_spring at the reference temperature T_ref,
 
-    F_tip(T) = F_ref·[s_spring + (1 − s_spring)·E(T)/E(T_ref)].                 (1)
+    F_tip(T) = F_ref·[s_spring + (1 − s_spring)·(E(T)/E(T_ref))·(δ(T)/δ(T_ref))].   (1)
 
 E is evaluated at a quasi-static frequency (:data:`LIP_FORCE_FREQUENCY`): the lip's
 interference is held for hours, so the relaxed modulus applies, not the dynamic one.
+
+The interference shrinks as the lip warms: rubber expands about fifteen times more than the
+steel shaft, and the lip head hangs on a flexible membrane, so its ring grows nearly freely
+(this is why lip seals carry a garter spring; Trelleborg's catalogue contrasts radial shaft
+seals, whose "contact force decreases with the thermal volume increase", with axial ones).
+Written as the lip ring's hoop pre-strain ε₀ = δ/R on a shaft of radius R,
+
+    δ(T)/δ(T_ref) = max(0, 1 − (α_rubber − α_shaft)·(T − T_ref)/ε₀).           (2)
+
+**Wave lip.**  A wave lip's contact line z(θ) = A·sin(N·θ) (amplitude A, N waves around the
+shaft of radius R) is inclined to the sliding direction by φ(θ), tan φ = (A·N/R)·cos(N·θ).  The
+shaft carries oil across an inclined line with the normal velocity u·|sin φ|, which builds a
+hydrodynamic wedge film on top of the plain lip's asperity-scale film: the pumping of inclined
+lip features (hydrodynamic aids, Horve, *Shaft Seals for Dynamic Applications*, 1996; Müller &
+Nau, *Fluid Sealing Technology*, 1998).  Both films follow the soft-EHL law h ∝ (η·u)^n, so
+
+    h_wave/h_plain = 1 + c·⟨|sin φ(θ)|^n⟩_θ,                                     (3)
+
+with c = 1 if the wedge film has the plain film's coefficient (sealsim's assumption; the film
+factor can be set instead, e.g. calibrated).  The track of the wave spreads the frictional
+heat over an axial band b + 2A.
 """
 
 from __future__ import annotations
@@ -17,29 +39,78 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from sealsim.properties.elastomers import Elastomer
+from sealsim.tribology.film import EHL_EXPONENT
+
 __all__ = [
+    "DEFAULT_HOOP_PRESTRAIN",
     "LIP_FORCE_FREQUENCY",
     "LIP_STYLES",
+    "AnalyticLipForce",
     "LipStyle",
     "default_contact_width",
     "default_outer_diameter",
     "default_radial_force",
     "default_width",
+    "interference_ratio",
     "lip_force",
+    "wave_contact_angle",
+    "wave_film_factor",
+    "wave_lip_style",
 ]
 
 #: Frequency at which E(T) scales the rubber share of the lip force [Hz].  0.01 Hz (time scale
 #: ≈ 100 s) is the quasi-static end of DMA; for the catalogue NBR it gives a 20 % drop of the
-#: rubber share from 20 to 100 °C, the short-term drop the reference notes (§4, "elastomer part
-#: drops ~20-30 % from 20 to 100 °C") give for NBR lip seals.
+#: modulus from 20 to 100 °C.
 LIP_FORCE_FREQUENCY = 0.01
 
 #: Radial load per unit circumference of a DIN 3760 lip [N/m]: 0.15 N/mm, the middle of
 #: the 0.1-0.2 N/mm of the reference notes §4 (38 N on an 80 mm shaft).
 DEFAULT_LOAD_PER_LENGTH = 150.0
 
+#: Hoop pre-strain of the lip ring on the shaft, ε₀ = δ/R [-]: 8 %, the strain at which the
+#: ring tension of a 2.5 mm × 3 mm NBR lip head (E ≈ 5.5 MPa) carries the rubber share of the
+#: default lip force, 0.55 × 0.15 N/mm × π·d = 2π·E·A·ε₀ (an estimate, any diameter).  With the
+#: catalogue NBR (α = 1.9e-4 /K) on steel it loses 18 % of the interference over 80 K.
+DEFAULT_HOOP_PRESTRAIN = 0.08
 
-def lip_force(reference_force, spring_share, modulus_ratio):
+#: Linear thermal expansion of a steel shaft [1/K] (carbon and low-alloy steels 11-13e-6).
+STEEL_EXPANSION = 12e-6
+
+
+def interference_ratio(temperature, reference_temperature, hoop_prestrain, rubber_expansion,
+                       shaft_expansion=STEEL_EXPANSION):
+    """Lip interference at temperature relative to the reference temperature, Eq. (2).
+
+    Parameters
+    ----------
+    temperature : array_like
+        Lip temperature T [K].
+    reference_temperature : float
+        T_ref at which the lip force is known [K].
+    hoop_prestrain : float
+        Hoop pre-strain of the mounted lip ring at T_ref, ε₀ = δ/R [-], > 0.
+    rubber_expansion : float
+        Linear thermal expansion of the lip rubber α_rubber [1/K].
+    shaft_expansion : float
+        Linear thermal expansion of the shaft α_shaft [1/K].
+
+    Returns
+    -------
+    numpy.ndarray
+        δ(T)/δ(T_ref) [-], ≥ 0 (0: the rubber lifts off, only the spring presses).
+
+    Examples
+    --------
+    >>> round(float(interference_ratio(373.15, 293.15, 0.08, 1.9e-4)), 3)
+    0.822
+    """
+    loss = (rubber_expansion - shaft_expansion) * (
+        np.asarray(temperature, dtype=float) - reference_temperature) / hoop_prestrain
+    return np.maximum(1.0 - loss, 0.0)
+
+
+def lip_force(reference_force, spring_share, modulus_ratio, interference=1.0):
     """Radial lip force at temperature, Eq. (1).
 
     Parameters
@@ -50,6 +121,8 @@ def lip_force(reference_force, spring_share, modulus_ratio):
         Share of the garter spring in F_ref [-], 0...1.
     modulus_ratio : array_like
         E(T)/E(T_ref) of the lip elastomer at the quasi-static frequency [-].
+    interference : array_like
+        δ(T)/δ(T_ref), :func:`interference_ratio` [-].
 
     Returns
     -------
@@ -63,7 +136,54 @@ def lip_force(reference_force, spring_share, modulus_ratio):
     """
     s = np.asarray(spring_share, dtype=float)
     return np.asarray(reference_force, dtype=float) * (s + (1.0 - s) * np.asarray(
-        modulus_ratio, dtype=float))
+        modulus_ratio, dtype=float) * np.asarray(interference, dtype=float))
+
+
+@dataclass(frozen=True)
+class AnalyticLipForce:
+    """F_tip(T) from the spring share, the rubber's modulus and its thermal expansion, Eq. (1)-(2).
+
+    A lip-force source is any callable ``force(temperature [K]) -> F_tip [N]``; this is the
+    analytic one.
+
+    Parameters
+    ----------
+    reference_force : float
+        F_ref [N] at ``reference_temperature``.
+    reference_temperature : float
+        T_ref [K].
+    spring_share : float
+        Share of the garter spring in F_ref [-].
+    elastomer : Elastomer
+        Lip rubber: quasi-static modulus and thermal expansion.
+    hoop_prestrain : float
+        ε₀ of Eq. (2) [-].
+    shaft_expansion : float
+        α of the shaft [1/K].
+
+    Examples
+    --------
+    >>> from sealsim.properties.elastomers import get_elastomer
+    >>> force = AnalyticLipForce(37.7, 293.15, 0.45, get_elastomer("NBR"), 0.08, 12e-6)
+    >>> round(float(force(293.15)), 2), round(float(force(373.15)), 1)
+    (37.7, 30.6)
+    """
+
+    reference_force: float
+    reference_temperature: float
+    spring_share: float
+    elastomer: Elastomer
+    hoop_prestrain: float = DEFAULT_HOOP_PRESTRAIN
+    shaft_expansion: float = STEEL_EXPANSION
+
+    def __call__(self, temperature):
+        e = self.elastomer
+        modulus_ratio = np.asarray(e.modulus(temperature, LIP_FORCE_FREQUENCY)) / float(
+            e.modulus(self.reference_temperature, LIP_FORCE_FREQUENCY))
+        interference = interference_ratio(temperature, self.reference_temperature,
+                                          self.hoop_prestrain, e.thermal_expansion,
+                                          self.shaft_expansion)
+        return lip_force(self.reference_force, self.spring_share, modulus_ratio, interference)
 
 
 def default_radial_force(shaft_diameter):
@@ -169,20 +289,109 @@ class LipStyle:
     lip_heat_exchange_factor: float
 
 
-#: Lip styles.  Plain: the reference.  Wave (SKF WAVE; seed 000 Fig. 11: a sinusoidal contact
-#: patch "enables a better lubricant flow at the vicinity of the lip and a higher lubricant film
-#: in the contact.  This also enables a better heat exchange"):
-#:
-#: * film_factor 1.3: the inclined track of a sinusoidal edge sweeps oil into the contact like a
-#:   hydrodynamic wedge; a 30 % thicker mean film is a moderate value for a wedge angle of a few
-#:   degrees (sealsim assumption: no published film measurement of wave lips was found);
-#: * track_amplitude 0.5 mm: the sinusoidal edge of a wave lip oscillates by about ±0.5 mm
-#:   across the shaft (seed 000 Fig. 11 shows a track several contact widths wide);
-#: * lip_heat_exchange_factor 2: the bi-directional pumping renews the oil at the lip, which
-#:   sealsim represents as twice the oil-side heat transfer of a plain lip.
-LIP_STYLES = {
-    "plain": LipStyle("plain", film_factor=1.0, track_amplitude=0.0,
-                      lip_heat_exchange_factor=1.0),
-    "wave": LipStyle("wave", film_factor=1.3, track_amplitude=0.5e-3,
-                     lip_heat_exchange_factor=2.0),
-}
+def wave_contact_angle(amplitude, waves, shaft_diameter, angle):
+    """Inclination φ of a wave lip's contact line to the sliding direction at angle θ.
+
+    tan φ = (A·N/R)·cos(N·θ) for the contact line z = A·sin(N·θ) on a shaft of radius R.
+
+    Parameters
+    ----------
+    amplitude : float
+        Axial amplitude A of the contact line [m].
+    waves : float
+        Number of waves N around the circumference [-].
+    shaft_diameter : float
+        D = 2R [m].
+    angle : array_like
+        Circumferential position θ [rad].
+
+    Returns
+    -------
+    numpy.ndarray
+        φ [rad], signed.
+
+    Examples
+    --------
+    >>> round(float(np.degrees(wave_contact_angle(0.5e-3, 8, 0.08, 0.0))), 2)
+    5.71
+    """
+    slope = amplitude * waves / (shaft_diameter / 2.0)
+    return np.arctan(slope * np.cos(waves * np.asarray(angle, dtype=float)))
+
+
+def wave_film_factor(amplitude, waves, shaft_diameter, exponent=EHL_EXPONENT,
+                     wedge_coefficient=1.0):
+    """Film of a wave lip relative to a plain lip, Eq. (3): 1 + c·⟨|sin φ|^n⟩.
+
+    Parameters
+    ----------
+    amplitude : float
+        Axial amplitude A of the contact line [m].
+    waves : float
+        Number of waves N [-].
+    shaft_diameter : float
+        D [m].
+    exponent : float
+        Exponent n of the film law [-].
+    wedge_coefficient : float
+        c: film coefficient of the inclined-line wedge relative to the plain lip's [-].
+
+    Returns
+    -------
+    float
+        h_wave/h_plain [-] (1 for a zero amplitude).
+
+    Examples
+    --------
+    >>> round(wave_film_factor(0.5e-3, 8, 0.08), 3)
+    1.156
+    """
+    theta = (np.arange(720) + 0.5) * (2.0 * np.pi / 720) / max(waves, 1e-12)  # one wave
+    phi = wave_contact_angle(amplitude, waves, shaft_diameter, theta)
+    return float(1.0 + wedge_coefficient * np.mean(np.abs(np.sin(phi)) ** exponent))
+
+
+#: Wave lip geometry defaults (assumptions; Organisciak et al. 2014, Fig. 11 shows the
+#: sinusoidal track but is not legible): amplitude 0.5 mm (a track several contact widths wide)
+#: and 8 waves, i.e. a contact line inclined by up to 5.7° on an 80 mm shaft.
+DEFAULT_WAVE_AMPLITUDE = 0.5e-3
+DEFAULT_WAVES = 8
+
+
+def wave_lip_style(shaft_diameter, amplitude=DEFAULT_WAVE_AMPLITUDE, waves=DEFAULT_WAVES,
+                   film_factor=None, lip_heat_exchange_factor=1.0) -> LipStyle:
+    """The wave lip style of a seal: film factor from the geometry unless one is given.
+
+    Parameters
+    ----------
+    shaft_diameter : float
+        D [m].
+    amplitude : float
+        Axial amplitude of the contact line [m].
+    waves : float
+        Number of waves [-].
+    film_factor : float, optional
+        h_wave/h_plain [-]; default :func:`wave_film_factor` of the geometry.
+    lip_heat_exchange_factor : float
+        Multiplier of the lip's oil-side heat transfer coefficient [-]; default 1: the oil
+        the wave pumps along its contact line, ≈ u·h/2·⟨|sin φ cos φ|⟩ per unit length
+        (≈ 20 mm³/s on an 80 mm shaft at 1000 rpm), carries 0.04 W/K, negligible against
+        conduction into the shaft, so no extra exchange is derived (calibratable).
+
+    Returns
+    -------
+    LipStyle
+
+    Examples
+    --------
+    >>> wave_lip_style(0.08).film_factor == wave_film_factor(0.5e-3, 8, 0.08)
+    True
+    """
+    if film_factor is None:
+        film_factor = wave_film_factor(amplitude, waves, shaft_diameter)
+    return LipStyle("wave", film_factor, amplitude, lip_heat_exchange_factor)
+
+
+#: The plain lip: the reference of the film law and of the heat exchange.
+LIP_STYLES = {"plain": LipStyle("plain", film_factor=1.0, track_amplitude=0.0,
+                                lip_heat_exchange_factor=1.0)}

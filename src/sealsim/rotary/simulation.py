@@ -10,7 +10,7 @@ Every time step (backward Euler, adaptive Δt):
    ambient (seed Eq. 7, :mod:`sealsim.thermal.conduction`) → new temperatures.
 
 Step 2 uses the contact temperature of the previous step (explicit coupling).  The feedback is
-weak and stabilising (a hotter contact has thinner oil and less friction), so it needs no
+weak and stabilising (a hotter contact has thinner oil and a lower μ_dry), so it needs no
 iteration; the time-step refinement test checks that.  Energy is booked every step: heat
 generated = heat stored in cells, sump and housing + heat given to the ambient (and to a
 sump held at constant temperature).
@@ -32,9 +32,9 @@ import pandas as pd
 from sealsim.errors import InputError, ModelError
 from sealsim.properties.elastomers import ServiceRangeWarning, get_elastomer
 from sealsim.properties.oils import OilRangeWarning
-from sealsim.rotary.case import RotaryCase
+from sealsim.rotary.case import RotaryCase, start_temperature
 from sealsim.rotary.friction import FrictionState, LipSealFriction, LipSealFrictionParameters
-from sealsim.rotary.lip import LIP_STYLES, LipStyle
+from sealsim.rotary.lip import LIP_STYLES, AnalyticLipForce, LipStyle, wave_lip_style
 from sealsim.rotary.thermal_model import SealSection, build_thermal_grid
 from sealsim.thermal.conduction import (
     BackwardEulerStepper,
@@ -48,7 +48,12 @@ from sealsim.thermal.convection import (
     free_convection_horizontal_cylinder,
     rotating_cylinder_coefficient,
 )
-from sealsim.tribology.rubber_friction import GroschMasterCurve
+from sealsim.tribology.film import FilmRangeWarning, film_range_note
+from sealsim.tribology.rubber_friction import (
+    GroschMasterCurve,
+    hysteresis_peak_speed,
+    loss_peak_frequency,
+)
 
 __all__ = ["RotaryModel", "RotaryResult", "friction_map", "housing_defaults", "lip_seal_friction",
            "lip_style", "simulate", "steady_state"]
@@ -61,6 +66,12 @@ OIL_EXPANSION = 7e-4
 FREE_CONVECTION_DELTA_T = 10.0
 #: Housing wall thickness for the default housing mass [m].
 HOUSING_WALL = 5e-3
+#: Heat transfer coefficient of a shaft end held at a node's temperature [W/(m² K)]: over the
+#: end face of an 80 mm shaft 50 W/K, ten times the axial conductance of 50 mm of shaft, so the
+#: end sits at the node's temperature.
+END_CONTACT = 1.0e4
+#: How long the temperatures must stay below duty.steady_rate before until_steady stops [s].
+STEADY_WINDOW = 60.0
 
 TIMESERIES_COLUMNS = ["time_s", "speed_rpm", "torque_Nm", "power_W", "T_contact_C",
                       "T_groove_C", "T_sump_C", "film_um", "F_lub_N", "F_material_N",
@@ -102,25 +113,35 @@ def lip_style(case: RotaryCase) -> LipStyle:
     if seal.lip_style == "plain":
         return LIP_STYLES["plain"]
     w = seal.wave
-    return LipStyle("wave", w.film_factor, w.track_amplitude, w.lip_heat_exchange_factor)
+    return wave_lip_style(seal.shaft_diameter, w.track_amplitude, w.waves, w.film_factor,
+                          w.lip_heat_exchange_factor)
+
+
+def lip_force_source(case: RotaryCase):
+    """The lip force F_tip(T) of a case: a callable of the lip temperature [K] -> [N]."""
+    seal = case.seal
+    return AnalyticLipForce(seal.radial_force, seal.radial_force_temperature, seal.spring_share,
+                            get_elastomer(seal.material), seal.hoop_prestrain,
+                            case.environment.shaft_expansion)
 
 
 def lip_seal_friction(case: RotaryCase) -> LipSealFriction:
-    """The friction model (seal + oil + elastomer + parameters) of a case."""
+    """The friction model (seal + oil + elastomer + lip force + parameters) of a case."""
     seal, fr = case.seal, case.friction
+    elastomer = get_elastomer(seal.material)
+    peak = fr.peak_speed_at_reference
+    if peak is None:
+        peak = float(hysteresis_peak_speed(fr.asperity_wavelength, loss_peak_frequency(elastomer)))
     return LipSealFriction(
         LipSealFrictionParameters(
             shaft_diameter=seal.shaft_diameter, contact_width=seal.contact_width,
-            radial_force=seal.radial_force, radial_force_temperature=seal.radial_force_temperature,
-            spring_share=seal.spring_share, film_coefficient=fr.film_coefficient_um * 1e-6,
+            film_coefficient=fr.film_coefficient_um * 1e-6,
             film_exponent=fr.film_exponent, film_floor=fr.film_floor,
             film_factor=lip_style(case).film_factor,
             roughness=math.hypot(seal.shaft_roughness, seal.lip_roughness),
-            rms_slope=seal.shaft_rms_slope, asperity_wavelength=fr.asperity_wavelength,
-            kappa=fr.persson_kappa,
-            master_curve=GroschMasterCurve(fr.mu_peak, fr.mu_low, fr.peak_speed_at_reference,
+            master_curve=GroschMasterCurve(fr.mu_peak, fr.mu_low, peak,
                                            fr.master_curve_width_decades)),
-        case.oil.build(), get_elastomer(seal.material))
+        case.oil.build(), elastomer, lip_force_source(case))
 
 
 @dataclass
@@ -147,8 +168,7 @@ class RotaryModel:
             env.shaft_length_oil_side, env.shaft_length_air_side, seal.spring_offset)
         self.grid = build_thermal_grid(self.section, shaft, rubber, case_steel,
                                        c.numerics.mesh_refinement)
-        self.start_temperature = (env.start_temperature if env.start_temperature is not None
-                                  else env.ambient_temperature)
+        self.start_temperature = start_temperature(env)
         outer, wetted, mass = housing_defaults(env.sump_volume)
         housing_area = env.housing_area if env.housing_area is not None else outer
         housing_mass = env.housing_mass if env.housing_mass is not None else mass
@@ -156,15 +176,19 @@ class RotaryModel:
         sump_capacity = float(env.sump_volume * self.oil.density(t0) * self.oil.specific_heat(t0))
         self.sump_fixed = env.sump_temperature is not None
         # air pocket: ρ·c_p of air (1.2 kg/m³ · 1007 J/(kg K)) times its volume
-        lumped = {"housing": housing_mass * STEEL_SPECIFIC_HEAT,
-                  "air_pocket": 1.2 * 1007.0 * self.grid.pocket_volume}
+        lumped = {"air_pocket": 1.2 * 1007.0 * self.grid.pocket_volume}
         fixed = ["ambient"]
+        if env.housing_temperature is not None:
+            fixed.append("housing")
+        else:
+            lumped = {"housing": housing_mass * STEEL_SPECIFIC_HEAT, **lumped}
         if self.sump_fixed:
             fixed.append("sump")
         else:
             lumped = {"sump": sump_capacity, **lumped}
+        air_end_node = "housing" if env.shaft_air_end == "housing" else "ambient"
         nodes = {"shaft_oil": "sump", "shaft_air": "ambient", "shaft_end_oil": "sump",
-                 "shaft_end_air": "ambient", "lip_oil": "sump", "seal_oil": "sump",
+                 "shaft_end_air": air_end_node, "lip_oil": "sump", "seal_oil": "sump",
                  "seal_air": "ambient", "seal_housing": "housing",
                  "shaft_pocket": "air_pocket", "seal_pocket": "air_pocket"}
         self.network = ThermalNetwork(self.grid.conduction, lumped, fixed,
@@ -182,9 +206,11 @@ class RotaryModel:
         Shaft in oil: Kays & Bjorklund rotating cylinder in oil at the sump temperature on the
         wetted fraction of the circumference, in gearbox air (at sump temperature) on the rest;
         shaft in air: rotating cylinder in ambient air; both never below free convection
-        (Churchill & Chu, ΔT = 10 K).  Shaft ends: semi-infinite fin, √(4·h·k/d).  Seal
-        surfaces: a fraction of the shaft's coefficient (``[thermal]``), the lip's oil side
-        times the lip style's heat exchange factor.
+        (Churchill & Chu, ΔT = 10 K).  Shaft ends (``environment.shaft_oil_end`` /
+        ``shaft_air_end``): held at the sump or housing temperature (:data:`END_CONTACT`), a
+        semi-infinite fin √(4·h·k/d) in oil or air, or insulated.  Seal surfaces: a fraction of
+        the shaft's coefficient (``[thermal]``), the lip's oil side times the lip style's heat
+        exchange factor.
         """
         env, th = self.case.environment, self.case.thermal
         d = self.case.seal.shaft_diameter
@@ -208,12 +234,13 @@ class RotaryModel:
         h_shaft_oil = phi * h_oil + (1.0 - phi) * h_air_at(ts)
         h_air = h_air_at(env.ambient_temperature)
         k_shaft = env.shaft_conductivity
+        ends = {"sump": END_CONTACT, "housing": END_CONTACT, "insulated": 0.0}
         return {
             "shaft_oil": h_shaft_oil,
             "shaft_air": h_air,
-            "shaft_end_oil": math.sqrt(4.0 * h_shaft_oil * k_shaft / d),
-            "shaft_end_air": (math.sqrt(4.0 * h_air * k_shaft / d)
-                              if env.shaft_air_end == "fin" else 0.0),
+            "shaft_end_oil": ends.get(env.shaft_oil_end,
+                                      math.sqrt(4.0 * h_shaft_oil * k_shaft / d)),
+            "shaft_end_air": ends.get(env.shaft_air_end, math.sqrt(4.0 * h_air * k_shaft / d)),
             "lip_oil": th.seal_oil_factor * h_shaft_oil * self.style.lip_heat_exchange_factor,
             "seal_oil": th.seal_oil_factor * h_shaft_oil,
             "seal_air": th.seal_air_factor * h_air,
@@ -234,7 +261,8 @@ class RotaryModel:
 
     def fixed_temperatures(self) -> np.ndarray:
         env = self.case.environment
-        values = {"ambient": env.ambient_temperature, "sump": env.sump_temperature}
+        values = {"ambient": env.ambient_temperature, "sump": env.sump_temperature,
+                  "housing": env.housing_temperature}
         return np.array([values[n] for n in self.network.fixed_names], dtype=float)
 
     def source(self, power: float) -> np.ndarray:
@@ -250,6 +278,19 @@ class RotaryModel:
         if self.sump_fixed:
             return float(self.case.environment.sump_temperature)
         return float(temperatures[self.network.node_index["sump"]])
+
+    def housing_temperature(self, temperatures: np.ndarray) -> float:
+        held = self.case.environment.housing_temperature
+        if held is not None:
+            return float(held)
+        return float(temperatures[self.network.node_index["housing"]])
+
+    def watched_temperatures(self, temperatures: np.ndarray) -> np.ndarray:
+        """Contact, spring groove, sump and housing temperatures [K] (steady-state check)."""
+        return np.array([self.contact_temperature(temperatures),
+                         temperatures[self.grid.groove_cell],
+                         self.sump_temperature(temperatures),
+                         self.housing_temperature(temperatures)])
 
 
 @dataclass
@@ -279,6 +320,12 @@ def _speed_profile(times, speeds, t):
 def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> RotaryResult:
     """Run the coupled transient simulation of a rotary lip seal case.
 
+    With ``duty.until_steady`` the last speed is held after the cycle until every temperature
+    (contact, spring groove, sump, housing) changes slower than ``duty.steady_rate`` for
+    :data:`STEADY_WINDOW`, at most until ``duty.max_duration``; the last step then ends there.
+    A run whose film leaves the measured range of lip seal films gets a note and one
+    :class:`~sealsim.tribology.film.FilmRangeWarning`.
+
     Parameters
     ----------
     case : RotaryCase
@@ -295,6 +342,8 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
     model = RotaryModel(case)
     times, speeds, steps = case.duty_cycle().profile(base_dir)
     end = float(times[-1])
+    extend = case.duty.until_steady
+    limit = max(float(case.duty.max_duration), end) if extend else end
     breaks = np.unique(times)
     num = case.numerics
     stepper = BackwardEulerStepper(model.network)
@@ -302,6 +351,7 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
     fixed = model.fixed_temperatures()
     capacity = model.network.capacity
     stored0 = capacity @ temps
+    watched = model.watched_temperatures
 
     rows: list[tuple] = []
     t = 0.0
@@ -312,10 +362,11 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
     service_max = model.elastomer.service_range[1]
     k_break = 1
     last_report = -1.0
-    while t < end - 1e-9:
+    calm_since, steady = None, False
+    while t < end - 1e-9 or (extend and not steady and t < limit - 1e-9):
         while k_break < len(breaks) and breaks[k_break] <= t + 1e-9:
             k_break += 1
-        t_next_break = breaks[k_break] if k_break < len(breaks) else end
+        t_next_break = breaks[k_break] if k_break < len(breaks) else limit
         ramping = abs(_speed_profile(times, speeds, t_next_break - 1e-9)
                       - _speed_profile(times, speeds, t + 1e-9)) > 1e-9
         h = min(dt, t_next_break - t)
@@ -334,6 +385,7 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
                              f"{t_contact - CELSIUS_0:.1f} degC): {exc}") from None
         power = float(state.power)
         key = (round(math.log1p(abs(omega)) / 0.02), round(t_sump / 2.0))
+        before = watched(temps)
         temps, heat_out = stepper.step(temps, h, model.source(power), fixed, key,
                                        lambda o=omega, s=t_sump: model.assemble(o, s))
         if not np.all(np.isfinite(temps)):
@@ -343,15 +395,26 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
         t_contact = model.contact_temperature(temps)
         rows.append(_row(model, state, t1, omega, temps, t_contact))
         t = t1
+        if extend and t >= end - 1e-9:
+            calm = float(np.max(np.abs(watched(temps) - before))) / h < case.duty.steady_rate
+            calm_since = (t - h if calm_since is None else calm_since) if calm else None
+            steady = calm_since is not None and t - calm_since >= STEADY_WINDOW
         at_break = abs(t - t_next_break) < 1e-9
         jump = at_break and abs(_speed_profile(times, speeds, t + 1e-9)
                                 - _speed_profile(times, speeds, t - 1e-9)) > 1e-9
         dt = num.min_time_step if jump else min(max(dt, h) * 1.5, num.max_time_step)
         if progress is not None and t - last_report >= end / 100:
-            progress(t, end)
+            progress(t, max(end, t))
             last_report = t
     if progress is not None:
-        progress(end, end)
+        progress(t, t)
+    if extend:
+        steps = [*steps[:-1], (steps[-1][0], t)]
+        notes.append(f"held {omega * 30 / math.pi:.0f} rpm for {(t - end) / 60:.1f} min after "
+                     f"the cycle: " + (
+                         f"steady (all temperatures change < "
+                         f"{case.duty.steady_rate * 60:g} K/min)" if steady else
+                         f"NOT steady by duty.max_duration = {limit:g} s"))
 
     frame = pd.DataFrame(rows, columns=TIMESERIES_COLUMNS)
     frame = pd.concat([pd.DataFrame([_row(model, model.friction.evaluate(
@@ -366,6 +429,12 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
         notes.append(f"contact temperature reached {frame['T_contact_C'].max():.0f} degC, above "
                      f"the service limit of {model.elastomer.name} "
                      f"({service_max - CELSIUS_0:.0f} degC)")
+    sliding = frame.loc[frame["speed_rpm"] != 0, "film_um"]
+    if len(sliding):
+        film = film_range_note(sliding.min() * 1e-6, sliding.max() * 1e-6)
+        if film:
+            notes.append(film)
+            warnings.warn(film, FilmRangeWarning, stacklevel=2)
     result = RotaryResult(case, frame, _step_summary(frame, steps, speeds, times), energy, notes,
                           {"time_steps": len(rows), "factorisations": stepper.factorisations,
                            "thermal_nodes": model.network.n_cells})
@@ -381,7 +450,7 @@ def _row(model: RotaryModel, state: FrictionState, t, omega, temps, t_contact) -
             float(temps[model.grid.groove_cell]) - CELSIUS_0,
             model.sump_temperature(temps) - CELSIUS_0, float(state.film) * 1e6,
             float(state.force_lubricant), float(state.force_material),
-            float(temps[model.network.node_index["housing"]]) - CELSIUS_0, lip_force, mu_eff,
+            model.housing_temperature(temps) - CELSIUS_0, lip_force, mu_eff,
             float(state.film_ratio), g)
 
 
@@ -432,8 +501,10 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-4,
     Returns
     -------
     dict
-        torque_Nm, power_W, T_contact_C, T_groove_C, T_sump_C, film_um, F_lub_N,
-        F_material_N, iterations.
+        torque_Nm, power_W, T_contact_C, T_groove_C, T_sump_C, T_housing_C, film_um, F_lub_N,
+        F_material_N, lip_force_N, mu_dry, asperity_share, iterations.  A film outside the
+        measured range of lip seal films gives a
+        :class:`~sealsim.tribology.film.FilmRangeWarning`.
     """
     model = RotaryModel(case)
     fixed = model.fixed_temperatures()
@@ -442,9 +513,13 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-4,
     for iteration in range(1, max_iter + 1):
         k, f = model.assemble(angular_speed, t_sump)
         lu = factorise(k.tocsc())
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore", (ServiceRangeWarning, OilRangeWarning))
-            state = model.friction.evaluate(angular_speed, t_contact)
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", (ServiceRangeWarning, OilRangeWarning))
+                state = model.friction.evaluate(angular_speed, t_contact)
+        except InputError as exc:
+            raise ModelError(f"steady state at {angular_speed * 30 / math.pi:.0f} rpm: contact "
+                             f"temperature {t_contact - CELSIUS_0:.1f} degC: {exc}") from None
         temps = lu.solve(f @ fixed + model.source(float(state.power)))
         new_contact = model.contact_temperature(temps)
         new_sump = model.sump_temperature(temps)
@@ -457,12 +532,17 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-4,
     else:
         raise ModelError(f"steady state at {angular_speed * 30 / math.pi:.0f} rpm did not "
                          f"converge in {max_iter} iterations")
+    film = float(state.film)
+    if angular_speed != 0 and film_range_note(film, film):
+        warnings.warn(film_range_note(film, film), FilmRangeWarning, stacklevel=2)
     return {"torque_Nm": float(state.torque), "power_W": float(state.power),
             "T_contact_C": t_contact - CELSIUS_0,
             "T_groove_C": float(temps[model.grid.groove_cell]) - CELSIUS_0,
-            "T_sump_C": t_sump - CELSIUS_0, "film_um": float(state.film) * 1e6,
+            "T_sump_C": t_sump - CELSIUS_0,
+            "T_housing_C": model.housing_temperature(temps) - CELSIUS_0, "film_um": film * 1e6,
             "F_lub_N": float(state.force_lubricant), "F_material_N": float(state.force_material),
-            "iterations": iteration}
+            "lip_force_N": float(state.lip_force), "mu_dry": float(state.mu_dry),
+            "asperity_share": float(state.asperity_share), "iterations": iteration}
 
 
 def friction_map(case: RotaryCase, speeds_rpm, temperatures_c) -> pd.DataFrame:
@@ -483,7 +563,7 @@ def friction_map(case: RotaryCase, speeds_rpm, temperatures_c) -> pd.DataFrame:
     -------
     pandas.DataFrame
         One row per grid point: speed_rpm, T_contact_C, torque_Nm, power_W, film_um,
-        F_lub_N, F_material_N, mu_eff, duty_parameter.
+        F_lub_N, F_material_N, mu_dry, asperity_share, mu_eff, duty_parameter.
     """
     friction = lip_seal_friction(case)
     n, t = np.meshgrid(np.asarray(speeds_rpm, float), np.asarray(temperatures_c, float))
@@ -494,6 +574,7 @@ def friction_map(case: RotaryCase, speeds_rpm, temperatures_c) -> pd.DataFrame:
     return pd.DataFrame({
         "speed_rpm": n.ravel(), "T_contact_C": t.ravel(), "torque_Nm": state.torque,
         "power_W": state.power, "film_um": state.film * 1e6, "F_lub_N": state.force_lubricant,
-        "F_material_N": state.force_material,
+        "F_material_N": state.force_material, "mu_dry": state.mu_dry,
+        "asperity_share": state.asperity_share,
         "mu_eff": np.abs(state.torque) * 2 / case.seal.shaft_diameter / state.lip_force,
         "duty_parameter": friction.duty_parameter(state, omega)})

@@ -89,7 +89,7 @@ def write_results(folder: ResultFolder, results: dict[str, RotaryResult], source
         header=f"Resolved case written by sealsim {__version__} (all defaults filled in).\n"
                f"Source: {source}"))
     for name, r in results.items():
-        title = f"{r.case.title} -- {name}" if r.case.title else name
+        title = f"Variant '{name}'" + (f"\n{r.case.title}" if r.case.title else "")
         folder.savefig(f"cycle_{name}.png",
                        cycle_figure(r.timeseries, r.case.seal.shaft_diameter / 2, title))
     folder.savefig("variants.png", variants_figure(frames, first.title))

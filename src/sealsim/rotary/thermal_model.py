@@ -9,7 +9,7 @@ Geometry (z = 0 at the contact line, oil side at z < 0, r radial)::
       r = R+h_l   ╲  lip head   (spring groove probe at z = R-value)
       r = R        ╲▁▁▁▁ contact band (heat source q = T·ω) ▁▁▁╱
       ════════════════════════ shaft (steel) ══════════════════════════════
-       z_min (oil, fin to sump)                       z_max (air, fin to ambient)
+       z_min (oil-side shaft end)                     z_max (air-side shaft end)
 
 The seal proportions follow a DIN 3760 type A cross-section (lip head 0.2·section + 0.5 mm
 high, up to the spring groove bottom; flex membrane at the air-side heel, oil-side lip angle 45°, air-side 25°,
@@ -17,9 +17,9 @@ steel case); they only shape the conduction paths, the friction does not depend 
 Void cells connected to the oil-side end are oil, the others air.  Boundary faces are grouped:
 
 * ``shaft_oil``, ``shaft_air``: shaft surface in oil (sump node) / in air (ambient);
-* ``shaft_end_oil``, ``shaft_end_air``: the shaft continues beyond the model; its ends carry
-  the exact boundary condition of a semi-infinite fin, h_end = √(4·h·k/d) (fin conductance
-  √(h·P·k·A) per end area);
+* ``shaft_end_oil``, ``shaft_end_air``: where the modelled shaft ends; the environment's
+  set-up decides what lies beyond (held at the sump or housing temperature, a semi-infinite
+  fin with h_end = √(4·h·k/d), i.e. the fin conductance √(h·P·k·A) per end area, or nothing);
 * ``lip_oil``, ``seal_oil``: seal surfaces wetted by oil (lip head / rest of the seal);
 * ``seal_air``: seal surfaces in open air; ``seal_housing``: the seal's outer diameter pressed
   into the housing bore (housing node);
@@ -57,8 +57,7 @@ class SealSection:
         Axial width of the band that receives the frictional heat (contact width, plus twice
         the track amplitude of a wave lip).
     shaft_length_oil, shaft_length_air : float
-        Modelled shaft length on each side of the contact; beyond them the shaft is a
-        semi-infinite fin.
+        Modelled shaft length on each side of the contact [m].
     spring_offset : float
         Axial position of the garter spring plane ("R value", air side positive).
     """

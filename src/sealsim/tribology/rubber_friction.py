@@ -3,19 +3,24 @@
 Grosch (Proc. R. Soc. A 274 (1963) 21) measured the friction of rubbers on glass and silicon
 carbide over wide ranges of speed and temperature and showed that all curves collapse onto one
 master curve against log10(a_T·v), with a_T the WLF shift factor of the rubber: friction is a
-viscoelastic loss process.  On smooth counterfaces the curve is a bell in log(a_T·v) whose peak
-lies at the speed v_max ≈ λ·f_max, where f_max is the frequency of the loss-modulus peak and
-λ ≈ 6 nm (the adhesion length Grosch found); on rough surfaces a second, hysteresis peak appears
-at v ≈ (asperity spacing)·f_max.
+viscoelastic loss process.  Each curve is a bell in log(a_T·v) whose peak lies where the
+sliding excites the rubber at the frequency f_max of its loss peak, v_max = λ·f_max.  On smooth
+glass λ ≈ 6 nm (adhesion); on rough silicon carbide λ is of the order of the asperity spacing
+(≈ 0.15 mm) and the peak is the hysteresis peak of the rubber deformed by the asperities.
 
-sealsim represents the curve by a Gaussian bell in log10 of the reduced speed,
+In an oil-wetted lip contact the adsorbed oil suppresses adhesion; what remains is the
+hysteresis of the lip rubber dynamically deformed by the shaft's asperities (Organisciak et al.'s
+"viscoelastic losses").  sealsim therefore places the peak at the hysteresis speed
+:func:`hysteresis_peak_speed`, v_max = λ·f_max with λ the shaft's asperity wavelength, and
+represents the curve by a Gaussian bell in log10 of the reduced speed,
 
     μ(v, T) = μ_low + (μ_peak − μ_low)·exp(−½·[log10(a_T·v / v_peak,ref) / w]²),   (1)
 
 where v_peak,ref = λ·f_max,ref is the peak speed at the WLF reference temperature, w the
-half-width in decades and μ_low the friction far from the peak.  The defaults describe the
-adhesion peak of a nitrile-type rubber on a ground steel shaft in a boundary-lubricated contact
-(see :data:`DEFAULT_MASTER_CURVE`).
+half-width in decades and μ_low the boundary-lubricated friction far from the peak.  With the
+catalogue elastomers the hysteresis peak lies at tens of m/s at room temperature and moves to
+higher speeds as the rubber warms (a_T falls), so at lip seal speeds μ falls with temperature:
+the feedback of friction on the contact temperature is stabilising.
 """
 
 from __future__ import annotations
@@ -24,10 +29,69 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["DEFAULT_MASTER_CURVE", "GroschMasterCurve", "grosch_friction_coefficient"]
+__all__ = ["DEFAULT_MASTER_CURVE", "GroschMasterCurve", "grosch_friction_coefficient",
+           "hysteresis_peak_speed", "loss_peak_frequency"]
 
-#: Grosch's ratio of peak sliding speed to loss-peak frequency, λ ≈ 6 nm.
+#: Grosch's ratio of adhesion-peak speed to loss-peak frequency on smooth glass, λ ≈ 6 nm.
 GROSCH_ADHESION_LENGTH = 6e-9  # m
+#: Asperity wavelength of a ground shaft that the lip rubber is excited by [m]: 50 µm, the
+#: spacing of grinding marks of Ra 0.2-0.8 µm shafts (Grosch's silicon carbide track, a coarser
+#: surface: ≈ 0.15 mm).
+DEFAULT_ASPERITY_WAVELENGTH = 50e-6
+#: Loss-peak frequency of the catalogue elastomers at their WLF reference temperature [Hz]
+#: (the inflection of their storage-modulus master curve, 10^-2 Hz).
+CATALOGUE_LOSS_PEAK_FREQUENCY = 0.01
+
+
+def loss_peak_frequency(elastomer) -> float:
+    """Loss-peak frequency f_max of an elastomer at its WLF reference temperature [Hz].
+
+    The inflection of its storage-modulus master curve (``transition_location``, log10 Hz): by
+    the Kramers–Kronig approximation tan δ ≈ (π/2)·d ln E′/d ln f (Booij & Thoone, Rheol. Acta
+    21 (1982) 15) the loss tangent peaks where E′ rises fastest.
+
+    Parameters
+    ----------
+    elastomer : sealsim.properties.elastomers.Elastomer
+        The rubber.
+
+    Returns
+    -------
+    float
+        f_max [Hz].
+
+    Examples
+    --------
+    >>> from sealsim.properties.elastomers import get_elastomer
+    >>> loss_peak_frequency(get_elastomer("NBR"))
+    0.01
+    """
+    return float(10.0 ** elastomer.transition_location)
+
+
+def hysteresis_peak_speed(asperity_wavelength, loss_peak_frequency):
+    """Speed of the hysteresis friction peak, v_max = λ·f_max (Grosch 1963).
+
+    Parameters
+    ----------
+    asperity_wavelength : array_like
+        Wavelength λ of the counterface roughness that deforms the rubber [m].
+    loss_peak_frequency : array_like
+        Frequency of the rubber's loss peak f_max at the reference temperature of the shift
+        factor [Hz].
+
+    Returns
+    -------
+    numpy.ndarray
+        v_max at that reference temperature [m/s].
+
+    Examples
+    --------
+    >>> float(hysteresis_peak_speed(50e-6, 0.01))
+    5e-07
+    """
+    return np.asarray(asperity_wavelength, dtype=float) * np.asarray(loss_peak_frequency,
+                                                                      dtype=float)
 
 
 @dataclass(frozen=True)
@@ -54,18 +118,21 @@ class GroschMasterCurve:
 
 #: Default master curve for the ``μ_dry`` of seed 000 Eq. 3 (reasoning, not a fit):
 #:
-#: * μ_peak = 1.0, μ_low = 0.3: NBR on smooth dry steel ≈ 0.6--1.0, boundary-lubricated
-#:   rubber 0.1--0.3 (reference notes §4, §6.3);
-#: * peak speed λ·f_max at the WLF reference temperature Tg: λ = 6 nm (Grosch) and a loss peak
-#:   at 0.01 Hz at the calorimetric Tg (a relaxation time of ≈ 100 s defines the DSC glass
-#:   transition, Ferry, *Viscoelastic Properties of Polymers*, 1980).  With universal WLF
-#:   constants this puts the peak of an NBR (Tg −25 °C) at ≈ 1--2 cm/s at 20 °C, the order of
-#:   Grosch's measured adhesion peaks at room temperature;
-#: * a width of 1.5 decades: Grosch's curves fall from the peak to about a third over
-#:   2--3 decades.
+#: * μ_peak = 1.0: the hysteresis peak of nitrile rubber on a rough track, the lower end of the
+#:   1-1.5 Grosch (1963) found on silicon carbide, the oil removing adhesion;
+#: * μ_low = 0.2: boundary-lubricated rubber on steel far from the peak, the middle of
+#:   0.1-0.3 (handbook range);
+#: * peak at λ·f_max = 50 µm × 0.01 Hz at the WLF reference temperature (Tg for the
+#:   catalogue): a catalogue NBR peaks at about 70 m/s at 20 °C and 2e5 m/s at 80 °C, so lip
+#:   seal speeds lie on the rubbery flank, where μ falls as the rubber warms;
+#: * a width of 2 decades: a hysteresis peak is broader than the adhesion peak, about as
+#:   broad as the loss peak of a filled rubber widened by the spread of roughness wavelengths
+#:   (an assumption: a full width at half maximum of about 5 decades).
 DEFAULT_MASTER_CURVE = GroschMasterCurve(
-    mu_peak=1.0, mu_low=0.3, peak_speed_reference=GROSCH_ADHESION_LENGTH * 0.01,
-    width_decades=1.5)
+    mu_peak=1.0, mu_low=0.2,
+    peak_speed_reference=float(hysteresis_peak_speed(DEFAULT_ASPERITY_WAVELENGTH,
+                                                     CATALOGUE_LOSS_PEAK_FREQUENCY)),
+    width_decades=2.0)
 
 
 def grosch_friction_coefficient(speed, log10_shift_factor, curve=DEFAULT_MASTER_CURVE):
@@ -88,11 +155,11 @@ def grosch_friction_coefficient(speed, log10_shift_factor, curve=DEFAULT_MASTER_
 
     Examples
     --------
-    >>> # NBR at 20 °C (log10 a_T = -8.1 with universal WLF at Tg = -25 °C)
-    >>> round(float(grosch_friction_coefficient(0.01, -8.1)), 2)
-    1.0
-    >>> round(float(grosch_friction_coefficient(10.0, -8.1)), 2)
-    0.38
+    >>> # NBR at 20 °C and 80 °C (log10 a_T = -8.1, -11.7 with universal WLF at Tg = -25 °C)
+    >>> round(float(grosch_friction_coefficient(4.0, -8.1)), 2)
+    0.87
+    >>> round(float(grosch_friction_coefficient(4.0, -11.7)), 2)
+    0.25
     """
     v = np.abs(np.asarray(speed, dtype=float))
     with np.errstate(divide="ignore"):
