@@ -20,7 +20,7 @@ point: :func:`sealsim.lip_seal_torque`.
 >>> from sealsim.rotary import RotaryCase, steady_state
 >>> case = RotaryCase(seal={"shaft_diameter": 0.06}, environment={"sump_temperature": 343.15})
 >>> round(steady_state(case, 157.08)["torque_Nm"], 3)
-0.214
+0.187
 """
 
 import importlib

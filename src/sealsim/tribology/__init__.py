@@ -3,8 +3,10 @@
 * :mod:`.film` -- EHL film thickness h = f·(η·u)^0.66 of a soft lip (Organisciak et al.,
   AGMA 14FTM14, Eq. 5) and the film ratio Λ = h/σ;
 * :mod:`.shear` -- Couette shear of the film and the duty parameter G = η·ω·b/F';
-* :mod:`.contact` -- real contact area of rubber on a rough shaft (Persson 2001), reduced by
-  the film (Greenwood & Williamson 1966), Hertz line contact;
+* :mod:`.film` also scales the film with the lip load and modulus (soft EHL, Hamrock & Dowson)
+  and says when a run leaves the film range the law was measured in;
+* :mod:`.contact` -- share of the lip load carried by the shaft's asperities across the film
+  (Greenwood & Williamson 1966), Hertz line contact;
 * :mod:`.rubber_friction` -- Grosch's master curve of rubber friction over the WLF-shifted
   sliding speed (:class:`GroschMasterCurve`).
 
@@ -16,28 +18,30 @@ The rotary lip seal model (:mod:`sealsim.rotary.friction`) composes them.
 """
 
 from sealsim.tribology.contact import (
-    PERSSON_KAPPA,
-    contact_modulus,
-    dry_contact_area_fraction,
-    greenwood_williamson_f1,
+    asperity_load_share,
+    greenwood_williamson_integral,
     hertz_line_half_width,
-    mixed_lubrication_factor,
-    real_contact_area_fraction,
 )
 from sealsim.tribology.film import (
     EHL_EXPONENT,
     FILM_FLOOR,
+    MEASURED_FILM_RANGE,
     SKF_FIT_COEFFICIENT,
     SKF_FIT_EXPONENT,
     SKF_FIT_RANGE,
+    FilmRangeWarning,
     film_coefficient_matching_fit,
+    film_range_note,
     film_ratio,
     film_thickness,
+    soft_ehl_load_modulus_factor,
 )
 from sealsim.tribology.rubber_friction import (
     DEFAULT_MASTER_CURVE,
     GroschMasterCurve,
     grosch_friction_coefficient,
+    hysteresis_peak_speed,
+    loss_peak_frequency,
 )
 from sealsim.tribology.shear import duty_parameter, viscous_friction_force
 
@@ -45,21 +49,21 @@ __all__ = [
     "DEFAULT_MASTER_CURVE",
     "EHL_EXPONENT",
     "FILM_FLOOR",
-    "PERSSON_KAPPA",
+    "MEASURED_FILM_RANGE",
     "SKF_FIT_COEFFICIENT",
     "SKF_FIT_EXPONENT",
     "SKF_FIT_RANGE",
+    "FilmRangeWarning",
     "GroschMasterCurve",
-    "contact_modulus",
-    "dry_contact_area_fraction",
-    "duty_parameter",
+    "asperity_load_share",
     "film_coefficient_matching_fit",
+    "film_range_note",
     "film_ratio",
     "film_thickness",
-    "greenwood_williamson_f1",
+    "greenwood_williamson_integral",
     "grosch_friction_coefficient",
     "hertz_line_half_width",
-    "mixed_lubrication_factor",
-    "real_contact_area_fraction",
-    "viscous_friction_force",
+    "hysteresis_peak_speed",
+    "loss_peak_frequency",
+    "soft_ehl_load_modulus_factor",
 ]
