@@ -19,6 +19,7 @@ reference solution (``spsolve``) to round-off.
 
 from __future__ import annotations
 
+import functools
 import hashlib
 import warnings
 from collections import OrderedDict
@@ -33,11 +34,6 @@ from sealsim.errors import ConvergenceError
 from sealsim.structure.model import LoadState, SealModel
 
 __all__ = ["LINEAR_SOLVERS", "LinearSolver", "LoadStep", "describe_state", "solve"]
-
-try:  # pragma: no cover - depends on the environment
-    import pypardiso
-except (ImportError, OSError):  # pragma: no cover - not installed or MKL missing
-    pypardiso = None
 
 LINEAR_SOLVERS = ("auto", "pardiso", "superlu", "reference")
 """Backends of :class:`LinearSolver`: ``auto`` (PARDISO if installed, else SuperLU), ``pardiso``,
@@ -114,10 +110,10 @@ class LinearSolver:
     def __init__(self, backend: str = "auto", max_patterns: int = 4):
         if backend not in LINEAR_SOLVERS:
             raise ValueError(f"linear solver {backend!r}: choose one of {LINEAR_SOLVERS}")
-        if backend == "pardiso" and pypardiso is None:
+        if backend == "pardiso" and _pypardiso() is None:
             raise ImportError("linear solver 'pardiso' needs pypardiso (pip install pypardiso)")
         if backend == "auto":
-            backend = "pardiso" if pypardiso is not None else "superlu"
+            backend = "pardiso" if _pypardiso() is not None else "superlu"
         self.backend = backend
         self.max_patterns = int(max_patterns)
         self._pardiso: OrderedDict = OrderedDict()
@@ -143,6 +139,7 @@ class LinearSolver:
         key = (A.shape[0], hashlib.sha1(A.indptr).hexdigest(),
                hashlib.sha1(A.indices).hexdigest())
         solver = self._pardiso.get(key)
+        pypardiso = _pypardiso()
         try:
             if solver is None:
                 solver = pypardiso.PyPardisoSolver(mtype=11)  # real, non-symmetric
@@ -166,6 +163,16 @@ class LinearSolver:
         """Free the PARDISO memory of all kept analyses."""
         while self._pardiso:
             self._pardiso.popitem()[1].free_memory(everything=True)
+
+
+@functools.lru_cache(maxsize=1)
+def _pypardiso():
+    """The pypardiso module, or None (imported on first use: it loads Intel MKL)."""
+    try:
+        import pypardiso
+    except (ImportError, OSError):  # not installed, or the MKL library is missing
+        return None
+    return pypardiso
 
 
 def describe_state(state: LoadState) -> str:
