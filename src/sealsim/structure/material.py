@@ -47,6 +47,7 @@ References
 from __future__ import annotations
 
 import math
+import os
 import warnings
 from dataclasses import dataclass, field
 
@@ -301,6 +302,10 @@ def _mr_tangent_points(F, c10, c01, out):
 
 
 HAVE_COMPILED_TANGENT = numba is not None
+#: Use the compiled kernels when a umat is not told otherwise: numba installed and the
+#: environment variable ``SEALSIM_FE_COMPILED`` not "0" (benchmarks set False for their
+#: baseline, the einsum reference).
+USE_COMPILED = HAVE_COMPILED_TANGENT and os.environ.get("SEALSIM_FE_COMPILED", "1") != "0"
 if HAVE_COMPILED_TANGENT:  # pragma: no branch
     _point_kinematics = numba.njit(cache=True)(_point_kinematics)
     _point_FC = numba.njit(cache=True)(_point_FC)
@@ -319,11 +324,11 @@ def _flat_out(out, shape):
 def mr_stress(F, c10, c01, compiled=None, out=None):
     """First Piola–Kirchhoff stress (3, 3, ...) of the isochoric Mooney–Rivlin energy.
 
-    ``compiled`` (default: when numba is installed) runs the point-by-point kernel, writing
-    into ``out`` if it fits; otherwise the einsum reference :func:`_mr_stress`. Both agree to
+    ``compiled`` (default :data:`USE_COMPILED`) runs the point-by-point kernel, writing into
+    ``out`` if it fits; otherwise the einsum reference :func:`_mr_stress`. Both agree to
     round-off (tests: 1e-12).
     """
-    if not (HAVE_COMPILED_TANGENT if compiled is None else compiled):
+    if not (USE_COMPILED if compiled is None else compiled):
         return _mr_stress(F, c10, c01)
     shape = F.shape[2:]
     flat = np.ascontiguousarray(F, dtype=float).reshape(3, 3, -1)
@@ -333,7 +338,7 @@ def mr_stress(F, c10, c01, compiled=None, out=None):
 
 def mr_tangent(F, c10, c01, compiled=None, out=None):
     """dP/dF (3, 3, 3, 3, ...) of the isochoric Mooney–Rivlin energy (see :func:`mr_stress`)."""
-    if not (HAVE_COMPILED_TANGENT if compiled is None else compiled):
+    if not (USE_COMPILED if compiled is None else compiled):
         return _mr_tangent(F, c10, c01)
     shape = F.shape[2:]
     flat = np.ascontiguousarray(F, dtype=float).reshape(3, 3, -1)
@@ -353,7 +358,7 @@ class MooneyRivlinIsochoric:
     c10, c01 : float
         Mooney–Rivlin constants [Pa].
     compiled : bool, optional
-        Use the compiled kernels (default: when numba is installed) or the einsum reference.
+        Use the compiled kernels or the einsum reference (default :data:`USE_COMPILED`).
 
     Examples
     --------

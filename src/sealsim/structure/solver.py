@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import functools
 import hashlib
+import os
 import warnings
 from collections import OrderedDict
 from collections.abc import Callable
@@ -33,12 +34,19 @@ from scipy.sparse.linalg import splu, spsolve
 from sealsim.errors import ConvergenceError
 from sealsim.structure.model import LoadState, SealModel
 
-__all__ = ["LINEAR_SOLVERS", "LinearSolver", "LoadStep", "describe_state", "solve"]
+__all__ = ["DEFAULT_LINEAR_SOLVER", "LINEAR_SOLVERS", "LinearSolver", "LoadStep",
+           "describe_state", "solve"]
 
 LINEAR_SOLVERS = ("auto", "pardiso", "superlu", "reference")
 """Backends of :class:`LinearSolver`: ``auto`` (PARDISO if installed, else SuperLU), ``pardiso``,
 ``superlu`` and ``reference`` (scipy ``spsolve`` with its default ordering, the implementation
 the others are tested against)."""
+
+#: Backend used when :func:`solve` is not told one: the environment variable
+#: ``SEALSIM_FE_LINEAR_SOLVER`` (one of :data:`LINEAR_SOLVERS`, read at import, so that map
+#: worker processes see it too), else ``"auto"``. Benchmarks set ``"reference"`` for their
+#: baseline.
+DEFAULT_LINEAR_SOLVER = os.environ.get("SEALSIM_FE_LINEAR_SOLVER", "auto")
 
 
 @dataclass(frozen=True)
@@ -247,7 +255,7 @@ def _increment(model: SealModel, target: LoadState, tol, maxiter, linear):
 
 def solve(model: SealModel, steps: list[LoadStep], *,
           on_state: Callable | None = None, tol: float = 1e-8, maxiter: int = 25,
-          max_cutbacks: int = 8, linear_solver: str = "auto") -> list:
+          max_cutbacks: int = 8, linear_solver: str | None = None) -> list:
     """Drive ``model`` through ``steps``; return the recorded results.
 
     Parameters
@@ -267,8 +275,8 @@ def solve(model: SealModel, steps: list[LoadStep], *,
     max_cutbacks : int
         An increment is halved at most this many times in a row (smallest increment
         ``0.5 ** max_cutbacks`` of the step's increment).
-    linear_solver : str
-        Backend of :class:`LinearSolver` (default ``"auto"``).
+    linear_solver : str, optional
+        Backend of :class:`LinearSolver` (default :data:`DEFAULT_LINEAR_SOLVER`).
 
     Returns
     -------
@@ -283,7 +291,7 @@ def solve(model: SealModel, steps: list[LoadStep], *,
     if on_state is None:
         from sealsim.structure.results import extract as on_state
     records = []
-    linear = LinearSolver(linear_solver)
+    linear = LinearSolver(linear_solver or DEFAULT_LINEAR_SOLVER)
     try:
         _solve_steps(model, steps, on_state, tol, maxiter, max_cutbacks, linear, records)
     finally:
