@@ -902,7 +902,9 @@ SIMHA_BOYER_K2 = 0.164
 GLASSY_EXPANSION_RATIO = 1.0 - SIMHA_BOYER_K1 / SIMHA_BOYER_K2
 
 
-def entropic_modulus(modulus: Any, temperature: Any, reference_temperature: Any) -> np.ndarray | float:
+def entropic_modulus(
+    modulus: Any, temperature: Any, reference_temperature: Any
+) -> np.ndarray | float:
     r"""Equilibrium modulus of rubber elasticity at temperature T: E(T) = E_0·T/T_0.
 
     A network of flexible chains stores elastic energy as configurational entropy, so its

@@ -74,7 +74,7 @@ __all__ = [
 
 def thermal_volume_ratio(temperature, reference_temperature, expansion, glassy_expansion=None,
                          fictive_temperature=None):
-    r"""Stress-free volume ratio of free thermal expansion, :math:`J_{th} = (1 + \varepsilon_{th})^3`.
+    r"""Stress-free volume ratio of free thermal expansion, :math:`(1 + \varepsilon_{th})^3`.
 
     ε_th = α ΔT in the rubber; with a glassy coefficient and a fictive temperature T_f the
     strain of :func:`sealsim.properties.elastomers.thermal_strain`,
@@ -722,14 +722,14 @@ def material_from_elastomer(elastomer, model: str = "hyperelastic", *,
             raise InputError(f"material.temperature_scaling: {temperature_scaling!r} is not "
                              "allowed; choose 'entropic', 'modulus' or 'none'")
 
-        def ratio(T):
+        def stiffness(T):
             return e.modulus_ratio(T, scaling=temperature_scaling, frequency=frequency)
 
         def c10(T):
-            return e.c10 * ratio(T)
+            return e.c10 * stiffness(T)
 
         def c01(T):
-            return e.c01 * ratio(T)
+            return e.c01 * stiffness(T)
 
         return HyperelasticSealMaterial(c10, c01, e.bulk_modulus, e.thermal_expansion,
                                         reference_temperature, name=e.name)
