@@ -668,12 +668,6 @@ def test_glassy_expansion_field_and_validation():
         pytest.approx(GLASSY_EXPANSION_RATIO * 2.5e-4)
     with pytest.raises(InputError, match="glassy_thermal_expansion"):
         dataclasses.replace(nbr, glassy_thermal_expansion=3e-4)  # more than the rubber
-    d = {"glass_transition_C": -30, "density_kg_m3": 1250, "thermal_conductivity_W_mK": 0.25,
-         "specific_heat_J_kgK": 1700, "thermal_expansion_per_K": 2e-4,
-         "glassy_thermal_expansion_per_K": 0.7e-4, "c10_MPa": 1.0, "c01_MPa": 0.25,
-         "bulk_modulus_MPa": 2000, "service_min_C": -40, "service_max_C": 100,
-         "modulus": {"glassy_MPa": 2000, "rubbery_MPa": 2.7}}
-    assert Elastomer.from_dict(d, name="x").glassy_expansion == 0.7e-4
     with pytest.raises(InputError, match="has no Prony series"):
         get_elastomer("FKM").fictive_temperature([0.0, 1.0], [300.0, 299.0])
 

@@ -2015,7 +2015,6 @@ _TOP_KEYS: dict[str, tuple[str, tuple, bool]] = {
     "thermal_conductivity_W_mK": ("thermal_conductivity", _ID, True),
     "specific_heat_J_kgK": ("specific_heat", _ID, True),
     "thermal_expansion_per_K": ("thermal_expansion", _ID, True),
-    "glassy_thermal_expansion_per_K": ("glassy_thermal_expansion", _ID, False),
     "c10_MPa": ("c10", _MPA, True),
     "c01_MPa": ("c01", _MPA, True),
     "bulk_modulus_MPa": ("bulk_modulus", _MPA, True),

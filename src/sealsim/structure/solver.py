@@ -126,11 +126,9 @@ class LinearSolver:
         self.max_patterns = int(max_patterns)
         self._pardiso: OrderedDict = OrderedDict()
         self.analyses = 0  # symbolic analyses run (PARDISO)
-        self.factorisations = 0
 
     def __call__(self, A, b):
         b = np.asarray(b, dtype=float).ravel()
-        self.factorisations += 1
         if self.backend == "reference":
             return spsolve(A, b)
         if self.backend == "superlu":
