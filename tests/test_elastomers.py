@@ -656,18 +656,13 @@ def test_expansion_jump_of_nbr_matches_wlf_free_volume():
     assert 0.7 <= jump / alpha_f <= 1.0
 
 
-def test_glassy_expansion_field_and_validation():
+def test_glassy_expansion_follows_the_rubbery_one():
     nbr = get_elastomer("NBR")
-    assert nbr.glassy_thermal_expansion is None  # catalogue: the Simha–Boyer default
     assert nbr.glassy_expansion == pytest.approx(GLASSY_EXPANSION_RATIO * nbr.thermal_expansion,
                                                  rel=1e-14)
-    own = dataclasses.replace(nbr, glassy_thermal_expansion=0.8e-4)
-    assert own.glassy_expansion == 0.8e-4
-    # overriding the rubbery value moves the default glassy value with it
+    # overriding the rubbery value moves the glassy value with it
     assert dataclasses.replace(nbr, thermal_expansion=2.5e-4).glassy_expansion == \
         pytest.approx(GLASSY_EXPANSION_RATIO * 2.5e-4)
-    with pytest.raises(InputError, match="glassy_thermal_expansion"):
-        dataclasses.replace(nbr, glassy_thermal_expansion=3e-4)  # more than the rubber
     with pytest.raises(InputError, match="has no Prony series"):
         get_elastomer("FKM").fictive_temperature([0.0, 1.0], [300.0, 299.0])
 

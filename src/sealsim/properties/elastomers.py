@@ -1246,9 +1246,6 @@ class Elastomer:
         [K]; default ``reference_temperature``.
     hardness_shore_a : float, optional
         Shore A hardness [-] (information only).
-    glassy_thermal_expansion : float, optional
-        Linear CTE of the glass α_g [1/K], 0 < α_g <= ``thermal_expansion``; default the
-        Simha–Boyer estimate (see :attr:`glassy_expansion`).
 
     Examples
     --------
@@ -1284,7 +1281,6 @@ class Elastomer:
     prony: tuple[float, tuple[float, ...], tuple[float, ...]] | None = None
     prony_reference_temperature: float | None = None
     hardness_shore_a: float | None = None
-    glassy_thermal_expansion: float | None = None
 
     # -- validation ---------------------------------------------------------------------------
 
@@ -1404,13 +1400,6 @@ class Elastomer:
             set_(
                 "hardness_shore_a",
                 _check_field("hardness_shore_a", self.hardness_shore_a, "Shore A", 0.0, 100.0),
-            )
-        if self.glassy_thermal_expansion is not None:
-            set_(
-                "glassy_thermal_expansion",
-                _check_field("glassy_thermal_expansion", self.glassy_thermal_expansion, "1/K",
-                             0.0, self.thermal_expansion, lo_open=True,
-                             why="the glass expands less than the rubber"),
             )
 
     def _validate_dma(self, set_: Any) -> None:
@@ -1875,16 +1864,15 @@ class Elastomer:
 
     @property
     def glassy_expansion(self) -> float:
-        """Linear CTE of the glassy state α_g [1/K]: ``glassy_thermal_expansion`` if given,
-        else the Simha–Boyer estimate 0.31·α_r (:func:`simha_boyer_glassy_expansion`).
+        """Linear CTE of the glassy state α_g [1/K]: the Simha–Boyer estimate 0.31·α_r
+        (:func:`simha_boyer_glassy_expansion`; no compound of the catalogue gives a measured
+        glassy value).
 
         Examples
         --------
         >>> round(get_elastomer("NBR").glassy_expansion * 1e4, 3)
         0.591
         """
-        if self.glassy_thermal_expansion is not None:
-            return self.glassy_thermal_expansion
         return float(simha_boyer_glassy_expansion(self.thermal_expansion))
 
     @property
