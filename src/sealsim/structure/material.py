@@ -515,11 +515,6 @@ class HyperelasticSealMaterial:
         self.volume_ratio = thermal_volume_ratio(temperature, self.reference_temperature,
                                                  self.thermal_expansion)
 
-    @property
-    def fictive_temperature(self) -> float:
-        """Always the temperature: this material is the rubbery equilibrium state."""
-        return self.temperature
-
     def checkpoint(self) -> dict:
         return {"temperature": self.temperature, "volume_ratio": self.volume_ratio}
 
