@@ -9,10 +9,10 @@ results (:func:`sealsim.pneumatic.contact_maps.build_or_load_fe_map`): it combin
   (physics or numerics), so the intent is recorded in the history;
 * the FElupe version;
 * the SHA-256 of the source of everything a map's values depend on: the modules of
-  :mod:`sealsim.structure` and :mod:`sealsim.properties.elastomers` with its catalogue
-  ``data/elastomers.toml`` -- so that even a change that forgot to raise the version gives a
-  new key (a cosmetic edit costs one rebuild of the map, which is cheap compared with a
-  wrong one).
+  :mod:`sealsim.structure` and :mod:`sealsim.properties.elastomers`, the catalogue reader
+  (``catalogue.py``, where present) and ``data/elastomers.toml`` -- so that even a change
+  that forgot to raise the version gives a new key (a cosmetic edit costs one rebuild of the
+  map, which is cheap compared with a wrong one).
 """
 
 from __future__ import annotations
@@ -42,15 +42,14 @@ def model_fingerprint() -> str:
 
     digest = hashlib.sha256(f"sealsim FE model {FE_MODEL_VERSION}; felupe {felupe.__version__}"
                             .encode())
-    sources = [resources.files("sealsim.structure"), resources.files("sealsim.properties")]
-    for folder, pattern in ((sources[0], "*.py"), (sources[1], "elastomers.py"),
-                            (sources[1] / "data", "elastomers.toml")):
+    structure = resources.files("sealsim.structure")
+    properties = resources.files("sealsim.properties")
+    # the elastomer module and its catalogue reader (where present) and data
+    for folder, wanted in ((structure, None), (properties, {"elastomers.py", "catalogue.py"}),
+                           (properties / "data", {"elastomers.toml"})):
         for entry in sorted(folder.iterdir(), key=lambda e: e.name):
-            if entry.is_file() and _matches(entry.name, pattern):
+            if entry.is_file() and (entry.name in wanted if wanted else
+                                    entry.name.endswith(".py")):
                 digest.update(entry.name.encode())
                 digest.update(entry.read_bytes())
     return digest.hexdigest()[:16]
-
-
-def _matches(name: str, pattern: str) -> bool:
-    return name.endswith(".py") if pattern == "*.py" else name == pattern
