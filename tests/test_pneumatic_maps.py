@@ -119,6 +119,69 @@ def test_fe_map_is_built_on_demand_and_cached(tiny_structure_case, fe_cache, tmp
     changed.write_text(TINY_STRUCTURE_CASE.replace('squeeze = [0.12]', 'squeeze = [0.13]'))
     with pytest.raises(pytest.fail.Exception, match="recomputed"):
         cm.build_or_load_fe_map(changed, cache_dir=cache)
+    # so is the same case computed by a changed FE model (issue 13, C.3): the key holds the
+    # model's fingerprint (version, FElupe, source of the structure model and the catalogue)
+    from sealsim.structure import fingerprint
+
+    monkeypatch.setattr(fingerprint, "model_fingerprint", lambda: "another-fe-model")
+    with pytest.raises(pytest.fail.Exception, match="recomputed"):
+        cm.build_or_load_fe_map(tiny_structure_case, cache_dir=cache)
+
+
+def test_fingerprint_follows_the_model_version(monkeypatch):
+    from sealsim.structure import fingerprint
+
+    before = fingerprint.model_fingerprint()
+    fingerprint.model_fingerprint.cache_clear()
+    monkeypatch.setattr(fingerprint, "FE_MODEL_VERSION", fingerprint.FE_MODEL_VERSION + 1)
+    try:
+        assert fingerprint.model_fingerprint() != before
+    finally:
+        fingerprint.model_fingerprint.cache_clear()
+
+
+@pytest.mark.parametrize("scaling", ["entropic", "modulus"])
+def test_analytic_and_fe_maps_agree_on_the_temperature_trend(scaling, tiny_structure_case,
+                                                             fe_cache, tmp_path):
+    """Issue 10, finding 8: the analytic estimate and the FE map of the same gland (12 x 2 mm
+    O-ring on a 12 mm rod, 12 % squeeze, NBR) take the modulus from one law
+    (Elastomer.modulus_ratio), so F_N changes with temperature in the same direction and by
+    about as much, 20 -> 60 °C:
+
+    * "entropic" (equilibrium modulus ∝ T, the default; a long-held squeeze): F_N rises,
+      FE +24.1 %, analytic +23.3 % at 0 bar;
+    * "modulus" (catalogue dynamic modulus at 1 Hz): F_N falls, FE −28.3 %, analytic −28.9 %.
+
+    Unpressurised (the preload, where the law acts) the two relative changes must agree within
+    10 % of the change: the remaining part comes from thermal expansion of the cord in a
+    fixed groove, which Lindley's free-compression law and the FE (groove walls) treat
+    differently. At 8 bar only the sign is required to agree, and the size within a factor
+    2.5: the analytic energisation Δp·b with the Hertz width b ∝ E^−1/2 depends on the
+    modulus, the FE's pressure contribution hardly does (measured: entropic +15.5 vs +12.6 %,
+    modulus −15.0 vs −7.4 %, a factor 2.0).
+    """
+    from sealsim.properties.elastomers import get_elastomer
+
+    if scaling == "entropic":
+        fe = cm.build_or_load_fe_map(tiny_structure_case, cache_dir=fe_cache)
+    else:
+        case = tmp_path / "tiny_rod_seal_modulus.toml"
+        case.write_text(TINY_STRUCTURE_CASE.replace(
+            'elastomer = "NBR"', 'elastomer = "NBR"\ntemperature_scaling = "modulus"'))
+        fe = cm.build_or_load_fe_map(case, cache_dir=tmp_path)
+    nbr = get_elastomer("NBR")
+    analytic = cm.AnalyticContactMap(12e-3, 2e-3, 0.12, 6 * (nbr.c10 + nbr.c01),
+                                     nbr.thermal_expansion, 293.15, temperature_scaling=scaling)
+
+    def change(contact_map, dp):
+        return contact_map.evaluate(dp, 333.15)[0] / contact_map.evaluate(dp, 293.15)[0] - 1
+
+    fe0, an0 = change(fe, 0.0), change(analytic, 0.0)
+    assert np.sign(fe0) == np.sign(an0) == (1 if scaling == "entropic" else -1)
+    assert an0 == pytest.approx(fe0, rel=0.10)
+    fe8, an8 = change(fe, 8e5), change(analytic, 8e5)
+    assert np.sign(fe8) == np.sign(an8)
+    assert 0.4 < an8 / fe8 < 2.5
 
 
 def test_fe_map_input_errors(tmp_path):

@@ -2,6 +2,7 @@
 
 import numpy as np
 import pytest
+from scipy.sparse.linalg import spsolve
 
 from sealsim.cases import validate_case
 from sealsim.errors import InputError
@@ -15,9 +16,13 @@ from sealsim.structure.geometry import Gland, ORing, SealAssembly, gland_fill
 from sealsim.structure.loads import segment_moments, wetted_fractions
 from sealsim.structure.maps import HermiteGrid
 from sealsim.structure.material import (
+    HAVE_COMPILED_TANGENT,
     ViscoelasticMooneyRivlin,
     _mr_stress,
     _mr_tangent,
+    material_from_elastomer,
+    mr_stress,
+    mr_tangent,
     thermal_volume_ratio,
 )
 from sealsim.structure.mesh import MESH_LEVELS, mesh_oring
@@ -88,6 +93,76 @@ def test_viscoelastic_tangent_and_limits():
 def test_thermal_volume_ratio():
     # (1 + alpha dT)^3 by hand: alpha 2e-4, dT 100 K -> 1.02^3
     assert thermal_volume_ratio(393.15, 293.15, 2e-4) == pytest.approx(1.02**3, rel=1e-12)
+    # frozen 40 K below T_0 (T_f = T_0), cooled 100 K: only the glassy 0.6e-4 acts
+    assert thermal_volume_ratio(193.15, 293.15, 2e-4, 0.6e-4, 293.15) == pytest.approx(
+        (1 - 0.006) ** 3, rel=1e-12)
+
+
+@pytest.mark.skipif(not HAVE_COMPILED_TANGENT, reason="numba not installed")
+@pytest.mark.parametrize("c01", [0.0, 0.3e6])
+def test_compiled_mooney_rivlin_equals_einsum_reference(c01):
+    """The compiled kernels evaluate the same equations point by point: identical to the einsum
+    reference up to round-off (1e-12 relative to the largest entry; measured 5e-16)."""
+    F = np.eye(3)[..., None, None] + 0.15 * RNG.standard_normal((3, 3, 4, 50))
+    F[2, :2] = F[:2, 2] = 0.0  # axisymmetric layout: hoop stretch uncoupled
+    for ref, fast in ((_mr_stress, mr_stress), (_mr_tangent, mr_tangent)):
+        a = ref(F, 0.8e6, c01)
+        b = fast(F, 0.8e6, c01, compiled=True)
+        assert np.abs(b - a).max() <= 1e-12 * np.abs(a).max()
+    # written into a given output array (FElupe passes its previous result)
+    out = np.empty((3, 3, 3, 3, 4, 50))
+    assert mr_tangent(F, 0.8e6, c01, compiled=True, out=out) is not None
+    assert np.abs(out - _mr_tangent(F, 0.8e6, c01)).max() <= 1e-12 * np.abs(out).max()
+
+
+@pytest.mark.parametrize("backend", ["superlu", "pardiso"])
+def test_linear_solvers_reuse_the_analysis_and_match_spsolve(backend):
+    """Non-symmetric matrices of one sparsity pattern (a stiffness-like 2-d Laplacian plus a
+    small skew part, like the follower pressure): every backend gives scipy's ``spsolve``
+    solution to round-off (1e-12), and PARDISO analyses the pattern once."""
+    import scipy.sparse as sp
+
+    from sealsim.structure.solver import LinearSolver, _pypardiso
+
+    if backend == "pardiso" and _pypardiso() is None:
+        pytest.skip("pypardiso not installed")
+    n = 30
+    lap = sp.diags([-1.0, 2.0, -1.0], [-1, 0, 1], shape=(n, n))
+    base = (sp.kron(lap, sp.eye(n)) + sp.kron(sp.eye(n), lap)).tocsr()
+    skew = sp.diags([0.05, -0.05], [-1, 1], shape=(n * n, n * n))
+    solver = LinearSolver(backend)
+    for k in range(3):
+        A = (base * (1.0 + 0.3 * k) + skew + sp.eye(n * n) * 1e-3).tocsr()
+        b = RNG.standard_normal(n * n)
+        x = solver(A, b)
+        ref = spsolve(A, b)
+        assert np.abs(x - ref).max() <= 1e-12 * np.abs(ref).max()
+    assert solver.analyses == (1 if backend == "pardiso" else 0)
+    solver.release()
+
+
+def test_viscoelastic_material_expansion_follows_the_fictive_temperature():
+    """The FE material's thermal volume follows the same structural relaxation as the
+    elastomer's fictive temperature along the same history (one law, exact to round-off), and
+    a cut-back increment restores it."""
+    from sealsim.properties.elastomers import get_elastomer, thermal_strain
+
+    nbr = get_elastomer("NBR")
+    m = material_from_elastomer(nbr, "viscoelastic", reference_temperature=293.15)
+    temps = np.linspace(293.15, 220.0, 38)  # 1 K/min
+    times = (293.15 - temps) * 60.0
+    for k in range(1, temps.size):
+        m.set_state(temps[k], times[k] - times[k - 1])
+    t_f = nbr.fictive_temperature(times, temps)[-1]
+    assert m.fictive_temperature == pytest.approx(t_f, abs=1e-9)
+    assert -45.0 < t_f - 273.15 < -25.0  # frozen near T_g, not at T
+    strain = thermal_strain(temps[-1], 293.15, nbr.thermal_expansion, nbr.glassy_expansion, t_f)
+    assert m.volume_ratio == pytest.approx((1 + strain) ** 3, rel=1e-12)
+    cp = m.checkpoint()
+    m.set_state(200.0, 600.0)
+    m.restore(cp)
+    assert m.fictive_temperature == cp["fictive_temperature"]
+    assert np.array_equal(m.departures, cp["departures"])
 
 
 def test_hertz_formulas_are_consistent():

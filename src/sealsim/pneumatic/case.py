@@ -249,7 +249,8 @@ Controller = Annotated[CycleController | PositionController, Field(discriminator
 class AnalyticMapModel(CaseModel):
     """Engineering estimate of F_N and b of an O-ring (see AnalyticContactMap).  ``modulus``
     and ``thermal_expansion`` default to the catalogue values of ``elastomer``
-    (E = 6·(C10 + C01))."""
+    (E = 6·(C10 + C01)); ``temperature_scaling`` is the modulus law in T, as in a structure
+    case's ``material.temperature_scaling``."""
 
     cord_diameter: Q("length", gt=0)
     squeeze: Q("dimensionless", gt=0, lt=0.5)
@@ -261,6 +262,7 @@ class AnalyticMapModel(CaseModel):
     pressure_max: Q("pressure", gt=0) = 16e5
     temperature_min: Q("temperature", gt=0) = 243.15
     temperature_max: Q("temperature", gt=0) = 393.15
+    temperature_scaling: Literal["entropic", "modulus", "none"] = "entropic"
 
 
 class MapModel(CaseModel):
@@ -402,7 +404,8 @@ def _analytic_map(spec: AnalyticMapModel, diameter: float, where: str) -> Analyt
         sliding_diameter=spec.sliding_diameter or diameter, cord_diameter=spec.cord_diameter,
         squeeze=spec.squeeze, modulus=modulus, thermal_expansion=expansion,
         reference_temperature=spec.reference_temperature, pressure_max=spec.pressure_max,
-        temperature_range=(spec.temperature_min, spec.temperature_max))
+        temperature_range=(spec.temperature_min, spec.temperature_max),
+        temperature_scaling=spec.temperature_scaling, elastomer=spec.elastomer)
 
 
 def build_contact_map(spec: MapModel, diameter: float, base_dir: Path, where: str,

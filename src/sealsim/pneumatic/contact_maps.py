@@ -25,9 +25,20 @@ per unit circumference, Hertz's line contact (cylinder on a rigid flat) the cont
 sealed pressure difference Δp is transmitted by the nearly incompressible rubber to the contact
 (the O-ring acts like a fluid: contact pressure = squeeze pressure + Δp over the width b);
 temperature raises the squeeze through the free thermal expansion of the cord (the gland is
-metal, its expansion is an order of magnitude smaller) and the rubbery modulus through entropy
-elasticity, E ∝ T.  Both make F_N rise with temperature, the trend of seed 001 (Fig. 8: the
-sealing force falls on cooling; Fig. 10: lower temperature, lower contact force).
+metal, its expansion is an order of magnitude smaller) and changes the modulus.
+
+Which modulus: an installed seal is held at constant squeeze for hours to years, so its
+viscoelastic stresses relax and the sealing force follows the *equilibrium* modulus of rubber
+elasticity, E ∝ T (entropy elasticity, Treloar 1975) -- it rises with temperature. The
+catalogue's E(T, f) (:meth:`sealsim.properties.elastomers.Elastomer.modulus`) is the *dynamic*
+modulus at a rate f; between T_g and ≈ 100 °C it falls with T because the glass-transition tail
+relaxes faster when warm, which is right for a deformation lasting about 1/f, not for a
+long-held squeeze. Both this estimate and the FE map take the modulus from one law,
+:meth:`~sealsim.properties.elastomers.Elastomer.modulus_ratio` (``temperature_scaling``:
+"entropic" by default, "modulus" for the dynamic modulus, "none"), so they agree on the sign
+and size of dF_N/dT for the same gland (tested). With the default both make F_N rise with
+temperature, the trend of seed 001 (Fig. 8: the sealing force falls on cooling; Fig. 10: lower
+temperature, lower contact force).
 """
 
 from __future__ import annotations
@@ -42,6 +53,7 @@ import numpy as np
 
 from sealsim.errors import InputError
 from sealsim.pneumatic._jit import jit
+from sealsim.properties.elastomers import TEMPERATURE_SCALINGS, entropic_modulus, get_elastomer
 from sealsim.tribology.contact import hertz_line_half_width
 
 __all__ = [
@@ -54,7 +66,6 @@ __all__ = [
     "energised_force_per_length",
     "hertz_contact_width",
     "lindley_force_per_length",
-    "rubbery_modulus",
     "thermal_squeeze",
 ]
 
@@ -103,38 +114,6 @@ def thermal_squeeze(squeeze, thermal_expansion, temperature, reference_temperatu
     """
     growth = 1.0 + thermal_expansion * (temperature - reference_temperature)
     return 1.0 - (1.0 - squeeze) / growth
-
-
-def rubbery_modulus(modulus, temperature, reference_temperature):
-    """Equilibrium (rubbery) modulus at temperature T, E(T) = E0·T/T0 (entropy elasticity).
-
-    Valid on the rubbery plateau, well above the glass transition (Treloar 1975).  The
-    frequency-dependent modulus of :mod:`sealsim.properties.elastomers` falls with T between T_g
-    and ≈ 100 °C because of the viscoelastic transition; a seal's static preload relaxes to the
-    equilibrium modulus, which rises with T.
-
-    Parameters
-    ----------
-    modulus : float or ndarray
-        E0 [Pa] at T0.
-    temperature, reference_temperature : float or ndarray
-        T, T0 [K].
-
-    Returns
-    -------
-    ndarray
-        E(T) [Pa].
-
-    References
-    ----------
-    L. R. G. Treloar, The Physics of Rubber Elasticity, 3rd ed., Oxford 1975 (seed 001 ref.).
-
-    Examples
-    --------
-    >>> round(float(rubbery_modulus(8e6, 328.15, 293.15)) / 1e6, 4)
-    8.9551
-    """
-    return modulus * temperature / reference_temperature
 
 
 def lindley_force_per_length(squeeze, cord_diameter, modulus):
@@ -282,17 +261,22 @@ class AnalyticContactMap:
     """Engineering estimate of F_N and b of an O-ring seal (no FE map needed) [R].
 
     .. math::
-        c(T) &= 1 - (1 - c_0)/(1 + \\alpha (T - T_0)), \\qquad E(T) = E_0 T/T_0 \\\\
+        c(T) &= 1 - (1 - c_0)/(1 + \\alpha (T - T_0)), \\qquad E(T) = E_0\\,r(T)/r(T_0) \\\\
         F'_0 &= E(T)\\,d\\,(1.25 c^{1.5} + 50 c^6) \\quad \\text{(Lindley 1967)} \\\\
         F' &= F'_0 + \\Delta p\\, b(F'), \\qquad b = 2\\sqrt{2 F' d/(\\pi E^*)}
               \\quad \\text{(Hertz)} \\\\
         F_N &= \\pi D F', \\qquad b
 
-    See :func:`thermal_squeeze`, :func:`rubbery_modulus`, :func:`lindley_force_per_length`,
-    :func:`energised_force_per_length`, :func:`hertz_contact_width`.  F_N rises with Δp and
-    with T (seed 001's trend).  Typical numbers: d = 2.5 mm, c0 = 12 %, E0 = 8 MPa (NBR of the
-    catalogue, 6·(C10 + C01)) on D = 32 mm give F_N ≈ 105 N and b ≈ 0.8 mm unpressurised,
-    +57 % F_N at 6 bar, +14 % from 25 to 55 °C.
+    with r(T) the stiffness law of ``temperature_scaling``
+    (:meth:`sealsim.properties.elastomers.Elastomer.modulus_ratio`, the law the FE map's
+    hyperelastic constants follow): "entropic" r = T (equilibrium modulus of a long-held
+    squeeze, the default), "modulus" the catalogue's dynamic E(T, f) of ``elastomer``, "none".
+    See :func:`thermal_squeeze`, :func:`lindley_force_per_length`,
+    :func:`energised_force_per_length`, :func:`hertz_contact_width`.  F_N rises with Δp and,
+    with the default, with T (seed 001's trend).  Typical numbers: d = 2.5 mm, c0 = 12 %,
+    E0 = 8 MPa (NBR of the catalogue, 6·(C10 + C01)) on D = 32 mm give F_N ≈ 105 N and
+    b ≈ 0.8 mm unpressurised, +57 % F_N at 6 bar, +17 % from 25 to 55 °C (with "modulus" at
+    1 Hz: −21 %).
 
     Parameters
     ----------
@@ -312,6 +296,12 @@ class AnalyticContactMap:
         Largest Δp [Pa] the estimate is used for.
     temperature_range : tuple of float
         (T_min, T_max) [K] the estimate is used for (rubbery state).
+    temperature_scaling : {"entropic", "modulus", "none"}
+        Temperature law of the modulus (see above).
+    elastomer : str
+        Catalogue elastomer whose E(T, f) the "modulus" scaling uses.
+    frequency : float, optional
+        f [Hz] of the "modulus" scaling (default: the elastomer's test frequency).
 
     Examples
     --------
@@ -329,16 +319,36 @@ class AnalyticContactMap:
     reference_temperature: float = 293.15
     pressure_max: float = 16e5
     temperature_range: tuple[float, float] = (243.15, 393.15)
+    temperature_scaling: str = "entropic"
+    elastomer: str = "NBR"
+    frequency: float | None = None
+
+    def __post_init__(self):
+        if self.temperature_scaling not in TEMPERATURE_SCALINGS:
+            raise InputError(f"temperature_scaling = {self.temperature_scaling!r} is not "
+                             f"allowed; choose one of {', '.join(TEMPERATURE_SCALINGS)}")
+        if self.temperature_scaling == "modulus":
+            get_elastomer(self.elastomer)  # unknown names fail here, not in a run
 
     @property
     def ranges(self) -> dict[str, tuple[float, float]]:
         return {"pressure": (0.0, self.pressure_max), "temperature": self.temperature_range}
 
+    def modulus_at(self, temperature):
+        """E(T) [Pa] = E0·r(T)/r(T0) with the law of ``temperature_scaling``."""
+        t0 = self.reference_temperature
+        if self.temperature_scaling == "entropic":
+            return entropic_modulus(self.modulus, temperature, t0)
+        if self.temperature_scaling == "none":
+            return self.modulus * np.ones_like(np.asarray(temperature, dtype=float))
+        return self.modulus * get_elastomer(self.elastomer).modulus_ratio(
+            temperature, t0, "modulus", self.frequency)
+
     def _preload(self, temperature):
         """(F'_0 [N/m], E [Pa]) at T: the temperature-dependent part."""
         squeeze = thermal_squeeze(self.squeeze, self.thermal_expansion, temperature,
                                   self.reference_temperature)
-        modulus = rubbery_modulus(self.modulus, temperature, self.reference_temperature)
+        modulus = self.modulus_at(temperature)
         return lindley_force_per_length(squeeze, self.cord_diameter, modulus), modulus
 
     def evaluate(self, pressure_difference, temperature):
@@ -371,7 +381,10 @@ class AnalyticContactMap:
                 "sliding_diameter_m": self.sliding_diameter,
                 "cord_diameter_m": self.cord_diameter, "squeeze": self.squeeze,
                 "modulus_Pa": self.modulus, "thermal_expansion_per_K": self.thermal_expansion,
-                "reference_temperature_K": self.reference_temperature}
+                "reference_temperature_K": self.reference_temperature,
+                "temperature_scaling": self.temperature_scaling,
+                **({"elastomer": self.elastomer, "frequency_Hz": self.frequency}
+                   if self.temperature_scaling == "modulus" else {})}
 
 
 # -- FE characteristic maps (issue 5) ---------------------------------------------------------
@@ -462,10 +475,13 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
     """FE map of a structure case file, built on demand and cached.
 
     The case (with a ``[map]`` table, no variants) is validated and resolved (all defaults
-    filled in); the SHA-256 of the resolved TOML names the cache file
+    filled in); the SHA-256 of the resolved TOML and of the FE model's fingerprint
+    (:func:`sealsim.structure.fingerprint.model_fingerprint`: model version, FElupe version,
+    source of the structure model and the elastomer catalogue) names the cache file
     ``<cache_dir>/<stem>-<hash16>.nc``.  A cached map is read; otherwise
     :func:`sealsim.structure.maps.compute_map` runs (FE, minutes) and its result is written
-    atomically to the cache.  Any change of the structure case gives a new map.
+    atomically to the cache.  Any change of the structure case or of the FE model gives a new
+    map (old files stay in the cache folder until deleted).
 
     Parameters
     ----------
@@ -502,7 +518,11 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
                          "map.temperature grids) to build the seal's characteristic map from")
     text = dump_case_toml(case, header="resolved sealsim structure case (all defaults filled "
                                        "in)")
-    digest = hashlib.sha256(text.encode("utf-8")).hexdigest()[:16]
+    from sealsim.structure.fingerprint import model_fingerprint
+
+    # the model's fingerprint too: a map computed by another FE model is not reused
+    digest = hashlib.sha256(f"{text}\n# FE model {model_fingerprint()}".encode("utf-8")) \
+        .hexdigest()[:16]
     folder = Path(cache_dir) if cache_dir is not None else default_cache_dir()
     target = folder / f"{path.stem}-{digest}.nc"
     if not target.is_file():

@@ -18,6 +18,11 @@ Contents
   :func:`modulus_from_table` (PCHIP through measured DMA points).
 * Prony series: :func:`prony_relaxation_modulus`, :func:`prony_storage_modulus`,
   :func:`prony_loss_modulus`.
+* Rubber elasticity and thermal expansion across the glass transition:
+  :func:`entropic_modulus` (equilibrium modulus ∝ T), :func:`simha_boyer_glassy_expansion`,
+  :func:`thermal_strain` (rubbery and glassy expansion through Tool's fictive temperature),
+  :func:`fictive_temperature_step` and :func:`fictive_temperature` (Tool–Narayanaswamy
+  structural relaxation in the reduced time of the WLF/Arrhenius shift).
 * :class:`Elastomer` (frozen dataclass) and the catalogue ``data/elastomers.toml`` (NBR, HNBR,
   FKM, ACM, VMQ): :func:`list_elastomers`, :func:`get_elastomer`, :meth:`Elastomer.from_dict`,
   :func:`load_elastomer_file`.
@@ -75,6 +80,10 @@ References
   bituminous materials", in Advanced Testing and Characterization of Bituminous Materials,
   CRC Press 2009, 81–91 [L].
 - L. R. G. Treloar, The Physics of Rubber Elasticity, 3rd ed., Oxford 1975 (E ∝ T) [L].
+- R. Simha, R. F. Boyer, J. Chem. Phys. 37 (1962) 1003–1007 (glassy vs liquid expansion).
+- A. Q. Tool, J. Am. Ceram. Soc. 29 (1946) 240–253; O. S. Narayanaswamy, J. Am. Ceram. Soc.
+  54 (1971) 491–498; C. T. Moynihan et al., Ann. N. Y. Acad. Sci. 279 (1976) 15–35
+  (fictive temperature, structural relaxation, cooling-rate dependence of T_g).
 - N. W. Tschoegl, The Phenomenological Theory of Linear Viscoelastic Behavior, Springer 1989
   (Prony / generalised Maxwell model) [L].
 - F. N. Fritsch, R. E. Carlson, SIAM J. Numer. Anal. 17 (1980) 238–246 (PCHIP).
@@ -105,12 +114,19 @@ __all__ = [
     "DEFAULT_TRANSITION_ASYMMETRY",
     "DEFAULT_TRANSITION_LOCATION",
     "DEFAULT_TRANSITION_WIDTH",
+    "GLASSY_EXPANSION_RATIO",
+    "SIMHA_BOYER_K1",
+    "SIMHA_BOYER_K2",
+    "TEMPERATURE_SCALINGS",
     "WLF_UNIVERSAL",
     "WLF_UNIVERSAL_TS",
     "Elastomer",
     "ServiceRangeWarning",
     "WLFConstants",
     "get_elastomer",
+    "entropic_modulus",
+    "fictive_temperature",
+    "fictive_temperature_step",
     "list_elastomers",
     "load_elastomer_file",
     "master_curve_modulus",
@@ -122,6 +138,8 @@ __all__ = [
     "prony_storage_modulus",
     "reduced_time",
     "reduced_time_history",
+    "simha_boyer_glassy_expansion",
+    "thermal_strain",
     "wlf_log10_shift",
     "wlf_shift_factor",
 ]
@@ -156,6 +174,9 @@ WLF_UNIVERSAL_TS = WLFConstants(c1=8.86, c2=101.6, offset_from_tg=50.0)
 DEFAULT_TRANSITION_LOCATION = -2.0  # log10(f_r / 1 Hz) at the WLF reference temperature
 DEFAULT_TRANSITION_WIDTH = 1.1  # decades
 DEFAULT_TRANSITION_ASYMMETRY = 4.0  # Richards exponent nu [-]
+
+#: Temperature laws of the hyperelastic (sealing) stiffness, see :meth:`Elastomer.modulus_ratio`.
+TEMPERATURE_SCALINGS = ("entropic", "modulus", "none")
 
 #: Names in the shipped catalogue.
 CATALOGUE_NAMES = ("NBR", "HNBR", "FKM", "ACM", "VMQ")
@@ -642,7 +663,7 @@ def modulus_vs_temperature(
     t_wlf = t_g if wlf_reference_temperature is None else wlf_reference_temperature
     t_wlf, c1, c2, t_a = _wlf_params(t_wlf, c1, c2, t_g)
     x = np.log10(f) + _log10_shift(t, t_wlf, c1, c2, t_a)
-    log_er = np.log10(e_r * t / t_ref)
+    log_er = np.log10(entropic_modulus(e_r, t, t_ref))
     return _out(10.0 ** _master_log10(x, math.log10(e_g), log_er, x0, w, nu))
 
 
@@ -866,6 +887,268 @@ def prony_loss_modulus(
 
 
 # ---------------------------------------------------------------------------------------------
+# thermal expansion across the glass transition (structural relaxation)
+# ---------------------------------------------------------------------------------------------
+
+#: Simha–Boyer constants for the volumetric expansion coefficients of amorphous polymers:
+#: (α_l − α_g)·T_g ≈ 0.113 and α_l·T_g ≈ 0.164 (R. Simha, R. F. Boyer, J. Chem. Phys. 37
+#: (1962) 1003–1007).
+SIMHA_BOYER_K1 = 0.113
+SIMHA_BOYER_K2 = 0.164
+#: Glassy-to-rubbery expansion ratio α_g/α_l = 1 − K1/K2 ≈ 0.31 (Simha & Boyer 1962): the
+#: glass keeps only the vibrational part of the expansion; the rest, the growth of free volume,
+#: freezes at T_g. Linear and volumetric coefficients have the same ratio (α_vol = 3 α_lin).
+GLASSY_EXPANSION_RATIO = 1.0 - SIMHA_BOYER_K1 / SIMHA_BOYER_K2
+
+
+def entropic_modulus(
+    modulus: Any, temperature: Any, reference_temperature: Any
+) -> np.ndarray | float:
+    r"""Equilibrium modulus of rubber elasticity at temperature T: E(T) = E_0·T/T_0.
+
+    A network of flexible chains stores elastic energy as configurational entropy, so its
+    equilibrium shear modulus is G = n k T (Treloar 1975, ch. 4) and rises with T. This is the
+    modulus of a seal held at constant squeeze long enough for its viscoelastic stresses to
+    relax (well above T_g). The dynamic (storage) modulus at a given rate,
+    :func:`modulus_vs_temperature`, instead falls with T between T_g and ≈ 100 °C because the
+    glass-transition tail relaxes faster the warmer the rubber is.
+
+    Parameters
+    ----------
+    modulus : array_like
+        E_0 [Pa] at T_0, > 0.
+    temperature : array_like
+        T [K], > 0.
+    reference_temperature : array_like
+        T_0 [K], > 0.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        E(T) [Pa].
+
+    References
+    ----------
+    L. R. G. Treloar, The Physics of Rubber Elasticity, 3rd ed., Oxford 1975, ch. 4.
+
+    Examples
+    --------
+    >>> round(entropic_modulus(8e6, 328.15, 293.15) / 1e6, 4)
+    8.9551
+    """
+    e0 = _array(modulus, "modulus", "Pa", lo=0.0, lo_open=True)
+    t = _array(temperature, "temperature", "K", lo=0.0, lo_open=True)
+    t0 = _array(reference_temperature, "reference_temperature", "K", lo=0.0, lo_open=True)
+    return _out(e0 * t / t0)
+
+
+def simha_boyer_glassy_expansion(rubbery_expansion: Any) -> np.ndarray | float:
+    r"""Glassy thermal expansion coefficient estimated from the rubbery one (Simha–Boyer).
+
+    .. math::
+
+        \alpha_g = \alpha_r\,\left(1 - \frac{K_1}{K_2}\right) \approx 0.31\,\alpha_r,
+        \qquad K_1 = (\alpha_l - \alpha_g)\,T_g = 0.113,\quad K_2 = \alpha_l T_g = 0.164
+
+    Parameters
+    ----------
+    rubbery_expansion : array_like
+        Linear CTE above T_g, α_r [1/K], > 0.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        Linear CTE of the glass, α_g [1/K].
+
+    References
+    ----------
+    R. Simha, R. F. Boyer, J. Chem. Phys. 37 (1962) 1003–1007.
+
+    Examples
+    --------
+    >>> round(simha_boyer_glassy_expansion(1.9e-4) * 1e4, 3)
+    0.591
+    """
+    a = _array(rubbery_expansion, "rubbery_expansion", "1/K", lo=0.0, lo_open=True)
+    return _out(GLASSY_EXPANSION_RATIO * a)
+
+
+def thermal_strain(
+    temperature: Any,
+    reference_temperature: Any,
+    rubbery_expansion: Any,
+    glassy_expansion: Any = None,
+    fictive_temperature: Any = None,
+) -> np.ndarray | float:
+    r"""Free linear thermal strain of a rubber that may be (partly) glassy.
+
+    .. math::
+
+        \varepsilon_{th} = \alpha_g\,(T - T_0) + (\alpha_r - \alpha_g)\,(T_f - T_0)
+
+    T_f is Tool's fictive temperature: the temperature at which the frozen structure (free
+    volume) would be in equilibrium. In equilibrium (rubber, slow changes) T_f = T and the
+    strain is α_r (T − T_0); in a glass T_f stays where the structure froze and only α_g
+    remains. T_0 is a stress-free equilibrium state (T_f = T_0 there).
+
+    Parameters
+    ----------
+    temperature : array_like
+        T [K].
+    reference_temperature : array_like
+        T_0 [K] of zero strain (equilibrium).
+    rubbery_expansion : array_like
+        α_r [1/K] (equilibrium, above T_g).
+    glassy_expansion : array_like, optional
+        α_g [1/K]; default α_r (no glass transition).
+    fictive_temperature : array_like, optional
+        T_f [K]; default T (equilibrium).
+
+    Returns
+    -------
+    float or numpy.ndarray
+        ε_th [-].
+
+    References
+    ----------
+    A. Q. Tool, J. Am. Ceram. Soc. 29 (1946) 240–253 (fictive temperature);
+    O. S. Narayanaswamy, J. Am. Ceram. Soc. 54 (1971) 491–498.
+
+    Examples
+    --------
+    Cooled 60 K, the last 30 K in the glass (T_f = T_0 − 30 K):
+
+    >>> round(thermal_strain(233.15, 293.15, 1.9e-4, 0.6e-4, 263.15), 6)
+    -0.0075
+    """
+    t = _array(temperature, "temperature", "K", lo=0.0, lo_open=True)
+    t0 = _array(reference_temperature, "reference_temperature", "K", lo=0.0, lo_open=True)
+    a_r = _array(rubbery_expansion, "rubbery_expansion", "1/K")
+    a_g = a_r if glassy_expansion is None else _array(glassy_expansion, "glassy_expansion", "1/K")
+    t_f = t if fictive_temperature is None else _array(
+        fictive_temperature, "fictive_temperature", "K", lo=0.0, lo_open=True)
+    return _out(a_g * (t - t0) + (a_r - a_g) * (t_f - t0))
+
+
+def fictive_temperature_step(
+    departures: Any, temperature_change: float, reduced_time_increments: Any, weights: Any
+) -> np.ndarray:
+    r"""One step of the Tool–Narayanaswamy fictive temperature in reduced time.
+
+    With a normalised relaxation function :math:`M(\xi) = \sum_i w_i e^{-\xi/\tau_i}`
+    (Σ w_i = 1) the fictive temperature is (Narayanaswamy 1971)
+
+    .. math::
+
+        T_f(t) = T(t) - \sum_i \delta_i(t), \qquad
+        \delta_i(t) = \int_0^t w_i\,e^{-(\xi(t) - \xi(t'))/\tau_i}\,\frac{dT}{dt'}\,dt',
+
+    ξ the reduced time (dξ = dt/a_T). For T linear in ξ over a step the update is exact:
+
+    .. math::
+
+        \delta_i^{n+1} = e^{-x_i}\,\delta_i^n + w_i\,\Delta T\,\frac{1 - e^{-x_i}}{x_i},
+        \qquad x_i = \frac{\Delta\xi}{\tau_i}.
+
+    Quick changes (x → 0) freeze the structure (δ grows by w ΔT: T_f stays), slow ones
+    (x → ∞) relax it (δ → 0: T_f = T).
+
+    Parameters
+    ----------
+    departures : array_like
+        δ_i^n [K] (zeros in equilibrium).
+    temperature_change : float
+        ΔT of the step [K].
+    reduced_time_increments : array_like
+        x_i = Δξ/τ_i [-], >= 0, one per term.
+    weights : array_like
+        w_i [-], >= 0, Σ w_i = 1.
+
+    Returns
+    -------
+    numpy.ndarray
+        δ_i^{n+1} [K].
+
+    References
+    ----------
+    O. S. Narayanaswamy, J. Am. Ceram. Soc. 54 (1971) 491–498; A. J. Kovacs, Fortschr.
+    Hochpolym.-Forsch. 3 (1964) 394–507 (volume recovery of polymers).
+
+    Examples
+    --------
+    >>> fictive_temperature_step([0.0, 0.0], -10.0, [0.0, 1e3], [0.5, 0.5]).round(3).tolist()
+    [-5.0, -0.005]
+    """
+    d = np.asarray(departures, dtype=float)
+    x = np.asarray(reduced_time_increments, dtype=float)
+    w = np.asarray(weights, dtype=float)
+    decay = np.exp(-x)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        # (1 - e^-x)/x, with its series below 1e-8 (no cancellation)
+        gain = np.where(x > 1e-8, -np.expm1(-x) / np.where(x > 1e-8, x, 1.0), 1.0 - 0.5 * x)
+    return decay * d + w * float(temperature_change) * gain
+
+
+def fictive_temperature(
+    temperature: Any,
+    reduced_time_increments: Any,
+    weights: Any,
+    relaxation_times: Any,
+) -> np.ndarray:
+    r"""Fictive temperature T_f along a temperature history (Tool–Narayanaswamy, x = 1).
+
+    Starts in equilibrium (T_f = T at the first point) and applies
+    :func:`fictive_temperature_step` between consecutive points, T linear in reduced time
+    within each interval.
+
+    Parameters
+    ----------
+    temperature : array_like
+        T [K] at the time points, 1-D, length n.
+    reduced_time_increments : array_like
+        Δξ [s] of the n − 1 intervals (Δt / a_T at the interval's mid temperature), >= 0.
+    weights : array_like
+        Normalised weights w_i [-] of the relaxation function (Σ w_i = 1).
+    relaxation_times : array_like
+        τ_i [s] on the reduced-time scale.
+
+    Returns
+    -------
+    numpy.ndarray
+        T_f [K] at the n points.
+
+    References
+    ----------
+    Narayanaswamy (1971); C. T. Moynihan et al., Ann. N. Y. Acad. Sci. 279 (1976) 15–35.
+
+    Examples
+    --------
+    Instant cooling freezes the structure; a long hold lets it relax:
+
+    >>> fictive_temperature([300.0, 250.0, 250.0], [0.0, 1e9], [1.0], [1.0]).round(6).tolist()
+    [300.0, 300.0, 250.0]
+    """
+    t = _array(temperature, "temperature", "K", lo=0.0, lo_open=True)
+    dxi = _array(reduced_time_increments, "reduced_time_increments", "s", lo=0.0)
+    w = np.atleast_1d(_array(weights, "weights", "-", lo=0.0))
+    tau = np.atleast_1d(_array(relaxation_times, "relaxation_times", "s", lo=0.0, lo_open=True))
+    if t.ndim != 1 or dxi.shape != (max(t.size - 1, 0),) or w.shape != tau.shape:
+        raise InputError(
+            "temperature (n), reduced_time_increments (n - 1), weights and relaxation_times "
+            f"(equal lengths) do not match: shapes {t.shape}, {dxi.shape}, {w.shape}, "
+            f"{tau.shape}")
+    if abs(float(w.sum()) - 1.0) > 1e-9:
+        raise InputError(f"weights must sum to 1; got {float(w.sum()):.12g}")
+    out = np.empty_like(t)
+    out[0] = t[0]
+    d = np.zeros_like(w)
+    for k in range(1, t.size):
+        d = fictive_temperature_step(d, t[k] - t[k - 1], dxi[k - 1] / tau, w)
+        out[k] = t[k] - d.sum()
+    return out
+
+
+# ---------------------------------------------------------------------------------------------
 # Elastomer
 # ---------------------------------------------------------------------------------------------
 
@@ -925,7 +1208,7 @@ class Elastomer:
     specific_heat : float
         c_p [J/(kg·K)]; 500–3000.
     thermal_expansion : float
-        Linear CTE α [1/K]; 1e-5–1e-3.
+        Linear CTE of the rubber (equilibrium, above T_g) α_r [1/K]; 1e-5–1e-3.
     c10, c01 : float
         Mooney–Rivlin constants [Pa] at ``reference_temperature`` (C10 > 0, C01 >= 0).
     bulk_modulus : float
@@ -1307,7 +1590,7 @@ class Elastomer:
                     f"it ({exc})"
                 ) from None
         x = np.log10(f) + self._log10_shift(t)
-        log_er = np.log10(self.rubbery_modulus * t / self.reference_temperature)
+        log_er = np.log10(entropic_modulus(self.rubbery_modulus, t, self.reference_temperature))
         return 10.0 ** _master_log10(
             x,
             math.log10(self.glassy_modulus),
@@ -1421,6 +1704,71 @@ class Elastomer:
         k = self.bulk_modulus * ratio if scale_bulk else self.bulk_modulus * np.ones_like(ratio)
         return _out(self.c10 * ratio), _out(self.c01 * ratio), _out(k)
 
+    def modulus_ratio(
+        self,
+        temperature: Any,
+        reference_temperature: float | None = None,
+        scaling: str = "entropic",
+        frequency: Any = None,
+    ) -> np.ndarray | float:
+        r"""Stiffness of the seal at T relative to T_ref, E(T)/E(T_ref), for the hyperelastic
+        constants and the analytic contact estimate (one law for both).
+
+        * ``"entropic"`` (default): T/T_ref, the equilibrium modulus of rubber elasticity
+          (:func:`entropic_modulus`). It is the stiffness of a seal held at constant squeeze
+          long enough for the viscoelastic stresses to relax -- an installed static or slowly
+          moving seal well above T_g -- and it rises with T.
+        * ``"modulus"``: E(T, f)/E(T_ref, f) of :meth:`modulus`, the dynamic (storage) modulus
+          at the rate of interest f. Between T_g and ≈ 100 °C it falls with T (the
+          glass-transition tail relaxes faster when warm): the stiffness of a deformation
+          that lasts about 1/f, not of a long-held squeeze.
+        * ``"none"``: 1.
+
+        Parameters
+        ----------
+        temperature : array_like
+            T [K] (allowed range of the material; no service-range warning).
+        reference_temperature : float, optional
+            T_ref [K]; default the material's reference temperature.
+        scaling : {"entropic", "modulus", "none"}
+            See above.
+        frequency : float, optional
+            f [Hz] for ``"modulus"``; default ``test_frequency``.
+
+        Returns
+        -------
+        float or numpy.ndarray
+            E(T)/E(T_ref) [-].
+
+        References
+        ----------
+        Treloar (1975), ch. 4 [L]; J. D. Ferry, Viscoelastic Properties of Polymers, 3rd ed.,
+        Wiley 1980, ch. 11 and 12 (transition zone) [L].
+
+        Examples
+        --------
+        From 25 to 55 °C the equilibrium stiffness of NBR rises 10 %, its 1 Hz modulus falls 26 %:
+
+        >>> nbr = get_elastomer("NBR")
+        >>> [round(nbr.modulus_ratio(328.15, 298.15, s), 3) for s in ("entropic", "modulus")]
+        [1.101, 0.742]
+        """
+        t_ref = (self.reference_temperature if reference_temperature is None
+                 else reference_temperature)
+        if scaling not in TEMPERATURE_SCALINGS:
+            raise InputError(f"temperature scaling {scaling!r} is not allowed; choose one of "
+                             f"{', '.join(TEMPERATURE_SCALINGS)}")
+        t = self._check(temperature, False, stacklevel=3)
+        t0 = self._check(t_ref, False, stacklevel=3)
+        if t0.ndim != 0:
+            raise InputError("reference_temperature must be a single number [K]")
+        if scaling == "entropic":
+            return _out(entropic_modulus(1.0, t, t0))
+        if scaling == "none":
+            return _out(np.ones_like(t))
+        t, f = self._t_f(t, frequency, warn=False)
+        return _out(self._modulus(t, f) / self._modulus(t0, f[()] if f.ndim == 0 else f))
+
     def relaxation_modulus(self, time: Any, temperature: Any) -> np.ndarray | float:
         r"""Relaxation modulus E(t, T) [Pa] from the Prony series and time–temperature shift.
 
@@ -1512,6 +1860,83 @@ class Elastomer:
             options={"xatol": 1e-4},
         )
         return float(res.x)
+
+    @property
+    def glassy_expansion(self) -> float:
+        """Linear CTE of the glassy state α_g [1/K]: the Simha–Boyer estimate 0.31·α_r
+        (:func:`simha_boyer_glassy_expansion`; no compound of the catalogue gives a measured
+        glassy value).
+
+        Examples
+        --------
+        >>> round(get_elastomer("NBR").glassy_expansion * 1e4, 3)
+        0.591
+        """
+        return float(simha_boyer_glassy_expansion(self.thermal_expansion))
+
+    @property
+    def structural_relaxation(self) -> tuple[np.ndarray, np.ndarray] | None:
+        """Normalised weights w_i [-] and times τ_i [s] (at the Prony reference temperature)
+        of the volume (structural) relaxation, or None without a Prony series.
+
+        Assumption [D]: the volume relaxes with the spectrum of the shear relaxation,
+        w_i = E_i / Σ E_j, and the same shift factor a_T(T) (thermorheologically simple, the
+        x = 1 case of Narayanaswamy's shift). Check (tests): cooled at 10 K/min, the catalogue
+        NBR freezes at T_f = −30 °C, 5 K below its DSC T_g of −25 °C, and the freezing
+        temperature moves by 2.8 K per decade of cooling rate as Moynihan's relation
+        d(1/T_f')/d log10 q = −1/B predicts for the Arrhenius shift below T_g.
+        """
+        if self.prony is None:
+            return None
+        e_i = np.asarray(self.prony[1])
+        if e_i.sum() <= 0.0:
+            return None
+        return e_i / e_i.sum(), np.asarray(self.prony[2])
+
+    def fictive_temperature(self, time: Any, temperature: Any) -> np.ndarray:
+        r"""Fictive temperature T_f [K] along a temperature history T(t).
+
+        :func:`fictive_temperature` with :attr:`structural_relaxation` and the shift factor of
+        this material at each interval's mid temperature (relative to the Prony reference
+        temperature); equilibrium (T_f = T) at the start. The free thermal strain then is
+        :func:`thermal_strain` with α_r = ``thermal_expansion``, α_g = :attr:`glassy_expansion`.
+
+        Parameters
+        ----------
+        time : array_like
+            Strictly increasing times t [s], 1-D.
+        temperature : array_like
+            T [K] at those times (allowed range of the material).
+
+        Returns
+        -------
+        numpy.ndarray
+            T_f [K].
+
+        Examples
+        --------
+        Cooling the catalogue NBR at 1 K/min from 20 °C to −60 °C: the structure freezes
+        near −33 °C.
+
+        >>> T = np.linspace(293.15, 213.15, 161)
+        >>> t = (T[0] - T) * 60.0
+        >>> round(float(get_elastomer("NBR").fictive_temperature(t, T)[-1]) - 273.15, 1)
+        -33.0
+        """
+        spectrum = self.structural_relaxation
+        if spectrum is None:
+            raise InputError(
+                f"{self.name} has no Prony series, so its structural relaxation (glass "
+                f"transition of the thermal expansion) is not defined; give [{self.name}.prony]")
+        tt = _array(time, "time", "s")
+        t = self._check(temperature, False, stacklevel=3)
+        if tt.ndim != 1 or t.shape != tt.shape or np.any(np.diff(tt) <= 0.0):
+            raise InputError("time must be strictly increasing and match temperature (1-D)")
+        t_p = float(self.prony_reference_temperature)  # type: ignore[arg-type]
+        log_a = self._log10_shift(0.5 * (t[1:] + t[:-1])) - self._log10_shift(np.asarray(t_p))
+        with np.errstate(over="ignore", under="ignore"):
+            dxi = np.diff(tt) / 10.0**log_a
+        return fictive_temperature(t, dxi, *spectrum)
 
     @property
     def thermal_diffusivity(self) -> float:

@@ -15,7 +15,8 @@ Pipeline, one concept per module:
 * :mod:`.results` -- F_N, b, pressures, profiles, equilibrium checks (:func:`extract`);
 * :mod:`.maps` -- characteristic maps (:func:`compute_map`, :func:`load_map`, :class:`SealMap`);
 * :mod:`.case`, :mod:`.run` -- case files and the orchestration used by the CLI;
-* :mod:`.analytic` -- Hertz line contact for checks.
+* :mod:`.analytic` -- Hertz line contact for checks;
+* :mod:`.fingerprint` -- version and fingerprint of the FE model (part of map cache keys).
 """
 
 import importlib

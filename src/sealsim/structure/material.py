@@ -47,12 +47,19 @@ References
 from __future__ import annotations
 
 import math
+import os
 import warnings
 from dataclasses import dataclass, field
 
 import numpy as np
 
 from sealsim.errors import InputError
+from sealsim.properties.elastomers import (
+    TEMPERATURE_SCALINGS,
+    entropic_modulus,
+    fictive_temperature_step,
+    thermal_strain,
+)
 
 __all__ = [
     "HyperelasticSealMaterial",
@@ -65,8 +72,13 @@ __all__ = [
 ]
 
 
-def thermal_volume_ratio(temperature, reference_temperature, expansion):
-    r"""Stress-free volume ratio of free thermal expansion, :math:`(1 + \alpha\,\Delta T)^3`.
+def thermal_volume_ratio(temperature, reference_temperature, expansion, glassy_expansion=None,
+                         fictive_temperature=None):
+    r"""Stress-free volume ratio of free thermal expansion, :math:`(1 + \varepsilon_{th})^3`.
+
+    ε_th = α ΔT in the rubber; with a glassy coefficient and a fictive temperature T_f the
+    strain of :func:`sealsim.properties.elastomers.thermal_strain`,
+    α_g (T − T_0) + (α − α_g)(T_f − T_0).
 
     Parameters
     ----------
@@ -75,7 +87,11 @@ def thermal_volume_ratio(temperature, reference_temperature, expansion):
     reference_temperature : float
         T_0 [K] at which the seal geometry is given (stress-free, J_th = 1).
     expansion : float
-        Linear coefficient of thermal expansion α [1/K].
+        Linear coefficient of thermal expansion of the rubber α [1/K].
+    glassy_expansion : float, optional
+        α_g [1/K] of the glass (default α).
+    fictive_temperature : float or array_like, optional
+        T_f [K] (default T: equilibrium).
 
     Returns
     -------
@@ -87,7 +103,9 @@ def thermal_volume_ratio(temperature, reference_temperature, expansion):
     >>> round(thermal_volume_ratio(373.15, 293.15, 2e-4), 6)
     1.048772
     """
-    ratio = (1.0 + expansion * (np.asarray(temperature, dtype=float) - reference_temperature)) ** 3
+    strain = thermal_strain(temperature, reference_temperature, expansion, glassy_expansion,
+                            fictive_temperature)
+    ratio = (1.0 + np.asarray(strain)) ** 3
     return float(ratio) if np.ndim(ratio) == 0 else ratio
 
 
@@ -167,6 +185,167 @@ def _mr_tangent(F, c10, c01):
     return A
 
 
+# compiled kernels: the same equations point by point (numba, cached on disk); the einsum
+# functions above are the reference they are tested against and the fallback without numba
+try:  # pragma: no cover - depends on the environment
+    import numba
+except ImportError:  # pragma: no cover
+    numba = None
+
+
+def _point_kinematics(F, C, b, iFT):
+    """C = F^T F, b = F F^T and F^-T of one 3×3 F (written into C, b, iFT); (I1, I2, J)."""
+    for i in range(3):
+        for j in range(3):
+            c = 0.0
+            d = 0.0
+            for k in range(3):
+                c += F[k, i] * F[k, j]
+                d += F[i, k] * F[j, k]
+            C[i, j] = c
+            b[i, j] = d
+    I1 = C[0, 0] + C[1, 1] + C[2, 2]
+    trCC = 0.0
+    for i in range(3):
+        for j in range(3):
+            trCC += C[i, j] * C[j, i]
+    I2 = 0.5 * (I1 * I1 - trCC)
+    # cofactor matrix = J F^-T
+    iFT[0, 0] = F[1, 1] * F[2, 2] - F[1, 2] * F[2, 1]
+    iFT[0, 1] = F[1, 2] * F[2, 0] - F[1, 0] * F[2, 2]
+    iFT[0, 2] = F[1, 0] * F[2, 1] - F[1, 1] * F[2, 0]
+    iFT[1, 0] = F[0, 2] * F[2, 1] - F[0, 1] * F[2, 2]
+    iFT[1, 1] = F[0, 0] * F[2, 2] - F[0, 2] * F[2, 0]
+    iFT[1, 2] = F[0, 1] * F[2, 0] - F[0, 0] * F[2, 1]
+    iFT[2, 0] = F[0, 1] * F[1, 2] - F[0, 2] * F[1, 1]
+    iFT[2, 1] = F[0, 2] * F[1, 0] - F[0, 0] * F[1, 2]
+    iFT[2, 2] = F[0, 0] * F[1, 1] - F[0, 1] * F[1, 0]
+    J = F[0, 0] * iFT[0, 0] + F[0, 1] * iFT[0, 1] + F[0, 2] * iFT[0, 2]
+    for i in range(3):
+        for j in range(3):
+            iFT[i, j] /= J
+    return I1, I2, J
+
+
+def _point_FC(F, C, FC):
+    for i in range(3):
+        for j in range(3):
+            s = 0.0
+            for k in range(3):
+                s += F[i, k] * C[k, j]
+            FC[i, j] = s
+
+
+def _mr_stress_points(F, c10, c01, out):
+    """P (3, 3, n) of the isochoric Mooney–Rivlin energy for F (3, 3, n), point by point."""
+    Fp = np.empty((3, 3))
+    C = np.empty((3, 3))
+    b = np.empty((3, 3))
+    iFT = np.empty((3, 3))
+    FC = np.empty((3, 3))
+    for q in range(F.shape[2]):
+        for i in range(3):
+            for j in range(3):
+                Fp[i, j] = F[i, j, q]
+        I1, I2, J = _point_kinematics(Fp, C, b, iFT)
+        j23 = J ** (-2.0 / 3.0)
+        j43 = j23 * j23
+        _point_FC(Fp, C, FC)
+        for i in range(3):
+            for j in range(3):
+                P = c10 * j23 * (2.0 * Fp[i, j] - (2.0 / 3.0) * I1 * iFT[i, j])
+                if c01 != 0.0:
+                    dI2 = 2.0 * (I1 * Fp[i, j] - FC[i, j])
+                    P += c01 * j43 * (dI2 - (4.0 / 3.0) * I2 * iFT[i, j])
+                out[i, j, q] = P
+    return out
+
+
+def _mr_tangent_points(F, c10, c01, out):
+    """dP/dF (3, 3, 3, 3, n) for F (3, 3, n), point by point (see :func:`_mr_tangent`)."""
+    Fp = np.empty((3, 3))
+    C = np.empty((3, 3))
+    b = np.empty((3, 3))
+    iFT = np.empty((3, 3))
+    FC = np.empty((3, 3))
+    for q in range(F.shape[2]):
+        for i in range(3):
+            for j in range(3):
+                Fp[i, j] = F[i, j, q]
+        I1, I2, J = _point_kinematics(Fp, C, b, iFT)
+        a10 = c10 * J ** (-2.0 / 3.0)
+        a01 = c01 * J ** (-2.0 / 3.0) * J ** (-2.0 / 3.0)
+        _point_FC(Fp, C, FC)
+        for i in range(3):
+            for j in range(3):
+                B2ij = 2.0 * (I1 * Fp[i, j] - FC[i, j])
+                for k in range(3):
+                    for l in range(3):  # noqa: E741 - index names of the formula
+                        dik = 1.0 if i == k else 0.0
+                        djl = 1.0 if j == l else 0.0
+                        ii = dik * djl
+                        t_tt = iFT[i, j] * iFT[k, l]
+                        t_x = iFT[i, l] * iFT[k, j]
+                        A = a10 * (2.0 * ii - (4.0 / 3.0) * (iFT[i, j] * Fp[k, l]
+                                                             + Fp[i, j] * iFT[k, l])
+                                   + (4.0 / 9.0) * I1 * t_tt + (2.0 / 3.0) * I1 * t_x)
+                        if c01 != 0.0:
+                            B2kl = 2.0 * (I1 * Fp[k, l] - FC[k, l])
+                            dB2 = (4.0 * Fp[i, j] * Fp[k, l] + 2.0 * I1 * ii
+                                   - 2.0 * dik * C[l, j] - 2.0 * Fp[i, l] * Fp[k, j]
+                                   - 2.0 * b[i, k] * djl)
+                            A += a01 * (dB2 - (4.0 / 3.0) * (B2ij * iFT[k, l]
+                                                              + iFT[i, j] * B2kl)
+                                        + (16.0 / 9.0) * I2 * t_tt + (4.0 / 3.0) * I2 * t_x)
+                        out[i, j, k, l, q] = A
+    return out
+
+
+HAVE_COMPILED_TANGENT = numba is not None
+#: Use the compiled kernels when a umat is not told otherwise: numba installed and the
+#: environment variable ``SEALSIM_FE_COMPILED`` not "0" (benchmarks set False for their
+#: baseline, the einsum reference).
+USE_COMPILED = HAVE_COMPILED_TANGENT and os.environ.get("SEALSIM_FE_COMPILED", "1") != "0"
+if HAVE_COMPILED_TANGENT:  # pragma: no branch
+    _point_kinematics = numba.njit(cache=True)(_point_kinematics)
+    _point_FC = numba.njit(cache=True)(_point_FC)
+    _mr_stress_points = numba.njit(cache=True)(_mr_stress_points)
+    _mr_tangent_points = numba.njit(cache=True)(_mr_tangent_points)
+
+
+def _flat_out(out, shape):
+    """``out`` as a flat C-contiguous view of the given shape, or a new array."""
+    if out is not None and out.shape[:-2] + (out.shape[-2] * out.shape[-1],) == shape \
+            and out.flags.c_contiguous and out.dtype == np.float64:
+        return out.reshape(shape)
+    return np.empty(shape)
+
+
+def mr_stress(F, c10, c01, compiled=None, out=None):
+    """First Piola–Kirchhoff stress (3, 3, ...) of the isochoric Mooney–Rivlin energy.
+
+    ``compiled`` (default :data:`USE_COMPILED`) runs the point-by-point kernel, writing into
+    ``out`` if it fits; otherwise the einsum reference :func:`_mr_stress`. Both agree to
+    round-off (tests: 1e-12).
+    """
+    if not (USE_COMPILED if compiled is None else compiled):
+        return _mr_stress(F, c10, c01)
+    shape = F.shape[2:]
+    flat = np.ascontiguousarray(F, dtype=float).reshape(3, 3, -1)
+    res = _flat_out(out if len(shape) == 2 else None, flat.shape)
+    return _mr_stress_points(flat, float(c10), float(c01), res).reshape(3, 3, *shape)
+
+
+def mr_tangent(F, c10, c01, compiled=None, out=None):
+    """dP/dF (3, 3, 3, 3, ...) of the isochoric Mooney–Rivlin energy (see :func:`mr_stress`)."""
+    if not (USE_COMPILED if compiled is None else compiled):
+        return _mr_tangent(F, c10, c01)
+    shape = F.shape[2:]
+    flat = np.ascontiguousarray(F, dtype=float).reshape(3, 3, -1)
+    res = _flat_out(out if len(shape) == 2 else None, (3, 3, 3, 3, flat.shape[2]))
+    return _mr_tangent_points(flat, float(c10), float(c01), res).reshape(3, 3, 3, 3, *shape)
+
+
 class MooneyRivlinIsochoric:
     r"""Isochoric Mooney–Rivlin FElupe umat with analytic stress and tangent.
 
@@ -178,6 +357,8 @@ class MooneyRivlinIsochoric:
     ----------
     c10, c01 : float
         Mooney–Rivlin constants [Pa].
+    compiled : bool, optional
+        Use the compiled kernels or the einsum reference (default :data:`USE_COMPILED`).
 
     Examples
     --------
@@ -187,16 +368,17 @@ class MooneyRivlinIsochoric:
     0.0
     """
 
-    def __init__(self, c10: float, c01: float):
+    def __init__(self, c10: float, c01: float, compiled: bool | None = None):
         self.c10 = float(c10)
         self.c01 = float(c01)
+        self.compiled = compiled
 
-    def gradient(self, x):
+    def gradient(self, x, out=None):
         F, statevars = x[0], x[-1]
-        return [_mr_stress(F, self.c10, self.c01), statevars]
+        return [mr_stress(F, self.c10, self.c01, self.compiled, out), statevars]
 
-    def hessian(self, x):
-        return [_mr_tangent(x[0], self.c10, self.c01)]
+    def hessian(self, x, out=None):
+        return [mr_tangent(x[0], self.c10, self.c01, self.compiled, out)]
 
 
 class ViscoelasticMooneyRivlin:
@@ -214,6 +396,8 @@ class ViscoelasticMooneyRivlin:
         temperature (6 (C10 + C01) = E∞).
     betas : array_like
         Relative branch moduli β_i = E_i / E∞ [-].
+    compiled : bool, optional
+        Compiled kernels or the einsum reference (see :class:`MooneyRivlinIsochoric`).
 
     Examples
     --------
@@ -222,9 +406,10 @@ class ViscoelasticMooneyRivlin:
     (18,)
     """
 
-    def __init__(self, c10: float, c01: float, betas):
+    def __init__(self, c10: float, c01: float, betas, compiled: bool | None = None):
         self.c10 = float(c10)
         self.c01 = float(c01)
+        self.compiled = compiled
         self.betas = np.asarray(betas, dtype=float)
         self.nterms = self.betas.size
         self.xi = np.zeros(self.nterms)  # relaxed nothing: glassy response by default
@@ -244,7 +429,7 @@ class ViscoelasticMooneyRivlin:
     def gradient(self, x):
         F, statevars = x[0], x[-1]
         shape = F.shape[2:]
-        P_inf = _mr_stress(F, self.c10, self.c01)
+        P_inf = mr_stress(F, self.c10, self.c01, self.compiled)
         iF = np.moveaxis(np.linalg.inv(np.moveaxis(F, (0, 1), (-2, -1))), (-2, -1), (0, 1))
         S_new = np.einsum("iK...,Kj...->ij...", iF, P_inf)
         s_old, q_old, decay, half, H, gamma = self._history(statevars, shape)
@@ -257,7 +442,7 @@ class ViscoelasticMooneyRivlin:
         F, statevars = x[0], x[-1]
         shape = F.shape[2:]
         _, _, _, _, H, gamma = self._history(statevars, shape)
-        A = gamma * _mr_tangent(F, self.c10, self.c01)
+        A = gamma * mr_tangent(F, self.c10, self.c01, self.compiled)
         A = A + np.einsum("ik,LJ...->iJkL...", np.eye(3), H)
         return [A]
 
@@ -275,7 +460,9 @@ class HyperelasticSealMaterial:
     bulk_modulus : float or callable
         K [Pa] (constant or function of T).
     thermal_expansion : float
-        Linear CTE α [1/K].
+        Linear CTE α [1/K] of the rubber. This material is the rubbery (equilibrium) state at
+        every temperature: it has no glass transition, in its stiffness or its expansion; use
+        :class:`ViscoelasticSealMaterial` for paths through T_g.
     reference_temperature : float
         T_0 [K]: the geometry is stress-free at this temperature.
     name : str
@@ -328,6 +515,13 @@ class HyperelasticSealMaterial:
         self.volume_ratio = thermal_volume_ratio(temperature, self.reference_temperature,
                                                  self.thermal_expansion)
 
+    def checkpoint(self) -> dict:
+        return {"temperature": self.temperature, "volume_ratio": self.volume_ratio}
+
+    def restore(self, cp: dict) -> None:
+        self.temperature = cp["temperature"]
+        self.volume_ratio = cp["volume_ratio"]
+
     def equilibrium(self) -> HyperelasticSealMaterial:
         return self
 
@@ -352,11 +546,23 @@ class ViscoelasticSealMaterial:
     shift : callable
         log10 a_T(T) relative to ``prony_temperature`` (T [K] → [-]).
     thermal_expansion : float
-        α [1/K].
+        Rubbery (equilibrium) linear CTE α_r [1/K].
     reference_temperature : float
-        T_0 [K] of the stress-free geometry.
+        T_0 [K] of the stress-free geometry (an equilibrium state: T_f = T_0).
     prony_temperature : float
         T_p [K] of the Prony series.
+    glassy_expansion : float, optional
+        Glassy linear CTE α_g [1/K]; default α_r (no glass transition in the expansion).
+
+    Notes
+    -----
+    The free thermal strain follows the state of the rubber: ε_th = α_g (T − T_0) +
+    (α_r − α_g)(T_f − T_0) (:func:`sealsim.properties.elastomers.thermal_strain`), with the
+    fictive temperature T_f relaxing towards T in the same reduced time as the Prony branches,
+    with the normalised Prony weights E_i / Σ E_j
+    (:func:`~sealsim.properties.elastomers.fictive_temperature_step`). Slow cooling above
+    T_g keeps T_f = T (rubbery α_r); when the branches freeze so does T_f, and the glass
+    shrinks with α_g only.
 
     Examples
     --------
@@ -378,7 +584,9 @@ class ViscoelasticSealMaterial:
     reference_temperature: float
     prony_temperature: float
     name: str = "thermo-viscoelastic Mooney-Rivlin"
+    glassy_expansion: float | None = None
     temperature: float = field(init=False, default=float("nan"))
+    fictive_temperature: float = field(init=False, default=float("nan"))
     volume_ratio: float = field(init=False, default=1.0)
     kind: str = field(init=False, default="viscoelastic")
 
@@ -393,7 +601,17 @@ class ViscoelasticSealMaterial:
         _check_constants(self.c10, self.c01, self.bulk_modulus, self.prony_temperature)
         self.umat = ViscoelasticMooneyRivlin(self.c10, self.c01,
                                              self.moduli / self.equilibrium_modulus)
+        if self.glassy_expansion is None:
+            self.glassy_expansion = self.thermal_expansion
+        if not 0.0 <= self.glassy_expansion <= self.thermal_expansion:
+            raise InputError(f"glassy thermal expansion {self.glassy_expansion!r} 1/K must lie "
+                             f"between 0 and the rubbery {self.thermal_expansion!r} 1/K")
+        total = float(self.moduli.sum())
+        self.structural_weights = (self.moduli / total if total > 0
+                                   else np.full(self.moduli.size, 1.0 / self.moduli.size))
+        self.departures = np.zeros(self.moduli.size)  # δ_i [K]: T_f = T − Σ δ_i
         self.temperature = self.reference_temperature
+        self.fictive_temperature = self.reference_temperature
 
     def bulk(self, temperature: float) -> float:
         return float(self.bulk_modulus)
@@ -418,18 +636,37 @@ class ViscoelasticSealMaterial:
         t_mid = 0.5 * (float(temperature) + self.temperature)
         log_a = self.log10_shift(t_mid)
         dt = max(float(time_increment), 0.0)
-        with np.errstate(over="ignore", under="ignore"):
+        with np.errstate(over="ignore", under="ignore", divide="ignore"):
             reduced = dt / 10.0 ** log_a if log_a < 300 else 0.0
-            self.umat.xi = np.minimum(reduced / self.relaxation_times, 700.0)
+            x = reduced / self.relaxation_times
+            self.umat.xi = np.minimum(x, 700.0)
+            self.departures = fictive_temperature_step(
+                self.departures, float(temperature) - self.temperature, x,
+                self.structural_weights)
         self.umat.theta = float(temperature) / self.prony_temperature
         self.temperature = float(temperature)
-        self.volume_ratio = thermal_volume_ratio(temperature, self.reference_temperature,
-                                                 self.thermal_expansion)
+        self.fictive_temperature = self.temperature - float(self.departures.sum())
+        self.volume_ratio = thermal_volume_ratio(
+            temperature, self.reference_temperature, self.thermal_expansion,
+            self.glassy_expansion, self.fictive_temperature)
+
+    def checkpoint(self) -> dict:
+        """The state that :meth:`set_state` changes (restored when an increment is cut back)."""
+        return {"temperature": self.temperature, "departures": self.departures.copy(),
+                "fictive_temperature": self.fictive_temperature,
+                "volume_ratio": self.volume_ratio}
+
+    def restore(self, cp: dict) -> None:
+        self.temperature = cp["temperature"]
+        self.departures = cp["departures"].copy()
+        self.fictive_temperature = cp["fictive_temperature"]
+        self.volume_ratio = cp["volume_ratio"]
 
     def equilibrium(self) -> HyperelasticSealMaterial:
         """The fully relaxed (long-time) hyperelastic material (for characteristic maps)."""
         tp = self.prony_temperature
-        return HyperelasticSealMaterial(lambda T: self.c10 * T / tp, lambda T: self.c01 * T / tp,
+        return HyperelasticSealMaterial(lambda T: entropic_modulus(self.c10, T, tp),
+                                        lambda T: entropic_modulus(self.c01, T, tp),
                                         self.bulk_modulus, self.thermal_expansion,
                                         self.reference_temperature, name=self.name + " (relaxed)")
 
@@ -461,40 +698,34 @@ def material_from_elastomer(elastomer, model: str = "hyperelastic", *,
     reference_temperature : float
         T_0 [K] at which the geometry is stress-free (installation temperature).
     temperature_scaling : {"entropic", "modulus", "none"}
-        Hyperelastic only.  ``"entropic"`` (default): C(T) = C(T_ref)·T/T_ref, the
-        equilibrium modulus of rubber elasticity, G = n·k·T (Treloar, *The Physics of Rubber
-        Elasticity*, 1975, ch. 4).  A seal at rest is in (near) equilibrium, which is also what
-        seed 001 assumes for slow cooling above Tg; valid above ≈ T_g + 30 K, below that use
-        ``model = "viscoelastic"``.  ``"modulus"``: scaled with the catalogue's E(T) at
-        ``frequency``, which includes the viscoelastic softening of the glass-transition tail
-        (a dynamic, not a sealing-force, property).  ``"none"``: constant.
+        Hyperelastic only: C(T) = C(T_ref)·r(T) with r from
+        :meth:`~sealsim.properties.elastomers.Elastomer.modulus_ratio` (the same law as the
+        analytic contact estimate of :mod:`sealsim.pneumatic.contact_maps`).
+        ``"entropic"`` (default): r = T/T_ref, the equilibrium modulus of rubber elasticity,
+        G = n·k·T (Treloar, *The Physics of Rubber Elasticity*, 1975, ch. 4). A seal held at
+        constant squeeze relaxes to it, which is also what seed 001 assumes for slow cooling
+        above Tg; valid above ≈ T_g + 30 K, below that use ``model = "viscoelastic"``.
+        ``"modulus"``: the catalogue's E(T) at ``frequency``, which includes the viscoelastic
+        softening of the glass-transition tail (the dynamic modulus at that rate, not the
+        stiffness of a long-held squeeze). ``"none"``: constant.
     frequency : float, optional
         Frequency [Hz] of E(T) for ``"modulus"`` (default: the catalogue's test frequency).
     """
     e = elastomer
     if model == "hyperelastic":
-        if temperature_scaling == "entropic":
-            def c10(T):
-                return e.c10 * T / e.reference_temperature
-
-            def c01(T):
-                return e.c01 * T / e.reference_temperature
-        elif temperature_scaling == "modulus":
-            def consts(T, i):
-                with warnings.catch_warnings():
-                    warnings.simplefilter("ignore")
-                    return float(e.mooney_rivlin(T, frequency)[i])
-
-            def c10(T):
-                return consts(T, 0)
-
-            def c01(T):
-                return consts(T, 1)
-        elif temperature_scaling == "none":
-            c10, c01 = e.c10, e.c01
-        else:
+        if temperature_scaling not in TEMPERATURE_SCALINGS:
             raise InputError(f"material.temperature_scaling: {temperature_scaling!r} is not "
                              "allowed; choose 'entropic', 'modulus' or 'none'")
+
+        def stiffness(T):
+            return e.modulus_ratio(T, scaling=temperature_scaling, frequency=frequency)
+
+        def c10(T):
+            return e.c10 * stiffness(T)
+
+        def c01(T):
+            return e.c01 * stiffness(T)
+
         return HyperelasticSealMaterial(c10, c01, e.bulk_modulus, e.thermal_expansion,
                                         reference_temperature, name=e.name)
     if model == "viscoelastic":
@@ -513,6 +744,7 @@ def material_from_elastomer(elastomer, model: str = "hyperelastic", *,
                 return float(e.log10_shift_factor(T, reference_temperature=tp))
         return ViscoelasticSealMaterial(c10, c01, e.bulk_modulus, e_i, tau_i, e_inf, shift,
                                         e.thermal_expansion, reference_temperature, tp,
-                                        name=e.name + " (Prony/WLF)")
+                                        name=e.name + " (Prony/WLF)",
+                                        glassy_expansion=e.glassy_expansion)
     raise InputError(f"material.model: {model!r} is not allowed; choose 'hyperelastic' or "
                      "'viscoelastic'")

@@ -1,0 +1,55 @@
+"""Version and fingerprint of the FE seal model, for caches of its results.
+
+A characteristic map cached under a hash of its structure case alone would survive a change
+of the model that computed it (a new material law, a solver fix) and silently feed stale forces
+to the pneumatic model. :func:`model_fingerprint` is therefore part of every cache key of FE
+results (:func:`sealsim.pneumatic.contact_maps.build_or_load_fe_map`): it combines
+
+* :data:`FE_MODEL_VERSION`, raised by hand whenever a change is *meant* to change FE results
+  (physics or numerics), so the intent is recorded in the history;
+* the FElupe version;
+* the SHA-256 of the source of everything a map's values depend on: the modules of
+  :mod:`sealsim.structure` and :mod:`sealsim.properties.elastomers`, the catalogue reader
+  (``catalogue.py``, where present) and ``data/elastomers.toml`` -- so that even a change
+  that forgot to raise the version gives a new key (a cosmetic edit costs one rebuild of the
+  map, which is cheap compared with a wrong one).
+"""
+
+from __future__ import annotations
+
+import functools
+import hashlib
+from importlib import resources
+
+__all__ = ["FE_MODEL_VERSION", "model_fingerprint"]
+
+#: Version of the FE model's results. History: 1 = issue 5 (hyperelastic/viscoelastic
+#: Mooney-Rivlin, rubbery thermal expansion); 2 = glassy thermal expansion through the fictive
+#: temperature, one modulus-temperature law for FE and analytic maps (issue 10, findings 7/8).
+FE_MODEL_VERSION = 2
+
+
+@functools.lru_cache(maxsize=1)
+def model_fingerprint() -> str:
+    """Hex digest (16 characters) identifying the FE model that computes maps.
+
+    Examples
+    --------
+    >>> len(model_fingerprint())
+    16
+    """
+    import felupe
+
+    digest = hashlib.sha256(f"sealsim FE model {FE_MODEL_VERSION}; felupe {felupe.__version__}"
+                            .encode())
+    structure = resources.files("sealsim.structure")
+    properties = resources.files("sealsim.properties")
+    # the elastomer module and its catalogue reader (where present) and data
+    for folder, wanted in ((structure, None), (properties, {"elastomers.py", "catalogue.py"}),
+                           (properties / "data", {"elastomers.toml"})):
+        for entry in sorted(folder.iterdir(), key=lambda e: e.name):
+            if entry.is_file() and (entry.name in wanted if wanted else
+                                    entry.name.endswith(".py")):
+                digest.update(entry.name.encode())
+                digest.update(entry.read_bytes())
+    return digest.hexdigest()[:16]
