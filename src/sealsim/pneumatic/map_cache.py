@@ -4,7 +4,9 @@ A seal whose contact map comes from a structure case (``map = { structure_case =
 gets its FE map built once and stored as ``<case stem>-<hash16>.nc`` in the cache folder
 (:func:`~sealsim.pneumatic.contact_maps.default_cache_dir`: ``$SEALSIM_CACHE/maps``, else
 ``$XDG_CACHE_HOME/sealsim/maps``, else ``~/.cache/sealsim/maps``); the hash is that of the
-resolved structure case, so a changed case gets a new file and old ones are never read again.
+resolved structure case and of the FE model's fingerprint
+(:func:`sealsim.structure.fingerprint.model_fingerprint`), so a changed case or a changed FE
+model gets a new file and old ones are never read again (``sealsim cache clear`` removes them).
 Maps are a few hundred kB each; removing one only means it is built again when needed.
 
 Only files this cache writes are touched: ``*.nc`` maps and the temporary files of
