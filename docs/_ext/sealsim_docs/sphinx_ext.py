@@ -1,0 +1,88 @@
+"""Sphinx extension: docstrings written for engineers read as they are meant.
+
+* ``|v|`` in a docstring is an absolute value, not a reST substitution: bars in prose are
+  escaped before the docstring is parsed (not in literals, math, code or doctest blocks).
+* An ambiguous short name resolves the way Python does.  A docstring in ``sealsim.pneumatic.simulation`` that says ``seals : list of Seal`` means the
+``Seal`` that module imports (``sealsim.pneumatic.seals.Seal``), not the rotary case's
+``sealsim.rotary.case.Seal``.  Sphinx's fuzzy search finds both and warns; this picks the
+object the name is bound to in the referring module, else the one sharing the longest
+package prefix with it.
+"""
+
+from __future__ import annotations
+
+import re
+import sys
+
+from sphinx.domains.python import PythonDomain
+
+_find_obj = PythonDomain.find_obj
+
+
+def _bound_name(modname: str | None, name: str) -> str | None:
+    module = sys.modules.get(modname or "")
+    obj = getattr(module, name.split(".")[-1], None) if module else None
+    if obj is None or not hasattr(obj, "__qualname__"):
+        return None
+    return f"{getattr(obj, '__module__', '')}.{obj.__qualname__}"
+
+
+def _common_prefix(a: str, b: str) -> int:
+    n = 0
+    for x, y in zip(a.split("."), b.split(".")):
+        if x != y:
+            break
+        n += 1
+    return n
+
+
+def find_obj(self, env, modname, classname, name, type, searchmode=0):  # noqa: A002
+    matches = _find_obj(self, env, modname, classname, name, type, searchmode)
+    if len(matches) <= 1 or not modname:
+        return matches
+    bound = _bound_name(modname, name)
+    exact = [m for m in matches if m[0] == bound]
+    if len(exact) == 1:
+        return exact
+    best = max(_common_prefix(modname, m[0]) for m in matches)
+    closest = [m for m in matches if _common_prefix(modname, m[0]) == best]
+    return closest if len(closest) == 1 else matches
+
+
+_BACKTICKS = re.compile(r"(`+[^`]*`+)")
+
+
+def escape_bars(lines: list[str]) -> None:
+    """Escape ``|`` in prose lines in place; blocks (``::``, directives, doctests) are kept."""
+    block_indent = None   # indentation of the line that opened a literal/directive block
+    in_doctest = False
+    for k, line in enumerate(lines):
+        stripped = line.strip()
+        indent = len(line) - len(line.lstrip())
+        if block_indent is not None:
+            if not stripped or indent > block_indent:
+                continue
+            block_indent = None
+        if in_doctest:
+            if stripped:
+                continue
+            in_doctest = False
+        if stripped.startswith(">>>"):
+            in_doctest = True
+            continue
+        if stripped.endswith("::") or stripped.startswith(".. "):
+            block_indent = indent
+        if "|" in line and not stripped.startswith(".. "):
+            parts = _BACKTICKS.split(line)
+            lines[k] = "".join(part.replace("|", "\\|") if i % 2 == 0 else part
+                               for i, part in enumerate(parts))
+
+
+def _process_docstring(app, what, name, obj, options, lines):
+    escape_bars(lines)
+
+
+def setup(app):
+    PythonDomain.find_obj = find_obj
+    app.connect("autodoc-process-docstring", _process_docstring)
+    return {"parallel_read_safe": True, "parallel_write_safe": True}
