@@ -64,9 +64,9 @@ myst_heading_anchors = 3
 sphinx_gallery_conf = {
     "examples_dirs": "_generated/gallery_src",
     "gallery_dirs": "_generated/gallery",
-    # plot_*.py scripts run at build time (seconds each); iso_comparison.py prints the ISO/TR
-    # 14179-2 table of the validation page.  Any other script is shown without running it.
-    "filename_pattern": r"/(plot_[^/]*|iso_comparison)\.py$",
+    # plot_*.py scripts run at build time (seconds each); any other script is shown with its
+    # code only (iso_comparison.py runs for the validation page's table)
+    "filename_pattern": r"/plot_[^/]*\.py$",
     "ignore_pattern": r"__init__\.py",
     # from the properties a model uses to the models built on them; new topics follow
     "subsection_order": [f"_generated/gallery_src/{topic}" for topic in (

@@ -8,8 +8,9 @@ an earlier build survives):
 * ``api/``: one autodoc page per module (:mod:`.api_reference`);
 * ``gallery_src/``: the gallery's source tree (:mod:`.gallery`), which sphinx-gallery runs
   into ``gallery/``;
-* ``readme_results.md`` and ``tests.rst``: material of the validation page
-  (:mod:`.validation`).
+* ``readme_results.md``, ``live_tables.rst`` and ``tests.rst``: material of the validation page
+  (:mod:`.validation`);
+* ``one_call.rst``: the functions of the package's top level, for getting started.
 """
 
 from __future__ import annotations
@@ -54,5 +55,9 @@ def generate(docs_dir: Path) -> dict[str, float]:
     (out / "readme_results.md").write_text(validation.readme_markdown(repo / "README.md"),
                                            encoding="utf-8")
     (out / "tests.rst").write_text(validation.test_catalogue(repo / "tests"), encoding="utf-8")
-    lap("api, gallery sources, validation")
+    lap("api, gallery sources, README, tests")
+    (out / "live_tables.rst").write_text(validation.live_tables(repo), encoding="utf-8")
+    lap("live validation tables")
+    (out / "one_call.rst").write_text(api_reference.one_call_section(
+        discover.one_call_functions()), encoding="utf-8")
     return timings

@@ -108,3 +108,16 @@ def write(out_dir: Path, modules: list[str]) -> None:
         "is documented in the module that defines it; packages list what they re-export.\n\n"
         ".. toctree::\n   :maxdepth: 2\n\n" + "".join(f"   {m}\n" for m in top),
         encoding="utf-8")
+
+
+def one_call_section(functions: list[tuple[str, object]]) -> str:
+    """A table of the top-level functions (empty text when the package exports none)."""
+    if not functions:
+        return ""
+    rows = [[f":py:func:`sealsim.{name} <{f.__module__}.{f.__qualname__}>`",
+             rst.escape((inspect.getdoc(f) or "").split("\n\n")[0].replace("\n", " "))]
+            for name, f in functions]
+    return (rst.title("One call from Python", "-") +
+            "\nThese functions answer a question in one call, with quantities as strings "
+            "with units:\n\n" + rst.list_table(["Function", "What it returns"], rows,
+                                                widths=[30, 70]))

@@ -22,7 +22,7 @@ from pydantic import BaseModel, TypeAdapter, WithJsonSchema
 from pydantic.fields import FieldInfo
 
 from . import rst
-from .discover import models_in
+from .discover import case_command, models_in
 
 # annotated-types constraint -> (its attribute, how it reads)
 _BOUNDS = {"Gt": ("gt", ">"), "Ge": ("ge", ">="), "Lt": ("lt", "<"), "Le": ("le", "<="),
@@ -83,14 +83,18 @@ def type_text(annotation) -> tuple[str, str]:
     quantity = _quantity(annotation)
     if quantity is not None:
         return _split_quantity(quantity)
-    annotation = _strip_annotated(annotation)
+    if typing.get_origin(annotation) is Annotated:  # e.g. Annotated[int, Field(ge=1)]
+        base, *metadata = typing.get_args(annotation)
+        text, bounds = type_text(base)
+        return text, ", ".join(b for b in (bounds, _bounds_text(metadata)) if b)
     members = [m for m in _union_members(annotation) if not _is_none(m)]
     if len(members) > 1:
         if all(models_in(m) and isinstance(_strip_annotated(m), type) for m in members):
             return "table (one of the forms below)", ""
         texts = [type_text(m) for m in members]
         return " or ".join(t for t, _ in texts), "; ".join(b for _, b in texts if b)
-    annotation = members[0] if members else annotation
+    if members and members[0] is not annotation:
+        return type_text(members[0])  # Optional[X]: X (the default says "not set")
     origin = typing.get_origin(annotation)
     if origin is Literal:
         return " | ".join(rst.literal(toml_value(v)) for v in typing.get_args(annotation)), ""
@@ -111,15 +115,24 @@ def type_text(annotation) -> tuple[str, str]:
     return rst.escape(getattr(annotation, "__name__", str(annotation))), ""
 
 
-def _constraints(field: FieldInfo) -> str:
+def _annotation(field: FieldInfo):
+    """The field's full type: pydantic keeps ``Annotated`` metadata apart from the type."""
+    return Annotated[(field.annotation, *field.metadata)] if field.metadata else field.annotation
+
+
+def _bounds_text(metadata) -> str:
+    """``>= 1, <= 1000`` from annotated-types constraints (also inside a ``Field(...)``)."""
     parts = []
-    for meta in field.metadata:
+    for meta in metadata:
+        if isinstance(meta, FieldInfo):
+            parts.append(_bounds_text(meta.metadata))
+            continue
         kind = type(meta).__name__
         if kind in _BOUNDS:
             attribute, word = _BOUNDS[kind]
             value = getattr(meta, attribute)
             parts.append(f"{word} {value:g}" if isinstance(value, float) else f"{word} {value}")
-    return ", ".join(parts)
+    return ", ".join(p for p in parts if p)
 
 
 # -- values -----------------------------------------------------------------------------------
@@ -137,9 +150,7 @@ def default_text(field: FieldInfo) -> str:
         return "not set"
     if isinstance(value, BaseModel):
         return "see its table"
-    annotation = (Annotated[(field.annotation, *field.metadata)] if field.metadata
-                  else field.annotation)
-    dumped = TypeAdapter(annotation).dump_python(value, mode="json")
+    dumped = TypeAdapter(_annotation(field)).dump_python(value, mode="json")
     if dumped in ("", [], {}):
         return rst.literal(toml_value(dumped)) or '``""``'
     return rst.literal(toml_value(dumped))
@@ -211,9 +222,8 @@ def field_rows(model: type[BaseModel]) -> list[list[str]]:
     """Rows (field, type, default, allowed and meaning) of one table."""
     rows = []
     for name, field in model.model_fields.items():
-        kind, bounds = type_text(field.annotation)
-        notes = [b for b in (bounds, _constraints(field)) if b]
-        allowed = rst.escape(", ".join(notes)) if notes else ""
+        kind, bounds = type_text(_annotation(field))
+        allowed = rst.escape(bounds)
         description = rst.escape(field.description) if field.description else ""
         if models_in(field.annotation):
             description = " ".join(x for x in (description, "(see below)") if x)
@@ -232,7 +242,9 @@ def model_page(model: type[BaseModel], examples: list[Path], repo: Path) -> str:
     """The reference page of one case model."""
     full_name = f"{model.__module__}.{model.__name__}"
     out = [f".. _case-{page_name(model)}:\n", rst.title(case_title(model))]
-    out.append(f"Validated by :class:`{full_name}`.\n")
+    command = case_command(model)
+    out.append(f"Validated by :class:`{full_name}`" +
+               (f"; run with {rst.literal(command)}" if command else "") + ".\n")
     doc = _docstring(model)
     if doc:
         out.append(rst.paragraph(doc) + "\n")
@@ -271,9 +283,9 @@ def index_page(models: list[type[BaseModel]], examples: dict[type[BaseModel], li
         doc = _docstring(model).split("\n\n")[0].replace("\n", " ")
         files = ", ".join(rst.literal(p.relative_to(repo).as_posix()) for p in examples[model])
         rows.append([f":doc:`/_generated/cases/{page_name(model)}`", rst.escape(doc),
-                     files or "--"])
-    out = [rst.list_table(["Case file", "What it describes", "Examples"], rows,
-                          widths=[22, 38, 40]),
+                     rst.literal(case_command(model) or "") or "--", files or "--"])
+    out = [rst.list_table(["Case file", "What it describes", "Command", "Examples"], rows,
+                          widths=[18, 32, 18, 32]),
            ".. toctree::\n   :hidden:\n\n" + "\n".join(f"   /_generated/cases/{page_name(m)}"
                                                    for m in models)]
     return "\n".join(out) + "\n"

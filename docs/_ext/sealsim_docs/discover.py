@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import importlib
 import pkgutil
+import sys
 import typing
 import warnings
 from pathlib import Path
@@ -42,6 +43,13 @@ def models_in(annotation) -> list[type[BaseModel]]:
     return [m for arg in typing.get_args(annotation) for m in models_in(arg)]
 
 
+def _is_module_attribute(cls: type) -> bool:
+    """Defined at the top of a sealsim module (not in a doctest or a function)."""
+    module = sys.modules.get(cls.__module__)
+    return (cls.__module__.startswith("sealsim")
+            and getattr(module, cls.__qualname__, None) is cls)
+
+
 def case_models() -> list[type[BaseModel]]:
     """Every top-level case model: a public ``CaseModel`` no other model uses as a field type.
 
@@ -55,8 +63,30 @@ def case_models() -> list[type[BaseModel]]:
     models = _subclasses(CaseModel)
     used = {sub for m in models for f in m.model_fields.values() for sub in models_in(f.annotation)}
     roots = [m for m in models
-             if m not in used and not m.__name__.startswith("_") and not m.__subclasses__()]
+             if m not in used and not m.__name__.startswith("_") and not m.__subclasses__()
+             and _is_module_attribute(m)]
     return sorted(roots, key=lambda m: (m.__module__, m.__name__))
+
+
+def case_command(model: type[BaseModel]) -> str | None:
+    """The command that runs a case model, if ``sealsim.cases.CASE_KINDS`` registers it."""
+    kinds = getattr(importlib.import_module("sealsim.cases"), "CASE_KINDS", ())
+    name = f"{model.__module__}.{model.__qualname__}"
+    return next((kind.command for kind in kinds if getattr(kind, "model", None) == name), None)
+
+
+def one_call_functions() -> list[tuple[str, object]]:
+    """Functions exported by the package itself (``sealsim.NAME``), in ``__all__`` order."""
+    import inspect
+
+    import sealsim
+
+    found = []
+    for name in getattr(sealsim, "__all__", []):
+        obj = getattr(sealsim, name, None)
+        if inspect.isfunction(obj):
+            found.append((name, obj))
+    return found
 
 
 def example_files(examples_dir: Path, suffix: str) -> list[Path]:

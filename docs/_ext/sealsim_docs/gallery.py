@@ -24,7 +24,7 @@ from pydantic import BaseModel
 
 from . import rst
 from .case_reference import page_name
-from .discover import example_files
+from .discover import case_command, example_files
 
 HEADER = "GALLERY_HEADER.rst"
 
@@ -84,12 +84,13 @@ def section_header(topic: str, intro: str, case_files: list[Path],
         for path in case_files:
             models = classified.get(path, [])
             kind = ", ".join(f":doc:`{m.__name__} </_generated/cases/{page_name(m)}>`"
+                             + (f", run with {rst.literal(c)}" if (c := case_command(m)) else "")
                              for m in models) or "--"
             name = path.relative_to(examples_dir.parent).as_posix()
             rows.append([f":download:`{path.name} </../{name}>`", kind,
                          rst.escape(first_comment(path))])
-        out.append(f"Case files in ``examples/{topic}/`` (run them with the command of their "
-                   "case type, see :ref:`cli-reference`):\n")
+        out.append(f"Case files in ``examples/{topic}/``; the page of each case type lists "
+                   "its fields, :ref:`cli-reference` the commands:\n")
         out.append(rst.list_table(["File", "Case type", "What it shows"], rows,
                                   widths=[22, 18, 60]))
     return "\n".join(out) + "\n"

@@ -2,6 +2,9 @@
 
 * ``|v|`` in a docstring is an absolute value, not a reST substitution: bars in prose are
   escaped before the docstring is parsed (not in literals, math, code or doctest blocks).
+* A reference by a public import path (``sealsim.properties.get_oil``) links to the object's
+  documentation in the module that defines it, so references survive moving code between
+  modules as long as the public name stays.
 * An ambiguous short name resolves the way Python does.  A docstring in ``sealsim.pneumatic.simulation`` that says ``seals : list of Seal`` means the
 ``Seal`` that module imports (``sealsim.pneumatic.seals.Seal``), not the rotary case's
 ``sealsim.rotary.case.Seal``.  Sphinx's fuzzy search finds both and warns; this picks the
@@ -11,6 +14,7 @@ package prefix with it.
 
 from __future__ import annotations
 
+import importlib
 import re
 import sys
 
@@ -78,6 +82,36 @@ def escape_bars(lines: list[str]) -> None:
                                for i, part in enumerate(parts))
 
 
+def _import_dotted(path: str):
+    """The object a dotted path names (``sealsim.properties.get_oil``), or None."""
+    parts = path.split(".")
+    for cut in range(len(parts), 0, -1):
+        try:
+            obj = importlib.import_module(".".join(parts[:cut]))
+        except ImportError:
+            continue
+        try:
+            for attr in parts[cut:]:
+                obj = getattr(obj, attr)
+        except AttributeError:
+            return None
+        return obj
+    return None
+
+
+def _resolve_public_path(app, env, node, contnode):
+    """``missing-reference``: follow a re-export to where the object is documented."""
+    target = node.get("reftarget", "")
+    if node.get("refdomain") != "py" or not target.startswith("sealsim."):
+        return None
+    obj = _import_dotted(target)
+    module, qualname = getattr(obj, "__module__", None), getattr(obj, "__qualname__", None)
+    if not (module and qualname) or f"{module}.{qualname}" == target:
+        return None
+    return env.get_domain("py").resolve_xref(env, node["refdoc"], app.builder, node["reftype"],
+                                            f"{module}.{qualname}", node, contnode)
+
+
 def _process_docstring(app, what, name, obj, options, lines):
     escape_bars(lines)
 
@@ -85,4 +119,5 @@ def _process_docstring(app, what, name, obj, options, lines):
 def setup(app):
     PythonDomain.find_obj = find_obj
     app.connect("autodoc-process-docstring", _process_docstring)
+    app.connect("missing-reference", _resolve_public_path)
     return {"parallel_read_safe": True, "parallel_write_safe": True}

@@ -3,6 +3,8 @@
 * The README is where measured numbers are published, each with the command that produced
   it; its sections whose heading names validation, calibration or benchmarks are copied into
   the documentation unchanged (Markdown, rendered by MyST), so the two cannot disagree.
+* Fast scripts of the repository that print a Markdown table of model against reference
+  (:data:`LIVE_TABLES`) are run, and their table shown as computed by today's code.
 * The test catalogue lists every test module with its docstring (what it checks against) and
   the number of tests, read from the files without running them.
 """
@@ -10,10 +12,18 @@
 from __future__ import annotations
 
 import ast
+import contextlib
+import io
 import re
+import runpy
 from pathlib import Path
 
 from . import rst
+
+#: scripts run at build time: (path in the repository, what the table compares); each prints a
+#: Markdown table and takes seconds
+LIVE_TABLES = [("examples/rotary/iso_comparison.py",
+                "Lip seal power loss: sealsim against ISO/TR 14179-2")]
 
 #: README sections (``## ...`` headings) copied into the validation page
 SECTION_PATTERN = re.compile(r"validation|calibration|benchmark|accuracy", re.IGNORECASE)
@@ -60,3 +70,19 @@ def test_catalogue(tests_dir: Path) -> str:
     rows = [[rst.literal(name), rst.paragraph(doc.split("\n\n")[0]), str(count)]
             for name, doc, count in test_modules(tests_dir)]
     return rst.list_table(["Test module", "What it checks", "Tests"], rows, widths=[25, 65, 10])
+
+
+def live_table(repo: Path, script: str, caption: str) -> str:
+    """Run ``script`` (as ``python script`` would) and return its Markdown table as reST."""
+    output = io.StringIO()
+    with contextlib.redirect_stdout(output):
+        runpy.run_path(str(repo / script), run_name="__main__")
+    header, rows = rst.markdown_table(output.getvalue())
+    return (f"{rst.escape(caption)}, computed when this page was built by "
+            f"``python {script}``:\n\n" +
+            rst.list_table([rst.escape(h) for h in header],
+                           [[rst.escape(c) for c in row] for row in rows]))
+
+
+def live_tables(repo: Path) -> str:
+    return "\n".join(live_table(repo, script, caption) for script, caption in LIVE_TABLES)
