@@ -97,3 +97,5 @@ html_theme_options = {
 }
 html_sidebars = {"**": ["sidebar-nav-bs"], "index": []}
 html_show_sourcelink = False
+# quotes and ellipses only: "--force" in help texts and docstrings stays two hyphens
+smartquotes_action = "qe"

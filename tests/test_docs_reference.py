@@ -67,4 +67,5 @@ def test_registry_of_case_kinds_agrees_with_the_walk(roots):
         pytest.skip("sealsim.cases has no CASE_KINDS registry")
     registered = {kind.model for kind in kinds}
     walked = {f"{m.__module__}.{m.__qualname__}" for m in roots}
-    assert registered == walked
+    # every registered kind has its page; the walk may find more documents (e.g. catalogues)
+    assert registered <= walked, f"registered but not found: {sorted(registered - walked)}"

@@ -82,8 +82,9 @@ def module_page(name: str, children: list[str]) -> str:
     if own:
         out.append(rst.title("Reference", "-"))
     for member, directive in own:
-        options = "   :members:\n   :show-inheritance:\n" if directive in (
-            "autoclass", "autoexception") else ""
+        options = ("   :members:\n   :show-inheritance:\n"
+                   "   :exclude-members: model_config, model_fields, model_computed_fields\n"
+                   if directive in ("autoclass", "autoexception") else "")
         out.append(f".. {directive}:: {name}.{member}\n{options}")
     return "\n".join(out) + "\n"
 

@@ -32,8 +32,7 @@ _BOUNDS = {"Gt": ("gt", ">"), "Ge": ("ge", ">="), "Lt": ("lt", "<"), "Le": ("le"
 def case_title(model: type[BaseModel]) -> str:
     """``RotaryCase`` -> ``Rotary case``; ``FrictionFitCase`` -> ``Friction fit case``."""
     words = re.findall(r"[A-Z]+(?![a-z])|[A-Z][a-z0-9]*|[a-z0-9]+", model.__name__)
-    text = " ".join([words[0]] + [w if w.isupper() else w.lower() for w in words[1:]])
-    return text if text.lower().endswith("case") else text + " case"
+    return " ".join([words[0]] + [w if w.isupper() else w.lower() for w in words[1:]])
 
 
 def page_name(model: type[BaseModel]) -> str:
@@ -243,7 +242,7 @@ def model_page(model: type[BaseModel], examples: list[Path], repo: Path) -> str:
     full_name = f"{model.__module__}.{model.__name__}"
     out = [f".. _case-{page_name(model)}:\n", rst.title(case_title(model))]
     command = case_command(model)
-    out.append(f"Validated by :class:`{full_name}`" +
+    out.append(f"Validated by :class:`{full_name}` (module :mod:`{model.__module__}`)" +
                (f"; run with {rst.literal(command)}" if command else "") + ".\n")
     doc = _docstring(model)
     if doc:

@@ -64,15 +64,21 @@ def add_title(script: Path) -> None:
             return
 
 
-def first_comment(path: Path) -> str:
-    """The first sentence-line of a case file's leading comment block, or its title."""
+def describe_case_file(path: Path) -> str:
+    """What a case file shows: its ``title``, else the first paragraph of its comment header."""
+    from sealsim.cases import load_toml
+
+    title = load_toml(path).get("title")
+    if isinstance(title, str) and title.strip():
+        return title.strip()
+    paragraph = []
     for line in path.read_text(encoding="utf-8").splitlines():
         text = line.strip()
-        if text.startswith("#") and text.strip("# "):
-            return text.lstrip("#").strip()
-        if text and not text.startswith("#"):
+        if not text.startswith("#") or (not text.strip("# ") and paragraph):
             break
-    return ""
+        if text.strip("# "):
+            paragraph.append(text.lstrip("#").strip())
+    return " ".join(paragraph).rstrip(":")
 
 
 def section_header(topic: str, intro: str, case_files: list[Path],
@@ -88,7 +94,7 @@ def section_header(topic: str, intro: str, case_files: list[Path],
                              for m in models) or "--"
             name = path.relative_to(examples_dir.parent).as_posix()
             rows.append([f":download:`{path.name} </../{name}>`", kind,
-                         rst.escape(first_comment(path))])
+                         rst.escape(describe_case_file(path))])
         out.append(f"Case files in ``examples/{topic}/``; the page of each case type lists "
                    "its fields, :ref:`cli-reference` the commands:\n")
         out.append(rst.list_table(["File", "Case type", "What it shows"], rows,

@@ -1,5 +1,7 @@
 """Sphinx extension: docstrings written for engineers read as they are meant.
 
+* A constant's doc-comment is shown as written (napoleon does not parse it).
+* A pydantic model is shown without its constructor signature (the field validators).
 * ``|v|`` in a docstring is an absolute value, not a reST substitution: bars in prose are
   escaped before the docstring is parsed (not in literals, math, code or doctest blocks).
 * A reference by a public import path (``sealsim.properties.get_oil``) links to the object's
@@ -112,12 +114,42 @@ def _resolve_public_path(app, env, node, contnode):
                                             f"{module}.{qualname}", node, contnode)
 
 
+_held: dict[str, list[str]] = {}
+
+
+def _hide_from_napoleon(app, what, name, obj, options, lines):
+    """Runs before napoleon: a constant's doc-comment is prose, but napoleon would read
+    ``Thinnest film [m]: 0.02 µm ...`` as "type: description"."""
+    if what in ("data", "attribute"):
+        _held[name] = lines[:]
+        lines[:] = []
+
+
 def _process_docstring(app, what, name, obj, options, lines):
+    if name in _held:
+        lines[:] = _held.pop(name)
     escape_bars(lines)
+    from sealsim.cases import CaseModel
+
+    if what == "class" and isinstance(obj, type) and issubclass(obj, CaseModel):
+        lines.extend(["", "Its fields, with units, defaults and ranges, are listed in the "
+                      ":doc:`case-file reference </case_files>`."])
+
+
+def _model_signature(app, what, name, obj, options, signature, return_annotation):
+    """No constructor signature for pydantic models: it would spell out every validator of
+    every field; the fields are listed in the case-file reference."""
+    from pydantic import BaseModel
+
+    if what == "class" and isinstance(obj, type) and issubclass(obj, BaseModel):
+        return "", None
+    return None
 
 
 def setup(app):
     PythonDomain.find_obj = find_obj
-    app.connect("autodoc-process-docstring", _process_docstring)
+    app.connect("autodoc-process-docstring", _hide_from_napoleon, priority=100)
+    app.connect("autodoc-process-docstring", _process_docstring, priority=900)
     app.connect("missing-reference", _resolve_public_path)
+    app.connect("autodoc-process-signature", _model_signature)
     return {"parallel_read_safe": True, "parallel_write_safe": True}
