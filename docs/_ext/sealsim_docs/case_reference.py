@@ -255,10 +255,9 @@ def model_page(model: type[BaseModel], examples: list[Path], repo: Path) -> str:
         first = examples[0].relative_to(repo).as_posix()
         out.append(f".. literalinclude:: /../{first}\n   :language: toml\n"
                    f"   :caption: {first}\n")
-    out.append("Quantities are strings with a unit (``\"80 mm\"``); a table marked "
-               "*not set* is optional, an optional field that is not set gets the value the "
-               "description names.  Any field can be changed per variant in a "
-               "``[variants.NAME]`` table.\n")
+    out.append("Quantities are strings with a unit (``\"80 mm\"``); a field or table that "
+               "is *not set* is optional and gets the value its description names.  In a case "
+               "file, any field can be changed per variant in a ``[variants.NAME]`` table.\n")
     for table in tables(model):
         out.append(rst.title(rst.literal(table.header) if table.path else table.header, "-"))
         if table.path:

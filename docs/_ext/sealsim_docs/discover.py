@@ -53,17 +53,23 @@ def _is_module_attribute(cls: type) -> bool:
 def case_models() -> list[type[BaseModel]]:
     """Every top-level case model: a public ``CaseModel`` no other model uses as a field type.
 
-    These are the documents a user writes (a rotary case, a friction fit...); their tables
-    are the sub-models reached through the fields.  Abstract bases (models with subclasses)
-    and private helpers (``_Name``) are not documents.
+    These are the documents a user writes (a rotary case, a friction fit, an entry of an oil
+    file...); their tables are the sub-models reached through the fields.  Not documents:
+    private helpers (``_Name``) and bases whose subclasses are all used as field types (the
+    parameters base of the friction laws, whose subclasses are the forms of ``[friction]``).
     """
     from sealsim.cases import CaseModel
 
     sealsim_modules()
     models = _subclasses(CaseModel)
     used = {sub for m in models for f in m.model_fields.values() for sub in models_in(f.annotation)}
+
+    def union_base(model) -> bool:
+        subs = _subclasses(model)
+        return bool(subs) and all(sub in used for sub in subs)
+
     roots = [m for m in models
-             if m not in used and not m.__name__.startswith("_") and not m.__subclasses__()
+             if m not in used and not m.__name__.startswith("_") and not union_base(m)
              and _is_module_attribute(m)]
     return sorted(roots, key=lambda m: (m.__module__, m.__name__))
 
