@@ -34,12 +34,13 @@ extensions = [
     "sealsim_docs.sphinx_ext",
 ]
 
-GENERATION_TIMES = sealsim_docs.generate(DOCS)
+# the generated sources (docs/_generated), written anew on every build
+print("sealsim docs: generated sources, seconds per part:", sealsim_docs.generate(DOCS))
 
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 root_doc = "index"
-exclude_patterns = ["_build", "_generated/gallery_src", "gallery", "**/README.md",
-                    "Thumbs.db", ".DS_Store"]
+# gallery/ and _generated/gallery_src/ are sphinx-gallery's input, not pages
+exclude_patterns = ["_build", "_generated/gallery_src", "gallery"]
 templates_path: list[str] = []
 # Footnotes of a numpydoc "References" section are listed without being cited in the text.
 suppress_warnings = ["ref.footnote"]
@@ -57,7 +58,6 @@ napoleon_use_ivar = True           # "Attributes" as a field list: no second tar
 python_use_unqualified_type_names = True
 
 # -- Markdown (the README's result sections) -------------------------------------------------------
-myst_enable_extensions = ["dollarmath"]
 myst_heading_anchors = 3
 
 # -- gallery ---------------------------------------------------------------------------------------

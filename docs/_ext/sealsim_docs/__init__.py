@@ -54,7 +54,7 @@ def generate(docs_dir: Path) -> dict[str, float]:
     gallery.build(repo / "examples", docs_dir / "gallery", out / "gallery_src", classified)
     (out / "readme_results.md").write_text(validation.readme_markdown(repo / "README.md"),
                                            encoding="utf-8")
-    (out / "tests.rst").write_text(validation.test_catalogue(repo / "tests"), encoding="utf-8")
+    (out / "tests.rst").write_text(validation.tests_table(repo / "tests"), encoding="utf-8")
     lap("api, gallery sources, README, tests")
     (out / "live_tables.rst").write_text(validation.live_tables(repo), encoding="utf-8")
     lap("live validation tables")

@@ -7,6 +7,7 @@ documentation when it is added to the package or to ``examples/``.
 from __future__ import annotations
 
 import importlib
+import inspect
 import pkgutil
 import sys
 import typing
@@ -83,8 +84,6 @@ def case_command(model: type[BaseModel]) -> str | None:
 
 def one_call_functions() -> list[tuple[str, object]]:
     """Functions exported by the package itself (``sealsim.NAME``), in ``__all__`` order."""
-    import inspect
-
     import sealsim
 
     found = []

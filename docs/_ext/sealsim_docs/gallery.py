@@ -6,8 +6,9 @@ Convention (nothing to register):
 * every ``*.py`` script in them is an entry; scripts named ``plot_*.py`` are run when the
   documentation is built and their figures and printed output shown (keep them to seconds),
   other scripts are shown with their code only;
-* every ``*.toml`` case file of ``examples/TOPIC/`` is listed in its section with the first
-  line of its comment header and a link to the field reference of its case type;
+* every ``*.toml`` case file of ``examples/TOPIC/`` is listed in its section with its title
+  (or the first paragraph of its comment header) and a link to the field reference of its
+  case type;
 * ``docs/gallery/TOPIC/GALLERY_HEADER.rst`` (optional) is the section's introduction.
 
 The scripts run next to the example files (the whole ``examples/`` tree is copied), so a

@@ -7,11 +7,11 @@
 * A reference by a public import path (``sealsim.properties.get_oil``) links to the object's
   documentation in the module that defines it, so references survive moving code between
   modules as long as the public name stays.
-* An ambiguous short name resolves the way Python does.  A docstring in ``sealsim.pneumatic.simulation`` that says ``seals : list of Seal`` means the
-``Seal`` that module imports (``sealsim.pneumatic.seals.Seal``), not the rotary case's
-``sealsim.rotary.case.Seal``.  Sphinx's fuzzy search finds both and warns; this picks the
-object the name is bound to in the referring module, else the one sharing the longest
-package prefix with it.
+* An ambiguous short name resolves the way Python does: ``seals : list of Seal`` in
+  ``sealsim.pneumatic.simulation`` means the ``Seal`` that module imports
+  (``sealsim.pneumatic.seals.Seal``), not ``sealsim.rotary.case.Seal``.  Sphinx's fuzzy search
+  finds both and warns; this picks the object the name is bound to in the referring module,
+  else the one sharing the longest package prefix with it.
 """
 
 from __future__ import annotations

@@ -39,7 +39,7 @@ def readme_sections(readme: Path, pattern: re.Pattern = SECTION_PATTERN) -> list
 
 
 def readme_markdown(readme: Path) -> str:
-    """The matching README sections as one Markdown document (headings one level down)."""
+    """The matching README sections as one Markdown document under one title."""
     sections = readme_sections(readme)
     if not sections:
         raise ValueError(f"{readme} has no section whose heading matches "
@@ -48,12 +48,11 @@ def readme_markdown(readme: Path) -> str:
            "Copied from the repository's README, where each number is published with the "
            "command that measured it.\n"]
     for heading, body in sections:
-        body = re.sub(r"^(#{3,}) ", r"#\1 ", body, flags=re.MULTILINE)  # keep nesting below
         out.append(f"## {heading}\n\n{body}\n")
     return "\n".join(out)
 
 
-def test_modules(tests_dir: Path) -> list[tuple[str, str, int]]:
+def test_files(tests_dir: Path) -> list[tuple[str, str, int]]:
     """``(file name, docstring, number of test functions)`` of every ``test_*.py``."""
     found = []
     for path in sorted(tests_dir.glob("test_*.py")):
@@ -65,10 +64,10 @@ def test_modules(tests_dir: Path) -> list[tuple[str, str, int]]:
     return found
 
 
-def test_catalogue(tests_dir: Path) -> str:
+def tests_table(tests_dir: Path) -> str:
     """A table of the test modules: file, what it checks, number of test functions."""
     rows = [[rst.literal(name), rst.paragraph(doc.split("\n\n")[0]), str(count)]
-            for name, doc, count in test_modules(tests_dir)]
+            for name, doc, count in test_files(tests_dir)]
     return rst.list_table(["Test module", "What it checks", "Tests"], rows, widths=[25, 65, 10])
 
 
