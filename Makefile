@@ -7,7 +7,9 @@ STAMP  := $(VENV)/.sealsim-installed
 DEMO_CASE := examples/rotary/speed_cycle.toml
 DEMO_OUT  := results/speed_cycle
 
-.PHONY: demo test bench clean
+DOCS_STAMP := $(VENV)/.sealsim-docs-installed
+
+.PHONY: demo test bench docs clean
 
 $(STAMP): pyproject.toml
 	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -22,6 +24,17 @@ test: $(STAMP)
 	@$(BIN)/python -m pytest -n 2 -q; rc=$$?; \
 	if [ $$rc -eq 5 ]; then echo "make test: pytest collected no tests" >&2; exit 1; fi; \
 	exit $$rc
+
+$(DOCS_STAMP): pyproject.toml
+	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install --quiet --disable-pip-version-check -e ".[test,docs]"
+	@touch $(DOCS_STAMP)
+
+# HTML into docs/_build/html; every warning is an error, nothing is downloaded, and -E plus the
+# regenerated docs/_generated/ make each build start from the code as it is now.
+docs: $(DOCS_STAMP)
+	$(BIN)/python -m sphinx -b html -E -W --keep-going -q -d docs/_build/doctrees docs docs/_build/html
+	@echo "documentation: docs/_build/html/index.html"
 
 bench: $(STAMP)
 	@for b in benchmarks/bench_*.py; do echo "== $$b"; $(BIN)/python $$b || exit 1; done
