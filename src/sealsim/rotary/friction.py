@@ -1,6 +1,7 @@
-"""Friction torque of a radial lip seal at a given speed and contact temperature (seed 000).
+"""Friction torque of a radial lip seal at a given speed and contact temperature.
 
-Composes the physics of :mod:`sealsim.tribology` as seed 000 writes it:
+Composes the physics of :mod:`sealsim.tribology` as Organisciak et al. (SKF, AGMA 14FTM14,
+2014) write it::
 
     T_torque   = (F_lub + F_material)·D/2                         (Eq. 2)
     F_material = μ_dry(T, u)·F_tip(T)·f(A_c),  f = α(Λ)            (Eq. 3)
@@ -8,7 +9,7 @@ Composes the physics of :mod:`sealsim.tribology` as seed 000 writes it:
     h_e        = film_factor·f_h·(η·u)^0.66·(W′/W′_ref)^−0.22·(E/E_ref)^−0.42
                  (≥ film floor)                                    (Eq. 5, soft EHL)
 
-The seed leaves f(A_c) open ("a function of the real contact area").  sealsim takes the share
+The paper leaves f(A_c) open ("a function of the real contact area").  sealsim takes the share
 of the lip load carried by the shaft's asperities, α(Λ) of Greenwood–Williamson at the film
 ratio Λ = h_e/σ (:func:`~sealsim.tribology.contact.asperity_load_share`): μ_dry is a
 friction coefficient, so it multiplies a load; the real contact area is already inside it.
