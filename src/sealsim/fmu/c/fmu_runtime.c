@@ -19,6 +19,7 @@ static void set_start_values(Instance *c) {
     c->time = 0.0;
     c->clipping = 0u;
     c->outputs_valid = 0;
+    c->cache_valid = 0;
     for (int i = 0; i < STATE_ARRAY_SIZE; i++) c->nominals[i] = 1.0;
 }
 
@@ -128,7 +129,7 @@ FmuStatus fmu_set_real(Instance *c, const unsigned *vr, size_t n, const double *
         }
         c->r[vr[k]] = value[k];
     }
-    if (n > 0) c->outputs_valid = 0;
+    if (n > 0) c->outputs_valid = c->cache_valid = 0;
     return FMU_OK;
 }
 
@@ -142,7 +143,7 @@ FmuStatus fmu_set_boolean(Instance *c, const unsigned *vr, size_t n, const int *
         }
         c->r[vr[k]] = value[k] ? 1.0 : 0.0;
     }
-    if (n > 0) c->outputs_valid = 0;
+    if (n > 0) c->outputs_valid = c->cache_valid = 0;
     return FMU_OK;
 }
 
@@ -210,9 +211,15 @@ FmuStatus fmu_do_step(Instance *c, double t, double h) {
         return FMU_ERROR;
     }
     if (model_step(c, h) > FMU_WARNING) return fail(c);
+    for (int i = 0; i < NSTATES; i++) {
+        if (!isfinite(c->r[STATE_VR[i]])) {
+            fmu_log(c, FMU_ERROR, "logStatusError", "do step: state %s became %g at t = %g",
+                    VARIABLES[STATE_VR[i]].name, c->r[STATE_VR[i]], t + h);
+            return fail(c);
+        }
+    }
     c->time = t + h;
-    c->outputs_valid = 0;
-    if (update_outputs(c) > FMU_WARNING) return fail(c);
+    c->outputs_valid = 0;     /* computed when the host asks for them */
     return FMU_OK;
 }
 

@@ -28,8 +28,16 @@ typedef struct {
     double v, normal_force, contact_width, dp;
 } Contact;
 
+/* the contact at the current inputs, cached until an input or a parameter is set */
 static Contact contact(Instance *c) {
     Contact k;
+    if (c->cache_valid) {
+        k.v = c->cache[0];
+        k.normal_force = c->cache[1];
+        k.contact_width = c->cache[2];
+        k.dp = c->cache[3];
+        return k;
+    }
     double x = P(P_A) - P(P_B);
     k.v = P(V);
     k.dp = x * tanh(x / P(PRESSURE_ROUNDING));
@@ -46,6 +54,11 @@ static Contact contact(Instance *c) {
     k.normal_force = P(NORMAL_FORCE);
     k.contact_width = P(CONTACT_WIDTH);
 #endif
+    c->cache[0] = k.v;
+    c->cache[1] = k.normal_force;
+    c->cache[2] = k.contact_width;
+    c->cache[3] = k.dp;
+    c->cache_valid = 1;
     return k;
 }
 

@@ -79,6 +79,8 @@ typedef struct {
     int logging_on;
     int outputs_valid;        /* outputs are up to date with inputs, parameters and states */
     unsigned clipping;        /* bit set of quantities clipped to their table (warned once) */
+    int cache_valid;          /* cache holds what the model derived from inputs and parameters */
+    double cache[8];
     double nominals[STATE_ARRAY_SIZE];
     char instance_name[128];
     void *environment;        /* the host's environment pointer, handed back to the logger */
