@@ -20,13 +20,13 @@ import tomli_w
 import xarray as xr
 from typer.testing import CliRunner
 
-fmpy = pytest.importorskip("fmpy")
+import fmpy  # noqa: E402  (the test extra installs it)
 from fmpy import simulate_fmu  # noqa: E402
 from fmpy.validation import validate_fmu  # noqa: E402
 
 from sealsim.cases import load_toml  # noqa: E402
 from sealsim.cli import app  # noqa: E402
-from sealsim.errors import InputError, ModelError, ResultExistsError  # noqa: E402
+from sealsim.errors import InputError, ModelError  # noqa: E402
 from sealsim.fmu import LoadedFMU, build_fmu, build_friction_fmu  # noqa: E402
 from sealsim.fmu.builder import FMUCompileError, FMUDependencyError  # noqa: E402
 from sealsim.fmu.cosim import FMUFrictionLaw, run_velocity  # noqa: E402

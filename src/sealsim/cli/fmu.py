@@ -69,8 +69,10 @@ def build(
                          f"error {max(table['max_relative_error'].values()):.1e})" if table
                          else ""))
         if check:
+            law_diff = max(v for k, v in check.items() if k != "contact")
             console.print(f"checked against sealsim's law: largest relative difference "
-                          f"{max(check.values()):.1e}")
+                          f"{law_diff:.1e}" + (f"; F_N, b against the contact map "
+                                                f"{check['contact']:.1e}" if table else ""))
     for key, label in (("grid", "steady, grid points"), ("between", "steady, between them"),
                        ("duty_cycle", "the case's duty cycle")):
         v = report.get("validation", {}).get(key)

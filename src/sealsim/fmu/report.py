@@ -240,10 +240,10 @@ def rotary_documentation(spec: ModelSpec, maps) -> None:
     sections = [
         ("Model", "<p>Steady maps of sealsim's coupled friction-thermal model (sump held at "
          "T_sump) give the contact temperature rise above the sump and its sensitivity to the "
-         "ambient; a sum of first-order lags fitted to step responses of the transient model "
-         "makes the contact temperature follow it; the torque is sealsim's friction torque at "
-         "the speed and the contact temperature. The housing is taken in equilibrium with "
-         "sump and ambient.</p>"),
+         "ambient. First-order lags fitted to step responses of the transient model make the "
+         "rise follow its steady value, and the contact follow the sump temperature through "
+         "the slowest of them. The torque is sealsim's friction torque at the speed and the "
+         "contact temperature. The housing is taken in equilibrium with sump and ambient.</p>"),
         ("Errors against the full model", text)]
     if maps.notes:
         sections.append(("Notes", "<ul>" + "".join(f"<li>{html.escape(n)}</li>"
