@@ -6,8 +6,8 @@ the same run and on the same signal (sliding at 0.2 m/s, 3 bar on side A, 25 °C
 
 1. ``fmu_step_us``: one ``doStep`` of 1 ms through FMPy's low-level API
    (``FMU2Slave.doStep``), best of 5 runs of 100 000 steps;
-2. ``host_step_us`` (extra): what a host pays per step for set v + doStep + get F, through
-   the raw ctypes functions FMPy loaded (``fmi2SetReal``/``fmi2DoStep``/``fmi2GetReal``);
+2. ``host_step_us`` (extra): what a Python host pays per step for set v + doStep + get F
+   through FMPy's function wrappers (``fmi2SetReal``/``fmi2DoStep``/``fmi2GetReal``);
 3. ``python_step_us``: the same step through sealsim's Python objects -- contact map
    evaluation at (Δp, T), ``Theta.step`` and ``Theta.force`` -- best of 5 runs of 2 000 steps;
 4. ``ratio`` = python_step_us / fmu_step_us.
@@ -121,7 +121,8 @@ def main() -> dict:
           f"{P_A / 1e5:g} bar, {T_SEAL - 273.15:g} degC")
     print(f"  doStep through FMPy (FMU2Slave.doStep): {result['fmu_step_us']:.3f} µs/step "
           f"(target <= 2)")
-    print(f"  host loop set v + doStep + get F (raw ctypes): {result['host_step_us']:.3f} µs")
+    print(f"  host loop set v + doStep + get F (FMPy's fmi2* wrappers): "
+          f"{result['host_step_us']:.3f} µs")
     print(f"  sealsim Python (map + Theta.step + Theta.force): {result['python_step_us']:.1f} "
           f"µs/step")
     print(f"  ratio {result['ratio']:.0f}x (target >= 20); after {t[0]:.0f} s of sliding the "

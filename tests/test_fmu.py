@@ -346,6 +346,25 @@ def test_fitted_parameters_and_named_sets(tmp_path):
     assert result.report["build_check"]["max_relative_difference"]["force"] <= 1e-9
 
 
+def test_fmu_case_with_its_own_law(tmp_path):
+    """An FMU case with [friction] (a named set) and, for the theta law, [contact]."""
+    stribeck = {"title": "Stribeck rod seal", "fmu": {"name": "RodSeal"},
+                "friction": {"law": "stribeck", "parameter_set": "pneumatic_demo"}}
+    (tmp_path / "stribeck.toml").write_text(tomli_w.dumps(stribeck))
+    result = build_fmu(tmp_path / "stribeck.toml", tmp_path / "rod.fmu", kind="me")
+    with LoadedFMU(result.path, "me") as fmu:
+        fmu.set(v=0.02, p_A=6e5)
+        fmu.initialize()
+        force, brk = fmu.get("F", "F_breakaway")
+    # seed 001 Eq. 2/3 with the set: F_C(p) = 15 N + 1.5e-5 m2 * 6 bar = 24 N, F_S/F_C = 5/3
+    assert brk == pytest.approx(40.0, rel=1e-12)
+    assert force == pytest.approx(24.0 + 16.0 * np.exp(-1.0) + 8.0 * 0.02, rel=1e-12)
+    theta = {"fmu": {}, "friction": {"law": "theta", "parameter_set": "pneumatic_demo"}}
+    (tmp_path / "theta.toml").write_text(tomli_w.dumps(theta))
+    with pytest.raises(InputError, match="theta law needs the seal's normal force"):
+        build_fmu(tmp_path / "theta.toml", tmp_path / "theta.fmu")
+
+
 def test_cosimulation_example(tmp_path):
     """examples/fmu/stick_slip_cosim.py: FMPy drives the FMU with the mass-spring of the LuGre
     stick-slip benchmark; the explicit host and the implicit master get the native stick-slip."""

@@ -23,9 +23,15 @@ import numpy as np
 from sealsim.cases import expand_variants, load_toml, validate_case
 from sealsim.errors import InputError
 from sealsim.fmu.builder import FMI_KINDS, BuildResult, build_archive, check_output
-from sealsim.fmu.case import FMUCase, FrictionTable, RotarySettings, TableSettings
+from sealsim.fmu.case import (
+    ContactSettings,
+    FMUCase,
+    FrictionTable,
+    RotarySettings,
+    TableSettings,
+)
 from sealsim.fmu.friction_export import (
-    C_LAWS,
+    c_parameters,
     contact_table,
     friction_check,
     friction_spec,
@@ -85,8 +91,7 @@ def build_friction_fmu(law, out, *, contact_map=None, normal_force: float | None
     if kind not in FMI_KINDS:
         raise InputError(f"--kind {kind!r} is not allowed; choose me, cs or both")
     table_settings = table or TableSettings()
-    if law.name not in C_LAWS:
-        friction_spec(law, "check")           # the clear error for a law without C code
+    c_parameters(law)                         # a law without C code: refused before work
     tab = None
     if contact_map is not None:
         tab = contact_table(contact_map, table_settings.temperature_points,
@@ -101,8 +106,10 @@ def build_friction_fmu(law, out, *, contact_map=None, normal_force: float | None
 
 
 def _default_speeds(case, base_dir) -> np.ndarray:
-    _, speeds, _ = case.duty.profile(base_dir)
-    top = max(3000.0 * RPM, 1.2 * float(np.max(speeds)))
+    top = 3000.0 * RPM
+    if case.duty is not None:
+        _, speeds, _ = case.duty.profile(base_dir)
+        top = max(top, 1.2 * float(np.max(speeds)))
     return np.concatenate([[0.0], np.geomspace(10.0 * RPM, top, 8)])
 
 
@@ -178,13 +185,14 @@ def _hide(variable):
 # -- case files ---------------------------------------------------------------------------------
 def case_kind(data: dict, source: str) -> str:
     """"friction", "pneumatic", "rotary" or "fmu" from the tables of a case file."""
-    if "fmu" in data:
+    tables = set(data)
+    if "fmu" in tables:
         return "fmu"
-    if "bench" in data:
+    if "bench" in tables:
         return "friction"
-    if "cylinder" in data or "seals" in data:
+    if tables & {"cylinder", "seals", "air", "valve", "controller"}:
         return "pneumatic"
-    if "duty" in data and "seal" in data:
+    if "seal" in tables and not tables & {"gland", "material", "mesh", "map", "load"}:
         return "rotary"
     raise InputError(f"{source} is neither a friction case ([bench]), a pneumatic case "
                      "([cylinder], [[seals]]), a rotary case ([seal], [duty]) nor an FMU case "
@@ -341,10 +349,7 @@ def _inline_friction(fmu_case: FMUCase, params, path: Path, out, fmi_version, ki
     """An FMU case with its own [friction] and [contact] tables."""
     from sealsim.pneumatic.case import build_contact_map
 
-    contact = fmu_case.contact
-    if contact is None:
-        raise InputError(f"FMU case {str(path)!r}: give a [contact] table (normal_force and "
-                         "contact_width, or a map) for the friction law")
+    contact = fmu_case.contact or ContactSettings()
     contact_map = None
     if contact.map is not None:
         contact_map = build_contact_map(contact.map, contact.sliding_diameter or 0.0,

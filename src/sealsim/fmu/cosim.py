@@ -24,7 +24,7 @@ from sealsim.fmu.instance import LoadedFMU
 __all__ = ["FMUFrictionLaw", "run_rotary", "run_velocity"]
 
 
-def _contact_inputs(fmu: LoadedFMU, inputs: ContactInputs) -> dict[str, float]:
+def _contact_inputs(inputs: ContactInputs) -> dict[str, float]:
     """FMU inputs p_A, p_B, T_seal from a ContactInputs with scalar fields."""
     values = {"p_A": float(inputs.pressure_a), "p_B": float(inputs.pressure_b)}
     if inputs.temperature is not None:
@@ -58,7 +58,7 @@ def run_velocity(fmu: LoadedFMU, time, velocity_step, velocity_sample,
     time = np.asarray(time, dtype=float)
     names = ["F"] + [n for n in ("theta", "z") if n in fmu.vr]
     out = {n: np.empty(time.size) for n in names}
-    fmu.set(v=float(velocity_sample[0]), **_contact_inputs(fmu, inputs))
+    fmu.set(v=float(velocity_sample[0]), **_contact_inputs(inputs))
     fmu.initialize(float(time[0]))
     for n, value in zip(names, fmu.get(*names)):
         out[n][0] = value

@@ -43,8 +43,8 @@ from sealsim.friction.base import ContactInputs, FrictionLaw
 from sealsim.fmu.model_description import ModelSpec, Variable
 from sealsim.fmu.tables import HermiteTable, pchip_table, smooth_table
 
-__all__ = ["C_LAWS", "PRESSURE_ROUNDING", "ContactTable", "contact_table", "friction_check",
-           "friction_spec", "model_identifier"]
+__all__ = ["C_LAWS", "PRESSURE_ROUNDING", "ContactTable", "c_parameters", "contact_table",
+           "friction_check", "friction_spec", "model_identifier"]
 
 #: laws with a C implementation (friction_model.c)
 C_LAWS = ("coulomb", "stribeck", "lugre", "theta")
@@ -202,8 +202,9 @@ def _table_error(table, sample, t_range, p_range) -> dict:
 
 
 # -- the model ---------------------------------------------------------------------------------
-def _law_parameters(law: FrictionLaw) -> tuple[str, dict[str, float], bool]:
-    """(law name, C parameters, bristles) of a law, refusing what the C code lacks."""
+def c_parameters(law: FrictionLaw) -> tuple[str, dict[str, float], bool]:
+    """(law name, parameters for the C code, bristles) of a law; an InputError for a law or a
+    parameter the C code does not implement."""
     name = law.name
     if name not in C_LAWS:
         raise InputError(f"friction.law: the {name!r} law has no C implementation in the FMU "
@@ -243,11 +244,12 @@ def friction_spec(law: FrictionLaw, identifier: str, *, table: ContactTable | No
     title, source : str
         Text for the description and documentation (the case it came from).
     """
-    name, params, bristles = _law_parameters(law)
+    name, params, bristles = c_parameters(law)
     uses_load = name == "theta"
     if uses_load and table is None and (normal_force is None or contact_width is None):
         raise InputError("the theta law needs the seal's normal force and contact width: give "
-                         "a contact map (map = {...}) or normal_force and contact_width")
+                         "a contact map (map = {...}) or normal_force and contact_width (the "
+                         "[inputs] of a friction case, the [contact] of an FMU case)")
     stiction = name in _STICTION or (name == "theta" and not bristles)
     has_theta, has_z = name == "theta", name == "lugre" or bristles
     constant = table is None and uses_load
@@ -345,8 +347,8 @@ def _test_signal(table: ContactTable | None):
         (tlo, thi), (plo, phi) = table.temperature_range, table.pressure_range
         temperature = tlo + (thi - tlo) * (0.5 + 0.5 * np.sin(np.arange(n) * 0.7))
         pressure_a = plo + (phi - plo) * (0.5 + 0.5 * np.cos(np.arange(n) * 0.45))
-    else:
-        temperature = np.full(n, 293.15)
+    else:               # the temperature varies too: a law that uses it must agree
+        temperature = 263.15 + 110.0 * (0.5 + 0.5 * np.sin(np.arange(n) * 0.7))
         pressure_a = np.linspace(0.0, 6e5, n)
     pressure_b = 0.3 * pressure_a[::-1]
     return v, dt, pressure_a, pressure_b, temperature
@@ -382,7 +384,7 @@ def friction_check(law: FrictionLaw, spec: ModelSpec, contact_map=None,
                     fmu.do_step(t, dt[k])
                     t += dt[k]
                     out = dict(zip(names_out, fmu.get(*names_out)))
-                    inputs = _inputs(out, pa[k], pb[k], temp[k], spec)
+                    inputs = _inputs(out, pa[k], pb[k], temp[k])
                     z = law.step(z, np.array([v[k]]), dt[k], inputs)
                     force = float(law.force(z, np.array([v[k]]), inputs)[0])
                     worst["force"] = max(worst["force"], _rel(out["F"], force))
@@ -405,7 +407,7 @@ def friction_check(law: FrictionLaw, spec: ModelSpec, contact_map=None,
                 for k in range(v.size):
                     fmu.set(v=v[k], p_A=pa[k], p_B=pb[k], T_seal=temp[k])
                     inputs = _inputs(dict(zip(names_out, fmu.get(*names_out))), pa[k], pb[k],
-                                     temp[k], spec)
+                                     temp[k])
                     z = law.steady_state(np.array([v[(k + 5) % v.size]]), inputs)
                     z = z * (0.5 + rng.random(z.shape))
                     fmu.set_continuous_states(z[:, 0])
@@ -432,7 +434,7 @@ def _exposed(spec: ModelSpec, name: str) -> bool:
     return any(v.name == name and v.exposed for v in spec.variables)
 
 
-def _inputs(out: dict, pa: float, pb: float, temperature: float, spec: ModelSpec):
+def _inputs(out: dict, pa: float, pb: float, temperature: float):
     """The law inputs the FMU used at this step (F_N, b from the FMU's own outputs)."""
     if "F_N" in out:
         fn, b = out["F_N"], out["b"]

@@ -157,7 +157,7 @@ def _number(x: float) -> str:
     return repr(float(x)) if math.isfinite(x) else "0.0"
 
 
-def _unit_definitions(spec: ModelSpec, fmi_version: int) -> str:
+def _unit_definitions(spec: ModelSpec) -> str:
     used = sorted({v.unit for v in spec.variables if v.exposed and v.unit})
     lines = ["  <UnitDefinitions>"]
     for name in used:
@@ -257,7 +257,7 @@ def model_description_xml(spec: ModelSpec, fmi_version: int, kinds: tuple[str, .
         if "cs" in kinds:
             body.append(f"  <CoSimulation modelIdentifier={ident} {common} "
                         'canHandleVariableCommunicationStepSize="true"/>')
-    units = _unit_definitions(spec, fmi_version)
+    units = _unit_definitions(spec)
     if units:
         body.append(units)
     body.append("  <LogCategories>\n"

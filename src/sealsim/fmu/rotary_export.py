@@ -336,7 +336,10 @@ def rotary_check(case: RotaryCase, maps: RotaryMaps, spec: ModelSpec, *,
                     "max_torque_rel_error": float(np.max(np.abs(rows[:, 3] / rows[:, 2] - 1))),
                     "max_T_contact_error_K": float(np.max(np.abs(rows[:, 5] - rows[:, 4])))}
                 spec.data["between_points"] = rows
-            if duty_cycle:
+            if duty_cycle and case.duty is None:
+                spec.report["notes"].append("the case has no duty cycle: the transient check "
+                                            "was not run")
+            elif duty_cycle:
                 with warnings.catch_warnings():
                     warnings.simplefilter("ignore", (ServiceRangeWarning, OilRangeWarning))
                     full = simulate(case, base_dir=base_dir).timeseries
