@@ -20,19 +20,19 @@ import tomli_w
 import xarray as xr
 from typer.testing import CliRunner
 
-import fmpy  # noqa: E402  (the test extra installs it)
-from fmpy import simulate_fmu  # noqa: E402
-from fmpy.validation import validate_fmu  # noqa: E402
+import fmpy  # the test extra installs FMPy
+from fmpy import simulate_fmu
+from fmpy.validation import validate_fmu
 
-from sealsim.cases import load_toml  # noqa: E402
-from sealsim.cli import app  # noqa: E402
-from sealsim.errors import InputError, ModelError  # noqa: E402
-from sealsim.fmu import LoadedFMU, build_fmu, build_friction_fmu  # noqa: E402
-from sealsim.fmu.builder import FMUCompileError, FMUDependencyError  # noqa: E402
-from sealsim.fmu.cosim import FMUFrictionLaw, run_velocity  # noqa: E402
-from sealsim.friction import ContactInputs, Theta  # noqa: E402
-from sealsim.friction.bench import simulate_mass, simulate_velocity  # noqa: E402
-from sealsim.friction.case import build_law, load_friction_cases, make_inputs  # noqa: E402
+from sealsim.cases import load_toml
+from sealsim.cli import app
+from sealsim.errors import InputError, ModelError
+from sealsim.fmu import LoadedFMU, build_fmu, build_friction_fmu
+from sealsim.fmu.builder import FMUCompileError, FMUDependencyError
+from sealsim.fmu.cosim import FMUFrictionLaw, run_velocity
+from sealsim.friction import ContactInputs, Theta
+from sealsim.friction.bench import simulate_mass, simulate_velocity
+from sealsim.friction.case import build_law, load_friction_cases, make_inputs
 
 ROOT = Path(__file__).resolve().parents[1]
 FRICTION = ROOT / "examples" / "friction"
@@ -267,14 +267,12 @@ def test_law_without_c_code_is_refused(tmp_path):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["dahl.toml"]
 
 
-def _scratch_folders():
-    return {p.name for p in Path(tempfile.gettempdir()).glob("sealsim-fmu-*")}
-
-
-def test_cli_writes_atomically_and_refuses_an_existing_file(tmp_path):
+def test_cli_writes_atomically_and_refuses_an_existing_file(tmp_path, monkeypatch):
+    scratch = tmp_path / "tmp"                  # this test's own temporary folder
+    scratch.mkdir()
+    monkeypatch.setattr(tempfile, "tempdir", str(scratch))
     runner = CliRunner()
     out = tmp_path / "seal" / "theta.fmu"
-    before = _scratch_folders()
     args = ["fmu", "build", str(FRICTION / "theta_dwell.toml"), "--out", str(out), "--kind",
             "cs", "-q"]
     first = runner.invoke(app, args)
@@ -288,8 +286,9 @@ def test_cli_writes_atomically_and_refuses_an_existing_file(tmp_path):
     forced = runner.invoke(app, args + ["--force", "--fmi", "3"])
     assert forced.exit_code == 0, forced.output
     assert fmpy.read_model_description(str(out)).fmiVersion == "3.0"
+    assert validate_fmu(str(out)) == []
     assert sorted(p.name for p in out.parent.iterdir()) == ["theta.fmu"]
-    assert _scratch_folders() <= before                  # build scratch always removed
+    assert list(scratch.iterdir()) == []                 # build scratch always removed
     wrong = runner.invoke(app, ["fmu", "build", str(FRICTION / "theta_dwell.toml"), "--out",
                                 str(tmp_path / "x.zip")])
     assert wrong.exit_code == 2 and "must end in .fmu" in wrong.output
@@ -299,6 +298,11 @@ def test_cli_writes_atomically_and_refuses_an_existing_file(tmp_path):
                               str(tmp_path / "c.fmu")])
     assert bad.exit_code == 2 and "choose one with --seal" in bad.output
     assert not (tmp_path / "c.fmu").exists()
+    failed = runner.invoke(app, ["fmu", "build", str(FRICTION / "theta_dwell.toml"), "--out",
+                                 str(tmp_path / "nc.fmu"), "--kind", "cs"],
+                           env={"CC": str(tmp_path / "none")})
+    assert failed.exit_code == 1 and (tmp_path / "nc.fmu").exists()
+    assert list(scratch.iterdir()) == []                 # also after a failed compile
 
 
 def test_missing_compiler_still_writes_the_source_fmu(tmp_path, monkeypatch):
@@ -337,6 +341,7 @@ def test_fitted_parameters_and_named_sets(tmp_path):
                 "seal": "rod", "friction_file": "fitted_parameters.toml"},
         "table": {"temperature_points": 4, "pressure_points": 9}}))
     result = build_fmu(tmp_path / "seal.toml", tmp_path / "fitted.fmu", kind="cs")
+    assert validate_fmu(str(result.path)) == []
     md = fmpy.read_model_description(str(result.path))
     assert md.coSimulation.modelIdentifier == "FittedSeal" and md.modelExchange is None
     start = {v.name: v for v in md.modelVariables}
@@ -352,6 +357,7 @@ def test_fmu_case_with_its_own_law(tmp_path):
                 "friction": {"law": "stribeck", "parameter_set": "pneumatic_demo"}}
     (tmp_path / "stribeck.toml").write_text(tomli_w.dumps(stribeck))
     result = build_fmu(tmp_path / "stribeck.toml", tmp_path / "rod.fmu", kind="me")
+    assert validate_fmu(str(result.path)) == []
     with LoadedFMU(result.path, "me") as fmu:
         fmu.set(v=0.02, p_A=6e5)
         fmu.initialize()
@@ -374,6 +380,7 @@ def test_cosimulation_example(tmp_path):
     spec.loader.exec_module(example)
     case, law = example.load_case()
     fmu_path = build_fmu(example.CASE, tmp_path / "lugre.fmu", kind="cs").path
+    assert validate_fmu(str(fmu_path)) == []
     native = example.native(case, law, 9.0)
     explicit = example.compare(example.explicit_cosimulation(fmu_path, case, 9.0, 1e-3), native)
     # the first slip: an explicit 1 ms coupling against Radau (rtol 1e-7) -- the slip

@@ -9,23 +9,22 @@ from __future__ import annotations
 
 import math
 import warnings
+from pathlib import Path
 
 import numpy as np
 import pytest
 
-import fmpy  # noqa: E402  (the test extra installs it)
-from fmpy import simulate_fmu  # noqa: E402
-from fmpy.validation import validate_fmu  # noqa: E402
+import fmpy  # the test extra installs FMPy
+from fmpy import simulate_fmu
+from fmpy.validation import validate_fmu
 
-from sealsim.cases import expand_variants, load_toml  # noqa: E402
-from sealsim.fmu import LoadedFMU, build_rotary_fmu  # noqa: E402
-from sealsim.fmu.case import RotarySettings  # noqa: E402
-from sealsim.fmu.cosim import run_rotary  # noqa: E402
-from sealsim.fmu.rotary_maps import fixed_sump_case  # noqa: E402
-from sealsim.rotary.case import RotaryCase  # noqa: E402
-from sealsim.rotary.simulation import simulate, steady_state  # noqa: E402
-
-from pathlib import Path  # noqa: E402
+from sealsim.cases import expand_variants, load_toml
+from sealsim.fmu import LoadedFMU, build_rotary_fmu
+from sealsim.fmu.case import RotarySettings
+from sealsim.fmu.cosim import run_rotary
+from sealsim.fmu.rotary_maps import fixed_sump_case
+from sealsim.rotary.case import RotaryCase
+from sealsim.rotary.simulation import simulate, steady_state
 
 RPM = math.pi / 30.0
 CYCLE = Path(__file__).resolve().parents[1] / "examples" / "rotary" / "speed_cycle.toml"
