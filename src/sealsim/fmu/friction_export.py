@@ -25,7 +25,11 @@ derivatives on a grid of ``temperature_points`` × ``pressure_points``.
 
 The C code implements the laws ``coulomb``, ``stribeck``, ``lugre`` and ``theta`` (with or
 without bristles); any other law, or a parameter the C code does not know, is refused with an
-:class:`~sealsim.errors.InputError`.  After compiling, :func:`friction_check` runs the binary
+:class:`~sealsim.errors.InputError`.  A new law parameter -- e.g. the coefficients of a
+temperature-dependent viscous coefficient γ(T) of the Θ law -- needs its entry (unit,
+description, bounds) in ``_PARAMETERS`` and ``_LAW_PARAMETERS`` below, which makes it an FMU
+parameter ``VR_<NAME>``, and its use in ``c/friction_model.c`` (γ(T):
+``viscous_coefficient()``, which has the seal temperature ``P(T_SEAL)`` at hand).  After compiling, :func:`friction_check` runs the binary
 against sealsim's own law object (``step``, ``force``, ``breakaway_force``, ``derivatives``)
 and refuses an FMU that does not reproduce it.
 """
