@@ -13,6 +13,7 @@ import typer
 from sealsim import __version__
 from sealsim.cli._common import console
 from sealsim.cli.cache import cache_app
+from sealsim.cli.fmu import fmu_app
 from sealsim.cli.friction import friction_app
 from sealsim.cli.pneumatic import pneumatic_app
 from sealsim.cli.properties import material_app, oil_app
@@ -35,6 +36,7 @@ app.add_typer(friction_app, name="friction")
 app.add_typer(structure_app, name="structure")
 app.add_typer(pneumatic_app, name="pneumatic")
 app.add_typer(cache_app, name="cache")
+app.add_typer(fmu_app, name="fmu")
 
 
 def _version(value: bool) -> None:

@@ -1,0 +1,134 @@
+"""Cost of one communication step of the seal friction FMU (issue 14).
+
+The Θ-law piston seal of ``examples/pneumatic/cylinder_32.toml`` (``pneumatic_demo`` set,
+analytic contact map embedded as a table) is built as an FMI 2.0 co-simulation FMU.  Then, in
+the same run and on the same signal (sliding at 0.2 m/s, 3 bar on side A, 25 °C):
+
+1. ``fmu_step_us``: one ``doStep`` of 1 ms through FMPy's low-level API
+   (``FMU2Slave.doStep``), best of 5 runs of 100 000 steps;
+2. ``host_step_us`` (extra): what a Python host pays per step for set v + doStep + get F
+   through FMPy's function wrappers (``fmi2SetReal``/``fmi2DoStep``/``fmi2GetReal``);
+3. ``python_step_us``: the same step through sealsim's Python objects -- contact map
+   evaluation at (Δp, T), ``Theta.step`` and ``Theta.force`` -- best of 5 runs of 2 000 steps;
+4. ``ratio`` = python_step_us / fmu_step_us.
+
+Targets: fmu_step_us <= 2 µs and ratio >= 20.  The last line printed is one JSON object.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import json
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+from sealsim.fmu import LoadedFMU, build_fmu
+from sealsim.friction import ContactInputs
+
+CASE = Path(__file__).resolve().parents[1] / "examples" / "pneumatic" / "cylinder_32.toml"
+DT = 1e-3
+V, P_A, T_SEAL = 0.2, 3e5, 298.15
+
+
+def best_of(fn, repeat=5):
+    best = np.inf
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        fn()
+        best = min(best, time.perf_counter() - t0)
+    return best
+
+
+def main() -> dict:
+    with tempfile.TemporaryDirectory() as folder:
+        path = Path(folder) / "piston_seal.fmu"
+        build_fmu(CASE, path, seal="piston", kind="cs")
+        with LoadedFMU(path) as fmu:
+            fmu.set(v=V, p_A=P_A, T_seal=T_SEAL)
+            fmu.initialize()
+            raw = fmu.raw
+            n_fmu = 100_000
+            t = [0.0]
+
+            def fmu_steps():
+                do_step = raw.doStep
+                time_now = t[0]
+                for _ in range(n_fmu):
+                    do_step(time_now, DT)
+                    time_now += DT
+                t[0] = time_now
+
+            fmu_wall = best_of(fmu_steps)
+            force_fmu = fmu.get("F")[0]
+
+            vr_v = (ctypes.c_uint * 1)(fmu.vr["v"])
+            vr_f = (ctypes.c_uint * 1)(fmu.vr["F"])
+            value = (ctypes.c_double * 1)(V)
+            out = (ctypes.c_double * 1)()
+            set_real, get_real = raw.fmi2SetReal, raw.fmi2GetReal
+            component = raw.component
+
+            def host_steps():
+                do_step = raw.fmi2DoStep
+                time_now = t[0]
+                for _ in range(n_fmu):
+                    set_real(component, vr_v, 1, value)
+                    do_step(component, time_now, DT, 1)
+                    get_real(component, vr_f, 1, out)
+                    time_now += DT
+                t[0] = time_now
+
+            host_wall = best_of(host_steps)
+
+        from sealsim.cases import load_toml
+        from sealsim.friction import make_law
+        from sealsim.pneumatic.case import build_contact_map, load_pneumatic_cases
+
+        case = next(iter(load_pneumatic_cases(load_toml(CASE)).values()))
+        seal = next(s for s in case.seals if s.name == "piston")
+        law = make_law(seal.friction)
+        contact_map = build_contact_map(seal.map, case.cylinder.bore, CASE.parent, "map")
+        n_py = 2_000
+        state = {"z": law.initial_state(1)}
+
+        def python_steps():
+            z = state["z"]
+            v = np.array([V])
+            for _ in range(n_py):
+                dp = P_A * np.tanh(P_A / 1e3)
+                fn, b = contact_map.evaluate(dp, T_SEAL)
+                inputs = ContactInputs(normal_force=fn, contact_width=b, pressure_a=P_A)
+                z = law.step(z, v, DT, inputs)
+                law.force(z, v, inputs)
+            state["z"] = z
+
+        python_wall = best_of(python_steps)
+        fn, b = contact_map.evaluate(P_A * np.tanh(P_A / 1e3), T_SEAL)
+        force_py = float(law.steady_force(np.array([V]), ContactInputs(
+            normal_force=fn, contact_width=b))[0])
+
+    result = {
+        "fmu_step_us": 1e6 * fmu_wall / n_fmu,
+        "host_step_us": 1e6 * host_wall / n_fmu,
+        "python_step_us": 1e6 * python_wall / n_py,
+    }
+    result["ratio"] = result["python_step_us"] / result["fmu_step_us"]
+    result["steady_force_rel_difference"] = abs(force_fmu / force_py - 1.0)
+    print(f"Θ-law piston seal FMU (analytic contact table), 1 ms steps at {V} m/s, "
+          f"{P_A / 1e5:g} bar, {T_SEAL - 273.15:g} degC")
+    print(f"  doStep through FMPy (FMU2Slave.doStep): {result['fmu_step_us']:.3f} µs/step "
+          f"(target <= 2)")
+    print(f"  host loop set v + doStep + get F (FMPy's fmi2* wrappers): "
+          f"{result['host_step_us']:.3f} µs")
+    print(f"  sealsim Python (map + Theta.step + Theta.force): {result['python_step_us']:.1f} "
+          f"µs/step")
+    print(f"  ratio {result['ratio']:.0f}x (target >= 20); after {t[0]:.0f} s of sliding the "
+          f"FMU's force is the steady force within {result['steady_force_rel_difference']:.1e}")
+    return result
+
+
+if __name__ == "__main__":
+    print(json.dumps(main()))

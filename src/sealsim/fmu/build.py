@@ -1,0 +1,362 @@
+"""Build sealsim FMUs from Python or from case files (what ``sealsim fmu build`` calls).
+
+* :func:`build_friction_fmu` -- a friction law object (any of :data:`C_LAWS`) with a contact
+  map or a constant contact;
+* :func:`build_rotary_fmu` -- a rotary lip-seal case;
+* :func:`build_fmu` -- a case file: a friction case, a pneumatic case (one seal), a rotary
+  case, or an FMU case (:mod:`sealsim.fmu.case`).
+
+Each checks the output file first, builds in a temporary folder, checks the compiled FMU
+against sealsim's own model, writes the ``.fmu`` atomically and returns a
+:class:`~sealsim.fmu.builder.BuildResult`.  Default: FMI 2.0 with model exchange and
+co-simulation in one FMU.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from pathlib import Path
+
+import numpy as np
+
+from sealsim.cases import expand_variants, load_toml, validate_case
+from sealsim.errors import InputError
+from sealsim.fmu.builder import FMI_KINDS, BuildResult, build_archive, check_output
+from sealsim.fmu.case import (
+    ContactSettings,
+    FMUCase,
+    FrictionTable,
+    RotarySettings,
+    TableSettings,
+)
+from sealsim.fmu.friction_export import (
+    c_parameters,
+    contact_table,
+    friction_check,
+    friction_spec,
+    model_identifier,
+)
+
+__all__ = ["build_fmu", "build_friction_fmu", "build_rotary_fmu", "case_kind"]
+
+RPM = math.pi / 30.0
+CELSIUS_0 = 273.15
+
+
+def _identifier(name: str | None, out) -> str:
+    return name or model_identifier(str(out))
+
+
+def build_friction_fmu(law, out, *, contact_map=None, normal_force: float | None = None,
+                       contact_width: float | None = None, seal_temperature: float = 293.15,
+                       name: str | None = None, fmi_version: int = 2, kind: str = "both",
+                       force: bool = False, compile: bool = True,
+                       table: TableSettings | None = None, title: str = "", source: str = "",
+                       inputs=()) -> BuildResult:
+    """Build the FMU of a seal friction law.
+
+    Parameters
+    ----------
+    law : FrictionLaw
+        A law of :data:`~sealsim.fmu.friction_export.C_LAWS` (e.g.
+        ``Theta.from_parameter_set("pneumatic_demo")``).
+    out : path
+        The ``.fmu`` file.
+    contact_map : ContactMap, optional
+        F_N, b (Δp, T) of the seal (FE or analytic, :mod:`sealsim.pneumatic.contact_maps`),
+        embedded as a table.
+    normal_force, contact_width : float, optional
+        A constant contact [N], [m] instead of a map.
+    seal_temperature : float
+        Start value of the input T_seal [K].
+    name : str, optional
+        Model identifier (default: from the file name).
+    fmi_version : {2, 3}
+    kind : {"me", "cs", "both"}
+    force : bool
+        Replace an existing file.
+    compile : bool
+        False: write a source-only FMU.
+    table : TableSettings, optional
+        Grid of a tabulated analytic map.
+    title, source : str
+        Shown in the FMU's description and documentation.
+    inputs : iterable of path
+        Files the FMU is built from (the output must not be one of them).
+    """
+    from sealsim.fmu.report import friction_documentation
+
+    check_output(out, force, inputs)
+    if kind not in FMI_KINDS:
+        raise InputError(f"--kind {kind!r} is not allowed; choose me, cs or both")
+    table_settings = table or TableSettings()
+    c_parameters(law)                         # a law without C code: refused before work
+    tab = None
+    if contact_map is not None:
+        tab = contact_table(contact_map, table_settings.temperature_points,
+                            table_settings.pressure_points)
+    spec = friction_spec(law, _identifier(name, out), table=tab, normal_force=normal_force,
+                         contact_width=contact_width, seal_temperature=seal_temperature,
+                         title=title, source=source)
+    return build_archive(spec, out, fmi_version=fmi_version, kind=kind, force=force,
+                         compile=compile,
+                         check=friction_check(law, spec, contact_map, tab, FMI_KINDS[kind]),
+                         document=lambda s: friction_documentation(s, law, tab))
+
+
+def _default_speeds(case, base_dir) -> np.ndarray:
+    top = 3000.0 * RPM
+    if case.duty is not None:
+        _, speeds, _ = case.duty.profile(base_dir)
+        top = max(top, 1.2 * float(np.max(speeds)))
+    return np.concatenate([[0.0], np.geomspace(10.0 * RPM, top, 8)])
+
+
+def _default_sumps(case) -> np.ndarray:
+    env = case.environment
+    sump0 = env.sump_temperature if env.sump_temperature is not None else (
+        env.start_temperature if env.start_temperature is not None else env.ambient_temperature)
+    lo, hi = min(293.15, sump0 - 5.0), max(393.15, sump0 + 40.0)
+    oil_min = case.oil.build().min_temperature
+    if oil_min is not None:
+        lo = max(lo, oil_min)
+    return np.linspace(lo, hi, 6)
+
+
+def build_rotary_fmu(case, out, *, settings: RotarySettings | None = None,
+                     name: str | None = None, fmi_version: int = 2, kind: str = "both",
+                     force: bool = False, compile: bool = True, base_dir: Path | None = None,
+                     title: str = "", source: str = "", inputs=(),
+                     progress=None) -> BuildResult:
+    """Build the FMU of a rotary lip seal from its case (maps computed now, seconds).
+
+    Parameters
+    ----------
+    case : RotaryCase
+        Seal, oil, environment; its duty cycle sets the default speed range and is the
+        transient the FMU is checked against.
+    out : path
+        The ``.fmu`` file.
+    settings : RotarySettings, optional
+        Grids, lag order and checks (defaults: see :class:`~sealsim.fmu.case.RotarySettings`).
+    base_dir : Path, optional
+        Folder of a duty-cycle CSV given by a relative path.
+    progress : callable, optional
+        ``progress(task, done, total)``.
+
+    Other parameters as :func:`build_friction_fmu`.
+    """
+    from sealsim.fmu.report import rotary_documentation
+    from sealsim.fmu.rotary_export import rotary_check, rotary_maps, rotary_spec
+
+    check_output(out, force, inputs)
+    if kind not in FMI_KINDS:
+        raise InputError(f"--kind {kind!r} is not allowed; choose me, cs or both")
+    s = settings or RotarySettings()
+    speeds = np.asarray(s.speeds, float) if s.speeds is not None else _default_speeds(
+        case, base_dir)
+    sumps = (np.asarray(s.sump_temperatures, float) if s.sump_temperatures is not None
+             else _default_sumps(case))
+    maps = rotary_maps(case, speeds=np.sort(speeds), sump_temperatures=np.sort(sumps),
+                       torque_speed_min=s.torque_speed_min, lag_order=s.lag_order,
+                       lag_speeds=s.lag_speeds, lag_sump_temperatures=s.lag_sump_temperatures,
+                       lag_duration=s.lag_duration,
+                       ambient_step=s.ambient_step if s.ambient_input else None,
+                       ambient_range=s.ambient_range, torque_points=tuple(s.torque_points),
+                       progress=progress)
+    spec = rotary_spec(case, maps, _identifier(name, out), title=title or case.title,
+                       source=source)
+    if not s.ambient_input:
+        spec.variables = [v if v.name != "T_ambient" else _hide(v) for v in spec.variables]
+    check = rotary_check(case, maps, spec, between=s.check_between,
+                         duty_cycle=s.check_duty_cycle, base_dir=base_dir)
+    return build_archive(spec, out, fmi_version=fmi_version, kind=kind, force=force,
+                         compile=compile, check=check,
+                         document=lambda sp: rotary_documentation(sp, maps))
+
+
+def _hide(variable):
+    from dataclasses import replace
+
+    return replace(variable, exposed=False)
+
+
+# -- case files ---------------------------------------------------------------------------------
+def case_kind(data: dict, source: str) -> str:
+    """"friction", "pneumatic", "rotary" or "fmu" from the tables of a case file."""
+    tables = set(data)
+    if "fmu" in tables:
+        return "fmu"
+    if "bench" in tables:
+        return "friction"
+    if tables & {"cylinder", "seals", "air", "valve", "controller"}:
+        return "pneumatic"
+    if "seal" in tables and not tables & {"gland", "material", "mesh", "map", "load"}:
+        return "rotary"
+    raise InputError(f"{source} is neither a friction case ([bench]), a pneumatic case "
+                     "([cylinder], [[seals]]), a rotary case ([seal], [duty]) nor an FMU case "
+                     "([fmu]); see examples/fmu/")
+
+
+def _one_variant(cases: dict, variant: str | None, source: str, same=None):
+    """The variant to export: the one asked for, the only one, or any when all agree."""
+    if variant is not None:
+        if variant not in cases:
+            raise InputError(f"{source}: variant {variant!r} does not exist; choose one of "
+                             f"{', '.join(cases)}")
+        return variant, cases[variant]
+    if len(cases) == 1 or (same is not None and len({same(c) for c in cases.values()}) == 1):
+        name = next(iter(cases))
+        return name, cases[name]
+    raise InputError(f"{source} has the variants {', '.join(cases)}; choose one with "
+                     "--variant (or fmu.variant)")
+
+
+def _law(params):
+    from sealsim.friction import make_law
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")          # LuGre passivity: documented in the law
+        return make_law(params)
+
+
+def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: bool = False,
+              variant: str | None = None, seal: str | None = None, compile: bool = True,
+              progress=None) -> BuildResult:
+    """Build the FMU of a case file.
+
+    Parameters
+    ----------
+    path : path
+        A friction case (``[friction]`` + ``[bench]``: the law with the constant contact of
+        its ``[inputs]``), a pneumatic case (the law and contact map of one seal), a rotary
+        case (the lip-seal FMU), or an FMU case (``[fmu]``, see :mod:`sealsim.fmu.case`).
+    out : path
+        The ``.fmu`` file; refused if it exists, unless ``force``.
+    fmi_version : {2, 3}
+    kind : {"me", "cs", "both"}
+    variant, seal : str, optional
+        Which variant of the case, which seal of a pneumatic case (also ``fmu.variant``,
+        ``fmu.seal`` of an FMU case).
+    compile : bool
+        False: a source-only FMU.
+    progress : callable, optional
+        ``progress(task, done, total)``.
+    """
+    path = Path(path)
+    check_output(out, force, [path])
+    source = f"case file {str(path)!r}"
+    data = load_toml(path)
+    kind_of = case_kind(data, source)
+    fmu_case = None
+    inputs = [path]
+    law_override = None
+    if kind_of == "fmu":
+        fmu_case = validate_case(FMUCase, data, source)
+        settings = fmu_case.fmu
+        variant = variant or settings.variant
+        seal = seal or settings.seal
+        if settings.friction_file is not None:
+            fitted = path.parent / settings.friction_file
+            law_override = validate_case(FrictionTable, load_toml(fitted),
+                                         f"friction file {str(fitted)!r}").friction
+            inputs.append(fitted)
+        elif fmu_case.friction is not None:
+            law_override = fmu_case.friction
+        if settings.source is None:
+            return _inline_friction(fmu_case, law_override, path, out, fmi_version, kind,
+                                    force, compile, inputs)
+        source_path = path.parent / settings.source
+        inputs.append(source_path)
+        source = f"case file {str(source_path)!r}"
+        data = load_toml(source_path)
+        kind_of = case_kind(data, source)
+        if kind_of == "fmu":
+            raise InputError(f"fmu.source: {str(source_path)!r} is an FMU case itself; give a "
+                             "friction, pneumatic or rotary case")
+        base = source_path.parent
+    else:
+        base = path.parent
+    common = dict(name=fmu_case.fmu.name if fmu_case else None, fmi_version=fmi_version,
+                  kind=kind, force=force, compile=compile, inputs=inputs)
+    title = fmu_case.title if fmu_case and fmu_case.title else ""
+    if kind_of == "rotary":
+        from sealsim.rotary.case import RotaryCase
+
+        if law_override is not None:
+            raise InputError("[friction] and fmu.friction_file apply to seal friction FMUs, "
+                             "not to a rotary case")
+        name, case = _one_variant(expand_variants(RotaryCase, data, source), variant, source)
+        return build_rotary_fmu(case, out, settings=fmu_case.rotary if fmu_case else None,
+                                base_dir=base, title=title or case.title,
+                                source=f"{source}, variant {name!r}", progress=progress,
+                                **common)
+    table = fmu_case.table if fmu_case else None
+    if kind_of == "friction":
+        from sealsim.friction.case import load_friction_cases
+
+        cases = load_friction_cases(data, source)
+        name, case = _one_variant(cases, variant, source,
+                                  same=lambda c: repr((c.friction, c.inputs)))
+        params = law_override or case.friction
+        i = case.inputs
+        return build_friction_fmu(
+            _law(params), out, normal_force=i.normal_force, contact_width=i.contact_width,
+            seal_temperature=i.temperature if i.temperature is not None else 293.15,
+            table=table, title=title or case.title,
+            source=f"{source}, variant {name!r}", **common)
+    from sealsim.pneumatic.case import body_temperature, build_contact_map, load_pneumatic_cases
+
+    cases = load_pneumatic_cases(data, source)
+    name, case = _one_variant(cases, variant, source, same=lambda c: repr(c.seals))
+    seals = {s.name: s for s in case.seals}
+    if not seals:
+        raise InputError(f"{source} has no [[seals]] to export")
+    if seal is None:
+        if len(seals) > 1:
+            raise InputError(f"{source} has the seals {', '.join(seals)}; choose one with "
+                             "--seal (or fmu.seal)")
+        seal = next(iter(seals))
+    if seal not in seals:
+        raise InputError(f"{source}: there is no seal {seal!r}; choose one of "
+                         f"{', '.join(seals)}")
+    spec = seals[seal]
+    where = f"seals[{case.seals.index(spec)}] ({seal!r}).map"
+    law = _law(law_override or spec.friction)
+    contact_map = None
+    if spec.map is not None:
+        diameter = (case.cylinder.bore if spec.location == "piston"
+                    else case.cylinder.rod_diameter)
+        contact_map = build_contact_map(spec.map, diameter, base, where,
+                                        None if progress is None else
+                                        (lambda d, n: progress("FE map", d, n)))
+    temperature = spec.temperature
+    if temperature is None:
+        temperature = case.cylinder.seal_temperature
+    if temperature is None:
+        temperature = body_temperature(case)
+    if contact_map is None and law.name == "theta":
+        raise InputError(f"{where}: the theta law needs the seal's normal force and contact "
+                         "width; give the seal a map")
+    return build_friction_fmu(law, out, contact_map=contact_map, seal_temperature=temperature,
+                              table=table, title=title or f"{case.title}: {seal} seal",
+                              source=f"{source}, variant {name!r}, seal {seal!r}", **common)
+
+
+def _inline_friction(fmu_case: FMUCase, params, path: Path, out, fmi_version, kind, force,
+                     compile, inputs) -> BuildResult:
+    """An FMU case with its own [friction] and [contact] tables."""
+    from sealsim.pneumatic.case import build_contact_map
+
+    contact = fmu_case.contact or ContactSettings()
+    contact_map = None
+    if contact.map is not None:
+        contact_map = build_contact_map(contact.map, contact.sliding_diameter or 0.0,
+                                        path.parent, "contact.map")
+    return build_friction_fmu(
+        _law(params), out, contact_map=contact_map, normal_force=contact.normal_force,
+        contact_width=contact.contact_width, seal_temperature=contact.temperature,
+        name=fmu_case.fmu.name, fmi_version=fmi_version, kind=kind, force=force,
+        compile=compile, table=fmu_case.table, title=fmu_case.title,
+        source=f"FMU case {str(path)!r}", inputs=inputs)

@@ -1,0 +1,280 @@
+/* Seal friction: the friction laws of sealsim.friction in C, one law per FMU (FRICTION_LAW).
+ *
+ * Sign convention (sealsim.friction.base): v is the sliding velocity of the body relative
+ * to the seal, F acts against the body (m dv/dt = F_applied - F).  Every formula mirrors
+ * the pure function of sealsim named next to it; the states advance with the exact update
+ * of sealsim's law.step() for inputs held over the step, so a communication step of any
+ * length is stable (stiff bristles, long dwells).
+ *
+ * Contact: F_N and b from the contact table (CONTACT_TABLE) at the pressure difference
+ * across the seal dp = x tanh(x/eps), x = p_A - p_B (sealsim.pneumatic.seals.smooth_abs),
+ * and the seal temperature; or the constant parameters normal_force, contact_width. */
+#include "sealsim_fmu.h"
+
+#define LAW_COULOMB 1
+#define LAW_STRIBECK 2
+#define LAW_LUGRE 3
+#define LAW_THETA 4
+
+#define P(name) (c->r[VR_##name])
+#define CLIP_PRESSURE 1u
+#define CLIP_TEMPERATURE 2u
+
+static double sgn(double x) {
+    return (double)((x > 0.0) - (x < 0.0));  /* numpy.sign: sgn(0) = 0 */
+}
+
+typedef struct {
+    double v, normal_force, contact_width, dp;
+} Contact;
+
+/* the contact at the current inputs, cached until an input or a parameter is set */
+static Contact contact(Instance *c) {
+    Contact k;
+    if (c->cache_valid) {
+        k.v = c->cache[0];
+        k.normal_force = c->cache[1];
+        k.contact_width = c->cache[2];
+        k.dp = c->cache[3];
+        return k;
+    }
+    double x = P(P_A) - P(P_B);
+    k.v = P(V);
+    k.dp = x * tanh(x / P(PRESSURE_ROUNDING));
+#if CONTACT_TABLE
+    double values[2];
+    double dp = fmu_clip(c, CLIP_PRESSURE, "pressure difference dp", "Pa", k.dp, MAP_P_LO,
+                         MAP_P_HI);
+    double temperature = fmu_clip(c, CLIP_TEMPERATURE, "seal temperature T_seal", "K",
+                                  P(T_SEAL), MAP_T_LO, MAP_T_HI);
+    hermite_evaluate(&CONTACT_MAP, temperature, dp, values);
+    k.normal_force = values[0];
+    k.contact_width = values[1];
+#else
+    k.normal_force = P(NORMAL_FORCE);
+    k.contact_width = P(CONTACT_WIDTH);
+#endif
+    c->cache[0] = k.v;
+    c->cache[1] = k.normal_force;
+    c->cache[2] = k.contact_width;
+    c->cache[3] = k.dp;
+    c->cache_valid = 1;
+    return k;
+}
+
+/* -- Stribeck curve and pressure scaling (sealsim.friction.stribeck) --------------------- */
+#if FRICTION_LAW == LAW_COULOMB || FRICTION_LAW == LAW_STRIBECK
+/* pressure_scaled_force: F_C(p) = F_C + f (p_A + p_B); F_S keeps the ratio F_S/F_C */
+static void scaled_levels(Instance *c, double *fc, double *fs) {
+    double fc0 = P(COULOMB_FORCE);
+    double scaled = fc0 + P(PRESSURE_COEFFICIENT) * (P(P_A) + P(P_B));
+    *fc = scaled;
+#if FRICTION_LAW == LAW_STRIBECK
+    double fs0 = P(STATIC_FORCE);
+    *fs = fc0 > 0.0 ? fs0 * scaled / fc0 : fs0 + (scaled - fc0);
+#else
+    *fs = scaled;
+#endif
+}
+#endif
+
+#if FRICTION_LAW == LAW_STRIBECK || FRICTION_LAW == LAW_LUGRE
+/* stribeck_level: g(v) = F_C + (F_S - F_C) exp(-|v/v_S|^delta) */
+static double stribeck_level(double v, double fc, double fs, double vs, double delta) {
+    return fc + (fs - fc) * exp(-pow(fabs(v / vs), delta));
+}
+#endif
+
+/* -- LuGre bristle (sealsim.friction.lugre) -------------------------------------------------- */
+#if FRICTION_LAW == LAW_LUGRE || (FRICTION_LAW == LAW_THETA && THETA_BRISTLES)
+/* lugre_bristle_rate: dz/dt = v - sigma0 |v| z / g */
+static double bristle_rate(double z, double v, double sigma0, double g) {
+    return v - sigma0 * fabs(v) * z / g;
+}
+
+/* lugre_bristle_step: z(t+h) = z_ss + (z - z_ss) exp(-sigma0 |v| h / g) */
+static double bristle_step(double z, double v, double h, double sigma0, double g) {
+    double decay = -expm1(-sigma0 * fabs(v) * h / g);
+    double z_ss = sgn(v) * g / sigma0;
+    return (1.0 - decay) * z + z_ss * decay;
+}
+#endif
+
+/* -- Theta rate-and-state law (sealsim.friction.theta) --------------------------------------- */
+#if FRICTION_LAW == LAW_THETA
+/* (F_N/F_ref)^n */
+static double load_factor(Instance *c, double normal_force) {
+    return pow(normal_force / P(REFERENCE_NORMAL_FORCE), P(LOAD_EXPONENT));
+}
+
+/* theta_friction_level: g = F_N [f_a (1 - theta) + f_b theta] */
+static double theta_level(Instance *c, double theta, double normal_force) {
+    return normal_force * (P(F_A) * (1.0 - theta) + P(F_B) * theta);
+}
+
+/* The viscous coefficient gamma [N s/m^2] of F = ... + gamma b v.  A temperature-dependent
+ * gamma(T) (grease viscosity) is evaluated here from P(T_SEAL). */
+static double viscous_coefficient(Instance *c) {
+    return P(GAMMA);
+}
+
+/* theta_rate: dtheta/dt = -theta/tau + |v|/(alpha (F_N/F_ref)^n) (1 - theta) */
+static double theta_rate(Instance *c, double theta, const Contact *k) {
+    double p = load_factor(c, k->normal_force);
+    return -theta / P(TAU) + fabs(k->v) / (P(ALPHA) * p) * (1.0 - theta);
+}
+
+/* theta_step: exact theta after h with v and F_N held */
+static double theta_step(Instance *c, double theta, const Contact *k, double h) {
+    double speed = fabs(k->v), tau = P(TAU), alpha = P(ALPHA);
+    double p = load_factor(c, k->normal_force);
+    double r = speed > 0.0 ? (p > 0.0 ? speed / (alpha * p) : INFINITY) : 0.0;
+    double decay = -expm1(-(1.0 / tau + r) * h);
+    double v_star = alpha / tau * p;
+    double theta_ss = speed > 0.0 ? speed / (speed + v_star) : 0.0;
+    return (1.0 - decay) * theta + theta_ss * decay;
+}
+#endif
+
+/* -- the model interface ---------------------------------------------------------------------- */
+FmuStatus model_check_parameters(Instance *c) {
+#if FRICTION_LAW == LAW_STRIBECK || FRICTION_LAW == LAW_LUGRE
+    if (P(STATIC_FORCE) < P(COULOMB_FORCE)) {
+        fmu_log(c, FMU_ERROR, "logStatusError",
+                "static_force (%g N) must be >= coulomb_force (%g N)", P(STATIC_FORCE),
+                P(COULOMB_FORCE));
+        return FMU_ERROR;
+    }
+#endif
+#if FRICTION_LAW == LAW_THETA && THETA_BRISTLES
+    if (P(F_A) <= 0.0 || P(F_B) <= 0.0) {
+        fmu_log(c, FMU_ERROR, "logStatusError",
+                "with bristle_stiffness the friction coefficients f_a and f_b must be > 0 "
+                "(the bristles saturate at F_N*f), got f_a = %g, f_b = %g", P(F_A), P(F_B));
+        return FMU_ERROR;
+    }
+#endif
+    (void)c;
+    return FMU_OK;
+}
+
+FmuStatus model_initialize(Instance *c) {
+#if FRICTION_LAW == LAW_THETA
+    if (P(THETA) < 0.0 || P(THETA) > 1.0) {
+        fmu_log(c, FMU_ERROR, "logStatusError",
+                "the start value of theta (%g) must lie in [0, 1]", P(THETA));
+        return FMU_ERROR;
+    }
+    c->nominals[STATE_THETA] = 1.0;
+#endif
+#if FRICTION_LAW == LAW_LUGRE
+    c->nominals[STATE_Z] = P(STATIC_FORCE) / P(SIGMA0);
+#endif
+#if FRICTION_LAW == LAW_THETA && THETA_BRISTLES
+    {
+        Contact k = contact(c);
+        double z_scale = theta_level(c, 0.0, k.normal_force) / P(BRISTLE_STIFFNESS);
+        c->nominals[STATE_Z] = z_scale > 0.0 ? z_scale : 1e-6;
+    }
+#endif
+    (void)c;
+    return FMU_OK;
+}
+
+FmuStatus model_outputs(Instance *c) {
+    Contact k = contact(c);
+    double force = 0.0, breakaway = 0.0;
+#if FRICTION_LAW == LAW_THETA || CONTACT_TABLE
+    if (!(k.normal_force > 0.0) || !(k.contact_width >= 0.0)) {
+        fmu_log(c, FMU_ERROR, "logStatusError",
+                "contact: normal force %g N must be > 0 and contact width %g m >= 0",
+                k.normal_force, k.contact_width);
+        return FMU_ERROR;
+    }
+#endif
+#if FRICTION_LAW == LAW_COULOMB
+    double fc, fs;
+    scaled_levels(c, &fc, &fs);
+    force = fc * sgn(k.v) + P(VISCOUS_COEFFICIENT) * k.v;     /* coulomb_viscous_force */
+    breakaway = fs;
+#elif FRICTION_LAW == LAW_STRIBECK
+    double fc, fs;
+    scaled_levels(c, &fc, &fs);
+    force = stribeck_level(k.v, fc, fs, P(STRIBECK_VELOCITY), P(EXPONENT)) * sgn(k.v) +
+            P(VISCOUS_COEFFICIENT) * k.v;                       /* stribeck_force */
+    breakaway = fs;
+#elif FRICTION_LAW == LAW_LUGRE
+    double g = stribeck_level(k.v, P(COULOMB_FORCE), P(STATIC_FORCE), P(STRIBECK_VELOCITY),
+                              P(EXPONENT));
+    double zdot = bristle_rate(P(Z), k.v, P(SIGMA0), g);
+    force = P(SIGMA0) * P(Z) + P(SIGMA1) * zdot + P(SIGMA2) * k.v;   /* lugre_force */
+#elif FRICTION_LAW == LAW_THETA
+    double level = theta_level(c, P(THETA), k.normal_force);
+    double gamma = viscous_coefficient(c);
+#if THETA_BRISTLES
+    double zdot = bristle_rate(P(Z), k.v, P(BRISTLE_STIFFNESS), level);
+    force = P(BRISTLE_STIFFNESS) * P(Z) + P(BRISTLE_DAMPING) * zdot +
+            gamma * k.contact_width * k.v;
+#else
+    force = level * sgn(k.v) + gamma * k.contact_width * k.v;      /* theta_force */
+    breakaway = level;
+#endif
+#endif
+    if (!isfinite(force) || !isfinite(breakaway)) {
+        fmu_log(c, FMU_ERROR, "logStatusError",
+                "the friction force is not finite (v = %g m/s, F_N = %g N, b = %g m)", k.v,
+                k.normal_force, k.contact_width);
+        return FMU_ERROR;
+    }
+    P(F) = force;
+    P(F_BREAKAWAY) = breakaway;
+    P(F_N) = k.normal_force;
+    P(B) = k.contact_width;
+    P(DP) = k.dp;
+    P(MAP_CLIPPED) = c->clipping != 0u ? 1.0 : 0.0;
+    return FMU_OK;
+}
+
+void model_derivatives(Instance *c, double *dx) {
+#if NSTATES > 0
+    Contact k = contact(c);
+#if FRICTION_LAW == LAW_LUGRE
+    double g = stribeck_level(k.v, P(COULOMB_FORCE), P(STATIC_FORCE), P(STRIBECK_VELOCITY),
+                              P(EXPONENT));
+    dx[STATE_Z] = bristle_rate(P(Z), k.v, P(SIGMA0), g);
+#elif FRICTION_LAW == LAW_THETA
+    dx[STATE_THETA] = theta_rate(c, P(THETA), &k);
+#if THETA_BRISTLES
+    dx[STATE_Z] = bristle_rate(P(Z), k.v, P(BRISTLE_STIFFNESS),
+                               theta_level(c, P(THETA), k.normal_force));
+#endif
+#endif
+#else
+    (void)c;
+    (void)dx;
+#endif
+}
+
+FmuStatus model_step(Instance *c, double h) {
+#if NSTATES > 0
+    Contact k = contact(c);
+#if FRICTION_LAW == LAW_LUGRE
+    double g = stribeck_level(k.v, P(COULOMB_FORCE), P(STATIC_FORCE), P(STRIBECK_VELOCITY),
+                              P(EXPONENT));
+    P(Z) = bristle_step(P(Z), k.v, h, P(SIGMA0), g);
+#elif FRICTION_LAW == LAW_THETA
+    double theta0 = P(THETA);
+    double theta1 = theta_step(c, theta0, &k, h);
+#if THETA_BRISTLES
+    /* the bristle step with the friction level of the step's mid-state (Theta.step) */
+    double g_mid = theta_level(c, 0.5 * (theta0 + theta1), k.normal_force);
+    P(Z) = bristle_step(P(Z), k.v, h, P(BRISTLE_STIFFNESS), g_mid);
+#endif
+    P(THETA) = theta1;
+#endif
+#else
+    (void)c;
+    (void)h;
+#endif
+    return FMU_OK;
+}

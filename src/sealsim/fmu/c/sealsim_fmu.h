@@ -1,0 +1,127 @@
+/* sealsim FMU runtime: what the FMI glue (fmi2_glue.c, fmi3_glue.c) and a model
+ * (friction_model.c, rotary_model.c) share.
+ *
+ * Every variable of an FMU is a double in Instance.r[], indexed by its value reference
+ * (Booleans are stored as 0/1).  The generated config.h defines the value references
+ * (VR_... macros), the variable table VARIABLES[] with the bounds of every parameter,
+ * START_VALUES[], the continuous states (STATE_VR[], DERIVATIVE_VR[]) and the model's
+ * tables.  Part of the FMUs that sealsim.fmu generates: plain C99, no dependencies beyond
+ * the C library and the FMI headers.
+ */
+#ifndef SEALSIM_FMU_H
+#define SEALSIM_FMU_H
+
+#include <math.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef enum {
+    FMU_OK = 0,
+    FMU_WARNING = 1,
+    FMU_DISCARD = 2,
+    FMU_ERROR = 3,
+    FMU_FATAL = 4
+} FmuStatus;
+
+/* causality of a variable */
+enum { CAUSALITY_PARAMETER, CAUSALITY_INPUT, CAUSALITY_OUTPUT, CAUSALITY_LOCAL,
+       CAUSALITY_INDEPENDENT };
+
+/* life-cycle phase of an instance */
+enum { PHASE_INSTANTIATED, PHASE_INITIALIZATION, PHASE_RUNNING, PHASE_TERMINATED,
+       PHASE_ERROR };
+
+/* when a variable may be set: never (computed), before the end of initialization
+ * (parameters, start values of states) or at any time (inputs) */
+enum { SET_NEVER, SET_BEFORE_INIT, SET_ALWAYS };
+
+/* a lower/upper bound: BOUND_NONE, inclusive (>=, <=) or exclusive (>, <) */
+enum { BOUND_NONE, BOUND_INCLUSIVE, BOUND_EXCLUSIVE };
+
+typedef struct {
+    const char *name;
+    const char *unit;      /* for messages */
+    int causality;
+    int is_boolean;
+    int settable;          /* SET_NEVER, SET_BEFORE_INIT or SET_ALWAYS */
+    int lower_kind;
+    double lower;
+    int upper_kind;
+    double upper;
+} VariableInfo;
+
+/* a C1 piecewise-cubic Hermite table on a rectilinear 2-D grid (hermite.c) */
+typedef struct {
+    int n0, n1, nvars;
+    const double *x0, *x1;
+    /* per node (i0, i1): nvars values, nvars d/dx0, nvars d/dx1, nvars d2/dx0dx1 */
+    const double *data;
+} HermiteTable;
+
+void hermite_evaluate(const HermiteTable *t, double a, double b, double *out);
+
+#include "config.h"
+
+#if NSTATES > 0
+#define STATE_ARRAY_SIZE NSTATES
+#else
+#define STATE_ARRAY_SIZE 1
+#endif
+
+typedef struct {
+    double r[NVARS];          /* every variable by value reference */
+    double time;
+    int phase;
+    int cosimulation;         /* 1: co-simulation, 0: model exchange */
+    int logging_on;
+    int outputs_valid;        /* outputs are up to date with inputs, parameters and states */
+    unsigned clipping;        /* bit set of quantities clipped to their table (warned once) */
+    int cache_valid;          /* cache holds what the model derived from inputs and parameters */
+    double cache[8];
+    double nominals[STATE_ARRAY_SIZE];
+    char instance_name[128];
+    void *environment;        /* the host's environment pointer, handed back to the logger */
+    void (*logger)(void);     /* the host's logger; cast by the glue of its FMI version */
+} Instance;
+
+/* -- provided by the glue of the FMI version -------------------------------------------- */
+void glue_log(Instance *c, FmuStatus status, const char *category, const char *message);
+
+/* -- provided by the model ------------------------------------------------------------------ */
+/* Checks between parameters (bounds of single parameters are checked by the runtime). */
+FmuStatus model_check_parameters(Instance *c);
+/* Initial states and state nominals at the end of initialization. */
+FmuStatus model_initialize(Instance *c);
+/* Outputs from the states, inputs and parameters. */
+FmuStatus model_outputs(Instance *c);
+/* dx/dt of the continuous states (model exchange). */
+void model_derivatives(Instance *c, double *dx);
+/* Advance the states by h with the inputs held constant (co-simulation): exact or implicit. */
+FmuStatus model_step(Instance *c, double h);
+
+/* -- the runtime (fmu_runtime.c) ---------------------------------------------------------- */
+void fmu_log(Instance *c, FmuStatus status, const char *category, const char *format, ...);
+Instance *fmu_instantiate(const char *name, int cosimulation, int logging_on,
+                          void *environment, void (*logger)(void));
+void fmu_free(Instance *c);
+void fmu_reset(Instance *c);
+FmuStatus fmu_get_real(Instance *c, const unsigned *vr, size_t n, double *value);
+FmuStatus fmu_set_real(Instance *c, const unsigned *vr, size_t n, const double *value);
+FmuStatus fmu_get_boolean(Instance *c, const unsigned *vr, size_t n, int *value);
+FmuStatus fmu_set_boolean(Instance *c, const unsigned *vr, size_t n, const int *value);
+FmuStatus fmu_enter_initialization(Instance *c);
+FmuStatus fmu_exit_initialization(Instance *c);
+FmuStatus fmu_do_step(Instance *c, double t, double h);
+FmuStatus fmu_get_states(Instance *c, double *x, size_t n);
+FmuStatus fmu_set_states(Instance *c, const double *x, size_t n);
+FmuStatus fmu_get_derivatives(Instance *c, double *dx, size_t n);
+FmuStatus fmu_get_nominals(Instance *c, double *x, size_t n);
+void fmu_set_time(Instance *c, double t);
+/* Clip value to [lo, hi]; warn once when it leaves the range (bit: a CLIP_... flag). */
+double fmu_clip(Instance *c, unsigned bit, const char *what, const char *unit, double value,
+                double lo, double hi);
+
+#endif

@@ -1,0 +1,371 @@
+"""The rotary lip-seal FMU: steady maps and thermal lag of :mod:`.rotary_maps` in C.
+
+Interface (SI):
+
+===================  ======  =============================================================
+variable             unit    meaning
+===================  ======  =============================================================
+speed                rad/s   input: shaft speed (display unit rpm)
+T_sump               K       input: oil sump temperature
+T_ambient            K       input (optional): ambient temperature
+torque               N m     output: friction torque (sign of the speed)
+power                W       output: power loss torque·|speed|
+T_contact            K       output: contact temperature
+T_contact_steady     K       output: contact temperature it tends to at these inputs
+map_clipped          -       output: true while an input lies outside the maps (clipped)
+T_rise_1 ... N       K       states: components of the contact temperature rise
+T_sump_lagged        K       state: the sump temperature as the contact feels it
+start_steady         -       parameter: start in steady state (default) or at
+T_contact_start      K       parameter: the contact temperature to start from
+===================  ======  =============================================================
+
+:func:`rotary_spec` computes the maps from the case (a few seconds), :func:`rotary_check`
+compares the compiled FMU with the full model -- steady torque and contact temperature at
+the grid points, optionally between them and over the case's own duty cycle (the transient
+model with its free sump, the FMU fed with that sump temperature) -- and documents the errors.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from sealsim.errors import InputError
+from sealsim.fmu.model_description import ModelSpec, Variable
+from sealsim.fmu.rotary_maps import (
+    CELSIUS_0,
+    ThermalLag,
+    fixed_sump_case,
+    steady_rise_map,
+    thermal_lag,
+    torque_map,
+)
+from sealsim.fmu.tables import pchip_table
+from sealsim.properties.elastomers import ServiceRangeWarning
+from sealsim.properties.oils import OilRangeWarning
+from sealsim.rotary.case import RotaryCase
+from sealsim.rotary.simulation import lip_seal_friction
+
+__all__ = ["RPM", "SPEED_SCALE", "RotaryMaps", "rotary_check", "rotary_maps", "rotary_spec"]
+
+RPM = math.pi / 30.0
+#: ω_s of the speed coordinate u = ln(1 + |ω|/ω_s) of the tables [rad/s] (10 rpm)
+SPEED_SCALE = 10.0 * RPM
+
+
+def speed_coordinate(speed):
+    """u = ln(1 + |ω|/ω_s), the speed axis of the tables (as the C code computes it)."""
+    return np.log1p(np.abs(np.asarray(speed, dtype=float)) / SPEED_SCALE)
+
+
+@dataclass
+class RotaryMaps:
+    """Everything the rotary FMU embeds, with its grids (SI)."""
+
+    speeds: np.ndarray
+    sump_temperatures: np.ndarray
+    ambient: float
+    ambient_range: float
+    steady: dict
+    torque_speeds: np.ndarray
+    torque_temperatures: np.ndarray
+    torque: np.ndarray
+    lag: ThermalLag
+    notes: list = field(default_factory=list)
+
+
+def rotary_maps(case: RotaryCase, *, speeds, sump_temperatures, torque_speed_min: float,
+                lag_order: int = 2, lag_speeds=None, lag_sump_temperatures=None,
+                lag_duration: float = 3600.0, ambient_step: float | None = 10.0,
+                ambient_range: float = 30.0, torque_points: tuple[int, int] = (65, 61),
+                progress=None) -> RotaryMaps:
+    """Compute the steady maps, the torque map and the thermal lag of a rotary case.
+
+    Parameters
+    ----------
+    case : RotaryCase
+    speeds : array_like
+        Speed grid of the steady map [rad/s] (ascending, >= 0; 0 allowed).
+    sump_temperatures : array_like
+        Sump temperature grid [K] (ascending, at least two).
+    torque_speed_min : float
+        Lowest speed of the torque table [rad/s]; below it the torque ramps to 0.
+    lag_order : {1, 2, 3}
+    lag_speeds : array_like, optional
+        Speeds of the step responses [rad/s] (default: up to five of the positive grid
+        speeds, the lowest and the highest among them).
+    lag_sump_temperatures : array_like, optional
+        Sump temperatures of the step responses [K] (default: lowest, middle and highest of
+        the grid).
+    lag_duration : float
+        Length of each step response run [s].
+    ambient_step : float or None
+        Step of the ambient sensitivity [K]; None: the ambient is not an input.
+    ambient_range : float
+        The FMU clips the ambient to T_a0 ± this [K].
+    torque_points : (int, int)
+        Nodes of the torque table over speed and contact temperature.
+    progress : callable, optional
+        ``progress(task, done, total)``.
+    """
+    speeds = np.asarray(speeds, dtype=float)
+    sumps = np.asarray(sump_temperatures, dtype=float)
+    if speeds.size < 2 or np.any(np.diff(speeds) <= 0) or speeds[0] < 0:
+        raise InputError("rotary.speeds: give at least two ascending speeds >= 0")
+    if sumps.size < 2 or np.any(np.diff(sumps) <= 0):
+        raise InputError("rotary.sump_temperatures: give at least two ascending temperatures")
+    if not 0 < torque_speed_min < speeds[-1]:
+        raise InputError("rotary.torque_speed_min must be > 0 and below the highest speed")
+    report = (lambda task: None if progress is None else
+              (lambda done, total: progress(task, done, total)))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", (ServiceRangeWarning, OilRangeWarning))
+        steady = steady_rise_map(case, speeds, sumps, ambient_step, report("steady map"))
+        if lag_speeds is None:
+            positive = speeds[speeds > 0]
+            lag_speeds = positive[np.unique(np.linspace(0, positive.size - 1,
+                                                        min(5, positive.size)).round()
+                                            .astype(int))]
+        if lag_sump_temperatures is None:
+            lag_sump_temperatures = [sumps[0], 0.5 * (sumps[0] + sumps[-1]), sumps[-1]]
+        lag = thermal_lag(case, np.sort(np.asarray(lag_speeds, float)),
+                          np.sort(np.asarray(lag_sump_temperatures, float)), lag_order,
+                          lag_duration, progress=report("thermal lag"))
+        n_speed, n_temp = torque_points
+        t_speeds = np.geomspace(torque_speed_min, speeds[-1], n_speed)
+        contact = sumps[None, :] + steady["rise"]
+        low = min(float(contact.min()), float(sumps[0])) - 10.0 - ambient_range * float(
+            np.abs(steady["ambient_sensitivity"]).max())
+        high = float(contact.max()) + 10.0 + ambient_range * float(
+            np.abs(steady["ambient_sensitivity"]).max())
+        # within the temperatures the elastomer and oil models accept
+        friction = lip_seal_friction(case)
+        allowed_lo, allowed_hi = friction.elastomer.allowed_range
+        oil_min = friction.oil.min_temperature
+        low = max(low, allowed_lo, oil_min if oil_min is not None else -np.inf)
+        high = min(high, allowed_hi)
+        t_temps = np.linspace(low, high, n_temp)
+        torque = torque_map(case, t_speeds, t_temps)
+    notes = []
+    unsettled = lag.speeds[np.any(lag.settled < 0.99, axis=1)]
+    if unsettled.size:
+        notes.append("the step responses at " + ", ".join(f"{w / RPM:.4g}" for w in unsettled)
+                     + " rpm had not settled (within 1 percent) after the lag duration; "
+                     "raise rotary.lag_duration")
+    return RotaryMaps(speeds, sumps, float(case.environment.ambient_temperature),
+                      float(ambient_range), steady, t_speeds, t_temps, torque, lag, notes)
+
+
+def rotary_spec(case: RotaryCase, maps: RotaryMaps, identifier: str, *, title: str = "",
+                source: str = "") -> ModelSpec:
+    """The model of a rotary lip-seal FMU from its maps."""
+    env = case.environment
+    sump0 = float(env.sump_temperature if env.sump_temperature is not None else (
+        env.start_temperature if env.start_temperature is not None
+        else env.ambient_temperature))
+    sump0 = float(np.clip(sump0, maps.sump_temperatures[0], maps.sump_temperatures[-1]))
+    order = maps.lag.order
+    variables = [
+        Variable("time", "TIME", "independent", "simulation time", "s"),
+        Variable("speed", "SPEED", "input", "shaft speed", "rad/s", 0.0),
+        Variable("T_sump", "T_SUMP", "input", "oil sump temperature", "K", sump0),
+        Variable("T_ambient", "T_AMBIENT", "input", "ambient temperature", "K", maps.ambient),
+        Variable("torque", "TORQUE", "output", "friction torque of the seal", "N.m"),
+        Variable("power", "POWER", "output", "power loss torque*|speed|", "W"),
+        Variable("T_contact", "T_CONTACT", "output", "contact temperature of the lip", "K"),
+        Variable("T_contact_steady", "T_CONTACT_STEADY", "output",
+                 "contact temperature in steady state at the current inputs", "K"),
+        Variable("map_clipped", "MAP_CLIPPED", "output",
+                 "true while an input lies outside the maps (clipped)", boolean=True),
+    ]
+    for i in range(3):
+        variables.append(Variable(f"T_rise_{i + 1}", f"RISE_{i + 1}", "output",
+                                  f"component {i + 1} of the contact temperature rise above "
+                                  "the lagged sump temperature", "K", 0.0, state=True,
+                                  relative=True, exposed=i < order))
+    variables.append(Variable("T_sump_lagged", "SUMP_LAG", "output",
+                              "sump temperature as the contact feels it (slowest lag)", "K",
+                              sump0, state=True))
+    for i in range(3):
+        variables.append(Variable(f"der(T_rise_{i + 1})", f"DER_RISE_{i + 1}", "local",
+                                  f"time derivative of T_rise_{i + 1}", "K/s",
+                                  derivative_of=f"T_rise_{i + 1}", exposed=i < order))
+    variables.append(Variable("der(T_sump_lagged)", "DER_SUMP_LAG", "local",
+                              "time derivative of T_sump_lagged", "K/s",
+                              derivative_of="T_sump_lagged"))
+    variables += [
+        Variable("start_steady", "START_STEADY", "parameter",
+                 "start in steady state at the initial inputs (else at T_contact_start)",
+                 start=1.0, boolean=True),
+        Variable("T_contact_start", "T_CONTACT_START", "parameter",
+                 "contact temperature at the start when start_steady is false", "K", sump0,
+                 lower=(">", 0.0)),
+    ]
+    u_steady = speed_coordinate(maps.speeds)
+    steady_values = np.stack([maps.steady["rise"], maps.steady["ambient_sensitivity"]], -1)
+    steady_table = pchip_table(u_steady, maps.sump_temperatures, steady_values)
+    torque_table = pchip_table(speed_coordinate(maps.torque_speeds), maps.torque_temperatures,
+                               maps.torque[..., None])
+    torque_error = _torque_table_error(case, torque_table)
+    lag = maps.lag
+
+    def c_array(name, values):
+        return (f"static const double {name}[{len(values)}] = {{"
+                + ", ".join(repr(float(v)) for v in values) + "};")
+
+    tables = "\n".join([
+        steady_table.c_source("STEADY_MAP"), torque_table.c_source("TORQUE_MAP"),
+        c_array("LAG_U", speed_coordinate(lag.speeds)),
+        c_array("LAG_TS", lag.sump_temperatures),
+        c_array("LAG_WEIGHT", lag.weights.ravel()),
+        c_array("LAG_LOG_TAU", np.log(lag.time_constants).ravel())])
+    defines = {
+        "NLAG": order, "LAG_NU": int(lag.speeds.size),
+        "LAG_NT": int(lag.sump_temperatures.size), "SPEED_SCALE": repr(SPEED_SCALE),
+        "STEADY_SPEED_HI": repr(float(maps.speeds[-1])),
+        "STEADY_SUMP_LO": repr(float(maps.sump_temperatures[0])),
+        "STEADY_SUMP_HI": repr(float(maps.sump_temperatures[-1])),
+        "AMBIENT_MAP": repr(maps.ambient),
+        "AMBIENT_LO": repr(maps.ambient - maps.ambient_range),
+        "AMBIENT_HI": repr(maps.ambient + maps.ambient_range),
+        "TORQUE_SPEED_MIN": repr(float(maps.torque_speeds[0])),
+        "TORQUE_TC_LO": repr(float(maps.torque_temperatures[0])),
+        "TORQUE_TC_HI": repr(float(maps.torque_temperatures[-1])),
+    }
+    report = {
+        "source": source,
+        "steady_map": {"speeds_rpm": (maps.speeds / RPM).tolist(),
+                       "sump_temperatures_C": (maps.sump_temperatures - CELSIUS_0).tolist(),
+                       "ambient_C": maps.ambient - CELSIUS_0},
+        "torque_map": {"speed_range_rpm": [float(maps.torque_speeds[0] / RPM),
+                                           float(maps.torque_speeds[-1] / RPM)],
+                       "contact_temperature_range_C": [
+                           float(maps.torque_temperatures[0] - CELSIUS_0),
+                           float(maps.torque_temperatures[-1] - CELSIUS_0)],
+                       "nodes": [int(maps.torque_speeds.size),
+                                 int(maps.torque_temperatures.size)],
+                       "max_relative_error_at_cell_centres": torque_error},
+        "thermal_lag": {"order": order, "speeds_rpm": (lag.speeds / RPM).tolist(),
+                        "sump_temperatures_C": (lag.sump_temperatures - CELSIUS_0).tolist(),
+                        "weights": lag.weights.tolist(),
+                        "time_constants_s": lag.time_constants.tolist(),
+                        "fit_max_error": lag.max_errors.tolist(),
+                        "settled": lag.settled.tolist()},
+        "notes": list(maps.notes),
+    }
+    description = ("sealsim rotary lip seal: friction torque, power loss and contact "
+                   "temperature from steady maps of the coupled friction-thermal model and a "
+                   f"thermal lag of order {order}" + (f": {title}" if title else ""))
+    return ModelSpec(identifier, title or identifier, description, "rotary_model.c",
+                     variables, defines, tables, default_experiment=(0.0, 3600.0, 1.0),
+                     report=report)
+
+
+def _torque_table_error(case: RotaryCase, table) -> float:
+    """Largest relative difference of the torque table from sealsim's friction model at the
+    centres of its cells (the friction model has a kink where the film reaches its floor)."""
+    u, temps = table.axes
+    mid_u, mid_t = np.meshgrid(0.5 * (u[1:] + u[:-1]), 0.5 * (temps[1:] + temps[:-1]),
+                               indexing="ij")
+    speed = np.expm1(mid_u.ravel()) * SPEED_SCALE
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", (ServiceRangeWarning, OilRangeWarning))
+        exact = np.asarray(lip_seal_friction(case).evaluate(speed, mid_t.ravel()).torque)
+    approx = table.evaluate(mid_u.ravel(), mid_t.ravel())[:, 0]
+    return float(np.max(np.abs(approx / exact - 1.0)))
+
+
+def rotary_check(case: RotaryCase, maps: RotaryMaps, spec: ModelSpec, *,
+                 between: bool = True, duty_cycle: bool = True, base_dir: Path | None = None,
+                 progress=None):
+    """A build check: the compiled rotary FMU against the full model.
+
+    Returns ``check(folder, token)`` for :func:`sealsim.fmu.builder.build_archive`.  It
+    measures (and records in the build report) the relative error of the steady torque at
+    every grid point (speed > 0); with ``between`` also at the centres between grid points
+    (new :func:`~sealsim.rotary.simulation.steady_state` runs); with ``duty_cycle`` the
+    errors over the case's own duty cycle: :func:`~sealsim.rotary.simulation.simulate`
+    (free or held sump as in the case) against the FMU fed with that run's speed and sump
+    temperature.
+    """
+    from sealsim.fmu.cosim import run_rotary
+    from sealsim.fmu.instance import LoadedFMU
+    from sealsim.rotary.simulation import simulate, steady_state
+
+    def steady_fmu(fmu, speed, sump):
+        fmu.reset()
+        fmu.set(speed=speed, T_sump=sump)
+        fmu.initialize()
+        torque, contact = fmu.get("torque", "T_contact")
+        return torque, contact
+
+    def check(folder: Path, token: str) -> None:
+        results = {}
+        with LoadedFMU(folder, "cs", "build_check") as fmu:
+            errors, contact_errors = [], []
+            for i, w in enumerate(maps.speeds):
+                if w <= 0:
+                    continue
+                for j, ts in enumerate(maps.sump_temperatures):
+                    torque, contact = steady_fmu(fmu, w, ts)
+                    errors.append(abs(torque / maps.steady["torque"][i, j] - 1.0))
+                    contact_errors.append(abs(contact - maps.steady["T_contact"][i, j]))
+            results["grid"] = {"max_torque_rel_error": max(errors),
+                               "max_T_contact_error_K": max(contact_errors)}
+            if between:
+                mid_w = np.sqrt(maps.speeds[1:] * maps.speeds[:-1])
+                mid_w = mid_w[mid_w > 0]
+                mid_t = 0.5 * (maps.sump_temperatures[1:] + maps.sump_temperatures[:-1])
+                rows = []
+                with warnings.catch_warnings():
+                    warnings.simplefilter("ignore", (ServiceRangeWarning, OilRangeWarning))
+                    for ts in mid_t:
+                        held = fixed_sump_case(case, ts)
+                        for w in mid_w:
+                            full = steady_state(held, float(w))
+                            torque, contact = steady_fmu(fmu, w, ts)
+                            rows.append((w, ts, full["torque_Nm"], torque,
+                                         full["T_contact_C"] + CELSIUS_0, contact))
+                rows = np.array(rows)
+                results["between"] = {
+                    "points": int(len(rows)),
+                    "max_torque_rel_error": float(np.max(np.abs(rows[:, 3] / rows[:, 2] - 1))),
+                    "max_T_contact_error_K": float(np.max(np.abs(rows[:, 5] - rows[:, 4])))}
+                spec.data["between_points"] = rows
+            if duty_cycle and case.duty is None:
+                spec.report["notes"].append("the case has no duty cycle: the transient check "
+                                            "was not run")
+            elif duty_cycle:
+                with warnings.catch_warnings():
+                    warnings.simplefilter("ignore", (ServiceRangeWarning, OilRangeWarning))
+                    full = simulate(case, base_dir=base_dir).timeseries
+                fmu.reset()
+                fmu.set(start_steady=False,
+                        T_contact_start=float(full["T_contact_C"].iloc[0] + CELSIUS_0))
+                t = full["time_s"].to_numpy()
+                run = run_rotary(fmu, t, full["speed_rpm"].to_numpy() * RPM,
+                                 full["T_sump_C"].to_numpy() + CELSIUS_0)
+                rel = np.abs(run["torque"][1:] / full["torque_Nm"].to_numpy()[1:] - 1.0)
+                d_contact = run["T_contact"] - (full["T_contact_C"].to_numpy() + CELSIUS_0)
+                rise = full["T_contact_C"] - full["T_sump_C"]
+                results["duty_cycle"] = {
+                    "duration_s": float(t[-1]),
+                    "max_torque_rel_error": float(rel.max()),
+                    "mean_torque_rel_error": float(rel.mean()),
+                    "max_T_contact_error_K": float(np.abs(d_contact).max()),
+                    "mean_T_contact_error_K": float(np.abs(d_contact).mean()),
+                    "max_rise_above_sump_K": float(rise.max())}
+                spec.data["duty_cycle"] = {
+                    "time_s": t, "speed_rpm": full["speed_rpm"].to_numpy(),
+                    "T_sump_C": full["T_sump_C"].to_numpy(),
+                    "torque_full_Nm": full["torque_Nm"].to_numpy(),
+                    "torque_fmu_Nm": run["torque"],
+                    "T_contact_full_C": full["T_contact_C"].to_numpy(),
+                    "T_contact_fmu_C": run["T_contact"] - CELSIUS_0}
+        spec.report["validation"] = results
+
+    return check

@@ -1,0 +1,389 @@
+"""Seal friction FMUs (issue 14): validity, the C laws against sealsim's Python laws on the
+friction benches, the contact table, run-time clipping and errors, the build's file rules.
+
+The FMUs are compiled once per test session (module fixtures); each test drives them through
+FMPy.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import sys
+import tempfile
+import warnings
+import zipfile
+from pathlib import Path
+
+import numpy as np
+import pytest
+import tomli_w
+import xarray as xr
+from typer.testing import CliRunner
+
+import fmpy  # the test extra installs FMPy
+from fmpy import simulate_fmu
+from fmpy.validation import validate_fmu
+
+from sealsim.cases import load_toml
+from sealsim.cli import app
+from sealsim.errors import InputError, ModelError
+from sealsim.fmu import LoadedFMU, build_fmu, build_friction_fmu
+from sealsim.fmu.builder import FMUCompileError, FMUDependencyError
+from sealsim.fmu.cosim import FMUFrictionLaw, run_velocity
+from sealsim.friction import ContactInputs, Theta
+from sealsim.friction.bench import simulate_mass, simulate_velocity
+from sealsim.friction.case import build_law, load_friction_cases, make_inputs
+
+ROOT = Path(__file__).resolve().parents[1]
+FRICTION = ROOT / "examples" / "friction"
+PNEUMATIC = ROOT / "examples" / "pneumatic"
+
+
+def friction_cases(name):
+    return load_friction_cases(load_toml(FRICTION / name), name)
+
+
+def quiet_law(case):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")          # LuGre Table I set: not passive (documented)
+        return build_law(case)
+
+
+@pytest.fixture(scope="module")
+def fmus(tmp_path_factory):
+    """The FMUs of the tests, compiled once: LuGre (FMI 2), Θ (FMI 2), the Θ piston seal of
+    the Ø32 cylinder with its analytic contact table (FMI 3)."""
+    folder = tmp_path_factory.mktemp("fmus")
+    built = {
+        "lugre": build_fmu(FRICTION / "lugre_hysteresis.toml", folder / "lugre.fmu"),
+        "theta": build_fmu(FRICTION / "theta_dwell.toml", folder / "theta.fmu"),
+        "piston3": build_fmu(PNEUMATIC / "cylinder_32.toml", folder / "piston3.fmu",
+                             seal="piston", fmi_version=3),
+    }
+    return {name: r.path for name, r in built.items()}
+
+
+def test_every_fmu_is_valid(fmus):
+    # the FMI checks of FMPy: schema, variable names, model structure, start values, units
+    for name, path in fmus.items():
+        assert validate_fmu(str(path)) == [], name
+    md = fmpy.read_model_description(str(fmus["piston3"]))
+    assert md.fmiVersion == "3.0" and md.modelExchange and md.coSimulation
+    md2 = fmpy.read_model_description(str(fmus["lugre"]))
+    assert md2.fmiVersion == "2.0" and md2.modelExchange and md2.coSimulation
+    names = {v.name: v for v in md.modelVariables}
+    assert {"v", "p_A", "p_B", "T_seal", "F", "F_N", "b", "theta", "tau"} <= set(names)
+    assert names["tau"].unit == "s" and names["T_seal"].unit == "K"
+    with zipfile.ZipFile(fmus["piston3"]) as zf:     # sources for other platforms
+        files = set(zf.namelist())
+    assert {"sources/all.c", "sources/buildDescription.xml", "sources/friction_model.c",
+            "documentation/index.html"} <= files
+
+
+def test_velocity_hysteresis_matches_the_law(fmus):
+    """LuGre velocity hysteresis (1995 Fig. 3, three frequencies) through the co-simulation
+    interface against sealsim's bench: the C code takes the same exact step per 1 ms."""
+    for name, case in friction_cases("lugre_hysteresis.toml").items():
+        law = quiet_law(case)
+        b = case.bench
+        z0 = law.steady_state(np.array([b.velocity.value(0.0)]))
+        native = simulate_velocity(law, b.velocity, b.duration, b.time_step, initial_state=z0)
+        t = native.time
+        v_step = np.diff(b.velocity.integral(t)) / np.diff(t)
+        with LoadedFMU(fmus["lugre"]) as fmu:
+            fmu.set(z=float(z0[0, 0]))
+            out = run_velocity(fmu, t, v_step, native.velocity)
+        # smooth law: 1e-6 relative (issue 14); the formulas are the same, so rounding only
+        scale = np.max(np.abs(native.force))
+        assert np.max(np.abs(out["F"] - native.force)) <= 1e-6 * scale, name
+        assert np.max(np.abs(out["z"] - native.states[:, 0])) <= 1e-6 * np.max(
+            np.abs(native.states[:, 0])), name
+
+
+def test_dwell_breakaway_matches_the_law(fmus):
+    """Θ law, break-away after dwells (true sticking): the FMU as the friction element of
+    sealsim's stick/slip stepper, which decides sticking with the FMU's F_breakaway."""
+    cases = friction_cases("theta_dwell.toml")
+    for name in ("dwell_2s",):
+        case = cases[name]
+        law = build_law(case)
+        b = case.bench
+        native = simulate_mass(law, b.mass, b.duration, b.time_step, stiffness=b.stiffness,
+                               drive_velocity=b.drive_velocity, inputs=make_inputs(case))
+        with LoadedFMU(fmus["theta"]) as fmu:
+            flaw = FMUFrictionLaw(fmu)
+            flaw.start()
+            res = simulate_mass(flaw, b.mass, b.duration, b.time_step, stiffness=b.stiffness,
+                                drive_velocity=b.drive_velocity, integrator="stepper")
+        # switching law: the stick/slip decisions are the same and the velocity solve
+        # converges to 1e-12 relative, so 1e-8 of the force scale bounds the difference
+        assert np.array_equal(res.stuck, native.stuck), name
+        scale = np.max(np.abs(native.force))
+        assert np.max(np.abs(res.force - native.force)) <= 1e-8 * scale, name
+        assert np.max(np.abs(res.states[:, 0] - native.states[:, 0])) <= 1e-9, name
+        # break-away from rest: the dry level F_N f_a = 50 N (within the last step's load
+        # increase); after the dwell the film has relaxed only partly: between F_N f_b and it
+        onsets = np.flatnonzero(np.diff(res.stuck.astype(int)) == -1)
+        assert len(onsets) == 2
+        assert res.force[onsets[0]] == pytest.approx(50.0, rel=1e-3)
+        assert 10.0 < res.force[onsets[1]] < 50.0
+
+
+def test_stick_slip_with_a_mass_matches_the_law(fmus):
+    """LuGre stick-slip (1995 Fig. 7) with a 1 kg mass and a spring, one stick and one slip
+    (9 s): the FMU inside sealsim's implicit stepper against the Python law in the same
+    stepper."""
+    case = next(iter(friction_cases("lugre_stick_slip.toml").values()))
+    law = quiet_law(case)
+    b = case.bench
+    duration, step = 9.0, 2e-3
+    native = simulate_mass(law, b.mass, duration, step, stiffness=b.stiffness,
+                           drive_velocity=b.drive_velocity, integrator="stepper")
+    with LoadedFMU(fmus["lugre"]) as fmu:
+        flaw = FMUFrictionLaw(fmu)
+        flaw.start()
+        res = simulate_mass(flaw, b.mass, duration, step, stiffness=b.stiffness,
+                            drive_velocity=b.drive_velocity, integrator="stepper")
+    assert np.max(native.velocity) > 0.3                  # it slipped
+    # smooth law: 1e-6 relative; the velocity solves converge to 1e-12 relative
+    assert np.max(np.abs(res.velocity - native.velocity)) <= 1e-6 * np.max(native.velocity)
+    assert np.max(np.abs(res.force - native.force)) <= 1e-6 * np.max(np.abs(native.force))
+
+
+def test_model_exchange_matches_the_exact_law(fmus):
+    """Θ law through model exchange, integrated by FMPy's CVode at constant velocity: the
+    exact solution is the law's own step (closed form)."""
+    law = build_law(friction_cases("theta_dwell.toml")["dwell_0.5s"])
+    inputs = ContactInputs(normal_force=100.0, contact_width=1e-3)
+    result = simulate_fmu(str(fmus["theta"]), fmi_type="ModelExchange", stop_time=2.0,
+                          start_values={"v": 0.05}, output_interval=0.1,
+                          relative_tolerance=1e-10, output=["theta", "F"])
+    exact = np.array([law.step(law.initial_state(1), np.array([0.05]), t, inputs)[0, 0]
+                      for t in result["time"]])
+    # CVode at rtol 1e-10: the integration error stays far below 1e-6 relative
+    assert np.max(np.abs(result["theta"] - exact)) <= 1e-6 * np.max(exact)
+    force = law.force(exact[None, :], np.full(exact.size, 0.05), inputs)
+    assert np.max(np.abs(result["F"] - force)) <= 1e-6 * np.max(force)
+
+
+def test_contact_table_reproduces_the_maps(fmus, tmp_path):
+    """The analytic estimate is tabulated with exact node derivatives (fourth order: better
+    than 1e-5); an FE map keeps its grid and slopes: the same interpolant as SealMap."""
+    from sealsim.pneumatic.case import build_contact_map, load_pneumatic_cases
+    from sealsim.pneumatic.contact_maps import FEContactMap
+
+    case = next(iter(load_pneumatic_cases(load_toml(PNEUMATIC / "cylinder_32.toml")).values()))
+    seal = case.seals[0]
+    cmap = build_contact_map(seal.map, case.cylinder.bore, PNEUMATIC, "map")
+    points = [(0.0, 250.0), (3e5, 298.15), (7.7e5, 330.0), (1.6e6, 393.15), (1.23e5, 271.3)]
+    with LoadedFMU(fmus["piston3"]) as fmu:
+        fmu.set(p_A=points[0][0], T_seal=points[0][1])
+        fmu.initialize()
+        for p, temp in points:
+            fmu.set(p_A=p, T_seal=temp)
+            fn, b, dp = fmu.get("F_N", "b", "dp")
+            fn_ref, b_ref = cmap.evaluate(dp, temp)
+            assert abs(fn / fn_ref - 1) < 1e-5 and abs(b / b_ref - 1) < 1e-5, (p, temp)
+
+    # an FE characteristic map (synthetic data in the format of sealsim structure map)
+    temps = np.array([273.15, 293.15, 333.15, 373.15])
+    press = np.linspace(0.0, 1e6, 6)
+    fn = 80.0 + 6e-5 * press[None, :] + 0.3 * (temps[:, None] - 273.15) \
+        + 2e-11 * press[None, :] ** 2
+    width = 6e-4 + 2e-10 * press[None, :] + 1e-6 * (temps[:, None] - 273.15) + 0 * fn
+    ds = xr.Dataset({"F_N": (("squeeze", "temperature", "pressure"), fn[None]),
+                     "b": (("squeeze", "temperature", "pressure"), width[None])},
+                    coords={"squeeze": [0.15], "temperature": temps, "pressure": press})
+    ds.to_netcdf(tmp_path / "map.nc")
+    fe = FEContactMap.from_file(tmp_path / "map.nc")
+    law = Theta.from_parameter_set("pneumatic_demo")
+    result = build_friction_fmu(law, tmp_path / "fe.fmu", contact_map=fe, kind="cs")
+    assert validate_fmu(str(result.path)) == []
+    with LoadedFMU(result.path) as fmu:
+        fmu.initialize()
+        for p, temp in [(0.0, 273.15), (2.5e5, 300.0), (9.9e5, 370.0), (4e5, 333.15)]:
+            fmu.set(p_A=p, T_seal=temp)
+            fn_fmu, b_fmu, dp = fmu.get("F_N", "b", "dp")
+            fn_ref, b_ref = fe.evaluate(dp, temp)
+            # the same C1 Hermite interpolant: rounding only
+            assert abs(fn_fmu / fn_ref - 1) < 1e-12 and abs(b_fmu / b_ref - 1) < 1e-12
+
+
+def test_out_of_range_inputs_are_clipped_and_logged(fmus):
+    with LoadedFMU(fmus["piston3"]) as fmu:
+        fmu.set(v=0.1, p_A=1e5, T_seal=298.15)
+        fmu.initialize()
+        inside = fmu.get("F_N")[0]
+        fmu.set(p_A=40e5, T_seal=500.0)                 # 40 bar, 227 degC: beyond the table
+        fmu.do_step(0.0, 1e-3)
+        force, fn, clipped = fmu.get("F", "F_N", "map_clipped")
+        assert np.isfinite(force) and fn > inside and clipped == 1.0
+        edge = fmu.get("F_N")[0]
+        fmu.set(p_A=16e5, T_seal=393.15)                # the table's corner
+        assert fmu.get("F_N")[0] == pytest.approx(edge, rel=1e-12)
+        warnings_logged = [m for s, _, m in fmu.messages if s == "WARNING"]
+        assert any("pressure difference dp" in m and "clipped" in m for m in warnings_logged)
+        assert any("seal temperature T_seal" in m for m in warnings_logged)
+        fmu.set(p_A=3e5, T_seal=298.15)
+        assert fmu.get("map_clipped")[0] == 0.0
+        count = len(fmu.messages)
+        for _ in range(3):                              # logged once per excursion
+            fmu.set(p_A=30e5)
+            fmu.do_step(0.0, 1e-3)
+            fmu.get("F")
+        assert len([m for m in fmu.messages[count:] if m[0] == "WARNING"]) == 1
+
+
+def test_bad_parameters_and_inputs_give_a_clear_message(fmus):
+    with LoadedFMU(fmus["theta"]) as fmu:
+        fmu.set(tau=-1.0)
+        with pytest.raises(ModelError, match=r"parameter tau = -1 s is not allowed: it must be "
+                                             r"> 0 s"):
+            fmu.initialize()
+    with LoadedFMU(fmus["lugre"]) as fmu:
+        fmu.set(static_force=0.5)                       # below coulomb_force = 1 N
+        with pytest.raises(ModelError, match="static_force .* must be >= coulomb_force"):
+            fmu.initialize()
+    with LoadedFMU(fmus["lugre"]) as fmu:
+        fmu.initialize()
+        with pytest.raises(ModelError, match="v = nan is not allowed: the value must be "
+                                             "finite"):
+            fmu.set(v=float("nan"))
+        fmu.set(v=0.01)                                 # the instance is still usable
+        fmu.do_step(0.0, 1e-3)
+        assert np.isfinite(fmu.get("F")[0])
+        with pytest.raises(ModelError, match="sigma0 is fixed"):
+            fmu.set(sigma0=2e5)
+
+
+def test_law_without_c_code_is_refused(tmp_path):
+    case = {"friction": {"law": "dahl", "parameter_set": "canudas1995"},
+            "bench": {"mode": "velocity", "duration": "1 s", "time_step": "1 ms",
+                      "velocity": {"kind": "constant", "level": "1 mm/s"}}}
+    (tmp_path / "dahl.toml").write_text(tomli_w.dumps(case))
+    with pytest.raises(InputError, match="'dahl' law has no C implementation .* coulomb, "
+                                         "stribeck, lugre, theta"):
+        build_fmu(tmp_path / "dahl.toml", tmp_path / "dahl.fmu")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["dahl.toml"]
+
+
+def test_cli_writes_atomically_and_refuses_an_existing_file(tmp_path, monkeypatch):
+    scratch = tmp_path / "tmp"                  # this test's own temporary folder
+    scratch.mkdir()
+    monkeypatch.setattr(tempfile, "tempdir", str(scratch))
+    runner = CliRunner()
+    out = tmp_path / "seal" / "theta.fmu"
+    args = ["fmu", "build", str(FRICTION / "theta_dwell.toml"), "--out", str(out), "--kind",
+            "cs", "-q"]
+    first = runner.invoke(app, args)
+    assert first.exit_code == 0, first.output
+    assert "checked against sealsim's law" in first.output
+    assert sorted(p.name for p in out.parent.iterdir()) == ["theta.fmu"]  # nothing else
+    stamp = out.stat().st_mtime_ns
+    again = runner.invoke(app, args)
+    assert again.exit_code == 2 and "already exists; use --force" in again.output
+    assert out.stat().st_mtime_ns == stamp
+    forced = runner.invoke(app, args + ["--force", "--fmi", "3"])
+    assert forced.exit_code == 0, forced.output
+    assert fmpy.read_model_description(str(out)).fmiVersion == "3.0"
+    assert validate_fmu(str(out)) == []
+    assert sorted(p.name for p in out.parent.iterdir()) == ["theta.fmu"]
+    assert list(scratch.iterdir()) == []                 # build scratch always removed
+    wrong = runner.invoke(app, ["fmu", "build", str(FRICTION / "theta_dwell.toml"), "--out",
+                                str(tmp_path / "x.zip")])
+    assert wrong.exit_code == 2 and "must end in .fmu" in wrong.output
+    kind = runner.invoke(app, args[:4] + [str(tmp_path / "k.fmu"), "--kind", "all"])
+    assert kind.exit_code == 2 and "--kind 'all' is not allowed" in kind.output
+    bad = runner.invoke(app, ["fmu", "build", str(PNEUMATIC / "cylinder_32.toml"), "--out",
+                              str(tmp_path / "c.fmu")])
+    assert bad.exit_code == 2 and "choose one with --seal" in bad.output
+    assert not (tmp_path / "c.fmu").exists()
+    failed = runner.invoke(app, ["fmu", "build", str(FRICTION / "theta_dwell.toml"), "--out",
+                                 str(tmp_path / "nc.fmu"), "--kind", "cs"],
+                           env={"CC": str(tmp_path / "none")})
+    assert failed.exit_code == 1 and (tmp_path / "nc.fmu").exists()
+    assert list(scratch.iterdir()) == []                 # also after a failed compile
+
+
+def test_missing_compiler_still_writes_the_source_fmu(tmp_path, monkeypatch):
+    monkeypatch.setenv("CC", str(tmp_path / "no-such-compiler"))
+    out = tmp_path / "src.fmu"
+    with pytest.raises(FMUCompileError, match="(?s)no-such-compiler' was not found.*source "
+                                              "FMU was written"):
+        build_fmu(FRICTION / "lugre_stick_slip.toml", out, fmi_version=3)
+    assert validate_fmu(str(out)) == []
+    with zipfile.ZipFile(out) as zf:
+        names = zf.namelist()
+    assert "sources/buildDescription.xml" in names and "sources/fmi3Functions.h" in names
+    assert not any(n.startswith("binaries/") for n in names)
+    result = CliRunner().invoke(app, ["fmu", "build", str(FRICTION / "lugre_stick_slip.toml"),
+                                      "--out", str(out), "--force", "-q"])
+    assert result.exit_code == 1 and "was not found" in result.output
+
+
+def test_missing_fmpy_is_explained(monkeypatch, tmp_path):
+    monkeypatch.setitem(sys.modules, "fmpy", None)
+    with pytest.raises(FMUDependencyError, match=r"pip install 'sealsim\[fmu\]'"):
+        build_fmu(FRICTION / "theta_dwell.toml", tmp_path / "t.fmu")
+
+
+def test_fitted_parameters_and_named_sets(tmp_path):
+    """An FMU case taking the law of a fit (fitted_parameters.toml) for a pneumatic seal; the
+    FMU's parameters are the fitted values, with units."""
+    fitted = {"friction": {"law": "theta", "tau": "1.5 s", "alpha": "0.08 m", "f_a": 0.42,
+                           "f_b": 0.09, "gamma": "2e4 Pa*s", "reference_normal_force": "100 N",
+                           "load_exponent": 1.0, "bristle_stiffness": "5000 N/m",
+                           "bristle_damping": "0 N*s/m"}}
+    (tmp_path / "fitted_parameters.toml").write_text("# fit\n" + tomli_w.dumps(fitted))
+    (tmp_path / "seal.toml").write_text(tomli_w.dumps({
+        "title": "fitted piston seal",
+        "fmu": {"name": "FittedSeal", "source": str(PNEUMATIC / "cylinder_32.toml"),
+                "seal": "rod", "friction_file": "fitted_parameters.toml"},
+        "table": {"temperature_points": 4, "pressure_points": 9}}))
+    result = build_fmu(tmp_path / "seal.toml", tmp_path / "fitted.fmu", kind="cs")
+    assert validate_fmu(str(result.path)) == []
+    md = fmpy.read_model_description(str(result.path))
+    assert md.coSimulation.modelIdentifier == "FittedSeal" and md.modelExchange is None
+    start = {v.name: v for v in md.modelVariables}
+    assert float(start["tau"].start) == 1.5 and float(start["f_a"].start) == 0.42
+    assert float(start["bristle_stiffness"].start) == 5000.0
+    assert start["gamma"].unit == "Pa.s" and "z" in start and "F_breakaway" not in start
+    assert result.report["build_check"]["max_relative_difference"]["force"] <= 1e-9
+
+
+def test_fmu_case_with_its_own_law(tmp_path):
+    """An FMU case with [friction] (a named set) and, for the theta law, [contact]."""
+    stribeck = {"title": "Stribeck rod seal", "fmu": {"name": "RodSeal"},
+                "friction": {"law": "stribeck", "parameter_set": "pneumatic_demo"}}
+    (tmp_path / "stribeck.toml").write_text(tomli_w.dumps(stribeck))
+    result = build_fmu(tmp_path / "stribeck.toml", tmp_path / "rod.fmu", kind="me")
+    assert validate_fmu(str(result.path)) == []
+    with LoadedFMU(result.path, "me") as fmu:
+        fmu.set(v=0.02, p_A=6e5)
+        fmu.initialize()
+        force, brk = fmu.get("F", "F_breakaway")
+    # seed 001 Eq. 2/3 with the set: F_C(p) = 15 N + 1.5e-5 m2 * 6 bar = 24 N, F_S/F_C = 5/3
+    assert brk == pytest.approx(40.0, rel=1e-12)
+    assert force == pytest.approx(24.0 + 16.0 * np.exp(-1.0) + 8.0 * 0.02, rel=1e-12)
+    theta = {"fmu": {}, "friction": {"law": "theta", "parameter_set": "pneumatic_demo"}}
+    (tmp_path / "theta.toml").write_text(tomli_w.dumps(theta))
+    with pytest.raises(InputError, match="theta law needs the seal's normal force"):
+        build_fmu(tmp_path / "theta.toml", tmp_path / "theta.fmu")
+
+
+def test_cosimulation_example(tmp_path):
+    """examples/fmu/stick_slip_cosim.py: FMPy drives the FMU with the mass-spring of the LuGre
+    stick-slip benchmark; the explicit host and the implicit master get the native stick-slip."""
+    spec = importlib.util.spec_from_file_location(
+        "stick_slip_cosim", ROOT / "examples" / "fmu" / "stick_slip_cosim.py")
+    example = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(example)
+    case, law = example.load_case()
+    fmu_path = build_fmu(example.CASE, tmp_path / "lugre.fmu", kind="cs").path
+    assert validate_fmu(str(fmu_path)) == []
+    native = example.native(case, law, 9.0)
+    explicit = example.compare(example.explicit_cosimulation(fmu_path, case, 9.0, 1e-3), native)
+    # the first slip: an explicit 1 ms coupling against Radau (rtol 1e-7) -- the slip
+    # velocity within 1 % of its peak (0.37 m/s), the peak force within 1e-4 relative
+    assert explicit["max_velocity_difference_m_s"] < 0.01 * np.max(native.velocity)
+    assert explicit["peak_force_N"] == pytest.approx(np.max(native.force), rel=1e-4)

@@ -1,0 +1,134 @@
+"""Rotary lip-seal FMU (issue 14): steady torque at and between the grid points and the
+transient of the speed-cycle example against sealsim's full coupled model.
+
+One FMU is built per session on a small grid (7 speeds x 3 sump temperatures, step responses
+at 3 speeds x 2 sump temperatures); the checks run the full model independently.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import fmpy  # the test extra installs FMPy
+from fmpy import simulate_fmu
+from fmpy.validation import validate_fmu
+
+from sealsim.cases import expand_variants, load_toml
+from sealsim.fmu import LoadedFMU, build_rotary_fmu
+from sealsim.fmu.case import RotarySettings
+from sealsim.fmu.cosim import run_rotary
+from sealsim.fmu.rotary_maps import fixed_sump_case
+from sealsim.rotary.case import RotaryCase
+from sealsim.rotary.simulation import simulate, steady_state
+
+RPM = math.pi / 30.0
+CYCLE = Path(__file__).resolve().parents[1] / "examples" / "rotary" / "speed_cycle.toml"
+SPEEDS = np.array([0.0, 10.0, 30.0, 100.0, 300.0, 1000.0, 3000.0]) * RPM
+SUMPS = np.array([20.0, 70.0, 120.0]) + 273.15
+
+
+@pytest.fixture(scope="module")
+def plain_case():
+    return expand_variants(RotaryCase, load_toml(CYCLE), "speed cycle")["plain"]
+
+
+@pytest.fixture(scope="module")
+def rotary_fmu(plain_case, tmp_path_factory):
+    settings = RotarySettings(speeds=list(SPEEDS), sump_temperatures=list(SUMPS),
+                              lag_speeds=list(np.array([10.0, 100.0, 1000.0]) * RPM),
+                              lag_sump_temperatures=[SUMPS[0], SUMPS[-1]],
+                              check_between=False, check_duty_cycle=False)
+    path = tmp_path_factory.mktemp("rotary") / "lip_seal.fmu"
+    return build_rotary_fmu(plain_case, path, settings=settings)
+
+
+def steady_fmu(fmu, speed, sump):
+    fmu.reset()
+    fmu.set(speed=speed, T_sump=sump)
+    fmu.initialize()
+    return fmu.get("torque", "T_contact")
+
+
+def full_steady(case, speed, sump):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        point = steady_state(fixed_sump_case(case, sump), speed)
+    return point["torque_Nm"], point["T_contact_C"] + 273.15
+
+
+def test_rotary_fmu_is_valid(rotary_fmu):
+    assert validate_fmu(str(rotary_fmu.path)) == []
+    names = {v.name: v for v in fmpy.read_model_description(str(rotary_fmu.path)).modelVariables}
+    assert names["speed"].unit == "rad/s" and names["torque"].unit == "N.m"
+    assert {"T_sump", "T_ambient", "power", "T_contact", "T_rise_1", "T_rise_2"} <= set(names)
+    lag = rotary_fmu.report["thermal_lag"]
+    assert lag["order"] == 2 and np.all(np.array(lag["settled"]) > 0.98)
+
+
+def test_steady_torque_at_and_between_grid_points(plain_case, rotary_fmu):
+    grid = [(SPEEDS[2], SUMPS[0]), (SPEEDS[4], SUMPS[1]), (SPEEDS[5], SUMPS[2]),
+            (SPEEDS[6], SUMPS[0])]
+    between = [(math.sqrt(SPEEDS[3] * SPEEDS[4]), 0.5 * (SUMPS[0] + SUMPS[1])),
+               (math.sqrt(SPEEDS[5] * SPEEDS[6]), 0.5 * (SUMPS[1] + SUMPS[2])),
+               (math.sqrt(SPEEDS[1] * SPEEDS[2]), 0.5 * (SUMPS[0] + SUMPS[1]))]
+    with LoadedFMU(rotary_fmu.path) as fmu:
+        for speed, sump in grid:
+            torque, contact = steady_fmu(fmu, speed, sump)
+            ref_torque, ref_contact = full_steady(plain_case, speed, sump)
+            # at grid points the contact temperature is the map's node value; the torque
+            # table (friction at speed x contact temperature) adds < 0.5 % (issue 14)
+            assert torque == pytest.approx(ref_torque, rel=5e-3)
+            assert contact == pytest.approx(ref_contact, abs=1e-6)
+        for speed, sump in between:
+            torque, contact = steady_fmu(fmu, speed, sump)
+            ref_torque, ref_contact = full_steady(plain_case, speed, sump)
+            # between grid points: interpolated maps, within 2 % (issue 14)
+            assert torque == pytest.approx(ref_torque, rel=2e-2)
+            assert contact == pytest.approx(ref_contact, abs=1.5)
+
+
+def test_speed_cycle_transient(plain_case, rotary_fmu):
+    """The example speed cycle (10 ... 1000 rpm, 2.25 h, free 0.2 L sump heated by the seal):
+    the full transient model against the FMU fed with its speed and sump temperature."""
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        full = simulate(plain_case).timeseries
+    t = full["time_s"].to_numpy()
+    with LoadedFMU(rotary_fmu.path) as fmu:
+        fmu.set(start_steady=False, T_contact_start=float(full["T_contact_C"].iloc[0] + 273.15))
+        run = run_rotary(fmu, t, full["speed_rpm"].to_numpy() * RPM,
+                         full["T_sump_C"].to_numpy() + 273.15)
+    torque_error = np.abs(run["torque"] / full["torque_Nm"].to_numpy() - 1.0)
+    # issue 14: the transient within 5 %
+    assert torque_error.max() < 0.05
+    contact_error = np.abs(run["T_contact"] - 273.15 - full["T_contact_C"].to_numpy())
+    rise = (full["T_contact_C"] - full["T_sump_C"]).max()
+    # the contact temperature within a third of its largest rise above the sump (8.8 K) on
+    # this coarse grid (the default grid of examples/fmu/rotary_lip_seal.toml: 0.4 K)
+    assert contact_error.max() < rise / 3
+    assert np.allclose(run["power"], run["torque"] * full["speed_rpm"].to_numpy() * RPM)
+
+
+def test_rotary_inputs_out_of_range_are_clipped_and_me_settles(rotary_fmu):
+    with LoadedFMU(rotary_fmu.path) as fmu:
+        fmu.set(speed=5000 * RPM, T_sump=300.0)
+        fmu.initialize()
+        torque, clipped = fmu.get("torque", "map_clipped")
+        assert np.isfinite(torque) and clipped == 1.0
+        assert any("shaft speed" in m and "clipped" in m for s, _, m in fmu.messages
+                   if s == "WARNING")
+        fmu.set(speed=0.0)
+        assert fmu.get("torque", "power") == [0.0, 0.0]      # at standstill: no friction
+    # model exchange: from an equilibrium at 40 degC the contact settles to its steady value
+    result = simulate_fmu(str(rotary_fmu.path), fmi_type="ModelExchange", stop_time=20000.0,
+                          start_values={"speed": 1000 * RPM, "T_sump": 340.0,
+                                        "start_steady": False, "T_contact_start": 313.15},
+                          output=["T_contact", "T_contact_steady"], output_interval=100.0)
+    assert result["T_contact"][0] == pytest.approx(313.15, abs=1e-9)
+    # after > 20 slow time constants: steady within the solver tolerance
+    assert result["T_contact"][-1] == pytest.approx(result["T_contact_steady"][-1], abs=1e-3)
