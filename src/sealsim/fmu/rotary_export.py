@@ -38,6 +38,8 @@ from sealsim.errors import InputError
 from sealsim.fmu.model_description import ModelSpec, Variable
 from sealsim.fmu.rotary_maps import (
     CELSIUS_0,
+    MAX_LAG_EXTENSION,
+    SETTLED_FRACTION,
     ThermalLag,
     fixed_sump_case,
     steady_rise_map,
@@ -151,11 +153,11 @@ def rotary_maps(case: RotaryCase, *, speeds, sump_temperatures, torque_speed_min
         t_temps = np.linspace(low, high, n_temp)
         torque = torque_map(case, t_speeds, t_temps)
     notes = []
-    unsettled = lag.speeds[np.any(lag.settled < 0.99, axis=1)]
+    unsettled = lag.speeds[np.any(lag.settled < SETTLED_FRACTION, axis=1)]
     if unsettled.size:
         notes.append("the step responses at " + ", ".join(f"{w / RPM:.4g}" for w in unsettled)
-                     + " rpm had not settled (within 1 percent) after the lag duration; "
-                     "raise rotary.lag_duration")
+                     + " rpm had not settled (within 1 percent) after "
+                     f"{MAX_LAG_EXTENSION:g} times the lag duration; raise rotary.lag_duration")
     return RotaryMaps(speeds, sumps, float(case.environment.ambient_temperature),
                       float(ambient_range), steady, t_speeds, t_temps, torque, lag, notes)
 
