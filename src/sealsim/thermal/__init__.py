@@ -4,7 +4,8 @@
   lumped and fixed-temperature nodes, backward Euler with exact energy bookkeeping
   (:class:`AxisymmetricConduction`, :class:`ThermalNetwork`, :class:`BackwardEulerStepper`);
 * :mod:`.convection` -- heat transfer coefficients of rotating shafts in open fluid (Kays &
-  Bjorklund) and in an annulus (Taylor–Couette, Staton & Cavagnino), free convection (Churchill & Chu), radiation, air properties.
+  Bjorklund) and in an annulus (Taylor–Couette, Staton & Cavagnino), free convection
+  (Churchill & Chu), radiation, air properties.
 
 >>> from sealsim.thermal import rotating_cylinder_coefficient
 >>> round(float(rotating_cylinder_coefficient(157.0, 0.06, 1e-4, 0.13, 1200.0)))

@@ -321,6 +321,7 @@ class ThermalNetwork:
             if node not in self.node_index and node not in self.fixed_names:
                 raise ValueError(f"face group {g!r} links to unknown node {node!r}")
         self._k_cond = conduction.conduction_matrix()
+        self._plans: dict[tuple, dict] = {}  # assembly plans per set of link end nodes
 
     def group_area(self, group: str) -> float:
         """Total area of a face group [m²]."""
@@ -369,9 +370,8 @@ class ThermalNetwork:
 
     def _plan(self, link_nodes: tuple[tuple[str, str], ...]) -> dict:
         """Sparsity pattern of (K, F) and the maps from conductances to matrix entries."""
-        cache = self.__dict__.setdefault("_plans", {})
-        if link_nodes in cache:
-            return cache[link_nodes]
+        if link_nodes in self._plans:
+            return self._plans[link_nodes]
         b = self.conduction.boundary
         k_rows, k_cols, k_sign, k_source = [], [], [], []
         f_rows, f_cols, f_source = [], [], []
@@ -429,7 +429,7 @@ class ThermalNetwork:
                 "f_scatter": f_scatter, "f_indices": (f_keys % max(n_fixed, 1)).astype(np.int32),
                 "f_indptr": np.searchsorted(f_keys // max(n_fixed, 1),
                                             np.arange(self.n + 1)).astype(np.int32)}
-        cache[link_nodes] = plan
+        self._plans[link_nodes] = plan
         return plan
 
 
