@@ -506,7 +506,7 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
     convection coefficients).  The network matrix K₀ is factorised once, at the start
     temperature, and reused: each iteration solves K₀·δ = r for the residual
     r = F·T_fixed + e·P − K(T_sump)·T (a chord iteration; Kelley, *Iterative Methods for Linear
-    and Nonlinear Equations*, SIAM 1995, §5.4).  The friction's feedback enters through the
+    and Nonlinear Equations*, SIAM 1995, ch. 5).  The friction's feedback enters through the
     Sherman–Morrison formula with the secant slope s = ΔP/ΔT_contact of the last two
     iterates, δ = K₀⁻¹r + u·s·c(K₀⁻¹r)/(1 − s·c(u)), u = K₀⁻¹e, c(·) the contact-band mean,
     so the friction coupling converges like a secant method instead of a fixed-point sweep.
