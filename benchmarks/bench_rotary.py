@@ -5,19 +5,31 @@
    Baseline in the same process: the same run with a fixed time step of min_time_step, to show
    what the adaptive stepping buys.
 2. A vectorised steady-state torque map (speed x contact temperature) [>= 1e5 points/s].
+3. Steady operating points with the full thermal model (``steady_state``: friction, conduction,
+   free sump and housing in equilibrium) [issue 13: >= 3x the points per second of the
+   former solver, which factorised the network matrix in every fixed-point iteration; that
+   solver, kept in tests/rotary_reference.py, is the baseline measured in the same run].
 
 The last line is one JSON object with wall_s, simulated_s, realtime_factor, thermal_nodes,
-steady_points_per_s.
+steady_points_per_s (the friction map), thermal_steady_points_per_s,
+thermal_steady_baseline_points_per_s, thermal_steady_speedup and thermal_steady_max_torque_diff
+(relative torque difference to the baseline run to convergence).
 """
 
 import json
+import math
+import sys
 import time
+from pathlib import Path
 
 import numpy as np
 
 from sealsim.cases import validate_case
 from sealsim.rotary.case import RotaryCase
-from sealsim.rotary.simulation import RotaryModel, friction_map, simulate
+from sealsim.rotary.simulation import RotaryModel, friction_map, simulate, steady_state
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+from rotary_reference import reference_steady_state  # noqa: E402
 
 STEPS = [("100 rpm", "10 min"), ("500 rpm", "10 min"), ("1000 rpm", "10 min"),
          ("1500 rpm", "10 min"), ("750 rpm", "10 min"), ("250 rpm", "10 min")]
@@ -63,9 +75,36 @@ def main():
     points = len(frame)
     print(f"steady-state torque map: {points} points in {map_wall:.3f} s = "
           f"{points / map_wall:.3g} points/s")
+
+    omegas = np.array([100.0, 300.0, 500.0, 700.0, 1000.0, 1200.0, 1500.0]) * math.pi / 30.0
+    steady_state(adaptive, omegas[0])  # warm-up
+    new_wall = base_wall = np.inf
+    for _ in range(5):  # interleaved, best of 5: both see the same machine load
+        wall_new, new = timed(lambda: [steady_state(adaptive, w) for w in omegas], repeat=1)
+        wall_base, base = timed(lambda: [reference_steady_state(adaptive, w) for w in omegas],
+                                repeat=1)
+        new_wall, base_wall = min(new_wall, wall_new), min(base_wall, wall_base)
+    converged = [reference_steady_state(adaptive, w, tol=1e-9, max_iter=400) for w in omegas]
+    diff = max(abs(a["torque_Nm"] / b["torque_Nm"] - 1) for a, b in zip(new, converged,
+                                                                       strict=True))
+    diff_default = max(abs(a["torque_Nm"] / b["torque_Nm"] - 1) for a, b in zip(
+        base, converged, strict=True))
+    rate, base_rate = len(omegas) / new_wall, len(omegas) / base_wall
+    print(f"steady operating points with the thermal model ({len(omegas)} speeds 100-1500 rpm, "
+          f"free 1 L sump): {rate:.1f} points/s ({np.mean([r['iterations'] for r in new]):.1f} "
+          f"iterations); former solver {base_rate:.1f} points/s "
+          f"({np.mean([r['iterations'] for r in base]):.1f} factorisations); "
+          f"{rate / base_rate:.1f}x")
+    print(f"  torque vs the former solver run to convergence (tol 1e-9 K): max relative "
+          f"difference {diff:.1e} (the former solver at its default tol 1e-4 K: "
+          f"{diff_default:.1e})")
     print(json.dumps({"wall_s": round(wall, 4), "simulated_s": simulated,
                       "realtime_factor": round(simulated / wall, 1), "thermal_nodes": nodes,
-                      "steady_points_per_s": round(points / map_wall)}))
+                      "steady_points_per_s": round(points / map_wall),
+                      "thermal_steady_points_per_s": round(rate, 2),
+                      "thermal_steady_baseline_points_per_s": round(base_rate, 2),
+                      "thermal_steady_speedup": round(rate / base_rate, 2),
+                      "thermal_steady_max_torque_diff": float(f"{diff:.2e}")}))
 
 
 if __name__ == "__main__":

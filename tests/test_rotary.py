@@ -6,8 +6,11 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import scipy.sparse.linalg as spla
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from rotary_reference import reference_steady_state
+from scipy.special import i0e, i1e
 from typer.testing import CliRunner
 
 from sealsim.cases import validate_case
@@ -24,8 +27,15 @@ from sealsim.rotary.lip import (
     lip_force,
     wave_film_factor,
 )
-from sealsim.rotary.simulation import friction_map, lip_seal_friction, simulate, steady_state
+from sealsim.rotary.simulation import (
+    RotaryModel,
+    friction_map,
+    lip_seal_friction,
+    simulate,
+    steady_state,
+)
 from sealsim.rotary.study import load_rotary_case
+from sealsim.thermal.conduction import AxisymmetricConduction, Solid, ThermalNetwork
 from sealsim.tribology.film import FilmRangeWarning
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples" / "rotary"
@@ -73,7 +83,7 @@ def test_wave_lip_has_less_torque_and_runs_cooler(speed_cycle):
 
 
 @pytest.mark.xfail(strict=True, reason="seed claim not reproduced by the derived wave "
-                   "mechanism: -14 % torque, 5 K cooler groove (README, Validation)")
+                   "mechanism: -14 % torque, 4 K cooler groove (README, Validation)")
 def test_wave_lip_reproduces_seed_magnitudes(speed_cycle):
     # Seed 000: "about 20 %" less torque and "more than 10 °C" less self-induced temperature;
     # the issue's band 15-25 % (mean over steps >= 100 rpm) and >= 10 K at the groove.
@@ -249,16 +259,93 @@ def test_contact_is_above_a_held_sump_at_4_m_s_in_both_setups():
         assert 0 < slow < fast
 
 
-@pytest.mark.xfail(strict=True, reason="the model under-predicts the published contact "
-                   "over-temperature by a factor of about 2-5 (README, Validation)")
-def test_contact_rise_within_published_ranges():
-    # Published contact over-temperatures of radial lip seals above the sump (the issue's
-    # summary of thermography/thermocouple studies; seal makers put the lip 20-50 K above the
-    # sealed oil): 15-30 K at about 4 m/s, 30-50 K at 10-13 m/s.  80 mm seal, 80 °C sump,
-    # test-rig set-up.
-    rig = {"setup": "test_rig"}
-    assert 15 <= _rise_over_sump(rig, 1000) <= 30
-    assert 30 <= _rise_over_sump(rig, 3000) <= 50
+# Published contact over-temperatures above the sump (README, Validation, finding 1): seal
+# makers put the lip 20-50 K above the sealed oil (svks-rubberseal.com, 2018, oil-seal selection
+# guidance); the issue's summary of rig thermocouple/thermography studies: 15-30 K at about
+# 4 m/s, 30-50 K at 10-13 m/s.  Rig set-up, 80 mm NBR seal, VG 68, 80 °C sump.
+
+
+def test_rig_contact_rise_at_12_6_m_s_within_published_range():
+    # The oil-side shaft is cooled by Taylor-Couette flow in the annulus between shaft and
+    # housing bore (Staton & Cavagnino 2008), not by a cylinder in an open bath (Kays &
+    # Bjorklund gave +21 K here); no parameter was fitted.  The band is the published one.
+    assert 30 <= _rise_over_sump({"setup": "test_rig"}, 3000) <= 50
+
+
+@pytest.mark.xfail(strict=True, reason="at 4.2 m/s the rig set-up gives +12 K, below the "
+                   "15-30 K of the issue's summary (README, Validation, finding 1)")
+def test_rig_contact_rise_at_4_2_m_s_within_published_range():
+    assert 15 <= _rise_over_sump({"setup": "test_rig"}, 1000) <= 30
+
+
+def test_gearbox_contact_runs_cooler_than_the_rig():
+    # In the gearbox the shaft is held at the sump temperature at the bearing 30 mm inside:
+    # that conduction path (k·A/L = 7.5 W/K on 80 mm) bounds the rise, so at equal speed the
+    # gearbox contact rises less above the sump than the rig's (insulated shaft ends).
+    for rpm in (1000, 3000):
+        assert _rise_over_sump({"setup": "gearbox"}, rpm) < _rise_over_sump(
+            {"setup": "test_rig"}, rpm)
+
+
+def test_open_bath_convection_cools_the_shaft_more_than_the_annulus():
+    # Kays & Bjorklund's cylinder in a quiescent bath gives about four times the annulus
+    # coefficient at 1000 rpm in VG 68 at 80 °C (≈ 1600 vs 380 W/(m² K)): the rig contact runs
+    # cooler with it; a wider annulus cools less (h ∝ gap^-1/4).
+    annulus = _rise_over_sump({"setup": "test_rig"}, 1000)
+    assert _rise_over_sump({"setup": "test_rig", "shaft_oil_convection": "open"}, 1000) < annulus
+    assert _rise_over_sump({"setup": "test_rig", "oil_gap": "40 mm"}, 1000) > annulus
+
+
+def test_contact_band_spreading_resistance_is_resolved_by_the_grid():
+    # The 0.25 mm band concentrates the frictional heat; its constriction into the shaft is
+    # most of the band's temperature rise.  Reference: the exact series solution for a solid
+    # cylinder (radius R, ends at z = ±L held at 0, lateral surface adiabatic except the band
+    # |z| < b/2 with uniform flux q): T = Σ A_n I0(k_n r) cos(k_n z), k_n = (2n+1)π/(2L),
+    # A_n = q_n/(k·k_n·I1(k_n R)), q_n = 2q·sin(k_n b/2)/(L·k_n); band mean
+    # Σ A_n I0(k_n R)·2 sin(k_n b/2)/(b k_n).  The rotary grid's shaft (rig set-up, 30 mm each
+    # side) with its band source must match within 1 % (measured 0.5 %; 0.06 % refined 2×).
+    model = RotaryModel(_case(environment={"setup": "test_rig"}))
+    grid = model.grid.conduction
+    radius, band = model.section.radius, model.section.contact_band
+    length, k, power = model.section.shaft_length_oil, 45.0, 10.0
+    assert model.section.shaft_length_air == length  # symmetric, as the series assumes
+    shaft = AxisymmetricConduction(grid.r_edges, grid.z_edges,
+                                   np.where(grid.material == 0, 0, -1), [Solid("s", k, 1, 1)])
+    ends = np.nonzero((shaft.boundary.void < 0) & (shaft.boundary.side >= 2))[0]
+    network = ThermalNetwork(shaft, {}, ["end"], {"ends": (ends, "end")})
+    matrix, _ = network.assemble({"ends": 1e12})
+    row = int(np.argmin(np.abs(grid.r_edges - radius))) - 1
+    in_band = np.abs(shaft.z_centres) < band / 2
+    cells, widths = shaft.index[row, in_band], np.diff(shaft.z_edges)[in_band]
+    source = np.zeros(network.n)
+    source[cells] = power * widths / widths.sum()
+    numeric = spla.spsolve(matrix.tocsc(), source)[cells] @ (widths / widths.sum())
+    kn = (2 * np.arange(200_000) + 1) * np.pi / (2 * length)
+    q = power / (2 * np.pi * radius * band)
+    qn = 2 * q * np.sin(kn * band / 2) / (length * kn)
+    exact = np.sum(qn / (k * kn) * i0e(kn * radius) / i1e(kn * radius)
+                   * 2 * np.sin(kn * band / 2) / (band * kn))
+    uniform = power * length / (2 * k * np.pi * radius**2)  # no constriction: 1D conduction
+    assert numeric == pytest.approx(exact, rel=0.01)
+    assert exact > 2 * uniform  # the constriction matters: it is worth resolving
+
+
+@pytest.mark.parametrize(("environment", "rpm"), [
+    ({"sump_temperature": "80 degC"}, 1500),
+    ({"sump_volume": "1 L", "ambient_temperature": "23 degC"}, 1000),
+    ({"setup": "test_rig", "sump_volume": "3 L"}, 300),
+])
+def test_steady_state_matches_the_refactorising_reference(environment, rpm):
+    # Issue 13: one factorisation per operating point instead of one per fixed-point
+    # iteration.  Both solve the same equations, so run to convergence (reference tol 1e-9 K)
+    # they must agree to round-off; required: torque within 1e-9 relative, contact and sump
+    # temperatures within 1e-6 K (measured: < 3e-11 and < 4e-9 K).
+    case = _case(environment=environment)
+    new = steady_state(case, rpm * RPM)
+    reference = reference_steady_state(case, rpm * RPM, tol=1e-9, max_iter=400)
+    assert new["torque_Nm"] == pytest.approx(reference["torque_Nm"], rel=1e-9)
+    for column in ("T_contact_C", "T_sump_C"):
+        assert new[column] == pytest.approx(reference[column], abs=1e-6)
 
 
 def test_run_starts_at_the_held_sump_temperature():

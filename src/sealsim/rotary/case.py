@@ -216,6 +216,14 @@ class Environment(CaseModel):
     oil_level_wetting: float = Field(0.5, ge=0.0, le=1.0, description=(
         "fraction of the shaft circumference under oil on the oil side "
         "(0.5: oil level at the shaft centre, as in seed 000's rig)"))
+    shaft_oil_convection: Literal["annulus", "open"] = Field("annulus", description=(
+        "flow around the oil-side shaft: 'annulus' (Taylor-Couette flow in the annular space "
+        "between the shaft and the bore the seal sits in -- a bearing cap, a test head -- after "
+        "Staton & Cavagnino 2008) or 'open' (a shaft turning in a large quiescent oil bath, "
+        "Kays & Bjorklund)"))
+    oil_gap: Q("length", gt=0, le=1.0) | None = Field(None, description=(
+        "radial width of that annulus; default: the seal's radial section (the housing bore "
+        "of the seal continued on its oil side)"))
     housing_area: Q("area", gt=0) | None = Field(
         None, description="outer housing area to ambient; default: a box twice the sump volume")
     housing_mass: Q("mass", gt=0) | None = Field(

@@ -46,6 +46,7 @@ from sealsim.thermal.conduction import (
 from sealsim.thermal.convection import (
     air_properties,
     free_convection_horizontal_cylinder,
+    rotating_annulus_coefficient,
     rotating_cylinder_coefficient,
 )
 from sealsim.tribology.film import FilmRangeWarning, film_range_note
@@ -70,6 +71,12 @@ HOUSING_WALL = 5e-3
 #: end face of an 80 mm shaft 50 W/K, ten times the axial conductance of 50 mm of shaft, so the
 #: end sits at the node's temperature.
 END_CONTACT = 1.0e4
+#: :func:`steady_state` factorises anew when an iteration shrinks the update by less than this
+#: factor while a free sump has moved more than :data:`STALE_SUMP_CHANGE` from the temperature
+#: of the factorisation: the oil's coefficients have changed so much that the chord iteration
+#: has slowed down.
+STALE_CONTRACTION = 0.5
+STALE_SUMP_CHANGE = 2.0  # K
 #: How long the temperatures must stay below duty.steady_rate before until_steady stops [s].
 STEADY_WINDOW = 60.0
 
@@ -169,6 +176,8 @@ class RotaryModel:
         self.grid = build_thermal_grid(self.section, shaft, rubber, case_steel,
                                        c.numerics.mesh_refinement)
         self.start_temperature = start_temperature(env)
+        self.oil_gap = env.oil_gap if env.oil_gap is not None else (
+            seal.outer_diameter - seal.shaft_diameter) / 2.0
         outer, wetted, mass = housing_defaults(env.sump_volume)
         housing_area = env.housing_area if env.housing_area is not None else outer
         housing_mass = env.housing_mass if env.housing_mass is not None else mass
@@ -203,10 +212,12 @@ class RotaryModel:
     def coefficients(self, angular_speed: float, sump_temperature: float) -> dict[str, float]:
         """Heat transfer coefficients [W/(m² K)] of every face group.
 
-        Shaft in oil: Kays & Bjorklund rotating cylinder in oil at the sump temperature on the
-        wetted fraction of the circumference, in gearbox air (at sump temperature) on the rest;
-        shaft in air: rotating cylinder in ambient air; both never below free convection
-        (Churchill & Chu, ΔT = 10 K).  Shaft ends (``environment.shaft_oil_end`` /
+        Shaft in oil, on the wetted fraction of the circumference: Taylor–Couette flow in the
+        annulus between shaft and housing bore (``environment.shaft_oil_convection =
+        "annulus"``, gap ``oil_gap``) or a cylinder in a quiescent bath (``"open"``, Kays &
+        Bjorklund), oil at the sump temperature; on the rest gearbox air at sump temperature;
+        shaft in air: rotating cylinder (Kays & Bjorklund) in ambient air; all never below free
+        convection (Churchill & Chu, ΔT = 10 K).  Shaft ends (``environment.shaft_oil_end`` /
         ``shaft_air_end``): held at the sump or housing temperature (:data:`END_CONTACT`), a
         semi-infinite fin √(4·h·k/d) in oil or air, or insulated.  Seal surfaces: a fraction of
         the shaft's coefficient (``[thermal]``), the lip's oil side times the lip style's heat
@@ -220,7 +231,12 @@ class RotaryModel:
         k_o = float(self.oil.thermal_conductivity(ts))
         rho_c = float(self.oil.density(ts) * self.oil.specific_heat(ts))
         alpha_o = k_o / rho_c
-        h_oil = max(float(rotating_cylinder_coefficient(omega, d, nu_o, k_o, nu_o / alpha_o)),
+        if env.shaft_oil_convection == "annulus":
+            h_forced = rotating_annulus_coefficient(omega, d, self.oil_gap, nu_o, k_o,
+                                                    nu_o / alpha_o)
+        else:
+            h_forced = rotating_cylinder_coefficient(omega, d, nu_o, k_o, nu_o / alpha_o)
+        h_oil = max(float(h_forced),
                     float(free_convection_horizontal_cylinder(d, FREE_CONVECTION_DELTA_T, nu_o,
                                                               alpha_o, k_o, OIL_EXPANSION)))
 
@@ -481,13 +497,21 @@ def _time_average(t: np.ndarray, y: np.ndarray, lo: float, hi: float) -> float:
     return float(np.sum(y[1:] * widths) / (hi - lo))
 
 
-def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-4,
+def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
                  max_iter: int = 100) -> dict[str, float]:
     """Steady operating point at constant speed: friction and temperatures in equilibrium.
 
-    Solves K·T = F·T_fixed + s(q) with q = P(ω, T_contact) by fixed-point iteration on the
-    contact temperature (the friction–temperature feedback is weak, so it converges in a few
-    iterations).
+    Solves K(T_sump)·T = F·T_fixed + e·P(ω, T_contact) for the temperatures T (e spreads the
+    friction power P over the contact band; K depends on the sump temperature through the oil's
+    convection coefficients).  The network matrix K₀ is factorised once, at the start
+    temperature, and reused: each iteration solves K₀·δ = r for the residual
+    r = F·T_fixed + e·P − K(T_sump)·T (a chord iteration; Kelley, *Iterative Methods for Linear
+    and Nonlinear Equations*, SIAM 1995, ch. 5).  The friction's feedback enters through the
+    Sherman–Morrison formula with the secant slope s = ΔP/ΔT_contact of the last two
+    iterates, δ = K₀⁻¹r + u·s·c(K₀⁻¹r)/(1 − s·c(u)), u = K₀⁻¹e, c(·) the contact-band mean,
+    so the friction coupling converges like a secant method instead of a fixed-point sweep.
+    Only when a free sump heats far from the temperature of the factorisation and the
+    iteration slows down (:data:`STALE_CONTRACTION`) is the matrix factorised anew.
 
     Parameters
     ----------
@@ -496,7 +520,9 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-4,
     angular_speed : float
         ω [rad/s].
     tol : float
-        Convergence tolerance on the contact temperature [K].
+        Convergence tolerance on the contact and sump temperature updates [K].
+    max_iter : int
+        Most iterations before a :class:`~sealsim.errors.ModelError`.
 
     Returns
     -------
@@ -508,37 +534,65 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-4,
     """
     model = RotaryModel(case)
     fixed = model.fixed_temperatures()
-    t_sump = model.sump_temperature(np.full(model.network.n, model.start_temperature))
-    t_contact = t_sump
-    for iteration in range(1, max_iter + 1):
-        k, f = model.assemble(angular_speed, t_sump)
-        lu = factorise(k.tocsc())
+    temps = np.full(model.network.n, model.start_temperature)
+    factorised_at = model.sump_temperature(temps)
+    k, f = model.assemble(angular_speed, factorised_at)
+    lu = factorise(k)
+    unit_source = model.source(1.0)
+    unit_response = lu.solve(unit_source)
+    unit_contact = model.contact_temperature(unit_response)  # K/W
+
+    def friction_at(t_contact: float) -> FrictionState:
         try:
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore", (ServiceRangeWarning, OilRangeWarning))
-                state = model.friction.evaluate(angular_speed, t_contact)
+                return model.friction.evaluate(angular_speed, t_contact)
         except InputError as exc:
             raise ModelError(f"steady state at {angular_speed * 30 / math.pi:.0f} rpm: contact "
                              f"temperature {t_contact - CELSIUS_0:.1f} degC: {exc}") from None
-        temps = lu.solve(f @ fixed + model.source(float(state.power)))
-        new_contact = model.contact_temperature(temps)
-        new_sump = model.sump_temperature(temps)
-        converged = abs(new_contact - t_contact) < tol and abs(new_sump - t_sump) < tol
-        # under-relaxation keeps the iteration monotone when the sump is free
-        t_contact = 0.5 * (t_contact + new_contact) if iteration > 20 else new_contact
-        t_sump = new_sump
-        if converged:
+
+    sump = None if model.sump_fixed else model.network.node_index["sump"]
+    # the first slope from a 1 K difference, then secants through the iterates
+    previous = (model.start_temperature + 1.0,
+                float(friction_at(model.start_temperature + 1.0).power))
+    slope, converged, last_update, stale = 0.0, False, np.inf, False
+    for iteration in range(1, max_iter + 1):
+        t_contact = model.contact_temperature(temps)
+        power = float(friction_at(t_contact).power)
+        if t_contact != previous[0]:
+            slope = (power - previous[1]) / (t_contact - previous[0])
+        previous = (t_contact, power)
+        if sump is not None:  # the oil's coefficients follow the sump temperature
+            k, f = model.assemble(angular_speed, temps[sump])
+            if stale and abs(temps[sump] - factorised_at) > STALE_SUMP_CHANGE:
+                lu, factorised_at = factorise(k), temps[sump]
+                unit_response = lu.solve(unit_source)
+                unit_contact = model.contact_temperature(unit_response)
+        step = lu.solve(f @ fixed + unit_source * power - k @ temps)
+        denominator = 1.0 - slope * unit_contact
+        if denominator > 0.1:  # else the friction heats faster than the network cools: no help
+            step += unit_response * (slope * model.contact_temperature(step) / denominator)
+        temps += step
+        if not np.all(np.isfinite(temps)):
             break
-    else:
+        update = max(abs(model.contact_temperature(step)),
+                     0.0 if sump is None else abs(step[sump]))
+        if update < tol:
+            converged = True
+            break
+        stale, last_update = update > STALE_CONTRACTION * last_update, update
+    if not converged:
         raise ModelError(f"steady state at {angular_speed * 30 / math.pi:.0f} rpm did not "
                          f"converge in {max_iter} iterations")
+    t_contact = model.contact_temperature(temps)
+    state = friction_at(t_contact)
     film = float(state.film)
     if angular_speed != 0 and film_range_note(film, film):
         warnings.warn(film_range_note(film, film), FilmRangeWarning, stacklevel=2)
     return {"torque_Nm": float(state.torque), "power_W": float(state.power),
             "T_contact_C": t_contact - CELSIUS_0,
             "T_groove_C": float(temps[model.grid.groove_cell]) - CELSIUS_0,
-            "T_sump_C": t_sump - CELSIUS_0,
+            "T_sump_C": model.sump_temperature(temps) - CELSIUS_0,
             "T_housing_C": model.housing_temperature(temps) - CELSIUS_0, "film_um": film * 1e6,
             "F_lub_N": float(state.force_lubricant), "F_material_N": float(state.force_material),
             "lip_force_N": float(state.lip_force), "mu_dry": float(state.mu_dry),

@@ -31,6 +31,7 @@ Void cells connected to the oil-side end are oil, the others air.  Boundary face
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
 
 import numpy as np
 from scipy import ndimage
@@ -131,9 +132,13 @@ def _tan(deg: float) -> float:
     return float(np.tan(np.radians(deg)))
 
 
+@lru_cache(maxsize=16)
 def build_thermal_grid(section: SealSection, shaft: Solid, rubber: Solid, case: Solid,
                        refinement: float = 1.0) -> LipSealThermalGrid:
     """Build the finite-volume grid of shaft and seal.
+
+    Pure geometry, so a grid is built once per set of arguments and shared (read-only) by
+    the models of every operating point and variant that use it.
 
     Parameters
     ----------

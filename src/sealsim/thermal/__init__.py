@@ -3,8 +3,9 @@
 * :mod:`.conduction` -- transient conduction on a structured (r, z) grid of ring cells with
   lumped and fixed-temperature nodes, backward Euler with exact energy bookkeeping
   (:class:`AxisymmetricConduction`, :class:`ThermalNetwork`, :class:`BackwardEulerStepper`);
-* :mod:`.convection` -- heat transfer coefficients of rotating shafts (Kays & Bjorklund),
-  free convection (Churchill & Chu), radiation, air properties.
+* :mod:`.convection` -- heat transfer coefficients of rotating shafts in open fluid (Kays &
+  Bjorklund) and in an annulus (Taylor–Couette, Staton & Cavagnino), free convection
+  (Churchill & Chu), radiation, air properties.
 
 >>> from sealsim.thermal import rotating_cylinder_coefficient
 >>> round(float(rotating_cylinder_coefficient(157.0, 0.06, 1e-4, 0.13, 1200.0)))
@@ -28,8 +29,11 @@ from sealsim.thermal.convection import (
     free_convection_vertical_plate,
     radiation_coefficient,
     rayleigh_number,
+    rotating_annulus_coefficient,
+    rotating_annulus_nusselt,
     rotating_cylinder_coefficient,
     rotating_cylinder_nusselt,
+    taylor_number,
 )
 
 __all__ = [
@@ -47,6 +51,9 @@ __all__ = [
     "graded_edges",
     "radiation_coefficient",
     "rayleigh_number",
+    "rotating_annulus_coefficient",
+    "rotating_annulus_nusselt",
     "rotating_cylinder_coefficient",
     "rotating_cylinder_nusselt",
+    "taylor_number",
 ]

@@ -321,6 +321,7 @@ class ThermalNetwork:
             if node not in self.node_index and node not in self.fixed_names:
                 raise ValueError(f"face group {g!r} links to unknown node {node!r}")
         self._k_cond = conduction.conduction_matrix()
+        self._plans: dict[tuple, dict] = {}  # assembly plans per set of link end nodes
 
     def group_area(self, group: str) -> float:
         """Total area of a face group [m²]."""
@@ -330,6 +331,10 @@ class ThermalNetwork:
     def assemble(self, coefficients: Mapping[str, float | np.ndarray],
                  links: Sequence[Link] = ()) -> tuple[sp.csc_matrix, sp.csr_matrix]:
         """Network matrices for the given convection coefficients.
+
+        The sparsity pattern depends only on the face groups and on which nodes the links
+        join; it is built once per set of links and reused, so a call only computes the
+        conductances and scatters them into the matrix entries.
 
         Parameters
         ----------
@@ -346,49 +351,86 @@ class ThermalNetwork:
             Coupling to the fixed nodes: the heat flow into the unknowns is F·T_fixed − K·T.
         """
         b = self.conduction.boundary
-        rows_k, cols_k, vals_k = [], [], []
-        rows_f, cols_f, vals_f = [], [], []
-
-        def connect(i: int, node: str, g):
-            g = np.atleast_1d(np.asarray(g, dtype=float))
-            i = np.atleast_1d(i)
-            rows_k.append(i)
-            cols_k.append(i)
-            vals_k.append(g)
-            if node in self.node_index:
-                j = np.full(len(i), self.node_index[node])
-                rows_k.extend([j, i, j])
-                cols_k.extend([j, j, i])
-                vals_k.extend([g, -g, -g])
-            else:
-                rows_f.append(i)
-                cols_f.append(np.full(len(i), self.fixed_names.index(node)))
-                vals_f.append(g)
-
-        for group, (faces, node) in self.face_groups.items():
+        conductances = []
+        for group, (faces, _) in self.face_groups.items():
             h = np.asarray(coefficients[group], dtype=float)
             if np.any(h < 0) or not np.all(np.isfinite(h)):
                 raise ValueError(f"heat transfer coefficient of {group!r} must be finite, >= 0")
             with np.errstate(divide="ignore"):
                 g = 1.0 / (b.resistance[faces] + 1.0 / (h * b.area[faces]))
-            connect(b.cell[faces], node, np.broadcast_to(g, faces.shape))
-        for link in links:
-            if link.a in self.node_index:
-                connect(self.node_index[link.a], link.b, link.conductance)
-            elif link.b in self.node_index:
-                connect(self.node_index[link.b], link.a, link.conductance)
-        k_conv = sp.coo_matrix((np.concatenate(vals_k), (np.concatenate(rows_k),
-                                                        np.concatenate(cols_k))),
-                               shape=(self.n, self.n))
-        k_cond = sp.block_diag([self._k_cond, sp.csr_matrix((self.n - self.n_cells,) * 2)])
-        k = (k_cond + k_conv).tocsc()
-        if rows_f:
-            f = sp.coo_matrix((np.concatenate(vals_f), (np.concatenate(rows_f),
-                                                       np.concatenate(cols_f))),
-                              shape=(self.n, len(self.fixed_names))).tocsr()
-        else:
-            f = sp.csr_matrix((self.n, len(self.fixed_names)))
+            conductances.append(np.broadcast_to(g, faces.shape))
+        conductances.append(np.array([link.conductance for link in links], dtype=float))
+        g_all = np.concatenate(conductances)
+        plan = self._plan(tuple((link.a, link.b) for link in links))
+        k = sp.csc_matrix((plan["k_base"] + plan["k_scatter"] @ g_all, plan["k_indices"],
+                           plan["k_indptr"]), shape=(self.n, self.n))
+        f = sp.csr_matrix((plan["f_scatter"] @ g_all, plan["f_indices"], plan["f_indptr"]),
+                          shape=(self.n, len(self.fixed_names)))
         return k, f
+
+    def _plan(self, link_nodes: tuple[tuple[str, str], ...]) -> dict:
+        """Sparsity pattern of (K, F) and the maps from conductances to matrix entries."""
+        if link_nodes in self._plans:
+            return self._plans[link_nodes]
+        b = self.conduction.boundary
+        k_rows, k_cols, k_sign, k_source = [], [], [], []
+        f_rows, f_cols, f_source = [], [], []
+        offset = 0
+
+        def connect(cells: np.ndarray, node: str, sources: np.ndarray):
+            # a conductance g between unknown i and node j: K_ii += g and, for a lumped j,
+            # K_jj += g, K_ij = K_ji -= g; for a fixed j, F_ij += g
+            k_rows.append(cells)
+            k_cols.append(cells)
+            k_sign.append(np.ones(len(cells)))
+            k_source.append(sources)
+            if node in self.node_index:
+                j = np.full(len(cells), self.node_index[node])
+                k_rows.extend([j, cells, j])
+                k_cols.extend([j, j, cells])
+                k_sign.extend([np.ones(len(cells)), -np.ones(len(cells)), -np.ones(len(cells))])
+                k_source.extend([sources] * 3)
+            else:
+                f_rows.append(cells)
+                f_cols.append(np.full(len(cells), self.fixed_names.index(node)))
+                f_source.append(sources)
+
+        for faces, node in self.face_groups.values():
+            connect(b.cell[faces], node, offset + np.arange(len(faces)))
+            offset += len(faces)
+        for a, c in link_nodes:
+            for lumped, other in ((a, c), (c, a)):
+                if lumped in self.node_index:
+                    connect(np.array([self.node_index[lumped]]), other, np.array([offset]))
+                    break
+            offset += 1
+        n_sources = offset
+        cond = self._k_cond.tocoo()
+        rows = np.concatenate([cond.row, *k_rows])
+        cols = np.concatenate([cond.col, *k_cols])
+        # column-major keys order the entries as CSC stores them
+        keys, slot = np.unique(cols.astype(np.int64) * self.n + rows, return_inverse=True)
+        n_cond = len(cond.data)
+        k_base = np.bincount(slot[:n_cond], weights=cond.data, minlength=len(keys))
+        k_scatter = sp.csr_matrix(
+            (np.concatenate(k_sign), (slot[n_cond:], np.concatenate(k_source))),
+            shape=(len(keys), n_sources)) if k_rows else sp.csr_matrix((len(keys), n_sources))
+        k_indptr = np.searchsorted(keys // self.n, np.arange(self.n + 1)).astype(np.int32)
+        n_fixed = len(self.fixed_names)
+        if f_rows:
+            f_keys, f_slot = np.unique(np.concatenate(f_rows).astype(np.int64) * max(n_fixed, 1)
+                                       + np.concatenate(f_cols), return_inverse=True)
+            f_scatter = sp.csr_matrix((np.ones(len(f_slot)), (f_slot, np.concatenate(f_source))),
+                                      shape=(len(f_keys), n_sources))
+        else:
+            f_keys, f_scatter = np.zeros(0, np.int64), sp.csr_matrix((0, n_sources))
+        plan = {"k_base": k_base, "k_scatter": k_scatter,
+                "k_indices": (keys % self.n).astype(np.int32), "k_indptr": k_indptr,
+                "f_scatter": f_scatter, "f_indices": (f_keys % max(n_fixed, 1)).astype(np.int32),
+                "f_indptr": np.searchsorted(f_keys // max(n_fixed, 1),
+                                            np.arange(self.n + 1)).astype(np.int32)}
+        self._plans[link_nodes] = plan
+        return plan
 
 
 def factorise(matrix: sp.csc_matrix):
