@@ -39,6 +39,7 @@ import numpy as np
 from pydantic import Field, model_validator
 
 from sealsim.cases import Q
+from sealsim.friction import kernels as _k
 from sealsim.friction.base import (
     NO_INPUTS,
     ContactInputs,
@@ -50,6 +51,7 @@ from sealsim.friction.base import (
     require_static_at_least_coulomb,
     validate_parameters,
 )
+from sealsim.friction.kernels import apply
 from sealsim.friction.stribeck import stribeck_level, stribeck_level_derivative
 
 __all__ = ["GMS", "GMSParameters", "default_fractions", "gms_element_rate", "gms_element_step"]
@@ -105,13 +107,7 @@ def gms_element_rate(z, v, stiffness, fraction, attraction, s):
     array([[ 0.1   ],
            [-0.0002]])
     """
-    z = np.asarray(z, dtype=float)
-    v = np.asarray(v, dtype=float)
-    force = stiffness * z
-    sgn = np.sign(v)
-    stick = force * sgn < fraction * s
-    slip_rate = attraction / stiffness * (fraction * sgn - force / s)
-    return np.where(stick, v, slip_rate)
+    return apply(_k._loop_gms_element_rate, z, v, stiffness, fraction, attraction, s)
 
 
 def gms_element_step(z, v, dt, stiffness, fraction, attraction, s):
@@ -132,19 +128,7 @@ def gms_element_step(z, v, dt, stiffness, fraction, attraction, s):
     array([[0.25],
            [0.5 ]])
     """
-    z = np.asarray(z, dtype=float)
-    v = np.asarray(v, dtype=float)
-    force = stiffness * z
-    sgn = np.sign(v)
-    limit = fraction * s
-    stick = force * sgn < limit
-    trial = force + stiffness * v * dt
-    stuck = np.where(trial * sgn > limit, limit * sgn, trial)
-    target = limit * sgn
-    slipped = target + (force - target) * np.exp(-attraction * dt / s)
-    new_force = np.where(stick, stuck, slipped)
-    new_force = np.where(v == 0, force, new_force)
-    return new_force / stiffness
+    return apply(_k._loop_gms_element_step, z, v, dt, stiffness, fraction, attraction, s)
 
 
 class GMSParameters(LawParameters):

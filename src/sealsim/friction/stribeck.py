@@ -25,6 +25,7 @@ import numpy as np
 from pydantic import model_validator
 
 from sealsim.cases import Q
+from sealsim.friction import kernels as _k
 from sealsim.friction.base import (
     NO_INPUTS,
     ContactInputs,
@@ -36,6 +37,7 @@ from sealsim.friction.base import (
     sign,
     validate_parameters,
 )
+from sealsim.friction.kernels import apply
 
 __all__ = [
     "CoulombParameters",
@@ -47,6 +49,7 @@ __all__ = [
     "stribeck_force",
     "stribeck_level",
     "stribeck_level_derivative",
+    "stribeck_scaled_levels",
 ]
 
 
@@ -82,9 +85,8 @@ def pressure_scaled_force(force_at_zero_pressure, pressure_coefficient, pressure
     >>> float(pressure_scaled_force(15.0, 1.5e-5, 6e5, 0.0))
     24.0
     """
-    return np.asarray(force_at_zero_pressure, dtype=float) + np.asarray(
-        pressure_coefficient, dtype=float) * (np.asarray(pressure_a, dtype=float)
-                                              + np.asarray(pressure_b, dtype=float))
+    return apply(_k._loop_pressure_scaled_force, force_at_zero_pressure, pressure_coefficient,
+                 pressure_a, pressure_b)
 
 
 def stribeck_level(v, coulomb_force, static_force, stribeck_velocity, exponent=2.0):
@@ -119,9 +121,8 @@ def stribeck_level(v, coulomb_force, static_force, stribeck_velocity, exponent=2
     >>> stribeck_level([0.0, 1e-3, 1.0], 1.0, 1.5, 1e-3)
     array([1.5 , 1.18393972, 1. ])
     """
-    v = np.asarray(v, dtype=float)
-    ratio = np.abs(v / stribeck_velocity)
-    return coulomb_force + (np.asarray(static_force) - coulomb_force) * np.exp(-ratio ** exponent)
+    return apply(_k._loop_stribeck_level, v, coulomb_force, static_force, stribeck_velocity,
+                 exponent)
 
 
 def stribeck_level_derivative(v, coulomb_force, static_force, stribeck_velocity, exponent=2.0):
@@ -137,13 +138,8 @@ def stribeck_level_derivative(v, coulomb_force, static_force, stribeck_velocity,
     >>> float(stribeck_level_derivative(1e-3, 1.0, 1.5, 1e-3))
     -367.879...
     """
-    v = np.asarray(v, dtype=float)
-    ratio = np.abs(v / stribeck_velocity)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        power = np.where(ratio > 0, ratio ** (np.asarray(exponent) - 1.0),
-                         np.where(np.asarray(exponent) == 1.0, 1.0, 0.0))
-    return (-(np.asarray(static_force) - coulomb_force) * exponent * power
-            * np.exp(-ratio ** exponent) * np.sign(v) / stribeck_velocity)
+    return apply(_k._loop_stribeck_level_derivative, v, coulomb_force, static_force,
+                 stribeck_velocity, exponent)
 
 
 def stribeck_force(v, coulomb_force, static_force, stribeck_velocity, viscous_coefficient=0.0,
@@ -178,9 +174,40 @@ def stribeck_force(v, coulomb_force, static_force, stribeck_velocity, viscous_co
     >>> stribeck_force([-0.01, 0.01], 15.0, 25.0, 0.02, 8.0, exponent=1.0)
     array([-21.145..., 21.145...])
     """
-    v = np.asarray(v, dtype=float)
-    return (stribeck_level(v, coulomb_force, static_force, stribeck_velocity, exponent)
-            * np.sign(v) + viscous_coefficient * v)
+    return apply(_k._loop_stribeck_force, v, coulomb_force, static_force, stribeck_velocity,
+                 viscous_coefficient, exponent)
+
+
+def stribeck_scaled_levels(coulomb_force, static_force, pressure_coefficient, pressure_a=0.0,
+                           pressure_b=0.0):
+    """Coulomb and static levels of the Stribeck law after pressure scaling (seed 001 Eq. 3).
+
+    .. math:: F_C(p) = F_C + f\\,(p_A + p_B), \\qquad F_S(p) = F_S\\,F_C(p)/F_C
+
+    The break-away ratio F_S/F_C stays constant, as in Simscape's Cylinder Friction; with
+    F_C = 0 the static level is shifted by the same amount instead, F_S + (F_C(p) − F_C).
+
+    Parameters
+    ----------
+    coulomb_force, static_force : array_like
+        F_C and F_S without pressure [N].
+    pressure_coefficient : array_like
+        f [N/Pa] (= [m²]).
+    pressure_a, pressure_b : array_like
+        Gauge pressures p_A, p_B [Pa].
+
+    Returns
+    -------
+    f_c, f_s : ndarray
+        Scaled levels [N].
+
+    Examples
+    --------
+    >>> [float(f) for f in stribeck_scaled_levels(15.0, 25.0, 1.5e-5, 6e5)]
+    [24.0, 40.0]
+    """
+    return apply(_k._loop_stribeck_scaled_levels, coulomb_force, static_force,
+                 pressure_coefficient, pressure_a, pressure_b, outputs=2)
 
 
 def coulomb_viscous_force(v, coulomb_force, viscous_coefficient=0.0):
@@ -205,8 +232,7 @@ def coulomb_viscous_force(v, coulomb_force, viscous_coefficient=0.0):
     >>> coulomb_viscous_force([-1.0, 0.0, 2.0], 1.0, 0.5)
     array([-1.5,  0. ,  2. ])
     """
-    v = np.asarray(v, dtype=float)
-    return coulomb_force * np.sign(v) + viscous_coefficient * v
+    return apply(_k._loop_coulomb_viscous_force, v, coulomb_force, viscous_coefficient)
 
 
 # --------------------------------------------------------------------------------------------
@@ -358,14 +384,9 @@ class Stribeck(_StaticLaw):
 
     def _levels(self, inputs: ContactInputs):
         p = self.params
-        f_c = pressure_scaled_force(p.coulomb_force, p.pressure_coefficient,
-                                    inputs.require("pressure_a", self.name),
-                                    inputs.require("pressure_b", self.name))
-        if p.coulomb_force > 0:
-            f_s = p.static_force * f_c / p.coulomb_force
-        else:
-            f_s = p.static_force + (f_c - p.coulomb_force)
-        return f_c, f_s
+        return stribeck_scaled_levels(p.coulomb_force, p.static_force, p.pressure_coefficient,
+                                      inputs.require("pressure_a", self.name),
+                                      inputs.require("pressure_b", self.name))
 
     def force(self, z, v, inputs: ContactInputs = NO_INPUTS):
         p = self.params
