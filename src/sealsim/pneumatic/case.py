@@ -78,6 +78,8 @@ __all__ = [
     "CylinderModel",
     "PneumaticCase",
     "SealModel",
+    "SealThermalModel",
+    "ThermalModel",
     "ValveModel",
     "build_seals",
     "load_pneumatic_case_file",
@@ -284,6 +286,15 @@ class MapModel(CaseModel):
         return self
 
 
+class SealThermalModel(CaseModel):
+    """What seal heating needs to know about a seal beyond its contact map: the cord
+    diameter (default: the analytic map's) and the elastomer (default: the analytic map's, else
+    NBR) whose density, specific heat and conductivity the catalogue gives."""
+
+    cord_diameter: Q("length", gt=0) | None = None
+    elastomer: str | None = None
+
+
 class SealModel(CaseModel):
     """A seal: where it sits, its friction law and the source of its contact load."""
 
@@ -292,6 +303,25 @@ class SealModel(CaseModel):
     friction: LawParameters
     map: MapModel | None = None
     temperature: _temperature() | None = None
+    thermal: SealThermalModel | None = None
+
+
+class ThermalModel(CaseModel):
+    """Frictional heating of the seals (:mod:`sealsim.pneumatic.seal_heating`): a lumped node
+    per seal, the tube and the rod.  Off by default (the seals keep their temperature, right
+    for short runs: the metal parts heat with time constants of minutes).
+
+    The tube and rod geometry beyond the case's cylinder are engineering estimates [R] that a
+    user should replace: an aluminium profile tube ``tube_wall_thickness`` thick and ``stroke
+    + head_length`` long, a steel rod of the same length; the free convection and radiation to
+    the surroundings are evaluated for ``nominal_temperature_rise`` above the body."""
+
+    seal_heating: bool = True
+    tube_material: Literal["aluminium", "steel"] = "aluminium"
+    rod_material: Literal["aluminium", "steel"] = "steel"
+    tube_wall_thickness: Q("length", gt=0) = 4e-3
+    head_length: Q("length", ge=0) = 0.05
+    nominal_temperature_rise: Q("temperature_difference", gt=0) = 10.0
 
 
 # -- numerics and output ----------------------------------------------------------------------
@@ -328,6 +358,7 @@ class PneumaticCase(CaseModel):
     initial_position: Q("length") | None = None
     solver: SolverModel = SolverModel()
     output: OutputModel = OutputModel()
+    thermal: ThermalModel | None = None
 
     @model_validator(mode="after")
     def _check(self):

@@ -22,7 +22,7 @@ import numpy as np
 
 from sealsim.errors import InputError
 
-__all__ = ["COMMANDS", "CommandSchedule"]
+__all__ = ["COMMANDS", "CommandSchedule", "command_schedule"]
 
 #: spool target of each command
 COMMANDS = {"extend": 1.0, "retract": -1.0, "centre": 0.0}
@@ -100,3 +100,14 @@ class CommandSchedule:
                 end = self.times[k + 1] if k + 1 < len(self.times) else np.inf
                 out.append((float(self.times[k]), float(end)))
         return out
+
+
+def command_schedule(case) -> CommandSchedule:
+    """The valve commands of a pneumatic case: its PLC cycle, or (position mode) the command
+    held from t = 0."""
+    ctrl = case.controller
+    if ctrl.mode == "cycle":
+        return CommandSchedule.from_cycle([(s.command, s.duration) for s in ctrl.steps],
+                                          ctrl.duration, initial=ctrl.initial_command)
+    u = COMMANDS[ctrl.command]
+    return CommandSchedule(np.array([0.0]), np.array([u]), u)
