@@ -142,45 +142,52 @@ def _solve_lsoda(system, t0, t1, y0, mode, rtol, atol, max_step):
     event = _event_function(system, mode, 0.1 * atol[1])
     y = np.array(y0, dtype=float)
     t = t0
-    g_old = event[0](t, y) if event else 0.0
+    g, direction = event if event is not None else (None, 0.0)
+    g_old = g(t, y) if g is not None else 0.0
     times, ends, hs, orders, chunks = [t0], [], [], [], []
     used, status, istate = 0, 0, 1
+    step = _lsoda_step
     while True:
-        y, t_new, istate = _lsoda_step(f, y, t, t1, rtol, atol, 5, istate, rwork, iwork, jac, 1,
-                                       (), 1, (), state_doubles, state_ints)
+        y, t_new, istate = step(f, y, t, t1, rtol, atol, 5, istate, rwork, iwork, jac, 1, (), 1,
+                                (), state_doubles, state_ints)
         if istate < 0:
             status = -1
             break
         istate = 2
         t_old, t = t, float(t_new)
+        # the Nordsieck history of the step, as scipy's LSODA._dense_output_impl takes it
         order = int(iwork[13])
-        h = float(rwork[11])
-        yh = np.reshape(rwork[20:20 + (order + 1) * n], (n, order + 1), order="F").copy()
+        h = rwork[11]
+        chunk = rwork[20:20 + (order + 1) * n].copy()
         if iwork[14] < order:
-            yh[:, -1] *= (h / rwork[10]) ** order
-        y_step = y.copy()
-        if event is not None:
-            g_new = event[0](t, y_step)
-            up = g_old <= 0 <= g_new
-            down = g_old >= 0 >= g_new
-            if (up and event[1] > 0) or (down and event[1] < 0):
+            chunk[order * n:] *= (h / rwork[10]) ** iwork[13]
+        t_record = t
+        if g is not None:
+            g_new = g(t, y)
+            if (direction > 0 and g_old <= 0 <= g_new) or (direction < 0 and g_old >= 0 >= g_new):
                 from scipy.optimize import brentq
 
-                sol = LsodaDenseOutput(t_old, t, h, order, yh)
-                root = brentq(lambda s: event[0](s, sol(s)), t_old, t, xtol=4 * _EPS,
-                              rtol=4 * _EPS)
-                y_step = sol(root)
-                _append_step(times, ends, hs, orders, chunks, yh, h, order, t, root)
-                t, y_end = root, y_step
+                # a C-ordered copy as scipy's: np.dot sums in the same order
+                sol = LsodaDenseOutput(t_old, t, h, order,
+                                       chunk.reshape((n, order + 1), order="F").copy())
+                t_record = brentq(lambda s: g(s, sol(s)), t_old, t, xtol=4 * _EPS, rtol=4 * _EPS)
+                y = sol(t_record)
                 status = 1
-                break
             g_old = g_new
-        _append_step(times, ends, hs, orders, chunks, yh, h, order, t, t)
-        y_end = y_step
+        if len(times) == 1 or times[-1] != t_record:   # solve_ivp drops a step that did not
+            times.append(t_record)                      # advance
+            ends.append(t)
+            hs.append(h)
+            orders.append(order)
+            chunks.append(chunk)
+        if status == 1:
+            t = t_record
+            break
         if t >= t1:
             break
     if status < 0:
         return None, t, y, nfev[0]
+    y_end = np.array(y, dtype=float)
     starts_arr = np.zeros(len(chunks), dtype=np.int64)
     for j, ch in enumerate(chunks):
         starts_arr[j] = used
@@ -191,19 +198,6 @@ def _solve_lsoda(system, t0, t1, y0, mode, rtol, atol, max_step):
     seg = Segment(t0, t, mode, np.array(y0, dtype=float), np.asarray(y_end, dtype=float),
                   len(hs), nfev[0], int(iwork[12]), status, history)
     return seg, t, y_end, nfev[0]
-
-
-def _append_step(times, ends, hs, orders, chunks, yh, h, order, t_step, t_record):
-    """Record a step for the dense output: its Nordsieck history (column-major), evaluated
-    relative to its end ``t_step``; ``t_record`` is the time the output reaches (the event time
-    for a terminal step)."""
-    if len(times) > 1 and times[-1] == t_record:
-        return                                  # solve_ivp drops a step that did not advance
-    times.append(t_record)
-    ends.append(t_step)
-    hs.append(h)
-    orders.append(order)
-    chunks.append(yh.reshape(-1, order="F"))
 
 
 def _solve_scipy(system, t0, t1, y0, mode, method, rtol, atol, max_step):

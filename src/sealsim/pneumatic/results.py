@@ -104,7 +104,7 @@ def sample(system, segments):
     dt = case.output.sample_interval
     grid = np.arange(0.0, end + 0.5 * dt, dt)
     grid = grid[grid <= end * (1 + 1e-12)]
-    parts = []
+    times, states, modes = [], [], []
     for j, seg in enumerate(segments):
         last = j == len(segments) - 1
         sel = (grid >= seg.t0) & ((grid <= seg.t1) if last else (grid < seg.t1))
@@ -114,16 +114,19 @@ def sample(system, segments):
         ys = segment_states(seg, ts)
         if seg.mode == rhs.STICK:
             ys[1] = 0.0
-        parts.append(_diagnostics(system, ts, ys, seg.mode))
-    diag = {key: np.concatenate([p[key] for p in parts], axis=-1) for key in parts[0]}
+        times.append(ts)
+        states.append(ys)
+        modes.append(np.full(ts.shape, seg.mode, dtype=np.int64))
+    ts, ys, modes = np.concatenate(times), np.hstack(states), np.concatenate(modes)
+    diag = _diagnostics(system, ts, ys, modes)
     return _frame(system, diag), diag
 
 
-def _diagnostics(system, ts, ys, mode) -> dict[str, np.ndarray]:
-    d = system.evaluate(ts, ys, mode, full=True)
+def _diagnostics(system, ts, ys, modes) -> dict[str, np.ndarray]:
+    d = system.evaluate(ts, ys, modes, full=True)
     out = {"time": ts, "x": d["x"], "v": d["v"], "p1": d["p1"], "p2": d["p2"], "T1": d["T1"],
            "T2": d["T2"], "spool": np.asarray(d["spool"], dtype=float),
-           "command": system.schedule.command_at(ts), "mode": np.full(ts.shape, mode),
+           "command": system.schedule.command_at(ts), "mode": modes,
            "f_fric": d["f_fric"], "f_press": d["f_press"], "f_seal": d["f_seal"],
            "T_tube": d["T_tube"], "T_rod": d["T_rod"]}
     for i, s in enumerate(system.seals):
@@ -137,13 +140,17 @@ def _diagnostics(system, ts, ys, mode) -> dict[str, np.ndarray]:
     return out
 
 
+_MODE_CODES = np.array(sorted(rhs.MODES))
+_MODE_NAMES = np.array([rhs.MODES[k] for k in _MODE_CODES])
+
+
 def _frame(system, diag) -> pd.DataFrame:
     cols = {
         "time_s": diag["time"], "x_m": diag["x"], "v_m_s": diag["v"],
         "p1_bar_abs": diag["p1"] / 1e5, "p2_bar_abs": diag["p2"] / 1e5,
         "T1_C": diag["T1"] - 273.15, "T2_C": diag["T2"] - 273.15,
         "valve_command": diag["command"], "spool": diag["spool"],
-        "mode": [rhs.MODES[int(m)] for m in diag["mode"]],
+        "mode": _MODE_NAMES[np.searchsorted(_MODE_CODES, diag["mode"])],
         "F_friction_N": diag["f_fric"], "F_pressure_N": diag["f_press"],
     }
     for i, (s, name) in enumerate(zip(system.seals, seal_columns(s.name for s in

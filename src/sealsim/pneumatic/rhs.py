@@ -362,11 +362,17 @@ def evaluate_column(t, y, col, mode, tables, dy, diag, full):
         q_amb = 0.0
         q_heat = 0.0
         for i in range(nseal):
-            if seal_int[i, SI_HEATED] == 0:
-                continue
             r = base + i * DS_NROWS
-            ts_i = y[toff + i, col]
             power = diag[r + DS_F, col] * v
+            if seal_int[i, SI_HEATED] == 0:       # no node: its heat goes to the counterface
+                if seal_int[i, SI_COUNTER] == NODE_TUBE:
+                    q_tube += power
+                else:
+                    q_rod += power
+                q_heat += power
+                dy[toff + i, col] = 0.0
+                continue
+            ts_i = y[toff + i, col]
             t_cf = t_tube if seal_int[i, SI_COUNTER] == NODE_TUBE else t_rod
             t_gr = t_tube if seal_int[i, SI_GROOVE] == NODE_TUBE else t_rod
             par = seal_therm[i]
@@ -470,10 +476,24 @@ def jacobian(t, y, mode, tables, scale, work_y, work_dy, f0, diag, jac):
 
 
 @njit(cache=True)
-def evaluate_many(ts, ys, mode, tables, dys, diag):
-    """dy/dt and all diagnostics for every column of ys (shape (n, k)) at times ts (k,)."""
+def evaluate_many(ts, ys, modes, tables, dys, diag):
+    """dy/dt and all diagnostics for every column of ys (shape (n, k)) at the times ts (k,) in
+    the modes ``modes`` (k,)."""
     for col in range(ys.shape[1]):
-        evaluate_column(ts[col], ys, col, mode, tables, dys, diag, True)
+        evaluate_column(ts[col], ys, col, modes[col], tables, dys, diag, True)
+
+
+@njit(cache=True)
+def stick_margin(t, y, tables, work_y, dy, diag):
+    """(F_req, F_brk) [N] with the body held at rest at (t, y): the force the sticking seals
+    must carry and the sum of their break-away forces (see
+    :meth:`sealsim.pneumatic.system.PneumaticSystem.stick_margin`)."""
+    for i in range(y.shape[0]):
+        work_y[i] = y[i]
+    work_y[1] = 0.0
+    evaluate_column(t, work_y.reshape(work_y.shape[0], 1), 0, STICK, tables,
+                    dy.reshape(dy.shape[0], 1), diag, True)
+    return diag[D_HOLD, 0], diag[D_BRK, 0]
 
 
 @njit(cache=True)

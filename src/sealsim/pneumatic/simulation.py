@@ -135,8 +135,8 @@ def run(system: PneumaticSystem, progress=None) -> PneumaticResult:
     frame, diag = _results.sample(system, segments)
     balances = _results.balances(system, segments)
     seals = system.seals
-    notes = [f"seal {s.name!r}: {n}" for s in seals for n in s.notes] + _results.notes(
-        system, diag)
+    notes = ([f"seal {s.name!r}: {n}" for s in seals for n in s.notes] + system.thermal_notes
+             + _results.notes(system, diag))
     stats = {
         "segments": len(segments),
         "steps": int(sum(s.steps for s in segments)),

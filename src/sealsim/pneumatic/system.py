@@ -132,7 +132,6 @@ class PneumaticSystem:
         self.book = {name: n + j for j, name in enumerate(names)}
         self.n_states = n + len(names)
         self.sticky = any(s.has_stiction for s in seals) and self.position is None
-        self._sticky_rows = [i for i, s in enumerate(seals) if s.has_stiction]
 
         es, ld = cyl.end_stops, case.load
         c = np.zeros(rhs.C_NCONST)
@@ -249,9 +248,12 @@ class PneumaticSystem:
         for i, (seal, spec) in enumerate(zip(self.seals, case.seals)):
             cord = _cord_diameter(spec)
             if cord is None:
-                raise InputError(f"seals[{i}] ({seal.name!r}): seal heating needs the cord "
-                                 "diameter of the seal; give thermal.cord_diameter (or an "
-                                 "analytic map with cord_diameter)")
+                self._seal_int[i, rhs.SI_HEATED] = 0
+                self.thermal_notes.append(
+                    f"seal {seal.name!r} has no cord diameter (thermal.cord_diameter or an "
+                    "analytic map): it is not a thermal node, its friction heat goes into its "
+                    "counterface")
+                continue
             elastomer = get_elastomer(_elastomer_name(spec))
             diameter = cyl.bore if seal.location == "piston" else cyl.rod_diameter
             ring = diameter - cord if seal.location == "piston" else diameter + cord
@@ -300,7 +302,7 @@ class PneumaticSystem:
             "seals": {s.name: {"heat_capacity_J_K": float(self._seal_therm[i, rhs.ST_CAP]),
                                "to_groove_W_K": float(self._seal_therm[i, rhs.ST_GGROOVE]),
                                "static_contact_W_m2K": float(self._seal_therm[i, rhs.ST_HSTAT])}
-                      for i, s in enumerate(self.seals)}}
+                      for i, s in enumerate(self.seals) if self._seal_int[i, rhs.SI_HEATED]}}
 
     def _check_maps(self) -> None:
         """Refuse to extrapolate: the seal temperature and the supply pressure difference must
@@ -408,9 +410,10 @@ class PneumaticSystem:
         ys = np.ascontiguousarray(y[:, None] if column else y)
         k = ys.shape[1]
         ts = np.ascontiguousarray(np.broadcast_to(np.asarray(t, dtype=float), (k,)))
+        modes = np.ascontiguousarray(np.broadcast_to(np.asarray(mode, dtype=np.int64), (k,)))
         dy = np.zeros_like(ys)
         diag = np.zeros((self.n_diag, k))
-        rhs.evaluate_many(ts, ys, mode, self.tables, dy, diag)
+        rhs.evaluate_many(ts, ys, modes, self.tables, dy, diag)
         if not full:
             return dy[:, 0] if column else dy
         return self.unpack(dy, diag)
@@ -439,11 +442,10 @@ class PneumaticSystem:
         """(F_req, F_brk) [N] for the body held at rest at (t, y): the force the sticking seals
         must carry and their break-away force, widened by the decision tolerance
         :func:`stick_tolerance` (so that the stick decision and the break-away event agree)."""
-        y0 = np.array(y, dtype=float)
-        y0[1] = 0.0
-        d = self.evaluate(t, y0, rhs.STICK, full=True)
-        brk = float(d["breakaway"][self._sticky_rows].sum(axis=0)[0])
-        return float(d["hold"][0]), brk + stick_tolerance(brk)
+        work_y, work_dy, _ = self._work
+        hold, brk = rhs.stick_margin(float(t), np.asarray(y, dtype=float), self.tables, work_y,
+                                     work_dy, self._diag1)
+        return hold, brk + stick_tolerance(brk)
 
     def next_mode_at_rest(self, t, y) -> int:
         """Stick or slip direction for the body at rest at (t, y)."""
