@@ -120,14 +120,10 @@ def _event_function(system, mode, speed_resolution):
 
 def _solve_lsoda(system, t0, t1, y0, mode, rtol, atol, max_step):
     """One segment with scipy's LSODA routine, as solve_ivp(method="LSODA") would run it."""
-    fun = system.rhs(mode)
-    jac = system.jacobian_function(mode)
     n = y0.size
-    nfev = [0]
-
-    def f(t, y):
-        nfev[0] += 1
-        return fun(t, y)
+    y_type = np.zeros(n)          # scipy's LSODA passes y as a C-contiguous float64 array
+    f = system.rhs(mode, y_type)
+    jac = system.jacobian_function(mode, y_type)
 
     # the work arrays and settings of scipy.integrate._ode.lsoda (with a user Jacobian) as
     # set up by solve_ivp's LSODA class: itask 5 (one step, not beyond t_bound = rwork[0])
@@ -150,6 +146,8 @@ def _solve_lsoda(system, t0, t1, y0, mode, rtol, atol, max_step):
     while True:
         y, t_new, istate = step(f, y, t, t1, rtol, atol, 5, istate, rwork, iwork, jac, 1, (), 1,
                                 (), state_doubles, state_ints)
+        if type(y) is not np.ndarray or y.dtype != np.float64 or not y.flags.c_contiguous:
+            raise TypeError("scipy's LSODA returned an unexpected state array")
         if istate < 0:
             status = -1
             break
@@ -186,7 +184,7 @@ def _solve_lsoda(system, t0, t1, y0, mode, rtol, atol, max_step):
         if t >= t1:
             break
     if status < 0:
-        return None, t, y, nfev[0]
+        return None, t, y, int(iwork[11])
     y_end = np.array(y, dtype=float)
     starts_arr = np.zeros(len(chunks), dtype=np.int64)
     for j, ch in enumerate(chunks):
@@ -196,8 +194,8 @@ def _solve_lsoda(system, t0, t1, y0, mode, rtol, atol, max_step):
                             np.asarray(orders, dtype=np.int64), starts_arr,
                             np.concatenate(chunks) if chunks else np.zeros(0), n)
     seg = Segment(t0, t, mode, np.array(y0, dtype=float), np.asarray(y_end, dtype=float),
-                  len(hs), nfev[0], int(iwork[12]), status, history)
-    return seg, t, y_end, nfev[0]
+                  len(hs), int(iwork[11]), int(iwork[12]), status, history)
+    return seg, t, y_end, int(iwork[11])
 
 
 def _solve_scipy(system, t0, t1, y0, mode, method, rtol, atol, max_step):

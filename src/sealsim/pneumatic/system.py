@@ -377,23 +377,27 @@ class PneumaticSystem:
         return atol * rtol
 
     # -- the right-hand side ----------------------------------------------------------------
-    def rhs(self, mode: int):
+    def rhs(self, mode: int, y_type=None):
         """``f(t, y) -> dy/dt`` for the integrator (one compiled call; the returned array is
-        reused by the next call)."""
+        reused by the next call).  With ``y_type`` (an array like the ``y`` the integrator will
+        pass) the compiled code is called without numba's type dispatch."""
         tables, dy, diag = self.tables, self._dy, self._diag1
-        derivatives = rhs.derivatives
+        derivatives = self._entry(rhs.derivatives, (0.0, y_type, mode, tables, dy, diag)) \
+            if y_type is not None else rhs.derivatives
 
         def f(t, y):
             derivatives(t, y, mode, tables, dy, diag)
             return dy
         return f
 
-    def jacobian_function(self, mode: int):
-        """``J(t, y) -> ∂f/∂y`` for the integrator (forward differences, compiled)."""
+    def jacobian_function(self, mode: int, y_type=None):
+        """``J(t, y) -> ∂f/∂y`` for the integrator (forward differences, compiled; ``y_type``
+        as in :meth:`rhs`)."""
         tables, scale, diag = self.tables, self._jac_scale, self._diag1
         work_y, work_dy, f0 = self._work
         jac = np.zeros((self.n_states, self.n_states))
-        compiled = rhs.jacobian
+        args = (0.0, y_type, mode, tables, scale, work_y, work_dy, f0, diag, jac)
+        compiled = self._entry(rhs.jacobian, args) if y_type is not None else rhs.jacobian
 
         def j(t, y):
             compiled(t, y, mode, tables, scale, work_y, work_dy, f0, diag, jac)
@@ -436,6 +440,20 @@ class PneumaticSystem:
             "seal_temperature": per[:, rhs.DS_T], "friction_power": per[:, rhs.DS_POWER],
             "temperature_clipped": per[:, rhs.DS_CLIP], "T_tube": diag[rhs.D_TTUBE],
             "T_rod": diag[rhs.D_TROD]}
+
+    def _entry(self, dispatcher, args):
+        """The compiled entry point of a numba function for the types of ``args`` (compiled or
+        loaded from the cache first, looked up once per system): calling it skips numba's type
+        dispatch, which costs as much as the right-hand side itself.  The caller must pass
+        arguments of exactly these types."""
+        entries = self.__dict__.setdefault("_entries", {})
+        key = (dispatcher.__name__, args[1].shape)
+        if key not in entries:
+            import numba
+
+            dispatcher(*args)
+            entries[key] = dispatcher.overloads[tuple(numba.typeof(a) for a in args)].entry_point
+        return entries[key]
 
     # -- stick/slip --------------------------------------------------------------------------
     def stick_margin(self, t, y) -> tuple[float, float]:
