@@ -103,7 +103,7 @@ def sample(system, segments):
     end = system.duration
     dt = case.output.sample_interval
     grid = np.arange(0.0, end + 0.5 * dt, dt)
-    grid = grid[grid <= end * (1 + 1e-12)]
+    grid = np.minimum(grid[grid <= end * (1 + 1e-12)], end)    # the last sample at the end
     times, states, modes = [], [], []
     for j, seg in enumerate(segments):
         last = j == len(segments) - 1
