@@ -43,7 +43,7 @@ def test_heat_balance_closes_and_the_seals_warm():
     f = result.timeseries
     for seal in ("piston", "rod"):
         assert f[f"T_{seal}_C"].iloc[-1] > f[f"T_{seal}_C"].iloc[0]
-    assert f["T_tube_C"].iloc[-1] > 25.0 and f["T_rod_C"].iloc[-1] > 25.0
+    assert f["T_tube_metal_C"].iloc[-1] > 25.0 and f["T_rod_metal_C"].iloc[-1] > 25.0
     assert b["energy_balance_rel_error"] < 1e-3 and b["mass_balance_rel_error"] < 1e-12
     assert result.summary()["seals"]["piston"]["temperature_end_C"] > 25.0
 

@@ -14,8 +14,8 @@ import pandas as pd
 
 from sealsim.plotting import new_figure
 
-__all__ = ["friction_stroke_figure", "friction_velocity_figure", "pressure_stroke_figure",
-           "timeseries_figure"]
+__all__ = ["friction_stroke_figure", "friction_velocity_figure", "heating_figure",
+           "pressure_stroke_figure", "timeseries_figure"]
 
 _COLOURS = ["tab:blue", "tab:red", "tab:green", "tab:orange", "tab:purple", "tab:brown"]
 
@@ -166,13 +166,45 @@ def timeseries_figure(frame: pd.DataFrame, seal_names: list[str], title: str = "
         for n in heated:
             axes[row].plot(t, frame[f"T_{n}_C"], color=_colour(seal_names.index(n)), lw=1.1,
                            label=n)
-        axes[row].plot(t, frame["T_tube_C"], color="0.4", lw=1.0, ls="--", label="tube")
-        axes[row].plot(t, frame["T_rod_C"], color="0.4", lw=1.0, ls=":", label="rod")
+        axes[row].plot(t, frame["T_tube_metal_C"], color="0.4", lw=1.0, ls="--", label="tube")
+        axes[row].plot(t, frame["T_rod_metal_C"], color="0.4", lw=1.0, ls=":", label="rod")
         axes[row].set_ylabel("Temperature [°C]")
     axes[-1].set_xlabel("Time [s]")
     for a in axes:
         a.grid(True, alpha=0.3)
         a.legend(loc="upper right", fontsize=7, ncol=3)
+    if title:
+        fig.suptitle(title)
+    return fig
+
+
+def heating_figure(frame: pd.DataFrame, strokes: pd.DataFrame, seal_names: list[str],
+                   title: str = ""):
+    """A long duty cycle with seal heating: temperatures of the seals, the tube and the rod
+    against time; the mean friction and the stroke time of every stroke (``strokes``:
+    :func:`sealsim.pneumatic.summary.per_stroke`), extending and retracting apart."""
+    fig, axes = new_figure(1, 3, width=8.0, height=8.0, sharex=True)
+    t = frame["time_s"].to_numpy()
+    ax = axes[0]
+    for k, n in enumerate(seal_names):
+        if f"T_{n}_C" in frame:
+            ax.plot(t, frame[f"T_{n}_C"], color=_colour(k), lw=1.3, label=f"seal {n}")
+    # the metal on top: each seal follows its counterface within a few tenths of a kelvin
+    ax.plot(t, frame["T_tube_metal_C"], color="k", lw=0.9, ls="--", label="tube", zorder=3)
+    ax.plot(t, frame["T_rod_metal_C"], color="k", lw=0.9, ls=":", label="rod", zorder=3)
+    ax.set_ylabel("Temperature [°C]")
+    for direction, name, marker in ((1, "extend", "o"), (-1, "retract", "s")):
+        rows = strokes[strokes["direction"] == direction]
+        axes[1].plot(rows["start_s"], rows["mean_friction_N"], marker, ms=2.5, ls="-", lw=0.8,
+                     color=_colour(0 if direction > 0 else 1), label=name)
+        axes[2].plot(rows["start_s"], rows["stroke_time_s"] * 1e3, marker, ms=2.5, ls="-",
+                     lw=0.8, color=_colour(0 if direction > 0 else 1), label=name)
+    axes[1].set_ylabel("Mean friction\nwhile moving [N]")
+    axes[2].set_ylabel("Stroke time [ms]")
+    axes[2].set_xlabel("Time [s]")
+    for a in axes:
+        a.grid(True, alpha=0.3)
+        a.legend(loc="best", fontsize=7, ncol=2)
     if title:
         fig.suptitle(title)
     return fig

@@ -23,7 +23,7 @@ A case (see ``examples/pneumatic/cylinder_32.toml``)::
     [air]
     supply_pressure = "6 bar"        # gauge
     temperature = "25 degC"          # ambient and supply air
-    heat_transfer_coefficient = "30 W/(m**2*K)"
+    heat_transfer_coefficient = "45 W/(m**2*K)"   # the default (sealsim.pneumatic.chambers)
 
     [valve]
     type = "5/2"                     # or "5/3" with centre = "closed" | "exhaust" | "pressure"
@@ -66,6 +66,7 @@ from sealsim.errors import InputError
 from sealsim.friction import make_law
 from sealsim.friction.bench import profile_type
 from sealsim.friction.case import LawParameters
+from sealsim.pneumatic.chambers import DEFAULT_HEAT_TRANSFER_COEFFICIENT
 from sealsim.pneumatic.contact_maps import (
     AnalyticContactMap,
     FEContactMap,
@@ -174,7 +175,11 @@ class AirModel(CaseModel):
     ambient_pressure: Q("pressure", gt=0) = 101325.0
     temperature: _temperature() = 293.15
     supply_temperature: _temperature() | None = None
-    heat_transfer_coefficient: Q("heat_transfer_coefficient", ge=0) = 30.0
+    heat_transfer_coefficient: Q("heat_transfer_coefficient", ge=0) = Field(
+        DEFAULT_HEAT_TRANSFER_COEFFICIENT, description=(
+            "air-wall heat transfer in the chambers (default 45 W/(m**2*K): the polytropic "
+            "exponent 1.2 of Richer & Hurmuzlu 2000 for a stroke of the Ø32 example, see "
+            "sealsim.pneumatic.chambers); 0: adiabatic"))
 
     @property
     def supply_absolute(self) -> float:

@@ -66,8 +66,8 @@ class PneumaticResult:
         One row per output sample (columns: see :data:`TIMESERIES_COLUMNS` and per seal, under
         its :func:`column_name`, ``F_<seal>_N`` (friction), ``dp_<seal>_bar`` (pressure
         difference across it), with a contact map ``F_N_<seal>_N`` and ``b_<seal>_mm``, with a
-        Θ state ``theta_<seal>``, with seal heating ``T_<seal>_C``, and then ``T_tube_C``,
-        ``T_rod_C``).
+        Θ state ``theta_<seal>``, with seal heating ``T_<seal>_C``, and then ``T_tube_metal_C``,
+        ``T_rod_metal_C``).
     balances : dict
         Mass and energy bookkeeping (kg, J) and their relative errors (and, with seal heating,
         the heat balance of the seals and metal parts).
@@ -162,11 +162,11 @@ def _frame(system, diag) -> pd.DataFrame:
         cols[f"dp_{name}_bar"] = diag[f"dp{i}"] / 1e5
         if f"theta{i}" in diag:
             cols[f"theta_{name}"] = diag[f"theta{i}"]
-        if system.heating:
+        if system.heating and system.tables[3][i, rhs.SI_HEATED]:
             cols[f"T_{name}_C"] = diag[f"tseal{i}"] - 273.15
     if system.heating:
-        cols["T_tube_C"] = diag["T_tube"] - 273.15
-        cols["T_rod_C"] = diag["T_rod"] - 273.15
+        cols["T_tube_metal_C"] = diag["T_tube"] - 273.15
+        cols["T_rod_metal_C"] = diag["T_rod"] - 273.15
     return pd.DataFrame(cols)
 
 

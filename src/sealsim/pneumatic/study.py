@@ -4,7 +4,8 @@
 The folder gets ``timeseries.csv`` (all variants, long format with a ``variant`` column),
 ``summary.json`` (``{"variants": {NAME: {...}}}``), ``case_resolved.toml`` and the figures
 (``pressure_stroke.png`` like seed 001 Fig. 10, ``friction_stroke.png`` like Figs. 12/13,
-``friction_velocity.png``, ``timeseries_<variant>.png``).
+``friction_velocity.png``, ``timeseries_<variant>.png``; with seal heating also
+``heating_<variant>.png`` and ``strokes_<variant>.csv``, the drift stroke by stroke).
 """
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ from sealsim.output import ResultFolder, run_variants
 from sealsim.pneumatic.case import PneumaticCase, build_seals, load_pneumatic_case_file
 from sealsim.pneumatic.results import TIMESERIES_COLUMNS, PneumaticResult
 from sealsim.pneumatic.simulation import simulate
-from sealsim.pneumatic.summary import DEFINITIONS, end_position_times, summarize
+from sealsim.pneumatic.summary import DEFINITIONS, end_position_times, per_stroke, summarize
 
 __all__ = ["DEFINITIONS", "end_position_times", "run_case_file", "run_cases", "summarize",
            "write_results"]
@@ -72,6 +73,7 @@ def write_results(folder: ResultFolder, results: dict[str, PneumaticResult],
     from sealsim.plotting.pneumatic import (
         friction_stroke_figure,
         friction_velocity_figure,
+        heating_figure,
         pressure_stroke_figure,
         timeseries_figure,
     )
@@ -99,6 +101,13 @@ def write_results(folder: ResultFolder, results: dict[str, PneumaticResult],
                                                                  periods))
     folder.savefig("friction_velocity.png", friction_velocity_figure(frames, title, periods))
     for name, r in results.items():
+        heated = r.case.thermal is not None and r.case.thermal.seal_heating
+        if heated and r.case.controller.mode == "cycle":
+            strokes = per_stroke(r.timeseries, r.case.cylinder.stroke, r.seal_columns)
+            folder.write_csv(f"strokes_{name}.csv", strokes, float_format="%.7g")
+            folder.savefig(f"heating_{name}.png", heating_figure(
+                r.timeseries, strokes, r.seal_columns,
+                f"{title} -- {name}" if title else name))
         folder.savefig(f"timeseries_{name}.png",
                        timeseries_figure(r.timeseries, r.seal_columns,
                                          f"{title} -- {name}" if title else name))

@@ -8,7 +8,8 @@ import numpy as np
 
 from sealsim.pneumatic.controller import command_schedule
 
-__all__ = ["DEFINITIONS", "END_TOLERANCE", "MOVING_SPEED", "end_position_times", "summarize"]
+__all__ = ["DEFINITIONS", "END_TOLERANCE", "MOVING_SPEED", "end_position_times", "per_stroke",
+           "summarize"]
 
 #: the end positions count as reached within this fraction of the stroke
 END_TOLERANCE = 0.01
@@ -141,3 +142,51 @@ def summarize(result) -> dict[str, Any]:
                          for k, v in result.stats.items()}
     summary["notes"] = list(result.notes)
     return summary
+
+
+def per_stroke(frame, stroke: float, seal_columns):
+    """One row per valve command (stroke) of a cycle run: start time [s], direction (+1
+    extend, −1 retract), the time to the end position [s] (:func:`end_position_times`; NaN if
+    not reached), the mean |friction| while moving [N] and the seal temperatures at the end of
+    the stroke [°C] (with seal heating) -- how a long duty cycle drifts.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> t = np.linspace(0.0, 2.0, 201)
+    >>> x = np.clip(np.where(t < 1.0, 0.2 * t, 0.1 - 0.2 * (t - 1.0)), 0.0, 0.1)
+    >>> f = pd.DataFrame({"time_s": t, "x_m": x, "v_m_s": np.gradient(x, t),
+    ...                   "valve_command": np.where(t < 1.0, 1.0, -1.0),
+    ...                   "F_friction_N": np.where(t < 1.0, 20.0, -18.0)})
+    >>> per_stroke(f, 0.1, [])[["direction", "stroke_time_s", "mean_friction_N"]]
+       direction  stroke_time_s  mean_friction_N
+    0          1          0.495             20.0
+    1         -1          0.495             18.0
+    """
+    import pandas as pd
+
+    t = frame["time_s"].to_numpy()
+    x = frame["x_m"].to_numpy()
+    moving = np.abs(frame["v_m_s"].to_numpy()) > MOVING_SPEED
+    friction = np.abs(frame["F_friction_N"].to_numpy())
+    command = frame["valve_command"].to_numpy()
+    starts = np.flatnonzero(np.r_[True, command[1:] != command[:-1]])
+    rows = []
+    for k, i in enumerate(starts):
+        j = starts[k + 1] if k + 1 < len(starts) else len(t)
+        direction = int(np.sign(command[i]))
+        if direction == 0:
+            continue
+        window = [(float(t[i]), float(t[j]) if j < len(t) else np.inf)]
+        times = end_position_times(t, x, stroke, window,
+                                   "extend" if direction > 0 else "retract")
+        sel = slice(i, j)
+        row = {"start_s": float(t[i]), "direction": direction,
+               "stroke_time_s": times[0] if times else np.nan,
+               "mean_friction_N": float(np.mean(friction[sel][moving[sel]]))
+               if moving[sel].any() else np.nan}
+        for name in seal_columns:
+            if f"T_{name}_C" in frame:
+                row[f"T_{name}_C"] = float(frame[f"T_{name}_C"].iloc[j - 1])
+        rows.append(row)
+    return pd.DataFrame(rows)
