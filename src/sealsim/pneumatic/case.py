@@ -64,7 +64,7 @@ from pydantic import Field, model_validator
 from sealsim.cases import CaseModel, Q, expand_variants, load_toml
 from sealsim.errors import InputError
 from sealsim.friction import make_law
-from sealsim.friction.bench import profile_type
+from sealsim.friction.profiles import profile_type
 from sealsim.friction.case import LawParameters
 from sealsim.pneumatic.chambers import DEFAULT_HEAT_TRANSFER_COEFFICIENT
 from sealsim.pneumatic.contact_maps import (

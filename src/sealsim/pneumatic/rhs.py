@@ -140,7 +140,7 @@ def profile_point(t, kind, profile):
     """Prescribed position x(t) [m] and velocity dx/dt [m/s] of the test-rig profile.
 
     kind 1 constant (level), 2 harmonic (mean, amplitude, ω, phase), 3 piecewise linear
-    (n, times..., values...): the profiles of :func:`sealsim.friction.bench.profile_type`."""
+    (n, times..., values...): the profiles of :func:`sealsim.friction.profiles.profile_type`."""
     if kind == 1:
         return profile[0], 0.0
     if kind == 2:
