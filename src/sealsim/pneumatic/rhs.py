@@ -450,10 +450,19 @@ def evaluate_column(t, y, col, mode, tables, dy, diag, full):
 
 
 @njit(cache=True)
+def _plain(y):
+    """(0, True) as run-time values: numba compiles a function once per argument *type*, and a
+    literal 0 or True is a type of its own; calling :func:`evaluate_column` everywhere with
+    plain int64 and bool arguments compiles it once instead of four times."""
+    return y.shape[0] * 0, y.shape[0] >= 0
+
+
+@njit(cache=True)
 def derivatives(t, y, mode, tables, dy, diag):
     """dy/dt at (t, y) for a state vector y of shape (n,) into dy (shape (n,))."""
-    evaluate_column(t, y.reshape(y.shape[0], 1), 0, mode, tables, dy.reshape(dy.shape[0], 1),
-                    diag, False)
+    zero, full = _plain(y)
+    evaluate_column(t, y.reshape(y.shape[0], 1), zero, mode + zero, tables,
+                    dy.reshape(dy.shape[0], 1), diag, not full)
 
 
 @njit(cache=True)
@@ -479,8 +488,9 @@ def jacobian(t, y, mode, tables, scale, work_y, work_dy, f0, diag, jac):
 def evaluate_many(ts, ys, modes, tables, dys, diag):
     """dy/dt and all diagnostics for every column of ys (shape (n, k)) at the times ts (k,) in
     the modes ``modes`` (k,)."""
+    full = ys.shape[0] >= 0           # True, as a run-time value (see _plain)
     for col in range(ys.shape[1]):
-        evaluate_column(ts[col], ys, col, modes[col], tables, dys, diag, True)
+        evaluate_column(ts[col], ys, col, modes[col], tables, dys, diag, full)
 
 
 @njit(cache=True)
@@ -491,8 +501,9 @@ def stick_margin(t, y, tables, work_y, dy, diag):
     for i in range(y.shape[0]):
         work_y[i] = y[i]
     work_y[1] = 0.0
-    evaluate_column(t, work_y.reshape(work_y.shape[0], 1), 0, STICK, tables,
-                    dy.reshape(dy.shape[0], 1), diag, True)
+    zero, full = _plain(y)
+    evaluate_column(t, work_y.reshape(work_y.shape[0], 1), zero, STICK + zero, tables,
+                    dy.reshape(dy.shape[0], 1), diag, full)
     return diag[D_HOLD, 0], diag[D_BRK, 0]
 
 
