@@ -1,6 +1,6 @@
 """Friction test benches: drive a law and record what a test rig would measure.
 
-Three benches (seed 001 Fig. 11; Canudas de Wit et al. 1995 §4):
+Three benches (Heipl & Murrenhoff Fig. 11; Canudas de Wit et al. 1995 §4):
 
 * **prescribed velocity** v(t) -- the contact slides at a given speed (``simulate_velocity``);
 * **prescribed displacement** x(t) -- e.g. a crank drive (``simulate_displacement``);
@@ -72,7 +72,7 @@ def _grid(duration: float, time_step: float) -> np.ndarray:
 def simulate_displacement(law: FrictionLaw, position, duration: float, time_step: float,
                           inputs: ContactInputs = NO_INPUTS, initial_state=None,
                           _velocity_profile=None) -> BenchResult:
-    """Prescribed displacement x(t) (e.g. a crank drive, seed 001 Fig. 11).
+    """Prescribed displacement x(t) (e.g. a crank drive, Heipl & Murrenhoff Fig. 11).
 
     Parameters
     ----------

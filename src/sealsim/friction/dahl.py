@@ -1,6 +1,6 @@
 """Dahl friction law (Dahl 1968): rate-independent pre-sliding hysteresis.
 
-With the bristle deflection z [m] and F = σ0·z (pneumatic_friction.md §2.4)::
+With the bristle deflection z [m] and F = σ0·z (Dahl 1968; Canudas de Wit et al. 1995)::
 
     dz/dt = v·(1 − σ0·z·sgn(v)/F_C)^α          ⇔   dF/dx = σ0·(1 − F·sgn(v)/F_C)^α
 
@@ -17,7 +17,7 @@ u = 1 − σ0·z·sgn(v)/F_C, du/ds = −(σ0/F_C)·u^α has the exact solution
 References
 ----------
 .. [1] P. R. Dahl, "A solid friction model", Technical Report TOR-0158(3107-18)-1, The
-   Aerospace Corporation, El Segundo, 1968 (seed 001 reference 5).
+   Aerospace Corporation, El Segundo, 1968 (cited by Heipl & Murrenhoff).
 .. [2] C. Canudas de Wit et al., IEEE TAC 40(3), 1995 (Dahl as the special case of LuGre).
 """
 

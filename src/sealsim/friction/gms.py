@@ -11,7 +11,8 @@ s(v) is the Stribeck level g(v) = F_C + (F_S − F_C)·exp(−|v/v_s|^δ), α_i 
 fraction of it (Σ α_i = 1) and C [N/s] the attraction parameter.  In steady sliding every
 element slips at F_i = α_i·s(v)·sgn(v), so F_ss = g(v)·sgn(v) + σ2·v.  Elements that break
 away at different displacements give the non-local-memory pre-sliding hysteresis that Tran et
-al. measured on pneumatic cylinders (pneumatic_friction.md §4, E3).
+al. measured on pneumatic cylinders (Tran, Pham, Do & Ngo, Vietnam Journal of Mechanics: non-local
+memory of the pre-sliding hysteresis).
 
 **Choice made here.**  In the paper an element, once slipping, keeps slipping until the
 velocity reverses (a hidden mode).  Here the mode is a function of the state (stick while the
@@ -28,7 +29,7 @@ References
 ----------
 .. [1] F. Al-Bender, V. Lampaert, J. Swevers, "The generalized Maxwell-slip model: a novel model
    for friction simulation and compensation", IEEE TAC 50(11), 1883-1887, 2005.
-.. [2] jchristopherson/friction and FrictionModels.jl (pneumatic_friction.md §2.5 [V]).
+.. [2] jchristopherson/friction and FrictionModels.jl (open-source implementations).
 """
 
 from __future__ import annotations

@@ -16,34 +16,34 @@ the friction force F [N] opposes it (power dissipated F·v >= 0 when sliding);
 sgn(0) = 0 (:func:`sgn`).  Parameters that a kernel does not check (e.g. τ > 0) are validated
 by the parameter models of the law modules.
 
-Kernels and their equations
----------------------------
-==============================================  ===============================================
-kernel (arguments)                              returns
-==============================================  ===============================================
-``sgn(x)``                                      +1, −1 or 0
-``pressure_scaled_force(f0, f, pa, pb)``        F_pr + f·(p_A + p_B)              (seed 001 Eq. 3)
-``stribeck_scaled_levels(fc, fs, f, pa, pb)``   (F_C(p), F_S(p)), F_S(p) = F_S·F_C(p)/F_C
-``stribeck_level(v, fc, fs, vs, d)``            g = F_C + (F_S − F_C)·exp(−|v/v_S|^δ)
-``stribeck_level_derivative(v, fc, fs, vs, d)`` dg/dv
-``stribeck_force(v, fc, fs, vs, fv, d)``        g(v)·sgn(v) + F_v·v             (seed 001 Eq. 2)
-``coulomb_viscous_force(v, fc, fv)``            F_C·sgn(v) + F_v·v
-``lugre_bristle_rate(z, v, s0, g)``             dz/dt = v − σ0·|v|·z/g     (Canudas 1995 Eq. 1)
-``lugre_force(z, zdot, v, s0, s1, s2)``         σ0·z + σ1·ż + σ2·v          (Canudas 1995 Eq. 4)
-``lugre_affine(v, dt, s0, g)``                  (a, b): z(t+dt) = a·z + b, exact for constant v
-``dahl_bristle_rate(z, v, s0, fc, a)``          v·max(1 − σ0·z·sgn(v)/F_C, 0)^α   (Dahl 1968)
-``dahl_bristle_step(z, v, dt, s0, fc, a)``      z(t+dt), exact for constant v
-``gms_element_rate(z, v, k, frac, c, s)``       dz_i/dt of one GMS element (Al-Bender 2005)
-``gms_element_step(z, v, dt, k, frac, c, s)``   z_i(t+dt), exact for constant v
-``theta_load_factor(fn, fref, n)``              (F_N/F_ref)^n
-``theta_rate(th, v, tau, al, fn, fref, n)``     dΘ/dt = −Θ/τ + |v|/α·(F_ref/F_N)^n·(1 − Θ)
-``theta_transition_velocity(tau, al, fn, ...)`` v* = α/τ·(F_N/F_ref)^n
-``theta_steady(v, tau, al, fn, fref, n)``       Θ_ss = |v|/(|v| + v*)
-``theta_affine(v, dt, tau, al, fn, fref, n)``   (a, b): Θ(t+dt) = a·Θ + b, exact for constant v
-``theta_friction_level(th, fn, fa, fb)``        g_Θ = F_N·[f_a·(1 − Θ) + f_b·Θ]   (seed 001 Eq. 5)
-``theta_force(th, v, fn, b, fa, fb, gamma)``    g_Θ·sgn(v) + γ·b·v                (seed 001 Eq. 5)
-``walther_viscosity_ratio(t, tref, wa, wb)``    ν(T)/ν(T_ref), ASTM D341 (Walther)
-==============================================  ===============================================
+Kernels and their equations (H&M: Heipl & Murrenhoff [1]_)
+------------------------------------------------------------
+=================================================  ===============================================
+kernel (arguments)                                 returns
+=================================================  ===============================================
+``sgn(x)``                                         +1, −1 or 0
+``pressure_scaled_force(f0, f, pa, pb)``           F_pr + f·(p_A + p_B)              (H&M Eq. 3)
+``stribeck_scaled_levels(fc, fs, f, pa, pb)``      (F_C(p), F_S(p)), F_S(p) = F_S·F_C(p)/F_C
+``stribeck_level(v, fc, fs, vs, d)``               g = F_C + (F_S − F_C)·exp(−|v/v_S|^δ)
+``stribeck_level_derivative(v, fc, fs, vs, d)``    dg/dv
+``stribeck_force(v, fc, fs, vs, fv, d)``           g(v)·sgn(v) + F_v·v             (H&M Eq. 2)
+``coulomb_viscous_force(v, fc, fv)``               F_C·sgn(v) + F_v·v
+``lugre_bristle_rate(z, v, s0, g)``                dz/dt = v − σ0·|v|·z/g     (Canudas 1995 Eq. 1)
+``lugre_force(z, zdot, v, s0, s1, s2)``            σ0·z + σ1·ż + σ2·v          (Canudas 1995 Eq. 4)
+``lugre_affine(v, dt, s0, g)``                     (a, b): z(t+dt) = a·z + b, exact for constant v
+``dahl_bristle_rate(z, v, s0, fc, a)``             v·max(1 − σ0·z·sgn(v)/F_C, 0)^α   (Dahl 1968)
+``dahl_bristle_step(z, v, dt, s0, fc, a)``         z(t+dt), exact for constant v
+``gms_element_rate(z, v, k, frac, c, s)``          dz_i/dt of one GMS element (Al-Bender 2005)
+``gms_element_step(z, v, dt, k, frac, c, s)``      z_i(t+dt), exact for constant v
+``theta_load_factor(fn, fref, n)``                 (F_N/F_ref)^n
+``theta_rate(th, v, tau, al, fn, fref, n)``        dΘ/dt = −Θ/τ + |v|/α·(F_ref/F_N)^n·(1 − Θ)
+``theta_transition_velocity(tau, al, fn, ...)``    v* = α/τ·(F_N/F_ref)^n
+``theta_steady(v, tau, al, fn, fref, n)``          Θ_ss = |v|/(|v| + v*)
+``theta_affine(v, dt, tau, al, fn, fref, n)``      (a, b): Θ(t+dt) = a·Θ + b, exact for constant v
+``theta_friction_level(th, fn, fa, fb)``           g_Θ = F_N·[f_a·(1 − Θ) + f_b·Θ]   (H&M Eq. 5)
+``theta_force(th, v, fn, b, fa, fb, gamma)``       g_Θ·sgn(v) + γ·b·v                (H&M Eq. 5)
+``walther_viscosity_ratio(t, tref, wa, wb)``       ν(T)/ν(T_ref), ASTM D341 (Walther)
+=================================================  ===============================================
 
 References
 ----------
@@ -84,7 +84,7 @@ def sgn(x):
 
 
 # --------------------------------------------------------------------------------------------
-# Coulomb, Stribeck (seed 001 Eq. 2/3)
+# Coulomb, Stribeck (Heipl & Murrenhoff Eq. 2/3)
 # --------------------------------------------------------------------------------------------
 @kernel
 def pressure_scaled_force(f0, f, pa, pb):
@@ -231,7 +231,7 @@ def gms_element_step(z, v, dt, k, frac, c, s):
 
 
 # --------------------------------------------------------------------------------------------
-# Θ rate-and-state law (seed 001 Eq. 4/5 as reconstructed in sealsim.friction.theta)
+# Θ rate-and-state law (Heipl & Murrenhoff Eq. 4/5 as reconstructed in sealsim.friction.theta)
 # --------------------------------------------------------------------------------------------
 @kernel
 def theta_load_factor(fn, fref, n):

@@ -1,20 +1,20 @@
 """Static friction laws: Coulomb + viscous, and Stribeck with stiction and pressure scaling.
 
-These are the "state of the art" laws of system-simulation tools that seed 001 starts from
-(Heipl & Murrenhoff, Eq. 2 and 3).  They have no internal state: the force is a function of the
+These are the "state of the art" laws of system-simulation tools that Heipl & Murrenhoff start
+from (their Eq. 2 and 3).  They have no internal state: the force is a function of the
 velocity (and of the chamber pressures), with true sticking at v = 0 -- at rest the friction
-force balances the applied force up to the break-away level (seed 001 Eq. 2, second and third
-line).  That set-valued part is resolved by :mod:`sealsim.friction.hybrid`.
+force balances the applied force up to the break-away level (Heipl & Murrenhoff Eq. 2, second and
+third line).  That set-valued part is resolved by :mod:`sealsim.friction.hybrid`.
 
 References
 ----------
 .. [1] O. Heipl, H. Murrenhoff, "Rate- and state-dependent friction model for elastomeric
-   seals" (seed 001), Eq. 2 (Stribeck curve with stiction) and Eq. 3 (linear pressure scaling).
+   seals", Eq. 2 (Stribeck curve with stiction) and Eq. 3 (linear pressure scaling).
 .. [2] B. Armstrong-Hélouvry, P. Dupont, C. Canudas de Wit, "A survey of models, analysis tools
    and compensation methods for the control of machines with friction", Automatica 30(7),
    1083-1138, 1994 (Stribeck exponent δ).
 .. [3] MathWorks Simscape "Cylinder Friction": F_C = F_pr + f_cfr·(p_A + p_B) with a constant
-   break-away ratio K_brk = F_S/F_C (pneumatic_friction.md §2.1 [V]).
+   break-away ratio K_brk = F_S/F_C (MathWorks documentation).
 """
 
 from __future__ import annotations
@@ -58,7 +58,7 @@ __all__ = [
 # --------------------------------------------------------------------------------------------
 def pressure_scaled_force(force_at_zero_pressure, pressure_coefficient, pressure_a=0.0,
                           pressure_b=0.0):
-    """Friction level scaled linearly with the chamber pressures (seed 001 Eq. 3).
+    """Friction level scaled linearly with the chamber pressures (Heipl & Murrenhoff Eq. 3).
 
     .. math:: F_C = F_{pr} + f\\,(p_A + p_B)
 
@@ -78,7 +78,7 @@ def pressure_scaled_force(force_at_zero_pressure, pressure_coefficient, pressure
 
     References
     ----------
-    Seed 001 Eq. 3; Simscape Cylinder Friction (pneumatic_friction.md §2.1 [V]).
+    Heipl & Murrenhoff Eq. 3; Simscape Cylinder Friction (MathWorks documentation).
 
     Examples
     --------
@@ -105,7 +105,8 @@ def stribeck_level(v, coulomb_force, static_force, stribeck_velocity, exponent=2
     stribeck_velocity : array_like
         Stribeck velocity v_S [m/s], > 0.
     exponent : array_like
-        Stribeck exponent δ [-]: 2 in LuGre (1995) and Armstrong (1994), 1 in seed 001 Eq. 2.
+        Stribeck exponent δ [-]: 2 in LuGre (1995) and Armstrong (1994), 1 in Heipl & Murrenhoff
+        Eq. 2.
 
     Returns
     -------
@@ -114,7 +115,7 @@ def stribeck_level(v, coulomb_force, static_force, stribeck_velocity, exponent=2
 
     References
     ----------
-    Seed 001 Eq. 2; Canudas de Wit et al. (1995) Eq. 3; Armstrong-Hélouvry et al. (1994).
+    Heipl & Murrenhoff Eq. 2; Canudas de Wit et al. (1995) Eq. 3; Armstrong-Hélouvry et al. (1994).
 
     Examples
     --------
@@ -144,7 +145,7 @@ def stribeck_level_derivative(v, coulomb_force, static_force, stribeck_velocity,
 
 def stribeck_force(v, coulomb_force, static_force, stribeck_velocity, viscous_coefficient=0.0,
                    exponent=2.0):
-    """Sliding friction force of the Stribeck law (seed 001 Eq. 2, first line).
+    """Sliding friction force of the Stribeck law (Heipl & Murrenhoff Eq. 2, first line).
 
     .. math:: F(v) = g(v)\\,\\operatorname{sgn}(v) + F_v\\,v
 
@@ -180,7 +181,8 @@ def stribeck_force(v, coulomb_force, static_force, stribeck_velocity, viscous_co
 
 def stribeck_scaled_levels(coulomb_force, static_force, pressure_coefficient, pressure_a=0.0,
                            pressure_b=0.0):
-    """Coulomb and static levels of the Stribeck law after pressure scaling (seed 001 Eq. 3).
+    """Coulomb and static levels of the Stribeck law after pressure scaling (Heipl & Murrenhoff Eq.
+    3).
 
     .. math:: F_C(p) = F_C + f\\,(p_A + p_B), \\qquad F_S(p) = F_S\\,F_C(p)/F_C
 
@@ -239,7 +241,7 @@ def coulomb_viscous_force(v, coulomb_force, viscous_coefficient=0.0):
 # Parameter models
 # --------------------------------------------------------------------------------------------
 class CoulombParameters(LawParameters):
-    """Coulomb + viscous friction with pressure scaling (seed 001 Eq. 3)."""
+    """Coulomb + viscous friction with pressure scaling (Heipl & Murrenhoff Eq. 3)."""
 
     law: Literal["coulomb"] = "coulomb"
     coulomb_force: Q("force", ge=0)
@@ -248,7 +250,7 @@ class CoulombParameters(LawParameters):
 
 
 class StribeckParameters(LawParameters):
-    """Stribeck curve with stiction and pressure scaling (seed 001 Eq. 2/3)."""
+    """Stribeck curve with stiction and pressure scaling (Heipl & Murrenhoff Eq. 2/3)."""
 
     law: Literal["stribeck"] = "stribeck"
     coulomb_force: Q("force", ge=0)
@@ -342,15 +344,15 @@ class CoulombViscous(_StaticLaw):
 
 
 class Stribeck(_StaticLaw):
-    """Stribeck curve with stiction and pressure scaling (seed 001 Eq. 2 and 3).
+    """Stribeck curve with stiction and pressure scaling (Heipl & Murrenhoff Eq. 2 and 3).
 
     Sliding (v ≠ 0)::
 
         F = [F_C + (F_S − F_C)·exp(−|v/v_S|^δ)]·sgn(v) + F_v·v
 
     At rest the friction force balances the applied force up to F_S (true sticking, resolved
-    by :mod:`sealsim.friction.hybrid`).  Pressure scaling (seed 001 Eq. 3): the Coulomb level
-    is ``F_C(p) = F_C + f·(p_A + p_B)`` and the static level keeps the break-away ratio,
+    by :mod:`sealsim.friction.hybrid`).  Pressure scaling (Heipl & Murrenhoff Eq. 3): the Coulomb
+    level is ``F_C(p) = F_C + f·(p_A + p_B)`` and the static level keeps the break-away ratio,
     ``F_S(p) = F_S·F_C(p)/F_C`` (as Simscape's Cylinder Friction, where K_brk = F_S/F_C is a
     constant).  With F_C = 0 the static level is shifted by the same amount instead.
 
@@ -359,7 +361,7 @@ class Stribeck(_StaticLaw):
     params : StribeckParameters, optional
         Validated parameters, or keyword arguments (SI floats): ``coulomb_force`` F_C [N],
         ``static_force`` F_S [N], ``stribeck_velocity`` v_S [m/s], ``exponent`` δ [-]
-        (default 1, seed 001 Eq. 2), ``viscous_coefficient`` F_v [N·s/m],
+        (default 1, Heipl & Murrenhoff Eq. 2), ``viscous_coefficient`` F_v [N·s/m],
         ``pressure_coefficient`` f [N/Pa].
 
     Examples

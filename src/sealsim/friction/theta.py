@@ -1,4 +1,4 @@
-"""The Θ rate-and-state friction law of seed 001 (Heipl & Murrenhoff, Carlson–Batista type).
+"""The Θ rate-and-state friction law of Heipl & Murrenhoff (Carlson–Batista type).
 
 A lubrication state Θ ∈ [0, 1] per contact moves between dry/boundary friction (Θ = 0) and
 full hydrodynamic friction (Θ = 1)::
@@ -7,7 +7,7 @@ full hydrodynamic friction (Θ = 1)::
     F     = F_N·[f_a·(1 − Θ) + f_b·Θ]·sgn(v) + γ·b·v                    (seed Eq. 5, [R])
 
 The seed's equations are only partly legible; this is the reconstruction of
-pneumatic_friction.md §1.3 with the following choices (each marked [R], to be checked against
+sealsim's reconstruction with the following choices (each marked [R], to be checked against
 the original paper):
 
 * **State term −Θ/τ** ("melting of the film defined by a time constant"): at rest the film is
@@ -58,13 +58,13 @@ with A, B through the base-oil viscosities at 40 and 100 °C of the grease's dat
 than an Arrhenius law: through 30 and 100 °C it predicts the measured 60 °C viscosity of the
 machine oils of Stachowiak & Batchelor (Engineering Tribology, Table 2.3) within about 2 %, an
 Arrhenius law only within 10-20 % (a test checks this).  No public source gives the temperature
-dependence of f_a, f_b, τ or α of a pneumatic seal (seed 001 Fig. 3 shows only the net effect),
-so they are constants; the temperature also acts through F_N and b of the contact maps.
+dependence of f_a, f_b, τ or α of a pneumatic seal (Heipl & Murrenhoff Fig. 3 shows only the net
+effect), so they are constants; the temperature also acts through F_N and b of the contact maps.
 
 References
 ----------
 .. [1] O. Heipl, H. Murrenhoff, "Rate- and state-dependent friction model for elastomeric
-   seals" (seed 001), Eq. 4 and 5, Fig. 6.
+   seals", Eq. 4 and 5, Fig. 6.
 .. [2] J. M. Carlson, A. A. Batista, "Constitutive relation for the friction between lubricated
    surfaces", Phys. Rev. E 53, 4153, 1996 (model structure [M]).
 .. [3] H. Yanada, Y. Sekikawa, "Modeling of dynamic behaviors of friction", Mechatronics 18,
@@ -411,7 +411,8 @@ def theta_viscous_coefficient(temperature, gamma, reference_temperature, walther
 # Parameters and law object
 # --------------------------------------------------------------------------------------------
 class ThetaParameters(LawParameters):
-    """Parameters of the Θ law (seed 001 Eq. 4/5 as reconstructed, see module docstring)."""
+    """Parameters of the Θ law (Heipl & Murrenhoff Eq. 4/5 as reconstructed, see module
+    docstring)."""
 
     law: Literal["theta"] = "theta"
     tau: Q("time", gt=0)
@@ -449,7 +450,7 @@ class ThetaParameters(LawParameters):
 
 
 class Theta(FrictionLaw):
-    """The Θ rate-and-state law of seed 001 (see the module docstring for the equations).
+    """The Θ rate-and-state law of Heipl & Murrenhoff (see the module docstring for the equations).
 
     States: ``("theta",)``, or ``("theta", "z")`` with bristles (``bristle_stiffness``).
     Inputs: ``normal_force`` F_N [N] (> 0) and ``contact_width`` b [m] (>= 0).

@@ -1,6 +1,6 @@
-"""Pneumatic cylinder system simulation coupled with seal friction and contact maps (seed 001).
+"""Pneumatic cylinder simulation coupled with seal friction and contact maps (Heipl & Murrenhoff).
 
-Seed 001 (Heipl & Murrenhoff) couples three models: a 1-D system simulation of a pneumatic
+Heipl & Murrenhoff couple three models: a 1-D system simulation of a pneumatic
 drive (valve, cylinder chambers, piston), a dynamic friction law per seal (the Θ rate-and-state
 law) and characteristic diagrams F_N, b of each seal from FE.  This package is the system side:
 

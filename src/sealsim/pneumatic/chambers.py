@@ -10,7 +10,7 @@ U = m·c_v·T** (first law for an open system, Richer & Hurmuzlu 2000 [1]_)::
 
 Flows entering carry the enthalpy of their upstream node (c_p·T_supply, or c_p·T_ambient when
 air is sucked back from the exhaust); flows leaving carry the chamber's.  The same equations in
-pressure and temperature (the form of pneumatic_friction.md §3.2 b, used in the literature) are
+pressure and temperature (the form used in the literature, e.g. Richer & Hurmuzlu 2000) are
 :func:`pressure_rate` and :func:`temperature_rate`.
 
 Why (m, U): mass and energy are then *linear* in the states, so a closed chamber conserves its
@@ -260,7 +260,7 @@ def chamber_energy_rate(enthalpy_in, enthalpy_out, pressure, volume_rate, heat_f
 
 def pressure_rate(pressure, volume, volume_rate, inflow, inflow_temperature, outflow,
                   temperature, heat_flow=0.0):
-    """dp/dt of a chamber (energy equation in pressure form, pneumatic_friction.md §3.2 b).
+    """dp/dt of a chamber (energy equation in pressure form, Richer & Hurmuzlu 2000).
 
     .. math:: \\dot p = -\\gamma p \\frac{\\dot V}{V}
               + \\frac{\\gamma R}{V}(T_{in} G_{in} - T G_{out})
@@ -289,7 +289,7 @@ def pressure_rate(pressure, volume, volume_rate, inflow, inflow_temperature, out
     References
     ----------
     Richer & Hurmuzlu (2000); a public Julia pneumatic cylinder script after Carneiro & Almeida
-    (pneumatic_friction.md §3.2 b).
+    (Carneiro & de Almeida 2006 also write it so).
 
     Examples
     --------
@@ -306,7 +306,7 @@ def pressure_rate(pressure, volume, volume_rate, inflow, inflow_temperature, out
 
 def temperature_rate(pressure, volume, volume_rate, inflow, inflow_temperature, outflow,
                      temperature, heat_flow=0.0):
-    """dT/dt of a chamber (energy equation in temperature form, pneumatic_friction.md §3.2 b).
+    """dT/dt of a chamber (energy equation in temperature form, Richer & Hurmuzlu 2000).
 
     .. math:: \\dot T = (1-\\gamma) T \\frac{\\dot V}{V}
               + \\frac{R T}{p V}\\left[G_{in}(\\gamma T_{in} - T) - (\\gamma - 1) T G_{out}\\right]

@@ -1,19 +1,18 @@
 r"""The coupled model: cylinder + chambers + valve + controller + seal friction, one stiff ODE.
 
-States (per column; the right-hand side is vectorised over columns so that output samples and
-the finite-difference Jacobian are evaluated in one call)::
+States::
 
     y = [x, v, m1, m2, U1, U2, z_seal1..., z_sealN, (T_seal1..., T_tube, T_rod), bookkeeping...]
 
 x, v: piston position and velocity (:mod:`.cylinder`); m_i, U_i: mass and internal energy of the
 air in chamber i (:mod:`.chambers`); z: the friction states of each seal's law (Θ, bristles,
-...).  Each evaluation computes, in this order: chamber volumes, pressures and temperatures; the
-spool position of the valve (:class:`.valve.SpoolMotion`) and the ISO 6358 flows of the paths
-P→A, A→R, P→B, B→R with meter-out throttles and end cushioning in series; wall heat; the
-pressure difference across every seal and F_N, b from its contact map; the friction laws; the
-piston force balance.
+...); with seal heating the seal, tube and rod temperatures.  Each evaluation computes, in this
+order: chamber volumes, pressures and temperatures; the spool position of the valve
+(:class:`.valve.SpoolMotion`) and the ISO 6358 flows of the paths P→A, A→R, P→B, B→R with meter-out
+throttles and end cushioning in series; wall heat; the pressure difference across every seal and
+F_N, b from its contact map; the friction laws; the piston force balance.
 
-**Integration.**  scipy ``solve_ivp`` with a stiff method (LSODA by default, BDF or Radau),
+**Integration.**  A stiff method (LSODA by default, BDF or Radau through scipy),
 restarted at every valve switch (the spool motion has a kink there) and at every stick/slip
 transition.  End stops are stiff spring–damper contacts (no velocity resets).
 
@@ -32,7 +31,7 @@ resolve_stick`:
   -- then v ≡ 0, x fixed, and the sticking seals carry F_req shared in proportion to their
   break-away forces: no creep; otherwise it slips in the direction of F_req;
 * *stick* ends when |F_req| reaches Σ F_brk (event), e.g. when the valve has switched and the
-  pressures have built up: the break-away of seed 001.
+  pressures have built up: the break-away of Heipl & Murrenhoff.
 
 **Prescribed position** (test rig): x(t), v(t) follow the profile, the chambers and the
 friction states are integrated, and the friction force is what the rig's sensor reads.

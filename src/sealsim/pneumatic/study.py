@@ -3,7 +3,7 @@
 ``run_case_file`` is what ``sealsim pneumatic run`` calls; it can be used from Python as well.
 The folder gets ``timeseries.csv`` (all variants, long format with a ``variant`` column),
 ``summary.json`` (``{"variants": {NAME: {...}}}``), ``case_resolved.toml`` and the figures
-(``pressure_stroke.png`` like seed 001 Fig. 10, ``friction_stroke.png`` like Figs. 12/13,
+(``pressure_stroke.png`` like Heipl & Murrenhoff Fig. 10, ``friction_stroke.png`` like Figs. 12/13,
 ``friction_velocity.png``, ``timeseries_<variant>.png``; with seal heating also
 ``heating_<variant>.png`` and ``strokes_<variant>.csv``, the drift stroke by stroke).
 """
