@@ -12,6 +12,7 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 
+from sealsim.pneumatic.results import column_name
 from sealsim.plotting import new_figure
 
 __all__ = ["friction_stroke_figure", "friction_velocity_figure", "heating_figure",
@@ -124,7 +125,8 @@ def friction_velocity_figure(frames: dict[str, pd.DataFrame], title: str = "",
 def timeseries_figure(frame: pd.DataFrame, seal_names: list[str], title: str = ""):
     """Everything of one variant against time: stroke and velocity, pressures, air
     temperatures, friction per seal, normal force per seal, Θ per seal and (seal heating) the
-    seal, tube and rod temperatures.  ``seal_names`` are the seals' column names."""
+    seal, tube and rod temperatures.  ``seal_names``: the seals' names (or column names)."""
+    seal_names = [column_name(n) for n in seal_names]
     thetas = [n for n in seal_names if f"theta_{n}" in frame]
     loads = [n for n in seal_names if f"F_N_{n}_N" in frame]
     heated = [n for n in seal_names if f"T_{n}_C" in frame]
@@ -183,6 +185,7 @@ def heating_figure(frame: pd.DataFrame, strokes: pd.DataFrame, seal_names: list[
     """A long duty cycle with seal heating: temperatures of the seals, the tube and the rod
     against time; the mean friction and the stroke time of every stroke (``strokes``:
     :func:`sealsim.pneumatic.summary.per_stroke`), extending and retracting apart."""
+    seal_names = [column_name(n) for n in seal_names]
     fig, axes = new_figure(1, 3, width=8.0, height=8.0, sharex=True)
     t = frame["time_s"].to_numpy()
     ax = axes[0]

@@ -67,8 +67,8 @@ THERMAL_BOOKKEEPING = ("friction_heat", "heat_to_air", "heat_to_ambient")
 (C_DEAD1, C_DEAD2, C_A1, C_A2, C_AROD, C_STROKE, C_BORE, C_PS, C_PA, C_TS, C_TA, C_C, C_B,
  C_M, C_BETA, C_CENTRE, C_H, C_TW, C_F0, C_KL, C_X0L, C_CL, C_INCL, C_MASS, C_KS, C_CS, C_DS,
  C_THR1, C_THR2, C_CU1_L, C_CU1_C, C_CU1_E, C_CU2_L, C_CU2_C, C_CU2_E,
- C_NDYN, C_BOOK, C_HEAT, C_TOFF, C_TUBE_CAP, C_TUBE_G, C_ROD_CAP, C_ROD_G, C_TAMB,
- C_SPOOL_TAU, C_SPOOL_INIT, C_PROFILE_KIND, C_NCONST) = range(48)
+ C_BOOK, C_HEAT, C_TOFF, C_TUBE_CAP, C_TUBE_G, C_ROD_CAP, C_ROD_G, C_TAMB,
+ C_SPOOL_TAU, C_SPOOL_INIT, C_PROFILE_KIND, C_NCONST) = range(47)
 
 # -- seal tables ----------------------------------------------------------------------------
 #: law codes
@@ -76,8 +76,7 @@ COULOMB, STRIBECK, LUGRE, DAHL, GMS, THETA = range(6)
 LAW_CODES = {"coulomb": COULOMB, "stribeck": STRIBECK, "lugre": LUGRE, "dahl": DAHL,
              "gms": GMS, "theta": THETA}
 #: columns of seal_int
-(SI_LAW, SI_LOC, SI_OFF, SI_NZ, SI_STICKY, SI_MAP, SI_HEATED, SI_COUNTER, SI_GROOVE,
- SI_NCOLS) = range(10)
+(SI_LAW, SI_LOC, SI_OFF, SI_STICKY, SI_HEATED, SI_COUNTER, SI_GROOVE, SI_NCOLS) = range(8)
 #: columns of seal_therm: constant temperature [K], heat capacity [J/K], circumference π·D [m],
 #: contact width without a map [m], effusivity of the counterface, static contact coefficient
 #: [W/(m²·K)], conductance to the groove [W/K], to the air of chamber 1, chamber 2 and the

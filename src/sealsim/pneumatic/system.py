@@ -155,7 +155,6 @@ class PneumaticSystem:
             if cushion is not None:
                 c[base], c[base + 1], c[base + 2] = (cushion.length, cushion.conductance,
                                                      cushion.entry)
-        c[rhs.C_NDYN] = self.n_dynamic
         c[rhs.C_BOOK] = self.n_dynamic
         c[rhs.C_HEAT] = 1.0 if self.heating else 0.0
         c[rhs.C_TOFF] = self.temperature_offset
@@ -181,7 +180,6 @@ class PneumaticSystem:
             seal_int[i, rhs.SI_LAW] = rhs.LAW_CODES[seal.law.name]
             seal_int[i, rhs.SI_LOC] = seal.location_code
             seal_int[i, rhs.SI_OFF] = self.offsets[i]
-            seal_int[i, rhs.SI_NZ] = seal.n_states
             seal_int[i, rhs.SI_STICKY] = int(seal.has_stiction)
             seal_int[i, rhs.SI_HEATED] = int(self.heating)
             seal_int[i, rhs.SI_COUNTER] = rhs.NODE_TUBE if seal.location == "piston" \
