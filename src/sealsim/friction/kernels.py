@@ -448,14 +448,18 @@ def _loop_walther_viscosity_ratio(t, tref, wa, wb, out):
 
 
 def _flat(value, shape):
-    """``value`` as a writable, contiguous 1-D float array of length 1 or prod(shape)."""
+    """``value`` as a contiguous 1-D float array of length 1 or prod(shape).
+
+    Small arrays are made writable copies (one compiled variant of each loop); large read-only
+    arrays (e.g. checked contact inputs) are passed as they are -- a second compiled variant
+    instead of copying megabytes on every call."""
     a = np.asarray(value, dtype=float)
     if a.size == 1:
         return np.array(a.reshape(1), dtype=float)
     if a.shape != shape:
         a = np.broadcast_to(a, shape)
     a = np.ascontiguousarray(a).reshape(-1)
-    return a if a.flags.writeable else a.copy()
+    return a if a.flags.writeable or a.size > 4096 else a.copy()
 
 
 def apply(loop, *args, outputs: int = 1):
