@@ -216,9 +216,10 @@ def _solve_scipy(system, t0, t1, y0, mode, method, rtol, atol, max_step):
     return seg, float(sol.t[-1]), sol.y[:, -1].copy(), None
 
 
-def integrate(system, progress=None) -> list[Segment]:
+def integrate(system, progress=None, on_segment=None) -> list[Segment]:
     """Integrate a :class:`.system.PneumaticSystem` segment by segment (valve switches,
-    stick/slip transitions); ``progress(t, end)`` after every segment."""
+    stick/slip transitions); ``on_segment(segment)`` and ``progress(t, end)`` after every
+    segment."""
     case = system.case
     end = system.duration
     rtol = case.solver.rtol
@@ -256,6 +257,8 @@ def integrate(system, progress=None) -> list[Segment]:
                 f"{_where(system, float(t_fail), y_fail, mode)}: {message}; try a smaller "
                 "solver.max_step or a different solver.method")
         segments.append(seg)
+        if on_segment is not None:
+            on_segment(seg)
         y = seg.y1.copy()
         t = seg.t1
         if seg.status == 1:                      # stick/slip event

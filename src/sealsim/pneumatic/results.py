@@ -17,7 +17,7 @@ from sealsim.pneumatic import rhs
 from sealsim.pneumatic.integrate import segment_states
 from sealsim.pneumatic.valve import ANR_DENSITY
 
-__all__ = ["TIMESERIES_COLUMNS", "PneumaticResult", "column_name", "seal_columns"]
+__all__ = ["TIMESERIES_COLUMNS", "PneumaticResult", "Sampler", "column_name", "seal_columns"]
 
 #: leading columns of the time series (pressures are absolute)
 TIMESERIES_COLUMNS = ["time_s", "x_m", "v_m_s", "p1_bar_abs", "p2_bar_abs", "T1_C", "T2_C",
@@ -96,28 +96,50 @@ class PneumaticResult:
         return summarize(self)
 
 
-def sample(system, segments):
-    """The output time series: states from the dense output on the sample grid, everything
-    else recomputed there.  Returns (DataFrame, diagnostics dict)."""
-    case = system.case
-    end = system.duration
-    dt = case.output.sample_interval
-    grid = np.arange(0.0, end + 0.5 * dt, dt)
-    grid = np.minimum(grid[grid <= end * (1 + 1e-12)], end)    # the last sample at the end
-    times, states, modes = [], [], []
-    for j, seg in enumerate(segments):
-        last = j == len(segments) - 1
-        sel = (grid >= seg.t0) & ((grid <= seg.t1) if last else (grid < seg.t1))
-        ts = grid[sel]
+class Sampler:
+    """Collects the states on the output grid segment by segment while the integration runs,
+    so that the dense output of a segment can be dropped as soon as the next one starts (a long
+    duty cycle keeps hundreds of thousands of steps).  ``sampler(segment)`` after each segment,
+    :meth:`finish` at the end."""
+
+    def __init__(self, system):
+        dt = system.case.output.sample_interval
+        end = system.duration
+        grid = np.arange(0.0, end + 0.5 * dt, dt)
+        self.grid = np.minimum(grid[grid <= end * (1 + 1e-12)], end)   # last sample at the end
+        self.times, self.states, self.modes = [], [], []
+        self.pending = None
+
+    def __call__(self, segment) -> None:
+        if self.pending is not None:
+            self._take(self.pending, last=False)
+            self.pending.dense = None
+        self.pending = segment
+
+    def _take(self, seg, last: bool) -> None:
+        sel = (self.grid >= seg.t0) & ((self.grid <= seg.t1) if last else (self.grid < seg.t1))
+        ts = self.grid[sel]
         if ts.size == 0:
-            continue
+            return
         ys = segment_states(seg, ts)
         if seg.mode == rhs.STICK:
             ys[1] = 0.0
-        times.append(ts)
-        states.append(ys)
-        modes.append(np.full(ts.shape, seg.mode, dtype=np.int64))
-    ts, ys, modes = np.concatenate(times), np.hstack(states), np.concatenate(modes)
+        self.times.append(ts)
+        self.states.append(ys)
+        self.modes.append(np.full(ts.shape, seg.mode, dtype=np.int64))
+
+    def finish(self):
+        """(times, states, modes) of all samples."""
+        if self.pending is not None:
+            self._take(self.pending, last=True)
+            self.pending = None
+        return np.concatenate(self.times), np.hstack(self.states), np.concatenate(self.modes)
+
+
+def sample(system, sampler: Sampler):
+    """The output time series: the collected states, everything else recomputed there.
+    Returns (DataFrame, diagnostics dict)."""
+    ts, ys, modes = sampler.finish()
     diag = _diagnostics(system, ts, ys, modes)
     return _frame(system, diag), diag
 

@@ -129,9 +129,10 @@ def simulate(case, seals: list[Seal] | None = None, base_dir: str | Path = ".",
 def run(system: PneumaticSystem, progress=None) -> PneumaticResult:
     """Integrate an assembled :class:`PneumaticSystem` and sample its results."""
     wall0 = _time.perf_counter()
-    segments = integrate(system, progress)
+    sampler = _results.Sampler(system)
+    segments = integrate(system, progress, sampler)
     wall = _time.perf_counter() - wall0
-    frame, diag = _results.sample(system, segments)
+    frame, diag = _results.sample(system, sampler)
     balances = _results.balances(system, segments)
     seals = system.seals
     notes = ([f"seal {s.name!r}: {n}" for s in seals for n in s.notes] + system.thermal_notes
