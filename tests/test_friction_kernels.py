@@ -65,7 +65,8 @@ def test_lugre_dahl_gms_match_numpy_reference():
     kk, frac = np.full((4, 1), 2.5e4), np.array([[0.1], [0.2], [0.3], [0.4]])
     zz = RNG.uniform(-2e-5, 2e-5, (4, N))
     s = old.stribeck_level(V, 1.0, 1.5, 1e-3)
-    close(gms_element_rate(zz, V, kk, frac, 20.0, s), old.gms_element_rate(zz, V, kk, frac, 20.0, s))
+    close(gms_element_rate(zz, V, kk, frac, 20.0, s),
+          old.gms_element_rate(zz, V, kk, frac, 20.0, s))
     close(gms_element_step(zz, V, 1e-3, kk, frac, 20.0, s),
           old.gms_element_step(zz, V, 1e-3, kk, frac, 20.0, s))
     for law, ref_cls in ((LuGre.from_parameter_set("canudas1995", warn=False), old.LuGre),

@@ -72,27 +72,29 @@ SCRIPT = textwrap.dedent(r'''
         return path
 
     runs = {
-        "theta": case("cylinder_32.toml", 1.3),
-        "theta_bristles": case("cylinder_32.toml", 0.8, {0: {**THETA, "bristle_stiffness": "2e5 N/m",
-                                                            "bristle_damping": "400 N*s/m"}}),
-        "stribeck_5_3": case("cylinder_32.toml", 1.3, {0: {"law": "stribeck", "parameter_set":
+        "theta": case("cylinder_32.toml", 1.1),
+        "theta_bristles": case("cylinder_32.toml", 0.6, {0: {
+            **THETA, "bristle_stiffness": "2e5 N/m", "bristle_damping": "400 N*s/m"}}),
+        "stribeck_5_3": case("cylinder_32.toml", 1.0, {0: {"law": "stribeck", "parameter_set":
                                                            "pneumatic_demo"}},
                              {"valve": {"type": "5/3", "centre": "closed"},
-                              "controller": {"steps": [{"command": "extend", "duration": "0.2 s"},
-                                                       {"command": "centre", "duration": "0.3 s"},
-                                                       {"command": "retract", "duration": "0.5 s"}]}}),
-        "lugre_gms_dahl": case("cylinder_32.toml", 0.8, {0: LUGRE, 1: {"law": "gms", "parameter_set":
-                               "canudas1995", "stiffness": "1e5 N/m", "coulomb_force": "8 N",
-                               "static_force": "10 N", "stribeck_velocity": "0.01 m/s"},
+                              "controller": {"steps": [
+                                  {"command": "extend", "duration": "0.2 s"},
+                                  {"command": "centre", "duration": "0.3 s"},
+                                  {"command": "retract", "duration": "0.5 s"}]}}),
+        "lugre_gms_dahl": case("cylinder_32.toml", 0.12, {
+            0: LUGRE, 1: {"law": "gms", "parameter_set": "canudas1995", "stiffness": "1e5 N/m",
+                          "coulomb_force": "8 N", "static_force": "10 N",
+                          "stribeck_velocity": "0.01 m/s"},
                                2: {"law": "dahl", "sigma0": "1e5 N/m", "coulomb_force": "3 N"}}),
-        "rig": case("friction_rig.toml", 0.7),
+        "rig": case("friction_rig.toml", 0.5),
     }
     data = load_toml(f"{EX}/cylinder_32.toml")
     data = apply_overrides(data, data.pop("variants")["T25C"])
     data["seals"][0]["friction"] = dict(THETA)
     data["seals"][1]["friction"] = dict(THETA)
     data["seals"][1]["map"] = {"file": str(fe_map(sys.argv[3]))}
-    data["controller"]["duration"] = "0.8 s"
+    data["controller"]["duration"] = "0.5 s"
     runs["fe_map"] = load_pneumatic_cases(data)["base"]
     out = {}
     for label, c in runs.items():

@@ -423,11 +423,11 @@ class FEContactMap:
             fn, b, _ = hermite_grid_point(row, data, float(pressure_difference),
                                           float(temperature))
             return fn, b
-        p, t = np.broadcast_arrays(np.asarray(pressure_difference, dtype=float),
-                                   np.asarray(temperature, dtype=float))
+        p, t = (np.array(a, dtype=float) for a in np.broadcast_arrays(
+            np.asarray(pressure_difference, dtype=float), np.asarray(temperature, dtype=float)))
         fn, b = np.empty(p.shape), np.empty(p.shape)
-        _hermite_grid_many(row, data, np.ascontiguousarray(p).reshape(-1),
-                           np.ascontiguousarray(t).reshape(-1), fn.reshape(-1), b.reshape(-1))
+        _hermite_grid_many(row, data, p.reshape(-1), t.reshape(-1), fn.reshape(-1),
+                           b.reshape(-1))
         return fn, b
 
     def tables(self):
