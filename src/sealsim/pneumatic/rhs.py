@@ -172,11 +172,11 @@ def _seal_loads(i, dp, temp, map_int, map_data):
 
 
 @njit(cache=True)
-def _law_rates(law, par, z, off, vv, fn, b, pa, pb, temp, dy, col, write):
-    """Friction force, break-away force and (if ``write``) the state rates of one seal.
+def _law_rates(law, par, z, off, vv, fn, b, pa, pb, temp, dy, col):
+    """Friction force and break-away force of one seal; writes its state rates into dy.
 
     The laws are the kernels of :mod:`sealsim.friction.kernels`; the parameter layout of each
-    law is :func:`law_parameters`."""
+    law is :func:`sealsim.pneumatic.system.law_parameters`."""
     force = 0.0
     brk = 0.0
     if law == COULOMB:
@@ -191,12 +191,10 @@ def _law_rates(law, par, z, off, vv, fn, b, pa, pb, temp, dy, col, write):
         g = fk.stribeck_level(vv, par[3], par[4], par[5], par[6])
         zdot = fk.lugre_bristle_rate(z[off, col], vv, par[0], g)
         force = fk.lugre_force(z[off, col], zdot, vv, par[0], par[1], par[2])
-        if write:
-            dy[off, col] = zdot
+        dy[off, col] = zdot
     elif law == DAHL:
         force = par[0] * z[off, col]
-        if write:
-            dy[off, col] = fk.dahl_bristle_rate(z[off, col], vv, par[0], par[1], par[2])
+        dy[off, col] = fk.dahl_bristle_rate(z[off, col], vv, par[0], par[1], par[2])
     elif law == GMS:
         n = int(par[0])
         s = fk.stribeck_level(vv, par[3], par[4], par[5], par[6])
@@ -204,9 +202,8 @@ def _law_rates(law, par, z, off, vv, fn, b, pa, pb, temp, dy, col, write):
         for j in range(n):
             zj = z[off + j, col]
             total += par[7 + j] * zj
-            if write:
-                dy[off + j, col] = fk.gms_element_rate(zj, vv, par[7 + j], par[7 + n + j],
-                                                       par[1], s)
+            dy[off + j, col] = fk.gms_element_rate(zj, vv, par[7 + j], par[7 + n + j],
+                                                   par[1], s)
         force = total + par[2] * vv
     elif law == THETA:
         gamma = par[4]
@@ -215,12 +212,10 @@ def _law_rates(law, par, z, off, vv, fn, b, pa, pb, temp, dy, col, write):
         th = z[off, col]
         fn = max(fn, 1e-9)
         level = fk.theta_friction_level(th, fn, par[2], par[3])
-        if write:
-            dy[off, col] = fk.theta_rate(th, vv, par[0], par[1], fn, par[5], par[6])
+        dy[off, col] = fk.theta_rate(th, vv, par[0], par[1], fn, par[5], par[6])
         if par[7] > 0.0:                        # bristles
             zdot = fk.lugre_bristle_rate(z[off + 1, col], vv, par[7], level)
-            if write:
-                dy[off + 1, col] = zdot
+            dy[off + 1, col] = zdot
             force = par[7] * z[off + 1, col] + par[8] * zdot + gamma * b * vv
         else:
             force = fk.theta_force(th, vv, fn, b, par[2], par[3], gamma)
@@ -310,7 +305,7 @@ def evaluate_column(t, y, col, mode, tables, dy, diag, full):
             d = float(mode)
             vv = d * max(d * v, _TINY_SPEED)
         force, brk = _law_rates(law, law_par[i], y, seal_int[i, SI_OFF], vv, fn, b, pside_a,
-                                pside_b, temp, dy, col, True)
+                                pside_b, temp, dy, col)
         if sticky:
             sticky_any = True
             nsticky += 1
