@@ -7,15 +7,19 @@
 2. One vectorised evaluation of 1e6 contacts: derivatives + force (+ an exact step) of the Θ
    law with per-contact normal forces, and of LuGre; the slower of the two is reported.
 
-Targets: real-time factor >= 200 on one core, error <= 1 %, 1e6 contacts <= 0.1 s.
+Targets: real-time factor >= 200 on one core, error <= 1 %, 1e6 contacts <= 0.1 s.  The laws
+run through their compiled scalar kernels (sealsim.friction.kernels); the 1e6-contact figures are
+also measured for the frozen numpy implementation of before (tests/reference_v0) in the same run.
 The last line printed is one JSON object.
 """
 
 from __future__ import annotations
 
 import json
+import sys
 import time
 import warnings
+from pathlib import Path
 
 import numpy as np
 from pydantic import TypeAdapter
@@ -23,6 +27,9 @@ from scipy.integrate import solve_ivp
 
 from sealsim.friction import ContactInputs, LuGre, Theta
 from sealsim.friction.bench import profile_type, simulate_velocity
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
+from reference_v0 import friction_laws as reference  # noqa: E402
 
 DURATION = 10.0
 V = TypeAdapter(profile_type("velocity"))
@@ -108,10 +115,24 @@ def vectorised_case(n=1_000_000):
     def lugre_eval():
         return lugre.derivatives(zl, vl), lugre.force(zl, vl)
 
+    old_theta, old_lugre = reference.Theta(theta.params), reference.LuGre(lugre.params)
+
+    def theta_eval_old():
+        return old_theta.derivatives(z, v, inputs), old_theta.force(z, v, inputs)
+
+    def theta_step_old():
+        return old_theta.step(z, v, 1e-3, inputs)
+
+    def lugre_eval_old():
+        return old_lugre.derivatives(zl, vl), old_lugre.force(zl, vl)
+
     times = {name: best_of(fn)[0] for name, fn in
              [("theta_derivatives_force", theta_eval), ("theta_step", theta_step),
               ("lugre_derivatives_force", lugre_eval)]}
-    return times
+    baseline = {name: best_of(fn)[0] for name, fn in
+                [("theta_derivatives_force", theta_eval_old), ("theta_step", theta_step_old),
+                 ("lugre_derivatives_force", lugre_eval_old)]}
+    return times, baseline
 
 
 def mass_cases():
@@ -138,19 +159,21 @@ def main():
     mass_cases()
     lugre_rt, lugre_err, lugre_steps = lugre_case()
     theta_rt, theta_err, theta_steps = theta_case()
-    vec = vectorised_case()
+    vec, vec_old = vectorised_case()
     print(f"LuGre : {lugre_steps} steps of 1 ms, real-time factor {lugre_rt:,.0f}x, "
           f"max rel. force error {lugre_err:.2e}")
     print(f"Theta : {theta_steps} steps of 1 ms, real-time factor {theta_rt:,.0f}x, "
           f"max rel. force error {theta_err:.2e}")
     for name, t in vec.items():
-        print(f"1e6 contacts, {name}: {t * 1e3:.1f} ms")
+        print(f"1e6 contacts, {name}: {t * 1e3:.1f} ms (numpy implementation before: "
+              f"{vec_old[name] * 1e3:.1f} ms)")
     result = {
         "lugre_realtime_factor": round(lugre_rt, 1),
         "theta_realtime_factor": round(theta_rt, 1),
         "lugre_max_rel_error": float(f"{lugre_err:.3e}"),
         "theta_max_rel_error": float(f"{theta_err:.3e}"),
         "vectorised_1e6_s": float(f"{max(vec.values()):.4f}"),
+        "vectorised_1e6_baseline_s": float(f"{max(vec_old.values()):.4f}"),
     }
     print(json.dumps(result))
 

@@ -38,8 +38,8 @@ def measured_file(case_path: Path, out: Path, noise_bar=0.0, noise_mm=0.0, seed=
     ambient = case.air.ambient_pressure / 1e5
     table = np.column_stack([frame["time_s"], frame["x_m"] * 1e3 + rng.normal(0, noise_mm, n) if
                              noise_mm else frame["x_m"] * 1e3,
-                             frame["p1_bar"] - ambient + rng.normal(0, noise_bar, n),
-                             frame["p2_bar"] - ambient + rng.normal(0, noise_bar, n)])
+                             frame["p1_bar_abs"] - ambient + rng.normal(0, noise_bar, n),
+                             frame["p2_bar_abs"] - ambient + rng.normal(0, noise_bar, n)])
     np.savetxt(out, table, delimiter=",", header="t,x,p1,p2", comments="")
     return out
 

@@ -60,8 +60,8 @@ def test_closed_adiabatic_chambers():
     x = f["x_m"].to_numpy()
     v1 = case.cylinder.dead_volume_cap + a1 * x
     v2 = case.cylinder.dead_volume_rod + a2 * (case.cylinder.stroke - x)
-    for p, vol, temp in ((f["p1_bar"] * 1e5, v1, f["T1_C"] + 273.15),
-                         (f["p2_bar"] * 1e5, v2, f["T2_C"] + 273.15)):
+    for p, vol, temp in ((f["p1_bar_abs"] * 1e5, v1, f["T1_C"] + 273.15),
+                         (f["p2_bar_abs"] * 1e5, v2, f["T2_C"] + 273.15)):
         p = p.to_numpy()
         temp = temp.to_numpy()
         # mass conserved exactly: m = p·V/(R·T) from the states (m, U) -- round-off only
@@ -75,7 +75,7 @@ def test_closed_adiabatic_chambers():
         t_inv = temp * vol ** (GAMMA - 1.0)
         assert np.max(np.abs(t_inv / t_inv[0] - 1.0)) < 1e-6
     # the crank compressed chamber 2 by a factor 1.47 (0 → 50 mm): p2 rose to 1.71 bar
-    assert f["p2_bar"].max() == pytest.approx(1.01325 * (109.12 / 74.56) ** GAMMA, rel=1e-3)
+    assert f["p2_bar_abs"].max() == pytest.approx(1.01325 * (109.12 / 74.56) ** GAMMA, rel=1e-3)
     # balances: no flow at all; the air energy changes only by the work p·dV (< 0.1 %)
     b = result.balances
     assert b["supply_mass_kg"] == 0.0 and b["exhaust_mass_kg"] == 0.0
@@ -102,7 +102,7 @@ def test_closed_chambers_with_wall_heat_relax_to_the_wall():
     assert end["T1_C"] == pytest.approx(25.0, abs=0.01)
     assert end["T2_C"] == pytest.approx(25.0, abs=0.01)
     # ... and so do the pressures: back at x = 0 and 25 °C, both chambers are at 1 atm again
-    assert end["p1_bar"] == pytest.approx(1.01325, rel=1e-4)
+    assert end["p1_bar_abs"] == pytest.approx(1.01325, rel=1e-4)
     assert f["T2_C"].max() > 27.0 and f["T1_C"].min() < 23.0    # the stroke did heat / cool
     assert result.balances["wall_heat_J"] != 0.0
     assert result.balances["mass_balance_rel_error"] < 1e-12
@@ -147,3 +147,33 @@ def test_mass_energy_equations_match_the_pressure_temperature_form():
                 gas_mass(p, vol, temp) * AIR_GAS_CONSTANT / (GAMMA - 1.0))
             dt_ref = temperature_rate(p, vol, dvol, inflow, t_in, outflow, temp, q)
             assert dt_mu == pytest.approx(dt_ref, rel=1e-9, abs=1e-9 * temp)
+
+
+def test_default_wall_heat_gives_the_published_polytropic_exponent():
+    # Richer & Hurmuzlu (2000) describe the pressure change by piston motion as p·V^1.2 = const
+    # (from the chamber temperatures Al-Ibrahim & Otis 1992 measured in an actuating cylinder).
+    # The default h reproduces it for a closed chamber of the Ø32 example compressed 2:1 in
+    # 0.3 s (prescribed motion, 5/3 valve closed): 1.2 within 0.02 (the exponent moves by
+    # about 0.003 per W/(m²·K) here); adiabatic walls give 1.4.
+    from sealsim.pneumatic.chambers import polytropic_exponent
+
+    def exponent(h):
+        data = load_toml(EXAMPLES / "cylinder_32.toml")
+        data.pop("variants")
+        data["seals"] = []
+        data["valve"] = {**data["valve"], "type": "5/3", "centre": "closed"}
+        data["air"].pop("heat_transfer_coefficient")
+        if h is not None:
+            data["air"]["heat_transfer_coefficient"] = h
+        data["controller"] = {"mode": "position", "duration": "0.3 s", "command": "centre",
+                              "position": {"kind": "piecewise", "times": ["0 s", "0.3 s"],
+                                           "values": ["30 mm", "70 mm"]}}
+        case = validate_case(PneumaticCase, data)
+        f = simulate(case).timeseries
+        a2 = case.cylinder.stroke - f["x_m"].to_numpy()
+        v2 = case.cylinder.dead_volume_rod + (np.pi / 4 * (0.032 ** 2 - 0.012 ** 2)) * a2
+        p2 = f["p2_bar_abs"].to_numpy()
+        return float(polytropic_exponent(p2[0], p2[-1], v2[0], v2[-1]))
+
+    assert exponent(None) == pytest.approx(1.2, abs=0.02)
+    assert exponent("0 W/(m**2*K)") == pytest.approx(1.4, abs=1e-3)

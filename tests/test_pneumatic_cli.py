@@ -15,6 +15,7 @@ from typer.testing import CliRunner
 
 from sealsim.cases import expand_variants, load_toml
 from sealsim.cli.pneumatic import pneumatic_app
+from sealsim.pneumatic.results import column_name
 
 EXAMPLE_DIR = Path(__file__).resolve().parents[1] / "examples" / "pneumatic"
 #: pneumatic cases (rod_seal_12.toml is the structure case cylinder_32_fe.toml builds its map from)
@@ -68,13 +69,14 @@ def test_example_runs_through_the_cli(example, tmp_path):
         assert s["energy_balance_rel_error"] < 1e-3
         assert s["peak_friction_N"] > 0
     table = pd.read_csv(out / "timeseries.csv")
-    assert list(table.columns[:8]) == ["variant", "time_s", "x_m", "v_m_s", "p1_bar", "p2_bar",
-                                       "T1_C", "T2_C"]
+    assert list(table.columns[:8]) == ["variant", "time_s", "x_m", "v_m_s", "p1_bar_abs",
+                                       "p2_bar_abs", "T1_C", "T2_C"]
     assert "valve_command" in table and "F_friction_N" in table
     for seal in tomllib.loads(example.read_text())["seals"]:
-        assert f"F_{seal['name']}_N" in table
+        name = column_name(seal["name"])            # "test seal" -> "test_seal"
+        assert " " not in name and f"F_{name}_N" in table
         if seal["friction"]["law"] == "theta":
-            assert f"F_N_{seal['name']}_N" in table and f"theta_{seal['name']}" in table
+            assert f"F_N_{name}_N" in table and f"theta_{name}" in table
     assert set(table["variant"]) == set(variants)
     assert np.all(np.isfinite(table.select_dtypes("number").to_numpy()))
     for png in out.glob("*.png"):

@@ -66,8 +66,10 @@ def test_lower_seal_temperature_gives_lower_contact_force_friction_and_faster_re
     # Seed 001 Fig. 10 text: "at low temperature the piston reacts a little bit faster and more
     # dynamic due to lower contact forces and in succession lower friction".  The analytic
     # contact map: thermal expansion raises the squeeze and E ~ T (about +14 % F_N from 25 to
-    # 55 °C).  The times differ by about 1 %, far above the integration error (1e-4 of the
-    # stroke, test_pneumatic_cylinder).
+    # 55 °C).  The grease thins on heating (γ(T) of the Θ law falls to about a fifth), which
+    # takes back part of it at speed: the mean friction rises by a few percent and the stroke
+    # times by about 0.2 %, above the integration error (1e-4 of the stroke,
+    # test_pneumatic_cylinder).
     cold, hot = temperatures["T25C"], temperatures["T55C"]
     s_cold, s_hot = cold.summary(), hot.summary()
     for seal in ("piston", "rod"):
@@ -75,10 +77,10 @@ def test_lower_seal_temperature_gives_lower_contact_force_friction_and_faster_re
         fn_hot = hot.timeseries[f"F_N_{seal}_N"].to_numpy()
         assert fn_hot.max() > 1.10 * fn_cold.max()
         assert fn_hot.min() > 1.10 * fn_cold.min()
-    assert s_hot["mean_friction_N"] > 1.10 * s_cold["mean_friction_N"]
+    assert s_hot["mean_friction_N"] > 1.01 * s_cold["mean_friction_N"]
     assert s_hot["peak_friction_N"] > s_cold["peak_friction_N"]
-    assert s_hot["extend_time_s"] > 1.005 * s_cold["extend_time_s"]
-    assert s_hot["retract_time_s"] > 1.005 * s_cold["retract_time_s"]
+    assert s_hot["extend_time_s"] > 1.001 * s_cold["extend_time_s"]
+    assert s_hot["retract_time_s"] > 1.001 * s_cold["retract_time_s"]
 
 
 def test_stroke_times_grow_with_friction(temperatures):
@@ -108,10 +110,14 @@ def test_sticking_piston_does_not_creep():
     # A 5/3 valve with closed centre stops the piston mid-stroke: the shut-in air is a spring,
     # the seals stick (true stiction of the Θ law without bristles): x does not change at all
     # while stuck (no creep, the body is held by the set-valued friction force)
+    seals = load_toml(EXAMPLES / "cylinder_32.toml")["seals"]
+    for s in seals[:2]:           # a break-away 5x the running level: a clear stick margin
+        s["friction"] = {**s["friction"], "f_a": 0.5, "f_b": 0.1}
     case = example({"valve": {"type": "5/3", "centre": "closed"},
                     "controller": {"duration": "1.2 s",
                                    "steps": [{"command": "extend", "duration": "0.15 s"},
-                                             {"command": "centre", "duration": "2 s"}]}})
+                                             {"command": "centre", "duration": "2 s"}]}},
+                   seals=seals)
     f = simulate(case).timeseries
     late = f[f["time_s"] > 0.6]
     assert (late["mode"] == "stick").all()

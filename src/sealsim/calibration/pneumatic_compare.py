@@ -40,8 +40,9 @@ from sealsim.plotting.calibration import plot_signals
 
 __all__ = ["CompareCase", "compare_signals", "run_pneumatic_compare_file"]
 
-SIGNALS = {"position": ("x_m", 1.0, "mm", 1e3), "pressure_1": ("p1_bar", 1e5, "bar", 1e-5),
-           "pressure_2": ("p2_bar", 1e5, "bar", 1e-5)}
+SIGNALS = {"position": ("x_m", 1.0, "mm", 1e3),
+           "pressure_1": ("p1_bar_abs", 1e5, "bar", 1e-5),
+           "pressure_2": ("p2_bar_abs", 1e5, "bar", 1e-5)}
 
 
 class CompareMeasurement(CaseModel):

@@ -42,6 +42,8 @@ def run(
         summary = run_case_file(case, out, force, progress)
     for text in summary["warnings"]:
         console.print(f"[yellow]warning:[/yellow] {text}")
+    if summary["notes"]:
+        console.print(f"({len(summary['notes'])} note(s) on the parameters in summary.json)")
     summaries = summary["variants"]
     for name, s in summaries.items():
         brk = ", ".join(f"{f:.4g}" for f in s["breakaway_forces_N"][:4]) or "-"

@@ -42,7 +42,9 @@ def run(
     Writes timeseries.csv (all variants, column 'variant'), summary.json (extend/retract times,
     friction, air consumption, mass and energy balance errors per variant), case_resolved.toml
     and figures: pressure_stroke.png (seed 001 Fig. 10), friction_stroke.png (Figs. 12/13),
-    friction_velocity.png and timeseries_VARIANT.png.
+    friction_velocity.png and timeseries_VARIANT.png; with seal heating ([thermal]) also
+    heating_VARIANT.png and strokes_VARIANT.csv (temperatures, friction and stroke times, stroke
+    by stroke).
     """
     from sealsim.pneumatic.study import run_case_file
 
@@ -58,13 +60,19 @@ def run(
         times = (f"extend {ext:.3f} s, retract {ret:.3f} s, " if ext is not None
                  and ret is not None else "")
         mean = s["mean_friction_N"]
+        heat = (f", heat {s['balances']['heat_balance_rel_error']:.1e}"
+                if "heat_balance_rel_error" in s["balances"] else "")
         console.print(
             f"[bold]{name}[/]: {times}friction mean "
             f"{'-' if mean is None else f'{mean:.1f}'} N, peak {s['peak_friction_N']:.1f} N, "
             f"air {s['air_consumption_NL']:.3f} NL; balance errors mass "
-            f"{s['mass_balance_rel_error']:.1e}, energy {s['energy_balance_rel_error']:.1e}")
+            f"{s['mass_balance_rel_error']:.1e}, energy {s['energy_balance_rel_error']:.1e}"
+            f"{heat}")
         for note in result.notes:
             console.print(f"  [yellow]note:[/] {note}")
+    heated = any(r.case.thermal is not None and r.case.thermal.seal_heating
+                 for r in results.values())
     console.print(f"results written to {out}/ (plots: pressure_stroke.png, friction_stroke.png,"
-                  " friction_velocity.png, timeseries_*.png; tables: timeseries.csv, "
-                  "summary.json)")
+                  " friction_velocity.png, timeseries_*.png"
+                  + (", heating_*.png" if heated else "") + "; tables: timeseries.csv, "
+                  + ("strokes_*.csv, " if heated else "") + "summary.json)")

@@ -1,16 +1,16 @@
 """Dynamic friction laws of seals behind one state-space interface.
 
-=================  ==============================================  ===========  ===========
-law (case name)    class                                           states       true stick
-=================  ==============================================  ===========  ===========
-``coulomb``        :class:`CoulombViscous` (+ pressure scaling)    none         yes
-``stribeck``       :class:`Stribeck` (seed 001 Eq. 2/3)            none         yes
-``lugre``          :class:`LuGre` (Canudas de Wit et al. 1995)     z            no
-``dahl``           :class:`Dahl` (Dahl 1968)                       z            no
-``gms``            :class:`GMS` (Al-Bender et al. 2005)            z_1..z_N     no
-``theta``          :class:`Theta` (seed 001 Eq. 4/5, [R])          Θ (, z)      yes (no with
-                                                                                bristles)
-=================  ==============================================  ===========  ===========
+=================  ================================================  ===========  ===========
+law (case name)    class                                             states       true stick
+=================  ================================================  ===========  ===========
+``coulomb``        :class:`CoulombViscous` (+ pressure scaling)      none         yes
+``stribeck``       :class:`Stribeck` (Heipl & Murrenhoff Eq. 2/3)    none         yes
+``lugre``          :class:`LuGre` (Canudas de Wit et al. 1995)       z            no
+``dahl``           :class:`Dahl` (Dahl 1968)                         z            no
+``gms``            :class:`GMS` (Al-Bender et al. 2005)              z_1..z_N     no
+``theta``          :class:`Theta` (Heipl & Murrenhoff Eq. 4/5, [R])  Θ (, z)      yes (no with
+                                                                                  bristles)
+=================  ================================================  ===========  ===========
 
 Every law is a :class:`~sealsim.friction.base.FrictionLaw`: ``initial_state(n)``,
 ``derivatives(z, v, inputs)``, ``force(z, v, inputs)``, ``partials(...)``, ``step(z, v, dt,

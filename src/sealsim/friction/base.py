@@ -89,11 +89,11 @@ class ContactInputs:
     contact_width : array_like, optional
         Axial contact width b [m].  Needed by the Θ law's viscous term γ·b·v.
     pressure_a, pressure_b : array_like
-        Chamber pressures p_A, p_B [Pa] for the pressure scaling of seed 001 Eq. 3
+        Chamber pressures p_A, p_B [Pa] for the pressure scaling of Heipl & Murrenhoff Eq. 3
         (Stribeck / Coulomb laws).  Default 0.
     temperature : array_like, optional
         Temperature T [K]; no law in this module uses it directly (it enters through the FE
-        maps of F_N and b, seed 001 Fig. 4), it is carried for laws that will.
+        maps of F_N and b, Heipl & Murrenhoff Fig. 4), it is carried for laws that will.
     """
 
     normal_force: Any = None

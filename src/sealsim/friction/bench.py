@@ -1,6 +1,6 @@
 """Friction test benches: drive a law and record what a test rig would measure.
 
-Three benches (seed 001 Fig. 11; Canudas de Wit et al. 1995 §4):
+Three benches (Heipl & Murrenhoff Fig. 11; Canudas de Wit et al. 1995 §4):
 
 * **prescribed velocity** v(t) -- the contact slides at a given speed (``simulate_velocity``);
 * **prescribed displacement** x(t) -- e.g. a crank drive (``simulate_displacement``);
@@ -17,253 +17,40 @@ Jacobian from the law's ``partials``) for smooth laws, or with the implicit stic
 :mod:`sealsim.friction.hybrid` for laws with true sticking (Coulomb, Stribeck, Θ) and for GMS,
 whose element switching does not suit an error-controlled integrator.
 
-Profiles (constant, harmonic, piecewise linear) are case-file models with units; the summary
-(:func:`summarize`) extracts break-away forces, loop areas and dissipated energy.
+The profiles (constant, harmonic, piecewise linear) are in :mod:`.profiles`, the result record
+and the numbers read off a run (:func:`summarize`: break-away forces, loop areas, dissipated
+energy) in :mod:`.bench_results`; both are re-exported here.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import Annotated, Any, Literal
-
 import numpy as np
-from pydantic import Field, create_model, model_validator
 
-from sealsim.cases import CaseModel, Q
 from sealsim.errors import ConvergenceError, InputError
 from sealsim.friction.base import NO_INPUTS, ContactInputs, FrictionLaw
+from sealsim.friction.bench_results import (  # noqa: F401  (re-exported)
+    BenchResult,
+    breakaway_forces,
+    cycle_work,
+    loop_areas,
+    motion_onsets,
+    stick_slip_period,
+    summarize,
+)
 from sealsim.friction.hybrid import implicit_mass_step
+from sealsim.friction.profiles import _constant, profile_type
 
 __all__ = [
     "BenchResult",
+    "breakaway_forces",
+    "loop_areas",
     "profile_type",
     "simulate_displacement",
     "simulate_mass",
     "simulate_velocity",
+    "stick_slip_period",
     "summarize",
 ]
-
-
-# --------------------------------------------------------------------------------------------
-# Profiles
-# --------------------------------------------------------------------------------------------
-class _ConstantBase(CaseModel):
-    """A constant value."""
-
-    def value(self, t):
-        return np.full(np.shape(t), self.value_, dtype=float)
-
-    def integral(self, t):
-        return self.value_ * np.asarray(t, dtype=float)
-
-    def derivative(self, t):
-        return np.zeros(np.shape(t))
-
-    @property
-    def value_(self) -> float:
-        return self.level  # type: ignore[attr-defined]
-
-    def breakpoints(self):
-        return np.array([])
-
-    def period(self):
-        return None
-
-
-class _HarmonicBase(CaseModel):
-    """mean + amplitude·cos(ω·t + phase)."""
-
-    def value(self, t):
-        t = np.asarray(t, dtype=float)
-        return self.mean + self.amplitude * np.cos(self.angular_frequency * t + self.phase)
-
-    def integral(self, t):
-        t = np.asarray(t, dtype=float)
-        w = self.angular_frequency
-        return self.mean * t + self.amplitude / w * (np.sin(w * t + self.phase)
-                                                      - np.sin(self.phase))
-
-    def derivative(self, t):
-        t = np.asarray(t, dtype=float)
-        w = self.angular_frequency
-        return -self.amplitude * w * np.sin(w * t + self.phase)
-
-    def breakpoints(self):
-        return np.array([])
-
-    def period(self):
-        return 2.0 * np.pi / self.angular_frequency
-
-
-class _PiecewiseBase(CaseModel):
-    """Linear interpolation between (times, values); constant outside."""
-
-    @model_validator(mode="after")
-    def _check(self):
-        t = np.asarray(self.times, dtype=float)
-        if len(self.times) != len(self.values):
-            raise ValueError(f"times and values must have the same length "
-                             f"(got {len(self.times)} and {len(self.values)})")
-        if len(t) < 1 or np.any(np.diff(t) <= 0):
-            raise ValueError("times must be increasing, e.g. ['0 s', '1 s', '3 s']")
-        return self
-
-    def value(self, t):
-        return np.interp(np.asarray(t, dtype=float), self.times, self.values)
-
-    def integral(self, t):
-        t = np.asarray(t, dtype=float)
-        tp = np.asarray(self.times, dtype=float)
-        vp = np.asarray(self.values, dtype=float)
-        # extend with the held values before the first and after the last point
-        cum = np.concatenate([[0.0], np.cumsum(0.5 * (vp[1:] + vp[:-1]) * np.diff(tp))])
-        before = vp[0] * np.minimum(t, tp[0])          # constant vp[0] from 0 to tp[0]
-        inside_t = np.clip(t, tp[0], tp[-1])
-        idx = np.clip(np.searchsorted(tp, inside_t, side="right") - 1, 0, len(tp) - 1)
-        seg_t0 = tp[idx]
-        v0 = vp[idx]
-        v_at = np.interp(inside_t, tp, vp)
-        inside = cum[idx] + 0.5 * (v0 + v_at) * (inside_t - seg_t0)
-        after = vp[-1] * np.maximum(t - tp[-1], 0.0)
-        return before + inside + after
-
-    def derivative(self, t):
-        t = np.asarray(t, dtype=float)
-        tp = np.asarray(self.times, dtype=float)
-        vp = np.asarray(self.values, dtype=float)
-        if len(tp) < 2:
-            return np.zeros(t.shape)
-        slopes = np.diff(vp) / np.diff(tp)
-        idx = np.searchsorted(tp, t, side="right") - 1
-        inside = (idx >= 0) & (idx < len(slopes))
-        return np.where(inside, slopes[np.clip(idx, 0, len(slopes) - 1)], 0.0)
-
-    def breakpoints(self):
-        return np.asarray(self.times, dtype=float)
-
-    def period(self):
-        return None
-
-
-_PROFILE_CACHE: dict[str, Any] = {}
-
-
-def profile_type(dimension: str):
-    """Case-file type of a time profile whose values have ``dimension``.
-
-    A discriminated union on ``kind``:
-
-    * ``kind = "constant"``: ``level``;
-    * ``kind = "harmonic"``: ``mean + amplitude·cos(angular_frequency·t + phase)``
-      (``phase`` in degrees or radians, e.g. ``"-90 deg"``);
-    * ``kind = "piecewise"``: ``times`` and ``values`` lists, linear in between, held constant
-      outside.
-
-    Examples
-    --------
-    >>> from pydantic import TypeAdapter
-    >>> p = TypeAdapter(profile_type("velocity")).validate_python(
-    ...     {"kind": "piecewise", "times": ["0 s", "1 s"], "values": ["0 m/s", "2 m/s"]})
-    >>> p.value([0.5, 3.0]), p.integral([1.0])
-    (array([1., 2.]), array([1.]))
-    """
-    if dimension in _PROFILE_CACHE:
-        return _PROFILE_CACHE[dimension]
-    tag = dimension.title().replace("_", "")
-    constant = create_model(
-        f"Constant{tag}Profile", __base__=_ConstantBase,
-        kind=(Literal["constant"], ...), level=(Q(dimension), ...))
-    harmonic = create_model(
-        f"Harmonic{tag}Profile", __base__=_HarmonicBase,
-        kind=(Literal["harmonic"], ...), mean=(Q(dimension), 0.0),
-        amplitude=(Q(dimension), ...),
-        angular_frequency=(Q("angular_speed", gt=0), ...),
-        phase=(Q("dimensionless"), 0.0))
-    piecewise = create_model(
-        f"Piecewise{tag}Profile", __base__=_PiecewiseBase,
-        kind=(Literal["piecewise"], ...), times=(list[Q("time", ge=0)], ...),
-        values=(list[Q(dimension)], ...))
-    union = Annotated[constant | harmonic | piecewise, Field(discriminator="kind")]
-    _PROFILE_CACHE[dimension] = union
-    return union
-
-
-def _constant(level: float):
-    from pydantic import TypeAdapter
-
-    return TypeAdapter(profile_type("velocity")).validate_python(
-        {"kind": "constant", "level": level})
-
-
-# --------------------------------------------------------------------------------------------
-# Results
-# --------------------------------------------------------------------------------------------
-@dataclass
-class BenchResult:
-    """Time series of one bench run (one contact).
-
-    Attributes
-    ----------
-    time, position, velocity, force : ndarray, shape (N,)
-        Time [s], displacement of the sliding body [m], sliding velocity [m/s] and friction
-        force [N] (opposing v).
-    states : ndarray, shape (N, n_states)
-        Friction states.
-    state_names : tuple of str
-    drive_position, applied_force : ndarray or None
-        Spring-end position [m] and applied force [N] (driven mass only).
-    stuck : ndarray of bool or None
-        True where the body sticks (laws with true sticking on the driven mass).
-    mode : str
-        "velocity", "displacement" or "mass".
-    period : float or None
-        Period of a harmonic drive [s] (for loop areas).
-    """
-
-    time: np.ndarray
-    position: np.ndarray
-    velocity: np.ndarray
-    force: np.ndarray
-    states: np.ndarray
-    state_names: tuple[str, ...]
-    mode: str
-    drive_position: np.ndarray | None = None
-    applied_force: np.ndarray | None = None
-    stuck: np.ndarray | None = None
-    period: float | None = None
-    stored_energy: np.ndarray | None = None
-    extra: dict[str, Any] = field(default_factory=dict)
-
-    def columns(self) -> dict[str, np.ndarray]:
-        """Columns for a CSV table (names carry units)."""
-        cols = {"time_s": self.time, "position_m": self.position,
-                "velocity_m_s": self.velocity, "friction_force_N": self.force}
-        for i, name in enumerate(self.state_names):
-            unit = "" if name == "theta" else "_m"
-            cols[f"{name}{unit}"] = self.states[:, i]
-        if self.drive_position is not None:
-            cols["drive_position_m"] = self.drive_position
-        if self.applied_force is not None:
-            cols["spring_plus_applied_force_N"] = self.applied_force
-        if self.stuck is not None:
-            cols["stuck"] = self.stuck.astype(int)
-        return cols
-
-    def decimated(self, max_rows: int) -> BenchResult:
-        """Every k-th sample so that at most ``max_rows`` remain (plots, CSV)."""
-        n = self.time.size
-        if n <= max_rows:
-            return self
-        k = int(np.ceil(n / max_rows))
-        idx = np.unique(np.concatenate([np.arange(0, n, k), [n - 1]]))
-
-        def pick(a):
-            return None if a is None else a[idx]
-
-        return BenchResult(self.time[idx], self.position[idx], self.velocity[idx],
-                           self.force[idx], self.states[idx], self.state_names, self.mode,
-                           pick(self.drive_position), pick(self.applied_force),
-                           pick(self.stuck), self.period, pick(self.stored_energy), self.extra)
 
 
 def _grid(duration: float, time_step: float) -> np.ndarray:
@@ -285,7 +72,7 @@ def _grid(duration: float, time_step: float) -> np.ndarray:
 def simulate_displacement(law: FrictionLaw, position, duration: float, time_step: float,
                           inputs: ContactInputs = NO_INPUTS, initial_state=None,
                           _velocity_profile=None) -> BenchResult:
-    """Prescribed displacement x(t) (e.g. a crank drive, seed 001 Fig. 11).
+    """Prescribed displacement x(t) (e.g. a crank drive, Heipl & Murrenhoff Fig. 11).
 
     Parameters
     ----------
@@ -515,133 +302,3 @@ def _mass_ivp(law, mass, stiffness, t, drive_velocity, applied_force, inputs, z0
                               "solver_jacobians": int(sol.njev)})
 
 
-# --------------------------------------------------------------------------------------------
-# Summary
-# --------------------------------------------------------------------------------------------
-def motion_onsets(velocity, rest_velocity):
-    """Indices where |v| first exceeds ``rest_velocity`` after at least one sample at rest.
-
-    Examples
-    --------
-    >>> motion_onsets(np.array([0.0, 0.0, 0.2, 0.3, 0.0, -0.5]), 0.1)
-    array([2, 5])
-    """
-    moving = np.abs(np.asarray(velocity)) > rest_velocity
-    return np.where(~moving[:-1] & moving[1:])[0] + 1
-
-
-def breakaway_forces(result: BenchResult, rest_velocity: float | None = None):
-    """Friction force at each start of motion from rest.
-
-    An onset is the first sample with |v| > v_rest after rest (default v_rest = 1e-3 of the
-    largest |v|, at least 10 µm/s: slower creep counts as rest); its break-away force is the
-    largest |F| from the sample before the onset
-    until |v| reaches 10·v_rest (the force peak of the transition from stick to slip).
-
-    Returns
-    -------
-    times : ndarray
-        Onset times [s].
-    forces : ndarray
-        Break-away forces [N] (magnitudes).
-    """
-    v = result.velocity
-    vmax = float(np.max(np.abs(v))) if v.size else 0.0
-    if rest_velocity is None:
-        rest_velocity = max(1e-3 * vmax, 1e-5)
-    if vmax <= rest_velocity:
-        return np.array([]), np.array([])
-    onsets = motion_onsets(v, rest_velocity)
-    times, forces = [], []
-    for i in onsets:
-        j = i
-        while j < v.size - 1 and abs(v[j]) < 10 * rest_velocity:
-            j += 1
-        forces.append(float(np.max(np.abs(result.force[i - 1:j + 1]))))
-        times.append(float(result.time[i]))
-    return np.array(times), np.array(forces)
-
-
-def cycle_work(result: BenchResult, start: float, end: float) -> float:
-    """Work of the friction force from ``start`` to ``end`` [J], ∫F·v dt (trapezoid)."""
-    sel = (result.time >= start - 1e-12) & (result.time <= end + 1e-12)
-    p = result.force[sel] * result.velocity[sel]
-    return float(np.trapezoid(p, result.time[sel]))
-
-
-def loop_areas(result: BenchResult):
-    """Areas of the last complete cycle of a periodic drive.
-
-    Returns
-    -------
-    dict
-        ``force_displacement_J``: ∮F dx over the last full period [J] (the energy dissipated
-        per cycle); ``force_velocity_N_m_s``: |∮F dv| [N·m/s] (width of the F–v hysteresis
-        loop); both None without a periodic drive or a complete period.
-    """
-    per = result.period
-    t = result.time
-    if not per or t[-1] - t[0] < per * (1 - 1e-9):
-        return {"force_displacement_J": None, "force_velocity_N_m_s": None, "period_s": per}
-    n_cycles = int(np.floor((t[-1] - t[0]) / per + 1e-9))
-    start = t[0] + (n_cycles - 1) * per
-    sel = (t >= start - 1e-12) & (t <= start + per + 1e-12)
-    f = result.force[sel]
-    fx = float(np.trapezoid(f, result.position[sel]))
-    fv = float(abs(np.trapezoid(f, result.velocity[sel])))
-    return {"force_displacement_J": fx, "force_velocity_N_m_s": fv, "period_s": per,
-            "cycle_start_s": float(start)}
-
-
-def stick_slip_period(result: BenchResult) -> float | None:
-    """Mean time between successive slips of a driven mass (None if fewer than 3 slips).
-
-    Slips are upward crossings of |v| through half the largest |v| (interpolated); the first
-    interval is skipped (start-up transient).
-    """
-    v = np.abs(result.velocity)
-    thr = 0.5 * float(np.max(v)) if v.size else 0.0
-    if thr <= 0:
-        return None
-    idx = np.where((v[:-1] < thr) & (v[1:] >= thr))[0]
-    if idx.size < 3:
-        return None
-    t = result.time
-    cross = t[idx] + (thr - v[idx]) / (v[idx + 1] - v[idx]) * (t[idx + 1] - t[idx])
-    return float(np.mean(np.diff(cross)[1:]))
-
-
-def summarize(result: BenchResult) -> dict[str, Any]:
-    """Numbers a user compares: break-away forces, loop areas, dissipated energy, extremes.
-
-    The dissipated energy is the work of the friction force on the contact, ∫F·v dt, minus the
-    energy still stored in the bristles at the end (equal for a relaxed end state).
-    """
-    times, forces = breakaway_forces(result)
-    work = float(np.trapezoid(result.force * result.velocity, result.time))
-    stored_end = float(result.stored_energy[-1]) if result.stored_energy is not None else 0.0
-    out: dict[str, Any] = {
-        "mode": result.mode,
-        "duration_s": float(result.time[-1] - result.time[0]),
-        "samples": int(result.time.size),
-        "friction_work_J": work,
-        "dissipated_energy_J": work - stored_end,
-        "stored_energy_end_J": stored_end,
-        "max_friction_force_N": float(np.max(result.force)),
-        "min_friction_force_N": float(np.min(result.force)),
-        "max_abs_velocity_m_s": float(np.max(np.abs(result.velocity))),
-        "max_abs_position_m": float(np.max(np.abs(result.position))),
-        "breakaway_times_s": times.tolist(),
-        "breakaway_forces_N": forces.tolist(),
-        "loop_areas": loop_areas(result),
-    }
-    if result.mode == "mass":
-        out["stick_slip_period_s"] = stick_slip_period(result)
-        if result.stuck is not None:
-            out["stuck_fraction"] = float(np.mean(result.stuck))
-    for name in result.state_names:
-        i = result.state_names.index(name)
-        out[f"{name}_min"] = float(np.min(result.states[:, i]))
-        out[f"{name}_max"] = float(np.max(result.states[:, i]))
-    out.update({k: v for k, v in result.extra.items()})
-    return out

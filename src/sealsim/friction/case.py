@@ -22,8 +22,8 @@ A case file (TOML, quantities with units)::
     bench.velocity.angular_frequency = "25 rad/s"
 
 :func:`load_friction_cases` validates it (every problem in one InputError naming the field),
-:func:`run_friction_case` runs one variant, :func:`sealsim.cases.dump_variants_toml` writes the resolved
-case (all defaults filled in) that reproduces the run.
+:func:`run_friction_case` runs one variant, :func:`sealsim.cases.dump_variants_toml` writes the
+resolved case (all defaults filled in) that reproduces the run.
 """
 
 from __future__ import annotations

@@ -1,6 +1,6 @@
 """Dahl friction law (Dahl 1968): rate-independent pre-sliding hysteresis.
 
-With the bristle deflection z [m] and F = σ0·z (pneumatic_friction.md §2.4)::
+With the bristle deflection z [m] and F = σ0·z (Dahl 1968; Canudas de Wit et al. 1995)::
 
     dz/dt = v·(1 − σ0·z·sgn(v)/F_C)^α          ⇔   dF/dx = σ0·(1 − F·sgn(v)/F_C)^α
 
@@ -17,7 +17,7 @@ u = 1 − σ0·z·sgn(v)/F_C, du/ds = −(σ0/F_C)·u^α has the exact solution
 References
 ----------
 .. [1] P. R. Dahl, "A solid friction model", Technical Report TOR-0158(3107-18)-1, The
-   Aerospace Corporation, El Segundo, 1968 (seed 001 reference 5).
+   Aerospace Corporation, El Segundo, 1968 (cited by Heipl & Murrenhoff).
 .. [2] C. Canudas de Wit et al., IEEE TAC 40(3), 1995 (Dahl as the special case of LuGre).
 """
 
@@ -28,6 +28,7 @@ from typing import Literal
 import numpy as np
 
 from sealsim.cases import Q
+from sealsim.friction import kernels as _k
 from sealsim.friction.base import (
     NO_INPUTS,
     ContactInputs,
@@ -38,12 +39,9 @@ from sealsim.friction.base import (
     as_velocity,
     validate_parameters,
 )
+from sealsim.friction.kernels import apply
 
 __all__ = ["Dahl", "DahlParameters", "dahl_bristle_rate", "dahl_bristle_step"]
-
-
-def _u(z, v, sigma0, coulomb_force):
-    return 1.0 - sigma0 * np.asarray(z, dtype=float) * np.sign(v) / coulomb_force
 
 
 def dahl_bristle_rate(z, v, sigma0, coulomb_force, exponent=1.0):
@@ -76,8 +74,7 @@ def dahl_bristle_rate(z, v, sigma0, coulomb_force, exponent=1.0):
     >>> float(dahl_bristle_rate(1e-5, 0.1, 1e5, 1.0))   # saturated: F = F_C
     0.0
     """
-    u = np.clip(_u(z, v, sigma0, coulomb_force), 0.0, None)
-    return np.asarray(v, dtype=float) * u ** exponent
+    return apply(_k._loop_dahl_bristle_rate, z, v, sigma0, coulomb_force, exponent)
 
 
 def dahl_bristle_step(z, v, dt, sigma0, coulomb_force, exponent=1.0):
@@ -106,23 +103,7 @@ def dahl_bristle_step(z, v, dt, sigma0, coulomb_force, exponent=1.0):
     >>> round(float(dahl_bristle_step(0.0, 1e-5, 1.0, 1e5, 1.0, exponent=2.0)) * 1e5, 6)
     0.5
     """
-    z = np.asarray(z, dtype=float)
-    v = np.asarray(v, dtype=float)
-    s = np.abs(v) * dt
-    u0 = np.clip(_u(z, v, sigma0, coulomb_force), 0.0, None)
-    k = sigma0 * s / coulomb_force
-    exponent = np.asarray(exponent, dtype=float)
-    if np.all(exponent == 1.0):
-        u1 = u0 * np.exp(-k)
-    else:
-        one_minus = 1.0 - exponent
-        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-            base = u0 ** one_minus - one_minus * k
-            u1 = np.where(base > 0, base, 0.0) ** (1.0 / one_minus)
-            u1 = np.where(exponent == 1.0, u0 * np.exp(-k), u1)
-            u1 = np.where(u0 > 0, u1, 0.0)
-    z1 = (1.0 - u1) * coulomb_force * np.sign(v) / sigma0
-    return np.where(v == 0, z, z1)
+    return apply(_k._loop_dahl_bristle_step, z, v, dt, sigma0, coulomb_force, exponent)
 
 
 class DahlParameters(LawParameters):
@@ -183,7 +164,7 @@ class Dahl(FrictionLaw):
         p = self.params
         v = as_velocity(v)
         z = as_state(z, 1)[0]
-        u = np.clip(_u(z, v, p.sigma0, p.coulomb_force), 0.0, None)
+        u = np.clip(1.0 - p.sigma0 * z * np.sign(v) / p.coulomb_force, 0.0, None)
         with np.errstate(divide="ignore", invalid="ignore"):
             upow = np.where(u > 0, u ** (p.exponent - 1.0), 0.0 if p.exponent > 1 else 1.0)
         dfdz = -np.abs(v) * p.exponent * upow * p.sigma0 / p.coulomb_force
@@ -200,10 +181,8 @@ class Dahl(FrictionLaw):
 
     def affine_coefficients(self, v, dt, inputs: ContactInputs = NO_INPUTS):
         p = self.params
-        v = np.asarray(v, dtype=float)
-        decay = -np.expm1(-p.sigma0 * np.abs(v) * dt / p.coulomb_force)
-        z_ss = np.sign(v) * p.coulomb_force / p.sigma0
-        return (1.0 - decay)[:, None, :], (z_ss * decay)[:, None, :]
+        a, b = apply(_k._loop_lugre_affine, v, dt, p.sigma0, p.coulomb_force, outputs=2)
+        return a[:, None, :], b[:, None, :]     # α = 1: LuGre with g = F_C
 
     def steady_state(self, v, inputs: ContactInputs = NO_INPUTS):
         v = as_velocity(v)

@@ -11,7 +11,8 @@ s(v) is the Stribeck level g(v) = F_C + (F_S − F_C)·exp(−|v/v_s|^δ), α_i 
 fraction of it (Σ α_i = 1) and C [N/s] the attraction parameter.  In steady sliding every
 element slips at F_i = α_i·s(v)·sgn(v), so F_ss = g(v)·sgn(v) + σ2·v.  Elements that break
 away at different displacements give the non-local-memory pre-sliding hysteresis that Tran et
-al. measured on pneumatic cylinders (pneumatic_friction.md §4, E3).
+al. measured on pneumatic cylinders (Tran, Pham, Do & Ngo, Vietnam Journal of Mechanics: non-local
+memory of the pre-sliding hysteresis).
 
 **Choice made here.**  In the paper an element, once slipping, keeps slipping until the
 velocity reverses (a hidden mode).  Here the mode is a function of the state (stick while the
@@ -28,7 +29,7 @@ References
 ----------
 .. [1] F. Al-Bender, V. Lampaert, J. Swevers, "The generalized Maxwell-slip model: a novel model
    for friction simulation and compensation", IEEE TAC 50(11), 1883-1887, 2005.
-.. [2] jchristopherson/friction and FrictionModels.jl (pneumatic_friction.md §2.5 [V]).
+.. [2] jchristopherson/friction and FrictionModels.jl (open-source implementations).
 """
 
 from __future__ import annotations
@@ -39,6 +40,7 @@ import numpy as np
 from pydantic import Field, model_validator
 
 from sealsim.cases import Q
+from sealsim.friction import kernels as _k
 from sealsim.friction.base import (
     NO_INPUTS,
     ContactInputs,
@@ -50,6 +52,7 @@ from sealsim.friction.base import (
     require_static_at_least_coulomb,
     validate_parameters,
 )
+from sealsim.friction.kernels import apply
 from sealsim.friction.stribeck import stribeck_level, stribeck_level_derivative
 
 __all__ = ["GMS", "GMSParameters", "default_fractions", "gms_element_rate", "gms_element_step"]
@@ -105,13 +108,7 @@ def gms_element_rate(z, v, stiffness, fraction, attraction, s):
     array([[ 0.1   ],
            [-0.0002]])
     """
-    z = np.asarray(z, dtype=float)
-    v = np.asarray(v, dtype=float)
-    force = stiffness * z
-    sgn = np.sign(v)
-    stick = force * sgn < fraction * s
-    slip_rate = attraction / stiffness * (fraction * sgn - force / s)
-    return np.where(stick, v, slip_rate)
+    return apply(_k._loop_gms_element_rate, z, v, stiffness, fraction, attraction, s)
 
 
 def gms_element_step(z, v, dt, stiffness, fraction, attraction, s):
@@ -132,19 +129,7 @@ def gms_element_step(z, v, dt, stiffness, fraction, attraction, s):
     array([[0.25],
            [0.5 ]])
     """
-    z = np.asarray(z, dtype=float)
-    v = np.asarray(v, dtype=float)
-    force = stiffness * z
-    sgn = np.sign(v)
-    limit = fraction * s
-    stick = force * sgn < limit
-    trial = force + stiffness * v * dt
-    stuck = np.where(trial * sgn > limit, limit * sgn, trial)
-    target = limit * sgn
-    slipped = target + (force - target) * np.exp(-attraction * dt / s)
-    new_force = np.where(stick, stuck, slipped)
-    new_force = np.where(v == 0, force, new_force)
-    return new_force / stiffness
+    return apply(_k._loop_gms_element_step, z, v, dt, stiffness, fraction, attraction, s)
 
 
 class GMSParameters(LawParameters):

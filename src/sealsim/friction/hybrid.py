@@ -19,7 +19,7 @@ If |R| <= F_brk(z1) the body sticks: v1 = 0, x1 = x0 and F = R exactly -- no cre
 the dwell.  Otherwise it slips in the direction of R, and h has a root in (0, R/M] (h(0+) =
 F_brk − |R| < 0 and F·sgn(R) >= 0 there), found by bracketed Newton iteration.  This is the
 velocity-level time stepping of Moreau (1988) for set-valued friction, and the discrete analogue
-of seed 001 Eq. 2 (friction balances the applied force up to F_S).
+of Heipl & Murrenhoff Eq. 2 (friction balances the applied force up to F_S).
 
 **Smooth laws** (LuGre, Dahl, GMS, Θ with bristles) have no set-valued part: h(v1) = 0 is solved
 directly (bracket found by expansion from the previous velocity).  The bristle state makes the

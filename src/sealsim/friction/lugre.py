@@ -34,6 +34,7 @@ import numpy as np
 from pydantic import model_validator
 
 from sealsim.cases import Q
+from sealsim.friction import kernels as _k
 from sealsim.friction.base import (
     NO_INPUTS,
     ContactInputs,
@@ -47,7 +48,8 @@ from sealsim.friction.base import (
     validate_parameters,
     warn_passivity,
 )
-from sealsim.friction.stribeck import stribeck_level, stribeck_level_derivative
+from sealsim.friction.kernels import apply
+from sealsim.friction.stribeck import stribeck_force, stribeck_level, stribeck_level_derivative
 
 __all__ = [
     "LuGre",
@@ -90,8 +92,7 @@ def lugre_bristle_rate(z, v, sigma0, g):
     >>> float(lugre_bristle_rate(1e-5, 1e-2, 1e5, 1.0))
     0.0
     """
-    v = np.asarray(v, dtype=float)
-    return v - sigma0 * np.abs(v) * np.asarray(z, dtype=float) / g
+    return apply(_k._loop_lugre_bristle_rate, z, v, sigma0, g)
 
 
 def lugre_force(z, zdot, v, sigma0, sigma1, sigma2):
@@ -120,7 +121,7 @@ def lugre_force(z, zdot, v, sigma0, sigma1, sigma2):
     >>> float(lugre_force(1e-5, 0.0, 1e-2, 1e5, 316.2, 0.4))
     1.004
     """
-    return sigma0 * np.asarray(z, dtype=float) + sigma1 * np.asarray(zdot) + sigma2 * np.asarray(v)
+    return apply(_k._loop_lugre_force, z, zdot, v, sigma0, sigma1, sigma2)
 
 
 def lugre_steady_force(v, coulomb_force, static_force, stribeck_velocity, sigma2, exponent=2.0):
@@ -149,9 +150,7 @@ def lugre_steady_force(v, coulomb_force, static_force, stribeck_velocity, sigma2
     >>> lugre_steady_force([-1e-3, 0.1], 1.0, 1.5, 1e-3, 0.4)
     array([-1.18433972,  1.04      ])
     """
-    v = np.asarray(v, dtype=float)
-    g = stribeck_level(v, coulomb_force, static_force, stribeck_velocity, exponent)
-    return g * np.sign(v) + sigma2 * v
+    return stribeck_force(v, coulomb_force, static_force, stribeck_velocity, sigma2, exponent)
 
 
 def lugre_bristle_step(z, v, dt, sigma0, g):
@@ -187,16 +186,13 @@ def lugre_bristle_step(z, v, dt, sigma0, g):
     >>> float(lugre_bristle_step(2e-6, 0.0, 10.0, 1e5, 1.5))  # at rest nothing changes
     2e-06
     """
-    z = np.asarray(z, dtype=float)
-    v = np.asarray(v, dtype=float)
     a, b = _lugre_affine(v, dt, sigma0, g)
-    return a * z + b
+    return a * np.asarray(z, dtype=float) + b
 
 
 def _lugre_affine(v, dt, sigma0, g):
-    decay = -np.expm1(-sigma0 * np.abs(v) * dt / g)   # 1 − exp(−a·dt) in [0, 1]
-    z_ss = np.sign(v) * g / sigma0
-    return 1.0 - decay, z_ss * decay
+    """(a, b) of the exact step z1 = a·z0 + b (:func:`sealsim.friction.kernels.lugre_affine`)."""
+    return apply(_k._loop_lugre_affine, v, dt, sigma0, g, outputs=2)
 
 
 def lugre_passivity_margin(sigma1, sigma2, coulomb_force, static_force):

@@ -1,20 +1,20 @@
 """Static friction laws: Coulomb + viscous, and Stribeck with stiction and pressure scaling.
 
-These are the "state of the art" laws of system-simulation tools that seed 001 starts from
-(Heipl & Murrenhoff, Eq. 2 and 3).  They have no internal state: the force is a function of the
+These are the "state of the art" laws of system-simulation tools that Heipl & Murrenhoff start
+from (their Eq. 2 and 3).  They have no internal state: the force is a function of the
 velocity (and of the chamber pressures), with true sticking at v = 0 -- at rest the friction
-force balances the applied force up to the break-away level (seed 001 Eq. 2, second and third
-line).  That set-valued part is resolved by :mod:`sealsim.friction.hybrid`.
+force balances the applied force up to the break-away level (Heipl & Murrenhoff Eq. 2, second and
+third line).  That set-valued part is resolved by :mod:`sealsim.friction.hybrid`.
 
 References
 ----------
 .. [1] O. Heipl, H. Murrenhoff, "Rate- and state-dependent friction model for elastomeric
-   seals" (seed 001), Eq. 2 (Stribeck curve with stiction) and Eq. 3 (linear pressure scaling).
+   seals", Eq. 2 (Stribeck curve with stiction) and Eq. 3 (linear pressure scaling).
 .. [2] B. Armstrong-Hélouvry, P. Dupont, C. Canudas de Wit, "A survey of models, analysis tools
    and compensation methods for the control of machines with friction", Automatica 30(7),
    1083-1138, 1994 (Stribeck exponent δ).
 .. [3] MathWorks Simscape "Cylinder Friction": F_C = F_pr + f_cfr·(p_A + p_B) with a constant
-   break-away ratio K_brk = F_S/F_C (pneumatic_friction.md §2.1 [V]).
+   break-away ratio K_brk = F_S/F_C (MathWorks documentation).
 """
 
 from __future__ import annotations
@@ -25,6 +25,7 @@ import numpy as np
 from pydantic import model_validator
 
 from sealsim.cases import Q
+from sealsim.friction import kernels as _k
 from sealsim.friction.base import (
     NO_INPUTS,
     ContactInputs,
@@ -36,6 +37,7 @@ from sealsim.friction.base import (
     sign,
     validate_parameters,
 )
+from sealsim.friction.kernels import apply
 
 __all__ = [
     "CoulombParameters",
@@ -47,6 +49,7 @@ __all__ = [
     "stribeck_force",
     "stribeck_level",
     "stribeck_level_derivative",
+    "stribeck_scaled_levels",
 ]
 
 
@@ -55,7 +58,7 @@ __all__ = [
 # --------------------------------------------------------------------------------------------
 def pressure_scaled_force(force_at_zero_pressure, pressure_coefficient, pressure_a=0.0,
                           pressure_b=0.0):
-    """Friction level scaled linearly with the chamber pressures (seed 001 Eq. 3).
+    """Friction level scaled linearly with the chamber pressures (Heipl & Murrenhoff Eq. 3).
 
     .. math:: F_C = F_{pr} + f\\,(p_A + p_B)
 
@@ -75,16 +78,15 @@ def pressure_scaled_force(force_at_zero_pressure, pressure_coefficient, pressure
 
     References
     ----------
-    Seed 001 Eq. 3; Simscape Cylinder Friction (pneumatic_friction.md §2.1 [V]).
+    Heipl & Murrenhoff Eq. 3; Simscape Cylinder Friction (MathWorks documentation).
 
     Examples
     --------
     >>> float(pressure_scaled_force(15.0, 1.5e-5, 6e5, 0.0))
     24.0
     """
-    return np.asarray(force_at_zero_pressure, dtype=float) + np.asarray(
-        pressure_coefficient, dtype=float) * (np.asarray(pressure_a, dtype=float)
-                                              + np.asarray(pressure_b, dtype=float))
+    return apply(_k._loop_pressure_scaled_force, force_at_zero_pressure, pressure_coefficient,
+                 pressure_a, pressure_b)
 
 
 def stribeck_level(v, coulomb_force, static_force, stribeck_velocity, exponent=2.0):
@@ -103,7 +105,8 @@ def stribeck_level(v, coulomb_force, static_force, stribeck_velocity, exponent=2
     stribeck_velocity : array_like
         Stribeck velocity v_S [m/s], > 0.
     exponent : array_like
-        Stribeck exponent δ [-]: 2 in LuGre (1995) and Armstrong (1994), 1 in seed 001 Eq. 2.
+        Stribeck exponent δ [-]: 2 in LuGre (1995) and Armstrong (1994), 1 in Heipl & Murrenhoff
+        Eq. 2.
 
     Returns
     -------
@@ -112,16 +115,15 @@ def stribeck_level(v, coulomb_force, static_force, stribeck_velocity, exponent=2
 
     References
     ----------
-    Seed 001 Eq. 2; Canudas de Wit et al. (1995) Eq. 3; Armstrong-Hélouvry et al. (1994).
+    Heipl & Murrenhoff Eq. 2; Canudas de Wit et al. (1995) Eq. 3; Armstrong-Hélouvry et al. (1994).
 
     Examples
     --------
     >>> stribeck_level([0.0, 1e-3, 1.0], 1.0, 1.5, 1e-3)
     array([1.5 , 1.18393972, 1. ])
     """
-    v = np.asarray(v, dtype=float)
-    ratio = np.abs(v / stribeck_velocity)
-    return coulomb_force + (np.asarray(static_force) - coulomb_force) * np.exp(-ratio ** exponent)
+    return apply(_k._loop_stribeck_level, v, coulomb_force, static_force, stribeck_velocity,
+                 exponent)
 
 
 def stribeck_level_derivative(v, coulomb_force, static_force, stribeck_velocity, exponent=2.0):
@@ -137,18 +139,13 @@ def stribeck_level_derivative(v, coulomb_force, static_force, stribeck_velocity,
     >>> float(stribeck_level_derivative(1e-3, 1.0, 1.5, 1e-3))
     -367.879...
     """
-    v = np.asarray(v, dtype=float)
-    ratio = np.abs(v / stribeck_velocity)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        power = np.where(ratio > 0, ratio ** (np.asarray(exponent) - 1.0),
-                         np.where(np.asarray(exponent) == 1.0, 1.0, 0.0))
-    return (-(np.asarray(static_force) - coulomb_force) * exponent * power
-            * np.exp(-ratio ** exponent) * np.sign(v) / stribeck_velocity)
+    return apply(_k._loop_stribeck_level_derivative, v, coulomb_force, static_force,
+                 stribeck_velocity, exponent)
 
 
 def stribeck_force(v, coulomb_force, static_force, stribeck_velocity, viscous_coefficient=0.0,
                    exponent=2.0):
-    """Sliding friction force of the Stribeck law (seed 001 Eq. 2, first line).
+    """Sliding friction force of the Stribeck law (Heipl & Murrenhoff Eq. 2, first line).
 
     .. math:: F(v) = g(v)\\,\\operatorname{sgn}(v) + F_v\\,v
 
@@ -178,9 +175,41 @@ def stribeck_force(v, coulomb_force, static_force, stribeck_velocity, viscous_co
     >>> stribeck_force([-0.01, 0.01], 15.0, 25.0, 0.02, 8.0, exponent=1.0)
     array([-21.145..., 21.145...])
     """
-    v = np.asarray(v, dtype=float)
-    return (stribeck_level(v, coulomb_force, static_force, stribeck_velocity, exponent)
-            * np.sign(v) + viscous_coefficient * v)
+    return apply(_k._loop_stribeck_force, v, coulomb_force, static_force, stribeck_velocity,
+                 viscous_coefficient, exponent)
+
+
+def stribeck_scaled_levels(coulomb_force, static_force, pressure_coefficient, pressure_a=0.0,
+                           pressure_b=0.0):
+    """Coulomb and static levels of the Stribeck law after pressure scaling (Heipl & Murrenhoff Eq.
+    3).
+
+    .. math:: F_C(p) = F_C + f\\,(p_A + p_B), \\qquad F_S(p) = F_S\\,F_C(p)/F_C
+
+    The break-away ratio F_S/F_C stays constant, as in Simscape's Cylinder Friction; with
+    F_C = 0 the static level is shifted by the same amount instead, F_S + (F_C(p) − F_C).
+
+    Parameters
+    ----------
+    coulomb_force, static_force : array_like
+        F_C and F_S without pressure [N].
+    pressure_coefficient : array_like
+        f [N/Pa] (= [m²]).
+    pressure_a, pressure_b : array_like
+        Gauge pressures p_A, p_B [Pa].
+
+    Returns
+    -------
+    f_c, f_s : ndarray
+        Scaled levels [N].
+
+    Examples
+    --------
+    >>> [float(f) for f in stribeck_scaled_levels(15.0, 25.0, 1.5e-5, 6e5)]
+    [24.0, 40.0]
+    """
+    return apply(_k._loop_stribeck_scaled_levels, coulomb_force, static_force,
+                 pressure_coefficient, pressure_a, pressure_b, outputs=2)
 
 
 def coulomb_viscous_force(v, coulomb_force, viscous_coefficient=0.0):
@@ -205,15 +234,14 @@ def coulomb_viscous_force(v, coulomb_force, viscous_coefficient=0.0):
     >>> coulomb_viscous_force([-1.0, 0.0, 2.0], 1.0, 0.5)
     array([-1.5,  0. ,  2. ])
     """
-    v = np.asarray(v, dtype=float)
-    return coulomb_force * np.sign(v) + viscous_coefficient * v
+    return apply(_k._loop_coulomb_viscous_force, v, coulomb_force, viscous_coefficient)
 
 
 # --------------------------------------------------------------------------------------------
 # Parameter models
 # --------------------------------------------------------------------------------------------
 class CoulombParameters(LawParameters):
-    """Coulomb + viscous friction with pressure scaling (seed 001 Eq. 3)."""
+    """Coulomb + viscous friction with pressure scaling (Heipl & Murrenhoff Eq. 3)."""
 
     law: Literal["coulomb"] = "coulomb"
     coulomb_force: Q("force", ge=0)
@@ -222,7 +250,7 @@ class CoulombParameters(LawParameters):
 
 
 class StribeckParameters(LawParameters):
-    """Stribeck curve with stiction and pressure scaling (seed 001 Eq. 2/3)."""
+    """Stribeck curve with stiction and pressure scaling (Heipl & Murrenhoff Eq. 2/3)."""
 
     law: Literal["stribeck"] = "stribeck"
     coulomb_force: Q("force", ge=0)
@@ -316,15 +344,15 @@ class CoulombViscous(_StaticLaw):
 
 
 class Stribeck(_StaticLaw):
-    """Stribeck curve with stiction and pressure scaling (seed 001 Eq. 2 and 3).
+    """Stribeck curve with stiction and pressure scaling (Heipl & Murrenhoff Eq. 2 and 3).
 
     Sliding (v ≠ 0)::
 
         F = [F_C + (F_S − F_C)·exp(−|v/v_S|^δ)]·sgn(v) + F_v·v
 
     At rest the friction force balances the applied force up to F_S (true sticking, resolved
-    by :mod:`sealsim.friction.hybrid`).  Pressure scaling (seed 001 Eq. 3): the Coulomb level
-    is ``F_C(p) = F_C + f·(p_A + p_B)`` and the static level keeps the break-away ratio,
+    by :mod:`sealsim.friction.hybrid`).  Pressure scaling (Heipl & Murrenhoff Eq. 3): the Coulomb
+    level is ``F_C(p) = F_C + f·(p_A + p_B)`` and the static level keeps the break-away ratio,
     ``F_S(p) = F_S·F_C(p)/F_C`` (as Simscape's Cylinder Friction, where K_brk = F_S/F_C is a
     constant).  With F_C = 0 the static level is shifted by the same amount instead.
 
@@ -333,7 +361,7 @@ class Stribeck(_StaticLaw):
     params : StribeckParameters, optional
         Validated parameters, or keyword arguments (SI floats): ``coulomb_force`` F_C [N],
         ``static_force`` F_S [N], ``stribeck_velocity`` v_S [m/s], ``exponent`` δ [-]
-        (default 1, seed 001 Eq. 2), ``viscous_coefficient`` F_v [N·s/m],
+        (default 1, Heipl & Murrenhoff Eq. 2), ``viscous_coefficient`` F_v [N·s/m],
         ``pressure_coefficient`` f [N/Pa].
 
     Examples
@@ -358,14 +386,9 @@ class Stribeck(_StaticLaw):
 
     def _levels(self, inputs: ContactInputs):
         p = self.params
-        f_c = pressure_scaled_force(p.coulomb_force, p.pressure_coefficient,
-                                    inputs.require("pressure_a", self.name),
-                                    inputs.require("pressure_b", self.name))
-        if p.coulomb_force > 0:
-            f_s = p.static_force * f_c / p.coulomb_force
-        else:
-            f_s = p.static_force + (f_c - p.coulomb_force)
-        return f_c, f_s
+        return stribeck_scaled_levels(p.coulomb_force, p.static_force, p.pressure_coefficient,
+                                      inputs.require("pressure_a", self.name),
+                                      inputs.require("pressure_b", self.name))
 
     def force(self, z, v, inputs: ContactInputs = NO_INPUTS):
         p = self.params

@@ -1,4 +1,4 @@
-"""The Θ rate-and-state friction law of seed 001 (Heipl & Murrenhoff, Carlson–Batista type).
+"""The Θ rate-and-state friction law of Heipl & Murrenhoff (Carlson–Batista type).
 
 A lubrication state Θ ∈ [0, 1] per contact moves between dry/boundary friction (Θ = 0) and
 full hydrodynamic friction (Θ = 1)::
@@ -7,7 +7,7 @@ full hydrodynamic friction (Θ = 1)::
     F     = F_N·[f_a·(1 − Θ) + f_b·Θ]·sgn(v) + γ·b·v                    (seed Eq. 5, [R])
 
 The seed's equations are only partly legible; this is the reconstruction of
-pneumatic_friction.md §1.3 with the following choices (each marked [R], to be checked against
+sealsim's reconstruction with the following choices (each marked [R], to be checked against
 the original paper):
 
 * **State term −Θ/τ** ("melting of the film defined by a time constant"): at rest the film is
@@ -48,13 +48,30 @@ curve, adds pre-sliding, and suits implicit ODE solvers of coupled models (no sw
 Θ stays in [0, 1] exactly: for constant v the state equation is linear and the exact step is a
 convex combination of the old Θ and Θ_ss ∈ [0, 1).
 
+**Temperature.**  γ is the (equivalent) viscosity of the grease (seed Eq. 5): the viscous force
+γ·b·v is the shear of the film, so γ follows the viscosity of the grease's base oil,
+
+    γ(T) = γ_ref·ν(T)/ν(T_ref),   log10 log10(ν + 0.7) = A − B·log10 T   (ASTM D341)
+
+with A, B through the base-oil viscosities at 40 and 100 °C of the grease's datasheet
+(``base_oil_nu40``, ``base_oil_nu100``; :func:`theta_viscous_coefficient`).  ASTM D341 rather
+than an Arrhenius law: through 30 and 100 °C it predicts the measured 60 °C viscosity of the
+machine oils of Stachowiak & Batchelor (Engineering Tribology, Table 2.3) within about 2 %, an
+Arrhenius law only within 10-20 % (a test checks this).  No public source gives the temperature
+dependence of f_a, f_b, τ or α of a pneumatic seal (Heipl & Murrenhoff Fig. 3 shows only the net
+effect), so they are constants; the temperature also acts through F_N and b of the contact maps.
+
 References
 ----------
 .. [1] O. Heipl, H. Murrenhoff, "Rate- and state-dependent friction model for elastomeric
-   seals" (seed 001), Eq. 4 and 5, Fig. 6.
+   seals", Eq. 4 and 5, Fig. 6.
 .. [2] J. M. Carlson, A. A. Batista, "Constitutive relation for the friction between lubricated
    surfaces", Phys. Rev. E 53, 4153, 1996 (model structure [M]).
-.. [3] pneumatic_friction.md §1.3 (reconstruction [R]), §1.4 (Yanada & Sekikawa 2008 [M]).
+.. [3] H. Yanada, Y. Sekikawa, "Modeling of dynamic behaviors of friction", Mechatronics 18,
+   330-339, 2008 (lubricant-film LuGre, the structure of the bristle variant) [M].
+.. [4] ASTM D341-20, viscosity-temperature equations (Walther).
+.. [5] G. W. Stachowiak, A. W. Batchelor, Engineering Tribology, 3rd ed., Elsevier 2005,
+   Table 2.3 (viscosities of mineral oils at 30, 60, 100 °C).
 """
 
 from __future__ import annotations
@@ -62,9 +79,10 @@ from __future__ import annotations
 from typing import Literal
 
 import numpy as np
-from pydantic import model_validator
+from pydantic import Field, model_validator
 
 from sealsim.cases import Q
+from sealsim.friction import kernels as _k
 from sealsim.friction.base import (
     NO_INPUTS,
     ContactInputs,
@@ -76,6 +94,7 @@ from sealsim.friction.base import (
     as_velocity,
     validate_parameters,
 )
+from sealsim.friction.kernels import apply
 from sealsim.friction.lugre import _lugre_affine, lugre_bristle_rate
 
 __all__ = [
@@ -89,6 +108,7 @@ __all__ = [
     "theta_steady_force",
     "theta_step",
     "theta_transition_velocity",
+    "theta_viscous_coefficient",
 ]
 
 
@@ -96,17 +116,9 @@ __all__ = [
 # Pure functions
 # --------------------------------------------------------------------------------------------
 def _load_factor(normal_force, reference_normal_force, load_exponent):
-    """(F_N/F_ref)^n [-]."""
-    return (np.asarray(normal_force, dtype=float) / reference_normal_force) ** load_exponent
-
-
-def _shear_rate(v, tau, alpha, normal_force, reference_normal_force, load_exponent):
-    """r = |v|/α·(F_ref/F_N)^n [1/s] (inf for F_N = 0 while sliding, 0 at rest)."""
-    speed = np.abs(np.asarray(v, dtype=float))
-    p = _load_factor(normal_force, reference_normal_force, load_exponent)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        r = speed / (alpha * p)
-    return np.where(speed > 0, np.where(p > 0, r, np.inf), 0.0)
+    """(F_N/F_ref)^n [-] (:func:`sealsim.friction.kernels.theta_load_factor`)."""
+    return apply(_k._loop_theta_load_factor, normal_force, reference_normal_force,
+                 load_exponent)
 
 
 def theta_transition_velocity(tau, alpha, normal_force, reference_normal_force,
@@ -136,9 +148,8 @@ def theta_transition_velocity(tau, alpha, normal_force, reference_normal_force,
     >>> float(theta_transition_velocity(2.0, 0.1, 200.0, 100.0))
     0.1
     """
-    return np.asarray(alpha, dtype=float) / tau * _load_factor(normal_force,
-                                                               reference_normal_force,
-                                                               load_exponent)
+    return apply(_k._loop_theta_transition_velocity, tau, alpha, normal_force,
+                 reference_normal_force, load_exponent)
 
 
 def theta_rate(theta, v, tau, alpha, normal_force, reference_normal_force, load_exponent=1.0):
@@ -176,9 +187,8 @@ def theta_rate(theta, v, tau, alpha, normal_force, reference_normal_force, load_
     >>> float(theta_rate(0.5, 0.05, 2.0, 0.1, 100.0, 100.0))       # v = v*: steady at 1/2
     0.0
     """
-    theta = np.asarray(theta, dtype=float)
-    p = _load_factor(normal_force, reference_normal_force, load_exponent)
-    return -theta / tau + np.abs(np.asarray(v, dtype=float)) / (alpha * p) * (1.0 - theta)
+    return apply(_k._loop_theta_rate, theta, v, tau, alpha, normal_force, reference_normal_force,
+                 load_exponent)
 
 
 def theta_steady(v, tau, alpha, normal_force, reference_normal_force, load_exponent=1.0):
@@ -199,11 +209,8 @@ def theta_steady(v, tau, alpha, normal_force, reference_normal_force, load_expon
     >>> theta_steady([0.0, 0.05, 0.45], 2.0, 0.1, 100.0, 100.0)
     array([0. , 0.5, 0.9])
     """
-    speed = np.abs(np.asarray(v, dtype=float))
-    v_star = theta_transition_velocity(tau, alpha, normal_force, reference_normal_force,
-                                       load_exponent)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        return np.where(speed > 0, speed / (speed + v_star), 0.0)
+    return apply(_k._loop_theta_steady, v, tau, alpha, normal_force, reference_normal_force,
+                 load_exponent)
 
 
 def theta_step(theta, v, dt, tau, alpha, normal_force, reference_normal_force,
@@ -234,10 +241,9 @@ def theta_step(theta, v, dt, tau, alpha, normal_force, reference_normal_force,
 
 
 def _theta_affine(v, dt, tau, alpha, normal_force, reference_normal_force, load_exponent):
-    r = _shear_rate(v, tau, alpha, normal_force, reference_normal_force, load_exponent)
-    decay = -np.expm1(-(1.0 / tau + r) * dt)           # 1 − e^{−λ dt} in [0, 1]
-    theta_ss = theta_steady(v, tau, alpha, normal_force, reference_normal_force, load_exponent)
-    return 1.0 - decay, theta_ss * decay
+    """(a, b) of the exact step Θ1 = a·Θ0 + b (:func:`sealsim.friction.kernels.theta_affine`)."""
+    return apply(_k._loop_theta_affine, v, dt, tau, alpha, normal_force, reference_normal_force,
+                 load_exponent, outputs=2)
 
 
 def theta_friction_level(theta, normal_force, f_a, f_b):
@@ -266,8 +272,7 @@ def theta_friction_level(theta, normal_force, f_a, f_b):
     >>> theta_friction_level([0.0, 1.0], 100.0, 0.5, 0.1)
     array([50., 10.])
     """
-    theta = np.asarray(theta, dtype=float)
-    return np.asarray(normal_force, dtype=float) * (f_a * (1.0 - theta) + f_b * theta)
+    return apply(_k._loop_theta_friction_level, theta, normal_force, f_a, f_b)
 
 
 def theta_force(theta, v, normal_force, contact_width, f_a, f_b, gamma):
@@ -300,9 +305,7 @@ def theta_force(theta, v, normal_force, contact_width, f_a, f_b, gamma):
     >>> float(theta_force(0.5, 1.0, 100.0, 1e-3, 0.5, 0.1, 1e4))
     40.0
     """
-    v = np.asarray(v, dtype=float)
-    return (theta_friction_level(theta, normal_force, f_a, f_b) * np.sign(v)
-            + gamma * np.asarray(contact_width, dtype=float) * v)
+    return apply(_k._loop_theta_force, theta, v, normal_force, contact_width, f_a, f_b, gamma)
 
 
 def theta_steady_force(v, normal_force, contact_width, tau, alpha, f_a, f_b, gamma,
@@ -362,11 +365,54 @@ def theta_breakaway_after_dwell(dwell, theta0, tau, normal_force, f_a, f_b):
     return theta_friction_level(theta, normal_force, f_a, f_b)
 
 
+def theta_viscous_coefficient(temperature, gamma, reference_temperature, walther_a=0.0,
+                              walther_b=0.0):
+    """Viscous coefficient of the Θ law at temperature T, γ(T) = γ_ref·ν(T)/ν(T_ref).
+
+    .. math:: \\gamma(T) = \\gamma_{ref}\\,\\frac{\\nu(T)}{\\nu(T_{ref})}, \\qquad
+              \\log_{10}\\log_{10}(\\nu + 0.7) = A - B\\log_{10} T
+
+    ν is the kinematic viscosity of the grease's base oil (ASTM D341, ν in mm²/s, T in K);
+    B = 0 gives a constant γ.
+
+    Parameters
+    ----------
+    temperature : array_like
+        Contact temperature T [K].
+    gamma : array_like
+        γ_ref [N·s/m²] at ``reference_temperature``.
+    reference_temperature : array_like
+        T_ref [K].
+    walther_a, walther_b : array_like
+        ASTM D341 constants A, B of the base oil [-]
+        (:func:`sealsim.properties.oils.walther_constants`).
+
+    Returns
+    -------
+    ndarray
+        γ(T) [N·s/m²].
+
+    Examples
+    --------
+    Base oil 110 mm²/s at 40 °C, 11 mm²/s at 100 °C (SKF LGMT 2): γ at 40 °C is
+    γ_ref·ν(40 °C)/ν(25 °C):
+
+    >>> from sealsim.properties.oils import walther_constants
+    >>> A, B = walther_constants(313.15, 110e-6, 373.15, 11e-6)
+    >>> round(float(theta_viscous_coefficient(313.15, 1e4, 298.15, A, B)), 0)
+    3899.0
+    """
+    return np.asarray(gamma, dtype=float) * apply(
+        _k._loop_walther_viscosity_ratio, temperature, reference_temperature, walther_a,
+        walther_b)
+
+
 # --------------------------------------------------------------------------------------------
 # Parameters and law object
 # --------------------------------------------------------------------------------------------
 class ThetaParameters(LawParameters):
-    """Parameters of the Θ law (seed 001 Eq. 4/5 as reconstructed, see module docstring)."""
+    """Parameters of the Θ law (Heipl & Murrenhoff Eq. 4/5 as reconstructed, see module
+    docstring)."""
 
     law: Literal["theta"] = "theta"
     tau: Q("time", gt=0)
@@ -378,9 +424,22 @@ class ThetaParameters(LawParameters):
     load_exponent: Q("dimensionless", ge=0, le=10) = 1.0
     bristle_stiffness: Q("stiffness", gt=0) | None = None
     bristle_damping: Q("damping", ge=0) = 0.0
+    reference_temperature: Q("temperature", gt=0) = Field(293.15, description=(
+        "temperature at which gamma holds (and the other values were identified)"))
+    base_oil_nu40: Q("kinematic_viscosity", gt=0) | None = Field(None, description=(
+        "kinematic viscosity of the grease's base oil at 40 degC (datasheet); with "
+        "base_oil_nu100 it makes gamma follow the base oil's viscosity (ASTM D341)"))
+    base_oil_nu100: Q("kinematic_viscosity", gt=0) | None = Field(None, description=(
+        "kinematic viscosity of the grease's base oil at 100 degC (datasheet)"))
 
     @model_validator(mode="after")
     def _check(self):
+        if (self.base_oil_nu40 is None) != (self.base_oil_nu100 is None):
+            raise ValueError("give both base_oil_nu40 and base_oil_nu100 (or neither)")
+        if self.base_oil_nu40 is not None and self.base_oil_nu40 <= self.base_oil_nu100:
+            raise ValueError(f"base_oil_nu40 ({self.base_oil_nu40 * 1e6:g} mm**2/s) must be "
+                             f"larger than base_oil_nu100 ({self.base_oil_nu100 * 1e6:g} "
+                             "mm**2/s): an oil thins when it is heated")
         if self.bristle_stiffness is not None and (self.f_a <= 0 or self.f_b <= 0):
             raise ValueError("with bristle_stiffness the friction coefficients f_a and f_b must "
                              f"be > 0 (the bristles saturate at F_N*f), got f_a = {self.f_a:g}, "
@@ -391,7 +450,7 @@ class ThetaParameters(LawParameters):
 
 
 class Theta(FrictionLaw):
-    """The Θ rate-and-state law of seed 001 (see the module docstring for the equations).
+    """The Θ rate-and-state law of Heipl & Murrenhoff (see the module docstring for the equations).
 
     States: ``("theta",)``, or ``("theta", "z")`` with bristles (``bristle_stiffness``).
     Inputs: ``normal_force`` F_N [N] (> 0) and ``contact_width`` b [m] (>= 0).
@@ -401,7 +460,8 @@ class Theta(FrictionLaw):
     params : ThetaParameters, optional
         Or keyword arguments (SI): ``tau`` τ [s], ``alpha`` α [m], ``f_a``, ``f_b`` [-],
         ``gamma`` γ [N·s/m²], ``reference_normal_force`` F_ref [N], ``load_exponent`` n [-],
-        ``bristle_stiffness`` σ0 [N/m] (optional), ``bristle_damping`` σ1 [N·s/m].
+        ``bristle_stiffness`` σ0 [N/m] (optional), ``bristle_damping`` σ1 [N·s/m],
+        ``reference_temperature`` T_ref [K], ``base_oil_nu40``, ``base_oil_nu100`` [m²/s].
 
     Examples
     --------
@@ -410,9 +470,16 @@ class Theta(FrictionLaw):
     >>> law.steady_state([0.05], inputs)
     array([[0.5]])
     >>> law.steady_force([0.05], inputs)
-    array([30.5])
+    array([23.])
     >>> law.breakaway_force(np.array([[0.0]]), inputs)
-    array([50.])
+    array([30.])
+
+    The viscous part follows the grease's base oil: at 55 °C γ is about a fifth of its
+    25 °C value.
+
+    >>> hot = ContactInputs(normal_force=100.0, contact_width=1e-3, temperature=328.15)
+    >>> round(float(law.gamma(hot)), 0)
+    1831.0
     """
 
     name = "theta"
@@ -420,6 +487,14 @@ class Theta(FrictionLaw):
     def __init__(self, params: ThetaParameters | None = None, **values):
         self.params = params if params is not None else validate_parameters(
             ThetaParameters, values, "theta parameters")
+        p = self.params
+        #: ASTM D341 constants (A, B) of the base oil; (0, 0): γ independent of temperature
+        self.walther = (0.0, 0.0)
+        if p.base_oil_nu40 is not None:
+            from sealsim.properties.oils import walther_constants
+
+            a, b = walther_constants(313.15, p.base_oil_nu40, 373.15, p.base_oil_nu100)
+            self.walther = (float(a), float(b))
 
     @classmethod
     def from_parameter_set(cls, name: str, **overrides):
@@ -452,6 +527,16 @@ class Theta(FrictionLaw):
         p = self.params
         return (p.tau, p.alpha, self._fn(inputs), p.reference_normal_force, p.load_exponent)
 
+    def gamma(self, inputs: ContactInputs = NO_INPUTS):
+        """Viscous coefficient γ [N·s/m²] at the contact temperature of ``inputs``
+        (:func:`theta_viscous_coefficient`; γ_ref without a temperature or base-oil data)."""
+        p = self.params
+        if inputs.temperature is None or self.walther[1] == 0.0:
+            return p.gamma
+        temperature = inputs.require("temperature", "theta", positive=True)
+        return theta_viscous_coefficient(temperature, p.gamma, p.reference_temperature,
+                                         *self.walther)
+
     def level(self, theta, inputs: ContactInputs):
         """Boundary friction level g_Θ [N] (break-away force at rest)."""
         p = self.params
@@ -483,10 +568,11 @@ class Theta(FrictionLaw):
         v = as_velocity(v)
         z = as_state(z, self.n_states)
         if not self.bristles:
-            return theta_force(z[0], v, self._fn(inputs), self._b(inputs), p.f_a, p.f_b, p.gamma)
+            return theta_force(z[0], v, self._fn(inputs), self._b(inputs), p.f_a, p.f_b,
+                               self.gamma(inputs))
         zdot = lugre_bristle_rate(z[1], v, p.bristle_stiffness, self.level(z[0], inputs))
         return (p.bristle_stiffness * z[1] + p.bristle_damping * zdot
-                + p.gamma * self._b(inputs) * v)
+                + self.gamma(inputs) * self._b(inputs) * v)
 
     def partials(self, z, v, inputs: ContactInputs = NO_INPUTS):
         p = self.params
@@ -503,7 +589,7 @@ class Theta(FrictionLaw):
         if not self.bristles:
             return Partials(d_tt[None, None], d_tv[None],
                             np.broadcast_to(dlevel * np.sign(v), shape)[None].copy(),
-                            np.broadcast_to(p.gamma * b, shape).copy())
+                            np.broadcast_to(self.gamma(inputs) * b, shape).copy())
         s0, s1 = p.bristle_stiffness, p.bristle_damping
         g = self.level(z[0], inputs)
         d_zt = s0 * np.abs(v) * z[1] * dlevel / g ** 2
@@ -516,7 +602,8 @@ class Theta(FrictionLaw):
         dzdv = np.stack([d_tv, np.broadcast_to(d_zv, shape)])
         dfdz = np.stack([np.broadcast_to(s1 * d_zt, shape),
                          np.broadcast_to(s0 + s1 * d_zz, shape)])
-        return Partials(jac, dzdv, dfdz, np.broadcast_to(s1 * d_zv + p.gamma * b, shape).copy())
+        return Partials(jac, dzdv, dfdz,
+                        np.broadcast_to(s1 * d_zv + self.gamma(inputs) * b, shape).copy())
 
     def step(self, z, v, dt, inputs: ContactInputs = NO_INPUTS):
         v = as_velocity(v)
@@ -550,8 +637,8 @@ class Theta(FrictionLaw):
     def steady_force(self, v, inputs: ContactInputs = NO_INPUTS):
         p = self.params
         return theta_steady_force(as_velocity(v), self._fn(inputs), self._b(inputs), p.tau,
-                                  p.alpha, p.f_a, p.f_b, p.gamma, p.reference_normal_force,
-                                  p.load_exponent)
+                                  p.alpha, p.f_a, p.f_b, self.gamma(inputs),
+                                  p.reference_normal_force, p.load_exponent)
 
     def breakaway_force(self, z, inputs: ContactInputs = NO_INPUTS):
         z = as_state(z, self.n_states)

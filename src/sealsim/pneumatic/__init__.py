@@ -1,6 +1,6 @@
-"""Pneumatic cylinder system simulation coupled with seal friction and contact maps (seed 001).
+"""Pneumatic cylinder simulation coupled with seal friction and contact maps (Heipl & Murrenhoff).
 
-Seed 001 (Heipl & Murrenhoff) couples three models: a 1-D system simulation of a pneumatic
+Heipl & Murrenhoff couple three models: a 1-D system simulation of a pneumatic
 drive (valve, cylinder chambers, piston), a dynamic friction law per seal (the Θ rate-and-state
 law) and characteristic diagrams F_N, b of each seal from FE.  This package is the system side:
 
@@ -12,9 +12,12 @@ law) and characteristic diagrams F_N, b of each seal from FE.  This package is t
 * :mod:`.seals` -- a seal = a friction law of :mod:`sealsim.friction` + a contact map;
 * :mod:`.contact_maps` -- F_N and b: FE maps of :mod:`sealsim.structure` (file or built on
   demand and cached) or an analytic O-ring estimate;
-* :mod:`.simulation` -- the coupled stiff ODE (:func:`simulate`);
-* :mod:`.case`, :mod:`.study` -- case files with variants and the result folder of
-  ``sealsim pneumatic run``.
+* :mod:`.seal_heating` -- frictional heating of the seals, the tube and the rod;
+* :mod:`.simulation` -- the coupled stiff ODE (:func:`simulate`), built from :mod:`.system`
+  (the model of a case), :mod:`.rhs` (the compiled right-hand side), :mod:`.integrate`
+  (segments, events, LSODA) and :mod:`.results`;
+* :mod:`.case`, :mod:`.summary`, :mod:`.study` -- case files with variants, the summary numbers
+  and the result folder of ``sealsim pneumatic run``.
 
 Python API (the same as ``sealsim pneumatic run``)::
 
@@ -28,7 +31,9 @@ Python API (the same as ``sealsim pneumatic run``)::
 from sealsim.pneumatic.case import PneumaticCase, build_seals, load_pneumatic_case_file
 from sealsim.pneumatic.contact_maps import AnalyticContactMap, ContactMap, FEContactMap
 from sealsim.pneumatic.seals import Seal
-from sealsim.pneumatic.simulation import PneumaticResult, PneumaticSystem, simulate
+from sealsim.pneumatic.results import PneumaticResult
+from sealsim.pneumatic.simulation import simulate
+from sealsim.pneumatic.system import PneumaticSystem
 
 __all__ = [
     "AnalyticContactMap",

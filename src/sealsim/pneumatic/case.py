@@ -23,7 +23,7 @@ A case (see ``examples/pneumatic/cylinder_32.toml``)::
     [air]
     supply_pressure = "6 bar"        # gauge
     temperature = "25 degC"          # ambient and supply air
-    heat_transfer_coefficient = "30 W/(m**2*K)"
+    heat_transfer_coefficient = "45 W/(m**2*K)"   # the default (sealsim.pneumatic.chambers)
 
     [valve]
     type = "5/2"                     # or "5/3" with centre = "closed" | "exhaust" | "pressure"
@@ -64,8 +64,9 @@ from pydantic import Field, model_validator
 from sealsim.cases import CaseModel, Q, expand_variants, load_toml
 from sealsim.errors import InputError
 from sealsim.friction import make_law
-from sealsim.friction.bench import profile_type
+from sealsim.friction.profiles import profile_type
 from sealsim.friction.case import LawParameters
+from sealsim.pneumatic.chambers import DEFAULT_HEAT_TRANSFER_COEFFICIENT
 from sealsim.pneumatic.contact_maps import (
     AnalyticContactMap,
     FEContactMap,
@@ -78,6 +79,8 @@ __all__ = [
     "CylinderModel",
     "PneumaticCase",
     "SealModel",
+    "SealThermalModel",
+    "ThermalModel",
     "ValveModel",
     "build_seals",
     "load_pneumatic_case_file",
@@ -172,7 +175,11 @@ class AirModel(CaseModel):
     ambient_pressure: Q("pressure", gt=0) = 101325.0
     temperature: _temperature() = 293.15
     supply_temperature: _temperature() | None = None
-    heat_transfer_coefficient: Q("heat_transfer_coefficient", ge=0) = 30.0
+    heat_transfer_coefficient: Q("heat_transfer_coefficient", ge=0) = Field(
+        DEFAULT_HEAT_TRANSFER_COEFFICIENT, description=(
+            "air-wall heat transfer in the chambers (default 45 W/(m**2*K): the polytropic "
+            "exponent 1.2 of Richer & Hurmuzlu 2000 for a stroke of the Ø32 example, see "
+            "sealsim.pneumatic.chambers); 0: adiabatic"))
 
     @property
     def supply_absolute(self) -> float:
@@ -286,6 +293,15 @@ class MapModel(CaseModel):
         return self
 
 
+class SealThermalModel(CaseModel):
+    """What seal heating needs to know about a seal beyond its contact map: the cord
+    diameter (default: the analytic map's) and the elastomer (default: the analytic map's, else
+    NBR) whose density, specific heat and conductivity the catalogue gives."""
+
+    cord_diameter: Q("length", gt=0) | None = None
+    elastomer: str | None = None
+
+
 class SealModel(CaseModel):
     """A seal: where it sits, its friction law and the source of its contact load."""
 
@@ -294,6 +310,25 @@ class SealModel(CaseModel):
     friction: LawParameters
     map: MapModel | None = None
     temperature: _temperature() | None = None
+    thermal: SealThermalModel | None = None
+
+
+class ThermalModel(CaseModel):
+    """Frictional heating of the seals (:mod:`sealsim.pneumatic.seal_heating`): a lumped node
+    per seal, the tube and the rod.  Off by default (the seals keep their temperature, right
+    for short runs: the metal parts heat with time constants of minutes).
+
+    The tube and rod geometry beyond the case's cylinder are engineering estimates [R] that a
+    user should replace: an aluminium profile tube ``tube_wall_thickness`` thick and ``stroke
+    + head_length`` long, a steel rod of the same length; the free convection and radiation to
+    the surroundings are evaluated for ``nominal_temperature_rise`` above the body."""
+
+    seal_heating: bool = True
+    tube_material: Literal["aluminium", "steel"] = "aluminium"
+    rod_material: Literal["aluminium", "steel"] = "steel"
+    tube_wall_thickness: Q("length", gt=0) = 4e-3
+    head_length: Q("length", ge=0) = 0.05
+    nominal_temperature_rise: Q("temperature_difference", gt=0) = 10.0
 
 
 # -- numerics and output ----------------------------------------------------------------------
@@ -330,6 +365,7 @@ class PneumaticCase(CaseModel):
     initial_position: Q("length") | None = None
     solver: SolverModel = SolverModel()
     output: OutputModel = OutputModel()
+    thermal: ThermalModel | None = None
 
     @model_validator(mode="after")
     def _check(self):

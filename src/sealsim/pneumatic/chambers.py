@@ -10,7 +10,7 @@ U = m·c_v·T** (first law for an open system, Richer & Hurmuzlu 2000 [1]_)::
 
 Flows entering carry the enthalpy of their upstream node (c_p·T_supply, or c_p·T_ambient when
 air is sucked back from the exhaust); flows leaving carry the chamber's.  The same equations in
-pressure and temperature (the form of pneumatic_friction.md §3.2 b, used in the literature) are
+pressure and temperature (the form used in the literature, e.g. Richer & Hurmuzlu 2000) are
 :func:`pressure_rate` and :func:`temperature_rate`.
 
 Why (m, U): mass and energy are then *linear* in the states, so a closed chamber conserves its
@@ -20,21 +20,30 @@ dU = −p·dV with p = (γ − 1)U/V, i.e. U·V^(γ−1) = const and p·V^γ = c
 
 **Wall heat transfer.**  Q̇ = h·A_w·(T_wall − T) with the wetted wall area A_w (barrel, end cap,
 piston face) and the wall at the temperature of the cylinder body (the barrel is a large heat
-sink on the time scale of a stroke).  The coefficient h is uncertain: the measured values of
-Carneiro & Almeida [2]_ could not be retrieved (pneumatic_friction.md §3.2, §7).  sealsim's default
-h = 30 W/(m²·K) is an engineering estimate [R]: natural convection of air in a closed vessel
-at 1 bar gives 5–10 W/(m²·K); at 6 bar (h grows about like ρ^(2/3) in turbulent natural
-convection) and with the jet of the inflow stirring the chamber, some tens of W/(m²·K) -- the
-order of magnitude used in pneumatic system models.  h = 0 gives adiabatic chambers.
+sink on the time scale of a stroke; with seal heating it is the tube node of
+:mod:`.seal_heating`).  h = 0 gives adiabatic chambers.
 
+The default h = 45 W/(m²·K) (:data:`DEFAULT_HEAT_TRANSFER_COEFFICIENT`) is derived from a
+published characterisation of actuating pneumatic cylinders: Richer & Hurmuzlu [1]_ model the
+pressure change by piston motion as a polytropic process with the exponent α = 1.2 (between
+isothermal 1 and adiabatic 1.4), from the air temperatures Al-Ibrahim & Otis [2]_ measured in a
+cylinder during charging and discharging.  With h = 45 W/(m²·K) a closed chamber of the Ø32
+example compressed 2:1 in 0.3 s (a typical stroke) follows p·V^1.2 = const
+(:func:`polytropic_exponent`; a test checks it).  Physically this is the order of free plus
+jet-driven convection of air at several bar (10-100 W/(m²·K)).  It is a single constant: a
+faster stroke or a smaller cylinder runs closer to adiabatic.  The measured coefficients of
+Carneiro & de Almeida [3]_ would be the better source; their values could not be retrieved
+for sealsim.
 References
 ----------
 .. [1] E. Richer, Y. Hurmuzlu, "A high performance pneumatic force actuator system: Part I --
-   nonlinear mathematical model", J. Dyn. Sys. Meas. Control 122(3), 416-425, 2000.
-.. [2] J. F. Carneiro, F. G. de Almeida, "Heat transfer evaluation of industrial pneumatic
-   cylinders", Proc. IMechE Part I: J. Systems and Control Engineering (≈ 2007) [M: title as
-   cited in pneumatic_friction.md §3.2; journal details and values not checked here].
-.. [3] pneumatic_friction.md §3.2 (chamber equations in p and T).
+   nonlinear mathematical model", J. Dyn. Sys. Meas. Control 122(3), 416-425, 2000
+   (chamber equations, α_in = 1.4, α_out = 1, α = 1.2).
+.. [2] A. M. Al-Ibrahim, D. R. Otis, "Transient air temperature and pressure measurements
+   during the charging and discharging processes of an actuating pneumatic cylinder", Proc.
+   45th National Conference on Fluid Power, 1992 (as cited by [1]).
+.. [3] J. F. Carneiro, F. G. de Almeida, "Heat transfer evaluation of industrial pneumatic
+   cylinders", Proc. IMechE Part I: J. Systems and Control Engineering 221(1), 119-128, 2007.
 """
 
 from __future__ import annotations
@@ -42,6 +51,7 @@ from __future__ import annotations
 import numpy as np
 
 __all__ = [
+    "DEFAULT_HEAT_TRANSFER_COEFFICIENT",
     "AIR_GAS_CONSTANT",
     "AIR_HEAT_CAPACITY_RATIO",
     "AIR_CP",
@@ -52,6 +62,7 @@ __all__ = [
     "gas_pressure",
     "gas_temperature",
     "internal_energy",
+    "polytropic_exponent",
     "pressure_rate",
     "temperature_rate",
     "wall_heat_flow",
@@ -65,6 +76,22 @@ AIR_HEAT_CAPACITY_RATIO = 1.4
 AIR_CV = AIR_GAS_CONSTANT / (AIR_HEAT_CAPACITY_RATIO - 1.0)
 #: Specific heat at constant pressure c_p = γ·R/(γ − 1) [J/(kg·K)]
 AIR_CP = AIR_HEAT_CAPACITY_RATIO * AIR_CV
+#: Default wall heat-transfer coefficient of the chamber air [W/(m²·K)] (module docstring:
+#: the polytropic exponent 1.2 of Richer & Hurmuzlu 2000 for a 0.3 s stroke of the Ø32 example)
+DEFAULT_HEAT_TRANSFER_COEFFICIENT = 45.0
+
+
+def polytropic_exponent(p_start, p_end, v_start, v_end):
+    """Effective polytropic exponent n of a closed-gas process, p·V^n = const between two
+    states: n = −ln(p_end/p_start)/ln(V_end/V_start).
+
+    Examples
+    --------
+    >>> round(float(polytropic_exponent(1e5, 1e5 * 2 ** 1.4, 2e-5, 1e-5)), 12)   # adiabatic 2:1
+    1.4
+    """
+    return -np.log(np.asarray(p_end, dtype=float) / p_start) / np.log(
+        np.asarray(v_end, dtype=float) / v_start)
 
 
 def gas_pressure(internal_energy, volume):
@@ -233,7 +260,7 @@ def chamber_energy_rate(enthalpy_in, enthalpy_out, pressure, volume_rate, heat_f
 
 def pressure_rate(pressure, volume, volume_rate, inflow, inflow_temperature, outflow,
                   temperature, heat_flow=0.0):
-    """dp/dt of a chamber (energy equation in pressure form, pneumatic_friction.md §3.2 b).
+    """dp/dt of a chamber (energy equation in pressure form, Richer & Hurmuzlu 2000).
 
     .. math:: \\dot p = -\\gamma p \\frac{\\dot V}{V}
               + \\frac{\\gamma R}{V}(T_{in} G_{in} - T G_{out})
@@ -262,7 +289,7 @@ def pressure_rate(pressure, volume, volume_rate, inflow, inflow_temperature, out
     References
     ----------
     Richer & Hurmuzlu (2000); a public Julia pneumatic cylinder script after Carneiro & Almeida
-    (pneumatic_friction.md §3.2 b).
+    (Carneiro & de Almeida 2006 also write it so).
 
     Examples
     --------
@@ -279,7 +306,7 @@ def pressure_rate(pressure, volume, volume_rate, inflow, inflow_temperature, out
 
 def temperature_rate(pressure, volume, volume_rate, inflow, inflow_temperature, outflow,
                      temperature, heat_flow=0.0):
-    """dT/dt of a chamber (energy equation in temperature form, pneumatic_friction.md §3.2 b).
+    """dT/dt of a chamber (energy equation in temperature form, Richer & Hurmuzlu 2000).
 
     .. math:: \\dot T = (1-\\gamma) T \\frac{\\dot V}{V}
               + \\frac{R T}{p V}\\left[G_{in}(\\gamma T_{in} - T) - (\\gamma - 1) T G_{out}\\right]

@@ -51,6 +51,8 @@ from typing import Any, Protocol, runtime_checkable
 
 import numpy as np
 
+from numba import njit
+
 from sealsim.errors import InputError
 from sealsim.pneumatic._jit import jit
 from sealsim.properties.elastomers import TEMPERATURE_SCALINGS, entropic_modulus, get_elastomer
@@ -427,20 +429,39 @@ class FEContactMap:
                              f" ({lo:g} … {hi:g})")
 
     def evaluate(self, pressure_difference, temperature):
-        """(F_N [N], b [m]); scalars use the map's fast scalar path."""
-        (plo, phi), (tlo, thi) = self.ranges["pressure"], self.ranges["temperature"]
-        if np.size(pressure_difference) == 1 and np.size(temperature) == 1:
-            p = min(max(float(np.ravel(pressure_difference)[0]), plo), phi)
-            t = min(max(float(np.ravel(temperature)[0]), tlo), thi)
-            fn, b = self.seal_map.evaluate(p, t, self.squeeze)
-            if np.ndim(pressure_difference) == 0:
-                return fn, b
-            shape = np.shape(pressure_difference)
-            return np.full(shape, fn), np.full(shape, b)
-        p = np.clip(pressure_difference, plo, phi)
-        t = np.clip(temperature, tlo, thi)
-        fn, b = self.seal_map.evaluate(p, t, self.squeeze)
-        return np.asarray(fn, dtype=float), np.asarray(b, dtype=float)
+        """(F_N [N], b [m]) at Δp [Pa] and T [K], both clamped to the map (vectorised; the
+        compiled kernel :func:`hermite_grid_point`)."""
+        row, data = self.tables()
+        if np.ndim(pressure_difference) == 0 and np.ndim(temperature) == 0:
+            fn, b, _ = hermite_grid_point(row, data, float(pressure_difference),
+                                          float(temperature))
+            return fn, b
+        p, t = (np.array(a, dtype=float) for a in np.broadcast_arrays(
+            np.asarray(pressure_difference, dtype=float), np.asarray(temperature, dtype=float)))
+        fn, b = np.empty(p.shape), np.empty(p.shape)
+        _hermite_grid_many(row, data, p.reshape(-1), t.reshape(-1), fn.reshape(-1),
+                           b.reshape(-1))
+        return fn, b
+
+    def tables(self):
+        """The map as the (int row, float data) of :func:`hermite_grid_point` (built once)."""
+        cached = self.__dict__.get("_tables")
+        if cached is None:
+            m = self.seal_map
+            grid = getattr(m, "_grid", None)
+            if grid is None:       # rebuild the interpolant from the map's public data
+                from sealsim.structure.maps import HermiteGrid
+
+                data = np.stack([m.dataset[v].transpose(*m.dims).values for v in m.variables],
+                                axis=-1)
+                index = tuple(slice(None) if d in m.active else 0 for d in m.dims)
+                grid = HermiteGrid([m.coords[d] for d in m.active], data[index])
+            cached = self.__dict__["_tables"] = grid_tables(
+                grid, [GRID_ROLES[d] for d in m.active],
+                self.squeeze if self.squeeze is not None else float("nan"),
+                self.ranges["pressure"], self.ranges["temperature"],
+                m.variables.index("F_N"), m.variables.index("b"))
+        return cached
 
     def loads_function(self, temperature: float):
         """``f(Δp) -> (F_N, b)`` at a fixed temperature T [K]."""
@@ -534,3 +555,131 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
         dataset = compute_map(case, workers=workers, progress=progress, case_text=text)
         atomic_write_bytes(target, dataset.to_netcdf())
     return FEContactMap.from_file(target, squeeze=squeeze)
+
+
+# -- compiled Hermite grid (the FE maps and tabulated maps in the pneumatic right-hand side) --
+#: role of a grid axis: the squeeze (fixed per seal), the temperature or the pressure difference
+GRID_ROLES = {"squeeze": 0, "temperature": 1, "pressure": 2}
+#: columns of a map's int row: kind (2 = grid), data offset, number of axes, role and length of
+#: each of up to three axes, number of variables, index of F_N and of b among them
+GRID_KIND = 2
+_ROW = 12
+
+
+def grid_tables(grid, roles, squeeze, pressure_range, temperature_range, fn_index, b_index):
+    """The (int row, float data) of a :class:`sealsim.structure.maps.HermiteGrid` for
+    :func:`hermite_grid_point`.
+
+    ``data`` = [squeeze, p_lo, p_hi, T_lo, T_hi, axes..., cell coefficients
+    (cells, 4^d, nvars) flattened]; the row holds the layout (``_ROW`` int64 columns).
+    """
+    if grid.ndim > 3:
+        raise InputError(f"a contact map has at most 3 axes, got {grid.ndim}")
+    row = np.zeros(_ROW, dtype=np.int64)
+    row[0], row[1], row[2] = GRID_KIND, 0, grid.ndim
+    for k, (axis, role) in enumerate(zip(grid.axes, roles)):
+        row[3 + k] = role
+        row[6 + k] = axis.size
+    row[9], row[10], row[11] = grid.nvars, fn_index, b_index
+    head = [squeeze, pressure_range[0], pressure_range[1], temperature_range[0],
+            temperature_range[1]]
+    data = np.concatenate([np.asarray(head, dtype=float)] + [np.asarray(a, float) for a in
+                                                             grid.axes]
+                          + [np.ascontiguousarray(grid.coeff, dtype=float).reshape(-1)])
+    return row, data
+
+
+@njit(cache=True)
+def _basis(t, q):
+    """Cubic Hermite basis function q (h00, h10, h01, h11) at t in [0, 1]."""
+    t2 = t * t
+    t3 = t2 * t
+    if q == 0:
+        return 2 * t3 - 3 * t2 + 1
+    if q == 1:
+        return t3 - 2 * t2 + t
+    if q == 2:
+        return -2 * t3 + 3 * t2
+    return t3 - t2
+
+
+@njit(cache=True)
+def hermite_grid_point(row, data, pressure, temperature):
+    """(F_N [N], b [m], clipped) of a gridded contact map at Δp [Pa] and T [K].
+
+    The C¹ tensor-product cubic Hermite interpolant of
+    :class:`sealsim.structure.maps.HermiteGrid` (PCHIP node slopes; the same cell
+    coefficients), on the axes of the map (squeeze, temperature, pressure, each if it varies).
+    Δp and T are clamped to the map (it is never extrapolated); ``clipped`` is 1.0 when T was
+    outside the temperature range.  ``row``/``data``: :func:`grid_tables`.
+    """
+    o = row[1]
+    d = row[2]
+    plo, phi, tlo, thi = data[o + 1], data[o + 2], data[o + 3], data[o + 4]
+    p = min(max(pressure, plo), phi)
+    t = min(max(temperature, tlo), thi)
+    clipped = 1.0 if abs(t - temperature) > 1e-9 * max(abs(temperature), 1.0) else 0.0
+    pos = o + 5
+    cell = 0
+    i0 = i1 = i2 = 0
+    u0 = u1 = u2 = 0.0
+    for k in range(d):
+        role = row[3 + k]
+        n = row[6 + k]
+        axis = data[pos:pos + n]
+        x = data[o] if role == 0 else (t if role == 1 else p)
+        i = np.searchsorted(axis, x, side="right") - 1
+        if i < 0:
+            i = 0
+        elif i >= n - 1:
+            i = n - 2
+        u = (x - axis[i]) / (axis[i + 1] - axis[i])
+        cell = cell * (n - 1) + i
+        if k == 0:
+            i0, u0 = i, u
+        elif k == 1:
+            i1, u1 = i, u
+        else:
+            i2, u2 = i, u
+        pos += n
+    nvars = row[9]
+    nb = 4 ** d
+    fn = 0.0
+    b = 0.0
+    base = pos + cell * nb * nvars
+    for j in range(nb):
+        if d == 1:
+            w = _basis(u0, j)
+        elif d == 2:
+            w = _basis(u0, j // 4) * _basis(u1, j % 4)
+        else:
+            w = _basis(u0, j // 16) * _basis(u1, (j // 4) % 4) * _basis(u2, j % 4)
+        fn += w * data[base + j * nvars + row[10]]
+        b += w * data[base + j * nvars + row[11]]
+    return fn, b, clipped
+
+
+@njit(cache=True)
+def _hermite_grid_many(row, data, pressure, temperature, fn, b):
+    for k in range(pressure.shape[0]):
+        fn[k], b[k], _ = hermite_grid_point(row, data, pressure[k], temperature[k])
+
+
+def tabulated_map_tables(contact_map, temperature_range, pressures=33, temperatures=25):
+    """A contact map tabulated on a (temperature, Δp) grid and interpolated like an FE map:
+    how a heated seal evaluates any map whose own evaluation is not compiled (the analytic
+    estimate at a varying temperature).  Returns the (row, data) of :func:`grid_tables`.
+
+    The Δp points are denser at low pressure (quadratic spacing), where the O-ring's
+    energisation bends the curve most.
+    """
+    from sealsim.structure.maps import HermiteGrid
+
+    (plo, phi) = contact_map.ranges["pressure"]
+    tlo, thi = temperature_range
+    p = plo + (phi - plo) * np.linspace(0.0, 1.0, pressures) ** 2
+    t = np.linspace(tlo, thi, temperatures)
+    tt, pp = np.meshgrid(t, p, indexing="ij")
+    fn, b = contact_map.evaluate(pp, tt)
+    grid = HermiteGrid([t, p], np.stack([np.asarray(fn, float), np.asarray(b, float)], axis=-1))
+    return grid_tables(grid, [1, 2], float("nan"), (plo, phi), (tlo, thi), 0, 1)

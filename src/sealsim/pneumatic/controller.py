@@ -1,12 +1,12 @@
 """The controller: a PLC cycle of valve commands, or a prescribed piston position (test rig).
 
-**PLC cycle** (seed 001 Fig. 5: the PLC "triggers the valve with a typical driving cycle"):
-a list of steps, each a valve command held for a duration -- e.g. extend 1 s, retract 1 s, a
-rectangular signal; a dwell is a step with the valve in its centre position (5/3) or simply a
+**PLC cycle** (Heipl & Murrenhoff Fig. 5: the PLC "triggers the valve with a typical driving
+cycle"): a list of steps, each a valve command held for a duration -- e.g. extend 1 s, retract 1 s,
+a rectangular signal; a dwell is a step with the valve in its centre position (5/3) or simply a
 longer step.  The cycle repeats until the end of the simulated time.
 
-**Prescribed position** (friction test rigs, seed 001 Fig. 11: the tube is driven by a crank,
-the pressurised test seal sits on a fixed piston): the piston position x(t) is given (a
+**Prescribed position** (friction test rigs, Heipl & Murrenhoff Fig. 11: the tube is driven by a
+crank, the pressurised test seal sits on a fixed piston): the piston position x(t) is given (a
 harmonic crank motion or a piecewise-linear profile), the chambers still follow the valve,
 and the friction of each seal is what the rig's force sensor reads.
 
@@ -22,7 +22,7 @@ import numpy as np
 
 from sealsim.errors import InputError
 
-__all__ = ["COMMANDS", "CommandSchedule"]
+__all__ = ["COMMANDS", "CommandSchedule", "command_schedule"]
 
 #: spool target of each command
 COMMANDS = {"extend": 1.0, "retract": -1.0, "centre": 0.0}
@@ -100,3 +100,14 @@ class CommandSchedule:
                 end = self.times[k + 1] if k + 1 < len(self.times) else np.inf
                 out.append((float(self.times[k]), float(end)))
         return out
+
+
+def command_schedule(case) -> CommandSchedule:
+    """The valve commands of a pneumatic case: its PLC cycle, or (position mode) the command
+    held from t = 0."""
+    ctrl = case.controller
+    if ctrl.mode == "cycle":
+        return CommandSchedule.from_cycle([(s.command, s.duration) for s in ctrl.steps],
+                                          ctrl.duration, initial=ctrl.initial_command)
+    u = COMMANDS[ctrl.command]
+    return CommandSchedule(np.array([0.0]), np.array([u]), u)

@@ -5,7 +5,7 @@ Conventions: the piston position x [m] runs from 0 (retracted, against the cap) 
 A1 = π/4·D²; chamber 2 (port B) the rod side with the annulus A2 = π/4·(D² − d²).  The rod leaves
 the cylinder into the atmosphere, which pushes on the rod cross-section A_r = A1 − A2.
 
-Piston dynamics (seed 001 Eq. 1; Richer & Hurmuzlu 2000)::
+Piston dynamics (Heipl & Murrenhoff Eq. 1; Richer & Hurmuzlu 2000)::
 
     M·dv/dt = p1·A1 − p2·A2 − p_a·A_r − F_load(x, v) − F_friction + F_stop(x, v)
 
@@ -13,8 +13,8 @@ with the moving mass M = piston and rod + load mass, the load force F_load (cons
 spring, gravity with the orientation of the axis) and the end-stop contact force F_stop.
 
 **End stops** are stiff spring–damper contacts (elastic bumper rings), not velocity resets (the
-reinit approach of Modelica's MassWithStopAndFriction is fragile, pneumatic_friction.md §3.1,
-§5).  With the penetration δ > 0 into a stop::
+reinit approach of Modelica's MassWithStopAndFriction is fragile: Modelica Standard Library
+issues #20 and #4403).  With the penetration δ > 0 into a stop::
 
     F_stop = max(0, k·δ + c·δ̇·δ/(δ + δ_c))
 
@@ -24,7 +24,8 @@ against a stop under a force F sits at δ = F/k.
 
 References
 ----------
-.. [1] O. Heipl, H. Murrenhoff, seed 001, Eq. 1.
+.. [1] O. Heipl, H. Murrenhoff, "Rate- and state-dependent friction model for elastomeric
+   seals", Eq. 1.
 .. [2] E. Richer, Y. Hurmuzlu, J. Dyn. Sys. Meas. Control 122(3), 416-425, 2000.
 .. [3] K. H. Hunt, F. R. E. Crossley, "Coefficient of restitution interpreted as damping in
    vibroimpact", J. Appl. Mech. 42(2), 440-445, 1975.

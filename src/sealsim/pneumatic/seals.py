@@ -1,7 +1,7 @@
 """Seals of the cylinder: a friction law plus the source of its contact load.
 
-Seed 001 Fig. 1: piston seals separate the chambers, the rod seal separates chamber 2 from the
-atmosphere, the wiper keeps dirt out (no pressure across it).  Every seal is a
+Heipl & Murrenhoff Fig. 1: piston seals separate the chambers, the rod seal separates chamber 2
+from the atmosphere, the wiper keeps dirt out (no pressure across it).  Every seal is a
 :class:`~sealsim.friction.base.FrictionLaw` of :mod:`sealsim.friction` (Coulomb, Stribeck,
 LuGre, Dahl, GMS, Θ) with the inputs of :class:`~sealsim.friction.base.ContactInputs`:
 
@@ -9,14 +9,15 @@ LuGre, Dahl, GMS, Θ) with the inputs of :class:`~sealsim.friction.base.ContactI
   (:mod:`.contact_maps`) at the pressure difference across the seal
   (:func:`seal_pressure_difference`) and the seal temperature;
 * ``pressure_a``, ``pressure_b``: the gauge pressures on the two sides
-  (:func:`seal_side_pressures`, for the pressure scaling F_C = F_pr + f·(p_A + p_B) of seed 001
-  Eq. 3 in the Stribeck and Coulomb laws);
+  (:func:`seal_side_pressures`, for the pressure scaling F_C = F_pr + f·(p_A + p_B) of Heipl &
+  Murrenhoff Eq. 3 in the Stribeck and Coulomb laws);
 * ``temperature``: the seal temperature.
 
-All seals slide with the piston velocity v.  Seal temperature: the seal bulk follows the
-temperature of the cylinder (the test rig of seed 001 heats the whole assembly) -- it is a
-constant per seal here; the chamber air temperature changes within a stroke (seconds) and is not
-coupled to the seal, whose thermal time constant is minutes (pneumatic_friction.md §3.2).
+All seals slide with the piston velocity v.  Seal temperature: by default the seal bulk keeps
+the temperature of the cylinder (the test rig of Heipl & Murrenhoff heats the whole assembly), a
+constant per seal -- right for short runs, since the metal parts that set the seal temperature heat
+with time constants of minutes; with seal heating (:mod:`.seal_heating`) each seal is a thermal node
+heated by its friction.
 """
 
 from __future__ import annotations
@@ -94,7 +95,7 @@ def pressure_difference(code, p1, p2, ambient_pressure, eps=1e3):
 
 
 def seal_side_pressures(location, p1, p2, ambient_pressure):
-    """Gauge pressures (p_A, p_B) on the two sides of a seal [Pa] (seed 001 Eq. 3 inputs).
+    """Gauge pressures (p_A, p_B) on the two sides of a seal [Pa] (Heipl & Murrenhoff Eq. 3 inputs).
 
     Piston seal: (p1 − p_a, p2 − p_a); rod seal: (p2 − p_a, 0); wiper: (0, 0).
 

@@ -3,151 +3,27 @@
 ``run_case_file`` is what ``sealsim pneumatic run`` calls; it can be used from Python as well.
 The folder gets ``timeseries.csv`` (all variants, long format with a ``variant`` column),
 ``summary.json`` (``{"variants": {NAME: {...}}}``), ``case_resolved.toml`` and the figures
-(``pressure_stroke.png`` like seed 001 Fig. 10, ``friction_stroke.png`` like Figs. 12/13,
-``friction_velocity.png``, ``timeseries_<variant>.png``).
+(``pressure_stroke.png`` like Heipl & Murrenhoff Fig. 10, ``friction_stroke.png`` like Figs. 12/13,
+``friction_velocity.png``, ``timeseries_<variant>.png``; with seal heating also
+``heating_<variant>.png`` and ``strokes_<variant>.csv``, the drift stroke by stroke).
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 from pathlib import Path
-from typing import Any
-
-import numpy as np
 import pandas as pd
 
 from sealsim import __version__
 from sealsim.cases import dump_variants_toml
 from sealsim.output import ResultFolder, run_variants
 from sealsim.pneumatic.case import PneumaticCase, build_seals, load_pneumatic_case_file
-from sealsim.pneumatic.simulation import TIMESERIES_COLUMNS, PneumaticResult, simulate
+from sealsim.pneumatic.results import TIMESERIES_COLUMNS, PneumaticResult
+from sealsim.pneumatic.simulation import simulate
+from sealsim.pneumatic.summary import DEFINITIONS, end_position_times, per_stroke, summarize
 
 __all__ = ["DEFINITIONS", "end_position_times", "run_case_file", "run_cases", "summarize",
            "write_results"]
-
-#: the end positions count as reached within this fraction of the stroke
-END_TOLERANCE = 0.01
-#: the piston counts as moving above this speed [m/s] (for the mean friction)
-MOVING_SPEED = 1e-3
-
-#: how the summary numbers are defined (written into summary.json)
-DEFINITIONS = {
-    "extend_time_s": "mean over the extend commands of the time from the command to the "
-                     f"piston reaching {100 * (1 - END_TOLERANCE):g} % of the stroke",
-    "retract_time_s": "mean over the retract commands of the time from the command to the "
-                      f"piston reaching {100 * END_TOLERANCE:g} % of the stroke",
-    "mean_friction_N": "mean of |total friction of all seals| while the piston moves "
-                       f"(|v| > {MOVING_SPEED * 1e3:g} mm/s)",
-    "peak_friction_N": "largest |total friction of all seals| over the run (at rest: the "
-                       "part of the holding force the seals carry)",
-    "air_consumption_NL": "air taken from the supply, normal litres at the ISO 8778 reference "
-                          "atmosphere (ANR: 20 degC, 100 kPa)",
-    "mass_balance_rel_error": "|change of the air mass - (supply - exhaust)| / mass "
-                              "throughput",
-    "energy_balance_rel_error": "|change of (air internal energy + kinetic energy) - "
-                                "(enthalpy + wall heat + work of load, atmosphere and stops - "
-                                "friction work)| / energy throughput",
-}
-
-
-def end_position_times(time, position, stroke, windows, target):
-    """Times from each command to the end position it drives to.
-
-    Parameters
-    ----------
-    time, position : ndarray
-        Samples t [s], x [m].
-    stroke : float
-        L [m].
-    windows : list of (start, end)
-        Issue time of each command and the time of the next one [s].
-    target : {"extend", "retract"}
-        End position (x >= (1 − tol)·L, or x <= tol·L).
-
-    Returns
-    -------
-    list of float
-        One time [s] per command that started away from the end position and reached it
-        before the next command.
-
-    Examples
-    --------
-    >>> t = np.linspace(0.0, 1.0, 101)
-    >>> x = np.clip(0.2 * t, 0.0, 0.1)
-    >>> end_position_times(t, x, 0.1, [(0.0, 1.0)], "extend")
-    [0.5]
-    """
-    level = stroke * (1.0 - END_TOLERANCE) if target == "extend" else stroke * END_TOLERANCE
-    reached = position >= level if target == "extend" else position <= level
-    out = []
-    for start, end in windows:
-        inside = (time >= start) & (time < end)
-        if not inside.any() or reached[np.argmax(inside)]:
-            continue
-        hits = np.flatnonzero(inside & reached)
-        if hits.size:
-            i = hits[0]   # linear interpolation of the crossing between samples i-1 and i
-            t_hit = time[i] - (time[i] - time[i - 1]) * (position[i] - level) / (
-                position[i] - position[i - 1])
-            out.append(round(float(t_hit - start), 9))
-    return out
-
-
-def summarize(result: PneumaticResult) -> dict[str, Any]:
-    """The numbers of ``summary.json`` for one variant (see :data:`DEFINITIONS`)."""
-    frame = result.timeseries
-    case = result.case
-    t = frame["time_s"].to_numpy()
-    x = frame["x_m"].to_numpy()
-    v = frame["v_m_s"].to_numpy()
-    friction = frame["F_friction_N"].to_numpy()
-    moving = np.abs(v) > MOVING_SPEED
-    summary: dict[str, Any] = {}
-    if case.controller.mode == "cycle":
-        from sealsim.pneumatic.simulation import PneumaticSystem
-
-        schedule = PneumaticSystem.schedule_of(case)
-        ext = end_position_times(t, x, case.cylinder.stroke, schedule.windows(1.0), "extend")
-        ret = end_position_times(t, x, case.cylinder.stroke, schedule.windows(-1.0), "retract")
-        summary["extend_time_s"] = float(np.mean(ext)) if ext else None
-        summary["retract_time_s"] = float(np.mean(ret)) if ret else None
-        summary["extend_times_s"] = ext
-        summary["retract_times_s"] = ret
-    else:
-        summary["extend_time_s"] = summary["retract_time_s"] = None
-    summary["mean_friction_N"] = float(np.mean(np.abs(friction[moving]))) if moving.any() \
-        else None
-    summary["peak_friction_N"] = float(np.max(np.abs(friction)))
-    b = result.balances
-    summary["air_consumption_NL"] = b["air_consumption_NL"]
-    summary["mass_balance_rel_error"] = b["mass_balance_rel_error"]
-    summary["energy_balance_rel_error"] = b["energy_balance_rel_error"]
-    summary["friction_work_J"] = b["friction_work_J"]
-    summary["peak_speed_m_s"] = float(np.max(np.abs(v)))
-    summary["pressure_range_bar"] = [float(min(frame["p1_bar"].min(), frame["p2_bar"].min())),
-                                     float(max(frame["p1_bar"].max(), frame["p2_bar"].max()))]
-    summary["air_temperature_range_C"] = [float(min(frame["T1_C"].min(), frame["T2_C"].min())),
-                                          float(max(frame["T1_C"].max(), frame["T2_C"].max()))]
-    seals = {}
-    for name in result.seal_names:
-        f = frame[f"F_{name}_N"].to_numpy()
-        entry = {"mean_friction_N": float(np.mean(np.abs(f[moving]))) if moving.any() else None,
-                 "peak_friction_N": float(np.max(np.abs(f)))}
-        if f"F_N_{name}_N" in frame:
-            fn = frame[f"F_N_{name}_N"].to_numpy()
-            entry["normal_force_range_N"] = [float(fn.min()), float(fn.max())]
-            entry["contact_width_range_mm"] = [float(frame[f"b_{name}_mm"].min()),
-                                               float(frame[f"b_{name}_mm"].max())]
-        if f"theta_{name}" in frame:
-            entry["theta_range"] = [float(frame[f"theta_{name}"].min()),
-                                    float(frame[f"theta_{name}"].max())]
-        seals[name] = entry
-    summary["seals"] = seals
-    summary["balances"] = b
-    summary["solver"] = {k: (round(v, 4) if isinstance(v, float) else v)
-                         for k, v in result.stats.items()}
-    summary["notes"] = list(result.notes)
-    return summary
 
 
 def run_cases(cases: dict[str, PneumaticCase], base_dir: str | Path = ".",
@@ -197,6 +73,7 @@ def write_results(folder: ResultFolder, results: dict[str, PneumaticResult],
     from sealsim.plotting.pneumatic import (
         friction_stroke_figure,
         friction_velocity_figure,
+        heating_figure,
         pressure_stroke_figure,
         timeseries_figure,
     )
@@ -218,9 +95,19 @@ def write_results(folder: ResultFolder, results: dict[str, PneumaticResult],
     title = first.title
     strokes = {name: r.case.cylinder.stroke for name, r in results.items()}
     folder.savefig("pressure_stroke.png", pressure_stroke_figure(frames, title))
-    folder.savefig("friction_stroke.png", friction_stroke_figure(frames, strokes, title))
-    folder.savefig("friction_velocity.png", friction_velocity_figure(frames, title))
+    periods = {name: r.case.controller.position.period() for name, r in results.items()
+               if r.case.controller.mode == "position"}
+    folder.savefig("friction_stroke.png", friction_stroke_figure(frames, strokes, title,
+                                                                 periods))
+    folder.savefig("friction_velocity.png", friction_velocity_figure(frames, title, periods))
     for name, r in results.items():
+        heated = r.case.thermal is not None and r.case.thermal.seal_heating
+        if heated and r.case.controller.mode == "cycle":
+            strokes = per_stroke(r.timeseries, r.case.cylinder.stroke, r.seal_columns)
+            folder.write_csv(f"strokes_{name}.csv", strokes, float_format="%.7g")
+            folder.savefig(f"heating_{name}.png", heating_figure(
+                r.timeseries, strokes, r.seal_columns,
+                f"{title} -- {name}" if title else name))
         folder.savefig(f"timeseries_{name}.png",
-                       timeseries_figure(r.timeseries, r.seal_names,
+                       timeseries_figure(r.timeseries, r.seal_columns,
                                          f"{title} -- {name}" if title else name))

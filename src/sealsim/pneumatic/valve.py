@@ -12,7 +12,7 @@ model with the sonic conductance C [m³/(s·Pa)] and the critical pressure ratio
 
 with the ISO 8778 reference atmosphere (ANR: T0 = 293.15 K, p0 = 100 kPa, ρ0 = 1.185 kg/m³),
 subsonic index m = 0.5 and the laminar linearisation above β_lam = 0.999 that removes the
-infinite slope dG/dp at Δp = 0 (as in Simscape's ISO 6358 orifice; pneumatic_friction.md §3.3).
+infinite slope dG/dp at Δp = 0 (as in Simscape's "Constant Area Pneumatic Orifice (ISO 6358)").
 
 A valve is a set of such paths (P→A, A→R, P→B, B→R) whose conductances are the nominal C times
 the *opening* of the path (0…1), a function of the spool position s ∈ [−1, 1]
@@ -30,8 +30,7 @@ References
 .. [3] F. E. Sanville, "A new method of specifying the flow capacity of pneumatic fluid power
    valves", 2nd Int. Fluid Power Symp., BHRA, 1971.
 .. [4] SMC, "Flow-rate characteristics" (ISO 6358 worked example: C = 2 dm³/(s·bar), b = 0.3,
-   0.4 → 0.3 MPa gauge at 20 °C: 600 dm³/min ANR choked, 420 dm³/min at that ratio)
-   (pneumatic_friction.md §3.3 [V]).
+   0.4 → 0.3 MPa gauge at 20 °C: 600 dm³/min ANR choked, 420 dm³/min at that ratio).
 """
 
 from __future__ import annotations

@@ -1,0 +1,480 @@
+r"""Compiled scalar kernels of the friction laws: the one implementation of each law.
+
+Every law of :mod:`sealsim.friction` is computed by the small scalar functions below, compiled
+with numba (``njit``, ``cache=True``, IEEE arithmetic: no fastmath, numpy error model, so a
+division by zero gives ``inf`` as in C).  They are used three ways:
+
+* by the vectorised public functions of the law modules (``theta_rate``, ``lugre_force``, ...)
+  through the array loops at the end of this module -- and so by the law classes;
+* directly by the compiled right-hand side of the pneumatic cylinder
+  (:mod:`sealsim.pneumatic.rhs`);
+* as the reference that C ports (FMU export) are tested against: each kernel takes and returns
+  plain doubles in the argument order documented here, SI units, and is a few lines long.
+
+Conventions (all kernels): v is the sliding velocity [m/s] of the body relative to the seal,
+the friction force F [N] opposes it (power dissipated F·v >= 0 when sliding);
+sgn(0) = 0 (:func:`sgn`).  Parameters that a kernel does not check (e.g. τ > 0) are validated
+by the parameter models of the law modules.
+
+Kernels and their equations (H&M: Heipl & Murrenhoff [1]_)
+------------------------------------------------------------
+=================================================  ===============================================
+kernel (arguments)                                 returns
+=================================================  ===============================================
+``sgn(x)``                                         +1, −1 or 0
+``pressure_scaled_force(f0, f, pa, pb)``           F_pr + f·(p_A + p_B)              (H&M Eq. 3)
+``stribeck_scaled_levels(fc, fs, f, pa, pb)``      (F_C(p), F_S(p)), F_S(p) = F_S·F_C(p)/F_C
+``stribeck_level(v, fc, fs, vs, d)``               g = F_C + (F_S − F_C)·exp(−|v/v_S|^δ)
+``stribeck_level_derivative(v, fc, fs, vs, d)``    dg/dv
+``stribeck_force(v, fc, fs, vs, fv, d)``           g(v)·sgn(v) + F_v·v             (H&M Eq. 2)
+``coulomb_viscous_force(v, fc, fv)``               F_C·sgn(v) + F_v·v
+``lugre_bristle_rate(z, v, s0, g)``                dz/dt = v − σ0·|v|·z/g     (Canudas 1995 Eq. 1)
+``lugre_force(z, zdot, v, s0, s1, s2)``            σ0·z + σ1·ż + σ2·v          (Canudas 1995 Eq. 4)
+``lugre_affine(v, dt, s0, g)``                     (a, b): z(t+dt) = a·z + b, exact for constant v
+``dahl_bristle_rate(z, v, s0, fc, a)``             v·max(1 − σ0·z·sgn(v)/F_C, 0)^α   (Dahl 1968)
+``dahl_bristle_step(z, v, dt, s0, fc, a)``         z(t+dt), exact for constant v
+``gms_element_rate(z, v, k, frac, c, s)``          dz_i/dt of one GMS element (Al-Bender 2005)
+``gms_element_step(z, v, dt, k, frac, c, s)``      z_i(t+dt), exact for constant v
+``theta_load_factor(fn, fref, n)``                 (F_N/F_ref)^n
+``theta_rate(th, v, tau, al, fn, fref, n)``        dΘ/dt = −Θ/τ + |v|/α·(F_ref/F_N)^n·(1 − Θ)
+``theta_transition_velocity(tau, al, fn, ...)``    v* = α/τ·(F_N/F_ref)^n
+``theta_steady(v, tau, al, fn, fref, n)``          Θ_ss = |v|/(|v| + v*)
+``theta_affine(v, dt, tau, al, fn, fref, n)``      (a, b): Θ(t+dt) = a·Θ + b, exact for constant v
+``theta_friction_level(th, fn, fa, fb)``           g_Θ = F_N·[f_a·(1 − Θ) + f_b·Θ]   (H&M Eq. 5)
+``theta_force(th, v, fn, b, fa, fb, gamma)``       g_Θ·sgn(v) + γ·b·v                (H&M Eq. 5)
+``walther_viscosity_ratio(t, tref, wa, wb)``       ν(T)/ν(T_ref), ASTM D341 (Walther)
+=================================================  ===============================================
+
+References
+----------
+.. [1] O. Heipl, H. Murrenhoff, "Rate- and state-dependent friction model for elastomeric
+   seals", Eq. 2-5 (Stribeck, pressure scaling, Θ law as reconstructed in
+   :mod:`sealsim.friction.theta`).
+.. [2] C. Canudas de Wit, H. Olsson, K. J. Åström, P. Lischinsky, IEEE TAC 40(3), 419-425, 1995.
+.. [3] P. R. Dahl, "A solid friction model", Aerospace Corp. TOR-0158(3107-18)-1, 1968.
+.. [4] F. Al-Bender, V. Lampaert, J. Swevers, IEEE TAC 50(11), 1883-1887, 2005.
+.. [5] ASTM D341-20, viscosity-temperature equations (Ubbelohde-Walther).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+__all__ = ["apply"]
+
+#: compile options of every kernel: cached on disk, IEEE results (division by zero -> inf)
+_OPTIONS = {"cache": True, "error_model": "numpy"}
+kernel = njit(**_OPTIONS)
+
+
+# --------------------------------------------------------------------------------------------
+# helpers
+# --------------------------------------------------------------------------------------------
+@kernel
+def sgn(x):
+    """sgn(x): +1.0 for x > 0, −1.0 for x < 0, 0.0 at 0 (numpy's ``sign``)."""
+    if x > 0.0:
+        return 1.0
+    if x < 0.0:
+        return -1.0
+    return 0.0 * x          # 0.0 (nan stays nan)
+
+
+# --------------------------------------------------------------------------------------------
+# Coulomb, Stribeck (Heipl & Murrenhoff Eq. 2/3)
+# --------------------------------------------------------------------------------------------
+@kernel
+def pressure_scaled_force(f0, f, pa, pb):
+    """F_C(p) = F_pr + f·(p_A + p_B) [N]: f0 = F_pr [N], f [m²], pa, pb gauge [Pa]."""
+    return f0 + f * (pa + pb)
+
+
+@kernel
+def stribeck_scaled_levels(fc, fs, f, pa, pb):
+    """(F_C(p), F_S(p)) [N] of the Stribeck law with pressure scaling.
+
+    F_C(p) = F_C + f·(p_A + p_B); F_S(p) = F_S·F_C(p)/F_C (constant break-away ratio, as
+    Simscape's Cylinder Friction), or F_S + (F_C(p) − F_C) when F_C = 0.
+    Arguments: fc = F_C, fs = F_S [N], f [m²], pa, pb [Pa].
+    """
+    fcp = pressure_scaled_force(fc, f, pa, pb)
+    if fc > 0.0:
+        return fcp, fs * fcp / fc
+    return fcp, fs + (fcp - fc)
+
+
+@kernel
+def stribeck_level(v, fc, fs, vs, d):
+    """g(v) = F_C + (F_S − F_C)·exp(−|v/v_S|^δ) [N]: v [m/s], fc, fs [N], vs [m/s], d = δ."""
+    ratio = abs(v / vs)
+    return fc + (fs - fc) * math.exp(-ratio ** d)
+
+
+@kernel
+def stribeck_level_derivative(v, fc, fs, vs, d):
+    """dg/dv = −(F_S − F_C)·δ·|v/v_S|^(δ−1)·exp(−|v/v_S|^δ)·sgn(v)/v_S [N·s/m].
+
+    At v = 0 the power |v/v_S|^(δ−1) is taken as 1 for δ = 1 and 0 otherwise."""
+    ratio = abs(v / vs)
+    if ratio > 0.0:
+        power = ratio ** (d - 1.0)
+    elif d == 1.0:
+        power = 1.0
+    else:
+        power = 0.0
+    return -(fs - fc) * d * power * math.exp(-ratio ** d) * sgn(v) / vs
+
+
+@kernel
+def stribeck_force(v, fc, fs, vs, fv, d):
+    """F = g(v)·sgn(v) + F_v·v [N] (0 at v = 0: sticking is resolved outside)."""
+    return stribeck_level(v, fc, fs, vs, d) * sgn(v) + fv * v
+
+
+@kernel
+def coulomb_viscous_force(v, fc, fv):
+    """F = F_C·sgn(v) + F_v·v [N]: fc = F_C [N], fv = F_v [N·s/m]."""
+    return fc * sgn(v) + fv * v
+
+
+# --------------------------------------------------------------------------------------------
+# LuGre (Canudas de Wit et al. 1995)
+# --------------------------------------------------------------------------------------------
+@kernel
+def lugre_bristle_rate(z, v, s0, g):
+    """dz/dt = v − σ0·|v|·z/g [m/s]: z [m], v [m/s], s0 = σ0 [N/m], g = g(v) [N]."""
+    return v - s0 * abs(v) * z / g
+
+
+@kernel
+def lugre_force(z, zdot, v, s0, s1, s2):
+    """F = σ0·z + σ1·dz/dt + σ2·v [N]: s0 [N/m], s1, s2 [N·s/m]."""
+    return s0 * z + s1 * zdot + s2 * v
+
+
+@kernel
+def lugre_affine(v, dt, s0, g):
+    """(a, b) with z(t + dt) = a·z(t) + b for v held over dt [s] (exact solution of Eq. 1).
+
+    a = exp(−σ0·|v|·dt/g) (computed as 1 − d, d = −expm1(·)), b = sgn(v)·g/σ0·d."""
+    decay = -math.expm1(-s0 * abs(v) * dt / g)
+    return 1.0 - decay, sgn(v) * g / s0 * decay
+
+
+# --------------------------------------------------------------------------------------------
+# Dahl (1968)
+# --------------------------------------------------------------------------------------------
+@kernel
+def dahl_bristle_rate(z, v, s0, fc, a):
+    """dz/dt = v·u^α, u = max(1 − σ0·z·sgn(v)/F_C, 0): s0 [N/m], fc [N], a = α [-]."""
+    u = 1.0 - s0 * z * sgn(v) / fc
+    if u < 0.0:
+        u = 0.0
+    return v * u ** a
+
+
+@kernel
+def dahl_bristle_step(z, v, dt, s0, fc, a):
+    """Dahl deflection after dt with v held (exact): u1 = u0·exp(−k) for α = 1, else
+    u1 = max(u0^(1−α) − (1−α)·k, 0)^(1/(1−α)), k = σ0·|v|·dt/F_C; z1 = (1 − u1)·F_C·sgn(v)/σ0."""
+    if v == 0.0:
+        return z
+    u0 = 1.0 - s0 * z * sgn(v) / fc
+    if u0 < 0.0:
+        u0 = 0.0
+    k = s0 * (abs(v) * dt) / fc
+    if a == 1.0:
+        u1 = u0 * math.exp(-k)
+    elif u0 > 0.0:
+        one_minus = 1.0 - a
+        base = u0 ** one_minus - one_minus * k
+        u1 = (base if base > 0.0 else 0.0) ** (1.0 / one_minus)
+    else:
+        u1 = 0.0
+    return (1.0 - u1) * fc * sgn(v) / s0
+
+
+# --------------------------------------------------------------------------------------------
+# GMS (Al-Bender, Lampaert, Swevers 2005), one element
+# --------------------------------------------------------------------------------------------
+@kernel
+def gms_element_rate(z, v, k, frac, c, s):
+    """dz_i/dt of a GMS element: v while it sticks (k·z·sgn(v) < α_i·s), else
+    C/k·(α_i·sgn(v) − k·z/s).  z [m], k [N/m], frac = α_i [-], c = C [N/s], s = s(v) [N]."""
+    force = k * z
+    sv = sgn(v)
+    if force * sv < frac * s:
+        return v
+    return c / k * (frac * sv - force / s)
+
+
+@kernel
+def gms_element_step(z, v, dt, k, frac, c, s):
+    """GMS element deflection after dt with v held (exact): a sticking element moves
+    elastically, capped at its limit α_i·s; a slipping one relaxes to it at rate C/s."""
+    force = k * z
+    if v == 0.0:
+        return force / k
+    sv = sgn(v)
+    limit = frac * s
+    if force * sv < limit:
+        new = force + k * v * dt
+        if new * sv > limit:
+            new = limit * sv
+    else:
+        target = limit * sv
+        new = target + (force - target) * math.exp(-c * dt / s)
+    return new / k
+
+
+# --------------------------------------------------------------------------------------------
+# Θ rate-and-state law (Heipl & Murrenhoff Eq. 4/5 as reconstructed in sealsim.friction.theta)
+# --------------------------------------------------------------------------------------------
+@kernel
+def theta_load_factor(fn, fref, n):
+    """(F_N/F_ref)^n [-]: fn, fref [N], n [-]."""
+    return (fn / fref) ** n
+
+
+@kernel
+def theta_rate(th, v, tau, al, fn, fref, n):
+    """dΘ/dt = −Θ/τ + |v|/(α·(F_N/F_ref)^n)·(1 − Θ) [1/s]: tau [s], al = α [m], fn [N]."""
+    p = theta_load_factor(fn, fref, n)
+    return -th / tau + abs(v) / (al * p) * (1.0 - th)
+
+
+@kernel
+def theta_transition_velocity(tau, al, fn, fref, n):
+    """v* = α/τ·(F_N/F_ref)^n [m/s] (Θ_ss(v*) = 1/2)."""
+    return al / tau * theta_load_factor(fn, fref, n)
+
+
+@kernel
+def theta_steady(v, tau, al, fn, fref, n):
+    """Θ_ss = |v|/(|v| + v*) [-] (0 at rest)."""
+    speed = abs(v)
+    if speed > 0.0:
+        return speed / (speed + theta_transition_velocity(tau, al, fn, fref, n))
+    return 0.0
+
+
+@kernel
+def theta_affine(v, dt, tau, al, fn, fref, n):
+    """(a, b) with Θ(t + dt) = a·Θ(t) + b for v and F_N held over dt [s] (exact):
+    a = exp(−(1/τ + r)·dt), b = Θ_ss·(1 − a), r = |v|/(α·(F_N/F_ref)^n) (inf for F_N = 0)."""
+    speed = abs(v)
+    p = theta_load_factor(fn, fref, n)
+    if speed > 0.0:
+        r = speed / (al * p) if p > 0.0 else math.inf
+    else:
+        r = 0.0
+    decay = -math.expm1(-(1.0 / tau + r) * dt)
+    return 1.0 - decay, theta_steady(v, tau, al, fn, fref, n) * decay
+
+
+@kernel
+def theta_friction_level(th, fn, fa, fb):
+    """g_Θ = F_N·[f_a·(1 − Θ) + f_b·Θ] [N]: the sliding force without the viscous part and
+    the break-away force at rest."""
+    return fn * (fa * (1.0 - th) + fb * th)
+
+
+@kernel
+def theta_force(th, v, fn, b, fa, fb, gamma):
+    """F = g_Θ·sgn(v) + γ·b·v [N]: b [m], gamma = γ [N·s/m²] (0 at v = 0)."""
+    return theta_friction_level(th, fn, fa, fb) * sgn(v) + gamma * b * v
+
+
+@kernel
+def walther_viscosity_ratio(t, tref, wa, wb):
+    """ν(T)/ν(T_ref) [-] with the ASTM D341 (Walther) equation
+    log10 log10(ν + 0.7) = A − B·log10 T (ν in mm²/s, T in K): wa = A, wb = B.
+
+    The same equation as :func:`sealsim.properties.oils.walther_viscosity` (a test checks
+    that they agree), in scalar compiled form for the Θ law's viscous coefficient γ(T)."""
+    nu = 10.0 ** (10.0 ** (wa - wb * math.log10(t))) - 0.7
+    nu_ref = 10.0 ** (10.0 ** (wa - wb * math.log10(tref))) - 0.7
+    return nu / nu_ref
+
+
+# --------------------------------------------------------------------------------------------
+# Array loops: the vectorised numpy API of the law modules runs the kernels through these.
+# Every argument is a 1-D float array of length n or 1 (broadcast by :func:`apply`).
+# --------------------------------------------------------------------------------------------
+@njit(inline="always")
+def _at(a, i):
+    return a[0] if a.shape[0] == 1 else a[i]
+
+
+@kernel
+def _loop_pressure_scaled_force(f0, f, pa, pb, out):
+    for i in range(out.shape[0]):
+        out[i] = pressure_scaled_force(_at(f0, i), _at(f, i), _at(pa, i), _at(pb, i))
+
+
+@kernel
+def _loop_stribeck_scaled_levels(fc, fs, f, pa, pb, out, out2):
+    for i in range(out.shape[0]):
+        out[i], out2[i] = stribeck_scaled_levels(_at(fc, i), _at(fs, i), _at(f, i),
+                                                 _at(pa, i), _at(pb, i))
+
+
+@kernel
+def _loop_stribeck_level(v, fc, fs, vs, d, out):
+    for i in range(out.shape[0]):
+        out[i] = stribeck_level(_at(v, i), _at(fc, i), _at(fs, i), _at(vs, i), _at(d, i))
+
+
+@kernel
+def _loop_stribeck_level_derivative(v, fc, fs, vs, d, out):
+    for i in range(out.shape[0]):
+        out[i] = stribeck_level_derivative(_at(v, i), _at(fc, i), _at(fs, i), _at(vs, i),
+                                           _at(d, i))
+
+
+@kernel
+def _loop_stribeck_force(v, fc, fs, vs, fv, d, out):
+    for i in range(out.shape[0]):
+        out[i] = stribeck_force(_at(v, i), _at(fc, i), _at(fs, i), _at(vs, i), _at(fv, i),
+                                _at(d, i))
+
+
+@kernel
+def _loop_coulomb_viscous_force(v, fc, fv, out):
+    for i in range(out.shape[0]):
+        out[i] = coulomb_viscous_force(_at(v, i), _at(fc, i), _at(fv, i))
+
+
+@kernel
+def _loop_lugre_bristle_rate(z, v, s0, g, out):
+    for i in range(out.shape[0]):
+        out[i] = lugre_bristle_rate(_at(z, i), _at(v, i), _at(s0, i), _at(g, i))
+
+
+@kernel
+def _loop_lugre_force(z, zdot, v, s0, s1, s2, out):
+    for i in range(out.shape[0]):
+        out[i] = lugre_force(_at(z, i), _at(zdot, i), _at(v, i), _at(s0, i), _at(s1, i),
+                             _at(s2, i))
+
+
+@kernel
+def _loop_lugre_affine(v, dt, s0, g, out, out2):
+    for i in range(out.shape[0]):
+        out[i], out2[i] = lugre_affine(_at(v, i), _at(dt, i), _at(s0, i), _at(g, i))
+
+
+@kernel
+def _loop_dahl_bristle_rate(z, v, s0, fc, a, out):
+    for i in range(out.shape[0]):
+        out[i] = dahl_bristle_rate(_at(z, i), _at(v, i), _at(s0, i), _at(fc, i), _at(a, i))
+
+
+@kernel
+def _loop_dahl_bristle_step(z, v, dt, s0, fc, a, out):
+    for i in range(out.shape[0]):
+        out[i] = dahl_bristle_step(_at(z, i), _at(v, i), _at(dt, i), _at(s0, i), _at(fc, i),
+                                   _at(a, i))
+
+
+@kernel
+def _loop_gms_element_rate(z, v, k, frac, c, s, out):
+    for i in range(out.shape[0]):
+        out[i] = gms_element_rate(_at(z, i), _at(v, i), _at(k, i), _at(frac, i), _at(c, i),
+                                  _at(s, i))
+
+
+@kernel
+def _loop_gms_element_step(z, v, dt, k, frac, c, s, out):
+    for i in range(out.shape[0]):
+        out[i] = gms_element_step(_at(z, i), _at(v, i), _at(dt, i), _at(k, i), _at(frac, i),
+                                  _at(c, i), _at(s, i))
+
+
+@kernel
+def _loop_theta_load_factor(fn, fref, n, out):
+    for i in range(out.shape[0]):
+        out[i] = theta_load_factor(_at(fn, i), _at(fref, i), _at(n, i))
+
+
+@kernel
+def _loop_theta_rate(th, v, tau, al, fn, fref, n, out):
+    for i in range(out.shape[0]):
+        out[i] = theta_rate(_at(th, i), _at(v, i), _at(tau, i), _at(al, i), _at(fn, i),
+                            _at(fref, i), _at(n, i))
+
+
+@kernel
+def _loop_theta_transition_velocity(tau, al, fn, fref, n, out):
+    for i in range(out.shape[0]):
+        out[i] = theta_transition_velocity(_at(tau, i), _at(al, i), _at(fn, i), _at(fref, i),
+                                           _at(n, i))
+
+
+@kernel
+def _loop_theta_steady(v, tau, al, fn, fref, n, out):
+    for i in range(out.shape[0]):
+        out[i] = theta_steady(_at(v, i), _at(tau, i), _at(al, i), _at(fn, i), _at(fref, i),
+                              _at(n, i))
+
+
+@kernel
+def _loop_theta_affine(v, dt, tau, al, fn, fref, n, out, out2):
+    for i in range(out.shape[0]):
+        out[i], out2[i] = theta_affine(_at(v, i), _at(dt, i), _at(tau, i), _at(al, i),
+                                       _at(fn, i), _at(fref, i), _at(n, i))
+
+
+@kernel
+def _loop_theta_friction_level(th, fn, fa, fb, out):
+    for i in range(out.shape[0]):
+        out[i] = theta_friction_level(_at(th, i), _at(fn, i), _at(fa, i), _at(fb, i))
+
+
+@kernel
+def _loop_theta_force(th, v, fn, b, fa, fb, gamma, out):
+    for i in range(out.shape[0]):
+        out[i] = theta_force(_at(th, i), _at(v, i), _at(fn, i), _at(b, i), _at(fa, i),
+                             _at(fb, i), _at(gamma, i))
+
+
+@kernel
+def _loop_walther_viscosity_ratio(t, tref, wa, wb, out):
+    for i in range(out.shape[0]):
+        out[i] = walther_viscosity_ratio(_at(t, i), _at(tref, i), _at(wa, i), _at(wb, i))
+
+
+def _flat(value, shape):
+    """``value`` as a contiguous 1-D float array of length 1 or prod(shape).
+
+    Small arrays are made writable copies (one compiled variant of each loop); large read-only
+    arrays (e.g. checked contact inputs) are passed as they are -- a second compiled variant
+    instead of copying megabytes on every call."""
+    a = np.asarray(value, dtype=float)
+    if a.size == 1:
+        return np.array(a.reshape(1), dtype=float)
+    if a.shape != shape:
+        a = np.broadcast_to(a, shape)
+    a = np.ascontiguousarray(a).reshape(-1)
+    return a if a.flags.writeable or a.size > 4096 else a.copy()
+
+
+def apply(loop, *args, outputs: int = 1):
+    """Run an array loop of this module on broadcast numpy arguments.
+
+    Returns an array of the broadcast shape (a numpy scalar for scalar arguments), or a tuple of
+    ``outputs`` of them."""
+    shape = np.broadcast_shapes(*(np.shape(a) for a in args))
+    flat = [_flat(a, shape) for a in args]
+    n = 1
+    for s in shape:
+        n *= s
+    outs = [np.empty(n) for _ in range(outputs)]
+    loop(*flat, *outs)
+    res = [o.reshape(shape) if shape else o[0] for o in outs]
+    if not shape:
+        res = [np.float64(r) for r in res]
+    return res[0] if outputs == 1 else tuple(res)

@@ -1,0 +1,279 @@
+"""Time integration of the pneumatic model, segment by segment.
+
+The ODE is integrated between valve switches (the spool motion has a kink there) and
+stick/slip transitions (events).  The default method, LSODA, is driven here step by step
+through scipy's own LSODA routine with exactly the settings, events and dense output of
+``scipy.integrate.solve_ivp(method="LSODA", dense_output=True, events=...)`` -- the same steps
+and the same results -- without solve_ivp's per-step Python objects; the right-hand side and the
+Jacobian are compiled (:mod:`.rhs`).  BDF and Radau run through ``solve_ivp`` itself.  If scipy's
+low-level LSODA routine is not available (a scipy version that moved it), LSODA also runs
+through ``solve_ivp``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from sealsim.errors import ConvergenceError
+from sealsim.pneumatic import rhs
+
+try:  # scipy's LSODA step routine (what solve_ivp's LSODA class calls)
+    from scipy.integrate._ivp.lsoda import LsodaDenseOutput
+    from scipy.integrate._odepack import lsoda as _lsoda_step
+except ImportError:  # pragma: no cover - depends on the scipy version
+    _lsoda_step = None
+
+__all__ = ["Segment", "integrate", "segment_states"]
+
+_MAX_SWITCHES_PER_MS = 200    # stick/slip chattering guard
+_EPS = np.finfo(float).eps
+
+
+@dataclass
+class Segment:
+    """One integration segment (constant mode, no valve switch inside).
+
+    Attributes
+    ----------
+    t0, t1 : float
+        Start and end time [s].
+    mode : int
+        Integration mode (:data:`sealsim.pneumatic.rhs.MODES`).
+    y0, y1 : ndarray
+        States at the start and the end.
+    steps, nfev, njev : int
+        Solver statistics.
+    dense : object
+        The dense output: LSODA step histories (:func:`segment_states`) or a scipy
+        ``OdeSolution``.
+    """
+
+    t0: float
+    t1: float
+    mode: int
+    y0: np.ndarray
+    y1: np.ndarray
+    steps: int
+    nfev: int
+    njev: int
+    status: int
+    dense: object = field(repr=False, default=None)
+
+
+@dataclass
+class _LsodaHistory:
+    """Nordsieck histories of the LSODA steps of a segment (scipy's LsodaDenseOutput data)."""
+
+    times: np.ndarray          # start of the segment, then the end of every step (event time)
+    ends: np.ndarray           # the time each step's history refers to (its end)
+    h: np.ndarray
+    order: np.ndarray
+    start: np.ndarray
+    data: np.ndarray
+    n: int
+
+
+def segment_states(segment: Segment, ts) -> np.ndarray:
+    """States (n, k) of a segment at the times ``ts`` from its dense output."""
+    ts = np.ascontiguousarray(ts, dtype=float)
+    dense = segment.dense
+    if isinstance(dense, _LsodaHistory):
+        out = np.empty((dense.n, ts.size))
+        rhs.dense_values(ts, dense.times, dense.ends, dense.h, dense.order, dense.start,
+                         dense.data, dense.n, out)
+        return out
+    return dense(ts)
+
+
+def _where(system, t, y, mode) -> str:
+    d = system.evaluate(t, y, mode, full=True)
+    return (f"t = {t:.6g} s, x = {float(d['x'][0]) * 1e3:.4g} mm, v = {float(d['v'][0]):.4g} m/s,"
+            f" p1 = {float(d['p1'][0]) / 1e5:.4g} bar, p2 = {float(d['p2'][0]) / 1e5:.4g} bar, "
+            f"T1 = {float(d['T1'][0]) - 273.15:.4g} degC, T2 = {float(d['T2'][0]) - 273.15:.4g} "
+            f"degC, mode {rhs.MODES[mode]}")
+
+
+def _event_function(system, mode, speed_resolution):
+    """(g(t, y), direction) of the terminal event of a mode, or None.
+
+    In a slip mode the event is v = −d·ε (the motion has reversed by more than the speed
+    resolution ε of the integration, a tenth of its absolute tolerance on v): a slip that
+    starts from rest with a vanishing acceleration, or a creep at the friction limit, has
+    v = 0 within the integration noise and must not stop at every step.  At rest it is the
+    break-away |F_req| = F_brk."""
+    if mode in (rhs.FORWARD, rhs.BACKWARD):
+        d = float(mode)
+
+        def stop(t, y):
+            return d * y[1] + speed_resolution
+        return stop, -1.0
+    if mode == rhs.STICK:
+        def breakaway(t, y):
+            hold, brk = system.stick_margin(t, y)
+            return abs(hold) - brk
+        return breakaway, 1.0
+    return None
+
+
+def _solve_lsoda(system, t0, t1, y0, mode, rtol, atol, max_step):
+    """One segment with scipy's LSODA routine, as solve_ivp(method="LSODA") would run it."""
+    n = y0.size
+    y_type = np.zeros(n)          # scipy's LSODA passes y as a C-contiguous float64 array
+    f = system.rhs(mode, y_type)
+    jac = system.jacobian_function(mode, y_type)
+
+    # the work arrays and settings of scipy.integrate._ode.lsoda (with a user Jacobian) as
+    # set up by solve_ivp's LSODA class: itask 5 (one step, not beyond t_bound = rwork[0])
+    rwork = np.zeros(max(20 + 16 * n, 22 + 9 * n + n * n))
+    rwork[0] = t1
+    rwork[5] = 0.0 if max_step == np.inf else max_step
+    iwork = np.zeros(20 + n, dtype=np.int32)
+    iwork[5], iwork[7], iwork[8] = 500, 12, 5
+    state_doubles = np.zeros(240)
+    state_ints = np.zeros(48, dtype=np.int32)
+    atol = np.asarray(atol, dtype=float)
+    event = _event_function(system, mode, 0.1 * atol[1])
+    y = np.array(y0, dtype=float)
+    t = t0
+    g, direction = event if event is not None else (None, 0.0)
+    g_old = g(t, y) if g is not None else 0.0
+    times, ends, hs, orders, chunks = [t0], [], [], [], []
+    used, status, istate = 0, 0, 1
+    step = _lsoda_step
+    while True:
+        y, t_new, istate = step(f, y, t, t1, rtol, atol, 5, istate, rwork, iwork, jac, 1, (), 1,
+                                (), state_doubles, state_ints)
+        if type(y) is not np.ndarray or y.dtype != np.float64 or not y.flags.c_contiguous:
+            raise TypeError("scipy's LSODA returned an unexpected state array")
+        if istate < 0:
+            status = -1
+            break
+        istate = 2
+        t_old, t = t, float(t_new)
+        # the Nordsieck history of the step, as scipy's LSODA._dense_output_impl takes it
+        order = int(iwork[13])
+        h = rwork[11]
+        chunk = rwork[20:20 + (order + 1) * n].copy()
+        if iwork[14] < order:
+            chunk[order * n:] *= (h / rwork[10]) ** iwork[13]
+        t_record = t
+        if g is not None:
+            g_new = g(t, y)
+            if (direction > 0 and g_old <= 0 <= g_new) or (direction < 0 and g_old >= 0 >= g_new):
+                from scipy.optimize import brentq
+
+                # a C-ordered copy as scipy's: np.dot sums in the same order
+                sol = LsodaDenseOutput(t_old, t, h, order,
+                                       chunk.reshape((n, order + 1), order="F").copy())
+                t_record = brentq(lambda s: g(s, sol(s)), t_old, t, xtol=4 * _EPS, rtol=4 * _EPS)
+                y = sol(t_record)
+                status = 1
+            g_old = g_new
+        if len(times) == 1 or times[-1] != t_record:   # solve_ivp drops a step that did not
+            times.append(t_record)                      # advance
+            ends.append(t)
+            hs.append(h)
+            orders.append(order)
+            chunks.append(chunk)
+        if status == 1:
+            t = t_record
+            break
+        if t >= t1:
+            break
+    if status < 0:
+        return None, t, y, int(iwork[11])
+    y_end = np.array(y, dtype=float)
+    starts_arr = np.zeros(len(chunks), dtype=np.int64)
+    for j, ch in enumerate(chunks):
+        starts_arr[j] = used
+        used += ch.size
+    history = _LsodaHistory(np.asarray(times), np.asarray(ends), np.asarray(hs),
+                            np.asarray(orders, dtype=np.int64), starts_arr,
+                            np.concatenate(chunks) if chunks else np.zeros(0), n)
+    seg = Segment(t0, t, mode, np.array(y0, dtype=float), np.asarray(y_end, dtype=float),
+                  len(hs), int(iwork[11]), int(iwork[12]), status, history)
+    return seg, t, y_end, int(iwork[11])
+
+
+def _solve_scipy(system, t0, t1, y0, mode, method, rtol, atol, max_step):
+    """One segment with scipy's solve_ivp (BDF, Radau, or LSODA without the fast driver)."""
+    event = _event_function(system, mode, 0.1 * atol[1])
+    events = None
+    if event is not None:
+        g, direction = event
+        g.terminal, g.direction = True, direction
+        events = [g]
+    sol = solve_ivp(system.rhs(mode), (t0, t1), y0, method=method, rtol=rtol, atol=atol,
+                    events=events, dense_output=True, max_step=max_step,
+                    jac=system.jacobian_function(mode))
+    if sol.status < 0 or not np.all(np.isfinite(sol.y)):
+        return None, float(sol.t[-1]), sol.y[:, -1], sol.message
+    seg = Segment(t0, float(sol.t[-1]), mode, np.array(y0, dtype=float), sol.y[:, -1].copy(),
+                  len(sol.t) - 1, sol.nfev, sol.njev, sol.status, sol.sol)
+    return seg, float(sol.t[-1]), sol.y[:, -1].copy(), None
+
+
+def integrate(system, progress=None, on_segment=None) -> list[Segment]:
+    """Integrate a :class:`.system.PneumaticSystem` segment by segment (valve switches,
+    stick/slip transitions); ``on_segment(segment)`` and ``progress(t, end)`` after every
+    segment."""
+    case = system.case
+    end = system.duration
+    rtol = case.solver.rtol
+    atol = system.tolerances(rtol)
+    method = case.solver.method
+    max_step = case.solver.max_step
+    y = system.initial_state()
+    t = 0.0
+    breaks = sorted({float(a) for a in system.spool.arrivals if 0.0 < a < end} | {end})
+    if system.position is not None:
+        mode = rhs.PRESCRIBED
+    elif system.sticky:
+        mode = system.next_mode_at_rest(t, y)
+    else:
+        mode = rhs.FREE
+    segments: list[Segment] = []
+    recent: list[float] = []
+    while t < end * (1 - 1e-12):
+        t_next = next(b for b in breaks if b > t + 1e-12 * max(end, 1.0))
+        try:
+            if method == "LSODA" and _lsoda_step is not None:
+                seg, t_fail, y_fail, _ = _solve_lsoda(system, t, t_next, y, mode, rtol, atol,
+                                                      max_step)
+                message = "Unexpected istate in LSODA."
+            else:
+                seg, t_fail, y_fail, message = _solve_scipy(system, t, t_next, y, mode, method,
+                                                            rtol, atol, max_step)
+        except (ValueError, FloatingPointError, ZeroDivisionError) as exc:
+            raise ConvergenceError(f"pneumatic simulation failed at "
+                                   f"{_where(system, t, y, mode)}: {exc}") from None
+        if seg is None or not np.all(np.isfinite(seg.y1)):
+            y_fail = y_fail if np.all(np.isfinite(y_fail)) else y
+            raise ConvergenceError(
+                f"pneumatic simulation: the integrator ({method}) failed at "
+                f"{_where(system, float(t_fail), y_fail, mode)}: {message}; try a smaller "
+                "solver.max_step or a different solver.method")
+        segments.append(seg)
+        if on_segment is not None:
+            on_segment(seg)
+        y = seg.y1.copy()
+        t = seg.t1
+        if seg.status == 1:                      # stick/slip event
+            if mode in (rhs.FORWARD, rhs.BACKWARD):
+                y[1] = 0.0
+                mode = system.next_mode_at_rest(t, y)
+            else:
+                hold, _ = system.stick_margin(t, y)
+                mode = rhs.FORWARD if hold > 0 else rhs.BACKWARD
+            recent = [r for r in recent if r > t - 1e-3] + [t]
+            if len(recent) > _MAX_SWITCHES_PER_MS:
+                raise ConvergenceError(
+                    f"pneumatic simulation: stick/slip chattering ({len(recent)} transitions "
+                    f"within 1 ms) at {_where(system, t, y, mode)}; the contact cannot decide "
+                    "between sticking and sliding -- check the friction parameters")
+        if progress is not None:
+            progress(t, end)
+    return segments

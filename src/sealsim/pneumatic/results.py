@@ -1,0 +1,291 @@
+"""Results of a pneumatic simulation: the sampled time series, the balances, the notes.
+
+The time series is sampled on the output grid from the integrator's dense output; everything
+besides the states is recomputed there by the compiled right-hand side (:mod:`.rhs`).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+import pandas as pd
+
+from sealsim.pneumatic import rhs
+from sealsim.pneumatic.integrate import segment_states
+from sealsim.pneumatic.valve import ANR_DENSITY
+
+__all__ = ["TIMESERIES_COLUMNS", "PneumaticResult", "Sampler", "column_name", "seal_columns"]
+
+#: leading columns of the time series (pressures are absolute)
+TIMESERIES_COLUMNS = ["time_s", "x_m", "v_m_s", "p1_bar_abs", "p2_bar_abs", "T1_C", "T2_C",
+                      "valve_command", "spool", "mode", "F_friction_N", "F_pressure_N"]
+
+
+def column_name(name: str) -> str:
+    """A seal name as it appears in column names: letters, digits, ``_``, ``.`` and ``-``;
+    anything else becomes ``_`` (``"test seal"`` → ``"test_seal"``).
+
+    Examples
+    --------
+    >>> column_name("test seal")
+    'test_seal'
+    """
+    return re.sub(r"[^0-9A-Za-z_.-]+", "_", name.strip()) or "seal"
+
+
+def seal_columns(names) -> list[str]:
+    """Column names of the seals (:func:`column_name`), made unique with a suffix ``_2``, ...
+
+    Examples
+    --------
+    >>> seal_columns(["a b", "a_b", "rod"])
+    ['a_b', 'a_b_2', 'rod']
+    """
+    out: list[str] = []
+    for name in names:
+        base = key = column_name(name)
+        k = 2
+        while key in out:
+            key = f"{base}_{k}"
+            k += 1
+        out.append(key)
+    return out
+
+
+@dataclass
+class PneumaticResult:
+    """Result of one simulation.
+
+    Attributes
+    ----------
+    case : PneumaticCase
+    timeseries : pandas.DataFrame
+        One row per output sample (columns: see :data:`TIMESERIES_COLUMNS` and per seal, under
+        its :func:`column_name`, ``F_<seal>_N`` (friction), ``dp_<seal>_bar`` (pressure
+        difference across it), with a contact map ``F_N_<seal>_N`` and ``b_<seal>_mm``, with a
+        Θ state ``theta_<seal>``, with seal heating ``T_<seal>_C``, and then ``T_tube_metal_C``,
+        ``T_rod_metal_C``).
+    balances : dict
+        Mass and energy bookkeeping (kg, J) and their relative errors (and, with seal heating,
+        the heat balance of the seals and metal parts).
+    stats : dict
+        Solver statistics (segments, steps, RHS evaluations, wall time, mode switches).
+    notes : list of str
+        Things a user should know (e.g. map pressure ranges exceeded).
+    seal_names : list of str
+        The names of the seals as in the case.
+    seal_columns : list of str
+        Their names in the columns (:func:`seal_columns`).
+    """
+
+    case: Any
+    timeseries: pd.DataFrame
+    balances: dict
+    stats: dict
+    notes: list = field(default_factory=list)
+    seal_names: list = field(default_factory=list)
+    seal_columns: list = field(default_factory=list)
+
+    def summary(self) -> dict[str, Any]:
+        """The numbers of ``summary.json`` for this variant."""
+        from sealsim.pneumatic.summary import summarize
+
+        return summarize(self)
+
+
+class Sampler:
+    """Collects the states on the output grid segment by segment while the integration runs,
+    so that the dense output of a segment can be dropped as soon as the next one starts (a long
+    duty cycle keeps hundreds of thousands of steps).  ``sampler(segment)`` after each segment,
+    :meth:`finish` at the end."""
+
+    def __init__(self, system):
+        dt = system.case.output.sample_interval
+        end = system.duration
+        grid = np.arange(0.0, end + 0.5 * dt, dt)
+        self.grid = np.minimum(grid[grid <= end * (1 + 1e-12)], end)   # last sample at the end
+        self.times, self.states, self.modes = [], [], []
+        self.pending = None
+
+    def __call__(self, segment) -> None:
+        if self.pending is not None:
+            self._take(self.pending, last=False)
+            self.pending.dense = None
+        self.pending = segment
+
+    def _take(self, seg, last: bool) -> None:
+        sel = (self.grid >= seg.t0) & ((self.grid <= seg.t1) if last else (self.grid < seg.t1))
+        ts = self.grid[sel]
+        if ts.size == 0:
+            return
+        ys = segment_states(seg, ts)
+        if seg.mode == rhs.STICK:
+            ys[1] = 0.0
+        self.times.append(ts)
+        self.states.append(ys)
+        self.modes.append(np.full(ts.shape, seg.mode, dtype=np.int64))
+
+    def finish(self):
+        """(times, states, modes) of all samples."""
+        if self.pending is not None:
+            self._take(self.pending, last=True)
+            self.pending = None
+        return np.concatenate(self.times), np.hstack(self.states), np.concatenate(self.modes)
+
+
+def sample(system, sampler: Sampler):
+    """The output time series: the collected states, everything else recomputed there.
+    Returns (DataFrame, diagnostics dict)."""
+    ts, ys, modes = sampler.finish()
+    diag = _diagnostics(system, ts, ys, modes)
+    return _frame(system, diag), diag
+
+
+def _diagnostics(system, ts, ys, modes) -> dict[str, np.ndarray]:
+    d = system.evaluate(ts, ys, modes, full=True)
+    out = {"time": ts, "x": d["x"], "v": d["v"], "p1": d["p1"], "p2": d["p2"], "T1": d["T1"],
+           "T2": d["T2"], "spool": np.asarray(d["spool"], dtype=float),
+           "command": system.schedule.command_at(ts), "mode": modes,
+           "f_fric": d["f_fric"], "f_press": d["f_press"], "f_seal": d["f_seal"],
+           "T_tube": d["T_tube"], "T_rod": d["T_rod"]}
+    for i, s in enumerate(system.seals):
+        fn, b, dp = d["loads"][i]
+        out[f"fn{i}"], out[f"b{i}"], out[f"dp{i}"] = fn, b, dp
+        out[f"tseal{i}"] = d["seal_temperature"][i]
+        out[f"clip{i}"] = d["temperature_clipped"][i]
+        names = s.law.state_names
+        if "theta" in names:
+            out[f"theta{i}"] = ys[system.offsets[i] + names.index("theta")]
+    return out
+
+
+_MODE_CODES = np.array(sorted(rhs.MODES))
+_MODE_NAMES = np.array([rhs.MODES[k] for k in _MODE_CODES])
+
+
+def _frame(system, diag) -> pd.DataFrame:
+    cols = {
+        "time_s": diag["time"], "x_m": diag["x"], "v_m_s": diag["v"],
+        "p1_bar_abs": diag["p1"] / 1e5, "p2_bar_abs": diag["p2"] / 1e5,
+        "T1_C": diag["T1"] - 273.15, "T2_C": diag["T2"] - 273.15,
+        "valve_command": diag["command"], "spool": diag["spool"],
+        "mode": _MODE_NAMES[np.searchsorted(_MODE_CODES, diag["mode"])],
+        "F_friction_N": diag["f_fric"], "F_pressure_N": diag["f_press"],
+    }
+    for i, (s, name) in enumerate(zip(system.seals, seal_columns(s.name for s in
+                                                                 system.seals))):
+        cols[f"F_{name}_N"] = diag["f_seal"][i]
+        if s.contact_map is not None:          # F_N and b exist where a map gives them
+            cols[f"F_N_{name}_N"] = diag[f"fn{i}"]
+            cols[f"b_{name}_mm"] = diag[f"b{i}"] * 1e3
+        cols[f"dp_{name}_bar"] = diag[f"dp{i}"] / 1e5
+        if f"theta{i}" in diag:
+            cols[f"theta_{name}"] = diag[f"theta{i}"]
+        if system.heating and system.tables[3][i, rhs.SI_HEATED]:
+            cols[f"T_{name}_C"] = diag[f"tseal{i}"] - 273.15
+    if system.heating:
+        cols["T_tube_metal_C"] = diag["T_tube"] - 273.15
+        cols["T_rod_metal_C"] = diag["T_rod"] - 273.15
+    return pd.DataFrame(cols)
+
+
+def balances(system, segments) -> dict[str, float]:
+    """Mass and energy bookkeeping from the bookkeeping states (see
+    :mod:`sealsim.pneumatic.simulation`)."""
+    y0 = segments[0].y0
+    y1 = segments[-1].y1.copy()
+    if segments[-1].mode == rhs.STICK:
+        y1[1] = 0.0
+    book = {name: float(y1[i] - y0[i]) for name, i in system.book.items()}
+    if system.position is not None:
+        v0 = float(system.position.derivative(segments[0].t0))
+        v1 = float(system.position.derivative(segments[-1].t1))
+    else:
+        v0, v1 = float(y0[1]), float(y1[1])
+    stored_mass = float(y1[2] + y1[3] - y0[2] - y0[3])
+    stored_energy = float(y1[4] + y1[5] - y0[4] - y0[5])
+    kinetic = 0.5 * system.mass * (v1 ** 2 - v0 ** 2)
+    mass_in = book["supply_mass"] - book["exhaust_mass"]
+    mass_scale = max(book["mass_throughput"], float(y0[2] + y0[3]))
+    if system.position is None:
+        # air + piston: enthalpy, wall heat, work of load, atmosphere and stops, friction
+        energy_in = (book["enthalpy"] + book["heat"] + book["work_external"]
+                     + book["work_stop"] - book["work_friction"])
+        energy_change = stored_energy + kinetic
+        throughput = (book["enthalpy_throughput"] + abs(book["heat"])
+                      + abs(book["work_external"]) + abs(book["work_stop"])
+                      + abs(book["work_friction"]) + abs(kinetic))
+    else:
+        # the rig drives the piston: balance of the air alone (work p·dV on the piston)
+        energy_in = book["enthalpy"] + book["heat"] - book["gas_work"]
+        energy_change = stored_energy
+        throughput = book["enthalpy_throughput"] + abs(book["heat"]) + abs(book["gas_work"])
+    out = {
+        "air_mass_change_kg": stored_mass,
+        "supply_mass_kg": book["supply_mass"],
+        "exhaust_mass_kg": book["exhaust_mass"],
+        "air_energy_change_J": stored_energy,
+        "kinetic_energy_change_J": kinetic,
+        "enthalpy_in_J": book["enthalpy"],
+        "wall_heat_J": book["heat"],
+        "gas_work_J": book["gas_work"],
+        "external_work_J": book["work_external"],
+        "stop_work_J": book["work_stop"],
+        "friction_work_J": book["work_friction"],
+        "mass_balance_rel_error": abs(stored_mass - mass_in) / max(mass_scale, 1e-300),
+        "energy_balance_rel_error": abs(energy_change - energy_in) / max(throughput, 1e-300),
+        "air_consumption_NL": book["supply_mass"] / ANR_DENSITY * 1e3,
+    }
+    if system.heating:
+        out.update(thermal_balance(system, y0, y1, book))
+    return out
+
+
+def thermal_balance(system, y0, y1, book) -> dict[str, float]:
+    """Heat balance of the seal, tube and rod nodes: friction heat = heat stored + heat into
+    the chamber air + heat to the surroundings."""
+    c = system.tables[0]
+    t0, nseal = system.temperature_offset, len(system.seals)
+    caps = np.concatenate([system.tables[5][:, rhs.ST_CAP],
+                           [c[rhs.C_TUBE_CAP], c[rhs.C_ROD_CAP]]])
+    stored = float(np.sum(caps * (y1[t0:t0 + nseal + 2] - y0[t0:t0 + nseal + 2])))
+    friction_heat = book["friction_heat"]
+    removed = book["heat_to_air"] + book["heat_to_ambient"]
+    scale = max(abs(friction_heat), abs(stored) + abs(book["heat_to_air"])
+                + abs(book["heat_to_ambient"]), 1e-300)
+    return {
+        "seal_friction_heat_J": friction_heat,
+        "thermal_heat_stored_J": stored,
+        "thermal_heat_to_air_J": book["heat_to_air"],
+        "thermal_heat_to_ambient_J": book["heat_to_ambient"],
+        "heat_balance_rel_error": abs(friction_heat - stored - removed) / scale,
+    }
+
+
+def notes(system, diag) -> list[str]:
+    """Notes of a run: pressure differences beyond a contact map, seal temperatures clamped
+    to a map."""
+    out = []
+    names = [s.name for s in system.seals]
+    for i, s in enumerate(system.seals):
+        if s.contact_map is None:
+            continue
+        hi = s.contact_map.ranges["pressure"][1]
+        over = diag[f"dp{i}"] > hi * (1 + 1e-9)
+        if np.any(over):
+            out.append(
+                f"seal {names[i]!r}: the pressure difference exceeded its contact map "
+                f"({hi / 1e5:.4g} bar) by up to {(diag[f'dp{i}'].max() - hi) / 1e5:.3g} bar in "
+                f"{over.mean() * 100:.2g} % of the samples; F_N and b were held at the map edge")
+        clipped = diag[f"clip{i}"] > 0.5
+        if system.heating and np.any(clipped):
+            lo, up = s.contact_map.ranges["temperature"]
+            out.append(
+                f"seal {names[i]!r}: its temperature left the contact map ({lo - 273.15:.4g} "
+                f"... {up - 273.15:.4g} degC) in {clipped.mean() * 100:.2g} % of the samples "
+                f"(up to {diag[f'tseal{i}'].max() - 273.15:.4g} degC); F_N and b were held at the "
+                "map edge")
+    return out

@@ -1,0 +1,527 @@
+r"""The compiled right-hand side of the pneumatic cylinder (chambers, valve, seals, piston).
+
+One numba function evaluates dy/dt for one state vector: chamber volumes, pressures and
+temperatures, the spool position, the ISO 6358 flows, wall heat, the pressure difference across
+every seal, its contact load F_N, b from the contact map at the seal temperature, its friction
+law, the stick/slip force sharing, the piston force balance, the seal heating and the
+bookkeeping integrals.  It is composed of the physics functions of the package -- compiled from
+their numpy source (:mod:`._jit`) or the scalar kernels of :mod:`sealsim.friction.kernels` and
+:mod:`.contact_maps` -- so each law has one implementation.  Everything a call needs is in a
+few preallocated arrays built once by :class:`.system.PneumaticSystem` (the *tables* below); a
+call allocates nothing.
+
+Tables
+------
+``c`` (float64)
+    Constants, indexed by the ``C_*`` names below.
+``seal_int`` (int64, one row per seal), ``law_par`` (float64, one row per seal)
+    Law code and location, state offsets, map and thermal set-up (``SI_*`` columns), the law's
+    parameters (layout per law in :func:`law_parameters`) and thermal constants (``ST_*``).
+``map_data`` (float64), ``map_int`` (int64, one row per seal)
+    Contact maps: exact analytic O-ring estimate or a C¹ Hermite grid
+    (:func:`sealsim.pneumatic.contact_maps.hermite_grid_point`).
+``spool`` (float64, 3 rows) and ``profile`` (float64)
+    Valve command arrivals / targets / start positions, and the prescribed position profile.
+
+State vector ``y``: x, v, m1, m2, U1, U2, the friction states of every seal, the seal
+temperatures and the rod and tube temperatures (seal heating only), then the bookkeeping
+integrals (:data:`BOOKKEEPING`).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numba import njit
+
+from sealsim.friction import kernels as fk
+from sealsim.pneumatic._jit import jit
+from sealsim.pneumatic.chambers import (
+    AIR_CP,
+    AIR_CV,
+    AIR_HEAT_CAPACITY_RATIO,
+    chamber_wall_area,
+    wall_heat_flow,
+)
+from sealsim.pneumatic.contact_maps import _analytic_loads, hermite_grid_point
+from sealsim.pneumatic.cylinder import end_stop_force, load_force
+from sealsim.pneumatic.seal_heating import sliding_contact_coefficient
+from sealsim.pneumatic.seals import pressure_difference, side_pressures, smooth_abs
+from sealsim.pneumatic.valve import iso6358_flow, iso6358_mass_flow, openings, series_pair
+
+__all__ = ["BOOKKEEPING", "MODES", "STICK", "FORWARD", "BACKWARD", "FREE", "PRESCRIBED"]
+
+#: integration modes
+STICK, FORWARD, BACKWARD, FREE, PRESCRIBED = 0, 1, -1, 2, 3
+MODES = {STICK: "stick", FORWARD: "slip+", BACKWARD: "slip-", FREE: "free",
+         PRESCRIBED: "prescribed"}
+#: bookkeeping states appended to y: time integrals of the boundary flows (kg, J); the last
+#: three exist with seal heating only
+BOOKKEEPING = ("supply_mass", "exhaust_mass", "mass_throughput", "enthalpy",
+               "enthalpy_throughput", "heat", "gas_work", "work_external", "work_stop",
+               "work_friction")
+THERMAL_BOOKKEEPING = ("friction_heat", "heat_to_air", "heat_to_ambient")
+
+# -- constants (indices into c) -------------------------------------------------------------
+(C_DEAD1, C_DEAD2, C_A1, C_A2, C_AROD, C_STROKE, C_BORE, C_PS, C_PA, C_TS, C_TA, C_C, C_B,
+ C_M, C_BETA, C_CENTRE, C_H, C_TW, C_F0, C_KL, C_X0L, C_CL, C_INCL, C_MASS, C_KS, C_CS, C_DS,
+ C_THR1, C_THR2, C_CU1_L, C_CU1_C, C_CU1_E, C_CU2_L, C_CU2_C, C_CU2_E,
+ C_BOOK, C_HEAT, C_TOFF, C_TUBE_CAP, C_TUBE_G, C_ROD_CAP, C_ROD_G, C_TAMB,
+ C_SPOOL_TAU, C_SPOOL_INIT, C_PROFILE_KIND, C_NCONST) = range(47)
+
+# -- seal tables ----------------------------------------------------------------------------
+#: law codes
+COULOMB, STRIBECK, LUGRE, DAHL, GMS, THETA = range(6)
+LAW_CODES = {"coulomb": COULOMB, "stribeck": STRIBECK, "lugre": LUGRE, "dahl": DAHL,
+             "gms": GMS, "theta": THETA}
+#: columns of seal_int
+(SI_LAW, SI_LOC, SI_OFF, SI_STICKY, SI_HEATED, SI_COUNTER, SI_GROOVE, SI_NCOLS) = range(8)
+#: columns of seal_therm: constant temperature [K], heat capacity [J/K], circumference π·D [m],
+#: contact width without a map [m], effusivity of the counterface, static contact coefficient
+#: [W/(m²·K)], conductance to the groove [W/K], to the air of chamber 1, chamber 2 and the
+#: atmosphere [W/K]
+(ST_TCONST, ST_CAP, ST_AC, ST_WIDTH, ST_EFF, ST_HSTAT, ST_GGROOVE, ST_AIR1, ST_AIR2, ST_AMB,
+ ST_NCOLS) = range(11)
+#: map kinds (map_int column 0)
+MAP_NONE, MAP_ANALYTIC, MAP_GRID = 0, 1, 2
+#: nodes a seal exchanges heat with (SI_COUNTER, SI_GROOVE)
+NODE_TUBE, NODE_ROD = 0, 1
+
+# -- diagnostics (rows of diag) -------------------------------------------------------------
+(D_X, D_V, D_P1, D_P2, D_T1, D_T2, D_SPOOL, D_G0, D_G1, D_G2, D_G3, D_H0, D_H1, D_H2, D_H3,
+ D_Q1, D_Q2, D_FPRESS, D_FLOAD, D_FSTOP, D_FFRIC, D_HOLD, D_BRK, D_TTUBE, D_TROD,
+ D_NFIXED) = range(26)
+#: per seal rows after the fixed ones: friction, F_N, b, Δp, break-away, temperature,
+#: friction power, temperature clipped to the map (0/1)
+(DS_F, DS_FN, DS_B, DS_DP, DS_BRK, DS_T, DS_POWER, DS_CLIP, DS_NROWS) = range(9)
+
+_TINY_SPEED = 1e-300          # |v| used for sticking laws at v = 0 in a slip mode (sign only)
+
+_flow = jit(iso6358_flow, iso6358_mass_flow=jit(iso6358_mass_flow))
+_series = jit(series_pair)
+_openings = jit(openings)
+_wall_area = jit(chamber_wall_area)
+_heat = jit(wall_heat_flow)
+_stop = jit(end_stop_force)
+_load = jit(load_force)
+_dp = jit(pressure_difference, smooth_abs=jit(smooth_abs))
+_sides = jit(side_pressures)
+
+
+@njit(cache=True)
+def cushion_conductance(distance, length, conductance, entry):
+    """Conductance of an end cushion [m³/(s·Pa)] at ``distance`` from the end (inf: open, or
+    no cushion when ``length`` is 0): the needle alone once the spear has fully entered, a
+    smooth fade over the entry length."""
+    if length <= 0.0:
+        return np.inf
+    u = min(max((distance - (length - entry)) / entry, 0.0), 1.0)
+    closed = 1.0 - u * u * (3.0 - 2.0 * u)                 # smoothstep
+    return np.inf if closed <= 0.0 else conductance / closed
+
+
+@njit(cache=True)
+def spool_position(t, spool, tau, initial):
+    """Spool position s(t) [-] after the commands (see :class:`.valve.SpoolMotion`):
+    ``spool`` rows are arrival times, targets and the positions at arrival."""
+    k = np.searchsorted(spool[0], t, side="right") - 1
+    if k < 0:
+        return initial
+    u = spool[1, k]
+    if tau <= 0.0:
+        return u
+    return u + (spool[2, k] - u) * math.exp(-max(t - spool[0, k], 0.0) / tau)
+
+
+@njit(cache=True)
+def profile_point(t, kind, profile):
+    """Prescribed position x(t) [m] and velocity dx/dt [m/s] of the test-rig profile.
+
+    kind 1 constant (level), 2 harmonic (mean, amplitude, ω, phase), 3 piecewise linear
+    (n, times..., values...): the profiles of :func:`sealsim.friction.profiles.profile_type`."""
+    if kind == 1:
+        return profile[0], 0.0
+    if kind == 2:
+        mean, amp, w, phase = profile[0], profile[1], profile[2], profile[3]
+        return mean + amp * math.cos(w * t + phase), -amp * w * math.sin(w * t + phase)
+    n = int(profile[0])
+    times = profile[1:1 + n]
+    values = profile[1 + n:1 + 2 * n]
+    x = np.interp(t, times, values)
+    if n < 2:
+        return x, 0.0
+    i = np.searchsorted(times, t, side="right") - 1
+    if i < 0 or i >= n - 1:
+        return x, 0.0
+    return x, (values[i + 1] - values[i]) / (times[i + 1] - times[i])
+
+
+@njit(cache=True)
+def _seal_loads(i, dp, temp, map_int, map_data):
+    """(F_N [N], b [m], clipped) of seal i at Δp [Pa] and its temperature [K]."""
+    kind = map_int[i, 0]
+    if kind == MAP_ANALYTIC:
+        off = map_int[i, 1]
+        fn, b = _analytic_loads(dp, map_data[off], map_data[off + 1], map_data[off + 2],
+                                map_data[off + 3])
+        return fn, b, 0.0
+    if kind == MAP_GRID:
+        return hermite_grid_point(map_int[i], map_data, dp, temp)
+    return math.nan, math.nan, 0.0
+
+
+@njit(cache=True)
+def _law_rates(law, par, z, off, vv, fn, b, pa, pb, temp, dy, col):
+    """Friction force and break-away force of one seal; writes its state rates into dy.
+
+    The laws are the kernels of :mod:`sealsim.friction.kernels`; the parameter layout of each
+    law is :func:`sealsim.pneumatic.system.law_parameters`."""
+    force = 0.0
+    brk = 0.0
+    if law == COULOMB:
+        fc = fk.pressure_scaled_force(par[0], par[2], pa, pb)
+        force = fk.coulomb_viscous_force(vv, fc, par[1])
+        brk = fc
+    elif law == STRIBECK:
+        fc, fs = fk.stribeck_scaled_levels(par[0], par[1], par[5], pa, pb)
+        force = fk.stribeck_force(vv, fc, fs, par[2], par[4], par[3])
+        brk = fs
+    elif law == LUGRE:
+        g = fk.stribeck_level(vv, par[3], par[4], par[5], par[6])
+        zdot = fk.lugre_bristle_rate(z[off, col], vv, par[0], g)
+        force = fk.lugre_force(z[off, col], zdot, vv, par[0], par[1], par[2])
+        dy[off, col] = zdot
+    elif law == DAHL:
+        force = par[0] * z[off, col]
+        dy[off, col] = fk.dahl_bristle_rate(z[off, col], vv, par[0], par[1], par[2])
+    elif law == GMS:
+        n = int(par[0])
+        s = fk.stribeck_level(vv, par[3], par[4], par[5], par[6])
+        total = 0.0
+        for j in range(n):
+            zj = z[off + j, col]
+            total += par[7 + j] * zj
+            dy[off + j, col] = fk.gms_element_rate(zj, vv, par[7 + j], par[7 + n + j],
+                                                   par[1], s)
+        force = total + par[2] * vv
+    elif law == THETA:
+        gamma = par[4]
+        if par[11] != 0.0:                      # γ(T) from the base oil (ASTM D341)
+            gamma = gamma * fk.walther_viscosity_ratio(temp, par[9], par[10], par[11])
+        th = z[off, col]
+        fn = max(fn, 1e-9)
+        level = fk.theta_friction_level(th, fn, par[2], par[3])
+        dy[off, col] = fk.theta_rate(th, vv, par[0], par[1], fn, par[5], par[6])
+        if par[7] > 0.0:                        # bristles
+            zdot = fk.lugre_bristle_rate(z[off + 1, col], vv, par[7], level)
+            dy[off + 1, col] = zdot
+            force = par[7] * z[off + 1, col] + par[8] * zdot + gamma * b * vv
+        else:
+            force = fk.theta_force(th, vv, fn, b, par[2], par[3], gamma)
+            brk = level
+    return force, brk
+
+
+@njit(cache=True)
+def evaluate_column(t, y, col, mode, tables, dy, diag, full):
+    """dy/dt of column ``col`` of ``y`` (shape (n, k)) in integration mode ``mode``.
+
+    Writes dy[:, col] (and, with ``full``, every intermediate quantity into diag[:, col]).
+    ``tables`` = (c, spool, profile, seal_int, law_par, seal_therm, map_int, map_data).
+    """
+    c, spool, profile, seal_int, law_par, seal_therm, map_int, map_data = tables
+    gm1 = AIR_HEAT_CAPACITY_RATIO - 1.0
+    prescribed = mode == PRESCRIBED
+    if prescribed:
+        x, v = profile_point(t, int(c[C_PROFILE_KIND]), profile)
+    else:
+        x, v = y[0, col], y[1, col]
+    m1, m2, u1, u2 = y[2, col], y[3, col], y[4, col], y[5, col]
+    vol1 = c[C_DEAD1] + c[C_A1] * x
+    vol2 = c[C_DEAD2] + c[C_A2] * (c[C_STROKE] - x)
+    p1 = gm1 * u1 / vol1
+    p2 = gm1 * u2 / vol2
+    # Newton iterates of the solver may visit m <= 0: keep T finite there
+    t1 = min(max(u1 / (max(m1, 1e-12) * AIR_CV), 20.0), 3000.0)
+    t2 = min(max(u2 / (max(m2, 1e-12) * AIR_CV), 20.0), 3000.0)
+    s = spool_position(t, spool, c[C_SPOOL_TAU], c[C_SPOOL_INIT])
+    pa_, ar_, pb_, br_ = _openings(s, c[C_CENTRE])
+    ps, pa, ts, ta = c[C_PS], c[C_PA], c[C_TS], c[C_TA]
+    # restrictions on the way out of a chamber: meter-out throttle and end cushion
+    line1 = _series(c[C_THR1], cushion_conductance(x, c[C_CU1_L], c[C_CU1_C], c[C_CU1_E]))
+    line2 = _series(c[C_THR2], cushion_conductance(c[C_STROKE] - x, c[C_CU2_L], c[C_CU2_C],
+                                                   c[C_CU2_E]))
+    k0 = _series(c[C_C] * pa_, line1 if p1 > ps else np.inf)
+    k1 = _series(c[C_C] * ar_, line1 if p1 > pa else np.inf)
+    k2 = _series(c[C_C] * pb_, line2 if p2 > ps else np.inf)
+    k3 = _series(c[C_C] * br_, line2 if p2 > pa else np.inf)
+    g0 = _flow(ps, ts, p1, t1, k0, c[C_B], c[C_M], c[C_BETA])
+    g1 = _flow(p1, t1, pa, ta, k1, c[C_B], c[C_M], c[C_BETA])
+    g2 = _flow(ps, ts, p2, t2, k2, c[C_B], c[C_M], c[C_BETA])
+    g3 = _flow(p2, t2, pa, ta, k3, c[C_B], c[C_M], c[C_BETA])
+    h0 = AIR_CP * (ts if ps >= p1 else t1) * g0
+    h1 = AIR_CP * (t1 if p1 >= pa else ta) * g1
+    h2 = AIR_CP * (ts if ps >= p2 else t2) * g2
+    h3 = AIR_CP * (t2 if p2 >= pa else ta) * g3
+    heating = c[C_HEAT] > 0.0
+    toff = int(c[C_TOFF])
+    nseal = seal_int.shape[0]
+    if heating:                                   # the chamber walls are the tube node
+        t_tube = y[toff + nseal, col]
+        t_rod = y[toff + nseal + 1, col]
+        t_wall = t_tube
+    else:
+        t_tube = t_rod = t_wall = c[C_TW]
+    q1 = _heat(c[C_H], _wall_area(x + c[C_DEAD1] / c[C_A1], c[C_BORE], c[C_A1]), t_wall, t1)
+    q2 = _heat(c[C_H], _wall_area(c[C_STROKE] - x + c[C_DEAD2] / c[C_A2], c[C_BORE], c[C_A1]),
+               t_wall, t2)
+    f_press = p1 * c[C_A1] - p2 * c[C_A2] - pa * c[C_AROD]
+    f_load = _load(x, v, c[C_F0], c[C_KL], c[C_X0L], c[C_MASS], c[C_INCL], c[C_CL])
+    f_stop = _stop(x, v, c[C_STROKE], c[C_KS], c[C_CS], c[C_DS])
+    f_drive = f_press - f_load + f_stop
+
+    # -- seals: contact load, friction law, stick/slip sharing --------------------------------
+    sticky_any = False
+    f_smooth = 0.0
+    brk_sum = 0.0
+    f_fric = 0.0
+    nsticky = 0
+    base = D_NFIXED
+    for i in range(nseal):
+        law = seal_int[i, SI_LAW]
+        sticky = seal_int[i, SI_STICKY] != 0
+        temp = seal_therm[i, ST_TCONST]
+        if seal_int[i, SI_HEATED] != 0:
+            temp = y[toff + i, col]
+        dp = _dp(seal_int[i, SI_LOC], p1, p2, pa, 1e3)
+        pside_a, pside_b = _sides(seal_int[i, SI_LOC], p1, p2, pa)
+        fn, b, clipped = _seal_loads(i, dp, temp, map_int, map_data)
+        if not sticky or mode == FREE or mode == PRESCRIBED:
+            vv = v
+        elif mode == STICK:
+            vv = 0.0
+        else:                                     # slip: hold the direction down to v = 0
+            d = float(mode)
+            vv = d * max(d * v, _TINY_SPEED)
+        force, brk = _law_rates(law, law_par[i], y, seal_int[i, SI_OFF], vv, fn, b, pside_a,
+                                pside_b, temp, dy, col)
+        if sticky:
+            sticky_any = True
+            nsticky += 1
+            brk_sum += brk
+            if mode == STICK:
+                force = 0.0
+        else:
+            f_smooth += force
+        r = base + i * DS_NROWS
+        diag[r + DS_F, col] = force
+        diag[r + DS_B, col] = b
+        diag[r + DS_BRK, col] = brk
+        if full:
+            diag[r + DS_FN, col] = fn
+            diag[r + DS_DP, col] = dp
+            diag[r + DS_T, col] = temp
+            diag[r + DS_CLIP, col] = clipped
+    hold = 0.0
+    if mode == STICK and sticky_any:
+        # the sticking seals carry what holds the piston, shared as their break-away forces
+        hold = f_drive - f_smooth
+        for i in range(nseal):
+            if seal_int[i, SI_STICKY] != 0:
+                r = base + i * DS_NROWS
+                if brk_sum > 0.0:
+                    diag[r + DS_F, col] = diag[r + DS_BRK, col] / brk_sum * hold
+                else:
+                    diag[r + DS_F, col] = 1.0 / nsticky * hold
+    for i in range(nseal):
+        f_fric += diag[base + i * DS_NROWS + DS_F, col]
+
+    # -- derivatives ---------------------------------------------------------------------------
+    dvol1 = c[C_A1] * v
+    dvol2 = -c[C_A2] * v
+    dy[0, col] = 0.0 if prescribed else v
+    if mode == FORWARD or mode == BACKWARD or mode == FREE:
+        dy[1, col] = (f_drive - f_fric) / c[C_MASS]
+    else:
+        dy[1, col] = 0.0
+    q_air1 = q1
+    q_air2 = q2
+    book = int(c[C_BOOK])
+    if heating:
+        # seal nodes: friction heat in, heat to the counterface, groove, air and ambient
+        cap_t = c[C_TUBE_CAP]
+        q_tube = -(q1 + q2)                    # the tube gives the chamber wall heat
+        q_rod = 0.0
+        q_amb = 0.0
+        q_heat = 0.0
+        for i in range(nseal):
+            r = base + i * DS_NROWS
+            power = diag[r + DS_F, col] * v
+            if seal_int[i, SI_HEATED] == 0:       # no node: its heat goes to the counterface
+                if seal_int[i, SI_COUNTER] == NODE_TUBE:
+                    q_tube += power
+                else:
+                    q_rod += power
+                q_heat += power
+                dy[toff + i, col] = 0.0
+                continue
+            ts_i = y[toff + i, col]
+            t_cf = t_tube if seal_int[i, SI_COUNTER] == NODE_TUBE else t_rod
+            t_gr = t_tube if seal_int[i, SI_GROOVE] == NODE_TUBE else t_rod
+            par = seal_therm[i]
+            width = diag[r + DS_B, col] if map_int[i, 0] != MAP_NONE else par[ST_WIDTH]
+            g_cf = sliding_contact_coefficient(v, width, par[ST_EFF], par[ST_HSTAT]) * (
+                par[ST_AC] * width)
+            q_cf = g_cf * (ts_i - t_cf)
+            q_gr = par[ST_GGROOVE] * (ts_i - t_gr)
+            qa1 = par[ST_AIR1] * (ts_i - t1)
+            qa2 = par[ST_AIR2] * (ts_i - t2)
+            qam = par[ST_AMB] * (ts_i - c[C_TAMB])
+            dy[toff + i, col] = (power - q_cf - q_gr - qa1 - qa2 - qam) / par[ST_CAP]
+            if seal_int[i, SI_COUNTER] == NODE_TUBE:
+                q_tube += q_cf
+            else:
+                q_rod += q_cf
+            if seal_int[i, SI_GROOVE] == NODE_TUBE:
+                q_tube += q_gr
+            else:
+                q_rod += q_gr
+            q_air1 += qa1
+            q_air2 += qa2
+            q_amb += qam
+            q_heat += power
+            if full:
+                diag[r + DS_POWER, col] = power
+        q_tube_amb = c[C_TUBE_G] * (t_tube - c[C_TAMB])
+        q_rod_amb = c[C_ROD_G] * (t_rod - c[C_TAMB])
+        dy[toff + nseal, col] = (q_tube - q_tube_amb) / cap_t
+        dy[toff + nseal + 1, col] = (q_rod - q_rod_amb) / c[C_ROD_CAP]
+        nb = book + 10
+        dy[nb, col] = q_heat
+        dy[nb + 1, col] = q_air1 + q_air2          # walls (tube node) and seals into the air
+        dy[nb + 2, col] = q_amb + q_tube_amb + q_rod_amb
+    dy[2, col] = g0 - g1
+    dy[3, col] = g2 - g3
+    dy[4, col] = h0 - h1 - p1 * dvol1 + q_air1
+    dy[5, col] = h2 - h3 - p2 * dvol2 + q_air2
+    dy[book, col] = g0 + g2
+    dy[book + 1, col] = g1 + g3
+    dy[book + 2, col] = abs(g0) + abs(g1) + abs(g2) + abs(g3)
+    dy[book + 3, col] = h0 - h1 + h2 - h3
+    dy[book + 4, col] = abs(h0) + abs(h1) + abs(h2) + abs(h3)
+    dy[book + 5, col] = q_air1 + q_air2
+    dy[book + 6, col] = p1 * dvol1 + p2 * dvol2
+    dy[book + 7, col] = -(f_load + pa * c[C_AROD]) * v
+    dy[book + 8, col] = f_stop * v
+    dy[book + 9, col] = f_fric * v
+    if full:
+        diag[D_X, col] = x
+        diag[D_V, col] = v
+        diag[D_P1, col] = p1
+        diag[D_P2, col] = p2
+        diag[D_T1, col] = t1
+        diag[D_T2, col] = t2
+        diag[D_SPOOL, col] = s
+        diag[D_G0, col] = g0
+        diag[D_G1, col] = g1
+        diag[D_G2, col] = g2
+        diag[D_G3, col] = g3
+        diag[D_H0, col] = h0
+        diag[D_H1, col] = h1
+        diag[D_H2, col] = h2
+        diag[D_H3, col] = h3
+        diag[D_Q1, col] = q_air1
+        diag[D_Q2, col] = q_air2
+        diag[D_FPRESS, col] = f_press
+        diag[D_FLOAD, col] = f_load
+        diag[D_FSTOP, col] = f_stop
+        diag[D_FFRIC, col] = f_fric
+        diag[D_HOLD, col] = hold
+        diag[D_BRK, col] = brk_sum
+        diag[D_TTUBE, col] = t_tube
+        diag[D_TROD, col] = t_rod
+
+
+@njit(cache=True)
+def _plain(y):
+    """(0, True) as run-time values: numba compiles a function once per argument *type*, and a
+    literal 0 or True is a type of its own; calling :func:`evaluate_column` everywhere with
+    plain int64 and bool arguments compiles it once instead of four times."""
+    return y.shape[0] * 0, y.shape[0] >= 0
+
+
+@njit(cache=True)
+def derivatives(t, y, mode, tables, dy, diag):
+    """dy/dt at (t, y) for a state vector y of shape (n,) into dy (shape (n,))."""
+    zero, full = _plain(y)
+    evaluate_column(t, y.reshape(y.shape[0], 1), zero, mode + zero, tables,
+                    dy.reshape(dy.shape[0], 1), diag, not full)
+
+
+@njit(cache=True)
+def jacobian(t, y, mode, tables, scale, work_y, work_dy, f0, diag, jac):
+    """∂f/∂y by forward differences of the dynamic states (the bookkeeping states do not feed
+    back: their columns stay zero): h_j = 1.5e-8·max(|y_j|, scale_j), one evaluation per
+    state plus one at y."""
+    n = y.shape[0]
+    ndyn = scale.shape[0]
+    derivatives(t, y, mode, tables, f0, diag)
+    jac[:, :] = 0.0
+    for j in range(ndyn):
+        h = 1.5e-8 * max(abs(y[j]), scale[j])
+        for i in range(n):
+            work_y[i] = y[i]
+        work_y[j] = y[j] + h
+        derivatives(t, work_y, mode, tables, work_dy, diag)
+        for i in range(n):
+            jac[i, j] = (work_dy[i] - f0[i]) / h
+
+
+@njit(cache=True)
+def evaluate_many(ts, ys, modes, tables, dys, diag):
+    """dy/dt and all diagnostics for every column of ys (shape (n, k)) at the times ts (k,) in
+    the modes ``modes`` (k,)."""
+    full = ys.shape[0] >= 0           # True, as a run-time value (see _plain)
+    for col in range(ys.shape[1]):
+        evaluate_column(ts[col], ys, col, modes[col], tables, dys, diag, full)
+
+
+@njit(cache=True)
+def stick_margin(t, y, tables, work_y, dy, diag):
+    """(F_req, F_brk) [N] with the body held at rest at (t, y): the force the sticking seals
+    must carry and the sum of their break-away forces (see
+    :meth:`sealsim.pneumatic.system.PneumaticSystem.stick_margin`)."""
+    for i in range(y.shape[0]):
+        work_y[i] = y[i]
+    work_y[1] = 0.0
+    zero, full = _plain(y)
+    evaluate_column(t, work_y.reshape(work_y.shape[0], 1), zero, STICK + zero, tables,
+                    dy.reshape(dy.shape[0], 1), diag, full)
+    return diag[D_HOLD, 0], diag[D_BRK, 0]
+
+
+@njit(cache=True)
+def dense_values(ts, step_t, step_end, step_h, step_order, step_start, yh_data, n, out):
+    """States at the times ``ts`` from LSODA's Nordsieck histories (scipy's LsodaDenseOutput:
+    y(t) = Σ_p yh[:, p]·((t − t_end)/h)^p), the step chosen as scipy's OdeSolution does for
+    LSODA (``searchsorted(..., side="left") − 1``).
+
+    ``step_t`` holds the start time of the first step followed by the time every step reaches;
+    step j's history is ``yh_data[step_start[j]:...]`` (n × (order + 1), column-major),
+    relative to its end ``step_end[j]``."""
+    nseg = step_h.shape[0]
+    for k in range(ts.shape[0]):
+        t = ts[k]
+        j = np.searchsorted(step_t, t, side="left") - 1
+        j = min(max(j, 0), nseg - 1)
+        h = step_h[j]
+        q = step_order[j]
+        r = (t - step_end[j]) / h
+        for i in range(n):
+            acc = 0.0
+            power = 1.0
+            for p in range(q + 1):
+                acc += yh_data[step_start[j] + p * n + i] * power
+                power = power * r
+            out[i, k] = acc

@@ -1,0 +1,192 @@
+"""The summary numbers of a pneumatic run (``summary.json``) and how they are defined."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from sealsim.pneumatic.controller import command_schedule
+
+__all__ = ["DEFINITIONS", "END_TOLERANCE", "MOVING_SPEED", "end_position_times", "per_stroke",
+           "summarize"]
+
+#: the end positions count as reached within this fraction of the stroke
+END_TOLERANCE = 0.01
+#: the piston counts as moving above this speed [m/s] (for the mean friction)
+MOVING_SPEED = 1e-3
+
+#: how the summary numbers are defined (written into summary.json)
+DEFINITIONS = {
+    "extend_time_s": "mean over the extend commands of the time from the command to the "
+                     f"piston reaching {100 * (1 - END_TOLERANCE):g} % of the stroke",
+    "retract_time_s": "mean over the retract commands of the time from the command to the "
+                      f"piston reaching {100 * END_TOLERANCE:g} % of the stroke",
+    "mean_friction_N": "mean of |total friction of all seals| while the piston moves "
+                       f"(|v| > {MOVING_SPEED * 1e3:g} mm/s)",
+    "peak_friction_N": "largest |total friction of all seals| over the run (at rest: the "
+                       "part of the holding force the seals carry)",
+    "air_consumption_NL": "air taken from the supply, normal litres at the ISO 8778 reference "
+                          "atmosphere (ANR: 20 degC, 100 kPa)",
+    "pressure_range_bar_abs": "lowest and highest absolute chamber pressure",
+    "heat_balance_rel_error": "(seal heating) |friction heat - (heat stored in the seals, tube "
+                              "and rod + heat into the chamber air + heat to the surroundings)| "
+                              "/ friction heat",
+    "mass_balance_rel_error": "|change of the air mass - (supply - exhaust)| / mass "
+                              "throughput",
+    "energy_balance_rel_error": "|change of (air internal energy + kinetic energy) - "
+                                "(enthalpy + wall heat + work of load, atmosphere and stops - "
+                                "friction work)| / energy throughput",
+}
+
+
+def end_position_times(time, position, stroke, windows, target):
+    """Times from each command to the end position it drives to.
+
+    Parameters
+    ----------
+    time, position : ndarray
+        Samples t [s], x [m].
+    stroke : float
+        L [m].
+    windows : list of (start, end)
+        Issue time of each command and the time of the next one [s].
+    target : {"extend", "retract"}
+        End position (x >= (1 − tol)·L, or x <= tol·L).
+
+    Returns
+    -------
+    list of float
+        One time [s] per command that started away from the end position and reached it
+        before the next command.
+
+    Examples
+    --------
+    >>> t = np.linspace(0.0, 1.0, 101)
+    >>> x = np.clip(0.2 * t, 0.0, 0.1)
+    >>> end_position_times(t, x, 0.1, [(0.0, 1.0)], "extend")
+    [0.5]
+    """
+    level = stroke * (1.0 - END_TOLERANCE) if target == "extend" else stroke * END_TOLERANCE
+    reached = position >= level if target == "extend" else position <= level
+    out = []
+    for start, end in windows:
+        inside = (time >= start) & (time < end)
+        if not inside.any() or reached[np.argmax(inside)]:
+            continue
+        hits = np.flatnonzero(inside & reached)
+        if hits.size:
+            i = hits[0]   # linear interpolation of the crossing between samples i-1 and i
+            t_hit = time[i] - (time[i] - time[i - 1]) * (position[i] - level) / (
+                position[i] - position[i - 1])
+            out.append(round(float(t_hit - start), 9))
+    return out
+
+
+def summarize(result) -> dict[str, Any]:
+    """The numbers of ``summary.json`` for one variant (see :data:`DEFINITIONS`)."""
+    frame = result.timeseries
+    case = result.case
+    t = frame["time_s"].to_numpy()
+    x = frame["x_m"].to_numpy()
+    v = frame["v_m_s"].to_numpy()
+    friction = frame["F_friction_N"].to_numpy()
+    moving = np.abs(v) > MOVING_SPEED
+    summary: dict[str, Any] = {}
+    if case.controller.mode == "cycle":
+        schedule = command_schedule(case)
+        ext = end_position_times(t, x, case.cylinder.stroke, schedule.windows(1.0), "extend")
+        ret = end_position_times(t, x, case.cylinder.stroke, schedule.windows(-1.0), "retract")
+        summary["extend_time_s"] = float(np.mean(ext)) if ext else None
+        summary["retract_time_s"] = float(np.mean(ret)) if ret else None
+        summary["extend_times_s"] = ext
+        summary["retract_times_s"] = ret
+    else:
+        summary["extend_time_s"] = summary["retract_time_s"] = None
+    summary["mean_friction_N"] = float(np.mean(np.abs(friction[moving]))) if moving.any() \
+        else None
+    summary["peak_friction_N"] = float(np.max(np.abs(friction)))
+    b = result.balances
+    summary["air_consumption_NL"] = b["air_consumption_NL"]
+    summary["mass_balance_rel_error"] = b["mass_balance_rel_error"]
+    summary["energy_balance_rel_error"] = b["energy_balance_rel_error"]
+    summary["friction_work_J"] = b["friction_work_J"]
+    summary["peak_speed_m_s"] = float(np.max(np.abs(v)))
+    summary["pressure_range_bar_abs"] = [
+        float(min(frame["p1_bar_abs"].min(), frame["p2_bar_abs"].min())),
+        float(max(frame["p1_bar_abs"].max(), frame["p2_bar_abs"].max()))]
+    summary["air_temperature_range_C"] = [float(min(frame["T1_C"].min(), frame["T2_C"].min())),
+                                          float(max(frame["T1_C"].max(), frame["T2_C"].max()))]
+    seals = {}
+    for name, col in zip(result.seal_names, result.seal_columns):
+        f = frame[f"F_{col}_N"].to_numpy()
+        entry = {"mean_friction_N": float(np.mean(np.abs(f[moving]))) if moving.any() else None,
+                 "peak_friction_N": float(np.max(np.abs(f)))}
+        if f"F_N_{col}_N" in frame:
+            fn = frame[f"F_N_{col}_N"].to_numpy()
+            entry["normal_force_range_N"] = [float(fn.min()), float(fn.max())]
+            entry["contact_width_range_mm"] = [float(frame[f"b_{col}_mm"].min()),
+                                               float(frame[f"b_{col}_mm"].max())]
+        if f"theta_{col}" in frame:
+            entry["theta_range"] = [float(frame[f"theta_{col}"].min()),
+                                    float(frame[f"theta_{col}"].max())]
+        if f"T_{col}_C" in frame:
+            temperature = frame[f"T_{col}_C"].to_numpy()
+            entry["temperature_range_C"] = [float(temperature.min()),
+                                            float(temperature.max())]
+            entry["temperature_end_C"] = float(temperature[-1])
+        seals[name] = entry
+    summary["seals"] = seals
+    summary["balances"] = b
+    summary["solver"] = {k: (round(v, 4) if isinstance(v, float) else v)
+                         for k, v in result.stats.items()}
+    summary["notes"] = list(result.notes)
+    return summary
+
+
+def per_stroke(frame, stroke: float, seal_columns):
+    """One row per valve command (stroke) of a cycle run: start time [s], direction (+1
+    extend, −1 retract), the time to the end position [s] (:func:`end_position_times`; NaN if
+    not reached), the mean |friction| while moving [N] and the seal temperatures at the end of
+    the stroke [°C] (with seal heating) -- how a long duty cycle drifts.
+
+    Examples
+    --------
+    >>> import pandas as pd
+    >>> t = np.linspace(0.0, 2.0, 201)
+    >>> x = np.clip(np.where(t < 1.0, 0.2 * t, 0.1 - 0.2 * (t - 1.0)), 0.0, 0.1)
+    >>> f = pd.DataFrame({"time_s": t, "x_m": x, "v_m_s": np.gradient(x, t),
+    ...                   "valve_command": np.where(t < 1.0, 1.0, -1.0),
+    ...                   "F_friction_N": np.where(t < 1.0, 20.0, -18.0)})
+    >>> per_stroke(f, 0.1, [])[["direction", "stroke_time_s", "mean_friction_N"]]
+       direction  stroke_time_s  mean_friction_N
+    0          1          0.495             20.0
+    1         -1          0.495             18.0
+    """
+    import pandas as pd
+
+    t = frame["time_s"].to_numpy()
+    x = frame["x_m"].to_numpy()
+    moving = np.abs(frame["v_m_s"].to_numpy()) > MOVING_SPEED
+    friction = np.abs(frame["F_friction_N"].to_numpy())
+    command = frame["valve_command"].to_numpy()
+    starts = np.flatnonzero(np.r_[True, command[1:] != command[:-1]])
+    rows = []
+    for k, i in enumerate(starts):
+        j = starts[k + 1] if k + 1 < len(starts) else len(t)
+        direction = int(np.sign(command[i]))
+        if direction == 0:
+            continue
+        window = [(float(t[i]), float(t[j]) if j < len(t) else np.inf)]
+        times = end_position_times(t, x, stroke, window,
+                                   "extend" if direction > 0 else "retract")
+        sel = slice(i, j)
+        row = {"start_s": float(t[i]), "direction": direction,
+               "stroke_time_s": times[0] if times else np.nan,
+               "mean_friction_N": float(np.mean(friction[sel][moving[sel]]))
+               if moving[sel].any() else np.nan}
+        for name in seal_columns:
+            if f"T_{name}_C" in frame:
+                row[f"T_{name}_C"] = float(frame[f"T_{name}_C"].iloc[j - 1])
+        rows.append(row)
+    return pd.DataFrame(rows)

@@ -1,0 +1,118 @@
+"""Frictional heating of the seals (issue 13): energy balance, adiabatic heating, steady state,
+and the temperature following of the contact map and the Θ law."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from sealsim.cases import apply_overrides, load_toml, validate_case
+from sealsim.pneumatic import PneumaticCase, build_seals, simulate
+from sealsim.pneumatic import rhs
+from sealsim.pneumatic.seal_heating import (
+    sliding_contact_coefficient,
+    steady_seal_temperature,
+)
+from sealsim.pneumatic.simulation import run
+from sealsim.pneumatic.system import PneumaticSystem
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples" / "pneumatic"
+
+
+def heated(name: str, overrides: dict | None = None, variant: str = "T25C",
+           position: dict | None = None) -> PneumaticCase:
+    data = load_toml(EXAMPLES / name)
+    data = apply_overrides(data, data.pop("variants")[variant])
+    data["thermal"] = {"seal_heating": True}
+    data = apply_overrides(data, overrides or {})
+    if position is not None:
+        data["controller"]["position"] = position
+    return validate_case(PneumaticCase, data)
+
+
+def test_heat_balance_closes_and_the_seals_warm():
+    # friction heat = heat stored in seals, tube and rod + heat into the air + heat to the
+    # surroundings: bookkeeping states of the same ODE, so the balance is an integration check
+    # (< 1 % required; it closes to round-off because every term is linear in the states)
+    result = simulate(heated("cylinder_32.toml", {"controller": {"duration": "2 s"}}))
+    b = result.balances
+    assert b["seal_friction_heat_J"] > 1.0
+    assert b["heat_balance_rel_error"] < 1e-6
+    f = result.timeseries
+    for seal in ("piston", "rod"):
+        assert f[f"T_{seal}_C"].iloc[-1] > f[f"T_{seal}_C"].iloc[0]
+    assert f["T_tube_metal_C"].iloc[-1] > 25.0 and f["T_rod_metal_C"].iloc[-1] > 25.0
+    assert b["energy_balance_rel_error"] < 1e-3 and b["mass_balance_rel_error"] < 1e-12
+    assert result.summary()["seals"]["piston"]["temperature_end_C"] > 25.0
+
+
+def rig_system(profile: dict, rtol: float = 1e-5) -> PneumaticSystem:
+    case = heated("friction_rig.toml", {"controller": {"duration": profile.pop("duration")},
+                                        "solver": {"rtol": rtol}}, position=profile)
+    return PneumaticSystem(case, build_seals(case, EXAMPLES))
+
+
+def test_seal_without_conductances_heats_as_friction_power_over_heat_capacity():
+    # all conductances of the seal node zero: C·dT/dt = F·v, so C·ΔT equals the friction work
+    # (both are integrated by the same linear steps: agreement to round-off, 1e-9)
+    system = rig_system({"kind": "harmonic", "mean": "50 mm", "amplitude": "50 mm",
+                         "angular_frequency": "10 rad/s", "phase": "180 deg",
+                         "duration": "0.7 s"})
+    therm = system.tables[5]
+    for col in (rhs.ST_EFF, rhs.ST_HSTAT, rhs.ST_GGROOVE, rhs.ST_AIR1, rhs.ST_AIR2, rhs.ST_AMB):
+        therm[0, col] = 0.0
+    result = run(system)
+    f = result.timeseries
+    rise = f["T_test_seal_C"].iloc[-1] - f["T_test_seal_C"].iloc[0]
+    assert rise > 1.0
+    assert therm[0, rhs.ST_CAP] * rise == pytest.approx(
+        result.balances["seal_friction_heat_J"], rel=1e-9)
+
+
+def test_steady_seal_temperature_matches_the_closed_form():
+    # constant sliding (0.05 m/s over the stroke) with the tube and rod held (huge heat
+    # capacity): the seal settles at T_s = (P + Σ G_k T_k)/Σ G_k with its contact, groove, air
+    # conductances at the end state (seal time constant C/G ~ 0.1 s << the 2 s run; Θ and
+    # F·v change by < 0.1 % over the last C/G, hence 1 % of the rise)
+    system = rig_system({"kind": "piecewise", "times": ["0 s", "2 s"],
+                         "values": ["0 mm", "100 mm"], "duration": "1.9 s"}, rtol=1e-9)
+    c = system.tables[0]
+    c[rhs.C_TUBE_CAP] = c[rhs.C_ROD_CAP] = 1e15
+    result = run(system)
+    end = result.timeseries.iloc[-1]
+    th = system.tables[5][0]
+    v = float(end["v_m_s"])
+    width = float(end["b_test_seal_mm"]) * 1e-3
+    g_contact = sliding_contact_coefficient(v, width, th[rhs.ST_EFF], th[rhs.ST_HSTAT]) * (
+        th[rhs.ST_AC] * width)
+    t_body = 298.15
+    expected = steady_seal_temperature(
+        float(end["F_test_seal_N"]) * v,
+        [g_contact, th[rhs.ST_GGROOVE], th[rhs.ST_AIR1], th[rhs.ST_AIR2], th[rhs.ST_AMB]],
+        [t_body, t_body, end["T1_C"] + 273.15, end["T2_C"] + 273.15, 298.15])
+    rise = expected - t_body
+    assert rise > 0.05
+    assert end["T_test_seal_C"] + 273.15 - t_body == pytest.approx(rise, rel=0.01)
+
+
+def test_contact_map_and_grease_follow_the_seal_temperature():
+    # a heated seal evaluates its map and γ(T) at its own temperature: a rig run whose seal
+    # starts at 55 °C in a 25 °C cylinder cools towards the tube, and its F_N follows the
+    # analytic map at the logged temperature (tabulated map: 1e-3 relative)
+    case = heated("friction_rig.toml", {"controller": {"duration": "0.6 s"},
+                                        "seals": [{"name": "test seal", "location": "piston",
+                                                   "friction": {"law": "theta",
+                                                                "parameter_set":
+                                                                    "pneumatic_demo"},
+                                                   "map": {"analytic": {
+                                                       "cord_diameter": "2 mm",
+                                                       "squeeze": 0.10}},
+                                                   "temperature": "55 degC"}]})
+    seals = build_seals(case, EXAMPLES)
+    f = simulate(case, seals).timeseries
+    temp = f["T_test_seal_C"].to_numpy() + 273.15
+    assert temp[0] == pytest.approx(328.15) and temp[-1] < temp[0] - 5.0
+    fn, _ = seals[0].contact_map.evaluate(f["dp_test_seal_bar"].to_numpy() * 1e5, temp)
+    np.testing.assert_allclose(f["F_N_test_seal_N"], fn, rtol=1e-3)
