@@ -128,7 +128,8 @@ def test_seal_friction_is_the_steady_force_of_the_law_on_the_map():
     fn, b = _nbr_oring_map().evaluate(np.full(4, 6e5), np.full(4, 313.15))
     law = Theta.from_parameter_set("pneumatic_demo")
     ref = law.steady_force(v, ContactInputs(normal_force=fn, contact_width=b,
-                                            pressure_a=np.full(4, 6e5), pressure_b=0.0))
+                                            pressure_a=np.full(4, 6e5), pressure_b=0.0,
+                                            temperature=np.full(4, 313.15)))
     np.testing.assert_array_equal(frame["friction_N"], ref)  # same computation
     np.testing.assert_array_equal(frame["normal_force_N"], fn)
     assert list(frame["pressure_bar"]) == [6.0] * 4
@@ -163,7 +164,7 @@ def test_seal_friction_from_an_fe_map_file(tmp_path):
     f_n, b = fe.evaluate(np.full(2, 5e5), np.full(2, 303.15))
     ref = Theta.from_parameter_set("pneumatic_demo").steady_force(
         np.array(v), ContactInputs(normal_force=f_n, contact_width=b,
-                                   pressure_a=np.full(2, 5e5)))
+                                   pressure_a=np.full(2, 5e5), temperature=np.full(2, 303.15)))
     np.testing.assert_allclose(out["friction_N"], ref, rtol=1e-14)
     # linear data: the Hermite map reproduces it (interpolation round-off only)
     assert out["normal_force_N"].to_numpy() == pytest.approx(30.0 + 25.0 + 2.0, rel=1e-9)

@@ -223,9 +223,9 @@ def seal_friction(seal, velocity, pressure=0.0, temperature="20 degC", law=None,
     >>> curve = seal_friction(oring, [0.01, 0.1, 1.0], "6 bar", diameter="12 mm")
     >>> curve[["velocity_m_s", "friction_N", "normal_force_N"]].round(2)
        velocity_m_s  friction_N  normal_force_N
-    0          0.01       19.01           49.24
-    1          0.10        9.61           49.24
-    2          1.00       13.30           49.24
+    0          0.01       12.75           49.24
+    1          0.10        9.98           49.24
+    2          1.00       18.96           49.24
     """
     from sealsim.friction.base import ContactInputs
     from sealsim.units import ZERO_CELSIUS_K, to_si

@@ -150,7 +150,7 @@ class CaseKind:
 #: The kinds of case file; tests check ``tables`` against the models' fields.
 CASE_KINDS = (
     CaseKind("rotary", "sealsim.rotary.case.RotaryCase", "sealsim rotary run",
-             frozenset({"duty", "environment", "oil", "thermal", "numerics"})),
+             frozenset({"duty", "environment", "oil", "numerics"})),
     CaseKind("structure", "sealsim.structure.case.StructureCase",
              "sealsim structure run (or sealsim structure map)",
              frozenset({"gland", "material", "mesh", "map"})),
