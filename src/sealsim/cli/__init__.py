@@ -17,6 +17,7 @@ from sealsim.cli.pneumatic import pneumatic_app
 from sealsim.cli.properties import material_app, oil_app
 from sealsim.cli.rotary import rotary_app
 from sealsim.cli.structure import structure_app
+from sealsim.cli.study import study_app
 
 import sealsim.cli.calibration  # noqa: E402,F401  (registers the fit/compare commands)
 
@@ -33,6 +34,7 @@ app.add_typer(rotary_app, name="rotary")
 app.add_typer(friction_app, name="friction")
 app.add_typer(structure_app, name="structure")
 app.add_typer(pneumatic_app, name="pneumatic")
+app.add_typer(study_app, name="study")
 
 
 def _version(value: bool) -> None:
