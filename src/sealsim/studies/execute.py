@@ -124,7 +124,8 @@ def execute_run(template: RunTemplate, index: int, changes) -> dict[str, Any]:
     """Run one case of a study; never raises for a problem of the run itself."""
     t0 = time.perf_counter()
     record: dict[str, Any] = {"index": index, "worker": _worker_name()}
-    folder = Path(tempfile.mkdtemp(prefix="sealsim-study-run-"))
+    folder = Path(tempfile.mkdtemp(prefix="sealsim-study-run-")) if template.link_names \
+        else None
     try:
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
@@ -145,7 +146,8 @@ def execute_run(template: RunTemplate, index: int, changes) -> dict[str, Any]:
         record.update(status="failed", error=f"{type(exc).__name__}: {message}", summary={},
                       series={}, series_available=[], notes=[])
     finally:
-        shutil.rmtree(folder, ignore_errors=True)
+        if folder is not None:
+            shutil.rmtree(folder, ignore_errors=True)
     record["wall_s"] = time.perf_counter() - t0
     return record
 

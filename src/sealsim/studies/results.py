@@ -25,6 +25,7 @@ import pandas as pd
 import xarray as xr
 
 from sealsim import __version__
+from sealsim.errors import InputError
 
 __all__ = ["assemble", "column_name", "unit_token"]
 
@@ -110,27 +111,35 @@ def _number(value) -> float:
 
 
 def _series(study, records: list[dict]) -> xr.Dataset | None:
-    pieces = []
-    for r in records:
-        if not r.get("series"):
-            continue
-        coords = {name[6:]: arr for name, (_, arr) in r["series"].items()
-                  if name.startswith("coord:")}
-        variables = {name: (d, arr) for name, (d, arr) in r["series"].items()
-                     if not name.startswith("coord:")}
-        pieces.append(xr.Dataset(variables, coords=coords).expand_dims(run=[r["index"]]))
-    if not pieces:
+    """Series of all runs on common coordinates: a run that ended earlier (or failed) is
+    padded with NaN."""
+    finished = [r for r in records if r.get("series")]
+    if not finished:
         return None
-    joined = xr.concat(pieces, dim="run", join="outer", fill_value=np.nan)
-    joined = joined.reindex(run=np.arange(len(records)), fill_value=np.nan)
-    out = {}
-    for name, var in joined.data_vars.items():
-        rest = var.dims[1:]
-        out[name] = (study.dims + rest, var.values.reshape(study.shape + var.shape[1:]),
-                     {"long_name": f"series {name}"})
-    series_coords = {d: (d, joined[d].values, _SERIES_UNITS.get(d, {}))
-                     for d in joined.dims if d != "run"}
-    return xr.Dataset(out, coords=series_coords)
+    coords: dict[str, np.ndarray] = {}
+    for r in finished:                      # the longest coordinate of each series dimension
+        for name, (_, arr) in r["series"].items():
+            if name.startswith("coord:") and len(arr) > len(coords.get(name[6:], ())):
+                coords[name[6:]] = arr
+    for r in finished:                      # shorter ones must be its beginning
+        for name, (_, arr) in r["series"].items():
+            if name.startswith("coord:") and not np.array_equal(arr, coords[name[6:]][:len(arr)]):
+                raise InputError(f"the series coordinate {name[6:]!r} differs between runs "
+                                 f"(run {r['index']}); series can only be collected on a "
+                                 "common grid")
+    variables = {}
+    for name, (dims, _) in finished[0]["series"].items():
+        if name.startswith("coord:"):
+            continue
+        full = tuple(len(coords[d]) for d in dims)
+        data = np.full((len(records), *full), np.nan)
+        for r in finished:
+            arr = r["series"][name][1]
+            data[(r["index"], *(slice(0, n) for n in arr.shape))] = arr
+        variables[name] = (study.dims + tuple(dims), data.reshape(study.shape + full),
+                           {"long_name": f"series {name}"})
+    return xr.Dataset(variables, coords={d: (d, c, _SERIES_UNITS.get(d, {}))
+                                         for d, c in coords.items()})
 
 
 #: units of the series coordinates (maps: SI, as in map.nc)

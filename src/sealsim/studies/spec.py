@@ -97,6 +97,7 @@ MAX_RUNS = 100_000
 #: a distribution is unbounded if the case refuses a value this many standard deviations away
 _PROBE_SIGMAS = 1e6
 _NUMBER_START = re.compile(r"^\s*[-+]?(\d|\.\d)")
+_NUMBER = re.compile(r"^\s*[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?")
 
 
 # -- the study file --------------------------------------------------------------------------
@@ -502,8 +503,16 @@ def _quantity(value: Any, unit: str | None, where: str):
         magnitude = float(q.magnitude)
         if not math.isfinite(magnitude):
             raise InputError(f"{where}: {value!r} is not finite")
-        return magnitude, f"{q.units:~C}"
+        written = _NUMBER.sub("", value).strip()     # the unit as the user wrote it
+        return magnitude, written if _same_unit(written, q) else f"{q.units:~C}"
     return None
+
+
+def _same_unit(text: str, q) -> bool:
+    try:
+        return bool(text) and ureg.Quantity(1.0, text).units == q.units
+    except Exception:
+        return False
 
 
 def _convert(magnitude: float, unit: str, target: str, where: str, difference=False) -> float:
@@ -726,7 +735,6 @@ def _check_factor_values(study: Study, where: str) -> None:
             raise InputError(f"{where}: factor {f.name!r}{path} = {shown}: {why}"
                              f"{_strip(exc)}") from None
 
-    check(study.factors[0], nominal[study.factors[0].name], "with every factor nominal: ")
     for f in study.factors:
         if f.kind == "grid":
             for x in f.coords:

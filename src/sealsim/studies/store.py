@@ -11,7 +11,11 @@ beside the result folder::
         runs/00000017.json      one record per finished run (written atomically)
         runs/00000017.npz       its series, if any (written before the record)
 
-It is written only while the result folder's lock is held, so two studies never share it.
+Each file is written atomically (a temporary name, then a rename), so a killed study never
+leaves half a record; records are not forced to disk one by one (an ``fsync`` costs about as
+much as a short run), so after a power failure a record may be unreadable: ``--resume`` then
+treats it as missing and computes the run again.  The work folder is written only while the
+result folder's lock is held, so two studies never share it.
 ``--resume`` reuses the records of a work folder whose fingerprint matches the study and runs
 only the missing ones; the work folder is removed once the results are committed.  Run records
 are stored with full float precision (``repr``), so a resumed study gives exactly the dataset of
@@ -22,6 +26,7 @@ from __future__ import annotations
 
 import io
 import json
+import os
 import shutil
 import time
 from pathlib import Path
@@ -78,6 +83,7 @@ class WorkFolder:
             except (OSError, ValueError):
                 old = {}
             if resume:
+                self._drop_unreadable()
                 if old.get("fingerprint") != fingerprint:
                     raise InputError(
                         f"cannot resume: the {finished} finished runs in {str(self.path)!r} "
@@ -98,6 +104,13 @@ class WorkFolder:
         }, indent=2).encode("utf-8"))
         return set()
 
+    def _drop_unreadable(self) -> None:
+        for path in self.runs.glob("*.json"):
+            try:
+                json.loads(path.read_text(encoding="utf-8"))
+            except (OSError, ValueError):
+                path.unlink(missing_ok=True)
+
     def indices(self) -> set[int]:
         """Indices of the runs stored here."""
         if not self.runs.is_dir():
@@ -111,11 +124,10 @@ class WorkFolder:
         if series:
             buffer = io.BytesIO()
             np.savez(buffer, **{name: array for name, (_, array) in series.items()})
-            atomic_write_bytes(stem.with_suffix(".npz"), buffer.getvalue())
+            _write(stem.with_suffix(".npz"), buffer.getvalue())
         meta = {k: v for k, v in record.items() if k != "series"}
         meta["series_dims"] = {name: list(dims) for name, (dims, _) in series.items()}
-        atomic_write_bytes(stem.with_suffix(".json"),
-                           json.dumps(meta, allow_nan=True).encode("utf-8"))
+        _write(stem.with_suffix(".json"), json.dumps(meta, allow_nan=True).encode("utf-8"))
 
     def load(self, index: int) -> dict[str, Any]:
         """A stored run record, with its series."""
@@ -130,3 +142,10 @@ class WorkFolder:
 
     def remove(self) -> None:
         shutil.rmtree(self.path, ignore_errors=True)
+
+
+def _write(path: Path, data: bytes) -> None:
+    """Atomic replace without fsync (see the module docstring)."""
+    tmp = path.with_name(f".{path.name}.tmp")
+    tmp.write_bytes(data)
+    os.replace(tmp, path)
