@@ -21,7 +21,16 @@ time series) and analyses them::
   percentiles, Sobol' indices; :mod:`~sealsim.studies.study` -- the result folder.
 """
 
-from sealsim.studies.spec import Study, load_study
-from sealsim.studies.study import StudyResult, run_study, run_study_file
-
 __all__ = ["Study", "StudyResult", "load_study", "run_study", "run_study_file"]
+
+_WHERE = {"Study": "spec", "load_study": "spec", "StudyResult": "study", "run_study": "study",
+          "run_study_file": "study"}
+
+
+def __getattr__(name: str):
+    # lazy: a Dask worker imports sealsim.studies.execute and needs none of this
+    if name in _WHERE:
+        import importlib
+
+        return getattr(importlib.import_module(f"sealsim.studies.{_WHERE[name]}"), name)
+    raise AttributeError(f"module 'sealsim.studies' has no attribute {name!r}")

@@ -27,7 +27,6 @@ Conover, Technometrics 21 (1979) 239-245; A. Saltelli, Comput. Phys. Commun. 145
 from __future__ import annotations
 
 import numpy as np
-from scipy import stats
 
 __all__ = ["DISTRIBUTIONS", "SAMPLED_DESIGNS", "ppf", "unit_samples"]
 
@@ -73,6 +72,8 @@ def ppf(u, distribution: str, **params: float) -> np.ndarray:
     >>> x.round(6).tolist()
     [1.9, 2.0, 2.1]
     """
+    from scipy import stats
+
     u = np.clip(np.asarray(u, dtype=float), _EDGE, 1.0 - _EDGE)
     if distribution == "uniform":
         return params["lower"] + u * (params["upper"] - params["lower"])
@@ -112,6 +113,8 @@ def unit_samples(design: str, samples: int, dimensions: int, seed: int) -> np.nd
     if design == "monte_carlo":
         return np.random.default_rng(seed).random((samples, dimensions))
     if design == "latin_hypercube":
+        from scipy import stats
+
         return stats.qmc.LatinHypercube(d=dimensions, seed=np.random.default_rng(seed)
                                         ).random(samples)
     if design == "sobol":

@@ -93,8 +93,8 @@ class Engine:
             return out
         from distributed import as_completed
 
-        futures = {self.client.submit(prepare_links, template, changes, pure=False): k
-                   for k, changes in enumerate(jobs)}
+        futures = {_cluster(self.client.submit, prepare_links, template, changes,
+                            pure=False): k for k, changes in enumerate(jobs)}
         out = [""] * len(jobs)
         for done, future in enumerate(as_completed(futures), start=1):
             out[futures[future]] = _result(future, f"preparing linked case {futures[future]}")
@@ -113,17 +113,34 @@ class Engine:
         _run_on_dask(self.client, template, jobs, on_record, batch_size)
 
 
+def _cluster(call, *args, **kwargs):
+    """A call to the Dask cluster; a failure of the cluster (lost scheduler, closed
+    connection) becomes one ModelError that says the finished runs are kept."""
+    try:
+        return call(*args, **kwargs)
+    except TimeoutError:
+        raise
+    except Exception as exc:
+        raise ModelError(f"the Dask cluster failed: {type(exc).__name__}: {exc}; the finished "
+                         "runs are kept: run the study again with --resume") from None
+
+
 def _result(future, what: str):
+    """A task's result, or the text of a KilledWorker error (the runs are recorded as
+    failed); other failures: see :func:`_cluster`."""
     from distributed import KilledWorker
 
     try:
+        return _cluster(_killed_as_text, future, KilledWorker)
+    except ModelError as exc:
+        raise ModelError(f"{exc} (while {what})") from None
+
+
+def _killed_as_text(future, killed):
+    try:
         return future.result()
-    except KilledWorker as exc:
+    except killed as exc:
         return f"KilledWorker: the worker processes running it died ({exc})"
-    except Exception as exc:
-        raise ModelError(f"the Dask cluster failed while {what}: {type(exc).__name__}: {exc}; "
-                         "the finished runs are kept: run the study again with --resume") \
-            from None
 
 
 def batch_size_for(run_times: list[float], remaining: int, workers: int) -> int:
@@ -151,25 +168,29 @@ def _run_on_dask(client, template, jobs, on_record, batch_size) -> None:
     in_flight: dict = {}
     run_times: list[float] = []
     no_workers_since = None
+    workers = {"n": 1, "checked": -1e9}
 
-    def submit() -> None:
-        workers = max(1, len(client.nthreads()))
-        size = batch_size or batch_size_for(run_times[-200:], len(queue), workers)
-        batch = [queue.popleft() for _ in range(min(size, len(queue)))]
-        future = client.submit(execute_batch, template, batch, pure=False)
-        in_flight[future] = batch
+    def worker_count() -> int:      # asks the scheduler at most once a second
+        now = time.monotonic()
+        if now - workers["checked"] > 1.0:
+            workers["n"], workers["checked"] = len(_cluster(client.nthreads)), now
+        return max(1, workers["n"])
 
     def fill() -> None:
-        window = 2 * max(1, len(client.nthreads()))
-        while queue and len(in_flight) < window:
-            submit()
+        n = worker_count()
+        while queue and len(in_flight) < 2 * n:
+            size = batch_size or batch_size_for(run_times[-200:], len(queue), n)
+            batch = [queue.popleft() for _ in range(min(size, len(queue)))]
+            in_flight[_cluster(client.submit, execute_batch, template, batch,
+                               pure=False)] = batch
 
     fill()
     while in_flight:
         try:
-            done, _ = wait(list(in_flight), timeout=5.0, return_when="FIRST_COMPLETED")
+            done, _ = _cluster(wait, list(in_flight), timeout=5.0,
+                               return_when="FIRST_COMPLETED")
         except TimeoutError:
-            if client.nthreads():
+            if _cluster(client.nthreads):
                 no_workers_since = None
             elif no_workers_since is None:
                 no_workers_since = time.monotonic()

@@ -74,8 +74,8 @@ def evaluate(tree: ast.Expression, values: dict[str, Any]) -> Any:
     Examples
     --------
     >>> tree = check_expression("[1 - h / d]", {"h", "d"}, "set")
-    >>> [round(v, 6) for v in evaluate(tree, {"h": ureg.Quantity(1.76, "mm"),
-    ...                                       "d": ureg.Quantity(2.0, "mm")})]
+    >>> value = evaluate(tree, {"h": ureg.Quantity(1.76, "mm"), "d": ureg.Quantity(2.0, "mm")})
+    >>> [round(float(v.magnitude), 6) for v in value]
     [0.12]
     """
     def ev(node):

@@ -10,7 +10,7 @@ time or load state, or the arrays of a characteristic map).  Nothing here comput
                           step: ``torque_Nm``, ``power_W``, ``T_contact_C``, ``T_groove_C``,
                           ``T_sump_C``), ``steps.K.*`` (step K, from 0), ``max_T_contact_C``,
                           ``energy_balance_rel_error``; series over ``time``
-``rotary_steady``         steady operating point at the speed of the last duty step
+``rotary_steady``         steady operating point at the speed of the case's one duty step
                           (:func:`sealsim.rotary.simulation.steady_state`): ``torque_Nm``,
                           ``power_W``, ``T_contact_C``, ``T_groove_C``, ``T_sump_C``,
                           ``film_um``, ``F_lub_N``, ``F_material_N``, ``speed_rpm``
@@ -61,6 +61,7 @@ class ModelSpec:
     run: Callable[[Any, Path], RunOutput]
     series_axis: str | None = None            # "time" (resampled), "state", or None (own dims)
     prepare: Callable[[Any, Path], None] | None = None   # once per distinct linked case
+    check: Callable[[Any], None] | None = None   # what the model needs beyond a valid case
 
     def case_class(self) -> type:
         module, name = self.case_class_path.split(":")
@@ -111,11 +112,20 @@ def _rotary(case, base_dir: Path) -> RunOutput:
     return RunOutput(summary, result.timeseries.set_index("time_s"), tuple(result.notes))
 
 
+def _one_duty_step(case) -> None:
+    from sealsim.errors import InputError
+
+    if case.duty.steps is None or len(case.duty.steps) != 1:
+        raise InputError("model 'rotary_steady' evaluates one speed: the case needs a duty "
+                         "cycle of one step, e.g. [set] \"duty.steps\" = [{ speed = "
+                         "\"1000 rpm\", duration = \"1 h\" }] (its duration is not used)")
+
+
 def _rotary_steady(case, base_dir: Path) -> RunOutput:
     from sealsim.rotary.simulation import steady_state
 
-    _, speeds, _ = case.duty.profile(base_dir)
-    speed = float(speeds[-1])
+    _one_duty_step(case)
+    speed = float(case.duty.steps[0].speed)
     return RunOutput({"speed_rpm": speed * 30.0 / math.pi, **steady_state(case, speed)})
 
 
@@ -176,7 +186,8 @@ def _pneumatic(case, base_dir: Path) -> RunOutput:
 
 MODELS: dict[str, ModelSpec] = {m.name: m for m in [
     ModelSpec("rotary", "sealsim.rotary.case:RotaryCase", _rotary, "time"),
-    ModelSpec("rotary_steady", "sealsim.rotary.case:RotaryCase", _rotary_steady),
+    ModelSpec("rotary_steady", "sealsim.rotary.case:RotaryCase", _rotary_steady,
+              check=_one_duty_step),
     ModelSpec("friction", "sealsim.friction.case:FrictionCase", _friction, "time"),
     ModelSpec("structure", "sealsim.structure.case:StructureCase", _structure, "state"),
     ModelSpec("structure_map", "sealsim.structure.case:StructureCase", _structure_map),

@@ -25,7 +25,6 @@ import pandas as pd
 import xarray as xr
 
 from sealsim import __version__
-from sealsim.errors import InputError
 
 __all__ = ["assemble", "column_name", "unit_token"]
 
@@ -111,35 +110,56 @@ def _number(value) -> float:
 
 
 def _series(study, records: list[dict]) -> xr.Dataset | None:
-    """Series of all runs on common coordinates: a run that ended earlier (or failed) is
-    padded with NaN."""
+    """Series of all runs on common coordinates; a run that ended earlier (or failed) is
+    padded with NaN.  A coordinate that differs between runs (a map whose squeeze is a
+    factor) becomes a plain position, its values per run the variable ``<dim>_values``."""
     finished = [r for r in records if r.get("series")]
     if not finished:
         return None
-    coords: dict[str, np.ndarray] = {}
-    for r in finished:                      # the longest coordinate of each series dimension
+    # a series dimension named like a factor (a map's "squeeze") is renamed "series_squeeze"
+    clash = {d: f"series_{d}" for d in study.dims}
+    finished = [dict(r, series={_rename(n, clash): (tuple(clash.get(d, d) for d in dims), a)
+                                for n, (dims, a) in r["series"].items()}) for r in finished]
+    runs_coords: dict[str, list] = {}
+    for r in finished:
         for name, (_, arr) in r["series"].items():
-            if name.startswith("coord:") and len(arr) > len(coords.get(name[6:], ())):
-                coords[name[6:]] = arr
-    for r in finished:                      # shorter ones must be its beginning
-        for name, (_, arr) in r["series"].items():
-            if name.startswith("coord:") and not np.array_equal(arr, coords[name[6:]][:len(arr)]):
-                raise InputError(f"the series coordinate {name[6:]!r} differs between runs "
-                                 f"(run {r['index']}); series can only be collected on a "
-                                 "common grid")
+            if name.startswith("coord:"):
+                runs_coords.setdefault(name[6:], []).append((r["index"], arr))
+    coords, varying = {}, {}
+    for dim, items in runs_coords.items():
+        longest = max((arr for _, arr in items), key=len)
+        if all(np.array_equal(arr, longest[:len(arr)]) for _, arr in items):
+            coords[dim] = longest
+        else:
+            coords[dim] = np.arange(len(longest))
+            varying[dim] = items
     variables = {}
-    for name, (dims, _) in finished[0]["series"].items():
-        if name.startswith("coord:"):
-            continue
+
+    def stack(dims, arrays) -> np.ndarray:
         full = tuple(len(coords[d]) for d in dims)
         data = np.full((len(records), *full), np.nan)
-        for r in finished:
-            arr = r["series"][name][1]
-            data[(r["index"], *(slice(0, n) for n in arr.shape))] = arr
-        variables[name] = (study.dims + tuple(dims), data.reshape(study.shape + full),
-                           {"long_name": f"series {name}"})
-    return xr.Dataset(variables, coords={d: (d, c, _SERIES_UNITS.get(d, {}))
+        for index, arr in arrays:
+            data[(index, *(slice(0, n) for n in np.shape(arr)))] = arr
+        return data.reshape(study.shape + full)
+
+    for name, (dims, _) in finished[0]["series"].items():
+        if not name.startswith("coord:"):
+            arrays = [(r["index"], r["series"][name][1]) for r in finished]
+            variables[name] = (study.dims + tuple(dims), stack(dims, arrays),
+                               {"long_name": f"series {name}"})
+    for dim, items in varying.items():
+        variables[f"{dim}_values"] = (study.dims + (dim,), stack((dim,), items),
+                                      {**_SERIES_UNITS.get(dim.removeprefix("series_"), {}),
+                                       "long_name": f"{dim} of each run"})
+    return xr.Dataset(variables, coords={d: (d, c, {} if d in varying else
+                                             _SERIES_UNITS.get(d.removeprefix("series_"), {}))
                                          for d, c in coords.items()})
+
+
+def _rename(name: str, clash: dict) -> str:
+    if name.startswith("coord:") and name[6:] in clash:
+        return "coord:" + clash[name[6:]]
+    return name
 
 
 #: units of the series coordinates (maps: SI, as in map.nc)

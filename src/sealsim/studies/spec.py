@@ -237,14 +237,13 @@ def unit_from_key(path: str) -> str:
     --------
     >>> unit_from_key("last_step.torque_Nm"), unit_from_key("seals.rod.normal_force_range_N.0")
     ('N m', 'N')
-    >>> unit_from_key("final.b_mm"), unit_from_key("theta_max")
-    ('mm', '1')
+    >>> unit_from_key("final.b_mm"), unit_from_key("theta_max"), unit_from_key("F_N_N.max")
+    ('mm', '1', 'N')
     """
-    parts = [p for p in path.split(".") if not p.isdigit()]
-    key = parts[-1] if parts else path
-    for suffix, unit in _SUFFIX_UNITS:
-        if key.endswith(suffix):
-            return unit
+    for key in reversed([p for p in path.split(".") if not p.isdigit()]):
+        for suffix, unit in _SUFFIX_UNITS:
+            if key.endswith(suffix):
+                return unit
     return "1"
 
 
@@ -470,7 +469,10 @@ def _validate_documents(model: str, documents: dict[tuple, dict], base_dir: Path
     """Validate the case and its linked cases; ``{document key: case object}``."""
     import importlib
 
-    cases = {MAIN: validate_case(MODELS[model].case_class(), documents[MAIN], "case")}
+    spec = MODELS[model]
+    cases = {MAIN: validate_case(spec.case_class(), documents[MAIN], "case")}
+    if spec.check is not None:
+        spec.check(cases[MAIN])
     for key, data in documents.items():
         if key == MAIN:
             continue
@@ -613,12 +615,21 @@ def _grid_values(spec: FactorSpec, here: str) -> tuple[list, list, str]:
     if not values:
         raise InputError(f"{here}: values is empty, which gives zero runs; list at least one "
                          "value")
+    if any(isinstance(v, list | dict) for v in values):   # whole lists or tables
+        if spec.unit:
+            raise InputError(f"{here}: unit = {spec.unit!r} needs numbers as values")
+        coords = [json.dumps(v, sort_keys=True) for v in values]
+        if len(set(coords)) != len(coords):
+            raise InputError(f"{here}: values must be distinct (got {values!r})")
+        return list(values), coords, ""
     parsed = [_quantity(v, spec.unit, f"{here}: values") for v in values]
     if all(p is None for p in parsed):            # text, e.g. oil names
         if spec.unit:
             raise InputError(f"{here}: unit = {spec.unit!r} needs numbers as values")
         if not all(isinstance(v, str) for v in values):
             raise InputError(f"{here}: values must all be numbers, quantities or texts")
+        if len(set(values)) != len(values):
+            raise InputError(f"{here}: values must be distinct (got {values!r})")
         return list(values), list(values), ""
     if any(p is None for p in parsed):
         raise InputError(f"{here}: values mix numbers and texts: {values!r}")
