@@ -254,3 +254,19 @@ def test_hardness_scales_the_structure_material(tmp_path):
     with pytest.raises(InputError, match="either hardness_shore_a or c10"):
         build_material(validate_case(StructureCase, apply_overrides(
             data, {"material": {"hardness_shore_a": 70, "c10": "1 MPa"}})))
+
+
+def test_cli_reports_a_bad_study_in_one_message(tmp_path):
+    from typer.testing import CliRunner
+
+    from sealsim.cli import app
+
+    path = tmp_path / "bad.toml"
+    path.write_text(GRID_HEAD + '[[factors]]\nname = "fc"\npath = "friction.coulomb_force"\n'
+                                'values = []\n')
+    result = CliRunner().invoke(app, ["study", "run", str(path), "--out",
+                                      str(tmp_path / "out")])
+    assert result.exit_code == 2
+    text = " ".join(result.output.split())          # rich wraps long lines
+    assert "factor 'fc': values is empty, which gives zero runs" in text
+    assert "Traceback" not in result.output and not (tmp_path / "out").exists()

@@ -172,25 +172,39 @@ def heatmap_figure(dataset, output: str, x: str, y: str, title: str = ""):
 def histogram_figure(dataset, output: str, stats: dict, title: str = ""):
     """Histogram of an output over the samples with its 5/50/95 % percentiles and mean.
 
-    ``stats`` is :func:`sealsim.studies.analysis.spread` of the output (all samples).
+    ``stats`` is :func:`sealsim.studies.analysis.spread` of the output (all samples).  With
+    grid factors as well (a mixed design), one outlined histogram per grid point instead
+    (the first :data:`MAX_LINES`; their percentiles are in ``distribution.csv``).
     """
     fig, ax = new_figure(1, 1, width=6.0, height=4.0)
-    y = np.asarray(dataset[output].values, dtype=float).ravel()
+    da = dataset[output]
+    y = np.asarray(da.values, dtype=float).ravel()
     finite = y[np.isfinite(y)]
-    if finite.size:
-        bins = min(40, max(8, int(np.sqrt(finite.size)) + 1))
+    grid = [d for d in da.dims if d != "sample"]
+    bins = np.histogram_bin_edges(finite, bins=min(40, max(8, int(np.sqrt(finite.size)) + 1))) \
+        if finite.size else 10
+    if grid:
+        combos = list(itertools.product(*(range(dataset.sizes[d]) for d in grid)))
+        for combo in combos[:MAX_LINES]:
+            values = da.isel(dict(zip(grid, combo))).values
+            label = ", ".join(f"{d} = {_value_text(dataset[d].values[i], dataset, d)}"
+                              for d, i in zip(grid, combo))
+            ax.hist(values[np.isfinite(values)], bins=bins, histtype="step", lw=1.4,
+                    label=label)
+    elif finite.size:
         ax.hist(finite, bins=bins, color="C0", alpha=0.75, edgecolor="white")
-    for key, style in (("P5", ":"), ("P50", "-"), ("P95", ":")):
-        if np.isfinite(stats.get(key, np.nan)):
-            ax.axvline(stats[key], color="C3", ls=style, lw=1.2,
-                       label=f"{key} = {stats[key]:.4g}")
-    if np.isfinite(stats.get("mean", np.nan)):
-        ax.axvline(stats["mean"], color="k", lw=0.8, ls="--",
-                   label=f"mean = {stats['mean']:.4g}, std = {stats['std']:.3g}")
+        for key, style in (("P5", ":"), ("P50", "-"), ("P95", ":")):
+            if np.isfinite(stats.get(key, np.nan)):
+                ax.axvline(stats[key], color="C3", ls=style, lw=1.2,
+                           label=f"{key} = {stats[key]:.4g}")
+        if np.isfinite(stats.get("mean", np.nan)):
+            ax.axvline(stats["mean"], color="k", lw=0.8, ls="--",
+                       label=f"mean = {stats['mean']:.4g}, std = {stats['std']:.3g}")
     failed = int(y.size - finite.size)
     ax.set_xlabel(_label(dataset, output))
     ax.set_ylabel("runs")
-    ax.legend(fontsize=8, loc="best")
+    if finite.size:
+        ax.legend(fontsize=8, loc="best")
     ax.grid(alpha=0.3)
     ax.set_title((f"{title}\n" if title else "") + f"{output}: {finite.size} runs"
                  + (f", {failed} failed" if failed else ""), fontsize=10)
@@ -227,6 +241,13 @@ def sensitivity_figure(table, title: str = ""):
     ``table`` is :func:`sealsim.studies.analysis.sensitivity_table` (rows of one grid point
     per output are drawn: the first).
     """
+    labels = [c for c in table.columns
+              if c not in ("output", "factor", "S1", "S1_conf", "ST", "ST_conf", "method")]
+    if labels:                                  # a mixed design: the first grid point
+        first = table.iloc[0]
+        table = table[(table[labels] == first[labels]).all(axis=1)]
+        where = ", ".join(f"{c} = {_value_text(first[c])}" for c in labels)
+        title = f"{title} ({where})" if title else where
     outputs = list(dict.fromkeys(table["output"]))
     n = len(outputs)
     ncols = min(n, 2)

@@ -270,7 +270,6 @@ class Study:
     series_interval: float | None
     inputs: list[Path]
     text: str
-    unit_samples: np.ndarray | None = None      # (n_samples, n_sampled) quantiles
     sample_values: np.ndarray | None = None     # (n_samples, n_sampled) in factor units
 
     # -- shape of the run table --------------------------------------------------------------
@@ -721,7 +720,6 @@ def _design(study: Study, st: StudyTable, where: str) -> None:
             raise InputError(f"{where}: study.samples = {st.samples} for design 'sobol' must "
                              "be a power of 2 (Sobol' sequence), e.g. 64")
         u = doe.unit_samples(study.design, st.samples, len(sampled), st.seed)
-        study.unit_samples = u
         study.sample_values = np.column_stack([
             doe.ppf(u[:, j], f.distribution, **f.params) for j, f in enumerate(sampled)])
     if study.n_runs > st.max_runs:

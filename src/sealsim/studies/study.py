@@ -239,7 +239,7 @@ def _write(folder: ResultFolder, study: Study, records: list[dict], info: dict) 
     summary = {
         "title": study.title, "source": str(study.source), "sealsim_version": __version__,
         "model": study.model, "design": study.design, "seed": study.seed,
-        "dims": dict(zip(study.dims, study.shape)),
+        "samples": study.samples, "dims": dict(zip(study.dims, study.shape)),
         "runs": {"total": study.n_runs, "finished": int(ok.sum()),
                  "failed": int((~ok).sum()), "computed": info["computed"],
                  "reused": info["reused"]},
