@@ -95,7 +95,7 @@ def main() -> None:
 
     t0 = time.perf_counter()
     cluster = LocalCluster(n_workers=WORKERS, threads_per_worker=1, processes=True,
-                           dashboard_address=None, silence_logs=40)
+                           dashboard_address=":0", silence_logs=40)
     client = Client(cluster)
     start_s = time.perf_counter() - t0
     t0 = time.perf_counter()

@@ -248,7 +248,7 @@ def open_engine(workers: int | None = None, scheduler: str | None = None,
     from distributed import Client, LocalCluster
 
     cluster = LocalCluster(n_workers=workers or default_workers(), threads_per_worker=1,
-                           processes=True, dashboard_address=None,
+                           processes=True, dashboard_address=":0",
                            silence_logs=logging.ERROR)
     local = Client(cluster)
     try:

@@ -120,6 +120,17 @@ def _series(output, template: RunTemplate) -> tuple[dict, list[str]]:
     return out, available
 
 
+def _error_text(exc: Exception) -> str:
+    """``Type: message``; for an error sealsim did not anticipate also where it happened."""
+    from sealsim.errors import SealsimError
+
+    text = f"{type(exc).__name__}: {exc}"
+    if not isinstance(exc, SealsimError) and exc.__traceback__ is not None:
+        frame = traceback.extract_tb(exc.__traceback__)[-1]
+        text += f" (in {frame.name}, {Path(frame.filename).name}:{frame.lineno})"
+    return text
+
+
 def execute_run(template: RunTemplate, index: int, changes) -> dict[str, Any]:
     """Run one case of a study; never raises for a problem of the run itself."""
     t0 = time.perf_counter()
@@ -140,11 +151,8 @@ def execute_run(template: RunTemplate, index: int, changes) -> dict[str, Any]:
         record.update(status="ok", error="", summary=flatten(output.summary), series=series,
                       series_available=available, notes=notes)
     except Exception as exc:  # a failed run is a result, not the end of the study
-        message = str(exc) or repr(exc)
-        if not isinstance(exc, ValueError | RuntimeError | ArithmeticError | OSError):
-            message += " | " + "".join(traceback.format_exception_only(exc)).strip()
-        record.update(status="failed", error=f"{type(exc).__name__}: {message}", summary={},
-                      series={}, series_available=[], notes=[])
+        record.update(status="failed", error=_error_text(exc), summary={}, series={},
+                      series_available=[], notes=[])
     finally:
         if folder is not None:
             shutil.rmtree(folder, ignore_errors=True)
@@ -170,6 +178,6 @@ def prepare_links(template: RunTemplate, changes) -> str:
             spec.prepare(case, Path(template.base_dir), template.map_workers)
         return ""
     except Exception as exc:
-        return f"{type(exc).__name__}: {exc}"
+        return _error_text(exc)
     finally:
         shutil.rmtree(folder, ignore_errors=True)
