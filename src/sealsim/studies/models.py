@@ -115,7 +115,8 @@ def _rotary(case, base_dir: Path) -> RunOutput:
 def _one_duty_step(case) -> None:
     from sealsim.errors import InputError
 
-    if case.duty.steps is None or len(case.duty.steps) != 1:
+    duty = getattr(case, "duty", None)
+    if duty is None or duty.steps is None or len(duty.steps) != 1:
         raise InputError("model 'rotary_steady' evaluates one speed: the case needs a duty "
                          "cycle of one step, e.g. [set] \"duty.steps\" = [{ speed = "
                          "\"1000 rpm\", duration = \"1 h\" }] (its duration is not used)")
