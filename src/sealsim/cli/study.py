@@ -65,8 +65,9 @@ def run(
     from sealsim.studies import load_study, run_study
 
     spec = load_study(study)
+    shape = " x ".join(f"{d} {n}" for d, n in zip(spec.dims, spec.shape))
     console.print(f"study {study}: model {spec.model}, design {spec.design}, "
-                  f"{spec.n_runs} runs ({' x '.join(f'{d} {n}' for d, n in zip(spec.dims, spec.shape))})")
+                  f"{spec.n_runs} runs ({shape})")
     with _progress(quiet) as bar:
         tasks: dict[str, int] = {}
 
