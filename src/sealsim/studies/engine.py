@@ -9,8 +9,9 @@
   Studies).  Its workers must import the same sealsim and read the same case files.
 
 Runs are sent in batches (one Dask task runs several runs), sized from the median run time so
-that a task takes about :data:`TARGET_TASK_S`: thousands of millisecond runs do not drown in
-scheduling overhead, and a lost task costs little.  At most two tasks per worker are queued at
+that a task takes about :data:`TARGET_TASK_S` (smaller towards the end of the study, so that
+the workers finish together): thousands of millisecond runs do not drown in scheduling
+overhead, and a lost task costs little.  At most two tasks per worker are queued at
 a time, so Ctrl-C or a lost worker loses little finished work; every record is handed to
 ``on_record`` (which stores it) as soon as its task returns.  A worker process keeps its
 imports, numba compilations and loaded FE maps between tasks: set-up is paid once per worker.
@@ -144,21 +145,21 @@ def _killed_as_text(future, killed):
 
 
 def batch_size_for(run_times: list[float], remaining: int, workers: int) -> int:
-    """Runs per task: about :data:`TARGET_TASK_S` of work, but at least two tasks per worker
-    for the rest of the study (so that no worker idles at the end).
+    """Runs per task: about :data:`TARGET_TASK_S` of work, but at least four tasks per worker
+    for the rest of the study (so that the workers finish at nearly the same time).
 
     Examples
     --------
     >>> batch_size_for([], 100, 2), batch_size_for([0.01] * 5, 1000, 2)
     (1, 100)
     >>> batch_size_for([0.01] * 5, 40, 2), batch_size_for([3.0], 40, 2)
-    (10, 1)
+    (5, 1)
     """
     if not run_times:
         return 1
     typical = max(float(np.median(run_times)), 1e-6)
     size = int(TARGET_TASK_S / typical)
-    return max(1, min(size, remaining // (2 * workers), MAX_BATCH))
+    return max(1, min(size, remaining // (4 * workers), MAX_BATCH))
 
 
 def _run_on_dask(client, template, jobs, on_record, batch_size) -> None:
