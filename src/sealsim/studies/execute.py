@@ -38,7 +38,11 @@ __all__ = ["RunTemplate", "execute_batch", "execute_run", "one_blas_thread", "pr
 
 
 def one_blas_thread():
-    """Context in which numpy/scipy use one BLAS thread (threadpoolctl)."""
+    """Context in which numpy/scipy use one BLAS thread (threadpoolctl).
+
+    threadpoolctl limits the libraries loaded when the context starts: scipy's own OpenBLAS
+    is loaded first, or a run that imports scipy.linalg would still use several threads."""
+    import scipy.linalg  # noqa: F401
     from threadpoolctl import threadpool_limits
 
     return threadpool_limits(limits=1, user_api="blas")
