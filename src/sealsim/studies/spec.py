@@ -361,7 +361,7 @@ class Study:
     def resolved_cases(self) -> dict[str, str]:
         """Resolved TOML (all defaults filled in) of the base case and its linked cases."""
         out = {}
-        for key, case in _validate_documents(self.model, self.documents, self.base_dir).items():
+        for key, case in _validate_documents(self.model, self.documents).items():
             label = "case" if key == MAIN else ".".join(map(str, key))
             out[label] = dump_case_toml(case, header=f"Resolved base case of the study "
                                                      f"{self.source.name} ({label}), written "
@@ -394,7 +394,7 @@ def parse_study(data: dict, source: Path, text: str = "") -> Study:
     for location, value in constants:
         assign(documents, location, value)
     try:
-        _validate_documents(st.model, documents, base_dir)
+        _validate_documents(st.model, documents)
     except InputError as exc:
         raise InputError(f"{where}: the base case{' with [set]' if constants else ''} is "
                          f"invalid: {_strip(exc)}") from None
@@ -464,7 +464,7 @@ def _base_documents(spec: StudyFile, source: Path, where: str):
     return documents, links, base_dir, inputs
 
 
-def _validate_documents(model: str, documents: dict[tuple, dict], base_dir: Path) -> dict:
+def _validate_documents(model: str, documents: dict[tuple, dict]) -> dict:
     """Validate the case and its linked cases; ``{document key: case object}``."""
     import importlib
 
@@ -737,7 +737,7 @@ def _check_factor_values(study: Study, where: str) -> None:
         values = dict(nominal, **{f.name: x})
         try:
             documents = study.run_documents(study._assignments(values))
-            _validate_documents(study.model, documents, study.base_dir)
+            _validate_documents(study.model, documents)
         except InputError as exc:
             shown = f"{x!r} {f.unit}".strip() if not isinstance(x, str) else repr(x)
             path = f" ({f.path})" if f.path else ""
