@@ -68,10 +68,16 @@ from pathlib import Path
 from typing import Any, Literal
 
 import numpy as np
-from pydantic import BaseModel, ConfigDict, Field, ValidationError
+from pydantic import Field, ValidationError
 
 from sealsim import __version__
-from sealsim.cases import dump_case_toml, format_validation_error, load_toml, validate_case
+from sealsim.cases import (
+    CaseModel,
+    dump_case_toml,
+    format_validation_error,
+    load_toml,
+    validate_case,
+)
 from sealsim.errors import InputError
 from sealsim.studies import design as doe
 from sealsim.studies import expressions
@@ -101,11 +107,7 @@ _NUMBER = re.compile(r"^\s*[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?")
 
 
 # -- the study file --------------------------------------------------------------------------
-class _Table(BaseModel):
-    model_config = ConfigDict(extra="forbid", frozen=True)
-
-
-class RangeSpec(_Table):
+class RangeSpec(CaseModel):
     """Evenly spaced grid values: ``range = { start = "500 rpm", stop = "3000 rpm", num = 6 }``."""
 
     start: str | float
@@ -114,7 +116,7 @@ class RangeSpec(_Table):
     spacing: Literal["linear", "log"] = "linear"
 
 
-class FactorSpec(_Table):
+class FactorSpec(CaseModel):
     """A factor: a case field (``path``) or a free variable, with grid values or a
     distribution."""
 
@@ -131,14 +133,14 @@ class FactorSpec(_Table):
     upper: str | float | None = None
 
 
-class OutputSpec(_Table):
+class OutputSpec(CaseModel):
     """A named output: a path into the model's summary, its unit (default: from the name)."""
 
     path: str
     unit: str | None = None
 
 
-class SeriesSpec(_Table):
+class SeriesSpec(CaseModel):
     """Series to keep per run: columns of the model's time series (or state table, or map),
     resampled every ``interval`` for time series."""
 
@@ -146,7 +148,7 @@ class SeriesSpec(_Table):
     interval: str | None = None
 
 
-class StudyTable(_Table):
+class StudyTable(CaseModel):
     """``[study]``: model, base case, design."""
 
     model: Literal[tuple(MODELS)]  # type: ignore[valid-type]
@@ -161,7 +163,7 @@ class StudyTable(_Table):
         "most runs of the study (a guard against a slip); raise it for bigger studies"))
 
 
-class StudyFile(_Table):
+class StudyFile(CaseModel):
     """The whole study file."""
 
     title: str = ""
