@@ -150,7 +150,7 @@ def execute_run(template: RunTemplate, index: int, changes) -> dict[str, Any]:
         notes = list(output.notes)
         for w in caught:
             text = f"{w.category.__name__}: {w.message}"
-            if text not in notes:
+            if str(w.message) not in notes and text not in notes:   # models note some too
                 notes.append(text)
         record.update(status="ok", error="", summary=flatten(output.summary), series=series,
                       series_available=available, notes=notes)
