@@ -163,6 +163,8 @@ CASE_KINDS = (
              frozenset({"fit", "measurements", "contact", "signals"})),
     CaseKind("pneumatic compare", "sealsim.calibration.pneumatic_compare.CompareCase",
              "sealsim pneumatic compare", frozenset({"case", "variant", "measurement"})),
+    CaseKind("study", "sealsim.studies.spec.StudyFile", "sealsim study run",
+             frozenset({"study", "base", "set", "factors", "outputs", "series"})),
 )
 
 

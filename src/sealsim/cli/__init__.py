@@ -19,6 +19,7 @@ from sealsim.cli.pneumatic import pneumatic_app
 from sealsim.cli.properties import material_app, oil_app
 from sealsim.cli.rotary import rotary_app
 from sealsim.cli.structure import structure_app
+from sealsim.cli.study import study_app
 
 import sealsim.cli.calibration  # noqa: E402,F401  (registers the fit/compare commands)
 
@@ -37,6 +38,7 @@ app.add_typer(structure_app, name="structure")
 app.add_typer(pneumatic_app, name="pneumatic")
 app.add_typer(cache_app, name="cache")
 app.add_typer(fmu_app, name="fmu")
+app.add_typer(study_app, name="study")
 
 
 def _version(value: bool) -> None:

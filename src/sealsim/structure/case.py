@@ -81,6 +81,12 @@ class MaterialSpec(CaseModel):
     c01: Q("pressure", ge=0.0) | None = None
     bulk_modulus: Q("pressure", gt=0.0) | None = None
     thermal_expansion: Q("thermal_expansion", ge=0.0, lt=1e-3) | None = None
+    hardness_shore_a: Annotated[float, Field(ge=10.0, le=90.0)] | None = Field(
+        None, description=(
+            "Shore A hardness of this compound: the elastomer's hyperelastic constants (and "
+            "Prony moduli) are scaled by E(S)/E(S_catalogue) of Gent's relation "
+            "(sealsim.properties.elastomers.shore_a_young_modulus), e.g. for a hardness "
+            "tolerance of 70 +- 5 Shore A; not together with c10/c01"))
 
 
 class MeshSpec(CaseModel):

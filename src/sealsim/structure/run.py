@@ -62,6 +62,8 @@ def build_material(case: StructureCase, *, equilibrium: bool = False):
     elastomer = get_elastomer(spec.elastomer)
     overrides = {k: getattr(spec, k) for k in ("c10", "c01", "bulk_modulus", "thermal_expansion")
                  if getattr(spec, k) is not None}
+    if spec.hardness_shore_a is not None:
+        overrides.update(_hardness_scaled(elastomer, spec))
     if overrides:
         import dataclasses
 
@@ -75,6 +77,27 @@ def build_material(case: StructureCase, *, equilibrium: bool = False):
     if equilibrium:
         material = material.equilibrium()
     return material
+
+
+def _hardness_scaled(elastomer, spec) -> dict:
+    """Constants of a compound of another Shore A hardness: the catalogue's C10, C01 (and
+    Prony moduli) times E(S)/E(S_catalogue) of Gent's relation."""
+    from sealsim.properties.elastomers import shore_a_young_modulus
+
+    if spec.c10 is not None or spec.c01 is not None:
+        raise InputError("material: give either hardness_shore_a or c10/c01, not both "
+                         "(the hardness scales the catalogue constants)")
+    if elastomer.hardness_shore_a is None:
+        raise InputError(f"material.hardness_shore_a: {elastomer.name} has no catalogue "
+                         "hardness to scale from; give c10 and c01 instead")
+    scale = shore_a_young_modulus(spec.hardness_shore_a) / \
+        shore_a_young_modulus(elastomer.hardness_shore_a)
+    scaled = {"c10": elastomer.c10 * scale, "c01": elastomer.c01 * scale,
+              "hardness_shore_a": spec.hardness_shore_a}
+    if elastomer.prony is not None:
+        e_inf, e_i, tau_i = elastomer.prony
+        scaled["prony"] = (e_inf * scale, tuple(e * scale for e in e_i), tau_i)
+    return scaled
 
 
 def check_temperatures(case: StructureCase, temperatures) -> None:
