@@ -260,8 +260,8 @@ def test_example_recovers_its_truth_and_predicts_the_validation_run(example_run)
     assert validate["role"] == "validate" and len(validate["steps"]) == 6
     # the README states the validation errors this command measured
     readme = (ROOT / "README.md").read_text()
-    match = re.search(r"cycle B \(3 L, not fitted\): step-average torque error mean "
-                      r"(\d+\.\d) %, max (\d+\.\d) %; spring-groove temperature error "
+    match = re.search(r"Cycle B \(3 L, not fitted\): step-average torque error mean "
+                      r"(\d+\.\d) %, max (\d+\.\d) %;\s+spring-groove temperature error "
                       r"RMSE (\d+\.\d+) K, max (\d+\.\d+) K", readme)
     assert match, "README must state the validation errors of the rotary example"
     mean, largest, rmse, t_max = map(float, match.groups())

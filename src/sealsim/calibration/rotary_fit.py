@@ -42,8 +42,8 @@ from sealsim.calibration.rotary_case import (
 from sealsim.calibration.statistics import parameter_statistics
 from sealsim.cases import apply_overrides, validate_case
 from sealsim.errors import InputError, ModelError
-from sealsim.measurements import read_measurement, step_averages
-from sealsim.rotary.case import RotaryCase
+from sealsim.measurements import ColumnSpec, read_measurement, step_averages
+from sealsim.rotary.case import MAX_DUTY_DURATION, RotaryCase
 from sealsim.rotary.simulation import simulate
 from sealsim.tribology.film import FilmRangeWarning
 
@@ -53,6 +53,8 @@ __all__ = ["PreparedRotaryRun", "RotaryFitResult", "RotaryPrediction", "duty_fro
 
 #: Largest speed of a duty cycle [rad/s] (the duty CSV's limit, 47746 rpm).
 MAX_SPEED = 5000.0
+#: Longest measured run [s]: the rotary model's guard against unit slips (duty.max_duration).
+MAX_DURATION = MAX_DUTY_DURATION
 #: Relative finite-difference step of the Jacobians (see the module docstring).
 DIFFERENCE_STEP = 0.01
 #: Scaled residual given to a parameter set the model cannot run (keeps the optimiser away).
@@ -166,7 +168,7 @@ class PreparedRotaryRun:
     """A measured speed cycle ready for the model (SI arrays, time from 0)."""
 
     spec: RotaryMeasurementModel
-    data: dict[str, Any]           # the rotary case data of this run (with its duty file)
+    data: dict[str, Any]           # the rotary case data of this run (duty: its duty.csv)
     case: RotaryCase               # ... validated, at the start values
     time: np.ndarray               # [s] from the first sample
     time_offset: float             # time of the first sample in the file [s]
@@ -226,14 +228,20 @@ def prepare_rotary_run(case: RotaryFitCase, spec: RotaryMeasurementModel,
     """
     path = _resolve(spec.file, Path(base_dir))
     where = f"measurement {spec.name!r} ({path})"
-    m = read_measurement(path, columns=[c for c in _column_specs(spec)], name=spec.name,
-                         delimiter=spec.delimiter, header=spec.header, skip_rows=spec.skip_rows)
+    m = read_measurement(path, columns=[ColumnSpec(q, c.column, c.unit, c.scale)
+                                        for q, c in spec.columns.items()],
+                         name=spec.name, delimiter=spec.delimiter, header=spec.header,
+                         skip_rows=spec.skip_rows)
     t_file = m.time
     t = t_file - t_file[0]
     speed = m.column("speed")
     torque = m.column("torque")
     temperature = m.column("temperature") if m.has("temperature") else None
     avg = case.averaging
+    if t[-1] > MAX_DURATION:
+        raise InputError(f"{where}: the run lasts {t[-1]:.4g} s, more than the rotary model's "
+                         f"guard of {MAX_DURATION:g} s (11.6 days); check the time column's "
+                         "unit")
     try:
         times, speeds = duty_from_speed(t, speed, avg.tolerance, jump=avg.jump)
     except InputError as exc:
@@ -251,24 +259,14 @@ def prepare_rotary_run(case: RotaryFitCase, spec: RotaryMeasurementModel,
     tmp = tempfile.TemporaryDirectory(prefix="sealsim-duty-")
     duty_dir = Path(tmp.name)
     write_duty_csv(duty_dir / "duty.csv", times, speeds)
-    duty = {"csv": "duty.csv"}
-    if t[-1] > 1e6:
-        raise InputError(f"{where}: the run lasts {t[-1]:.4g} s, more than the rotary model's "
-                         "guard of 1e6 s (11.6 days); check the time column's unit")
     try:
-        run_case, data = case.run_case(spec, duty)
+        run_case, data = case.run_case(spec, {"csv": "duty.csv"})
         run_case.duty_cycle().profile(duty_dir)
     except InputError as exc:
         raise InputError(f"{where}: {exc}") from None
     return PreparedRotaryRun(spec, data, run_case, t, float(t_file[0]), speed, torque,
                              temperature, times, speeds, steps, avg.window, avg.tolerance,
                              duty_dir, tmp)
-
-
-def _column_specs(spec: RotaryMeasurementModel):
-    from sealsim.measurements import ColumnSpec
-
-    return [ColumnSpec(q, c.column, c.unit, c.scale) for q, c in spec.columns.items()]
 
 
 def write_duty_csv(path: Path, times, speeds) -> None:

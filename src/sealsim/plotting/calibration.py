@@ -146,19 +146,20 @@ def plot_rotary_overlay(name: str, role: str, time, measured, model, steps, titl
     tm = model["time_s"].to_numpy() / 60.0
     t_steps = np.array([s["t_mid_s"] for s in steps]) / 60.0
     panels = [("speed_rpm", "Speed [rpm]", None),
-              ("torque_Nm", "Friction torque [N m]", "torque"),
-              ("T_groove_C", "Spring-groove temperature [°C]", "T_groove")]
-    for ax, (column, label, key) in zip(axes, panels):
+              ("torque_Nm", "Friction torque [N m]", ("torque_measured_Nm",
+                                                      "torque_predicted_Nm")),
+              ("T_groove_C", "Spring-groove temperature [°C]", ("T_groove_measured_C",
+                                                                "T_groove_predicted_C"))]
+    for ax, (column, label, averages) in zip(axes, panels):
         if column in measured:
             ax.plot(t, measured[column], color="0.55", lw=0.6, label="measured")
         ax.plot(tm, model[column], color="tab:red", lw=1.4,
-                label="model duty" if key is None else "model")
-        if key is not None and steps and f"{key}_measured_" + column.split("_")[-1] in steps[0]:
-            unit = column.split("_")[-1]
-            ax.plot(t_steps, [s[f"{key}_measured_{unit}"] for s in steps], "ko", ms=4,
+                label="model duty" if averages is None else "model")
+        if averages is not None and steps and averages[0] in steps[0]:
+            ax.plot(t_steps, [s[averages[0]] for s in steps], "ko", ms=4,
                     label="measured, last-30-s average")
-            ax.plot(t_steps, [s[f"{key}_predicted_{unit}"] for s in steps], "x",
-                    color="tab:red", ms=7, mew=1.6, label="model, same window")
+            ax.plot(t_steps, [s[averages[1]] for s in steps], "x", color="tab:red", ms=7,
+                    mew=1.6, label="model, same window")
         ax.set_ylabel(label)
         ax.set_xlabel("Time [min]")
         ax.grid(True, alpha=0.3)
