@@ -7,6 +7,7 @@ import importlib.util
 import json
 import re
 import tomllib
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -20,6 +21,7 @@ from sealsim.cases import apply_overrides, expand_variants, validate_case
 from sealsim.cli import app
 from sealsim.errors import InputError, ModelError
 from sealsim.rotary.case import RotaryCase
+from sealsim.rotary.simulation import simulate
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLE = ROOT / "examples" / "calibration" / "rotary_synthetic.toml"
@@ -36,11 +38,11 @@ def _maker():
 
 MAKER = _maker()
 EXAMPLE_DATA = tomllib.loads(EXAMPLE.read_text())
-#: the example's model with time steps of at most 10 s: on 3 min steps the 30 s steps of the
-#: example would cost 0.004 N m of torque (measured against mesh 1.0 / 2 s); the 0.5 mesh
-#: costs up to 0.3 K of groove temperature (the stated uncertainty below covers it)
+#: the example's model on mesh 0.5 with 10 s steps: on the 3 min steps of SHORT_CYCLE it is
+#: within 0.0007 N m and 0.27 K of the measurements' model (mesh 1.5, 0.1-2 s steps), which
+#: the uncertainties stated in fit_data cover; 2x faster than the example's mesh 1.0
 MODEL = {**EXAMPLE_DATA["model"], "numerics": {"mesh_refinement": 0.5, "max_time_step": "10 s",
-                                               "min_time_step": "1 s"}}
+                                               "min_time_step": "10 s"}}
 COLUMNS = EXAMPLE_DATA["measurements"][0]["columns"]
 TRUTH = {"seal.radial_force": 32.0, "friction.film_coefficient_um": 2.7,
          "thermal.seal_oil_factor": 0.3}
@@ -48,12 +50,19 @@ SHORT_CYCLE = [(250, 3), (750, 3), (1500, 3)]
 PARAMETERS = [p for p in EXAMPLE_DATA["fit"]["parameters"] if p["path"] in TRUTH]
 
 
-def synthetic(path: Path, steps, seed: int, conditions=None, truth=TRUTH) -> str:
-    """A measured run made by the fine model (mesh 1.0, steps <= 2 s) with the true
-    parameters, 2 s sampling and seeded noise (the example's generator)."""
-    case = MAKER.true_case(MODEL, conditions or {}, steps, truth=truth)
-    MAKER.write_measurement(path, MAKER.measure(case, seed), path.stem)
-    return path.name
+def synthetic(folder: Path, name: str, steps, seeds, conditions=None) -> list[str]:
+    """Measured runs ``name_SEED.csv`` made by the measurements' model (mesh 1.5, 0.1-2 s
+    steps) with the true parameters, 2 s sampling and seeded noise (the example's generator)."""
+    case = MAKER.true_case(MODEL, conditions or {}, steps, truth=TRUTH)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        frame = simulate(case).timeseries
+    files = []
+    for seed in seeds:
+        path = folder / f"{name}_{seed}.csv"
+        MAKER.write_measurement(path, MAKER.measure(frame, seed), path.stem)
+        files.append(path.name)
+    return files
 
 
 def fit_data(files: dict[str, str], parameters, **fit) -> dict:
@@ -61,7 +70,7 @@ def fit_data(files: dict[str, str], parameters, **fit) -> dict:
     least squares: the synthetic data have no outliers, and it needs fewer evaluations from
     a start 15 % off than the robust loss of the example (which down-weights large residuals)."""
     return {"model": MODEL,
-            "fit": {"torque_uncertainty": "0.004 N*m", "temperature_uncertainty": "0.35 K",
+            "fit": {"torque_uncertainty": "0.003 N*m", "temperature_uncertainty": "0.35 K",
                     "loss": "linear", "parameters": parameters, **fit},
             "measurements": [{"name": n, "file": f, "role": "fit", "delimiter": ",",
                               "header": True, "columns": COLUMNS} for n, f in files.items()]}
@@ -77,8 +86,7 @@ def fitted(folder: Path, data: dict, with_runs: bool = False):
 @pytest.fixture(scope="module")
 def short_runs(tmp_path_factory):
     folder = tmp_path_factory.mktemp("rotary_synthetic")
-    return folder, [synthetic(folder / f"short_{seed}.csv", SHORT_CYCLE, seed)
-                    for seed in (1, 2)]
+    return folder, synthetic(folder, "short", SHORT_CYCLE, (1, 2))
 
 
 def test_duty_cycle_from_a_measured_speed_signal():
@@ -144,8 +152,8 @@ def test_bad_cases_name_the_field(tmp_path):
 
 def test_synthetic_truth_is_recovered_within_two_standard_errors(short_runs):
     # lip force, film coefficient and the seal's cooling in oil from one 10 min cycle made by
-    # a finer model (mesh 1.0, 2 s steps) than the fit's, two noise seeds; with honest standard
-    # errors ~95 % of the estimates lie within 2 s.e.
+    # another model set-up (mesh 1.5, short steps) than the fit's, two noise seeds; with honest
+    # standard errors ~95 % of the estimates lie within 2 s.e.
     folder, files = short_runs
     scores = []
     for name in files:
@@ -154,11 +162,15 @@ def test_synthetic_truth_is_recovered_within_two_standard_errors(short_runs):
         truth = np.array([TRUTH[n] for n in result.names])
         scores.append((result.values - truth) / result.standard_errors)
         # the fit reproduces its data: the moving steps' torque within 2 % (noise of a step
-        # average 0.003 N m of 0.5, model error up to 0.3 K), residuals as stated (χ²/dof < 4)
+        # average 0.003 N m of 0.5), residuals as stated (χ²/dof < 4)
         predicted = result.predictions["short"].step_values("torque")[1:]
         assert np.abs(predicted / run.measured("torque")[1:] - 1).max() < 0.02
         assert result.residual_variance < 4.0
     assert np.abs(scores).max() < 2.0, scores
+    # staged (torque parameters, then the thermal one, then all) ends at the same optimum
+    staged = fitted(folder, fit_data({"short": files[-1]}, PARAMETERS, strategy="staged"))
+    assert [s["stage"] for s in staged.stages] == ["torque", "thermal", "joint"]
+    assert np.all(np.abs(staged.values - result.values) < 0.1 * result.standard_errors)
 
 
 def test_a_parameter_the_data_cannot_determine_is_reported(tmp_path):
@@ -167,13 +179,13 @@ def test_a_parameter_the_data_cannot_determine_is_reported(tmp_path):
     # (the groove temperature follows from the power, i.e. from the same torque)
     held = {"environment.sump_temperature": "60 degC", "environment.housing_temperature":
             "60 degC"}
-    name = synthetic(tmp_path / "one_speed.csv", [(1000, 4)], seed=3, conditions=held)
+    (name,) = synthetic(tmp_path, "one_speed", [(1000, 4)], (3,), conditions=held)
     data = fit_data({"one": name}, [
         {"path": "seal.radial_force", "bounds": ["10 N", "100 N"]},
         {"path": "friction.film_coefficient_um", "bounds": [0.5, 20.0]},
         {"path": "environment.housing_heat_transfer", "bounds": ["1 W/(m^2*K)",
                                                                  "100 W/(m^2*K)"]}],
-        max_evaluations=6)     # the optimiser wanders along the undetermined combination
+        max_evaluations=3)     # too few to converge along the undetermined combination
     data["measurements"][0]["conditions"] = held
     result = fitted(tmp_path, data)
     assert not result.identifiable.any()
@@ -254,8 +266,7 @@ def test_example_recovers_its_truth_and_predicts_the_validation_run(example_run)
         p = report["parameters"][path]
         assert p["identifiable"] and abs(p["value"] - truth) < 2 * p["standard_error"], (path, p)
     fit = json.loads((out / "fit.json").read_text())
-    assert fit["status"] == "ok" and [s["stage"] for s in fit["stages"]] == [
-        "torque", "thermal", "joint"]
+    assert fit["status"] == "ok" and not fit["failure"]
     validate = report["measurements"]["cycle B, 3 L"]
     assert validate["role"] == "validate" and len(validate["steps"]) == 6
     # the README states the validation errors this command measured

@@ -29,6 +29,7 @@ import warnings
 from pathlib import Path
 
 import numpy as np
+import pandas as pd
 
 from sealsim.calibration.rotary_case import expand_dotted
 from sealsim.cases import apply_overrides, validate_case
@@ -72,16 +73,20 @@ def true_case(model: dict, conditions: dict, steps, truth=None, numerics=None) -
     return validate_case(RotaryCase, data, "synthetic truth", require_units=False)
 
 
-def measure(case: RotaryCase, seed: int, interval: float = SAMPLE_INTERVAL,
+def measure(case: RotaryCase | pd.DataFrame, seed: int, interval: float = SAMPLE_INTERVAL,
             noise: dict | None = None) -> np.ndarray:
-    """Sample a simulated run like a rig: every ``interval`` s, with seeded white noise.
+    """Sample a simulated run (a case, or its time series) like a rig: every ``interval`` s,
+    with seeded white noise.
 
     Returns the columns time_s, speed_rpm, torque_Nm, T_groove_C.
     """
     noise = NOISE if noise is None else noise
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        frame = simulate(case).timeseries
+    if isinstance(case, pd.DataFrame):
+        frame = case
+    else:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            frame = simulate(case).timeseries
     t = np.arange(0.0, frame["time_s"].iloc[-1] + 1e-9, interval)
     rng = np.random.default_rng(seed)
     columns = [t]
