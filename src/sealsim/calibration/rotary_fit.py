@@ -13,11 +13,12 @@ Fit (scipy.optimize.least_squares, trust-region reflective with bounds, robust l
 fields of the rotary case, residuals = (model − measured)/u for the step-average torque
 (u = ``fit.torque_uncertainty``) and spring-groove temperature (``temperature_uncertainty``).
 Strictly positive parameters are fitted in log space.  Jacobians are forward differences of
-1 % (log space) or 1 % of the bound range; the uncertainty comes from a central-difference
-Jacobian of all parameters and all residuals at the optimum
-(:func:`sealsim.calibration.statistics.parameter_statistics`).  A difference step much smaller
-than that would resolve the model's discrete parts (its conduction matrix is reused within
-2 K bins of the sump temperature) instead of its slope.
+1 % (log space) or 1 % of the bound range: a much smaller step would resolve the model's
+discrete parts (its conduction matrix is reused within 2 K bins of the sump temperature)
+instead of its slope.  The uncertainty comes from the Jacobian of all parameters and all
+residuals at the optimum (:func:`sealsim.calibration.statistics.parameter_statistics`), with
+the residual variance floored at 1: the stated uncertainties also cover model errors that do
+not scatter.
 """
 
 from __future__ import annotations
@@ -544,7 +545,8 @@ def fit_rotary(case: RotaryFitCase, runs: list[PreparedRotaryRun],
     # optimiser's last Jacobian is at the optimum unless the model failed there
     x = _to_x(values, names, logs)
     res = objective.residuals(values, both)
-    if last_jacobian.get("x") is not None and np.array_equal(last_jacobian["x"], x):
+    if (last_jacobian.get("x") is not None and np.array_equal(last_jacobian["x"], x)
+            and last_jacobian["jac"].shape == (res.size, len(names))):
         jac_x = last_jacobian["jac"]
     else:
         jac_x = _jacobian(lambda xx: objective.residuals(_to_values(xx, values, names, logs),
@@ -612,22 +614,17 @@ def _steps(lo, hi, logs):
                      for lg, l, h in zip(logs, lo, hi)])
 
 
-def _jacobian(fun, x, lo, hi, logs, central=False, f0=None):
-    """Finite-difference Jacobian in x space (``logs``: which entries are logarithms);
-    one-sided where a bound is within a step."""
+def _jacobian(fun, x, lo, hi, logs, f0):
+    """Forward-difference Jacobian in x space (``logs``: which entries are logarithms),
+    backward where the upper bound is within a step."""
     h = _steps(lo, hi, logs)
-    f0 = fun(x) if f0 is None else f0
     jac = np.empty((f0.size, x.size))
     for k in range(x.size):
-        up, down = x.copy(), x.copy()
-        up[k] = min(x[k] + h[k], hi[k])
-        down[k] = max(x[k] - h[k], lo[k])
-        if central and up[k] > x[k] and down[k] < x[k]:
-            jac[:, k] = (fun(up) - fun(down)) / (up[k] - down[k])
-        elif up[k] > x[k]:
-            jac[:, k] = (fun(up) - f0) / (up[k] - x[k])
-        else:
-            jac[:, k] = (f0 - fun(down)) / (x[k] - down[k])
+        step = x.copy()
+        step[k] = min(x[k] + h[k], hi[k])
+        if step[k] <= x[k]:
+            step[k] = max(x[k] - h[k], lo[k])
+        jac[:, k] = (fun(step) - f0) / (step[k] - x[k])
     return jac
 
 

@@ -184,9 +184,10 @@ def run_rotary_fit_file(path: str | Path, out: str | Path, force: bool = False,
                 title))
         torque_points = [(s["step"], s["role"], s["torque_measured_Nm"],
                           s["torque_predicted_Nm"]) for s in step_rows if s["moving"]]
-        folder.savefig("parity.png", plot_parity(
-            torque_points, title, quantity="step-average torque", unit="N m",
-            annotate=False))
+        if torque_points:
+            folder.savefig("parity.png", plot_parity(
+                torque_points, title, quantity="step-average torque", unit="N m",
+                annotate=False))
         groove_points = [(s["step"], s["role"], s["T_groove_measured_C"],
                           s["T_groove_predicted_C"]) for s in step_rows
                          if "T_groove_measured_C" in s]
