@@ -98,9 +98,13 @@ def rotary_fit(
             console.print(f"{shown} ± {100 * p['relative_standard_error']:.2g} % (1 s.e.)"
                           + ("" if p["identifiable"] else " -- not identifiable"))
     for name, m in report["measurements"].items():
-        line = (f"{name} ({m['role']}): step-average torque error mean "
-                f"{100 * m['torque_rel_error_mean']:.1f} %, max "
-                f"{100 * m['torque_rel_error_max']:.1f} %, RMSE {m['torque_rmse_Nm']:.4f} N m")
+        if m["torque_rel_error_mean"] is None:  # standstill only: no relative error
+            line = f"{name} ({m['role']}): no step with the shaft turning"
+        else:
+            line = (f"{name} ({m['role']}): step-average torque error mean "
+                    f"{100 * m['torque_rel_error_mean']:.1f} %, max "
+                    f"{100 * m['torque_rel_error_max']:.1f} %, RMSE "
+                    f"{m['torque_rmse_Nm']:.4f} N m")
         if "T_groove_rmse_K" in m:
             line += (f"; groove temperature RMSE {m['T_groove_rmse_K']:.2f} K, max "
                      f"{m['T_groove_error_max_K']:.2f} K")
