@@ -159,8 +159,12 @@ CASE_KINDS = (
                         "initial_position"})),
     CaseKind("friction", "sealsim.friction.case.FrictionCase", "sealsim friction run",
              frozenset({"bench", "inputs"})),
+    # a friction fit and a rotary fit share [fit] and [[measurements]]; [model] (the rotary
+    # case) or [contact]/[signals] tell them apart
     CaseKind("friction fit", "sealsim.calibration.case.FrictionFitCase", "sealsim friction fit",
-             frozenset({"fit", "measurements", "contact", "signals"})),
+             frozenset({"contact", "signals"})),
+    CaseKind("rotary fit", "sealsim.calibration.rotary_case.RotaryFitCase", "sealsim rotary fit",
+             frozenset({"model", "averaging"})),
     CaseKind("pneumatic compare", "sealsim.calibration.pneumatic_compare.CompareCase",
              "sealsim pneumatic compare", frozenset({"case", "variant", "measurement"})),
     CaseKind("study", "sealsim.studies.spec.StudyFile", "sealsim study run",

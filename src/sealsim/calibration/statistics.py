@@ -5,7 +5,10 @@ estimate is approximated by (Bates & Watts 1988, §2.3)::
 
     C = s²·(JᵀJ)⁻¹,   s² = Σ r_i² / (m − n),   J = ∂r/∂θ at θ̂
 
-standard errors are sqrt(diag C) and the correlation matrix C_ij/sqrt(C_ii C_jj).  (JᵀJ)⁻¹ is
+standard errors are sqrt(diag C) and the correlation matrix C_ij/sqrt(C_ii C_jj).  When the
+residuals are scaled by stated measurement uncertainties, s² can be floored at 1 (Birge 1932):
+the stated uncertainty then also covers errors that do not scatter (a model's discretisation),
+and a scatter smaller than stated does not shrink the standard errors.  (JᵀJ)⁻¹ is
 formed from the singular value decomposition of J; directions whose singular value is below
 ``rcond``·σ_max carry no information from the data -- the parameters along them are *not
 identifiable* (their standard error is infinite).
@@ -19,7 +22,8 @@ __all__ = ["parameter_statistics"]
 
 
 def parameter_statistics(jacobian, residuals, *, rcond=1e-8, max_relative_error=0.5,
-                         max_correlation=0.995, values=None, names=None):
+                         max_correlation=0.995, values=None, names=None,
+                         min_residual_variance=0.0):
     """Standard errors, correlations and identifiability of fitted parameters.
 
     Parameters
@@ -38,6 +42,8 @@ def parameter_statistics(jacobian, residuals, *, rcond=1e-8, max_relative_error=
         Parameter values (for the relative error test).
     names : list of str, optional
         Parameter names used in the messages.
+    min_residual_variance : float
+        Floor of s² (1 for residuals divided by stated standard uncertainties).
 
     Returns
     -------
@@ -49,6 +55,8 @@ def parameter_statistics(jacobian, residuals, *, rcond=1e-8, max_relative_error=
     References
     ----------
     D. M. Bates, D. G. Watts, Nonlinear Regression Analysis and Its Applications, Wiley 1988.
+    R. T. Birge, "The calculation of errors by the method of least squares", Phys. Rev. 40,
+    207-227, 1932.
 
     Examples
     --------
@@ -61,13 +69,17 @@ def parameter_statistics(jacobian, residuals, *, rcond=1e-8, max_relative_error=
     >>> s = parameter_statistics(np.column_stack([x, x]), r)   # two copies of one parameter
     >>> s["identifiable"].tolist()
     [False, False]
+    >>> u = 0.1                # stated uncertainty, 10 x the scatter: the floor holds
+    >>> s = parameter_statistics(J / u, r / u, min_residual_variance=1.0)
+    >>> float(s["residual_variance"]), s["standard_errors"].round(4).tolist()
+    (1.0, [0.0564, 0.0953])
     """
     J = np.atleast_2d(np.asarray(jacobian, dtype=float))
     r = np.asarray(residuals, dtype=float)
     m, n = J.shape
     names = list(names) if names is not None else [f"parameter {k}" for k in range(n)]
     dof = max(m - n, 1)
-    s2 = float(np.sum(r ** 2) / dof)
+    s2 = max(float(np.sum(r ** 2) / dof), float(min_residual_variance))
     if not np.all(np.isfinite(J)):
         bad = np.full(n, np.inf)
         return {"standard_errors": bad, "correlation": np.full((n, n), np.nan),

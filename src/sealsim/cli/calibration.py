@@ -1,5 +1,5 @@
 """Calibration commands, registered on the model apps: ``sealsim friction fit``,
-``sealsim pneumatic compare``.
+``sealsim rotary fit``, ``sealsim pneumatic compare``.
 
 The commands hold no physics: :mod:`sealsim.calibration` fits and writes the results; the
 command shows progress, prints the fitted values, the prediction errors and why a fit failed.
@@ -14,6 +14,7 @@ import typer
 from sealsim.cli._common import console, err_console, guarded, variant_progress
 from sealsim.cli.friction import friction_app
 from sealsim.cli.pneumatic import pneumatic_app
+from sealsim.cli.rotary import rotary_app
 
 
 @friction_app.command("fit")
@@ -69,3 +70,60 @@ def compare(
         console.print(f"{name}: RMSE {s['rmse']:.4g} {s['unit']}, max error "
                       f"{s['max_abs_error']:.4g} {s['unit']}, R² {r2}")
     console.print(f"results written to {out}")
+
+
+@rotary_app.command("fit")
+@guarded
+def rotary_fit(
+    case: Path = typer.Argument(..., help="Rotary fit case file (TOML), e.g. examples/"
+                                          "calibration/rotary_synthetic.toml."),
+    out: Path = typer.Option(..., "--out", "-o", help="Result folder (must not hold results "
+                                                      "unless --force)."),
+    force: bool = typer.Option(False, "--force", help="Replace an existing result folder."),
+    quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress bar."),
+) -> None:
+    """Fit lip seal parameters to measured speed cycles (torque, spring-groove temperature);
+    report the step-average errors, also on held-out runs."""
+    from sealsim.calibration.rotary_study import run_rotary_fit_file
+
+    with variant_progress("stage", quiet, lambda _, d, n: f"{d:g}/{n:g} evaluations") \
+            as progress:
+        summary = run_rotary_fit_file(case, out, force, progress)
+    report = summary["report"]
+    for name, p in report["parameters"].items():
+        shown = f"{name} = {_rounded(p['text'], p['value'])}"
+        if p["relative_standard_error"] is None:
+            console.print(f"{shown} (not determined)")
+        else:
+            console.print(f"{shown} ± {100 * p['relative_standard_error']:.2g} % (1 s.e.)"
+                          + ("" if p["identifiable"] else " -- not identifiable"))
+    for name, m in report["measurements"].items():
+        if m["torque_rel_error_mean"] is None:  # standstill only: no relative error
+            line = f"{name} ({m['role']}): no step with the shaft turning"
+        else:
+            line = (f"{name} ({m['role']}): step-average torque error mean "
+                    f"{100 * m['torque_rel_error_mean']:.1f} %, max "
+                    f"{100 * m['torque_rel_error_max']:.1f} %, RMSE "
+                    f"{m['torque_rmse_Nm']:.4f} N m")
+        if "T_groove_rmse_K" in m:
+            line += (f"; groove temperature RMSE {m['T_groove_rmse_K']:.2f} K, max "
+                     f"{m['T_groove_error_max_K']:.2f} K")
+        console.print(line)
+    for text in summary["warnings"]:
+        console.print(f"[yellow]warning:[/yellow] {text}")
+    console.print(f"{summary['simulations']} simulations; results written to {out}")
+    if summary["status"] != "ok":
+        for text in summary["failure"]:
+            err_console.print(f"[bold red]fit failed:[/bold red] {text}")
+        raise typer.Exit(1)
+
+
+def _rounded(text, value: float) -> str:
+    """A fitted value for the terminal: 4 significant digits, with the case file's unit."""
+    if isinstance(text, str):
+        number, _, unit = text.partition(" ")
+        try:
+            return f"{float(number):.4g} {unit}"
+        except ValueError:
+            return text
+    return f"{value:.4g}"

@@ -1,5 +1,6 @@
-"""Figures of fits against measurements: overlays (friction vs time and vs stroke) and the
-parity plot of measured vs predicted levels with a ±20 % band (seed 000 Fig. 10 style)."""
+"""Figures of fits against measurements: overlays (friction vs time and vs stroke; a rotary
+speed cycle like seed 000 Fig. 9) and the parity plot of measured vs predicted levels with a
+±20 % band (seed 000 Fig. 10 style)."""
 
 from __future__ import annotations
 
@@ -7,7 +8,7 @@ import numpy as np
 
 from sealsim.plotting import new_figure
 
-__all__ = ["plot_overlay", "plot_parity", "plot_signals"]
+__all__ = ["plot_overlay", "plot_parity", "plot_rotary_overlay", "plot_signals"]
 
 
 def plot_overlay(name: str, role: str, time, position, measured, predicted, title: str = ""):
@@ -41,34 +42,53 @@ def plot_overlay(name: str, role: str, time, position, measured, predicted, titl
 
 
 def plot_parity(points, title: str = "", quantity: str = "friction level", unit: str = "N",
-                band: float = 0.2):
+                band: float = 0.2, absolute_band: float | None = None,
+                band_unit: str | None = None, annotate: bool = True):
     """Predicted vs measured with the ±``band`` relative band and R².
 
     Parameters
     ----------
     points : list of (label, role, measured, predicted)
         One point per measurement (or step); role "fit" or "validate".
+    absolute_band : float, optional
+        A band of ± this value (in ``unit``) instead of the relative one; the axes then span
+        the data instead of starting at 0 (temperatures).
+    band_unit : str, optional
+        Unit shown for the absolute band (default ``unit``; "K" for a band in °C).
+    annotate : bool
+        Write each point's label next to it.
     """
     fig, ax = new_figure(1, 1, width=5.5, height=5.0)
     meas = np.array([p[2] for p in points], dtype=float)
     pred = np.array([p[3] for p in points], dtype=float)
-    top = 1.15 * max(float(np.max(meas)), float(np.max(pred)), 1e-12)
-    line = np.array([0.0, top])
+    if absolute_band is None:
+        bottom = 0.0
+        top = 1.15 * max(float(np.max(meas)), float(np.max(pred)), 1e-12)
+    else:
+        low = min(float(np.min(meas)), float(np.min(pred)))
+        high = max(float(np.max(meas)), float(np.max(pred)))
+        margin = max(0.08 * (high - low), 2 * absolute_band)
+        bottom, top = low - margin, high + margin
+    line = np.array([bottom, top])
     ax.plot(line, line, "k-", lw=0.8, label="1:1")
-    ax.fill_between(line, (1 - band) * line, (1 + band) * line, color="C0", alpha=0.12,
-                    label=f"±{100 * band:g} %")
+    if absolute_band is None:
+        ax.fill_between(line, (1 - band) * line, (1 + band) * line, color="C0", alpha=0.12,
+                        label=f"±{100 * band:g} %")
+    else:
+        ax.fill_between(line, line - absolute_band, line + absolute_band, color="C0",
+                        alpha=0.12, label=f"±{absolute_band:g} {band_unit or unit}")
     for role, marker, color in (("fit", "o", "C0"), ("validate", "s", "C3")):
         sel = [i for i, p in enumerate(points) if p[1] == role]
         if sel:
             ax.scatter(meas[sel], pred[sel], marker=marker, color=color, zorder=3,
                        label="fitted" if role == "fit" else "validation (not fitted)")
-    for label, _, m, p in points:
+    for label, _, m, p in points if annotate else ():
         ax.annotate(str(label), (m, p), textcoords="offset points", xytext=(5, -10),
                     fontsize=8)
     ss_tot = float(np.sum((meas - meas.mean()) ** 2))
     r2 = 1.0 - float(np.sum((meas - pred) ** 2)) / ss_tot if ss_tot > 0 else float("nan")
-    ax.set_xlim(0, top)
-    ax.set_ylim(0, top)
+    ax.set_xlim(bottom, top)
+    ax.set_ylim(bottom, top)
     ax.set_aspect("equal")
     ax.set_xlabel(f"measured {quantity} [{unit}]")
     ax.set_ylabel(f"predicted {quantity} [{unit}]")
@@ -100,4 +120,51 @@ def plot_signals(time, curves, title: str = ""):
     axes[-1, 0].set_xlabel("time [s]")
     if title:
         fig.suptitle(title)
+    return fig
+
+
+def plot_rotary_overlay(name: str, role: str, time, measured, model, steps, title: str = ""):
+    """Speed | torque | spring-groove temperature of one rotary run over time, measured and
+    model (like seed 000 Fig. 9), with the step averages compared.
+
+    Parameters
+    ----------
+    time : array_like
+        Measured sample times [s].
+    measured : dict
+        ``speed_rpm``, ``torque_Nm`` and (optional) ``T_groove_C`` at the samples.
+    model : pandas.DataFrame
+        The simulation's time series (``time_s``, ``speed_rpm``, ``torque_Nm``,
+        ``T_groove_C``).
+    steps : list of dict
+        Per step ``t_mid_s`` (middle of its averaging window) and the measured and predicted
+        averages ``torque_measured_Nm``, ``torque_predicted_Nm``, ``T_groove_measured_C``,
+        ``T_groove_predicted_C``.
+    """
+    fig, axes = new_figure(3, 1, width=13.0, height=4.0)
+    t = np.asarray(time) / 60.0
+    tm = model["time_s"].to_numpy() / 60.0
+    t_steps = np.array([s["t_mid_s"] for s in steps]) / 60.0
+    panels = [("speed_rpm", "Speed [rpm]", None),
+              ("torque_Nm", "Friction torque [N m]", ("torque_measured_Nm",
+                                                      "torque_predicted_Nm")),
+              ("T_groove_C", "Spring-groove temperature [°C]", ("T_groove_measured_C",
+                                                                "T_groove_predicted_C"))]
+    for ax, (column, label, averages) in zip(axes, panels):
+        if column in measured:
+            ax.plot(t, measured[column], color="0.55", lw=0.6, label="measured")
+        ax.plot(tm, model[column], color="tab:red", lw=1.4,
+                label="model duty" if averages is None else "model")
+        if averages is not None and steps and averages[0] in steps[0]:
+            ax.plot(t_steps, [s[averages[0]] for s in steps], "ko", ms=4,
+                    label="measured, last-30-s average")
+            ax.plot(t_steps, [s[averages[1]] for s in steps], "x", color="tab:red", ms=7,
+                    mew=1.6, label="model, same window")
+        ax.set_ylabel(label)
+        ax.set_xlabel("Time [min]")
+        ax.grid(True, alpha=0.3)
+        ax.legend(loc="best", fontsize=8)
+    axes[1].set_ylim(bottom=0)
+    kind = "fitted" if role == "fit" else "predicted (not fitted)"
+    fig.suptitle(f"{title}\n{name}: {kind}" if title else f"{name}: {kind}")
     return fig
