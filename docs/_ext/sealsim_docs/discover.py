@@ -52,7 +52,8 @@ def _is_module_attribute(cls: type) -> bool:
 
 
 def case_models() -> list[type[BaseModel]]:
-    """Every top-level case model: a public ``CaseModel`` no other model uses as a field type.
+    """Every top-level case model: a public ``CaseModel`` no other model uses as a field type,
+    or one that ``sealsim.cases.CASE_KINDS`` registers.
 
     These are the documents a user writes (a rotary case, a friction fit, an entry of an oil
     file...); their tables are the sub-models reached through the fields.  Not documents:
@@ -69,8 +70,13 @@ def case_models() -> list[type[BaseModel]]:
         subs = _subclasses(model)
         return bool(subs) and all(sub in used for sub in subs)
 
+    # a registered case kind is a document even when another case embeds it (a rotary fit
+    # case holds a rotary case as its [model])
+    kinds = getattr(importlib.import_module("sealsim.cases"), "CASE_KINDS", ())
+    registered = {getattr(kind, "model", None) for kind in kinds}
     roots = [m for m in models
-             if m not in used and not m.__name__.startswith("_") and not union_base(m)
+             if (m not in used or f"{m.__module__}.{m.__qualname__}" in registered)
+             and not m.__name__.startswith("_") and not union_base(m)
              and _is_module_attribute(m)]
     return sorted(roots, key=lambda m: (m.__module__, m.__name__))
 
