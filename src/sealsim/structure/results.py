@@ -142,6 +142,21 @@ def _edge(x, p, inner, direction, threshold):
     return e
 
 
+def _skip_grazing(x, p, edge, other, direction, threshold):
+    """(edge node, pressures) with a grazing outermost node dropped: one with less pressure
+    than its inner neighbour whose presence contradicts the p²-linear edge extrapolated from
+    the two nodes inside it (that edge lies inside the node)."""
+    inner = edge - direction
+    if threshold != 0.0 or abs(other - edge) < 2 or not p[edge] < p[inner]:
+        return edge, p
+    q = p.copy()
+    q[edge] = 0.0
+    e = _edge(x, q, inner, direction, 0.0)
+    if (e - x[edge]) * direction < -1e-12 * max(abs(x[inner] - x[edge]), 1e-300):
+        return inner, q
+    return edge, p
+
+
 def contact_width(position, pressure, threshold_low=0.0, threshold_high=0.0):
     """Contact width [m] and the two edges from a nodal contact pressure profile.
 
@@ -166,7 +181,10 @@ def contact_width(position, pressure, threshold_low=0.0, threshold_high=0.0):
     thresholds. Each edge is where p falls to the threshold, with p² linear in position
     between the nodes -- or, beyond the last node in contact, extrapolated from the last two
     nodes but not past the first free node. Near a smooth contact edge p ∝ √(e − x) (Hertz),
-    so the geometric edge is found well inside an element.
+    so the geometric edge is found well inside an element. An outermost node with less
+    pressure than its neighbour, where the p² line through the two nodes inside it reaches
+    zero before the node, only grazes the surface (node-to-surface contact: its nodal force
+    does not stand for its tributary length); the edge then comes from the nodes inside it.
 
     Examples
     --------
@@ -190,6 +208,10 @@ def contact_width(position, pressure, threshold_low=0.0, threshold_high=0.0):
     hi = peak
     while hi + 1 < len(p) and p[hi + 1] > threshold_high:
         hi += 1
+    # a grazing edge node: its nodal contact force does not stand for its tributary length
+    # (a node just touching the surface); then the edge comes from the nodes inside it
+    lo, p = _skip_grazing(x, p, lo, hi, -1, threshold_low)
+    hi, p = _skip_grazing(x, p, hi, lo, +1, threshold_high)
     e_lo = _edge(x, p, lo, -1, threshold_low)
     e_hi = _edge(x, p, hi, +1, threshold_high)
     return float(e_hi - e_lo), float(e_lo), float(e_hi)
