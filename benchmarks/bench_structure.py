@@ -17,7 +17,7 @@ import time
 from sealsim.cases import validate_case
 from sealsim.structure.case import StructureCase
 from sealsim.structure.geometry import Gland, ORing, SealAssembly
-from sealsim.structure.maps import compute_map
+from sealsim.structure.mapping import compute_map
 from sealsim.structure.material import HyperelasticSealMaterial
 from sealsim.structure.mesh import mesh_oring
 from sealsim.structure.model import SealModel

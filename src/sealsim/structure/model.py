@@ -99,6 +99,11 @@ class SealModel:
         "sealing_surface", "groove_bottom", "wall_upstream", "wall_downstream"); FElupe's
         penalty friction with return mapping (stick / slip, state updated after each
         converged increment).
+    elastic_slip : float, optional
+        Elastic slip [m] a sticking contact node may take before it slides (FElupe's
+        ``elastic_slip``: the tangential penalty is μ f_n / slip, so sticking does not depend
+        on the contact pressure); default 1e-3 of the section's contact size. Without it the
+        stick/slip state of nodes entering contact chatters between Newton iterations.
     spring : GarterSpringSpec, optional
         Garter spring on the mesh's ``"spring"`` node set (radial lip seals).
     """
@@ -108,7 +113,7 @@ class SealModel:
                  penalty: float = 1.0,
                  positioning_pressure: float = DEFAULT_POSITIONING_PRESSURE,
                  rolling_stiffness: float = 10.0, friction: float | dict | None = None,
-                 spring: GarterSpringSpec | None = None):
+                 elastic_slip: float | None = None, spring: GarterSpringSpec | None = None):
         self.assembly = assembly
         self.seal_mesh = mesh
         self.material = material
@@ -149,11 +154,15 @@ class SealModel:
         if unknown:
             raise ValueError(f"friction given for unknown rigid lines {sorted(unknown)}")
         self.friction = {name: float(mu.get(name, 0.0)) for name in self.line_names}
+        if elastic_slip is None:
+            seal = assembly.seal
+            elastic_slip = 1e-3 * getattr(seal, "contact_scale", seal.radial_extent)
         self.contacts = {
             line.name: fem.ContactRigidPlane(
                 self.field, points=candidates, centerpoint=self.centerpoints[line.name],
                 normal=line.normal, multiplier=penalty, items=[self.solid],
-                friction=self.friction[line.name])
+                friction=self.friction[line.name],
+                elastic_slip=elastic_slip if self.friction[line.name] > 0 else None)
             for line in lines
         }
         self._candidates = candidates
@@ -195,6 +204,7 @@ class SealModel:
         self.state = LoadState(0.0, 0.0, t0, 0.0)
         self.force_scale = self._force_scale()
         self.newton_iterations: list[int] = []
+        self.increment_log: list[dict] = []
 
     # -- sizes and scales -------------------------------------------------------------------------
     @property

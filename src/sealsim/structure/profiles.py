@@ -538,6 +538,46 @@ def radial_lip_profile(shaft_diameter: float, outer_diameter: float, width: floa
                        contact_size=0.35 * head)
 
 
+STEEL_SHEAR_MODULUS = 79e9
+"""Shear modulus of spring steel [Pa] (EN 10270-1 wire; Wahl, Mechanical Springs, 1963)."""
+
+SPRING_TENSION_PER_DIAMETER = 34.0
+"""Default hoop pre-tension of the garter spring per shaft diameter [N/m] (2.7 N at
+d = 80 mm): with the spring's radial force 2πT this is a spring share of 0.45 of a radial
+load of 0.15 N/mm, the defaults of :mod:`sealsim.rotary.lip`; the same order as the 3.34 N
+'circumferential load' of the helicopter-gearbox seal springs of Coatings 2021, 11(2), 156."""
+
+
+def garter_spring_rate(coil_diameter: float, wire_diameter: float, length: float,
+                       shear_modulus: float = STEEL_SHEAR_MODULUS) -> float:
+    """Axial rate of a close-wound garter spring, k = G d⁴ / (8 D³ n), n = L / d.
+
+    Parameters
+    ----------
+    coil_diameter : float
+        Outer coil diameter [m].
+    wire_diameter : float
+        Wire diameter d [m] (mean coil diameter D = coil − wire).
+    length : float
+        Spring length L [m] (its circumference in the seal).
+    shear_modulus : float
+        G of the wire [Pa].
+
+    Returns
+    -------
+    float
+        k [N/m] (Wahl, Mechanical Springs, 2nd ed., 1963, ch. 2).
+
+    Examples
+    --------
+    >>> round(garter_spring_rate(1.6e-3, 0.4e-3, 2 * math.pi * 41.5e-3), 1)
+    224.4
+    """
+    mean = coil_diameter - wire_diameter
+    turns = length / wire_diameter
+    return shear_modulus * wire_diameter**4 / (8.0 * mean**3 * turns)
+
+
 # -- user profiles ----------------------------------------------------------------------------------
 
 def user_profile(points=None, *, bulges=None, tags=None, dxf=None, layer=None,

@@ -177,15 +177,17 @@ def solve(model: SealModel, steps: list[LoadStep], *,
         dfrac = 1.0 / n
         smallest = dfrac * 0.5 ** max_cutbacks
         k = 0
+        cutbacks = 0
         while done < 1.0 - 1e-12:
             frac = min(done + dfrac, 1.0)
             state = start.interpolate(target, frac)
             cp = model.checkpoint()
             try:
-                _increment(model, state, tol, maxiter)
+                iterations = _increment(model, state, tol, maxiter)
             except (fem.NewtonConvergenceError, ArithmeticError, np.linalg.LinAlgError,
                     RuntimeError, ValueError) as exc:
                 model.restore(cp)
+                cutbacks += 1
                 if dfrac * 0.5 < smallest * (1 - 1e-9):
                     raise ConvergenceError(
                         f"the FE model did not converge in step {number + 1} "
@@ -197,6 +199,11 @@ def solve(model: SealModel, steps: list[LoadStep], *,
                     ) from None
                 dfrac *= 0.5
                 continue
+            model.increment_log.append({
+                "step": number + 1, "step_name": step.name, "load_fraction": frac,
+                "increment": frac - done, "newton_iterations": iterations,
+                "cutbacks": cutbacks})
+            cutbacks = 0
             done = frac
             k += 1
             on_grid = abs(done * n - round(done * n)) < 1e-9
