@@ -262,7 +262,7 @@ def check_contour(contour: Contour, name: str = "seal contour") -> Contour:
     --------
     A bow tie crosses itself:
 
-    >>> bow = Contour(np.array([[0, 1.0], [1, 2.0], [1, 1.0], [0, 2.0]]))
+    >>> bow = Contour(np.array([[0, 1.0], [1, 2.0], [1, 1.0], [0, 2.0]]) * 1e-3)
     >>> try:
     ...     check_contour(bow, "bow")
     ... except InputError as e:
@@ -383,7 +383,8 @@ def filleted_contour(points, radii, tags=None, *, name: str = "profile") -> Cont
         u2 = (b - p) / np.linalg.norm(b - p)
         cosang = float(np.clip(np.dot(u1, u2), -1.0, 1.0))
         half = 0.5 * math.acos(cosang)
-        turn = float(np.cross(p - a, b - p))  # > 0: left turn (convex corner of a CCW loop)
+        u, v = p - a, b - p
+        turn = float(u[0] * v[1] - u[1] * v[0])  # > 0: left turn (convex corner, CCW loop)
         if r[k] <= 0 or half <= 1e-9 or abs(math.pi / 2 - half) < 1e-12:
             geo.append(None)
             continue

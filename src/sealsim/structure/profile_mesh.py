@@ -455,7 +455,7 @@ def _mesh_builtin(contour: Contour, sizes: SizeField):
         la = np.linalg.norm(b - c, axis=1)
         lb = np.linalg.norm(c - a, axis=1)
         lc = np.linalg.norm(a - b, axis=1)
-        area = 0.5 * np.abs(np.cross(b - a, c - a))
+        area = 0.5 * np.abs((b - a)[:, 0] * (c - a)[:, 1] - (b - a)[:, 1] * (c - a)[:, 0])
         R = la * lb * lc / (4.0 * np.maximum(area, 1e-300))
         h = target(*P.mean(axis=1).T)
         bad = (R > 0.62 * h) | (R / np.minimum(np.minimum(la, lb), lc) > 1.1)
@@ -535,7 +535,8 @@ def _mesh_builtin(contour: Contour, sizes: SizeField):
     tri = Delaunay(pts)
     simp = tri.simplices[poly.contains_points(pts[tri.simplices].mean(axis=1))]
     P = pts[simp]
-    orient = np.cross(P[:, 1] - P[:, 0], P[:, 2] - P[:, 0])
+    e1, e2 = P[:, 1] - P[:, 0], P[:, 2] - P[:, 0]
+    orient = e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0]
     simp = np.where((orient < 0)[:, None], simp[:, [0, 2, 1]], simp)
     # split every triangle into three quads
     edge_id = {}

@@ -66,6 +66,8 @@ class SurfaceResult:
         Outermost contact edges along the line [m] (nan without contact).
     zones : int
         Number of separate contact zones.
+    zone_edges : list of tuple
+        (low edge, high edge) of every contact zone [m].
     tangential : float
         Force of the seal on the line along it [N] (friction; z for radial lines, r for
         walls).
@@ -83,6 +85,7 @@ class SurfaceResult:
     edge_high: float = float("nan")
     zones: int = 0
     tangential: float = 0.0
+    zone_edges: list = field(default_factory=list)
 
     @property
     def span(self) -> float:
@@ -250,7 +253,7 @@ def contact_zones(in_contact) -> list[np.ndarray]:
     Examples
     --------
     >>> [z.tolist() for z in contact_zones(np.array([1, 1, 0, 0, 1, 0, 1], bool))]
-    [[6, 0, 1], [4]]
+    [[4], [6, 0, 1]]
     """
     inc = np.asarray(in_contact, dtype=bool)
     n = len(inc)
@@ -311,35 +314,32 @@ def _surface(model, name) -> SurfaceResult:
     p_mean = total / (circ * width) if width > 0 else 0.0
     return SurfaceResult(name, total, width, float(p_all.max()) if len(p_all) else 0.0, p_mean,
                          pos_all, p_all, radius, lo, hi, len(widths),
-                         model.tangential_reaction(name))
+                         model.tangential_reaction(name),
+                         sorted(zip(edges[0::2], edges[1::2])))
 
 
 def pressure_profile(surface: SurfaceResult, positions) -> np.ndarray:
     """Contact pressure [Pa] of a surface at given positions along it [m]: linear between the
-    contact nodes, zero outside the contact zones (the edges included).
+    contact nodes of a zone, falling linearly to zero at the zone's edges, zero outside the
+    contact zones.
 
     Examples
     --------
     >>> s = SurfaceResult("sealing_surface", 1.0, 0.2, 2.0, 1.0, np.array([0.0, 0.1]),
-    ...                   np.array([2.0, 1.0]), 0.01, -0.05, 0.15, 1)
-    >>> pressure_profile(s, [-0.1, 0.0, 0.05, 0.2]).tolist()
-    [0.0, 2.0, 1.5, 0.0]
+    ...                   np.array([2.0, 1.0]), 0.01, -0.05, 0.15, 1,
+    ...                   zone_edges=[(-0.05, 0.15)])
+    >>> pressure_profile(s, [-0.1, -0.025, 0.05, 0.2]).tolist()
+    [0.0, 1.0, 1.5, 0.0]
     """
     grid = np.asarray(positions, dtype=float)
-    if surface.zones == 0:
-        return np.zeros_like(grid)
-    p = np.interp(grid, surface.position, surface.pressure, left=0.0, right=0.0)
-    inside = (grid >= surface.edge_low) & (grid <= surface.edge_high)
-    # between the outermost node and the edge: down to zero at the edge
-    lo_pos, hi_pos = surface.position[0], surface.position[-1]
-    left = inside & (grid < lo_pos)
-    right = inside & (grid > hi_pos)
-    if np.any(left) and lo_pos > surface.edge_low:
-        p[left] = surface.pressure[0] * (grid[left] - surface.edge_low) / (lo_pos - surface.edge_low)
-    if np.any(right) and surface.edge_high > hi_pos:
-        p[right] = surface.pressure[-1] * (surface.edge_high - grid[right]) / (
-            surface.edge_high - hi_pos)
-    return np.where(inside, p, 0.0)
+    out = np.zeros_like(grid)
+    for lo, hi in surface.zone_edges:
+        inside = (surface.position >= lo) & (surface.position <= hi)
+        z = np.concatenate([[lo], surface.position[inside], [hi]])
+        p = np.concatenate([[0.0], surface.pressure[inside], [0.0]])
+        on = (grid >= lo) & (grid <= hi)
+        out[on] = np.interp(grid[on], z, p)
+    return out
 
 
 def _reaction(model, name) -> np.ndarray:
