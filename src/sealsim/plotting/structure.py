@@ -201,3 +201,24 @@ def plot_map_profiles(dataset, squeeze_index: int = 0, title: str = ""):
     fig.suptitle((title + ": " if title else "") + f"contact pressure on the sealing surface, "
                  f"squeeze {s * 100:.3g} %")
     return fig
+
+
+def plot_lip_force(tables: dict, title: str = ""):
+    """Radial lip force, spring share and contact width of FE lip tables vs temperature
+    (frames of :meth:`sealsim.rotary.lip_fe.LipForceTable.frame`, one per variant)."""
+    fig, axes = new_figure(3, 1, width=12.0, height=3.6)
+    for name, t in tables.items():
+        axes[0].plot(t["temperature_C"], t["F_tip_N"], "-o", ms=3, label=f"{name}: lip force")
+        axes[0].plot(t["temperature_C"], t["F_spring_N"], "--", lw=1.0,
+                     label=f"{name}: garter spring")
+        axes[1].plot(t["temperature_C"], t["spring_share"], "-o", ms=3, label=name)
+        axes[2].plot(t["temperature_C"], t["contact_width_mm"], "-o", ms=3, label=name)
+    axes[0].set_ylabel("radial force (360°) [N]")
+    axes[1].set_ylabel("spring share [-]")
+    axes[2].set_ylabel("contact width [mm]")
+    for ax in axes:
+        ax.set_xlabel("temperature [°C]")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.suptitle((title + ": " if title else "") + "lip force from FE")
+    return fig

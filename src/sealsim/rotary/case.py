@@ -37,6 +37,7 @@ from sealsim.cases import CaseModel, Q
 from sealsim.errors import InputError
 from sealsim.properties.elastomers import get_elastomer
 from sealsim.properties.oils import FAMILIES, Oil, get_oil
+from sealsim.rotary.lip_fe import LipSpec
 from sealsim.rotary.lip import (
     LIP_STYLES,
     default_contact_width,
@@ -369,6 +370,7 @@ class RotaryCase(CaseModel):
 
     title: str = ""
     seal: Seal
+    lip: LipSpec = LipSpec()
     oil: OilSpec = OilSpec()
     environment: Environment = Environment()
     thermal: ThermalSpec = ThermalSpec()

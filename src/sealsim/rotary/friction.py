@@ -122,17 +122,24 @@ class LipSealFriction:
     True
     """
 
-    def __init__(self, parameters: LipSealFrictionParameters, oil: Oil, elastomer: Elastomer):
+    def __init__(self, parameters: LipSealFrictionParameters, oil: Oil, elastomer: Elastomer,
+                 lip_force_model=None, contact_width_model=None):
         self.parameters = parameters
         self.oil = oil
         self.elastomer = elastomer
+        # optional F_tip(T) [N] and b(T) [m] from the FE of the lip (sealsim.rotary.lip_fe)
+        self.lip_force_model = lip_force_model
+        self.contact_width_model = contact_width_model
         p = parameters
         self.contact_area = np.pi * p.shaft_diameter * p.contact_width
         self._modulus_reference = float(elastomer.modulus(p.radial_force_temperature,
                                                           LIP_FORCE_FREQUENCY))
 
     def lip_force(self, temperature):
-        """F_tip at the lip temperature [N] (lip force model, :func:`~sealsim.rotary.lip.lip_force`)."""
+        """F_tip at the lip temperature [N] (lip force model, :func:`~sealsim.rotary.lip.lip_force`,
+        or the FE table of the lip)."""
+        if self.lip_force_model is not None:
+            return self.lip_force_model(temperature)
         ratio = np.asarray(self.elastomer.modulus(temperature, LIP_FORCE_FREQUENCY)) \
             / self._modulus_reference
         return lip_force(self.parameters.radial_force, self.parameters.spring_share, ratio)
@@ -149,13 +156,15 @@ class LipSealFriction:
                            p.film_floor)
         lam = film_ratio(h, p.roughness)
         f_tip = self.lip_force(temp)
-        pressure = f_tip / self.contact_area
+        contact_area = self.contact_area if self.contact_width_model is None else \
+            np.pi * p.shaft_diameter * self.contact_width_model(temp)
+        pressure = f_tip / contact_area
         excitation = np.maximum(speed / p.asperity_wavelength, 1e-3)
         e_star = contact_modulus(self.elastomer.modulus(temp, excitation))
         area = real_contact_area_fraction(pressure, e_star, p.rms_slope, lam, p.kappa)
         mu = grosch_friction_coefficient(speed, self.elastomer.log10_shift_factor(temp),
                                          p.master_curve)
-        f_lub = viscous_friction_force(eta, speed, h, self.contact_area)
+        f_lub = viscous_friction_force(eta, speed, h, contact_area)
         f_mat = np.where(speed > 0, mu * f_tip * area, 0.0)
         torque = np.sign(omega) * (f_lub + f_mat) * p.shaft_diameter / 2.0
         power = torque * omega

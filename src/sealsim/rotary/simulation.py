@@ -106,8 +106,18 @@ def lip_style(case: RotaryCase) -> LipStyle:
 
 
 def lip_seal_friction(case: RotaryCase) -> LipSealFriction:
-    """The friction model (seal + oil + elastomer + parameters) of a case."""
+    """The friction model (seal + oil + elastomer + parameters) of a case; with
+    ``lip.force = "fe"`` the lip force and contact width come from the FE of the lip
+    (:mod:`sealsim.rotary.lip_fe`)."""
     seal, fr = case.seal, case.friction
+    models = {}
+    if case.lip.force == "fe":
+        from sealsim.rotary.lip_fe import lip_force_table
+
+        table = lip_force_table(seal, case.lip, seal.radial_force_temperature)
+        models = {"lip_force_model": table.force_at}
+        if case.lip.contact_width == "fe":
+            models["contact_width_model"] = table.contact_width_at
     return LipSealFriction(
         LipSealFrictionParameters(
             shaft_diameter=seal.shaft_diameter, contact_width=seal.contact_width,
@@ -120,7 +130,7 @@ def lip_seal_friction(case: RotaryCase) -> LipSealFriction:
             kappa=fr.persson_kappa,
             master_curve=GroschMasterCurve(fr.mu_peak, fr.mu_low, fr.peak_speed_at_reference,
                                            fr.master_curve_width_decades)),
-        case.oil.build(), get_elastomer(seal.material))
+        case.oil.build(), get_elastomer(seal.material), **models)
 
 
 @dataclass

@@ -74,7 +74,8 @@ SEAL_FIELDS = {
     "wiper": (("lip_diameter", "height", "width"), ("lip_thickness", "flare", "edge_radius")),
     "radial_lip": (("outer_diameter", "width"),
                    ("interference", "flex_thickness", "spring_coil_diameter", "spring_offset",
-                    "oil_side_angle", "air_side_angle", "spring_rate", "spring_tension")),
+                    "oil_side_angle", "air_side_angle", "flex_angle", "spring_rate",
+                    "spring_tension")),
     "user": ((), ("points", "bulges", "tags", "points_unit", "dxf", "dxf_layer", "dxf_unit",
                   "drawing", "spring_rate", "spring_tension")),
 }
@@ -106,6 +107,7 @@ class SealSection(CaseModel):
     spring_offset: Q("length", ge=-5e-3, le=5e-3) | None = None
     oil_side_angle: Annotated[float, Field(gt=20.0, lt=80.0)] | None = None
     air_side_angle: Annotated[float, Field(gt=5.0, lt=60.0)] | None = None
+    flex_angle: Annotated[float, Field(ge=30.0, le=90.0)] | None = None
     spring_rate: Q("stiffness", ge=0.0) | None = Field(None, description=(
         "axial rate of the straight garter spring (default from its coil and wire size)"))
     spring_tension: Q("force", ge=0.0) | None = Field(None, description=(

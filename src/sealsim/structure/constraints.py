@@ -292,15 +292,16 @@ class GarterSpring(ScalarPenalty):
         super().__init__(field, 2 * nodes + 1, np.full(len(nodes), 1.0 / len(nodes)))
         self.rate = float(rate)
         self.pretension = float(tension)
+        self.scale = 1.0  # the spring being put on: its force ramps from 0 to 1
 
     def tension(self) -> float:
-        """Hoop tension T [N] at the current seat radius."""
-        return self.pretension + self.rate * 2 * np.pi * self.value()
+        """Hoop tension T [N] at the current seat radius (times the put-on scale)."""
+        return self.scale * (self.pretension + self.rate * 2 * np.pi * self.value())
 
     def radial_force(self) -> float:
         """Total radial force 2π T [N] of the spring on the seal (inwards)."""
         return 2 * np.pi * self.tension()
 
     def derivatives(self, c):
-        return 2 * np.pi * (self.pretension + self.rate * 2 * np.pi * c), \
-            4 * np.pi**2 * self.rate
+        return 2 * np.pi * self.scale * (self.pretension + self.rate * 2 * np.pi * c), \
+            4 * np.pi**2 * self.rate * self.scale

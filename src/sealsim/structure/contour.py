@@ -191,10 +191,18 @@ class Contour:
 
     @property
     def bounds(self) -> tuple[float, float, float, float]:
-        """(x_min, x_max, y_min, y_max) [m] (arcs included)."""
-        s, _ = self.sample()
-        return (float(s[:, 0].min()), float(s[:, 0].max()), float(s[:, 1].min()),
-                float(s[:, 1].max()))
+        """(x_min, x_max, y_min, y_max) [m], exact for the arcs (their extreme points)."""
+        pts = [self.points]
+        for k in np.nonzero(self.bulges)[0]:
+            p0, p1, b, _ = self.segment(k)
+            c, r, a0, th = arc_geometry(p0, p1, b)
+            for a in (0.0, 0.5 * math.pi, math.pi, 1.5 * math.pi):
+                rel = (a - a0) % (2 * math.pi) if th > 0 else (a0 - a) % (2 * math.pi)
+                if rel <= abs(th):
+                    pts.append((c + r * np.array([math.cos(a), math.sin(a)]))[None])
+        p = np.concatenate(pts)
+        return (float(p[:, 0].min()), float(p[:, 0].max()), float(p[:, 1].min()),
+                float(p[:, 1].max()))
 
     def centroid(self) -> tuple[float, float]:
         """Area centroid (x, y) [m] of the sampled polygon."""
@@ -349,7 +357,8 @@ def contour_from_polyline(points, bulges=None, tags=None, *, name: str = "seal.p
     return check_contour(Contour(pts, bul, tg), name)
 
 
-def filleted_contour(points, radii, tags=None, *, name: str = "profile") -> Contour:
+def filleted_contour(points, radii, tags=None, *, corner_tags=None,
+                     name: str = "profile") -> Contour:
     """A polygon whose corners are rounded with tangent arcs.
 
     Parameters
@@ -359,8 +368,9 @@ def filleted_contour(points, radii, tags=None, *, name: str = "profile") -> Cont
     radii : array_like or float
         Fillet radius [m] of each corner (0 keeps the sharp corner).
     tags : sequence of str, optional
-        Tag of each polygon side (side k from corner k to k+1); the fillets inherit the tag
-        of the side before them.
+        Tag of each polygon side (side k from corner k to k+1).
+    corner_tags : sequence of str or None, optional
+        Tag of each corner's fillet arc (None: the tag of the side before it).
 
     Examples
     --------
@@ -409,7 +419,8 @@ def filleted_contour(points, radii, tags=None, *, name: str = "profile") -> Cont
             t1, t2, bulge = g
             out_pts.append(t1)
             out_bul.append(bulge)
-            out_tag.append(sides[k - 1])
+            own = None if corner_tags is None else corner_tags[k]
+            out_tag.append(sides[k - 1] if own is None else own)
             if np.linalg.norm(t2 - P[(k + 1) % n]) > 1e-12 and \
                     trims[k].sum() < lengths[k] * (1 - 1e-9):
                 out_pts.append(t2)
@@ -494,9 +505,10 @@ def contour_from_dxf(path, *, layer: str | None = None, unit: float = 1e-3,
     segs = []
     for e in pieces:
         if e.dxftype() == "LINE":
-            segs.append((np.array(e.dxf.start[:2]), np.array(e.dxf.end[:2]), 0.0))
+            segs.append((np.array([e.dxf.start.x, e.dxf.start.y]),
+                         np.array([e.dxf.end.x, e.dxf.end.y]), 0.0))
         else:
-            c = np.array(e.dxf.center[:2])
+            c = np.array([e.dxf.center.x, e.dxf.center.y])
             r = e.dxf.radius
             a0, a1 = math.radians(e.dxf.start_angle), math.radians(e.dxf.end_angle)
             sweep = (a1 - a0) % (2 * math.pi) or 2 * math.pi

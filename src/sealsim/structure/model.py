@@ -250,6 +250,9 @@ class SealModel:
         self.solid.bulk = self.material.bulk(state.temperature)
         self.solid.V = self.V0 * self.material.volume_ratio
         self.pressure.update(self.applied_pressure(state.pressure))
+        if self.spring is not None:
+            self.spring.scale = self.assembly.spring_factor(state.squeeze,
+                                                            self.installation_squeeze)
         return self.prescribed(state)
 
     # -- contact state ---------------------------------------------------------------------------
@@ -287,7 +290,7 @@ class SealModel:
         contact = self.contacts[name]
         g = self.gaps(name)
         lam = contact.multipliers.normal if contact.multipliers is not None else 0.0
-        return np.where(g < 0.0, -lam * g, 0.0)
+        return -lam * np.where(g < 0.0, g, 0.0)
 
     def contact_pressure(self, name: str | None = None) -> np.ndarray:
         """Nodal contact pressure [Pa] (one line, or the largest over all lines)."""
@@ -318,6 +321,7 @@ class SealModel:
             "wet": (self.pressure.s0.copy(), self.pressure.s1.copy()),
             "state": self.state,
             "temperature": self.material.temperature,
+            "spring": None if self.spring is None else self.spring.scale,
         }
 
     def restore(self, cp: dict) -> None:
@@ -328,6 +332,8 @@ class SealModel:
         self.pressure.field = self.field
         self.state = cp["state"]
         self.material.temperature = cp["temperature"]
+        if self.spring is not None:
+            self.spring.scale = cp["spring"]
         for item in self.items:
             item.field.link(self.field)
 

@@ -31,7 +31,6 @@ node sets of tagged segments.
 from __future__ import annotations
 
 import math
-import warnings
 from dataclasses import dataclass
 
 import numpy as np
@@ -404,6 +403,33 @@ def _on_curve(contour: Contour, k: int, p, q):
     return c + r * v / np.linalg.norm(v)
 
 
+def _triangulate(boundary, interior, poly):
+    """Delaunay triangles inside the contour and the boundary edges they miss."""
+    B = np.asarray(boundary)
+    pts = np.vstack([B, interior]) if len(interior) else B
+    simp = Delaunay(pts).simplices
+    u, v = pts[simp[:, 1]] - pts[simp[:, 0]], pts[simp[:, 2]] - pts[simp[:, 0]]
+    area = np.abs(u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0])
+    scale = np.max(np.ptp(pts, axis=0)) ** 2
+    # slivers of three points on one straight boundary segment have no area: drop them
+    simp = simp[(area > 1e-12 * scale) & poly.contains_points(pts[simp].mean(axis=1))]
+    nb = len(B)
+    edges = np.sort(np.concatenate([simp[:, [0, 1]], simp[:, [1, 2]], simp[:, [2, 0]]]), axis=1)
+    have = set(map(tuple, edges.tolist()))
+    missing = [i for i in range(nb) if tuple(sorted((i, (i + 1) % nb))) not in have]
+    return pts, simp, missing
+
+
+def _split_boundary(contour, boundary, bsegs, edges):
+    """Insert the curve midpoint of the given boundary edges (in place)."""
+    nb = len(boundary)
+    for i in sorted(set(edges), reverse=True):
+        m = _on_curve(contour, bsegs[i], np.asarray(boundary[i]),
+                      np.asarray(boundary[(i + 1) % nb]))
+        boundary.insert(i + 1, tuple(m))
+        bsegs.insert(i + 1, bsegs[i])
+
+
 def _mesh_builtin(contour: Contour, sizes: SizeField):
     from matplotlib.path import Path
 
@@ -411,45 +437,27 @@ def _mesh_builtin(contour: Contour, sizes: SizeField):
         return 2.0 * sizes(x, y)
 
     bpts, bseg = _discretise_boundary(contour, target)
-    poly = Path(np.vstack([contour.sample(0.1 * sizes.h_contact)[0]]))
+    poly = Path(contour.sample(0.05 * sizes.h_contact)[0])
     boundary = [tuple(p) for p in bpts]  # ordered loop, grows when segments are split
     bsegs = list(bseg)
     interior = np.zeros((0, 2))
-    for _ in range(60):
-        B = np.array(boundary)
-        pts = np.vstack([B, interior])
-        tri = Delaunay(pts)
-        simp = tri.simplices
-        cent = pts[simp].mean(axis=1)
-        keep = poly.contains_points(cent)
-        simp = simp[keep]
+    for _ in range(80):
+        pts, simp, missing = _triangulate(boundary, interior, poly)
+        B = np.asarray(boundary)
         nb = len(B)
-        # conformity: every boundary edge must be a triangle edge
-        edges = np.sort(np.concatenate([simp[:, [0, 1]], simp[:, [1, 2]], simp[:, [2, 0]]]),
-                        axis=1)
-        have = set(map(tuple, edges.tolist()))
-        bedges = np.stack([np.arange(nb), (np.arange(nb) + 1) % nb], axis=1)
-        missing = [i for i, (a, b) in enumerate(np.sort(bedges, axis=1).tolist())
-                   if (a, b) not in have]
-        # encroachment by interior points: a point inside the diametral circle of an edge
         mid = 0.5 * (B + np.roll(B, -1, axis=0))
         rad = 0.5 * np.linalg.norm(np.roll(B, -1, axis=0) - B, axis=1)
         if len(interior):
+            # interior points inside the diametral circle of a boundary edge encroach it
             d, _ = cKDTree(interior).query(mid)
             missing = sorted(set(missing) | set(np.nonzero(d < rad)[0].tolist()))
         if missing:
-            for i in sorted(missing, reverse=True):
-                j = (i + 1) % nb
-                m = _on_curve(contour, bsegs[i], B[i], B[j])
-                boundary.insert(i + 1, tuple(m))
-                bsegs.insert(i + 1, bsegs[i])
+            _split_boundary(contour, boundary, bsegs, missing)
             if len(interior):
-                # drop interior points that encroach the refined boundary
-                Bn = np.array(boundary)
-                d, _ = cKDTree(Bn).query(interior)
+                d, _ = cKDTree(np.asarray(boundary)).query(interior)
                 interior = interior[d > 0.3 * target(*interior.T)]
             continue
-        # refine triangles that are too big or badly shaped
+        # refine triangles that are too big or badly shaped (Ruppert): circumcentres
         P = pts[simp]
         a, b, c = P[:, 0], P[:, 1], P[:, 2]
         la = np.linalg.norm(b - c, axis=1)
@@ -461,90 +469,71 @@ def _mesh_builtin(contour: Contour, sizes: SizeField):
         bad = (R > 0.62 * h) | (R / np.minimum(np.minimum(la, lb), lc) > 1.1)
         if not np.any(bad):
             break
-        # circumcentres of the bad triangles
         ax, ay, bx, by, cx, cy = a[bad, 0], a[bad, 1], b[bad, 0], b[bad, 1], c[bad, 0], c[bad, 1]
         dd = 2.0 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by))
-        ux = ((ax**2 + ay**2) * (by - cy) + (bx**2 + by**2) * (cy - ay)
-              + (cx**2 + cy**2) * (ay - by)) / dd
-        uy = ((ax**2 + ay**2) * (cx - bx) + (bx**2 + by**2) * (ax - cx)
-              + (cx**2 + cy**2) * (bx - ax)) / dd
+        with np.errstate(all="ignore"):
+            ux = ((ax**2 + ay**2) * (by - cy) + (bx**2 + by**2) * (cy - ay)
+                  + (cx**2 + cy**2) * (ay - by)) / dd
+            uy = ((ax**2 + ay**2) * (cx - bx) + (bx**2 + by**2) * (ax - cx)
+                  + (cx**2 + cy**2) * (bx - ax)) / dd
         cand = np.stack([ux, uy], axis=1)
         cand = cand[np.all(np.isfinite(cand), axis=1)]
         inside = poly.contains_points(cand)
+        split = []
         if not np.all(inside):
-            # a circumcentre outside: split the boundary edge nearest to it (Ruppert)
-            Bm = 0.5 * (B + np.roll(B, -1, axis=0))
-            _, idx = cKDTree(Bm).query(cand[~inside])
-            long = [i for i in set(idx.tolist()) if 2 * rad[i] > 0.3 * target(*Bm[i])[0]]
-            for i in sorted(long, reverse=True):
-                m = _on_curve(contour, bsegs[i], B[i], B[(i + 1) % nb])
-                boundary.insert(i + 1, tuple(m))
-                bsegs.insert(i + 1, bsegs[i])
-            if long:
-                continue
+            # a circumcentre outside: split the boundary edge nearest to it
+            _, idx = cKDTree(mid).query(cand[~inside])
+            split = [i for i in set(idx.tolist()) if 2 * rad[i] > 0.2 * target(*mid[i])[0]]
         cand = cand[inside]
-        if len(cand) == 0:
-            break
-        hc = target(*cand.T)
-        # no two new points closer than half their size, none too close to old points
-        d, _ = cKDTree(pts).query(cand)
-        ok = d > 0.45 * hc
-        cand, hc = cand[ok], hc[ok]
-        order = np.argsort(hc)
+        if len(cand):
+            hc = target(*cand.T)
+            d, _ = cKDTree(pts).query(cand)
+            keep = d > 0.45 * hc
+            cand, hc = cand[keep], hc[keep]
         chosen = []
-        tree_pts = []
-        for i in order:
-            if tree_pts:
-                dist = np.min(np.linalg.norm(np.array(tree_pts) - cand[i], axis=1))
-                if dist < 0.5 * hc[i]:
-                    continue
+        for i in np.argsort(hc) if len(cand) else []:
+            if chosen and np.min(np.linalg.norm(cand[chosen] - cand[i], axis=1)) < 0.5 * hc[i]:
+                continue
             chosen.append(i)
-            tree_pts.append(cand[i])
-        if not chosen:
+        new = cand[chosen] if chosen else np.zeros((0, 2))
+        if len(new):
+            # a new point that encroaches a boundary edge splits that edge instead
+            d, idx = cKDTree(mid).query(new)
+            enc = d < rad[idx]
+            split += idx[enc].tolist()
+            interior = np.vstack([interior, new[~enc]])
+        if split:
+            _split_boundary(contour, boundary, bsegs, split)
+        if not len(new) and not split:
             break
-        new = cand[chosen]
-        # points that encroach a boundary edge split that edge instead (next round)
-        Bm = 0.5 * (B + np.roll(B, -1, axis=0))
-        d, idx = cKDTree(Bm).query(new)
-        enc = d < rad[idx]
-        interior = np.vstack([interior, new[~enc]]) if np.any(~enc) else interior
-        for i in sorted(set(idx[enc].tolist()), reverse=True):
-            j = (i + 1) % nb
-            m = _on_curve(contour, bsegs[i], B[i], B[j])
-            boundary.insert(i + 1, tuple(m))
-            bsegs.insert(i + 1, bsegs[i])
-    B = np.array(boundary)
-    nb = len(B)
-    pts = np.vstack([B, interior])
-    # Laplacian smoothing of the interior points (connectivity from the Delaunay mesh)
-    for _ in range(3):
-        tri = Delaunay(pts)
-        simp = tri.simplices[poly.contains_points(pts[tri.simplices].mean(axis=1))]
-        if len(interior) == 0:
-            break
-        e = np.concatenate([simp[:, [0, 1]], simp[:, [1, 2]], simp[:, [2, 0]]])
-        e = np.concatenate([e, e[:, ::-1]])
+    pts, simp, missing = _triangulate(boundary, interior, poly)
+    if missing:
+        raise InputError("the built-in mesher could not mesh the seal profile (boundary not "
+                         "resolved); use a finer mesh level or gmsh")
+    nb = len(boundary)
+    # Laplacian smoothing of the interior points on the fixed (conforming) connectivity;
+    # a step that would invert a triangle is not taken
+    e = np.concatenate([simp[:, [0, 1]], simp[:, [1, 2]], simp[:, [2, 0]]])
+    e = np.concatenate([e, e[:, ::-1]])
+    cnt = np.bincount(e[:, 0], minlength=len(pts)).astype(float)
+
+    def signed(p):
+        u, v = p[simp[:, 1]] - p[simp[:, 0]], p[simp[:, 2]] - p[simp[:, 0]]
+        return u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]
+
+    sign = np.sign(signed(pts))
+    for _ in range(4):
         acc = np.zeros_like(pts)
-        cnt = np.zeros(len(pts))
         np.add.at(acc, e[:, 0], pts[e[:, 1]])
-        np.add.at(cnt, e[:, 0], 1.0)
         moved = pts.copy()
-        inner = np.arange(nb, len(pts))
-        moved[inner] = acc[inner] / np.maximum(cnt[inner], 1)[:, None]
+        moved[nb:] = acc[nb:] / np.maximum(cnt[nb:], 1)[:, None]
+        if np.any(np.sign(signed(moved)) != sign):
+            break
         pts = moved
-    tri = Delaunay(pts)
-    simp = tri.simplices[poly.contains_points(pts[tri.simplices].mean(axis=1))]
-    P = pts[simp]
-    e1, e2 = P[:, 1] - P[:, 0], P[:, 2] - P[:, 0]
-    orient = e1[:, 0] * e2[:, 1] - e1[:, 1] * e2[:, 0]
-    simp = np.where((orient < 0)[:, None], simp[:, [0, 2, 1]], simp)
-    # split every triangle into three quads
-    edge_id = {}
-    new_pts = [pts]
-    count = len(pts)
-    bedge = {}
-    for i in range(nb):
-        bedge[tuple(sorted((i, (i + 1) % nb)))] = i
+    simp = np.where((sign < 0)[:, None], simp[:, [0, 2, 1]], simp)
+    # split every triangle into three quads (centroid and edge midpoints)
+    edge_id, new_pts, count = {}, [pts], len(pts)
+    bedge = {tuple(sorted((i, (i + 1) % nb))): i for i in range(nb)}
 
     def midpoint(a, b):
         nonlocal count
@@ -567,14 +556,10 @@ def _mesh_builtin(contour: Contour, sizes: SizeField):
         count += 1
         mab, mbc, mca = midpoint(a, b), midpoint(b, c), midpoint(c, a)
         quads += [(a, mab, g, mca), (b, mbc, g, mab), (c, mca, g, mbc)]
-    allpts = np.vstack(new_pts)
+    if not quads:
+        raise InputError("the seal profile could not be meshed (no elements)")
     loop, loop_seg = [], []
     for i in range(nb):
-        j = (i + 1) % nb
-        loop += [i, edge_id[tuple(sorted((i, j)))]]
+        loop += [i, edge_id[tuple(sorted((i, (i + 1) % nb)))]]
         loop_seg += [bsegs[i], bsegs[i]]
-    if len(quads) == 0:
-        raise InputError("the seal profile could not be meshed (no elements)")
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore")
-        return allpts, np.array(quads), np.array(loop), np.array(loop_seg)
+    return np.vstack(new_pts), np.array(quads), np.array(loop), np.array(loop_seg)

@@ -412,6 +412,10 @@ LIP_AIR_SIDE_ANGLE = 25.0
 """Air-side angle of the lip head to the shaft axis [deg]; typically 20–35°. The steeper oil
 side gives the asymmetric contact pressure (peak towards the oil side) that pumps back."""
 
+FLEX_ANGLE = 75.0
+"""Angle of the flex section to the shaft axis [deg]: catalogue sections show a short, mostly
+radial flex from the case flange down to the lip head."""
+
 SPRING_OFFSET = 0.5e-3
 """Axial offset of the garter spring's axis from the lip edge towards the air side (the
 'R value') [m]; catalogue designs use 0.3–0.8 mm so that the pressure peak is on the oil side."""
@@ -421,6 +425,7 @@ def radial_lip_profile(shaft_diameter: float, outer_diameter: float, width: floa
                        interference: float | None = None, flex_thickness: float | None = None,
                        spring_coil_diameter: float | None = None,
                        spring_offset: float = SPRING_OFFSET,
+                       flex_angle: float = FLEX_ANGLE,
                        oil_side_angle: float = LIP_OIL_SIDE_ANGLE,
                        air_side_angle: float = LIP_AIR_SIDE_ANGLE) -> SealProfile:
     """DIN 3760 / ISO 6194-1 type A radial shaft seal: the rubber part around the lip.
@@ -431,9 +436,11 @@ def radial_lip_profile(shaft_diameter: float, outer_diameter: float, width: floa
     ``"bonded"`` move with the housing. The rubber outer cover of the case (press fit) does
     not take part in the lip mechanics and is left out.
 
-    The proportions are those of an 80 × 100 × 10 seal (section height H = 10 mm: head 2.6 mm
-    high, flex 1.0 mm thick at 60° to the axis, spring coil Ø 1.6 mm), scaled with the section
-    height H = (D − d)/2 for other sizes.
+    The proportions are engineering estimates of an 80 × 100 × 10 seal from catalogue section
+    drawings (section height H = 10 mm: head 2.6 mm high, flex 1.2 mm thick at 60° to the
+    axis, spring coil Ø 1.6 mm), scaled with the section height H = (D − d)/2 for other sizes.
+    The drawn lip is the moulded one, without the spring: the garter spring is put on in the
+    FE model and pulls the lip inwards before the shaft is installed.
 
     Parameters
     ----------
@@ -444,15 +451,18 @@ def radial_lip_profile(shaft_diameter: float, outer_diameter: float, width: floa
     width : float
         Seal width [m].
     interference : float, optional
-        Radial interference of the free lip on the shaft [m] (default 0.25 mm + 0.003·d,
-        about 1 mm on the diameter for d = 80 mm: an engineering estimate, catalogues do not
-        publish the lip's free diameter).
+        Radial interference of the moulded lip (without spring) on the shaft [m] (default
+        0.5 mm + 0.006·d, 1 mm for d = 80 mm, before the edge radius: an engineering estimate
+        that keeps the lip pressed on the shaft without its spring; catalogues do not publish
+        the moulded lip diameter).
     flex_thickness : float, optional
-        Thickness of the flex section [m] (default 0.1·H).
+        Thickness of the flex section [m] (default 0.12·H).
     spring_coil_diameter : float, optional
         Outer diameter of the garter spring's coil [m] (default 0.16·H).
     spring_offset : float
         Axial offset of the spring axis from the lip edge to the air side [m].
+    flex_angle : float
+        Angle of the flex section to the shaft axis [deg].
     oil_side_angle, air_side_angle : float
         Angles of the lip faces to the shaft axis [deg].
 
@@ -460,7 +470,7 @@ def radial_lip_profile(shaft_diameter: float, outer_diameter: float, width: floa
     --------
     >>> p = radial_lip_profile(0.08, 0.1, 0.01)
     >>> round(p.inner_radius * 1e3, 4), p.has_bonded_edges
-    (39.5311, True)
+    (39.0411, True)
     """
     for name, v in (("seal.shaft_diameter", shaft_diameter),
                     ("seal.outer_diameter", outer_diameter), ("seal.width", width)):
@@ -470,12 +480,12 @@ def radial_lip_profile(shaft_diameter: float, outer_diameter: float, width: floa
         raise InputError(f"seal.outer_diameter: a radial section of {H * 1e3:g} mm is out of "
                          "range for a radial lip seal (3 mm ... d/2 + 5 mm)")
     s = H / 10e-3
-    i = 0.25e-3 + 0.003 * shaft_diameter if interference is None else interference
-    tf = 1.0e-3 * s if flex_thickness is None else flex_thickness
+    i = 0.5e-3 + 0.006 * shaft_diameter if interference is None else interference
+    tf = 1.2e-3 * s if flex_thickness is None else flex_thickness
     coil = 1.6e-3 * s if spring_coil_diameter is None else spring_coil_diameter
-    if not (0 < i < 0.3 * H and 0.15 * H > tf > 0 and 0 < coil < 0.3 * H):
+    if not (0 < i < 0.3 * H and 0.25 * H > tf > 0 and 0 < coil < 0.3 * H):
         raise InputError("seal: radial lip proportions out of range (interference < 0.3 H, "
-                         "flex_thickness < 0.15 H, spring_coil_diameter < 0.3 H)")
+                         "flex_thickness < 0.25 H, spring_coil_diameter < 0.3 H)")
     if width < 0.5 * H or width > 2 * H + 10e-3:
         raise InputError(f"seal.width: {width * 1e3:g} mm does not fit a section of "
                          f"{H * 1e3:g} mm (0.5 H ... 2 H + 10 mm)")
@@ -490,17 +500,17 @@ def radial_lip_profile(shaft_diameter: float, outer_diameter: float, width: floa
     # spring groove: a circular seat, the coil axis 0.3 rho above the head's back
     zs, ts = spring_offset, head + 0.3 * rho
     half = math.sqrt(rho**2 - (ts - head) ** 2)
-    # flex: from the head's back (air side of the spring seat) up to the body at 60°
-    phi = math.radians(60.0)
+    # flex: from the head's back (air side of the spring seat) up to the body, at flex_angle
+    # to the axis, 0.3 H long; the body is bonded to the case above and behind it
+    phi = math.radians(flex_angle)
     u = np.array([math.cos(phi), math.sin(phi)])
     nrm = np.array([-u[1], u[0]])
-    body_z0 = zs + half + 0.25 * H  # oil-side face of the bonded body
-    body_t0 = head + 0.27 * H  # underside of the body
-    body_t1 = H - 0.15 * H + i  # top of the body (below the case's cylindrical part)
-    body_z1 = min(body_z0 + 0.3 * H, 0.85 * width + zs)  # the case flange (air side)
     top0 = np.array([zs + half + 0.05 * H, head])
-    s_top = (body_z0 - top0[0]) / u[0]
-    top1 = top0 + s_top * u
+    top1 = top0 + 0.3 * H * u
+    body_z0 = top1[0]  # oil-side face of the bonded body
+    body_t0 = top1[1] - tf  # underside of the body
+    body_t1 = 0.85 * H + i  # top of the body (below the case's cylindrical part)
+    body_z1 = body_z0 + 0.3 * H  # the case flange (air side)
     # underside of the flex: parallel at distance tf, from the air-side face to the body
     bot_ref = top0 - tf * nrm
     # intersection with the air-side face t = z·tan(air)
@@ -519,11 +529,12 @@ def radial_lip_profile(shaft_diameter: float, outer_diameter: float, width: floa
     edge_r = 0.04 * head
     radii = [edge_r, 0.4 * tf, 0.3 * tf, 0.0, 0.0, 0.0, 0.3 * tf, 0.4 * tf, 0.0, 0.0,
              0.1 * head, 0.1 * head, 0.1 * head]
-    tags = ["contact", "", "", "bonded", "bonded", "", "", "", "spring", "", "", "", "contact"]
+    tags = ["", "", "", "bonded", "bonded", "", "", "", "spring", "", "", "", ""]
+    corner = ["contact"] + [None] * (len(pts) - 1)  # the lip edge's rounding
     y0 = 0.5 * shaft_diameter - i
     xy = _radial(pts, y0, 1.0)
-    con = check_contour(filleted_contour(xy, radii, tags, name="radial lip seal"),
-                        "radial lip seal")
+    con = check_contour(filleted_contour(xy, radii, tags, corner_tags=corner,
+                                         name="radial lip seal"), "radial lip seal")
     # the spring seat: the straight seat segment becomes the concave arc of the coil (a
     # right turn of the counter-clockwise contour)
     k = con.tags.index("spring")
@@ -533,9 +544,9 @@ def radial_lip_profile(shaft_diameter: float, outer_diameter: float, width: floa
     bul[k] = math.tan(sweep / 4.0)
     centre, _, _, _ = arc_geometry(p0, p1, bul[k])
     contour = check_contour(Contour(con.points, bul, con.tags), "radial lip seal")
-    # the lip edge is where the contact is: its size is about a third of the head height
+    # the lip edge is where the contact is: a band about a tenth of the head height wide
     return SealProfile("radial_lip", contour, min_feature=tf, spring_radius=float(centre[1]),
-                       contact_size=0.35 * head)
+                       contact_size=0.1 * head)
 
 
 STEEL_SHEAR_MODULUS = 79e9

@@ -387,12 +387,12 @@ def extract(model) -> StateResult:
     spring = model.spring.radial_force() if model.spring is not None else 0.0
     radial -= spring
     if len(model.bonded):
-        # the metal case holds the bonded edges: its reaction is minus the residual of all
-        # other items there (the case is not an item)
+        # the metal case holds the bonded edges: its reaction is the residual of all items
+        # there (internal minus the other external forces; the case is not an item)
         total = sum(np.asarray(item.results.force.toarray()).ravel() for item in model.items
                     if getattr(item.results, "force", None) is not None)
-        axial -= float(total[2 * model.bonded].sum())
-        radial -= float(total[2 * model.bonded + 1].sum())
+        axial += float(total[2 * model.bonded].sum())
+        radial += float(total[2 * model.bonded + 1].sum())
     hoop = _hoop_force(model)
     scale = max(seal.force, 1e-30)
     pen = 0.0
