@@ -386,6 +386,10 @@ def extract(model) -> StateResult:
     radial = fluid[1] + sum(r[1] for r in reactions)
     spring = model.spring.radial_force() if model.spring is not None else 0.0
     radial -= spring
+    if model.axial_hold is not None:
+        # the symmetry hold of a gland without walls is a support too
+        hold = np.asarray(model.axial_hold.results.force.toarray()).ravel()
+        axial -= float(hold[0::2].sum())
     if len(model.bonded):
         # the metal case holds the bonded edges: its reaction is the residual of all items
         # there (internal minus the other external forces; the case is not an item)
