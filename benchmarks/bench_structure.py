@@ -4,9 +4,12 @@
    (about 3000 dofs); target <= 5 s wall.
 2. Characteristic map 10 pressures x 8 temperatures on 2 worker processes (medium mesh);
    target <= 2 min wall.
+3. Lip seal (issue 12): the U-cup rod seal of examples/structure/ucup_rod.toml on its default
+   ("medium", gmsh) mesh, squeeze 10 % in 5 increments, then 0 -> 10 bar in 10 increments;
+   target <= 10 s wall.
 
 Run: ``.venv/bin/python benchmarks/bench_structure.py``. The last line is one JSON object with
-``squeeze_wall_s``, ``dofs``, ``map_wall_s``, ``map_points``.
+``squeeze_wall_s``, ``dofs``, ``map_wall_s``, ``map_points``, ``lip_wall_s``, ``lip_dofs``.
 """
 
 from __future__ import annotations
@@ -51,6 +54,22 @@ def bench_map(workers: int = 2) -> tuple[float, int]:
     return time.perf_counter() - t0, int(ds["F_N"].size)
 
 
+def bench_lip_seal() -> tuple[float, int, float]:
+    """U-cup rod seal, medium mesh: squeeze, then 0 -> 10 bar (wall time, dofs, F_N at 10 bar)."""
+    from sealsim.structure.build import build_model
+
+    case = validate_case(StructureCase, {
+        "seal": {"type": "ucup", "lip_diameter": "19.4 mm", "height": "4.4 mm",
+                 "width": "5 mm"},
+        "gland": {"sealing_diameter": "20 mm", "groove_width": "5.6 mm"},
+        "load": {"squeeze": [0.10]}})
+    model = build_model(case)
+    t0 = time.perf_counter()
+    states = solve(model, [LoadStep("squeeze", squeeze=0.10, increments=5, record="end"),
+                           LoadStep("pressure", pressure=10e5, increments=10, record="end")])
+    return time.perf_counter() - t0, model.ndofs, states[-1].F_N
+
+
 def main() -> None:
     squeeze_wall, dofs, force = bench_squeeze()
     print(f"squeeze 0 -> 20 % in 20 increments: {squeeze_wall:.2f} s on {dofs} dofs "
@@ -58,8 +77,12 @@ def main() -> None:
     map_wall, points = bench_map()
     print(f"map {points} points (10 pressures x 8 temperatures, 2 workers): {map_wall:.1f} s "
           "(target <= 120 s)")
+    lip_wall, lip_dofs, lip_force = bench_lip_seal()
+    print(f"U-cup lip seal, squeeze 10 % + 0 -> 10 bar: {lip_wall:.2f} s on {lip_dofs} dofs "
+          f"(F_N = {lip_force:.1f} N at 10 bar; target <= 10 s)")
     print(json.dumps({"squeeze_wall_s": round(squeeze_wall, 3), "dofs": dofs,
-                      "map_wall_s": round(map_wall, 2), "map_points": points}))
+                      "map_wall_s": round(map_wall, 2), "map_points": points,
+                      "lip_wall_s": round(lip_wall, 3), "lip_dofs": lip_dofs}))
 
 
 if __name__ == "__main__":

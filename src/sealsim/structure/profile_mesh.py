@@ -46,10 +46,10 @@ __all__ = ["PROFILE_MESH_LEVELS", "SizeField", "gmsh_status", "mesh_profile", "s
 PROFILE_MESH_LEVELS = {
     # level: (contact size, body size) as fractions of the radial height, elements across a
     # thin wall
-    "coarse": (1 / 25, 1 / 6, 3),
-    "medium": (1 / 40, 1 / 9, 4),
-    "fine": (1 / 60, 1 / 12, 5),
-    "extra_fine": (1 / 90, 1 / 16, 7),
+    "coarse": (1 / 40, 1 / 7, 3),
+    "medium": (1 / 60, 1 / 9, 4),
+    "fine": (1 / 90, 1 / 12, 5),
+    "extra_fine": (1 / 135, 1 / 16, 7),
 }
 """Named element sizes of profile meshes: size at the expected contact and in the body as
 fractions of the section's radial height, and elements across the thinnest walls."""
