@@ -33,7 +33,7 @@ def quiet_run(c):
 
 
 def test_xring_against_oring_of_the_same_size():
-    """X-ring and O-ring 20 x 4 in the same gland at 10 % squeeze, 0 and 4 bar.
+    """X-ring and O-ring 20 x 4 in the same gland at 10 % squeeze, 0 and 2 bar.
 
     References: the X-ring touches each surface with two lobes (its purpose); photoelastic
     measurements of X-rings at 20 % squeeze found considerably higher contact stresses than
@@ -47,7 +47,7 @@ def test_xring_against_oring_of_the_same_size():
     base = {"gland": {"sealing_diameter": "20 mm", "groove_width": "5.4 mm"},
             "mesh": {"level": "coarse"},
             "load": {"squeeze": [0.10], "squeeze_increments": 3,
-                     "pressure": ["0 bar", "4 bar"], "pressure_increments": 2}}
+                     "pressure": ["0 bar", "2 bar"], "pressure_increments": 1}}
     out = {}
     for kind in ("oring", "xring"):
         out[kind] = quiet_run(case({**base, "seal": {"type": kind, "cord_diameter": "4 mm",
@@ -80,7 +80,7 @@ def test_ucup_is_pressure_activated():
 
 
 def test_lip_force_from_fe_and_the_speed_cycle(tmp_path, monkeypatch):
-    """DIN 3760 80 x 101 x 9 NBR lip on an 80 mm shaft at 20, 60 and 100 °C (coarse mesh).
+    """DIN 3760 80 x 101 x 9 NBR lip on an 80 mm shaft at 20 and 100 °C (coarse mesh).
 
     References: the garter spring's radial force is 2π T (thin ring); the rubber share of the
     lip force falls with the rubber's quasi-static modulus E(T) (lip.py Eq. 1) -- in the FE
@@ -94,9 +94,9 @@ def test_lip_force_from_fe_and_the_speed_cycle(tmp_path, monkeypatch):
     monkeypatch.setenv("SEALSIM_CACHE", str(tmp_path / "cache"))
     example = ROOT / "examples/rotary/speed_cycle_fe.toml"
     data = tomllib.loads(example.read_text())
-    lip = {"temperatures": ["20 degC", "60 degC", "100 degC"], "mesh": "coarse"}
+    lip = {"temperatures": ["20 degC", "100 degC"], "mesh": "coarse"}
     data = apply_overrides(data, {"lip": lip, "duty": {"steps": [
-        {"speed": "100 rpm", "duration": "2 min"}, {"speed": "1000 rpm", "duration": "3 min"}]}})
+        {"speed": "100 rpm", "duration": "1 min"}, {"speed": "1000 rpm", "duration": "2 min"}]}})
     path = tmp_path / "speed_cycle_fe.toml"
     path.write_text(tomli_w.dumps(data))
     cases = load_rotary_case(path)
@@ -129,7 +129,7 @@ def test_lip_force_from_fe_and_the_speed_cycle(tmp_path, monkeypatch):
 
 
 def test_xring_map_feeds_a_pneumatic_run(tmp_path):
-    """X-ring 12 x 2 rod seal: `sealsim structure map` (coarse, 2 x 3 grid) writes map.nc
+    """X-ring 12 x 2 rod seal: `sealsim structure map` (coarse, 2 x 2 grid) writes map.nc
     with F_N, b and the contact pressure profile; the Ø32 cylinder example runs with it as
     the rod seal's contact map."""
     from sealsim.cli.pneumatic import pneumatic_app
@@ -140,7 +140,7 @@ def test_xring_map_feeds_a_pneumatic_run(tmp_path):
                                                     "inner_diameter": "12 mm"},
         "gland": {"sealing_diameter": "12 mm", "groove_width": "2.7 mm"},
         "mesh": {"level": "coarse"}, "load": {"squeeze": [0.10]},
-        "map": {"pressure": ["0 bar", "4 bar", "8 bar"], "temperature": ["20 degC", "40 degC"],
+        "map": {"pressure": ["0 bar", "8 bar"], "temperature": ["20 degC", "40 degC"],
                 "squeeze_increments": 3, "temperature_increments": 1, "workers": 1}}
     (tmp_path / "xring.toml").write_text(tomli_w.dumps(structure))
     result = RUNNER.invoke(structure_app, ["map", str(tmp_path / "xring.toml"), "--out",
@@ -159,7 +159,7 @@ def test_xring_map_feeds_a_pneumatic_run(tmp_path):
     assert 2 * np.pi * 6e-3 * np.trapezoid(p, z) == pytest.approx(fn, rel=0.1)
 
     data = tomllib.loads((ROOT / "examples/pneumatic/cylinder_32.toml").read_text())
-    data["controller"]["duration"] = "1 s"
+    data["controller"]["duration"] = "0.5 s"
     for seal in data["seals"]:
         if seal["name"] == "rod":
             seal["map"] = {"file": str(tmp_path / "map" / "map.nc")}
@@ -177,7 +177,8 @@ def test_profile_examples_through_the_cli(tmp_path):
     result folder holds the per-increment log (Newton iterations, cutbacks) and the contact
     zones."""
     for name, overrides in (
-            ("ucup_rod.toml", {"load": {"pressure": ["0 bar", "4 bar"]}}),
+            ("ucup_rod.toml", {"load": {"pressure": ["0 bar", "2 bar"],
+                                        "pressure_increments": 1}}),
             ("user_profile.toml", {"load": {"squeeze": [0.10], "pressure": ["0 bar"]}})):
         data = apply_overrides(tomllib.loads((ROOT / "examples/structure" / name).read_text()),
                                {"mesh": {"level": "coarse"}, **overrides})

@@ -23,6 +23,7 @@ keyed by the resolved structure case, like the FE maps of the pneumatic model.
 from __future__ import annotations
 
 import hashlib
+import math
 import os
 from dataclasses import dataclass
 from pathlib import Path
@@ -87,6 +88,9 @@ def lip_structure_case(seal, lip: LipSpec, installation_temperature: float = 293
     from sealsim.rotary.lip import LIP_FORCE_FREQUENCY
     from sealsim.structure.case import StructureCase
 
+    temps = [installation_temperature, *lip.temperatures]
+    # about 10 K per increment (the lip head slides on its face: larger ones need cutbacks)
+    increments = max(2, math.ceil(max(abs(b - a) for a, b in zip(temps, temps[1:])) / 10.0))
     section = {"type": "radial_lip", "outer_diameter": seal.outer_diameter,
                "width": seal.width}
     for key in ("interference", "flex_thickness", "spring_rate", "spring_tension"):
@@ -102,7 +106,7 @@ def lip_structure_case(seal, lip: LipSpec, installation_temperature: float = 293
         "mesh": {"level": lip.mesh},
         "load": {"installation_temperature": installation_temperature,
                  "squeeze_increments": 8, "temperature": list(lip.temperatures),
-                 "temperature_increments": 2},
+                 "temperature_increments": increments},
     }
     return validate_case(StructureCase, data, "the FE lip model of the rotary case",
                          require_units=False)

@@ -470,7 +470,7 @@ def radial_lip_profile(shaft_diameter: float, outer_diameter: float, width: floa
     --------
     >>> p = radial_lip_profile(0.08, 0.1, 0.01)
     >>> round(p.inner_radius * 1e3, 4), p.has_bonded_edges
-    (39.0411, True)
+    (39.041, True)
     """
     for name, v in (("seal.shaft_diameter", shaft_diameter),
                     ("seal.outer_diameter", outer_diameter), ("seal.width", width)):
