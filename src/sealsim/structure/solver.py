@@ -8,14 +8,12 @@ iteration, and an increment has converged when the residual is small *and* the w
 no longer changes. An increment that does not converge is restored and cut in half, down
 to ``min_fraction`` of the step's increment; then a :class:`~sealsim.errors.ConvergenceError`
 names the step, the increment and the load (squeeze, pressure, temperature) it failed at.
-After every converged increment the increment grows back (doubles, up to the nominal one).
 Every converged increment is logged in ``model.increment_log`` (step, load fraction,
 increment, Newton iterations, cutbacks before it).
 """
 
 from __future__ import annotations
 
-import math
 import warnings
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -183,8 +181,7 @@ def solve(model: SealModel, steps: list[LoadStep], *,
         k = 0
         cutbacks = 0
         while done < 1.0 - 1e-12:
-            # up to the next nominal increment (never past it: those are the recorded ones)
-            frac = min(done + dfrac, (math.floor(done * n + 1e-9) + 1) / n, 1.0)
+            frac = min(done + dfrac, 1.0)
             state = start.interpolate(target, frac)
             cp = model.checkpoint()
             try:
@@ -212,9 +209,9 @@ def solve(model: SealModel, steps: list[LoadStep], *,
             done = frac
             k += 1
             on_grid = abs(done * n - round(done * n)) < 1e-9
-            # after every converged increment, grow the increment back towards the nominal one
-            dfrac = min(1.0 / n, 2 * dfrac)
             if on_grid:
+                # grow the increment back towards the nominal one
+                dfrac = min(1.0 / n, 2 * dfrac)
                 last = done >= 1.0 - 1e-12
                 if step.record == "all" or (step.record == "end" and last):
                     records.append(on_state(model))
