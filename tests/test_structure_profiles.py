@@ -21,7 +21,6 @@ from sealsim.structure.profiles import (
     radial_lip_profile,
     rectangular_profile,
     ucup_profile,
-    user_profile,
     wiper_profile,
     xring_profile,
 )

@@ -37,7 +37,6 @@ from sealsim.cases import CaseModel, Q
 from sealsim.errors import InputError
 from sealsim.properties.elastomers import get_elastomer
 from sealsim.properties.oils import FAMILIES, Oil, get_oil
-from sealsim.rotary.lip_fe import LipSpec
 from sealsim.rotary.lip import (
     LIP_STYLES,
     default_contact_width,
@@ -45,6 +44,7 @@ from sealsim.rotary.lip import (
     default_radial_force,
     default_width,
 )
+from sealsim.rotary.lip_fe import LipSpec
 from sealsim.tribology.contact import PERSSON_KAPPA
 from sealsim.tribology.film import EHL_EXPONENT, FILM_FLOOR, film_coefficient_matching_fit
 from sealsim.tribology.rubber_friction import DEFAULT_MASTER_CURVE

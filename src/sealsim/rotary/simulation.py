@@ -107,8 +107,8 @@ def lip_style(case: RotaryCase) -> LipStyle:
 
 def lip_seal_friction(case: RotaryCase) -> LipSealFriction:
     """The friction model (seal + oil + elastomer + parameters) of a case; with
-    ``lip.force = "fe"`` the lip force and contact width come from the FE of the lip
-    (:mod:`sealsim.rotary.lip_fe`)."""
+    ``lip.force = "fe"`` the lip force (and with ``lip.contact_width = "fe"`` the contact
+    width) comes from the FE of the lip (:mod:`sealsim.rotary.lip_fe`)."""
     seal, fr = case.seal, case.friction
     models = {}
     if case.lip.force == "fe":

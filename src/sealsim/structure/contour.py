@@ -229,17 +229,6 @@ class Contour:
         """The contour moved by (dx, dy) [m]."""
         return Contour(self.points + np.array([dx, dy]), self.bulges, self.tags)
 
-    def mirrored_axially(self, x0: float = 0.0) -> Contour:
-        """The contour mirrored about the radial line x = x0 (oil and air side swapped)."""
-        pts = self.points.copy()
-        pts[:, 0] = 2.0 * x0 - pts[:, 0]
-        return Contour(pts, -self.bulges, self.tags).counter_clockwise()
-
-    def tag_mask(self, tag: str, max_step: float | None = None):
-        """Sample points (and the mask of those on segments with ``tag``)."""
-        s, seg = self.sample(max_step)
-        return s, np.array([self.tags[k] == tag for k in seg])
-
 
 def _segments_intersect(a0, a1, b0, b1):
     """Proper intersections of segment sets a (m, 2, 2) against b (k, 2, 2) → (m, k) bool."""

@@ -43,7 +43,6 @@ from sealsim.structure.contour import (
 )
 
 __all__ = [
-    "PROFILE_FAMILIES",
     "SealProfile",
     "radial_lip_profile",
     "rectangular_profile",
@@ -644,14 +643,3 @@ def _thinnest_wall(contour: Contour) -> float:
     along = np.minimum(along, total - along)
     far = along > 2.0 * d  # not neighbours on the same side
     return float(d[far].min()) if np.any(far) else size
-
-
-PROFILE_FAMILIES = {
-    "xring": xring_profile,
-    "rectangular": rectangular_profile,
-    "ucup": ucup_profile,
-    "wiper": wiper_profile,
-    "radial_lip": radial_lip_profile,
-    "user": user_profile,
-}
-"""The profile builders by ``seal.type`` (the O-ring, ``"oring"``, is :class:`~.geometry.ORing`)."""
