@@ -4,6 +4,9 @@
    (2738 dofs); issue 13 target <= 1.6 s wall.
 2. Characteristic map 10 pressures x 8 temperatures on 2 worker processes (medium mesh);
    issue 13 target <= 8 s wall.
+3. Lip seal (issue 12): the U-cup rod seal of examples/structure/ucup_rod.toml on its default
+   ("medium", gmsh) mesh, squeeze 10 % in 5 increments, then 0 -> 10 bar in 10 increments;
+   target <= 10 s wall (current implementation only).
 
 Each is measured twice in this process: first the reference implementation (einsum
 Mooney–Rivlin tangent, scipy ``spsolve`` in every Newton iteration: the code before issue 13,
@@ -27,7 +30,7 @@ from sealsim.structure import material as material_module
 from sealsim.structure import solver as solver_module
 from sealsim.structure.case import StructureCase
 from sealsim.structure.geometry import Gland, ORing, SealAssembly
-from sealsim.structure.maps import compute_map
+from sealsim.structure.mapping import compute_map
 from sealsim.structure.material import HyperelasticSealMaterial
 from sealsim.structure.mesh import mesh_oring
 from sealsim.structure.model import SealModel
@@ -74,6 +77,22 @@ def bench_map(workers: int = 2):
     return time.perf_counter() - t0, ds
 
 
+def bench_lip_seal() -> tuple[float, int, float]:
+    """U-cup rod seal, medium mesh: squeeze, then 0 -> 10 bar (wall time, dofs, F_N at 10 bar)."""
+    from sealsim.structure.build import build_model
+
+    case = validate_case(StructureCase, {
+        "seal": {"type": "ucup", "lip_diameter": "19.4 mm", "height": "4.4 mm",
+                 "width": "5 mm"},
+        "gland": {"sealing_diameter": "20 mm", "groove_width": "5.6 mm"},
+        "load": {"squeeze": [0.10]}})
+    model = build_model(case)
+    t0 = time.perf_counter()
+    states = solve(model, [LoadStep("squeeze", squeeze=0.10, increments=5, record="end"),
+                           LoadStep("pressure", pressure=10e5, increments=10, record="end")])
+    return time.perf_counter() - t0, model.ndofs, states[-1].F_N
+
+
 def main() -> None:
     # warm-up: numba kernels (compiled once, then read from numba's disk cache), imports
     use("auto")
@@ -102,6 +121,9 @@ def main() -> None:
           f"({ref_wall / results['superlu'][0]:.2f}x); map {map_new:.1f} s (target <= 8 s), "
           f"{map_ref / map_new:.2f}x; largest deviation from the reference: F_N, b "
           f"{deviation:.1e} (squeeze), F_N {map_deviation:.1e} (map)")
+    lip_wall, lip_dofs, lip_force = bench_lip_seal()
+    print(f"U-cup lip seal, squeeze 10 % + 0 -> 10 bar: {lip_wall:.2f} s on {lip_dofs} dofs "
+          f"(F_N = {lip_force:.1f} N at 10 bar; target <= 10 s)")
     print(json.dumps({
         "dofs": dofs, "linear_solver": backend,
         "squeeze_wall_s": round(squeeze_new, 3),
@@ -112,6 +134,7 @@ def main() -> None:
         "map_wall_s": round(map_new, 2), "map_reference_wall_s": round(map_ref, 2),
         "map_speedup": round(map_ref / map_new, 2), "map_points": int(ds_new["F_N"].size),
         "max_rel_deviation": max(deviation, map_deviation),
+        "lip_wall_s": round(lip_wall, 3), "lip_dofs": lip_dofs,
     }))
 
 

@@ -109,7 +109,7 @@ def test_fe_map_is_built_on_demand_and_cached(tiny_structure_case, fe_cache, tmp
     ref = load_map(files[0])
     assert m.evaluate(3e5, 310.0) == pytest.approx(ref.evaluate(3e5, 310.0), rel=1e-14)
     # second time: read from the cache, no FE
-    monkeypatch.setattr("sealsim.structure.maps.compute_map",
+    monkeypatch.setattr("sealsim.structure.mapping.compute_map",
                         lambda *a, **k: pytest.fail("the cached map was recomputed"))
     again = cm.build_or_load_fe_map(tiny_structure_case, cache_dir=cache)
     assert again.evaluate(3e5, 310.0) == m.evaluate(3e5, 310.0)

@@ -7,7 +7,8 @@ import xarray as xr
 from sealsim.cases import validate_case
 from sealsim.errors import InputError
 from sealsim.structure.case import StructureCase
-from sealsim.structure.maps import SealMap, compute_map, load_map
+from sealsim.structure.mapping import compute_map
+from sealsim.structure.maps import SealMap, load_map
 
 CASE = {
     "seal": {"cord_diameter": "4 mm", "inner_diameter": "20 mm"},
@@ -34,7 +35,7 @@ def dataset(case):
 def _fe_point(case, pressure, temperature):
     """Direct FE at one load (independent of the map's interpolation)."""
     from sealsim.structure.results import extract
-    from sealsim.structure.run import build_material, build_model
+    from sealsim.structure.build import build_material, build_model
     from sealsim.structure.solver import LoadStep, solve
 
     material = build_material(case, equilibrium=True)

@@ -243,7 +243,7 @@ def test_hardness_scales_the_structure_material(tmp_path):
     from sealsim.cases import apply_overrides, load_toml, validate_case
     from sealsim.properties.elastomers import shore_a_young_modulus
     from sealsim.structure.case import StructureCase
-    from sealsim.structure.run import build_material
+    from sealsim.structure.build import build_material
 
     data = load_toml(ROOT / "examples" / "pneumatic" / "rod_seal_12.toml")
     base = build_material(validate_case(StructureCase, data))

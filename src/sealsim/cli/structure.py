@@ -16,8 +16,10 @@ from sealsim.cli._common import console, err_console, guarded
 __all__ = ["structure_app"]
 
 structure_app = typer.Typer(
-    help="Seal structural mechanics: axisymmetric hyperelastic FE of an O-ring in its gland "
-         "(FElupe), normal force F_N and contact width b, characteristic maps.",
+    help="Seal structural mechanics: axisymmetric hyperelastic FE of any seal profile in its "
+         "gland (O-ring, X-ring, rectangular ring, U-cup, wiper, DIN 3760 lip seal, your own "
+         "polyline or DXF; FElupe, gmsh), normal force F_N, contact width b and pressure, "
+         "characteristic maps.",
     no_args_is_help=True,
 )
 
@@ -39,7 +41,8 @@ def run(
     """Solve the load path (squeeze, pressure, temperature) of a seal case.
 
     Writes result.csv (one row per load state), profiles.csv (contact pressure p(z)),
-    summary.json, section_installed.png, section_final.png, states.png and case_resolved.toml.
+    increments.csv (Newton iterations and cutbacks of every increment), summary.json,
+    section_installed.png, section_final.png, states.png and case_resolved.toml.
     """
     from sealsim.structure.run import run_case_file
 
@@ -59,8 +62,8 @@ def run(
             f"{result.wall_time:.1f} s; final F_N = {last.F_N:.1f} N "
             f"({last.F_N_per_length / 1e3:.3f} N/mm), b = {last.b * 1e3:.3f} mm, "
             f"p_max = {last.p_max / 1e6:.2f} MPa")
-    console.print(f"results written to {out}/ (result.csv, profiles.csv, summary.json, "
-                  "section_*.png, states.png, case_resolved.toml)")
+    console.print(f"results written to {out}/ (result.csv, profiles.csv, increments.csv, "
+                  "summary.json, section_*.png, states.png, case_resolved.toml)")
 
 
 @structure_app.command("map")
@@ -73,10 +76,10 @@ def map_(
                                 help="Worker processes (default: map.workers of the case)"),
     quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress bar"),
 ) -> None:
-    """Characteristic map F_N, b over pressure x temperature (x squeeze), in parallel.
+    """Characteristic map F_N, b, p(z) over pressure x temperature (x squeeze), in parallel.
 
-    Writes map.nc (netCDF; read it with sealsim.structure.load_map), map.csv, map.png and
-    case_resolved.toml.
+    Writes map.nc (netCDF; read it with sealsim.structure.load_map), map.csv,
+    map_profiles.csv, map.png, map_profiles.png and case_resolved.toml.
     """
     from sealsim.structure.run import map_case_file
 
@@ -95,4 +98,5 @@ def map_(
         f"map of {f.size} points ({ds.sizes['squeeze']} squeeze x {ds.sizes['temperature']} "
         f"temperature x {ds.sizes['pressure']} pressure): F_N {f.min():.1f} ... {f.max():.1f} N, "
         f"b {ds['b'].values.min() * 1e3:.3f} ... {ds['b'].values.max() * 1e3:.3f} mm")
-    console.print(f"results written to {out}/ (map.nc, map.csv, map.png, case_resolved.toml)")
+    console.print(f"results written to {out}/ (map.nc, map.csv, map_profiles.csv, map.png, "
+                  "map_profiles.png, case_resolved.toml)")

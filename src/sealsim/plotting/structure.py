@@ -8,8 +8,9 @@ import numpy as np
 from matplotlib.collections import PolyCollection
 
 from sealsim.plotting import new_figure
+from sealsim.structure.results import pressure_profile
 
-__all__ = ["plot_map", "plot_section", "plot_states"]
+__all__ = ["plot_map", "plot_map_profiles", "plot_section", "plot_states"]
 
 _LABELS = {
     "sealing_surface": "sealing surface",
@@ -65,22 +66,36 @@ def plot_section(state, title: str = ""):
             side = -np.sign(line.normal[0])
             ax.fill_betweenx(ys, x0, x0 + side * hatch, color="0.82", lw=0)
             ax.plot([x0, x0], ys, color="0.25", lw=2.0)
+    if state.bonded_points is not None and len(state.bonded_points):
+        b = state.bonded_points * 1e3
+        ax.plot(b[:, 0], b[:, 1], "s", color="0.15", ms=2.5, label="bonded to the metal case")
+    if state.spring_force > 0 and state.spring_points is not None:
+        c = state.spring_points.mean(axis=0) * 1e3
+        ax.plot(*c, "o", mfc="none", mec="tab:red", ms=9, mew=1.5,
+                label=f"garter spring {state.spring_force:.1f} N")
+    if (state.bonded_points is not None and len(state.bonded_points)) or state.spring_force > 0:
+        ax.legend(fontsize=7, loc="upper left")
     ax.set_xlim(*xlim)
     ax.set_ylim(*ylim)
     ax.set_aspect("equal")
-    ax.set_xlabel("axial position z [mm] (fluid pressure from the left)")
+    shaft = len(state.lines) == 1
+    ax.set_xlabel("axial position z [mm] (" + ("oil side on the left" if shaft else
+                                               "fluid pressure from the left") + ")")
     ax.set_ylabel("radius r [mm]")
     ax.set_title(f"squeeze {state.squeeze * 100:.3g} %, {state.pressure / 1e5:.3g} bar, "
                  f"{state.temperature - 273.15:.4g} °C", fontsize=10)
-    for name, style in (("sealing_surface", "-o"), ("groove_bottom", "--s")):
+    for name, style in (("sealing_surface", "-"), ("groove_bottom", "--")):
         s = state.surfaces.get(name)
         if s is None or s.position.size == 0:
             continue
-        z = np.concatenate([[s.edge_low], s.position, [s.edge_high]]) * 1e3
-        p = np.concatenate([[0.0], s.pressure, [0.0]]) / 1e6
-        label = (f"{_LABELS[name]}: F = {s.force:.1f} N, b = {s.width * 1e3:.3f} mm, "
+        z = np.unique(np.concatenate([np.linspace(s.edge_low, s.edge_high, 400),
+                                      s.position, [s.edge_low, s.edge_high]]))
+        p = pressure_profile(s, z)
+        zones = f", {s.zones} zones" if s.zones > 1 else ""
+        label = (f"{_LABELS[name]}: F = {s.force:.1f} N, b = {s.width * 1e3:.3f} mm{zones}, "
                  f"p_max = {s.p_max / 1e6:.2f} MPa")
-        axp.plot(z, p, style, ms=2.5, lw=1.2, label=label)
+        line, = axp.plot(z * 1e3, p / 1e6, style, lw=1.2, label=label)
+        axp.plot(s.position * 1e3, s.pressure / 1e6, "o", ms=2.0, color=line.get_color())
     if state.pressure > 0:
         axp.axhline(state.pressure / 1e6, color="0.5", lw=0.8, ls=":",
                     label=f"fluid pressure {state.pressure / 1e5:.3g} bar")
@@ -157,4 +172,53 @@ def plot_map(dataset, squeeze_index: int = 0, title: str = ""):
     axes[0].legend(fontsize=8, title="temperature")
     s = float(dataset["squeeze"].values[squeeze_index])
     fig.suptitle(title or f"characteristic map, squeeze {s * 100:.3g} %")
+    return fig
+
+
+def plot_map_profiles(dataset, squeeze_index: int = 0, title: str = ""):
+    """Contact pressure profiles p(z) of a characteristic map: every pressure at the first
+    temperature, and every temperature at the highest pressure."""
+    fig, axes = new_figure(2, 1, width=11.0, height=4.0)
+    ds = dataset.isel(squeeze=squeeze_index)
+    z = ds["position"].values * 1e3
+    t0 = ds["temperature"].values[0]
+    for p in ds["pressure"].values:
+        axes[0].plot(z, ds["contact_pressure"].sel(temperature=t0, pressure=p).values / 1e6,
+                     lw=1.2, label=f"{p / 1e5:.3g} bar")
+    p_hi = ds["pressure"].values[-1]
+    for t in ds["temperature"].values:
+        axes[1].plot(z, ds["contact_pressure"].sel(temperature=t, pressure=p_hi).values / 1e6,
+                     lw=1.2, label=f"{t - 273.15:.4g} °C")
+    axes[0].set_title(f"at {t0 - 273.15:.4g} °C", fontsize=10)
+    axes[1].set_title(f"at {p_hi / 1e5:.3g} bar", fontsize=10)
+    for ax, legend in zip(axes, ("pressure", "temperature")):
+        ax.set_xlabel("axial position z [mm]")
+        ax.set_ylabel("contact pressure [MPa]")
+        ax.set_ylim(bottom=0.0)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8, title=legend)
+    s = float(dataset["squeeze"].values[squeeze_index])
+    fig.suptitle((title + ": " if title else "") + f"contact pressure on the sealing surface, "
+                 f"squeeze {s * 100:.3g} %")
+    return fig
+
+
+def plot_lip_force(tables: dict, title: str = ""):
+    """Radial lip force, spring share and contact width of FE lip tables vs temperature
+    (frames of :meth:`sealsim.rotary.lip_fe.LipForceTable.frame`, one per variant)."""
+    fig, axes = new_figure(3, 1, width=12.0, height=3.6)
+    for name, t in tables.items():
+        axes[0].plot(t["temperature_C"], t["F_tip_N"], "-o", ms=3, label=f"{name}: lip force")
+        axes[0].plot(t["temperature_C"], t["F_spring_N"], "--", lw=1.0,
+                     label=f"{name}: garter spring")
+        axes[1].plot(t["temperature_C"], t["spring_share"], "-o", ms=3, label=name)
+        axes[2].plot(t["temperature_C"], t["contact_width_mm"], "-o", ms=3, label=name)
+    axes[0].set_ylabel("radial force (360°) [N]")
+    axes[1].set_ylabel("spring share [-]")
+    axes[2].set_ylabel("contact width [mm]")
+    for ax in axes:
+        ax.set_xlabel("temperature [°C]")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.suptitle((title + ": " if title else "") + "lip force from FE")
     return fig

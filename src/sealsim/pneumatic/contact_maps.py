@@ -500,7 +500,7 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
     (:func:`sealsim.structure.fingerprint.model_fingerprint`: model version, FElupe version,
     source of the structure model and the elastomer catalogue) names the cache file
     ``<cache_dir>/<stem>-<hash16>.nc``.  A cached map is read; otherwise
-    :func:`sealsim.structure.maps.compute_map` runs (FE, minutes) and its result is written
+    :func:`sealsim.structure.mapping.compute_map` runs (FE, minutes) and its result is written
     atomically to the cache.  Any change of the structure case or of the FE model gives a new
     map (old files stay in the cache folder until deleted).
 
@@ -521,16 +521,16 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
     -------
     FEContactMap
     """
-    from sealsim.cases import dump_case_toml, expand_variants, load_toml
+    from sealsim.cases import dump_case_toml
     from sealsim.output import atomic_write_bytes
 
     try:
-        from sealsim.structure.case import StructureCase
-        from sealsim.structure.maps import compute_map
+        from sealsim.structure.case import load_structure_cases
+        from sealsim.structure.mapping import compute_map
     except ImportError as exc:  # pragma: no cover - structure package missing
         raise InputError(f"building FE maps needs sealsim.structure ({exc})") from None
     path = Path(structure_case)
-    cases = expand_variants(StructureCase, load_toml(path), f"structure case {str(path)!r}")
+    cases = load_structure_cases(path, f"structure case {str(path)!r}")
     if len(cases) != 1:
         raise InputError(f"structure case {str(path)!r} has variants; a seal map needs one case")
     case = next(iter(cases.values()))

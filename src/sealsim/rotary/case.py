@@ -48,6 +48,7 @@ from sealsim.rotary.lip import (
     default_radial_force,
     default_width,
 )
+from sealsim.rotary.lip_fe import LipSpec
 from sealsim.tribology.film import EHL_EXPONENT, FILM_FLOOR, film_coefficient_matching_fit
 from sealsim.tribology.rubber_friction import DEFAULT_ASPERITY_WAVELENGTH, DEFAULT_MASTER_CURVE
 
@@ -471,6 +472,7 @@ class RotaryCase(CaseModel):
 
     title: str = ""
     seal: Seal
+    lip: LipSpec = LipSpec()
     oil: OilSpec = OilSpec()
     environment: Environment = Environment()
     thermal: ThermalSpec = ThermalSpec()

@@ -138,11 +138,14 @@ class LipSealFriction:
     """
 
     def __init__(self, parameters: LipSealFrictionParameters, oil: Oil, elastomer: Elastomer,
-                 lip_force: Callable[[np.ndarray], np.ndarray]):
+                 lip_force: Callable[[np.ndarray], np.ndarray],
+                 contact_width: Callable[[np.ndarray], np.ndarray] | None = None):
         self.parameters = parameters
         self.oil = oil
         self.elastomer = elastomer
         self.lip_force = lip_force
+        # optional b(T) [m] from the FE of the lip (sealsim.rotary.lip_fe); else constant
+        self.contact_width = contact_width
         self.contact_area = np.pi * parameters.shaft_diameter * parameters.contact_width
 
     def evaluate(self, angular_speed, contact_temperature) -> FrictionState:
@@ -163,7 +166,9 @@ class LipSealFriction:
         share = asperity_load_share(lam)
         mu = grosch_friction_coefficient(speed, self.elastomer.log10_shift_factor(temp),
                                          p.master_curve)
-        f_lub = viscous_friction_force(eta, speed, h, self.contact_area)
+        contact_area = self.contact_area if self.contact_width is None else \
+            np.pi * p.shaft_diameter * np.asarray(self.contact_width(temp), dtype=float)
+        f_lub = viscous_friction_force(eta, speed, h, contact_area)
         f_mat = np.where(speed > 0, mu * f_tip * share, 0.0)
         torque = np.sign(omega) * (f_lub + f_mat) * p.shaft_diameter / 2.0
         power = torque * omega

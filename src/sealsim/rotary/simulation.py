@@ -125,11 +125,30 @@ def lip_style(case: RotaryCase) -> LipStyle:
 
 
 def lip_force_source(case: RotaryCase):
-    """The lip force F_tip(T) of a case: a callable of the lip temperature [K] -> [N]."""
+    """The lip force F_tip(T) of a case: a callable of the lip temperature [K] -> [N].
+
+    The analytic law (:class:`~sealsim.rotary.lip.AnalyticLipForce`) or, with
+    ``lip.force = "fe"``, the FE table of the lip (:mod:`sealsim.rotary.lip_fe`).
+    """
     seal = case.seal
+    if case.lip.force == "fe":
+        from sealsim.rotary.lip_fe import lip_force_table
+
+        return lip_force_table(seal, case.lip, seal.radial_force_temperature).force_at
     return AnalyticLipForce(seal.radial_force, seal.radial_force_temperature, seal.spring_share,
                             get_elastomer(seal.material), seal.hoop_prestrain,
                             case.environment.shaft_expansion)
+
+
+def contact_width_source(case: RotaryCase):
+    """The contact width b(T) [m] of a case from the FE of the lip (``lip.contact_width =
+    "fe"``), or None for the constant ``seal.contact_width``."""
+    if case.lip.contact_width != "fe":
+        return None
+    from sealsim.rotary.lip_fe import lip_force_table
+
+    seal = case.seal
+    return lip_force_table(seal, case.lip, seal.radial_force_temperature).contact_width_at
 
 
 def lip_seal_friction(case: RotaryCase) -> LipSealFriction:
@@ -148,7 +167,7 @@ def lip_seal_friction(case: RotaryCase) -> LipSealFriction:
             roughness=math.hypot(seal.shaft_roughness, seal.lip_roughness),
             master_curve=GroschMasterCurve(fr.mu_peak, fr.mu_low, peak,
                                            fr.master_curve_width_decades)),
-        case.oil.build(), elastomer, lip_force_source(case))
+        case.oil.build(), elastomer, lip_force_source(case), contact_width_source(case))
 
 
 @dataclass

@@ -97,3 +97,14 @@ def write_results(folder: ResultFolder, results: dict[str, RotaryResult], source
     curves = {name: friction_map(r.case, speeds, STRIBECK_TEMPERATURES_C)
               for name, r in results.items()}
     folder.savefig("stribeck.png", stribeck_figure(frames, curves))
+    fe = {name: r.case for name, r in results.items() if r.case.lip.force == "fe"}
+    if fe:
+        from sealsim.plotting.structure import plot_lip_force
+        from sealsim.rotary.lip_fe import lip_force_table
+
+        tables = {name: lip_force_table(c.seal, c.lip, c.seal.radial_force_temperature).frame()
+                  for name, c in fe.items()}  # cached by the simulation
+        folder.write_csv("lip_fe.csv", pd.concat(
+            [t.assign(variant=name) for name, t in tables.items()], ignore_index=True),
+            float_format="%.6g")
+        folder.savefig("lip_fe.png", plot_lip_force(tables, first.title))

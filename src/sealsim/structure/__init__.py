@@ -3,18 +3,25 @@ characteristic diagrams of the normal force F_N and contact width b (seed 001).
 
 Pipeline, one concept per module:
 
-* :mod:`.geometry` -- seal sections (:class:`ORing`) and glands (:class:`Gland`,
-  :class:`SealAssembly`: rod or piston arrangement, squeeze, metal expansion);
-* :mod:`.mesh` -- quad meshes of sections (:func:`mesh_oring`, :func:`mesh_section`);
+* :mod:`.geometry` -- the O-ring section (:class:`ORing`) and glands (:class:`Gland`,
+  :class:`SealAssembly`: rod, piston or shaft arrangement, squeeze, walls, metal expansion);
+* :mod:`.contour`, :mod:`.profiles` -- any section as a closed contour of lines and arcs
+  (checks, fillets, polylines, DXF) and the parametric families (X-ring, rectangular ring,
+  U-cup, wiper, DIN 3760 radial lip seal);
+* :mod:`.mesh`, :mod:`.profile_mesh` -- quad meshes: the O-ring's O-grid, gmsh (or a
+  built-in fallback) for profiles (:func:`mesh_section`);
 * :mod:`.material` -- nearly incompressible Mooney–Rivlin with thermal expansion and
   temperature-dependent constants, thermo-viscoelastic Prony/WLF variant;
 * :mod:`.loads`, :mod:`.constraints` -- fluid pressure on the wetted surface, anti-rolling
-  spring;
-* :mod:`.model` -- :class:`SealModel` (FElupe region, field, solid body, rigid contacts);
+  spring, axial symmetry hold, garter spring;
+* :mod:`.model` -- :class:`SealModel` (FElupe region, field, solid body, rigid contacts with
+  Coulomb friction, bonded edges);
 * :mod:`.solver` -- load path with Newton iterations and automatic cutback (:func:`solve`);
 * :mod:`.results` -- F_N, b, pressures, profiles, equilibrium checks (:func:`extract`);
-* :mod:`.maps` -- characteristic maps (:func:`compute_map`, :func:`load_map`, :class:`SealMap`);
-* :mod:`.case`, :mod:`.run` -- case files and the orchestration used by the CLI;
+* :mod:`.maps` -- reading characteristic maps (:func:`load_map`, :class:`SealMap`; no FE);
+* :mod:`.mapping` -- computing them (:func:`compute_map`);
+* :mod:`.case`, :mod:`.build`, :mod:`.run` -- case files, building a model from a case, and
+  the orchestration used by the CLI;
 * :mod:`.analytic` -- Hertz line contact for checks;
 * :mod:`.fingerprint` -- version and fingerprint of the FE model (part of map cache keys).
 """
@@ -23,11 +30,14 @@ import importlib
 
 _EXPORTS = {
     "Gland": "geometry", "ORing": "geometry", "SealAssembly": "geometry",
-    "mesh_oring": "mesh", "mesh_section": "mesh",
+    "Contour": "contour", "SealProfile": "profiles", "xring_profile": "profiles",
+    "rectangular_profile": "profiles", "ucup_profile": "profiles",
+    "wiper_profile": "profiles", "radial_lip_profile": "profiles", "user_profile": "profiles",
+    "mesh_oring": "mesh", "mesh_section": "mesh", "mesh_profile": "profile_mesh",
     "HyperelasticSealMaterial": "material", "ViscoelasticSealMaterial": "material",
     "material_from_elastomer": "material",
     "SealModel": "model", "LoadState": "model", "LoadStep": "solver", "solve": "solver",
-    "extract": "results", "SealMap": "maps", "compute_map": "maps", "load_map": "maps",
+    "extract": "results", "SealMap": "maps", "compute_map": "mapping", "load_map": "maps",
 }
 __all__ = list(_EXPORTS)
 

@@ -1,15 +1,14 @@
-r"""Characteristic diagrams of the seal: F_N and b over pressure × temperature (× squeeze).
-
-Computing: :func:`compute_map` runs one FE load path per (squeeze, temperature) -- installation
-to the squeeze at the installation temperature, temperature change at the positioning
-pressure, then the pressure sweep over the grid, recording every grid pressure -- in a
-process pool. The material of a map is the *equilibrium* (fully relaxed) one: a
-thermo-viscoelastic case is mapped with its long-time hyperelastic constants.
+r"""Characteristic diagrams of the seal: reading F_N and b over pressure × temperature
+(× squeeze). FE-free: the pneumatic model imports this module cheaply; the maps are computed
+by :mod:`.mapping`.
 
 Storing: an :class:`xarray.Dataset` with dimensions ``(squeeze, temperature, pressure)``, SI
 coordinates with ``units`` attributes, the variables ``F_N`` [N] (full circumference),
-``F_N_per_length`` [N/m], ``b`` [m], ``p_max``, ``p_mean`` [Pa], ``F_groove_bottom`` [N], and
-the resolved case as the string attribute ``case`` -- written to netCDF (``map.nc``).
+``F_N_per_length`` [N/m], ``b`` [m] (sum of the contact zones), ``p_max``, ``p_mean`` [Pa],
+``F_groove_bottom`` [N], ``contact_zones`` [-], ``b_span`` [m], the contact pressure profile
+``contact_pressure`` [Pa] over an extra dimension ``position`` (axial position on the sealing
+surface) and the resolved case as the string attribute ``case`` -- written to netCDF
+(``map.nc``).
 
 Reading: :func:`load_map` → :class:`SealMap`, a C¹ tensor-product cubic Hermite interpolant
 whose node slopes are the monotone PCHIP slopes (Fritsch & Carlson 1980) along each axis
@@ -22,11 +21,8 @@ call costs a few µs (pure Python on precomputed cell coefficients); arrays are 
 from __future__ import annotations
 
 import bisect
-import concurrent.futures as cf
 import itertools
 import math
-import warnings
-from collections.abc import Callable
 
 import numpy as np
 import xarray as xr
@@ -34,7 +30,8 @@ from scipy.interpolate import PchipInterpolator
 
 from sealsim.errors import InputError
 
-__all__ = ["MAP_VARIABLES", "HermiteGrid", "SealMap", "compute_map", "load_map"]
+__all__ = ["MAP_COORDS", "MAP_VARIABLES", "PROFILE_VARIABLES", "HermiteGrid", "SealMap",
+           "load_map"]
 
 MAP_VARIABLES = {
     "F_N": ("N", "normal force on the sealing surface (full circumference)"),
@@ -44,7 +41,15 @@ MAP_VARIABLES = {
     "p_mean": ("Pa", "mean contact pressure F_N / (2 pi R b)"),
     "F_groove_bottom": ("N", "normal force on the groove bottom (full circumference)"),
 }
-_COORDS = {
+"""Scalar map variables (dimensions squeeze, temperature, pressure): unit, description."""
+
+PROFILE_VARIABLES = {
+    "contact_zones": ("1", "number of separate contact zones on the sealing surface"),
+    "b_span": ("m", "distance from the first to the last contact edge on the sealing surface"),
+}
+"""Further scalar variables of a map (not interpolated by :class:`SealMap`)."""
+
+MAP_COORDS = {
     "squeeze": ("1", "squeeze (1 - gland depth / cord diameter)"),
     "temperature": ("K", "temperature"),
     "pressure": ("Pa", "fluid (gauge) pressure on the upstream side"),
@@ -315,127 +320,3 @@ def load_map(path, extrapolate: str = "error") -> SealMap:
     except Exception as exc:  # netCDF errors come in many types
         raise InputError(f"map file {str(p)!r} is not a readable netCDF map: {exc}") from None
     return SealMap(ds, extrapolate=extrapolate)
-
-
-# -- computing a map ------------------------------------------------------------------------------
-
-def _map_task(case_data: dict, squeeze: float, temperature: float) -> dict:
-    """One FE load path: install to ``squeeze``, change to ``temperature``, sweep the pressures."""
-    from sealsim.structure.case import StructureCase
-    from sealsim.structure.results import extract
-    from sealsim.structure.run import build_material, build_model
-    from sealsim.structure.solver import LoadStep, solve
-
-    case = StructureCase.model_validate(case_data)
-    spec = case.map
-    material = build_material(case, equilibrium=True)
-    model = build_model(case, squeeze, material=material,
-                        temperatures=[case.load.installation_temperature, temperature])
-    steps = [LoadStep("installation", squeeze=squeeze, increments=spec.squeeze_increments,
-                      record="none"),
-             LoadStep("temperature", temperature=temperature,
-                      increments=spec.temperature_increments, record="none")]
-    steps += [LoadStep("pressure", pressure=p, increments=spec.pressure_increments, record="end")
-              for p in spec.pressure]
-    sv = case.solver
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", category=UserWarning)
-        states = solve(model, steps, on_state=extract, tol=sv.tolerance,
-                       maxiter=sv.max_iterations, max_cutbacks=sv.max_cutbacks)
-    return {
-        "F_N": [s.F_N for s in states],
-        "F_N_per_length": [s.F_N_per_length for s in states],
-        "b": [s.b for s in states],
-        "p_max": [s.p_max for s in states],
-        "p_mean": [s.p_mean for s in states],
-        "F_groove_bottom": [s.surfaces["groove_bottom"].force for s in states],
-        "ndofs": model.ndofs,
-    }
-
-
-def compute_map(case, *, workers: int | None = None,
-                progress: Callable[[int, int], None] | None = None,
-                case_text: str = "") -> xr.Dataset:
-    """Compute the characteristic map of a case with a ``[map]`` table.
-
-    Parameters
-    ----------
-    case : StructureCase
-        Validated case (``case.map`` must be given).
-    workers : int, optional
-        Processes (default ``case.map.workers``); 1 runs in this process.
-    progress : callable, optional
-        ``progress(done, total)`` after each finished (squeeze, temperature) path.
-    case_text : str
-        Resolved case (TOML) stored as the ``case`` attribute.
-
-    Returns
-    -------
-    xarray.Dataset
-    """
-    from sealsim import __version__
-    from sealsim.structure.run import build_assembly, check_temperatures
-
-    if case.map is None:
-        raise InputError("the case has no [map] table: give map.pressure and map.temperature")
-    spec = case.map
-    squeezes = spec.squeeze or [case.load.squeeze[-1]]
-    assembly = build_assembly(case)
-    for s in squeezes:
-        assembly.check_squeeze(s, "map.squeeze")
-    check_temperatures(case, spec.temperature)
-    tasks = [(s, t) for s in squeezes for t in spec.temperature]
-    data = case.model_dump(mode="json")
-    shape = (len(squeezes), len(spec.temperature), len(spec.pressure))
-    arrays = {v: np.full(shape, np.nan) for v in MAP_VARIABLES}
-    ndofs = 0
-    n_workers = max(1, min(workers or spec.workers, len(tasks)))
-
-    def store(key, out):
-        nonlocal ndofs
-        i, j = squeezes.index(key[0]), spec.temperature.index(key[1])
-        for v in MAP_VARIABLES:
-            arrays[v][i, j, :] = out[v]
-        ndofs = out["ndofs"]
-
-    done = 0
-    if n_workers == 1:
-        for key in tasks:
-            store(key, _map_task(data, *key))
-            done += 1
-            if progress:
-                progress(done, len(tasks))
-    else:
-        with cf.ProcessPoolExecutor(max_workers=n_workers) as pool:
-            futures = {pool.submit(_map_task, data, *key): key for key in tasks}
-            try:
-                for fut in cf.as_completed(futures):
-                    store(futures[fut], fut.result())
-                    done += 1
-                    if progress:
-                        progress(done, len(tasks))
-            except BaseException:
-                for f in futures:
-                    f.cancel()
-                raise
-    coords = {"squeeze": np.asarray(squeezes, float),
-              "temperature": np.asarray(spec.temperature, float),
-              "pressure": np.asarray(spec.pressure, float)}
-    ds = xr.Dataset(
-        {v: (("squeeze", "temperature", "pressure"), arrays[v],
-             {"units": MAP_VARIABLES[v][0], "long_name": MAP_VARIABLES[v][1]})
-         for v in MAP_VARIABLES},
-        coords={d: (d, coords[d], {"units": _COORDS[d][0], "long_name": _COORDS[d][1]})
-                for d in coords},
-        attrs={
-            "title": "sealsim characteristic map of a seal (axisymmetric FE, FElupe)",
-            "case": case_text,
-            "sealsim_version": __version__,
-            "elastomer": case.material.elastomer,
-            "material_model": "hyperelastic (equilibrium constants)",
-            "dofs": int(ndofs),
-            "conventions": "forces for the full circumference; pressure is the gauge pressure "
-                           "on the upstream side; temperature in K; squeeze = 1 - h/d",
-        },
-    )
-    return ds

@@ -8,7 +8,7 @@ so that the contact zones get the finest, nearly uniform elements along the arc 
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -44,7 +44,11 @@ class SealMesh:
     centre : tuple of float
         Section centre [m].
     symmetry_nodes : numpy.ndarray
-        Nodes on the vertical line through the centre (used by plane-strain checks).
+        Nodes on the vertical line through the centre (used by plane-strain checks); empty
+        for unstructured meshes.
+    node_sets : dict
+        Named boundary node sets of profile meshes: ``"bonded"`` (moves with the housing),
+        ``"spring"`` (garter spring seat).
     """
 
     points: np.ndarray
@@ -52,6 +56,7 @@ class SealMesh:
     boundary: np.ndarray
     centre: tuple[float, float]
     symmetry_nodes: np.ndarray
+    node_sets: dict = field(default_factory=dict)
 
     @property
     def npoints(self) -> int:
@@ -188,7 +193,15 @@ def _check_cells(points, cells):
 
 
 def mesh_section(section, centre, level: str = "medium", **kwargs) -> SealMesh:
-    """Mesh a seal cross-section (dispatch on its type; O-rings so far)."""
+    """Mesh a seal cross-section with its centre at ``centre`` [m]: the O-grid for an
+    :class:`ORing`, gmsh (or the built-in fallback) for a :class:`~.profiles.SealProfile`
+    (moved axially so that its area centroid lies at ``centre[0]``; radii are kept)."""
     if isinstance(section, ORing):
         return mesh_oring(section, centre, level, **kwargs)
+    from sealsim.structure.profile_mesh import mesh_profile
+    from sealsim.structure.profiles import SealProfile
+
+    if isinstance(section, SealProfile):
+        shift = centre[0] - section.contour.centroid()[0]
+        return mesh_profile(section.translated(shift), level, **kwargs)
     raise InputError(f"no mesh builder for seal sections of type {type(section).__name__}")

@@ -20,16 +20,37 @@ from dataclasses import dataclass
 import felupe as fem
 import numpy as np
 
-from sealsim.structure.constraints import RollingConstraint
-from sealsim.structure.geometry import SealAssembly
+from sealsim.structure.constraints import (
+    AxialPositionConstraint,
+    GarterSpring,
+    RollingConstraint,
+    ring_samples,
+)
+from sealsim.structure.geometry import ORing, SealAssembly
 from sealsim.structure.loads import FluidPressure
 from sealsim.structure.mesh import SealMesh
 
-__all__ = ["DEFAULT_POSITIONING_PRESSURE", "LoadState", "SealModel"]
+__all__ = ["DEFAULT_POSITIONING_PRESSURE", "GarterSpringSpec", "LoadState", "SealModel"]
 
 DEFAULT_POSITIONING_PRESSURE = 1.0e3
 """Small pressure [Pa] (0.01 bar) that holds the seal against the downstream wall when the
 fluid pressure is lower (frictionless contact leaves its axial position otherwise open)."""
+
+
+@dataclass(frozen=True)
+class GarterSpringSpec:
+    """Garter spring of a radial lip seal (:class:`~.constraints.GarterSpring`).
+
+    Parameters
+    ----------
+    rate : float
+        Axial rate of the straight coil spring [N/m].
+    tension : float
+        Hoop pre-tension in the free seal [N].
+    """
+
+    rate: float
+    tension: float
 
 
 @dataclass(frozen=True)
@@ -65,7 +86,7 @@ class SealModel:
         Axisymmetric model (default) or plane strain (per unit length, for checks).
     walls : bool
         Include the groove walls (plane-strain checks between two flats use False and a
-        symmetry condition instead).
+        symmetry condition instead); the assembly's own ``walls`` setting also counts.
     penalty : float
         Contact penalty as a multiple of the mean diagonal stiffness of the contact nodes.
     positioning_pressure : float
@@ -73,18 +94,34 @@ class SealModel:
     rolling_stiffness : float
         Stiffness of the anti-rolling spring (:mod:`.constraints`) in units of
         G·A·2πR_c (shear modulus × section area × centre circumference); 0 disables it.
+    friction : float or dict, optional
+        Coulomb friction coefficient of the rigid lines (one value for all, or per line name:
+        "sealing_surface", "groove_bottom", "wall_upstream", "wall_downstream"); FElupe's
+        penalty friction with return mapping (stick / slip, state updated after each
+        converged increment).
+    elastic_slip : float, optional
+        Elastic slip [m] a sticking contact node may take before it slides (FElupe's
+        ``elastic_slip``: the tangential penalty is μ f_n / slip, so sticking does not depend
+        on the contact pressure); default 1e-3 of the section's contact size. Without it the
+        stick/slip state of nodes entering contact chatters between Newton iterations.
+    spring : GarterSpringSpec, optional
+        Garter spring on the mesh's ``"spring"`` node set (radial lip seals).
     """
 
     def __init__(self, assembly: SealAssembly, mesh: SealMesh, material, *,
                  installation_squeeze: float, axisymmetric: bool = True, walls: bool = True,
                  penalty: float = 1.0,
                  positioning_pressure: float = DEFAULT_POSITIONING_PRESSURE,
-                 rolling_stiffness: float = 10.0):
+                 rolling_stiffness: float = 10.0, friction: float | dict | None = None,
+                 elastic_slip: float | None = None, spring: GarterSpringSpec | None = None):
         self.assembly = assembly
         self.seal_mesh = mesh
         self.material = material
         self.installation_squeeze = float(installation_squeeze)
         self.axisymmetric = axisymmetric
+        shaft = assembly.gland.arrangement == "shaft"
+        walls = walls and assembly.walls and not shaft
+        self.walls = walls
         self.positioning_pressure = float(positioning_pressure) if walls else 0.0
         t0 = assembly.reference_temperature
         material.set_state(t0, 0.0)
@@ -107,39 +144,67 @@ class SealModel:
             material.umat, self.field, bulk=material.bulk(t0))
         self.V0 = self.solid.V.copy()
         self.loop = np.asarray(mesh.boundary)
+        bonded = mesh.node_sets.get("bonded", np.array([], dtype=int))
+        self.bonded = np.asarray(bonded, dtype=int)
+        candidates = np.setdiff1d(self.loop, self.bonded) if len(self.bonded) else self.loop
+        mu = friction if isinstance(friction, dict) else \
+            {name: float(friction or 0.0) for name in self.line_names}
+        unknown = set(mu) - set(self.line_names) - {"sealing_surface", "groove_bottom",
+                                                     "wall_upstream", "wall_downstream"}
+        if unknown:
+            raise ValueError(f"friction given for unknown rigid lines {sorted(unknown)}")
+        self.friction = {name: float(mu.get(name, 0.0)) for name in self.line_names}
+        if elastic_slip is None:
+            seal = assembly.seal
+            elastic_slip = 1e-3 * getattr(seal, "contact_scale", seal.radial_extent)
         self.contacts = {
             line.name: fem.ContactRigidPlane(
-                self.field, points=self.loop, centerpoint=self.centerpoints[line.name],
-                normal=line.normal, multiplier=penalty, items=[self.solid])
+                self.field, points=candidates, centerpoint=self.centerpoints[line.name],
+                normal=line.normal, multiplier=penalty, items=[self.solid],
+                friction=self.friction[line.name],
+                elastic_slip=elastic_slip if self.friction[line.name] > 0 else None)
             for line in lines
         }
+        self._candidates = candidates
         self.pressure = FluidPressure(self.field, self.loop, axisymmetric=axisymmetric)
         self.items = [self.solid, *self.contacts.values(), self.pressure]
+        self.spring = None
+        if spring is not None:
+            seat = mesh.node_sets.get("spring")
+            if seat is None or not axisymmetric:
+                raise ValueError("a garter spring needs an axisymmetric model and a seal with "
+                                 "a spring seat (segments tagged 'spring')")
+            self.spring = GarterSpring(self.field, seat, spring.rate, spring.tension)
+            self.items.append(self.spring)
+        seal = assembly.seal
+        g = material.shear_modulus(assembly.reference_temperature)
         self.rolling = None
-        if walls and rolling_stiffness > 0:
-            rel = mesh.points - np.asarray(mesh.centre)
-            dist = np.linalg.norm(rel, axis=1)
-            core = np.where(dist <= 0.45 * assembly.seal.radius)[0]
-            # a few dozen nodes describe the rotation of the core; more would only fill the
-            # sparse matrix (the spring couples all its nodes)
-            core = core[np.argsort(dist[core])][:: max(1, len(core) // 32)]
-            g = material.shear_modulus(assembly.reference_temperature)
-            ring = assembly.seal
-            k = rolling_stiffness * g * ring.area * self.circumference(ring.centre_radius)
-            self.rolling = RollingConstraint(self.field, core, k)
-            self.items.append(self.rolling)
-        # prescribed dofs: the rigid lines' reference points (+ symmetry line without walls)
+        self.axial_hold = None
+        if not shaft:
+            samples = _core_samples(seal, mesh)
+            if rolling_stiffness > 0:
+                k = rolling_stiffness * g * seal.area * self.circumference(seal.centre_radius)
+                self.rolling = RollingConstraint(self.field, samples, k)
+                self.items.append(self.rolling)
+            if not walls and len(mesh.symmetry_nodes) == 0:
+                k = 10.0 * g * self.circumference(seal.centre_radius)
+                self.axial_hold = AxialPositionConstraint(self.field, samples, k)
+                self.items.append(self.axial_hold)
+        # prescribed dofs: the rigid lines' reference points (+ symmetry line without walls,
+        # + the edges bonded to the metal case)
         dof0 = [2 * p + c for p in self.centerpoints.values() for c in (0, 1)]
         self._symmetry = np.array([], dtype=int)
-        if not walls:
-            self._symmetry = np.asarray(mesh.symmetry_nodes)
+        if not walls and not shaft:
+            self._symmetry = np.asarray(mesh.symmetry_nodes, dtype=int)
             dof0 += list(2 * self._symmetry)
+        dof0 += [2 * p + c for p in self.bonded for c in (0, 1)]
         self.dof0 = np.array(sorted(dof0))
         self.dof1 = np.setdiff1d(np.arange(2 * self.mesh.npoints), self.dof0)
         self._line_origin = {line.name: np.array(line.point) for line in lines}
         self.state = LoadState(0.0, 0.0, t0, 0.0)
         self.force_scale = self._force_scale()
         self.newton_iterations: list[int] = []
+        self.increment_log: list[dict] = []
 
     # -- sizes and scales -------------------------------------------------------------------------
     @property
@@ -154,7 +219,7 @@ class SealModel:
     def _force_scale(self) -> float:
         g = self.material.shear_modulus(self.assembly.reference_temperature)
         ring = self.assembly.seal
-        return g * ring.cord_diameter * self.circumference(ring.centre_radius)
+        return g * ring.radial_extent * self.circumference(ring.centre_radius)
 
     # -- loads -----------------------------------------------------------------------------------
     def applied_pressure(self, pressure: float) -> float:
@@ -170,6 +235,13 @@ class SealModel:
             if line.name in self.centerpoints:
                 p = self.centerpoints[line.name]
                 values[2 * p:2 * p + 2] = np.array(line.point) - self._line_origin[line.name]
+        if len(self.bonded):
+            # the metal case moves with the housing: free thermal expansion about the origin
+            strain = self.assembly.housing_expansion() * (
+                state.temperature - self.assembly.reference_temperature)
+            u = strain * self.seal_mesh.points[self.bonded]
+            values[2 * self.bonded] = u[:, 0]
+            values[2 * self.bonded + 1] = u[:, 1]
         return values[self.dof0]
 
     def set_load(self, state: LoadState, time_increment: float) -> np.ndarray:
@@ -178,13 +250,34 @@ class SealModel:
         self.solid.bulk = self.material.bulk(state.temperature)
         self.solid.V = self.V0 * self.material.volume_ratio
         self.pressure.update(self.applied_pressure(state.pressure))
+        if self.spring is not None:
+            self.spring.scale = self.assembly.spring_factor(state.squeeze,
+                                                            self.installation_squeeze)
         return self.prescribed(state)
 
     # -- contact state ---------------------------------------------------------------------------
     def gaps(self, name: str) -> np.ndarray:
-        """Gaps [m] of the loop nodes to a rigid line (negative = penetration)."""
+        """Gaps [m] of the loop nodes to a rigid line (negative = penetration; +inf for nodes
+        that cannot touch it, such as bonded ones)."""
         contact = self.contacts[name]
-        return contact._kinematics(contact._gap_vectors())[0]
+        g = contact._kinematics(contact._gap_vectors())[0]
+        if len(self._candidates) == len(self.loop):
+            return g
+        out = np.full(len(self.loop), np.inf)
+        out[np.isin(self.loop, self._candidates)] = g
+        return out
+
+    def tangential_reaction(self, name: str) -> float:
+        """Force [N] the seal exerts on a rigid line along it (friction; x for radial
+        surfaces, y for walls), from the assembled contact forces on the line's reference
+        point (full circumference for an axisymmetric model)."""
+        contact = self.contacts[name]
+        force = contact.results.force
+        if force is None:
+            return 0.0
+        p = self.centerpoints[name]
+        along = 0 if abs(self.normals[name][1]) > 0.5 else 1
+        return -float(np.asarray(force[2 * p + along].toarray()).ravel()[0])
 
     def tributary_lengths(self) -> np.ndarray:
         """Half the lengths of the two deformed boundary segments at each loop node [m]."""
@@ -197,7 +290,7 @@ class SealModel:
         contact = self.contacts[name]
         g = self.gaps(name)
         lam = contact.multipliers.normal if contact.multipliers is not None else 0.0
-        return np.where(g < 0.0, -lam * g, 0.0)
+        return -lam * np.where(g < 0.0, g, 0.0)
 
     def contact_pressure(self, name: str | None = None) -> np.ndarray:
         """Nodal contact pressure [Pa] (one line, or the largest over all lines)."""
@@ -215,7 +308,7 @@ class SealModel:
         pc = self.contact_pressure()
         if self.state.squeeze == 0.0:
             # unloaded start: nodes touching a rigid line bound the wetted surface
-            tol = 1e-9 * self.assembly.seal.cord_diameter
+            tol = 1e-9 * self.assembly.seal.radial_extent
             touching = np.min([self.gaps(n) for n in self.line_names], axis=0) <= tol
             pc = np.where(touching, np.inf, pc)
         return self.pressure.update_wetting(pc, entry)
@@ -228,6 +321,7 @@ class SealModel:
             "wet": (self.pressure.s0.copy(), self.pressure.s1.copy()),
             "state": self.state,
             "temperature": self.material.temperature,
+            "spring": None if self.spring is None else self.spring.scale,
         }
 
     def restore(self, cp: dict) -> None:
@@ -238,5 +332,29 @@ class SealModel:
         self.pressure.field = self.field
         self.state = cp["state"]
         self.material.temperature = cp["temperature"]
+        if self.spring is not None:
+            self.spring.scale = cp["spring"]
         for item in self.items:
             item.field.link(self.field)
+
+
+def _core_samples(seal, mesh: SealMesh) -> np.ndarray:
+    """Sample points of the rolling and axial constraints: two rings of eight points around
+    the section's centre (O-ring: circle centre, radius 0.45 a; profile: area centroid, 60 %
+    of its distance to the boundary)."""
+    if isinstance(seal, ORing):
+        return ring_samples(mesh.centre, 0.45 * seal.radius)
+    from matplotlib.path import Path
+
+    boundary = mesh.points[mesh.boundary]
+    centre = np.asarray(mesh.centre)
+    if not Path(boundary).contains_point(centre):
+        # a section whose centroid lies outside (an L- or U-shape): the deepest inner point
+        lo, hi = boundary.min(axis=0), boundary.max(axis=0)
+        grid = np.stack(np.meshgrid(np.linspace(lo[0], hi[0], 41), np.linspace(lo[1], hi[1], 41)),
+                        axis=-1).reshape(-1, 2)
+        grid = grid[Path(boundary).contains_points(grid)]
+        depth = np.min(np.linalg.norm(grid[:, None] - boundary[None], axis=2), axis=1)
+        centre = grid[int(np.argmax(depth))]
+    depth = float(np.min(np.linalg.norm(boundary - centre, axis=1)))
+    return ring_samples(centre, 0.6 * depth)

@@ -8,10 +8,15 @@ Conventions
   are per unit length [N/m].
 * Contact pressure at a node is its contact force divided by its tributary area
   (2π r × half the two adjacent deformed boundary segments).
-* The contact width b is the distance between the two contact edges along the surface
-  (:func:`contact_width`): where the contact pressure falls to zero, with p² linear in
-  position next to the last node in contact (the square-root edge of a smooth, Hertz
-  contact); the wetted surface of the fluid pressure ends at the same edges.
+* The contact width b of one contact zone is the distance between its two edges along the
+  surface (:func:`contact_width`): where the contact pressure falls to zero, with p² linear
+  in position next to the last node in contact (the square-root edge of a smooth, Hertz
+  contact); the wetted surface of the fluid pressure ends at the same edges. A profile with
+  several lobes (an X-ring) touches in several zones: b is the sum of their widths (the
+  surface that carries load and shears the film), the span from the first to the last edge
+  is reported as well.
+* Friction (tangential) forces of the rigid lines come from the assembled contact forces on
+  their reference points and enter the equilibrium check.
 * Global equilibrium: the reactions of the rigid parts (minus the fluid load) balance the
   seal; axially they sum to zero, radially to the hoop force :math:`2\pi\int P_{\theta\theta}\,dA`
   (the axisymmetric section is not a free body in r: the ring's hoop stress takes part of the
@@ -28,7 +33,9 @@ __all__ = [
     "StateResult",
     "SurfaceResult",
     "contact_width",
+    "contact_zones",
     "extract",
+    "pressure_profile",
     "profiles_frame",
     "results_frame",
 ]
@@ -56,7 +63,14 @@ class SurfaceResult:
     radius : float
         Radius of the line (or mean radius of the contact on a wall) [m].
     edge_low, edge_high : float
-        Contact edges along the line [m] (nan without contact).
+        Outermost contact edges along the line [m] (nan without contact).
+    zones : int
+        Number of separate contact zones.
+    zone_edges : list of tuple
+        (low edge, high edge) of every contact zone [m].
+    tangential : float
+        Force of the seal on the line along it [N] (friction; z for radial lines, r for
+        walls).
     """
 
     name: str
@@ -69,6 +83,14 @@ class SurfaceResult:
     radius: float
     edge_low: float = float("nan")
     edge_high: float = float("nan")
+    zones: int = 0
+    tangential: float = 0.0
+    zone_edges: list = field(default_factory=list)
+
+    @property
+    def span(self) -> float:
+        """Distance from the first to the last contact edge [m] (0 without contact)."""
+        return float(self.edge_high - self.edge_low) if self.zones else 0.0
 
 
 @dataclass
@@ -92,10 +114,13 @@ class StateResult:
     max_penetration: float
     wetted_length: float
     rolling_moment: float
-    deformed_points: np.ndarray = field(repr=False)
-    cells: np.ndarray = field(repr=False)
-    von_mises: np.ndarray = field(repr=False)
+    spring_force: float = 0.0
+    deformed_points: np.ndarray = field(repr=False, default=None)
+    cells: np.ndarray = field(repr=False, default=None)
+    von_mises: np.ndarray = field(repr=False, default=None)
     lines: list = field(repr=False, default_factory=list)
+    bonded_points: np.ndarray = field(repr=False, default=None)
+    spring_points: np.ndarray = field(repr=False, default=None)
 
     def row(self) -> dict:
         """One row of ``result.csv`` (engineering units)."""
@@ -110,13 +135,18 @@ class StateResult:
             "b_mm": self.b * 1e3,
             "p_max_MPa": self.p_max / 1e6,
             "p_mean_MPa": self.p_mean / 1e6,
-            "F_groove_bottom_N": s["groove_bottom"].force,
-            "p_max_groove_bottom_MPa": s["groove_bottom"].p_max / 1e6,
+            "contact_zones": s["sealing_surface"].zones,
+            "b_span_mm": s["sealing_surface"].span * 1e3,
+            "F_friction_sealing_N": s["sealing_surface"].tangential,
+            "F_groove_bottom_N": s["groove_bottom"].force if "groove_bottom" in s else 0.0,
+            "p_max_groove_bottom_MPa": s["groove_bottom"].p_max / 1e6
+            if "groove_bottom" in s else 0.0,
             "F_wall_upstream_N": s["wall_upstream"].force if "wall_upstream" in s else 0.0,
             "F_wall_downstream_N": s["wall_downstream"].force if "wall_downstream" in s else 0.0,
             "hoop_force_N": self.hoop_force,
             "max_penetration_um": self.max_penetration * 1e6,
             "rolling_moment_Nm": self.rolling_moment,
+            "spring_force_N": self.spring_force,
         }
 
 
@@ -140,6 +170,21 @@ def _edge(x, p, inner, direction, threshold):
     if outer is not None:  # not past the first free node
         e = min(e, x[outer]) if direction > 0 else max(e, x[outer])
     return e
+
+
+def _skip_grazing(x, p, edge, other, direction, threshold):
+    """(edge node, pressures) with a grazing outermost node dropped: one with less pressure
+    than its inner neighbour whose presence contradicts the p²-linear edge extrapolated from
+    the two nodes inside it (that edge lies inside the node)."""
+    inner = edge - direction
+    if threshold != 0.0 or abs(other - edge) < 2 or not p[edge] < p[inner]:
+        return edge, p
+    q = p.copy()
+    q[edge] = 0.0
+    e = _edge(x, q, inner, direction, 0.0)
+    if (e - x[edge]) * direction < -1e-12 * max(abs(x[inner] - x[edge]), 1e-300):
+        return inner, q
+    return edge, p
 
 
 def contact_width(position, pressure, threshold_low=0.0, threshold_high=0.0):
@@ -166,7 +211,10 @@ def contact_width(position, pressure, threshold_low=0.0, threshold_high=0.0):
     thresholds. Each edge is where p falls to the threshold, with p² linear in position
     between the nodes -- or, beyond the last node in contact, extrapolated from the last two
     nodes but not past the first free node. Near a smooth contact edge p ∝ √(e − x) (Hertz),
-    so the geometric edge is found well inside an element.
+    so the geometric edge is found well inside an element. An outermost node with less
+    pressure than its neighbour, where the p² line through the two nodes inside it reaches
+    zero before the node, only grazes the surface (node-to-surface contact: its nodal force
+    does not stand for its tributary length); the edge then comes from the nodes inside it.
 
     Examples
     --------
@@ -190,9 +238,41 @@ def contact_width(position, pressure, threshold_low=0.0, threshold_high=0.0):
     hi = peak
     while hi + 1 < len(p) and p[hi + 1] > threshold_high:
         hi += 1
+    # a grazing edge node: its nodal contact force does not stand for its tributary length
+    # (a node just touching the surface); then the edge comes from the nodes inside it
+    lo, p = _skip_grazing(x, p, lo, hi, -1, threshold_low)
+    hi, p = _skip_grazing(x, p, hi, lo, +1, threshold_high)
     e_lo = _edge(x, p, lo, -1, threshold_low)
     e_hi = _edge(x, p, hi, +1, threshold_high)
     return float(e_hi - e_lo), float(e_lo), float(e_hi)
+
+
+def contact_zones(in_contact) -> list[np.ndarray]:
+    """Runs of consecutive loop positions in contact (the loop is closed).
+
+    Examples
+    --------
+    >>> [z.tolist() for z in contact_zones(np.array([1, 1, 0, 0, 1, 0, 1], bool))]
+    [[4], [6, 0, 1]]
+    """
+    inc = np.asarray(in_contact, dtype=bool)
+    n = len(inc)
+    if not inc.any():
+        return []
+    if inc.all():
+        return [np.arange(n)]
+    start = int(np.nonzero(~inc)[0][0])  # a free node: runs do not wrap around it
+    order = (start + 1 + np.arange(n)) % n
+    zones, run = [], []
+    for k in order:
+        if inc[k]:
+            run.append(k)
+        elif run:
+            zones.append(np.array(run))
+            run = []
+    if run:
+        zones.append(np.array(run))
+    return zones
 
 
 def _surface(model, name) -> SurfaceResult:
@@ -203,12 +283,28 @@ def _surface(model, name) -> SurfaceResult:
     total = float(np.sum(f))
     inc = f > 0
     pc = model.contact_pressure(name)
-    near = inc | np.roll(inc, 1) | np.roll(inc, -1)  # contact nodes and their free neighbours
-    order = np.argsort(x[near, along])
-    pos_all = x[near, along][order]
-    p_all = pc[near][order]
-    width, lo, hi = contact_width(pos_all, p_all) if np.any(inc) \
-        else (0.0, float("nan"), float("nan"))
+    n = len(inc)
+    widths, edges, positions, pressures = [], [], [], []
+    for zone in contact_zones(inc):
+        nodes = np.concatenate([[(zone[0] - 1) % n], zone, [(zone[-1] + 1) % n]])
+        nodes = np.unique(nodes)
+        order = np.argsort(x[nodes, along])
+        pos, p = x[nodes, along][order], pc[nodes][order]
+        w, lo, hi = contact_width(pos, p)
+        widths.append(w)
+        edges += [lo, hi]
+        keep = p > 0
+        positions.append(pos[keep])
+        pressures.append(p[keep])
+    if widths:
+        pos_all = np.concatenate(positions)
+        p_all = np.concatenate(pressures)
+        order = np.argsort(pos_all)
+        pos_all, p_all = pos_all[order], p_all[order]
+        width, lo, hi = float(np.sum(widths)), float(np.min(edges)), float(np.max(edges))
+    else:
+        pos_all = p_all = np.zeros(0)
+        width, lo, hi = 0.0, float("nan"), float("nan")
     if along == 0:
         cp = model.centerpoints[name]
         radius = float(model.mesh.points[cp, 1] + model.field[0].values[cp, 1])
@@ -216,9 +312,44 @@ def _surface(model, name) -> SurfaceResult:
         radius = float(np.average(x[inc, 1], weights=f[inc])) if np.any(inc) else float("nan")
     circ = model.circumference(radius) if np.isfinite(radius) else 1.0
     p_mean = total / (circ * width) if width > 0 else 0.0
-    keep = p_all > 0
-    return SurfaceResult(name, total, width, float(p_all.max()) if np.any(inc) else 0.0, p_mean,
-                         pos_all[keep], p_all[keep], radius, lo, hi)
+    return SurfaceResult(name, total, width, float(p_all.max()) if len(p_all) else 0.0, p_mean,
+                         pos_all, p_all, radius, lo, hi, len(widths),
+                         model.tangential_reaction(name),
+                         sorted(zip(edges[0::2], edges[1::2])))
+
+
+def pressure_profile(surface: SurfaceResult, positions) -> np.ndarray:
+    """Contact pressure [Pa] of a surface at given positions along it [m]: linear between the
+    contact nodes of a zone, falling linearly to zero at the zone's edges, zero outside the
+    contact zones.
+
+    Examples
+    --------
+    >>> s = SurfaceResult("sealing_surface", 1.0, 0.2, 2.0, 1.0, np.array([0.0, 0.1]),
+    ...                   np.array([2.0, 1.0]), 0.01, -0.05, 0.15, 1,
+    ...                   zone_edges=[(-0.05, 0.15)])
+    >>> pressure_profile(s, [-0.1, -0.025, 0.05, 0.2]).tolist()
+    [0.0, 1.0, 1.5, 0.0]
+    """
+    grid = np.asarray(positions, dtype=float)
+    out = np.zeros_like(grid)
+    for lo, hi in surface.zone_edges:
+        inside = (surface.position >= lo) & (surface.position <= hi)
+        z = np.concatenate([[lo], surface.position[inside], [hi]])
+        p = np.concatenate([[0.0], surface.pressure[inside], [0.0]])
+        on = (grid >= lo) & (grid <= hi)
+        out[on] = np.interp(grid[on], z, p)
+    return out
+
+
+def _reaction(model, name) -> np.ndarray:
+    """Force (axial, radial) [N] of a rigid line on the seal: minus the contact item's
+    residual on the seal nodes = its residual on the line's reference point."""
+    force = model.contacts[name].results.force
+    if force is None:
+        return np.zeros(2)
+    cp = model.centerpoints[name]
+    return np.asarray(force[2 * cp:2 * cp + 2].toarray()).ravel()
 
 
 def _hoop_force(model) -> float:
@@ -248,9 +379,24 @@ def extract(model) -> StateResult:
     seal = surfaces["sealing_surface"]
     fp = model.pressure.force()  # (seg, node, comp)
     fluid = (float(fp[..., 0].sum()), float(fp[..., 1].sum()))
-    # resultant of the contact forces on the seal (signed, along the normals)
-    axial = fluid[0] + sum(s.force * model.normals[n][0] for n, s in surfaces.items())
-    radial = fluid[1] + sum(s.force * model.normals[n][1] for n, s in surfaces.items())
+    # resultant of the contact forces on the seal (normal and friction): the reactions on
+    # the rigid lines' reference points; the garter spring pulls the seal inwards
+    reactions = [_reaction(model, n) for n in surfaces]
+    axial = fluid[0] + sum(r[0] for r in reactions)
+    radial = fluid[1] + sum(r[1] for r in reactions)
+    spring = model.spring.radial_force() if model.spring is not None else 0.0
+    radial -= spring
+    if model.axial_hold is not None:
+        # the symmetry hold of a gland without walls is a support too
+        hold = np.asarray(model.axial_hold.results.force.toarray()).ravel()
+        axial -= float(hold[0::2].sum())
+    if len(model.bonded):
+        # the metal case holds the bonded edges: its reaction is the residual of all items
+        # there (internal minus the other external forces; the case is not an item)
+        total = sum(np.asarray(item.results.force.toarray()).ravel() for item in model.items
+                    if getattr(item.results, "force", None) is not None)
+        axial += float(total[2 * model.bonded].sum())
+        radial += float(total[2 * model.bonded + 1].sum())
     hoop = _hoop_force(model)
     scale = max(seal.force, 1e-30)
     pen = 0.0
@@ -270,8 +416,12 @@ def extract(model) -> StateResult:
         hoop_force=hoop, fluid_force=fluid, max_penetration=pen,
         wetted_length=model.pressure.wetted_length(),
         rolling_moment=model.rolling.moment() if model.rolling is not None else 0.0,
+        spring_force=spring,
         deformed_points=model.seal_mesh.points + u, cells=model.seal_mesh.cells,
         von_mises=_von_mises(model), lines=[ln for ln in lines if ln.name in surfaces],
+        bonded_points=(model.seal_mesh.points + u)[model.bonded],
+        spring_points=None if model.spring is None else
+        (model.seal_mesh.points + u)[model.seal_mesh.node_sets["spring"]],
     )
 
 

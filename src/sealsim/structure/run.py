@@ -1,4 +1,5 @@
-"""Thin orchestration: case → assembly, material, mesh, model → load path → results.
+"""Thin orchestration: case → model (:mod:`.build`) → load path → results and result folders;
+``structure map`` through :mod:`.mapping`.
 
 Like pvlib's ModelChain it only composes the pieces of :mod:`sealsim.structure`; each of them
 can be used on its own.
@@ -11,153 +12,12 @@ import warnings
 from dataclasses import dataclass, field
 
 from sealsim.errors import InputError
-from sealsim.structure.case import StructureCase
-from sealsim.structure.geometry import Gland, ORing, SealAssembly
-from sealsim.structure.material import material_from_elastomer, thermal_volume_ratio
-from sealsim.structure.mesh import mesh_section
+from sealsim.structure.build import build_model, describe_seal, load_steps
+from sealsim.structure.case import StructureCase, load_structure_cases
 from sealsim.structure.model import SealModel
-from sealsim.structure.solver import LoadStep, solve
+from sealsim.structure.solver import solve
 
-__all__ = [
-    "RunResult",
-    "build_assembly",
-    "build_material",
-    "build_model",
-    "load_steps",
-    "run_case",
-]
-
-
-def build_assembly(case: StructureCase) -> SealAssembly:
-    """Seal and gland of a case (InputError for impossible geometry)."""
-    ring = ORing(case.seal.cord_diameter, case.seal.inner_diameter)
-    gland = Gland(case.gland.arrangement, case.gland.sealing_diameter, case.gland.groove_width)
-    assembly = SealAssembly(ring, gland, case.gland.inner_expansion, case.gland.outer_expansion,
-                            case.load.installation_temperature)
-    _check_placement(assembly)
-    return assembly
-
-
-def _check_placement(a: SealAssembly) -> None:
-    d = a.seal.cord_diameter
-    rs = a.gland.sealing_radius
-    r_free = a.free_sealing_side_radius
-    # the free ring must sit roughly on the sealing surface (stretch/compression < 15 %)
-    strain = (rs - r_free) / r_free
-    if abs(strain) > 0.15:
-        kind = "inner" if a.gland.side < 0 else "outer"
-        raise InputError(
-            f"seal.inner_diameter: the free O-ring's {kind} diameter {2 * r_free * 1e3:g} mm "
-            f"would be {'stretched' if strain > 0 else 'compressed'} by {abs(strain) * 100:.0f} % "
-            f"onto the sealing diameter {2 * rs * 1e3:g} mm; allowed is up to 15 %")
-    if a.gland.side > 0 and rs - d <= 0:
-        raise InputError("gland.sealing_diameter: the bore is too small for the O-ring cord")
-
-
-def build_material(case: StructureCase, *, equilibrium: bool = False):
-    """Seal material of a case; ``equilibrium`` gives the relaxed hyperelastic variant."""
-    from sealsim.properties.elastomers import get_elastomer
-
-    spec = case.material
-    elastomer = get_elastomer(spec.elastomer)
-    overrides = {k: getattr(spec, k) for k in ("c10", "c01", "bulk_modulus", "thermal_expansion")
-                 if getattr(spec, k) is not None}
-    if spec.hardness_shore_a is not None:
-        overrides.update(_hardness_scaled(elastomer, spec))
-    if overrides:
-        import dataclasses
-
-        try:
-            elastomer = dataclasses.replace(elastomer, **overrides)
-        except InputError as exc:
-            raise InputError(f"material: {exc}") from None
-    t0 = case.load.installation_temperature
-    material = material_from_elastomer(elastomer, spec.model, reference_temperature=t0,
-                                       temperature_scaling=spec.temperature_scaling)
-    if equilibrium:
-        material = material.equilibrium()
-    return material
-
-
-def _hardness_scaled(elastomer, spec) -> dict:
-    """Constants of a compound of another Shore A hardness: the catalogue's C10, C01 (and
-    Prony moduli) times E(S)/E(S_catalogue) of Gent's relation."""
-    from sealsim.properties.elastomers import shore_a_young_modulus
-
-    if spec.c10 is not None or spec.c01 is not None:
-        raise InputError("material: give either hardness_shore_a or c10/c01, not both "
-                         "(the hardness scales the catalogue constants)")
-    if elastomer.hardness_shore_a is None:
-        raise InputError(f"material.hardness_shore_a: {elastomer.name} has no catalogue "
-                         "hardness to scale from; give c10 and c01 instead")
-    scale = shore_a_young_modulus(spec.hardness_shore_a) / \
-        shore_a_young_modulus(elastomer.hardness_shore_a)
-    scaled = {"c10": elastomer.c10 * scale, "c01": elastomer.c01 * scale,
-              "hardness_shore_a": spec.hardness_shore_a}
-    if elastomer.prony is not None:
-        e_inf, e_i, tau_i = elastomer.prony
-        scaled["prony"] = (e_inf * scale, tuple(e * scale for e in e_i), tau_i)
-    return scaled
-
-
-def check_temperatures(case: StructureCase, temperatures) -> None:
-    """InputError for temperatures the material cannot be evaluated at."""
-    from sealsim.properties.elastomers import get_elastomer
-
-    e = get_elastomer(case.material.elastomer)
-    lo, hi = e.allowed_range
-    for t in temperatures:
-        if not lo <= t <= hi:
-            raise InputError(
-                f"temperature {t - 273.15:g} degC is outside the range of {e.name}: "
-                f"{lo - 273.15:g} ... {hi - 273.15:g} degC (T_g - 100 K ... service max + 50 K)")
-
-
-def build_model(case: StructureCase, installation_squeeze: float, *, material=None,
-                squeezes=(), temperatures=()) -> SealModel:
-    """Assembly, mesh and FE model for a case (geometry checks for the given loads)."""
-    assembly = build_assembly(case)
-    assembly.check_squeeze(installation_squeeze, "load.squeeze")
-    if material is None:
-        material = build_material(case)
-    alpha = material.thermal_expansion
-    temps = list(temperatures) or [case.load.installation_temperature]
-    check_temperatures(case, temps)
-    for s in [installation_squeeze, *squeezes]:
-        assembly.check_squeeze(s, "load.squeeze")
-        j = max(thermal_volume_ratio(t, case.load.installation_temperature, alpha) for t in temps)
-        assembly.check_fill(s, j)
-    m = case.mesh
-    kwargs = {k: getattr(m, k) for k in ("n_arc", "n_wall", "n_radial") if getattr(m, k)}
-    mesh = mesh_section(assembly.seal, assembly.centre, m.level, **kwargs)
-    sv = case.solver
-    return SealModel(assembly, mesh, material, installation_squeeze=installation_squeeze,
-                     penalty=sv.penalty, positioning_pressure=sv.positioning_pressure,
-                     rolling_stiffness=sv.rolling_stiffness)
-
-
-def load_steps(case: StructureCase) -> list[LoadStep]:
-    """The load path of a case: installation, squeeze, pressure, temperature steps."""
-    ld = case.load
-    rec = "all" if ld.record_increments else "end"
-    steps = [LoadStep("installation", squeeze=ld.squeeze[0], increments=ld.squeeze_increments,
-                      duration=ld.installation_time, record=rec)]
-    if ld.hold_time > 0:
-        steps.append(LoadStep("hold", duration=ld.hold_time, increments=2, record=rec))
-    for s in ld.squeeze[1:]:
-        steps.append(LoadStep("squeeze", squeeze=s, increments=ld.squeeze_increments,
-                              duration=ld.installation_time, record=rec))
-    for p in ld.pressure:
-        steps.append(LoadStep("pressure", pressure=p, increments=ld.pressure_increments,
-                              duration=ld.pressure_time, record=rec))
-    previous = ld.installation_temperature
-    for t in ld.temperature:
-        steps.append(LoadStep("temperature", temperature=t,
-                              increments=ld.temperature_increments,
-                              duration=abs(t - previous) / ld.temperature_rate,
-                              record="all" if ld.record_increments else "end"))
-        previous = t
-    return steps
+__all__ = ["RunResult", "map_case_file", "run_case", "run_case_file"]
 
 
 @dataclass
@@ -183,7 +43,8 @@ def run_case(case: StructureCase, progress=None) -> RunResult:
     from sealsim.structure.results import extract
 
     ld = case.load
-    model = build_model(case, ld.squeeze[0], squeezes=ld.squeeze[1:],
+    model = build_model(case, None if ld.squeeze is None else ld.squeeze[0],
+                        squeezes=(ld.squeeze or [])[1:],
                         temperatures=[ld.installation_temperature, *ld.temperature])
     steps = load_steps(case)
     total = sum(s.increments if s.record == "all" else 1 for s in steps)
@@ -205,19 +66,13 @@ def run_case(case: StructureCase, progress=None) -> RunResult:
     return RunResult(states, model.ndofs, time.perf_counter() - t0, model)
 
 
-__all__ += ["check_temperatures"]
-
-
 # -- case files → result folders -------------------------------------------------------------------
 
 SUMMARY_KEYS = ("F_N_N", "F_N_per_length_N_per_mm", "b_mm", "p_max_MPa", "p_mean_MPa")
 
 
 def _load_cases(path):
-    from sealsim.cases import expand_variants, load_toml
-
-    data = load_toml(path)
-    return expand_variants(StructureCase, data, source=str(path))
+    return load_structure_cases(path)
 
 
 def _resolved_text(cases) -> str:
@@ -231,7 +86,8 @@ def run_case_file(path, out, force: bool = False, progress=None) -> dict:
     """``sealsim structure run``: solve every variant of a case file, write the result folder.
 
     Files (per variant in a sub-folder if the case has variants): ``result.csv`` (one row per
-    load state), ``profiles.csv`` (contact pressure profiles), ``summary.json``,
+    load state), ``profiles.csv`` (contact pressure profiles), ``increments.csv`` (every
+    converged increment: step, load fraction, Newton iterations, cutbacks), ``summary.json``,
     ``section_installed.png`` and ``section_final.png`` (deformed section with von Mises
     stress and contact pressure), ``states.png``; ``case_resolved.toml`` at the top.
 
@@ -263,12 +119,15 @@ def _write_variant(folder, prefix: str, name: str, case: StructureCase, result: 
     from sealsim.plotting.structure import plot_section, plot_states
     from sealsim.structure.results import profiles_frame, results_frame
 
+    import pandas as pd
+
     frame = results_frame(result.states)
     folder.write_csv(prefix + "result.csv", frame)
     folder.write_csv(prefix + "profiles.csv", profiles_frame(result.states))
-    title = case.title or f"{case.seal.cord_diameter * 1e3:g} mm O-ring, " \
-                          f"{case.gland.arrangement} seal, {case.material.elastomer}"
-    installed = len(case.load.squeeze) - 1 + (1 if case.load.hold_time > 0 else 0)
+    increments = pd.DataFrame(result.model.increment_log)
+    folder.write_csv(prefix + "increments.csv", increments)
+    title = case.title or describe_seal(case)
+    installed = len(case.load.squeeze or [0]) - 1 + (1 if case.load.hold_time > 0 else 0)
     if case.load.record_increments:
         installed = case.load.squeeze_increments - 1
     first = result.states[min(installed, len(result.states) - 1)] \
@@ -287,6 +146,10 @@ def _write_variant(folder, prefix: str, name: str, case: StructureCase, result: 
             max(abs(s.axial_imbalance), abs(s.radial_imbalance))
             for s in result.states)),
         "max_penetration_um": float(frame["max_penetration_um"].max()),
+        "increments": len(increments),
+        "newton_iterations": int(increments["newton_iterations"].sum()) if len(increments) else 0,
+        "cutbacks": int(increments["cutbacks"].sum()) if len(increments) else 0,
+        "max_rolling_moment_Nm": float(frame["rolling_moment_Nm"].abs().max()),
     })
 
 
@@ -294,12 +157,13 @@ def map_case_file(path, out, force: bool = False, progress=None, workers: int | 
     """``sealsim structure map``: characteristic map of a case (its ``[map]`` table).
 
     Writes ``map.nc`` (xarray/netCDF, SI units, the resolved case as attribute ``case``),
-    ``map.csv`` (flat table in engineering units), ``map.png`` and ``case_resolved.toml``.
+    ``map.csv`` (flat table in engineering units), ``map_profiles.csv`` (contact pressure
+    p(z) at every grid point), ``map.png``, ``map_profiles.png`` and ``case_resolved.toml``.
     Only cases without variants.
     """
     from sealsim.output import run_variants
-    from sealsim.plotting.structure import plot_map
-    from sealsim.structure.maps import compute_map
+    from sealsim.plotting.structure import plot_map, plot_map_profiles
+    from sealsim.structure.mapping import compute_map
 
     cases = _load_cases(path)
     if len(cases) != 1:
@@ -317,19 +181,32 @@ def map_case_file(path, out, force: bool = False, progress=None, workers: int | 
     def write(folder, results):
         ds = results["map"]
         folder.write_netcdf("map.nc", ds)
-        flat = ds.to_dataframe().reset_index()
+        flat = ds.drop_dims("position").to_dataframe().reset_index()
         table = flat.assign(
             squeeze=flat["squeeze"], pressure_bar=flat["pressure"] / 1e5,
             temperature_C=flat["temperature"] - 273.15, F_N_N=flat["F_N"],
             F_N_per_length_N_per_mm=flat["F_N_per_length"] / 1e3, b_mm=flat["b"] * 1e3,
             p_max_MPa=flat["p_max"] / 1e6, p_mean_MPa=flat["p_mean"] / 1e6,
-            F_groove_bottom_N=flat["F_groove_bottom"])[
+            F_groove_bottom_N=flat["F_groove_bottom"], contact_zones=flat["contact_zones"],
+            b_span_mm=flat["b_span"] * 1e3)[
             ["squeeze", "pressure_bar", "temperature_C", "F_N_N", "F_N_per_length_N_per_mm",
-             "b_mm", "p_max_MPa", "p_mean_MPa", "F_groove_bottom_N"]]
+             "b_mm", "p_max_MPa", "p_mean_MPa", "F_groove_bottom_N", "contact_zones",
+             "b_span_mm"]]
         folder.write_csv("map.csv", table)
+        prof = ds["contact_pressure"].to_dataframe().reset_index()
+        folder.write_csv("map_profiles.csv", prof.assign(
+            pressure_bar=prof["pressure"] / 1e5, temperature_C=prof["temperature"] - 273.15,
+            position_mm=prof["position"] * 1e3,
+            contact_pressure_MPa=prof["contact_pressure"] / 1e6)[
+            ["squeeze", "temperature_C", "pressure_bar", "position_mm",
+             "contact_pressure_MPa"]])
+        title = case.title or describe_seal(case)
         for i in range(ds.sizes["squeeze"]):
             name = "map.png" if ds.sizes["squeeze"] == 1 else f"map_squeeze{i}.png"
-            folder.savefig(name, plot_map(ds, i, title=case.title))
+            folder.savefig(name, plot_map(ds, i, title=title))
+            name = "map_profiles.png" if ds.sizes["squeeze"] == 1 \
+                else f"map_profiles_squeeze{i}.png"
+            folder.savefig(name, plot_map_profiles(ds, i, title=title))
         folder.write_text("case_resolved.toml", text)
 
     return run_variants({"map": case}, out, compute, write, force=force, inputs=[path])["map"]

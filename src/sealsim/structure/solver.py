@@ -15,6 +15,9 @@ ordering) kept for every sparsity pattern and only the numerical factorisation r
 without it scipy's SuperLU with the ordering of the symmetric pattern (the stiffness matrix is
 structurally symmetric and nearly symmetric: only the follower pressure is not); both give the
 reference solution (``spsolve``) to round-off.
+
+Every converged increment is logged in ``model.increment_log`` (step, load fraction,
+increment, Newton iterations, cutbacks before it).
 """
 
 from __future__ import annotations
@@ -312,19 +315,21 @@ def _solve_steps(model, steps, on_state, tol, maxiter, max_cutbacks, linear, rec
         dfrac = 1.0 / n
         smallest = dfrac * 0.5 ** max_cutbacks
         k = 0
+        cutbacks = 0
         while done < 1.0 - 1e-12:
             frac = min(done + dfrac, 1.0)
             state = start.interpolate(target, frac)
             cp = model.checkpoint()
             material_cp = _material_checkpoint(model.material)
             try:
-                _increment(model, state, tol, maxiter, linear)
+                iterations = _increment(model, state, tol, maxiter, linear)
             except (fem.NewtonConvergenceError, ArithmeticError, np.linalg.LinAlgError,
                     RuntimeError, ValueError) as exc:
                 model.restore(cp)
                 if material_cp is not None:
                     # the material's history (fictive temperature) of the failed attempt
                     model.material.restore(material_cp)
+                cutbacks += 1
                 if dfrac * 0.5 < smallest * (1 - 1e-9):
                     raise ConvergenceError(
                         f"the FE model did not converge in step {number + 1} "
@@ -336,6 +341,11 @@ def _solve_steps(model, steps, on_state, tol, maxiter, max_cutbacks, linear, rec
                     ) from None
                 dfrac *= 0.5
                 continue
+            model.increment_log.append({
+                "step": number + 1, "step_name": step.name, "load_fraction": frac,
+                "increment": frac - done, "newton_iterations": iterations,
+                "cutbacks": cutbacks})
+            cutbacks = 0
             done = frac
             k += 1
             on_grid = abs(done * n - round(done * n)) < 1e-9

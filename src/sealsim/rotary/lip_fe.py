@@ -1,0 +1,239 @@
+r"""Radial lip force and contact width of a DIN 3760 lip seal from axisymmetric FE.
+
+With ``[lip] force = "fe"`` a rotary case takes the lip force F_tip(T) (and with
+``contact_width = "fe"`` the contact width b(T)) from an FE model of its seal (:func:`sealsim.structure.profiles.radial_lip_profile`, the
+garter spring as a ring spring, the metal case rigid in the steel housing) instead of the
+constant 0.15 N/mm and 0.25 mm with Eq. (1) of :mod:`sealsim.rotary.lip`. One FE load path
+installs the lip at the installation temperature and then moves through the temperature
+grid; at every temperature
+
+* the rubber's Mooney–Rivlin constants follow the catalogue E(T) at the quasi-static
+  frequency :data:`~sealsim.rotary.lip.LIP_FORCE_FREQUENCY` (the relaxed modulus, the same
+  the constant model scales its rubber share with),
+* the rubber expands thermally (its free volume), the shaft and the housing with steel,
+* the garter spring's tension follows the lip radius (its steel rate does not change).
+
+So the lip force falls where the rubber softens and the interference shrinks, and stays up
+through the spring share -- the temperature dependence comes out of the FE instead of
+Eq. (1). Between grid temperatures F_tip and b are interpolated monotonically (PCHIP), outside
+the grid they are held at the end values. The table is cached under ``$SEALSIM_CACHE/lip_fe``
+keyed by the resolved structure case, like the FE maps of the pneumatic model.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import math
+import os
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Literal
+
+import numpy as np
+from pydantic import Field, field_validator
+
+from sealsim.cases import CaseModel, Q
+
+__all__ = ["LipForceTable", "LipSpec", "lip_force_table", "lip_structure_case"]
+
+CELSIUS_0 = 273.15
+Temperature = Q("temperature", gt=200.0, lt=500.0)
+
+DEFAULT_TEMPERATURES = tuple(CELSIUS_0 + t for t in (-20.0, 0.0, 20.0, 40.0, 60.0, 80.0, 100.0,
+                                                     120.0, 140.0))
+"""Temperature grid of the FE lip force table [K]: the service range of NBR lip seals."""
+
+
+class LipSpec(CaseModel):
+    """Where the lip force and contact width come from (``[lip]`` of a rotary case)."""
+
+    force: Literal["constant", "fe"] = Field("constant", description=(
+        "'constant': seal.radial_force with the spring share and E(T) (lip.py Eq. 1) and "
+        "seal.contact_width; 'fe': both from an FE model of the DIN 3760 lip"))
+    contact_width: Literal["constant", "fe"] = Field("constant", description=(
+        "'constant': seal.contact_width (a run-in lip, the width seed 000 validates with); "
+        "'fe': the FE contact width of the new lip"))
+    temperatures: list[Temperature] = Field(
+        default_factory=lambda: list(DEFAULT_TEMPERATURES), min_length=2, description=(
+            "temperature grid of the FE table"))
+    mesh: Literal["coarse", "medium", "fine"] = "coarse"
+    interference: Q("length", gt=0.0, le=3e-3) | None = Field(None, description=(
+        "radial interference of the moulded lip (default: the profile's)"))
+    flex_thickness: Q("length", gt=0.0, le=5e-3) | None = None
+    spring_rate: Q("stiffness", ge=0.0) | None = None
+    spring_tension: Q("force", ge=0.0) | None = None
+
+    @field_validator("temperatures")
+    @classmethod
+    def _ascending(cls, v):
+        if any(b <= a for a, b in zip(v, v[1:])):
+            raise ValueError("lip.temperatures must be strictly ascending")
+        return v
+
+
+def lip_structure_case(seal, lip: LipSpec, installation_temperature: float = 293.15):
+    """The structure case (:class:`~sealsim.structure.case.StructureCase`) of a rotary case's
+    seal: DIN 3760 radial lip on its shaft, the lip table's temperatures as the load path.
+
+    Parameters
+    ----------
+    seal : sealsim.rotary.case.Seal
+        The rotary case's seal (shaft diameter, outer diameter, width, material).
+    lip : LipSpec
+        FE settings.
+    installation_temperature : float
+        Temperature at which the seal is installed and its geometry holds [K].
+    """
+    from sealsim.cases import validate_case
+    from sealsim.rotary.lip import LIP_FORCE_FREQUENCY
+    from sealsim.structure.case import StructureCase
+
+    temps = [installation_temperature, *lip.temperatures]
+    # about 10 K per increment (the lip head slides on its face: larger ones need cutbacks)
+    increments = max(2, math.ceil(max(abs(b - a) for a, b in zip(temps, temps[1:])) / 10.0))
+    section = {"type": "radial_lip", "outer_diameter": seal.outer_diameter,
+               "width": seal.width}
+    for key in ("interference", "flex_thickness", "spring_rate", "spring_tension"):
+        if getattr(lip, key) is not None:
+            section[key] = getattr(lip, key)
+    data = {
+        "title": f"DIN 3760 lip seal {seal.shaft_diameter * 1e3:g} x "
+                 f"{seal.outer_diameter * 1e3:g} x {seal.width * 1e3:g}, {seal.material}",
+        "seal": section,
+        "gland": {"arrangement": "shaft", "sealing_diameter": seal.shaft_diameter},
+        "material": {"elastomer": seal.material, "temperature_scaling": "modulus",
+                     "modulus_frequency": LIP_FORCE_FREQUENCY},
+        "mesh": {"level": lip.mesh},
+        "load": {"installation_temperature": installation_temperature,
+                 "squeeze_increments": 8, "temperature": list(lip.temperatures),
+                 "temperature_increments": increments},
+    }
+    return validate_case(StructureCase, data, "the FE lip model of the rotary case",
+                         require_units=False)
+
+
+@dataclass(frozen=True)
+class LipForceTable:
+    """F_tip(T), b(T) and the spring share from the FE of a lip seal (SI units).
+
+    Parameters
+    ----------
+    temperature : numpy.ndarray
+        Grid [K], ascending.
+    force : numpy.ndarray
+        Radial lip force (360°) [N].
+    contact_width : numpy.ndarray
+        Contact width [m].
+    spring_force : numpy.ndarray
+        Radial force of the garter spring [N].
+    p_max : numpy.ndarray
+        Peak contact pressure [Pa].
+
+    Examples
+    --------
+    >>> t = LipForceTable(np.array([293.15, 373.15]), np.array([30.0, 25.0]),
+    ...                   np.array([2e-4, 1.8e-4]), np.array([15.0, 15.2]), np.array([1e6, 8e5]))
+    >>> round(float(t.force_at(333.15)), 3), round(float(t.force_at(400.0)), 3)
+    (27.5, 25.0)
+    """
+
+    temperature: np.ndarray
+    force: np.ndarray
+    contact_width: np.ndarray
+    spring_force: np.ndarray
+    p_max: np.ndarray
+
+    def _interp(self, values, temperature):
+        from scipy.interpolate import PchipInterpolator
+
+        t = np.clip(np.asarray(temperature, dtype=float), self.temperature[0],
+                    self.temperature[-1])
+        return PchipInterpolator(self.temperature, values)(t)
+
+    def force_at(self, temperature):
+        """F_tip [N] at T [K] (held at the end values outside the grid)."""
+        return self._interp(self.force, temperature)
+
+    def contact_width_at(self, temperature):
+        """b [m] at T [K] (held at the end values outside the grid)."""
+        return self._interp(self.contact_width, temperature)
+
+    def spring_share(self):
+        """Spring share of the lip force at each grid temperature [-]."""
+        return self.spring_force / self.force
+
+    def frame(self):
+        """pandas DataFrame in engineering units (``lip_fe.csv``)."""
+        import pandas as pd
+
+        return pd.DataFrame({
+            "temperature_C": self.temperature - CELSIUS_0, "F_tip_N": self.force,
+            "F_tip_per_length_N_per_mm": self.force / (np.pi * self._diameter) / 1e3
+            if self._diameter else np.nan,
+            "contact_width_mm": self.contact_width * 1e3, "F_spring_N": self.spring_force,
+            "spring_share": self.spring_share(), "p_max_MPa": self.p_max / 1e6})
+
+    _diameter: float = 0.0
+
+
+def _cache_dir() -> Path:
+    root = os.environ.get("SEALSIM_CACHE")
+    if root:
+        return Path(root) / "lip_fe"
+    xdg = os.environ.get("XDG_CACHE_HOME")
+    return (Path(xdg) if xdg else Path.home() / ".cache") / "sealsim" / "lip_fe"
+
+
+def lip_force_table(seal, lip: LipSpec, installation_temperature: float = 293.15, *,
+                    cache: bool = True) -> LipForceTable:
+    """Run (or read from the cache) the FE lip force table of a rotary case's seal.
+
+    Parameters
+    ----------
+    seal : sealsim.rotary.case.Seal
+        The seal (shaft diameter, outer diameter, width, material).
+    lip : LipSpec
+        FE settings (temperature grid, mesh, optional geometry and spring overrides).
+    installation_temperature : float
+        Installation temperature [K].
+    cache : bool
+        Read and write the cache (``$SEALSIM_CACHE/lip_fe``).
+
+    Returns
+    -------
+    LipForceTable
+    """
+    import pandas as pd
+
+    from sealsim.cases import dump_case_toml
+    from sealsim.output import atomic_write_bytes
+
+    case = lip_structure_case(seal, lip, installation_temperature)
+    text = dump_case_toml(case, header="FE lip model of a rotary case")
+    from sealsim.structure.fingerprint import model_fingerprint
+
+    # the FE model's fingerprint too: a changed FE model must not read an old table
+    digest = hashlib.sha256((text + model_fingerprint()).encode("utf-8")).hexdigest()[:16]
+    target = _cache_dir() / f"lip-{digest}.csv"
+    if cache and target.is_file():
+        frame = pd.read_csv(target)
+    else:
+        from sealsim.structure.run import run_case
+
+        states = run_case(case).states
+        # the first state is the installation at the installation temperature; the others
+        # are the grid temperatures in order
+        grid = states[1:]
+        frame = pd.DataFrame({
+            "temperature_K": [s.temperature for s in grid],
+            "force_N": [s.F_N for s in grid],
+            "contact_width_m": [s.b for s in grid],
+            "spring_force_N": [s.spring_force for s in grid],
+            "p_max_Pa": [s.p_max for s in grid]})
+        if cache:
+            target.parent.mkdir(parents=True, exist_ok=True)
+            atomic_write_bytes(target, frame.to_csv(index=False).encode("utf-8"))
+    return LipForceTable(frame["temperature_K"].to_numpy(), frame["force_N"].to_numpy(),
+                         frame["contact_width_m"].to_numpy(),
+                         frame["spring_force_N"].to_numpy(), frame["p_max_Pa"].to_numpy(),
+                         _diameter=float(seal.shaft_diameter))

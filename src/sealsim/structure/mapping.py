@@ -1,0 +1,188 @@
+r"""Computing characteristic maps of any seal profile: F_N, b and the contact pressure
+profile over pressure × temperature (× squeeze).
+
+:func:`compute_map` runs one FE load path per (squeeze, temperature) -- installation to the
+squeeze at the installation temperature, temperature change at the positioning pressure, then
+the pressure sweep over the grid, recording every grid pressure -- in a process pool. The
+material of a map is the *equilibrium* (fully relaxed) one: a thermo-viscoelastic case is
+mapped with its long-time hyperelastic constants. The dataset layout is described in
+:mod:`.maps` (which reads maps without importing the FE).
+"""
+
+from __future__ import annotations
+
+import concurrent.futures as cf
+import warnings
+from collections.abc import Callable
+
+import numpy as np
+import xarray as xr
+
+from sealsim.errors import InputError
+from sealsim.structure.build import (
+    build_assembly,
+    build_material,
+    build_model,
+    check_temperatures,
+    installation_squeeze,
+)
+from sealsim.structure.case import StructureCase
+from sealsim.structure.maps import MAP_COORDS, MAP_VARIABLES, PROFILE_VARIABLES
+from sealsim.structure.results import extract, pressure_profile
+from sealsim.structure.solver import LoadStep, solve
+
+__all__ = ["compute_map", "profile_positions"]
+
+
+def profile_positions(case: StructureCase, assembly=None) -> np.ndarray:
+    """Axial positions [m] where a map stores the contact pressure profile: evenly across the
+    groove (a shaft seal: across its width around the lip edge)."""
+    assembly = assembly or build_assembly(case)
+    n = case.map.profile_points if case.map is not None else 41
+    if case.gland.arrangement == "shaft":
+        lo, hi = assembly.seal.axial_range
+        half = 0.5 * (hi - lo)
+        return np.linspace(-0.5 * half, 0.5 * half, n)
+    half = 0.5 * assembly.gland.groove_width
+    return np.linspace(-half, half, n)
+
+
+def _map_task(case_data: dict, squeeze: float | None, temperature: float,
+              positions: np.ndarray) -> dict:
+    """One FE load path: install to ``squeeze``, change to ``temperature``, sweep the pressures."""
+    case = StructureCase.model_validate(case_data)
+    spec = case.map
+    material = build_material(case, equilibrium=True)
+    model = build_model(case, squeeze, material=material,
+                        temperatures=[case.load.installation_temperature, temperature])
+    steps = [LoadStep("installation", squeeze=model.installation_squeeze,
+                      increments=spec.squeeze_increments, record="none"),
+             LoadStep("temperature", temperature=temperature,
+                      increments=spec.temperature_increments, record="none")]
+    steps += [LoadStep("pressure", pressure=p, increments=spec.pressure_increments, record="end")
+              for p in spec.pressure]
+    sv = case.solver
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", category=UserWarning)
+        states = solve(model, steps, on_state=extract, tol=sv.tolerance,
+                       maxiter=sv.max_iterations, max_cutbacks=sv.max_cutbacks)
+    seal = [s.surfaces["sealing_surface"] for s in states]
+    return {
+        "F_N": [s.F_N for s in states],
+        "F_N_per_length": [s.F_N_per_length for s in states],
+        "b": [s.b for s in states],
+        "p_max": [s.p_max for s in states],
+        "p_mean": [s.p_mean for s in states],
+        "F_groove_bottom": [s.surfaces["groove_bottom"].force
+                            if "groove_bottom" in s.surfaces else 0.0 for s in states],
+        "contact_zones": [float(s.zones) for s in seal],
+        "b_span": [s.span for s in seal],
+        "contact_pressure": [pressure_profile(s, positions) for s in seal],
+        "ndofs": model.ndofs,
+        "increments": len(model.increment_log),
+        "cutbacks": int(sum(r["cutbacks"] for r in model.increment_log)),
+    }
+
+
+def compute_map(case: StructureCase, *, workers: int | None = None,
+                progress: Callable[[int, int], None] | None = None,
+                case_text: str = "") -> xr.Dataset:
+    """Compute the characteristic map of a case with a ``[map]`` table.
+
+    Parameters
+    ----------
+    case : StructureCase
+        Validated case (``case.map`` must be given).
+    workers : int, optional
+        Processes (default ``case.map.workers``); 1 runs in this process.
+    progress : callable, optional
+        ``progress(done, total)`` after each finished (squeeze, temperature) path.
+    case_text : str
+        Resolved case (TOML) stored as the ``case`` attribute.
+
+    Returns
+    -------
+    xarray.Dataset
+        See :mod:`.maps`; attributes also hold the dofs, the increments and the cutbacks.
+    """
+    from sealsim import __version__
+
+    if case.map is None:
+        raise InputError("the case has no [map] table: give map.pressure and map.temperature")
+    spec = case.map
+    assembly = build_assembly(case)
+    squeezes = spec.squeeze or [installation_squeeze(case, assembly)
+                                if case.load.squeeze is None else case.load.squeeze[-1]]
+    for s in squeezes:
+        assembly.check_squeeze(s, "map.squeeze")
+    check_temperatures(case, spec.temperature)
+    positions = profile_positions(case, assembly)
+    tasks = [(s, t) for s in squeezes for t in spec.temperature]
+    data = case.model_dump(mode="json")
+    shape = (len(squeezes), len(spec.temperature), len(spec.pressure))
+    scalars = [*MAP_VARIABLES, *PROFILE_VARIABLES]
+    arrays = {v: np.full(shape, np.nan) for v in scalars}
+    profile = np.full(shape + (len(positions),), np.nan)
+    totals = {"ndofs": 0, "increments": 0, "cutbacks": 0}
+    n_workers = max(1, min(workers or spec.workers, len(tasks)))
+
+    def store(key, out):
+        i, j = squeezes.index(key[0]), spec.temperature.index(key[1])
+        for v in scalars:
+            arrays[v][i, j, :] = out[v]
+        profile[i, j] = np.asarray(out["contact_pressure"])
+        totals["ndofs"] = out["ndofs"]
+        totals["increments"] += out["increments"]
+        totals["cutbacks"] += out["cutbacks"]
+
+    done = 0
+    if n_workers == 1:
+        for key in tasks:
+            store(key, _map_task(data, *key, positions))
+            done += 1
+            if progress:
+                progress(done, len(tasks))
+    else:
+        with cf.ProcessPoolExecutor(max_workers=n_workers) as pool:
+            futures = {pool.submit(_map_task, data, *key, positions): key for key in tasks}
+            try:
+                for fut in cf.as_completed(futures):
+                    store(futures[fut], fut.result())
+                    done += 1
+                    if progress:
+                        progress(done, len(tasks))
+            except BaseException:
+                for f in futures:
+                    f.cancel()
+                raise
+    coords = {"squeeze": np.asarray(squeezes, float),
+              "temperature": np.asarray(spec.temperature, float),
+              "pressure": np.asarray(spec.pressure, float)}
+    dims = ("squeeze", "temperature", "pressure")
+    variables = {v: (dims, arrays[v], {"units": unit, "long_name": text})
+                 for v, (unit, text) in {**MAP_VARIABLES, **PROFILE_VARIABLES}.items()}
+    variables["contact_pressure"] = (
+        dims + ("position",), profile,
+        {"units": "Pa", "long_name": "contact pressure on the sealing surface"})
+    all_coords = {d: (d, coords[d], {"units": MAP_COORDS[d][0], "long_name": MAP_COORDS[d][1]})
+                  for d in coords}
+    all_coords["position"] = ("position", positions,
+                              {"units": "m", "long_name": "axial position on the sealing "
+                                                          "surface (gland centre at 0)"})
+    return xr.Dataset(
+        variables, coords=all_coords,
+        attrs={
+            "title": "sealsim characteristic map of a seal (axisymmetric FE, FElupe)",
+            "case": case_text,
+            "sealsim_version": __version__,
+            "seal_type": case.seal.type,
+            "elastomer": case.material.elastomer or "custom Mooney-Rivlin",
+            "material_model": "hyperelastic (equilibrium constants)",
+            "dofs": int(totals["ndofs"]),
+            "increments": int(totals["increments"]),
+            "cutbacks": int(totals["cutbacks"]),
+            "conventions": "forces for the full circumference; pressure is the gauge pressure "
+                           "on the upstream side; temperature in K; squeeze = 1 - h/h0 (h0 the "
+                           "free radial height of the section)",
+        },
+    )

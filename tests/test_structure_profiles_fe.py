@@ -1,0 +1,199 @@
+"""FE of seal profiles: X-ring against O-ring, U-cup activation, the DIN 3760 lip force from
+FE in the rotary model, an X-ring map in a pneumatic run, the profile examples through the
+CLI (coarse meshes, short load paths)."""
+
+import json
+import tomllib
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+import tomli_w
+from typer.testing import CliRunner
+
+from sealsim.cases import apply_overrides, validate_case
+from sealsim.cli.structure import structure_app
+from sealsim.structure.case import StructureCase
+from sealsim.structure.run import run_case
+
+ROOT = Path(__file__).resolve().parents[1]
+RUNNER = CliRunner()
+
+
+def case(data):
+    return validate_case(StructureCase, data)
+
+
+def quiet_run(c):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", UserWarning)
+        return run_case(c).states
+
+
+def test_xring_against_oring_of_the_same_size():
+    """X-ring and O-ring 20 x 4 in the same gland at 10 % squeeze, 0 and 2 bar.
+
+    References: the X-ring touches each surface with two lobes (its purpose); photoelastic
+    measurements of X-rings at 20 % squeeze found considerably higher contact stresses than
+    for O-rings (Contact behavior analysis of X-ring under internal pressure and uniform
+    squeeze rate using photoelastic experimental hybrid method, J. Mech. Sci. Technol.);
+    catalogues attribute the lower friction to the smaller contact area. The FE agrees on all
+    three at low pressure. Its F_N per squeeze is higher than the O-ring's (the square
+    envelope holds 8 % more rubber): the direction the issue expected is not reproduced; the
+    README discusses it.
+    """
+    base = {"gland": {"sealing_diameter": "20 mm", "groove_width": "5.4 mm"},
+            "mesh": {"level": "coarse"},
+            "load": {"squeeze": [0.10], "squeeze_increments": 3,
+                     "pressure": ["0 bar", "2 bar"], "pressure_increments": 1}}
+    out = {}
+    for kind in ("oring", "xring"):
+        out[kind] = quiet_run(case({**base, "seal": {"type": kind, "cord_diameter": "4 mm",
+                                                     "inner_diameter": "20 mm"}}))
+    o, x = out["oring"][1], out["xring"][1]  # installed, 0 bar
+    assert x.surfaces["sealing_surface"].zones == 2 and o.surfaces["sealing_surface"].zones == 1
+    assert x.b < 0.9 * o.b
+    assert x.p_max > 1.2 * o.p_max
+    assert x.F_N > o.F_N  # the finding, see the docstring
+    for states in out.values():  # both seal: contact pressure above the fluid pressure
+        assert states[-1].p_max > states[-1].pressure
+
+
+def test_ucup_is_pressure_activated():
+    """U-cup rod seal 20 mm: the pressure fills the groove between the lips and presses the
+    dynamic lip on the rod. Reference: a pressure-energised lip seals when its peak contact
+    pressure exceeds the fluid pressure (Müller & Nau, Fluid Sealing Technology, 1998,
+    ch. 'lip seals'); F_N then grows with p at least by p times the projected lip length."""
+    c = case(apply_overrides(tomllib.loads((ROOT / "examples/structure/ucup_rod.toml")
+                                           .read_text()),
+                             {"mesh": {"level": "coarse"},
+                              "load": {"squeeze_increments": 3,
+                                       "pressure": ["0 bar", "4 bar", "8 bar"]}}))
+    states = quiet_run(c)[1:]
+    for s in states[1:]:
+        assert s.p_max > s.pressure
+    dfdp = (states[-1].F_N - states[0].F_N) / (states[-1].pressure - states[0].pressure)
+    # the lip (about 2.5 mm of the 5 mm seal) is pressed by p over its length on the 20 mm rod
+    assert dfdp > np.pi * 20e-3 * 1.0e-3
+
+
+def test_lip_force_from_fe_and_the_speed_cycle(tmp_path, monkeypatch):
+    """DIN 3760 80 x 101 x 9 NBR lip on an 80 mm shaft at 20 and 100 °C (coarse mesh).
+
+    References: the garter spring's radial force is 2π T (thin ring); the rubber share of the
+    lip force falls with the rubber's quasi-static modulus E(T) (lip.py Eq. 1) -- in the FE
+    faster than E, because the warm rubber ring also expands off the shaft (its interference
+    shrinks). Then the speed cycle example runs with lip.force = "fe" (shortened)."""
+    from sealsim.properties.elastomers import get_elastomer
+    from sealsim.rotary.lip import LIP_FORCE_FREQUENCY
+    from sealsim.rotary.lip_fe import LipSpec, lip_force_table
+    from sealsim.rotary.study import load_rotary_case
+
+    monkeypatch.setenv("SEALSIM_CACHE", str(tmp_path / "cache"))
+    example = ROOT / "examples/rotary/speed_cycle_fe.toml"
+    data = tomllib.loads(example.read_text())
+    lip = {"temperatures": ["20 degC", "100 degC"], "mesh": "coarse"}
+    data = apply_overrides(data, {"lip": lip, "duty": {"steps": [
+        {"speed": "100 rpm", "duration": "1 min"}, {"speed": "1000 rpm", "duration": "2 min"}]}})
+    path = tmp_path / "speed_cycle_fe.toml"
+    path.write_text(tomli_w.dumps(data))
+    cases = load_rotary_case(path)
+    seal = cases["fe"].seal
+    table = lip_force_table(seal, cases["fe"].lip, seal.radial_force_temperature)
+    t = table.frame()
+    assert np.all(np.diff(t["F_tip_N"]) < 0)  # the lip force falls with temperature
+    rubber = t["F_tip_N"] - t["F_spring_N"]
+    assert np.all(rubber > 0) and np.all(np.diff(rubber) < 0)
+    e = get_elastomer("NBR")
+    e_ratio = e.modulus(373.15, LIP_FORCE_FREQUENCY) / e.modulus(293.15, LIP_FORCE_FREQUENCY)
+    assert rubber.iloc[-1] / rubber.iloc[0] < e_ratio
+    # the spring carries a growing share; the steel spring's force hardly changes
+    assert np.all(np.diff(t["spring_share"]) > 0)
+    assert t["F_spring_N"].max() / t["F_spring_N"].min() < 1.05
+    assert isinstance(cases["fe"].lip, LipSpec) and cases["constant"].lip.force == "constant"
+
+    from sealsim.cli import app
+
+    out = tmp_path / "out"
+    result = RUNNER.invoke(app, ["rotary", "run", str(path), "--out", str(out), "-q"])
+    assert result.exit_code == 0, result.output
+    assert (out / "lip_fe.csv").is_file() and (out / "lip_fe.png").is_file()
+    ts = pd.read_csv(out / "timeseries.csv")
+    fe = ts[ts["variant"] == "fe"]
+    # the simulation used the FE force at the contact temperature of the step before (the
+    # friction-thermal coupling is explicit, rotary/simulation.py)
+    expected = table.force_at(fe["T_contact_C"].to_numpy()[:-1] + 273.15)
+    assert np.allclose(fe["lip_force_N"].to_numpy()[1:], expected, rtol=2e-3)
+
+
+def test_xring_map_feeds_a_pneumatic_run(tmp_path):
+    """X-ring 12 x 2 rod seal: `sealsim structure map` (coarse, 2 x 2 grid) writes map.nc
+    with F_N, b and the contact pressure profile; the Ø32 cylinder example runs with it as
+    the rod seal's contact map."""
+    from sealsim.cli.pneumatic import pneumatic_app
+    from sealsim.structure import load_map
+
+    structure = {
+        "title": "X-ring 12 x 2 rod seal", "seal": {"type": "xring", "cord_diameter": "2 mm",
+                                                    "inner_diameter": "12 mm"},
+        "gland": {"sealing_diameter": "12 mm", "groove_width": "2.7 mm"},
+        "mesh": {"level": "coarse"}, "load": {"squeeze": [0.10]},
+        "map": {"pressure": ["0 bar", "8 bar"], "temperature": ["20 degC", "40 degC"],
+                "squeeze_increments": 3, "temperature_increments": 1, "workers": 1}}
+    (tmp_path / "xring.toml").write_text(tomli_w.dumps(structure))
+    result = RUNNER.invoke(structure_app, ["map", str(tmp_path / "xring.toml"), "--out",
+                                           str(tmp_path / "map"), "--quiet"])
+    assert result.exit_code == 0, result.output
+    ds = load_map(tmp_path / "map" / "map.nc").dataset
+    assert ds["contact_pressure"].dims == ("squeeze", "temperature", "pressure", "position")
+    assert (ds["contact_zones"].values >= 1).all()
+    assert {"map.csv", "map_profiles.csv", "map_profiles.png"} <= \
+        {p.name for p in (tmp_path / "map").iterdir()}
+    # the profile integrates to the normal force: F_N = 2 pi R ∫ p dz (trapezoid on the
+    # 41-point grid across the groove; 10 %: the grid is coarse against b of about 0.5 mm)
+    z = ds["position"].values
+    p = ds["contact_pressure"].isel(squeeze=0, temperature=0, pressure=-1).values
+    fn = float(ds["F_N"].isel(squeeze=0, temperature=0, pressure=-1))
+    assert 2 * np.pi * 6e-3 * np.trapezoid(p, z) == pytest.approx(fn, rel=0.1)
+
+    data = tomllib.loads((ROOT / "examples/pneumatic/cylinder_32.toml").read_text())
+    data["controller"]["duration"] = "0.5 s"
+    for seal in data["seals"]:
+        if seal["name"] == "rod":
+            seal["map"] = {"file": str(tmp_path / "map" / "map.nc")}
+    data.pop("variants", None)
+    (tmp_path / "cyl.toml").write_text(tomli_w.dumps(data))
+    result = RUNNER.invoke(pneumatic_app, ["run", str(tmp_path / "cyl.toml"), "--out",
+                                           str(tmp_path / "cyl"), "--quiet"])
+    assert result.exit_code == 0, result.output
+    summary = json.loads((tmp_path / "cyl" / "summary.json").read_text())
+    assert summary
+
+
+def test_profile_examples_through_the_cli(tmp_path):
+    """The U-cup and the user D-ring (custom Mooney–Rivlin rubber) examples, shortened: the
+    result folder holds the per-increment log (Newton iterations, cutbacks) and the contact
+    zones."""
+    for name, overrides in (
+            ("ucup_rod.toml", {"load": {"pressure": ["0 bar", "2 bar"],
+                                        "pressure_increments": 1}}),
+            ("user_profile.toml", {"load": {"squeeze": [0.10], "pressure": ["0 bar"]}})):
+        data = apply_overrides(tomllib.loads((ROOT / "examples/structure" / name).read_text()),
+                               {"mesh": {"level": "coarse"}, **overrides})
+        path = tmp_path / name
+        path.write_text(tomli_w.dumps(data))
+        out = tmp_path / name.replace(".toml", "")
+        result = RUNNER.invoke(structure_app, ["run", str(path), "--out", str(out), "--quiet"])
+        assert result.exit_code == 0, result.output
+        inc = pd.read_csv(out / "increments.csv")
+        assert {"step", "step_name", "load_fraction", "newton_iterations",
+                "cutbacks"} <= set(inc.columns)
+        assert inc["newton_iterations"].min() >= 1
+        summary = json.loads((out / "summary.json").read_text())
+        assert summary["increments"] == len(inc)
+        assert summary["cutbacks"] == int(inc["cutbacks"].sum())
+        assert summary["max_equilibrium_error"] < 1e-6
+        res = pd.read_csv(out / "result.csv")
+        assert {"contact_zones", "b_span_mm", "F_friction_sealing_N"} <= set(res.columns)
