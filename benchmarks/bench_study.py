@@ -66,7 +66,7 @@ friction = "mean_friction_N"
 
 
 def _timed(study, out, **kwargs):
-    from sealsim.studies import run_study
+    from sealsim.runs.study import run_study
 
     t0 = time.perf_counter()
     result = run_study(study, out, **kwargs)

@@ -34,7 +34,7 @@ from sealsim.rotary.simulation import (
     simulate,
     steady_state,
 )
-from sealsim.rotary.study import load_rotary_case
+from sealsim.rotary.simulation import load_rotary_case
 from sealsim.thermal.conduction import AxisymmetricConduction, Solid, ThermalNetwork
 from sealsim.tribology.film import FilmRangeWarning
 

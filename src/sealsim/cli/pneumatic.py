@@ -1,6 +1,6 @@
 """``sealsim pneumatic run CASE.toml --out DIR``: pneumatic cylinder with seal friction (seed 001).
 
-The command holds no physics: it reads the case, calls :mod:`sealsim.pneumatic.study` and
+The command holds no physics: it reads the case, calls :mod:`sealsim.runs.pneumatic` and
 prints a short summary; results go through :class:`sealsim.output.ResultFolder`.
 """
 
@@ -46,7 +46,7 @@ def run(
     heating_VARIANT.png and strokes_VARIANT.csv (temperatures, friction and stroke times, stroke
     by stroke).
     """
-    from sealsim.pneumatic.study import run_case_file
+    from sealsim.runs.pneumatic import run_case_file
 
     def describe(variant: str, t: float, end: float) -> str:
         unit = "FE load paths" if variant.endswith("FE map") else "s"

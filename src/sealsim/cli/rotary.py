@@ -27,7 +27,7 @@ def run(
     case_resolved.toml and figures (cycle_VARIANT.png like seed 000 Fig. 9, variants.png like
     Fig. 12, stribeck.png).
     """
-    from sealsim.rotary.study import run_case_file
+    from sealsim.runs.rotary import run_case_file
     from sealsim.tribology.film import FilmRangeWarning
 
     with variant_progress("rotary", quiet,

@@ -1,7 +1,7 @@
 """``sealsim study run``: parameter sweeps, tolerance and sensitivity studies on Dask.
 
 The command holds no physics: it reads the study file, calls
-:func:`sealsim.studies.run_study` and prints a short summary; results go through
+:func:`sealsim.runs.study.run_study` and prints a short summary; results go through
 :class:`sealsim.output.ResultFolder`.
 """
 
@@ -62,7 +62,8 @@ def run(
     complete: after Ctrl-C, a killed process or a lost cluster, run the same command with
     --resume.
     """
-    from sealsim.studies import load_study, run_study
+    from sealsim.runs.study import run_study
+    from sealsim.studies import load_study
 
     spec = load_study(study)
     shape = " x ".join(f"{d} {n}" for d, n in zip(spec.dims, spec.shape))

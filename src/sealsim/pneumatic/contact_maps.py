@@ -522,7 +522,7 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
     FEContactMap
     """
     from sealsim.cases import dump_case_toml, expand_variants, load_toml
-    from sealsim.output import atomic_write_bytes
+    from sealsim.files import atomic_write_bytes
 
     try:
         from sealsim.structure.case import StructureCase

@@ -29,6 +29,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from sealsim.cases import expand_variants, load_toml
 from sealsim.errors import InputError, ModelError
 from sealsim.properties.elastomers import ServiceRangeWarning, get_elastomer
 from sealsim.properties.oils import OilRangeWarning
@@ -57,7 +58,7 @@ from sealsim.tribology.rubber_friction import (
 )
 
 __all__ = ["RotaryModel", "RotaryResult", "friction_map", "housing_defaults", "lip_seal_friction",
-           "lip_style", "simulate", "steady_state"]
+           "lip_style", "load_rotary_case", "simulate", "steady_state"]
 
 CELSIUS_0 = 273.15
 STEEL_DENSITY, STEEL_SPECIFIC_HEAT = 7850.0, 460.0
@@ -632,3 +633,13 @@ def friction_map(case: RotaryCase, speeds_rpm, temperatures_c) -> pd.DataFrame:
         "asperity_share": state.asperity_share,
         "mu_eff": np.abs(state.torque) * 2 / case.seal.shaft_diameter / state.lip_force,
         "duty_parameter": friction.duty_parameter(state, omega)})
+
+
+def load_rotary_case(path: str | Path) -> dict[str, RotaryCase]:
+    """Read and validate a rotary case file; returns ``{variant: RotaryCase}``.
+
+    Relative paths in the case (a duty-cycle CSV) refer to the case file's folder: simulate
+    with ``simulate(case, base_dir=Path(path).parent)``.
+    """
+    path = Path(path)
+    return expand_variants(RotaryCase, load_toml(path), f"rotary case {str(path)!r}")

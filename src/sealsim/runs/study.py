@@ -1,10 +1,10 @@
-"""Run a study into a result folder: what ``sealsim study run`` calls.
+"""``sealsim study run``: a study into a result folder.
 
 :func:`run_study` checks the result folder (:class:`sealsim.output.ResultFolder`: refused if it
-holds results without ``force``, locked while the study runs), opens the study's work folder
-(:mod:`sealsim.studies.store`: finished runs survive an interrupted study, ``resume`` reuses
-them), computes the missing runs on the engine (:mod:`sealsim.studies.engine`), then writes the
-results and commits them all at once:
+holds results without ``force``, locked while the study runs), computes the missing runs in the
+study's work folder (:func:`sealsim.studies.study.compute_runs`: finished runs survive an
+interrupted study, ``resume`` reuses them), analyses them
+(:func:`sealsim.studies.study.analyse`), then writes the results and commits them all at once:
 
 * ``study.nc`` -- the xarray Dataset (:mod:`sealsim.studies.results`);
 * ``runs.csv`` -- one row per run: factors, outputs, status, error;
@@ -20,74 +20,20 @@ from __future__ import annotations
 
 import time
 from collections.abc import Callable
-from dataclasses import dataclass, field
 from pathlib import Path
 
-import pandas as pd
-import xarray as xr
-
-from sealsim import __version__
-from sealsim.errors import InputError
 from sealsim.output import ResultFolder
-from sealsim.studies.analysis import distribution_table, sensitivity_table, spread
-from sealsim.studies.engine import link_key, open_engine
-from sealsim.studies.execute import RunTemplate
-from sealsim.studies.models import MODELS
-from sealsim.studies.results import assemble, column_name
+from sealsim.plotting import studies as plots
 from sealsim.studies.spec import Study, load_study
 from sealsim.studies.store import WorkFolder, work_folder_for
+from sealsim.studies.study import StudyResult, analyse, compute_runs
 
-__all__ = ["StudyResult", "run_study", "run_study_file"]
-
-#: failures listed in summary.json (all are in runs.csv)
-LISTED_FAILURES = 20
-
-
-@dataclass
-class StudyResult:
-    """What :func:`run_study` returns (and wrote)."""
-
-    dataset: xr.Dataset
-    table: pd.DataFrame
-    summary: dict
-    distribution: pd.DataFrame = field(default_factory=pd.DataFrame)
-    sensitivity: pd.DataFrame = field(default_factory=pd.DataFrame)
+__all__ = ["run_study", "run_study_file", "write_results"]
 
 
 def run_study_file(path: str | Path, out: str | Path, **kwargs) -> StudyResult:
-    """:func:`load_study` then :func:`run_study` (keywords as there)."""
+    """:func:`~sealsim.studies.load_study` then :func:`run_study` (keywords as there)."""
     return run_study(load_study(path), out, **kwargs)
-
-
-class _OutputCheck:
-    """Stops the study at the first finished run if an output or series is not in the model's
-    summary: the user fixes the study file instead of waiting for useless runs."""
-
-    def __init__(self, study: Study):
-        self.study = study
-        self.done = False
-
-    def __call__(self, record: dict) -> None:
-        if self.done or record["status"] != "ok":
-            return
-        self.done = True
-        summary = record["summary"]
-        where = f"study {str(self.study.source)!r}"
-        for out in self.study.outputs:
-            if out.path not in summary:
-                shown = ", ".join(list(summary)[:60])
-                raise InputError(f"{where}: output {out.name!r} = {out.path!r} is not in the "
-                                 f"summary of model {self.study.model!r}; it has: {shown}"
-                                 + (" ..." if len(summary) > 60 else "")
-                                 + ". Fix [outputs], then run again with --resume (finished "
-                                 "runs are kept)")
-        wanted = self.study.series.variables if self.study.series else []
-        missing = [v for v in wanted if v not in record.get("series_available", [])]
-        if missing:
-            raise InputError(f"{where}: series {', '.join(map(repr, missing))} not in the "
-                             f"series of model {self.study.model!r}; it has: "
-                             f"{', '.join(record.get('series_available', []))}. Fix [series], "
-                             "then run again with --force")
 
 
 def run_study(study: Study, out: str | Path, *, workers: int | None = None,
@@ -118,109 +64,41 @@ def run_study(study: Study, out: str | Path, *, workers: int | None = None,
     progress : callable, optional
         ``progress(phase, done, total, failed)``; phase ``"prepare"`` (linked cases such as FE
         maps) or ``"runs"``.
+
+    Returns
+    -------
+    StudyResult
     """
     started = time.perf_counter()
     folder = ResultFolder(out, force=force, inputs=study.inputs)   # checked before computing
-    fingerprint = study.fingerprint()
-    counts = {"computed": 0, "failed": 0}
     with folder:
         work = WorkFolder(work_folder_for(out))
-        finished = work.start(fingerprint, str(study.source), study.n_runs, resume=resume,
-                              discard=force)
-        reused = len(finished)
-        with open_engine(workers, scheduler, client) as engine:
-            engine_info = engine.describe()
-            template = RunTemplate(
-                model=study.model, documents=study.documents,
-                link_names={key: path.name for key, path in study.link_files.items()},
-                base_dir=str(study.base_dir),
-                series_variables=tuple(study.series.variables) if study.series else (),
-                series_interval=study.series_interval,
-                map_workers=None if engine.client is None else 1)
-            check = _OutputCheck(study)
-            failed_before = sum(1 for i in finished if work.load(i)["status"] != "ok")
-            counts["failed"] = failed_before
-
-            def store(record: dict) -> None:
-                work.save(record)
-                counts["computed"] += 1
-                counts["failed"] += record["status"] != "ok"
-                if progress:
-                    progress("runs", reused + counts["computed"], study.n_runs,
-                             counts["failed"])
-                check(record)
-
-            jobs = [(i, study.assignments(i)) for i in range(study.n_runs) if i not in finished]
-            if progress:
-                progress("runs", reused, study.n_runs, counts["failed"])
-            jobs = _prepare(study, template, engine, jobs, store, progress)
-            engine.run(template, jobs, store, batch_size=study.batch_size)
-        records = [work.load(i) for i in range(study.n_runs)]
-        for record in records:
-            check(record)
-        result = _write(folder, study, records, {
-            "engine": engine_info, "computed": counts["computed"], "reused": reused,
-            "wall_time_s": time.perf_counter() - started})
+        records, info = compute_runs(study, work, workers=workers, scheduler=scheduler,
+                                     client=client, resume=resume, discard=force,
+                                     progress=progress)
+        result = analyse(study, records, {**info, "wall_time_s": time.perf_counter() - started})
+        write_results(folder, study, result)
     work.remove()
     return result
 
 
-def _prepare(study, template, engine, jobs, store, progress) -> list:
-    """Prepare the linked cases (FE maps) of the pending runs once per distinct case; runs
-    whose preparation failed are stored as failed.  Returns the runs still to compute."""
-    spec = MODELS[study.model]
-    if not template.link_names or spec.prepare is None or not jobs:
-        return jobs
-    groups: dict[str, list] = {}
-    for job in jobs:
-        key = link_key(study.run_documents(job[1]), template.link_names)
-        groups.setdefault(key, []).append(job)
-    firsts = [members[0][1] for members in groups.values()]
-    report = None if progress is None else (
-        lambda done, total: progress("prepare", done, total, 0))
-    errors = engine.prepare(template, firsts, report)
-    remaining = []
-    for members, error in zip(groups.values(), errors):
-        if not error:
-            remaining += members
-            continue
-        for index, _ in members:
-            store({"index": index, "status": "failed", "summary": {}, "series": {},
-                   "series_available": [], "notes": [], "wall_s": 0.0, "worker": "",
-                   "error": f"preparing the linked case failed: {error}"})
-    return sorted(remaining)
-
-
-def _write(folder: ResultFolder, study: Study, records: list[dict], info: dict) -> StudyResult:
-    from sealsim.plotting import studies as plots
-
-    dataset, table = assemble(study, records)
-    folder.write_netcdf("study.nc", dataset)
-    folder.write_csv("runs.csv", table, float_format="%.10g")
+def write_results(folder: ResultFolder, study: Study, result: StudyResult) -> None:
+    """Dataset, tables, resolved cases, summary and figures of a study."""
+    folder.write_netcdf("study.nc", result.dataset)
+    folder.write_csv("runs.csv", result.table, float_format="%.10g")
     folder.write_text("study.toml", study.text)
     for label, text in study.resolved_cases().items():
         name = "case_resolved.toml" if label == "case" else \
             f"case_resolved_{label.replace('.', '_')}.toml"
         folder.write_text(name, text)
-
-    ok = dataset["status"].values.astype(bool)
-    failures = [{"run": r["index"], "error": r["error"]} for r in records
-                if r["status"] != "ok"]
-    notes: list[str] = []
-    distribution = sensitivity = pd.DataFrame()
-    outputs = {}
-    for out in study.outputs:
-        outputs[out.name] = {"path": out.path, "unit": out.unit,
-                             "column": column_name(out.name, out.unit),
-                             **spread(dataset[out.name].values)}
+    dataset, outputs = result.dataset, result.summary["outputs"]
     title = study.title or study.source.stem
     if study.sampled:
-        distribution = distribution_table(study, dataset)
-        folder.write_csv("distribution.csv", distribution, float_format="%.10g")
-        sensitivity, notes = sensitivity_table(study, dataset)
-        if not sensitivity.empty:
-            folder.write_csv("sensitivity.csv", sensitivity, float_format="%.6g")
-            folder.savefig("sensitivity.png", plots.sensitivity_figure(sensitivity, title))
+        folder.write_csv("distribution.csv", result.distribution, float_format="%.10g")
+        if not result.sensitivity.empty:
+            folder.write_csv("sensitivity.csv", result.sensitivity, float_format="%.6g")
+            folder.savefig("sensitivity.png", plots.sensitivity_figure(result.sensitivity,
+                                                                       title))
         names = [f.name for f in study.sampled_factors]
         for out in study.outputs:
             folder.savefig(f"histogram_{out.name}.png", plots.histogram_figure(
@@ -236,27 +114,4 @@ def _write(folder: ResultFolder, study: Study, records: list[dict], info: dict) 
             if len(grid) >= 2:
                 folder.savefig(f"heatmap_{out.name}.png", plots.heatmap_figure(
                     dataset, out.name, by_size[0].name, by_size[1].name, title))
-    summary = {
-        "title": study.title, "source": str(study.source), "sealsim_version": __version__,
-        "model": study.model, "design": study.design, "seed": study.seed,
-        "samples": study.samples, "dims": dict(zip(study.dims, study.shape)),
-        "runs": {"total": study.n_runs, "finished": int(ok.sum()),
-                 "failed": int((~ok).sum()), "computed": info["computed"],
-                 "reused": info["reused"]},
-        "engine": info["engine"],
-        "wall_time_s": info["wall_time_s"],
-        "run_time_s": {"sum": float(dataset["wall_time_s"].sum()),
-                       "median": float(dataset["wall_time_s"].median())},
-        "factors": [{"name": f.name, "path": f.path, "unit": f.unit, "kind": f.kind,
-                     **({"values": f.coords} if f.kind == "grid" else
-                        {"distribution": f.distribution, **f.params})}
-                    for f in study.factors],
-        "outputs": outputs,
-        "failures": failures[:LISTED_FAILURES],
-        "notes": notes + sorted({n for r in records for n in r.get("notes", [])})[:50],
-    }
-    if not sensitivity.empty:
-        summary["sensitivity"] = sensitivity.to_dict("records")
-    folder.write_json("summary.json", summary)
-    return StudyResult(dataset, table, summary, distribution, sensitivity)
-
+    folder.write_json("summary.json", result.summary)
