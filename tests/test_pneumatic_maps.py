@@ -213,3 +213,38 @@ def test_cylinder_with_an_fe_map_file(fe_cache):
         "cylinder": {"seal_temperature": "80 degC"}}))
     with pytest.raises(InputError, match=r"seals\[1\] \('rod'\).*80 degC is outside"):
         simulate(hot)
+
+
+def test_fe_map_built_for_seal_friction_is_announced_and_reports_progress(
+        tiny_structure_case, fe_cache, tmp_path, monkeypatch, caplog):
+    # sealsim.seal_friction with a structure case builds its FE map on demand: one INFO notice
+    # (seal, grid, cache file) before the build, then progress(done, total) per FE load path.
+    # The FE computation itself is replayed from the map built once for this module.
+    import logging
+
+    import xarray as xr
+
+    import sealsim
+
+    built = xr.load_dataset(next(fe_cache.glob("*.nc")))
+
+    def replay(case, *, workers=None, progress=None, case_text=""):
+        for done in (1, 2):
+            progress(done, 2)
+        return built
+
+    monkeypatch.setattr("sealsim.structure.maps.compute_map", replay)
+    monkeypatch.setenv("SEALSIM_CACHE", str(tmp_path))
+    reports = []
+    with caplog.at_level(logging.INFO, logger="sealsim"):
+        row = sealsim.seal_friction(tiny_structure_case, 0.1, "6 bar", "40 degC",
+                                    progress=lambda done, total: reports.append((done, total)))
+    assert reports == [(1, 2), (2, 2)]
+    cached = next((tmp_path / "maps").glob("tiny_rod_seal-*.nc"))
+    assert [r.getMessage() for r in caplog.records] == [
+        f"building FE map from tiny_rod_seal.toml (2 pressures x 2 temperatures, 2 FE load "
+        f"paths), cached at {cached}"]
+    assert row["friction_N"] > 0 and row["normal_force_N"] > 0
+    caplog.clear()
+    sealsim.seal_friction(tiny_structure_case, 0.1, "6 bar", "40 degC")   # now from the cache
+    assert caplog.records == []

@@ -44,6 +44,7 @@ temperature, lower contact force).
 from __future__ import annotations
 
 import hashlib
+import logging
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -70,6 +71,11 @@ __all__ = [
     "lindley_force_per_length",
     "thermal_squeeze",
 ]
+
+#: Logger of the FE maps built on demand: one INFO record before a build starts (tens of
+#: seconds), naming the seal, the grid and the cache file.  ``sealsim`` commands print it
+#: above their progress bar; from Python, ``logging.basicConfig(level=logging.INFO)`` shows it.
+logger = logging.getLogger(__name__)
 
 
 @runtime_checkable
@@ -492,7 +498,7 @@ def default_cache_dir() -> Path:
 
 def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = None,
                          cache_dir: str | Path | None = None, progress=None,
-                         workers: int | None = None) -> FEContactMap:
+                         workers: int | None = None, label: str = "") -> FEContactMap:
     """FE map of a structure case file, built on demand and cached.
 
     The case (with a ``[map]`` table, no variants) is validated and resolved (all defaults
@@ -502,7 +508,10 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
     ``<cache_dir>/<stem>-<hash16>.nc``.  A cached map is read; otherwise
     :func:`sealsim.structure.maps.compute_map` runs (FE, minutes) and its result is written
     atomically to the cache.  Any change of the structure case or of the FE model gives a new
-    map (old files stay in the cache folder until deleted).
+    map (old files stay in the cache folder until deleted).  Before a map is computed, the
+    logger ``sealsim.pneumatic.contact_maps`` announces it at INFO level ("building FE map for
+    seal 'rod' from rod_seal_12.toml (5 pressures x 3 temperatures, 3 FE load paths), cached
+    at ...").
 
     Parameters
     ----------
@@ -513,9 +522,12 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
     cache_dir : path, optional
         Cache folder (default :func:`default_cache_dir`).
     progress : callable, optional
-        ``progress(done, total)`` while the map is computed.
+        ``progress(done, total)`` while the map is computed (finished FE load paths: one per
+        squeeze and temperature).
     workers : int, optional
         Processes for the FE map (default: the case's ``map.workers``).
+    label : str, optional
+        What the map is for, in the notice (e.g. ``"seal 'rod'"``).
 
     Returns
     -------
@@ -552,9 +564,23 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
         except OSError as exc:
             raise InputError(f"cannot create the map cache folder {str(folder)!r}: {exc}") \
                 from None
+        logger.info(_build_notice(case, path, target, label))
         dataset = compute_map(case, workers=workers, progress=progress, case_text=text)
         atomic_write_bytes(target, dataset.to_netcdf())
     return FEContactMap.from_file(target, squeeze=squeeze)
+
+
+def _build_notice(case, path: Path, target: Path, label: str = "") -> str:
+    """The line announcing that the FE map of structure case ``case`` (read from ``path``) is
+    built and cached at ``target``."""
+    spec = case.map
+    squeezes = len(spec.squeeze or [case.load.squeeze[-1]])
+    grid = f"{len(spec.pressure)} pressures x {len(spec.temperature)} temperatures" + (
+        f" x {squeezes} squeezes" if squeezes > 1 else "")
+    paths = squeezes * len(spec.temperature)
+    what = f"for {label} from {path.name}" if label else f"from {path.name}"
+    return (f"building FE map {what} ({grid}, {paths} FE load path{'s' * (paths != 1)}), "
+            f"cached at {target}")
 
 
 # -- compiled Hermite grid (the FE maps and tabulated maps in the pneumatic right-hand side) --
