@@ -17,6 +17,7 @@ from rich.text import Text
 
 from sealsim.errors import SealsimError, Terminated
 from sealsim.output import committed_folders, json_ready
+from sealsim.units import ZERO_CELSIUS_K
 
 console = Console(highlight=False)
 err_console = Console(stderr=True, highlight=False)
@@ -79,7 +80,7 @@ def parse_celsius_list(text: str | None, default: list[float], option: str) -> l
         except ValueError:
             raise InputError(f"{option}: {part.strip()!r} is not a number; give temperatures in "
                              "degC separated by commas, e.g. '20,40,100'") from None
-        if not math.isfinite(value) or value < -273.15:
+        if not math.isfinite(value) or value < -ZERO_CELSIUS_K:
             raise InputError(f"{option}: {value!r} degC is not a valid temperature "
                              "(must be finite and >= -273.15 degC)")
         values.append(value)

@@ -56,11 +56,11 @@ from sealsim.tribology.rubber_friction import (
     hysteresis_peak_speed,
     loss_peak_frequency,
 )
+from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["RotaryModel", "RotaryResult", "friction_map", "housing_defaults", "lip_seal_friction",
            "lip_style", "load_rotary_case", "simulate", "steady_state"]
 
-CELSIUS_0 = 273.15
 STEEL_DENSITY, STEEL_SPECIFIC_HEAT = 7850.0, 460.0
 #: Oil volumetric expansion coefficient for free convection [1/K] (mineral oil ≈ 7e-4).
 OIL_EXPANSION = 7e-4
@@ -399,7 +399,7 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
         except InputError as exc:
             raise ModelError(f"rotary simulation stopped at t = {t1:.1f} s "
                              f"({omega * 30 / math.pi:.0f} rpm, contact temperature "
-                             f"{t_contact - CELSIUS_0:.1f} degC): {exc}") from None
+                             f"{t_contact - ZERO_CELSIUS_K:.1f} degC): {exc}") from None
         power = float(state.power)
         key = (round(math.log1p(abs(omega)) / 0.02), round(t_sump / 2.0))
         before = watched(temps)
@@ -442,10 +442,10 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
     stored = float(capacity @ temps - stored0)
     energy = {"generated": generated, "stored": stored, "dissipated": dissipated,
               "rel_error": abs(generated - stored - dissipated) / max(abs(generated), 1e-12)}
-    if frame["T_contact_C"].max() > service_max - CELSIUS_0:
+    if frame["T_contact_C"].max() > service_max - ZERO_CELSIUS_K:
         notes.append(f"contact temperature reached {frame['T_contact_C'].max():.0f} degC, above "
                      f"the service limit of {model.elastomer.name} "
-                     f"({service_max - CELSIUS_0:.0f} degC)")
+                     f"({service_max - ZERO_CELSIUS_K:.0f} degC)")
     sliding = frame.loc[frame["speed_rpm"] != 0, "film_um"]
     if len(sliding):
         film = film_range_note(sliding.min() * 1e-6, sliding.max() * 1e-6)
@@ -463,11 +463,11 @@ def _row(model: RotaryModel, state: FrictionState, t, omega, temps, t_contact) -
     lip_force = float(state.lip_force)
     mu_eff = abs(torque) * 2 / model.case.seal.shaft_diameter / lip_force
     g = float(model.friction.duty_parameter(state, omega))
-    return (t, omega * 30 / math.pi, torque, float(state.power), t_contact - CELSIUS_0,
-            float(temps[model.grid.groove_cell]) - CELSIUS_0,
-            model.sump_temperature(temps) - CELSIUS_0, float(state.film) * 1e6,
+    return (t, omega * 30 / math.pi, torque, float(state.power), t_contact - ZERO_CELSIUS_K,
+            float(temps[model.grid.groove_cell]) - ZERO_CELSIUS_K,
+            model.sump_temperature(temps) - ZERO_CELSIUS_K, float(state.film) * 1e6,
             float(state.force_lubricant), float(state.force_material),
-            model.housing_temperature(temps) - CELSIUS_0, lip_force, mu_eff,
+            model.housing_temperature(temps) - ZERO_CELSIUS_K, lip_force, mu_eff,
             float(state.film_ratio), g)
 
 
@@ -550,7 +550,7 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
                 return model.friction.evaluate(angular_speed, t_contact)
         except InputError as exc:
             raise ModelError(f"steady state at {angular_speed * 30 / math.pi:.0f} rpm: contact "
-                             f"temperature {t_contact - CELSIUS_0:.1f} degC: {exc}") from None
+                             f"temperature {t_contact - ZERO_CELSIUS_K:.1f} degC: {exc}") from None
 
     sump = None if model.sump_fixed else model.network.node_index["sump"]
     # the first slope from a 1 K difference, then secants through the iterates
@@ -591,10 +591,10 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
     if angular_speed != 0 and film_range_note(film, film):
         warnings.warn(film_range_note(film, film), FilmRangeWarning, stacklevel=2)
     return {"torque_Nm": float(state.torque), "power_W": float(state.power),
-            "T_contact_C": t_contact - CELSIUS_0,
-            "T_groove_C": float(temps[model.grid.groove_cell]) - CELSIUS_0,
-            "T_sump_C": model.sump_temperature(temps) - CELSIUS_0,
-            "T_housing_C": model.housing_temperature(temps) - CELSIUS_0, "film_um": film * 1e6,
+            "T_contact_C": t_contact - ZERO_CELSIUS_K,
+            "T_groove_C": float(temps[model.grid.groove_cell]) - ZERO_CELSIUS_K,
+            "T_sump_C": model.sump_temperature(temps) - ZERO_CELSIUS_K,
+            "T_housing_C": model.housing_temperature(temps) - ZERO_CELSIUS_K, "film_um": film * 1e6,
             "F_lub_N": float(state.force_lubricant), "F_material_N": float(state.force_material),
             "lip_force_N": float(state.lip_force), "mu_dry": float(state.mu_dry),
             "asperity_share": float(state.asperity_share), "iterations": iteration}
@@ -625,7 +625,7 @@ def friction_map(case: RotaryCase, speeds_rpm, temperatures_c) -> pd.DataFrame:
     omega = n.ravel() * np.pi / 30.0
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", (ServiceRangeWarning, OilRangeWarning))
-        state = friction.evaluate(omega, t.ravel() + CELSIUS_0)
+        state = friction.evaluate(omega, t.ravel() + ZERO_CELSIUS_K)
     return pd.DataFrame({
         "speed_rpm": n.ravel(), "T_contact_C": t.ravel(), "torque_Nm": state.torque,
         "power_W": state.power, "film_um": state.film * 1e6, "F_lub_N": state.force_lubricant,
