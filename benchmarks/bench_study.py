@@ -1,4 +1,4 @@
-"""Benchmark of the study engine (issue 15): 40 pneumatic cylinder cycles, serially in this
+"""Benchmark of the study engine: 40 pneumatic cylinder cycles, serially in this
 process and on a 2-worker Dask LocalCluster, in the same run.
 
 The study: the Ø32 cylinder of examples/pneumatic/cylinder_32.toml (variant T25C, Θ-law seals

@@ -42,8 +42,9 @@ LIP_SEAL_COLUMNS = ["shaft_diameter_mm", "speed_rpm", "torque_Nm", "power_W", "T
 SEAL_FRICTION_COLUMNS = ["velocity_m_s", "pressure_bar", "temperature_C", "friction_N",
                          "normal_force_N", "contact_width_mm"]
 
-#: Friction law of :func:`seal_friction` when none is given: the Θ rate-and-state law (seed
-#: 001 Eq. 4/5) with the illustrative set ``pneumatic_demo`` (not fitted to measurements).
+#: Friction law of :func:`seal_friction` when none is given: the Θ rate-and-state law (Heipl &
+#: Murrenhoff, Eq. 4/5) with the illustrative set ``pneumatic_demo`` (not fitted to
+#: measurements).
 DEFAULT_LAW = {"law": "theta", "parameter_set": "pneumatic_demo"}
 
 

@@ -5,9 +5,9 @@ Units are converted for display only (°C, mm²/s, MPa); NaN values are gaps in 
 
 * :func:`viscosity_temperature_figure` -- kinematic viscosity of one or more oils, on ASTM D341
   chart axes (log log(ν + 0.7) against log T, where each oil is a straight line) or on a plain
-  log-viscosity axis; like seed 000 Fig. 2.
+  log-viscosity axis; like Organisciak et al. (2014) Fig. 2.
 * :func:`modulus_temperature_figure` -- storage modulus E(T) of one or more elastomers on a
-  log axis, glassy → transition → rubbery, T_g marked; like seed 000 Fig. 3.
+  log axis, glassy → transition → rubbery, T_g marked; like Organisciak et al. (2014) Fig. 3.
 """
 
 from __future__ import annotations

@@ -129,8 +129,8 @@ class CylinderModel(CaseModel):
     ``temperature`` is the temperature of the cylinder body -- the barrel wall the chamber air
     exchanges heat with; default ``air.temperature``.  ``seal_temperature`` is the temperature
     of the seals (where their contact maps are evaluated) unless a seal gives its own; default
-    the body temperature.  Seed 001 (Fig. 10) varies the temperature of the seals to show the
-    effect of their contact force on the motion."""
+    the body temperature.  Heipl & Murrenhoff (Fig. 10) vary the temperature of the seals to
+    show the effect of their contact force on the motion."""
 
     bore: Q("length", gt=0)
     rod_diameter: Q("length", gt=0)

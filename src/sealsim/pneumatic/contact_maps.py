@@ -1,8 +1,8 @@
 r"""Contact maps of a seal: normal force F_N and contact width b over pressure × temperature.
 
-Seed 001 (Fig. 4, Fig. 9) feeds the Θ friction law of each seal with the normal force F_N and
-the contact width b taken from *characteristic diagrams* precomputed by FE.  Here a contact map
-is any object with
+Heipl & Murrenhoff (Fig. 4, Fig. 9) feed the Θ friction law of each seal with the normal force
+F_N and the contact width b taken from *characteristic diagrams* precomputed by FE.  Here a
+contact map is any object with
 
 * ``evaluate(pressure_difference, temperature) -> (normal_force, contact_width)`` -- vectorised,
   SI (Pa, K → N, m), smooth in both arguments;
@@ -37,8 +37,8 @@ long-held squeeze. Both this estimate and the FE map take the modulus from one l
 :meth:`~sealsim.properties.elastomers.Elastomer.modulus_ratio` (``temperature_scaling``:
 "entropic" by default, "modulus" for the dynamic modulus, "none"), so they agree on the sign
 and size of dF_N/dT for the same gland (tested). With the default both make F_N rise with
-temperature, the trend of seed 001 (Fig. 8: the sealing force falls on cooling; Fig. 10: lower
-temperature, lower contact force).
+temperature, the trend of Heipl & Murrenhoff (Fig. 8: the sealing force falls on cooling;
+Fig. 10: lower temperature, lower contact force).
 """
 
 from __future__ import annotations
@@ -183,7 +183,7 @@ def hertz_contact_width(force_per_length, cord_diameter, modulus, poisson=0.5):
     ----------
     K. L. Johnson, Contact Mechanics, Cambridge 1985, §4.2, via
     :func:`sealsim.tribology.contact.hertz_line_half_width`.  Hertz underestimates b at large
-    squeeze; FE maps (issue 5) replace this estimate.
+    squeeze; FE maps (:class:`FEContactMap`) replace this estimate.
 
     Examples
     --------
@@ -281,10 +281,10 @@ class AnalyticContactMap:
     squeeze, the default), "modulus" the catalogue's dynamic E(T, f) of ``elastomer``, "none".
     See :func:`thermal_squeeze`, :func:`lindley_force_per_length`,
     :func:`energised_force_per_length`, :func:`hertz_contact_width`.  F_N rises with Δp and,
-    with the default, with T (seed 001's trend).  Typical numbers: d = 2.5 mm, c0 = 12 %,
-    E0 = 8 MPa (NBR of the catalogue, 6·(C10 + C01)) on D = 32 mm give F_N ≈ 105 N and
-    b ≈ 0.8 mm unpressurised, +57 % F_N at 6 bar, +17 % from 25 to 55 °C (with "modulus" at
-    1 Hz: −21 %).
+    with the default, with T (the trend of Heipl & Murrenhoff, Fig. 8 and 10).  Typical
+    numbers: d = 2.5 mm, c0 = 12 %, E0 = 8 MPa (NBR of the catalogue, 6·(C10 + C01)) on
+    D = 32 mm give F_N ≈ 105 N and b ≈ 0.8 mm unpressurised, +57 % F_N at 6 bar, +17 % from
+    25 to 55 °C (with "modulus" at 1 Hz: −21 %).
 
     Parameters
     ----------
@@ -395,7 +395,7 @@ class AnalyticContactMap:
                    if self.temperature_scaling == "modulus" else {})}
 
 
-# -- FE characteristic maps (issue 5) ---------------------------------------------------------
+# -- FE characteristic maps -------------------------------------------------------------------
 @dataclass
 class FEContactMap:
     """Adapter of an FE characteristic map (:class:`sealsim.structure.maps.SealMap`).

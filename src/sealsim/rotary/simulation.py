@@ -1,13 +1,14 @@
-"""Coupled friction–thermal simulation of a radial lip seal (seed 000, Fig. 4).
+"""Coupled friction–thermal simulation of a radial lip seal (Organisciak et al. 2014, Fig. 4).
 
 Every time step (backward Euler, adaptive Δt):
 
 1. the speed ω(t) of the duty cycle;
 2. viscosity, lip force, film, contact area and μ_dry at the current contact temperature
    → friction torque T (:class:`~sealsim.rotary.friction.LipSealFriction`);
-3. heat q = T·ω into the contact band of the shaft (seed Eq. 6);
+3. heat q = T·ω into the contact band of the shaft (Organisciak et al. 2014, Eq. 6);
 4. conduction through shaft and seal, convection to oil (sump node) and air, sump ↔ housing ↔
-   ambient (seed Eq. 7, :mod:`sealsim.thermal.conduction`) → new temperatures.
+   ambient (Organisciak et al. 2014, Eq. 7, :mod:`sealsim.thermal.conduction`) → new
+   temperatures.
 
 Step 2 uses the contact temperature of the previous step (explicit coupling).  The feedback is
 weak and stabilising (a hotter contact has thinner oil and a lower μ_dry), so it needs no
@@ -91,7 +92,8 @@ def housing_defaults(sump_volume: float) -> tuple[float, float, float]:
 
     The oil level is at the shaft centre in the middle of the box, so the box holds twice the
     oil volume.  Both the outer area (to ambient) and the wetted area (oil to wall) therefore
-    grow with V^(2/3): this is how the sump volume acts on heat dissipation (seed 000 Fig. 13).
+    grow with V^(2/3): this is how the sump volume acts on heat dissipation (Organisciak et al.
+    2014, Fig. 13).
 
     Parameters
     ----------
@@ -471,7 +473,8 @@ def _row(model: RotaryModel, state: FrictionState, t, omega, temps, t_contact) -
             float(state.film_ratio), g)
 
 
-#: The seed's validation convention: average over the last 30 s of each speed step.
+#: The validation convention of Organisciak et al. (2014): average over the last 30 s of each
+#: speed step.
 AVERAGING_WINDOW = 30.0
 
 
