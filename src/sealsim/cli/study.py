@@ -20,7 +20,7 @@ from rich.progress import (
 )
 from rich.text import Text
 
-from sealsim.cli._common import console, err_console, guarded
+from sealsim.cli._common import console, err_console, guarded, sealsim_notices
 
 __all__ = ["study_app"]
 
@@ -69,7 +69,7 @@ def run(
     shape = " x ".join(f"{d} {n}" for d, n in zip(spec.dims, spec.shape))
     console.print(f"study {study}: model {spec.model}, design {spec.design}, "
                   f"{spec.n_runs} runs ({shape})")
-    with _progress(quiet) as bar:
+    with sealsim_notices(quiet), _progress(quiet) as bar:   # notices: FE maps built here
         tasks: dict[str, int] = {}
 
         def progress(phase: str, done: int, total: int, failed: int) -> None:
