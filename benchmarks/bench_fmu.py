@@ -1,4 +1,4 @@
-"""Cost of one communication step of the seal friction FMU (issue 14).
+"""Cost of one communication step of the seal friction FMU.
 
 The Θ-law piston seal of ``examples/pneumatic/cylinder_32.toml`` (``pneumatic_demo`` set,
 analytic contact map embedded as a table) is built as an FMI 2.0 co-simulation FMU.  Then, in

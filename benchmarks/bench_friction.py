@@ -1,4 +1,4 @@
-"""Speed and accuracy of the friction laws (issue 4).
+"""Speed and accuracy of the friction laws.
 
 1. 10 s of LuGre (1995 Table I set) and of the Θ law (pneumatic_demo set) under a sinusoidal
    velocity that reverses, run with the bench (exact step per time step, vectorised scan).

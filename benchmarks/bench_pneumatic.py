@@ -1,8 +1,8 @@
-"""Benchmark of the pneumatic cylinder simulation (issues 6 and 13).
+"""Benchmark of the pneumatic cylinder simulation.
 
 10 s of the Ø32 example (examples/pneumatic/cylinder_32.toml, variant T25C: Θ-law piston and
 rod seals with analytic contact maps, Coulomb wiper, rectangular command with 1 s steps) on one
-core, with the compiled right-hand side and the baseline -- the pre-issue-13 implementation
+core, with the compiled right-hand side and the baseline -- the former implementation
 (numpy glue around a partly compiled core, friction laws as numpy objects, solve_ivp), kept in
 tests/reference_v0 -- measured in the same run on the same case.  Both are timed as the best of
 three runs after a warm-up run that loads (or compiles) the numba code.  Targets: >= 150x real
@@ -88,7 +88,7 @@ def main() -> None:
     print(f"  compiled : best of 3 = {wall:.4f} s wall, {cpu:.4f} s CPU (integration "
           f"{stats['wall_time_s']:.4f} s), real-time factor {SIMULATED / wall:.0f}x "
           f"(CPU: {SIMULATED / cpu:.0f}x)")
-    print(f"  baseline : best of 3 = {base_wall:.4f} s wall, {base_cpu:.4f} s CPU (pre-issue-13 "
+    print(f"  baseline : best of 3 = {base_wall:.4f} s wall, {base_cpu:.4f} s CPU (former "
           f"code), real-time factor {SIMULATED / base_wall:.1f}x (CPU: "
           f"{SIMULATED / base_cpu:.1f}x)")
     print(f"  speed-up {base_wall / wall:.1f}x; largest relative difference of the states "

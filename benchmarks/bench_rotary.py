@@ -1,4 +1,4 @@
-"""Benchmark of the rotary lip seal model (issue targets in brackets).
+"""Benchmark of the rotary lip seal model (targets in brackets).
 
 1. A 1-hour duty cycle with the coupled friction-thermal model on a thermal mesh of >= 2000
    nodes: wall time and simulated-time / wall-time [<= 1 s, >= 3600x real time, one core].
@@ -6,7 +6,7 @@
    what the adaptive stepping buys.
 2. A vectorised steady-state torque map (speed x contact temperature) [>= 1e5 points/s].
 3. Steady operating points with the full thermal model (``steady_state``: friction, conduction,
-   free sump and housing in equilibrium) [issue 13: >= 3x the points per second of the
+   free sump and housing in equilibrium) [>= 3x the points per second of the
    former solver, which factorised the network matrix in every fixed-point iteration; that
    solver, kept in tests/rotary_reference.py, is the baseline measured in the same run].
 

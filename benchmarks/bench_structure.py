@@ -1,15 +1,15 @@
-"""Benchmark of the structural seal model (issues 5 and 13).
+"""Benchmark of the structural seal model.
 
 1. O-ring 20 x 4 rod seal, squeeze 0 -> 20 % in 20 increments on the "medium" mesh
-   (2738 dofs); issue 13 target <= 1.6 s wall.
+   (2738 dofs); target <= 1.6 s wall.
 2. Characteristic map 10 pressures x 8 temperatures on 2 worker processes (medium mesh);
-   issue 13 target <= 8 s wall.
-3. Lip seal (issue 12): the U-cup rod seal of examples/structure/ucup_rod.toml on its default
+   target <= 8 s wall.
+3. Lip seal: the U-cup rod seal of examples/structure/ucup_rod.toml on its default
    ("medium", gmsh) mesh, squeeze 10 % in 5 increments, then 0 -> 10 bar in 10 increments;
    target <= 10 s wall (current implementation only).
 
 Each is measured twice in this process: first the reference implementation (einsum
-Mooney–Rivlin tangent, scipy ``spsolve`` in every Newton iteration: the code before issue 13,
+Mooney–Rivlin tangent, scipy ``spsolve`` in every Newton iteration: the former code,
 kept as the reference the tests compare against), then the current one (compiled kernels,
 PARDISO with the symbolic analysis kept per sparsity pattern if pypardiso is installed, else
 SuperLU with the symmetric-pattern ordering). The squeeze also runs with the SuperLU fallback.

@@ -1,4 +1,4 @@
-"""Benchmark of the study engine (issue 15): 40 pneumatic cylinder cycles, serially in this
+"""Benchmark of the study engine: 40 pneumatic cylinder cycles, serially in this
 process and on a 2-worker Dask LocalCluster, in the same run.
 
 The study: the Ø32 cylinder of examples/pneumatic/cylinder_32.toml (variant T25C, Θ-law seals
@@ -66,7 +66,7 @@ friction = "mean_friction_N"
 
 
 def _timed(study, out, **kwargs):
-    from sealsim.studies import run_study
+    from sealsim.runs.study import run_study
 
     t0 = time.perf_counter()
     result = run_study(study, out, **kwargs)

@@ -1,7 +1,9 @@
 """Tests of sealsim.properties.elastomers (WLF, E(T), PCHIP table, Prony, catalogue, errors).
 
-Oracles: reference notes lip_seal_friction.md §6.1 (property ranges, modulus drop) and §6.2
-(log10 a_T table with the universal WLF constants), and exact limits of the formulas.
+Oracles: typical handbook ranges of filled 70-80 Shore A seal compounds [L] (properties,
+modulus drop 20 -> 100 °C), a log10 a_T table computed independently from the universal WLF
+constants (Williams, Landel & Ferry 1955), and exact limits of the formulas.  [L]: a typical
+literature value not checked against a primary source.
 """
 
 from __future__ import annotations
@@ -51,8 +53,8 @@ no_service_warning = pytest.mark.filterwarnings(
     "ignore::sealsim.properties.elastomers.ServiceRangeWarning"
 )
 
-# Ranges of the notes' §6.1 table (typical 70-80 Shore A seal compounds) [L].
-RANGES_61 = {
+# Typical handbook ranges of 70-80 Shore A seal compounds [L].
+HANDBOOK_RANGES = {
     #        Tg [°C]        density [kg/m3] k [W/mK]     cp [J/kgK]     CTE [1/K]          E [MPa]
     "NBR": ((-40.0, -20.0), (1200, 1350), (0.23, 0.30), (1500, 2000), (1.5e-4, 2.3e-4), (7, 10)),
     "HNBR": ((-35.0, -20.0), (1200, 1300), (0.25, 0.30), (1600, 2000), (1.5e-4, 2.3e-4), (7, 10)),
@@ -82,8 +84,8 @@ def test_shift_factor_is_one_at_reference(t_ref, consts):
     assert wlf_log10_shift(t_ref, t_ref, c1, c2) == 0.0
 
 
-# notes §6.2 table, universal constants with T_ref = T_g [D]
-TABLE_62 = {
+# log10 a_T with the universal constants and T_ref = T_g, computed by hand to one decimal
+UNIVERSAL_WLF_TABLE = {
     -25.0: {0: -5.7, 20: -8.1, 60: -10.9, 100: -12.3, 150: -13.5},
     -18.0: {0: -4.5, 20: -7.4, 60: -10.5, 100: -12.1, 150: -13.3},
     -20.0: {0: -4.9, 20: -7.6, 60: -10.6, 100: -12.2, 150: -13.4},
@@ -91,9 +93,9 @@ TABLE_62 = {
 }
 
 
-@pytest.mark.parametrize("tg_c", list(TABLE_62))
+@pytest.mark.parametrize("tg_c", list(UNIVERSAL_WLF_TABLE))
 def test_wlf_universal_against_notes_table(tg_c):
-    for t_c, expected in TABLE_62[tg_c].items():
+    for t_c, expected in UNIVERSAL_WLF_TABLE[tg_c].items():
         got = wlf_log10_shift(t_c + K0, tg_c + K0)
         # the table is rounded to 0.1 decade: half a unit plus float slack
         assert got == pytest.approx(expected, abs=0.05 + 1e-9), (tg_c, t_c)
@@ -226,7 +228,7 @@ def test_modulus_minimum_location(name, t_star):
         # T_g = -120 °C: rubbery well below room temperature, E rises ∝ T above about -10 °C
         assert -40.0 + K0 < t_star[name] < 10.0 + K0
     else:
-        # notes §6.1: flat or slightly rising above ~100 °C; the catalogue places the minimum
+        # typical filled compounds [L]: flat or slightly rising above ~100 °C; the catalogue places the minimum
         # at 100-125 °C (NBR 108 °C, HNBR 103, ACM 117, FKM 120)
         assert 95.0 + K0 < t_star[name] < 125.0 + K0
     assert m.glass_transition < t_star[name]
@@ -237,21 +239,21 @@ def test_modulus_minimum_location(name, t_star):
 def test_glassy_plateau(name):
     m = get_elastomer(name)
     e = m.modulus(m.glass_transition - 40.0)
-    assert e >= 1e9  # notes §6.1: glassy modulus ~1-3 GPa
+    assert e >= 1e9  # glassy polymers: ~1-3 GPa [L]
     assert e == pytest.approx(m.glassy_modulus, rel=1e-3)  # S = 1 - O(1e-7) 40 K below T_g
 
 
 @pytest.mark.parametrize("name", NAMES)
-def test_rubbery_modulus_at_20C_in_notes_range(name):
-    lo, hi = RANGES_61[name][5]
+def test_rubbery_modulus_at_20C_in_handbook_range(name):
+    lo, hi = HANDBOOK_RANGES[name][5]
     e = get_elastomer(name).modulus(20.0 + K0) / 1e6
-    assert lo <= e <= hi  # notes §6.1 "Rubbery E (75-80 ShA)" range, 1 Hz
+    assert lo <= e <= hi  # small-strain modulus of 75-80 Shore A compounds [L], 1 Hz
 
 
 def test_nbr_drop_20_to_100C():
     nbr = get_elastomer("NBR")
     drop = 1.0 - nbr.modulus(100.0 + K0) / nbr.modulus(20.0 + K0)
-    # notes §6.1: 30-50 % from 20 to 100 °C at ~1 Hz (catalogue: 39 %)
+    # filled NBR seal compounds [L]: 30-50 % from 20 to 100 °C at ~1 Hz (catalogue: 39 %)
     assert 0.30 <= drop <= 0.50
 
 
@@ -259,7 +261,7 @@ def test_nbr_drop_20_to_100C():
 def test_nbr_flat_above_100C():
     nbr = get_elastomer("NBR")
     ratio = nbr.modulus(150.0 + K0) / nbr.modulus(100.0 + K0)
-    # notes §6.1: "flat or rises slightly" above ~100 °C; allow ±10 % over 50 K
+    # filled compounds [L]: flat or rising slightly above ~100 °C; allow ±10 % over 50 K
     assert 0.9 < ratio < 1.1
 
 
@@ -478,17 +480,17 @@ def test_catalogue_names_and_case():
 
 
 @pytest.mark.parametrize("name", NAMES)
-def test_catalogue_values_in_notes_ranges(name):
+def test_catalogue_values_in_handbook_ranges(name):
     m = get_elastomer(name)
-    tg, rho, k, cp, cte, _ = RANGES_61[name]
+    tg, rho, k, cp, cte, _ = HANDBOOK_RANGES[name]
     assert tg[0] <= m.glass_transition - K0 <= tg[1]
     assert rho[0] <= m.density <= rho[1]
     assert k[0] <= m.thermal_conductivity <= k[1]
     assert cp[0] <= m.specific_heat <= cp[1]
     assert cte[0] <= m.thermal_expansion <= cte[1]
-    assert 1e9 <= m.glassy_modulus <= 3e9  # notes §6.1: glassy ~1-3 GPa
+    assert 1e9 <= m.glassy_modulus <= 3e9  # glassy polymers: ~1-3 GPa [L]
     assert m.hardness_shore_a == 75
-    assert "6.1" in m.source and "[L]" in m.source
+    assert "handbook" in m.source and "[L]" in m.source
     assert m.thermal_diffusivity == pytest.approx(
         m.thermal_conductivity / (m.density * m.specific_heat)
     )
@@ -730,7 +732,7 @@ def test_entropic_modulus_and_modulus_ratio():
     nbr = get_elastomer("NBR")
     assert nbr.modulus_ratio(333.15, 293.15) == pytest.approx(333.15 / 293.15, rel=1e-15)
     assert nbr.modulus_ratio(333.15, 293.15, "none") == 1.0
-    # the dynamic modulus falls between T_g and ~100 degC (notes §6.1: 30-50 % from 20 to
+    # the dynamic modulus falls between T_g and ~100 degC (filled NBR [L]: 30-50 % from 20 to
     # 100 degC at ~1 Hz), the equilibrium modulus rises
     dyn = nbr.modulus_ratio(373.15, 293.15, "modulus")
     assert dyn == pytest.approx(nbr.modulus(373.15) / nbr.modulus(293.15), rel=1e-12)

@@ -1,4 +1,5 @@
-"""The Θ rate-and-state law (seed 001 Eq. 4/5 as reconstructed in pneumatic_friction.md §1.3)."""
+"""The Θ rate-and-state law (Heipl & Murrenhoff Eq. 4/5 as reconstructed in
+sealsim.friction.theta)."""
 
 from __future__ import annotations
 

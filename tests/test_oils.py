@@ -1,5 +1,5 @@
-"""Tests of sealsim.properties.oils against the reference notes (lip_seal_friction.md sec. 5)
-and ASTM D2270's worked examples."""
+"""Tests of sealsim.properties.oils against a table of typical gear oils computed independently
+with ASTM D341 and D2270, Cragoe's worked values and ASTM D2270's worked examples."""
 
 from __future__ import annotations
 
@@ -30,8 +30,9 @@ from sealsim.properties.oils import (
 
 C = 273.15
 
-# Reference notes sec. 5.2 table: name -> (nu40, nu100, VI, A, B, nu20, nu60, nu80, nu120,
-# rho15 [g/ml], eta80 [mPa s]).  Viscosities in mm^2/s.
+# Typical datasheet nu40/nu100 with ASTM D341 constants, viscosities and VI (ASTM D2270 L/H
+# table) computed independently of sealsim: name -> (nu40, nu100, VI, A, B, nu20, nu60, nu80,
+# nu120, rho15 [g/ml], eta80 [mPa s]).  Viscosities in mm^2/s.
 REFERENCE = {
     "VG32-mineral": (32, 5.4, 102, 9.5308, 3.7466, 86.3, 15.2, 8.53, 3.72, 0.870, 7.1),
     "VG46-mineral": (46, 6.8, 102, 9.4180, 3.6844, 134, 20.6, 11.1, 4.57, 0.875, 9.3),
@@ -77,7 +78,7 @@ def test_catalogue_walther_constants_match_table(name):
 def test_catalogue_viscosity_at_other_temperatures(name):
     oil = get_oil(name)
     for t_c, ref in zip((20, 60, 80, 120), REFERENCE[name][5:9], strict=True):
-        # 0.5 %: the notes' [D] table prints 3 significant figures and a few entries are one
+        # 0.5 %: the reference table prints 3 significant figures and a few entries are one
         # unit off in the last digit (VG150 nu80 = 26.65 printed 26.7, VG68-PAO nu20 = 187.5
         # printed 188); largest deviation found 0.41 %.
         got = oil.kinematic_viscosity(t_c + C) * 1e6
@@ -87,8 +88,8 @@ def test_catalogue_viscosity_at_other_temperatures(name):
 @pytest.mark.parametrize("name", list(REFERENCE))
 def test_catalogue_viscosity_index(name):
     oil = get_oil(name)
-    # +-2: the notes' VI column is rounded to an integer and was recomputed by hand from the
-    # same D2270 table (VG220-PAO: 147.0 here vs 146 in the notes).
+    # +-2: the table's VI column is rounded to an integer and was recomputed by hand from the
+    # same D2270 table (VG220-PAO: 147.0 here vs 146 in the table).
     assert abs(oil.viscosity_index - REFERENCE[name][2]) <= 2
 
 
@@ -161,7 +162,8 @@ def test_walther_constants_round_trip_and_vectorised():
 
 
 def test_thermophysical_reference_values():
-    # notes sec. 5.3: k = 0.127 W/(m K) and c_p = 2.09 kJ/(kg K) at 80 degC for s15 = 0.88;
+    # Cragoe (NBS Misc. Publ. 97, 1929): k = 0.127 W/(m K), c_p = 2.09 kJ/(kg K) at 80 degC for
+    # s15 = 0.88;
     # tolerance half a unit in the printed last digit.
     rho15 = 0.88 * 999.0
     assert thermal_conductivity_cragoe(80 + C, rho15) == pytest.approx(0.127, abs=5e-4)

@@ -111,7 +111,7 @@ def test_closed_chambers_with_wall_heat_relax_to_the_wall():
 
 def test_mass_energy_equations_match_the_pressure_temperature_form():
     # The model integrates (m, U); the literature writes the same first law as dp/dt and dT/dt
-    # (pneumatic_friction.md §3.2 b, chambers.pressure_rate / temperature_rate).  At arbitrary
+    # (Richer & Hurmuzlu 2000; chambers.pressure_rate / temperature_rate).  At arbitrary
     # states (moving piston, flows in and out, wall heat) both must agree to round-off.
     case = case_from("cylinder_32.toml", {}, variant="T25C")
     case = case.model_copy(update={"seals": []})

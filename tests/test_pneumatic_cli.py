@@ -54,8 +54,16 @@ def run(*args):
 def test_example_runs_through_the_cli(example, tmp_path):
     case = shortened(example, tmp_path)
     out = tmp_path / "out"
-    result = run(case, "--out", out, "--quiet")
+    result = run(case, "--out", out)
     assert result.exit_code == 0, result.output
+    # an FE map built on demand (cylinder_32_fe: a 2 x 2 map in a fresh cache) is announced
+    # once before its FE computation starts; the second variant reads it from the cache
+    cached = sorted((tmp_path / "cache").glob("rod_seal_12-*.nc"))
+    notices = [f"building FE map for seal 'rod' from rod_seal_12.toml (2 pressures x 2 "
+               f"temperatures, 2 FE load paths), cached at {path}" for path in cached]
+    text = "".join(result.output.split())            # rich wraps long lines anywhere
+    assert text.count("buildingFEmap") == len(notices) == (example.stem == "cylinder_32_fe")
+    assert all("".join(notice.split()) in text for notice in notices)
     names = {p.name for p in out.iterdir()}
     assert {"timeseries.csv", "summary.json", "case_resolved.toml", "pressure_stroke.png",
             "friction_stroke.png", "friction_velocity.png"} <= names
@@ -120,6 +128,21 @@ def test_bad_case_exits_2_with_one_message(edit, message, tmp_path):
     assert message in " ".join(result.output.split())
     assert "Traceback" not in result.output
     assert not (tmp_path / "out").exists()
+
+
+def test_notices_are_shown_while_a_command_runs_unless_quiet(capsys):
+    import logging
+
+    from sealsim.cli._common import sealsim_notices
+
+    log = logging.getLogger("sealsim.pneumatic.contact_maps")
+    with sealsim_notices(quiet=True):
+        log.info("building FE map (quiet)")
+    with sealsim_notices(quiet=False):
+        log.info("building FE map (shown)")
+    log.info("building FE map (after the command)")   # handler removed, level restored
+    err = capsys.readouterr().err
+    assert "(shown)" in err and "(quiet)" not in err and "(after" not in err
 
 
 def test_missing_case_file_exits_2(tmp_path):

@@ -101,8 +101,8 @@ def test_meter_out_speed_is_the_choked_exhaust_flow():
 
 
 def independent_extension(case: PneumaticCase, t_end: float, samples: np.ndarray):
-    """The same cylinder written in pressure–temperature states (pneumatic_friction.md §3.2 b,
-    Richer & Hurmuzlu) and integrated with a different method (Radau, rtol 1e-8).  Shares only
+    """The same cylinder written in pressure–temperature states (Richer & Hurmuzlu, J. Dyn.
+    Syst. Meas. Control 122 (2000) 416) and integrated with a different method (Radau, rtol 1e-8).  Shares only
     the validated component functions (ISO 6358 flow, spool lag, stop force)."""
     cyl, air, valve, load = case.cylinder, case.air, case.valve, case.load
     a1, a2, ar = piston_areas(cyl.bore, cyl.rod_diameter)

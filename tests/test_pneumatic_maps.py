@@ -213,3 +213,28 @@ def test_cylinder_with_an_fe_map_file(fe_cache):
         "cylinder": {"seal_temperature": "80 degC"}}))
     with pytest.raises(InputError, match=r"seals\[1\] \('rod'\).*80 degC is outside"):
         simulate(hot)
+
+
+def test_fe_map_built_for_seal_friction_is_announced_and_reports_progress(
+        tiny_structure_case, tmp_path, monkeypatch, caplog):
+    # sealsim.seal_friction with a structure case builds its FE map on demand (here the tiny
+    # 2 x 2 map, FElupe, about 1.5 s): one INFO notice (grid, cache file) before the build,
+    # then progress(done, total) per FE load path (one per temperature here).
+    import logging
+
+    import sealsim
+
+    monkeypatch.setenv("SEALSIM_CACHE", str(tmp_path))
+    reports = []
+    with caplog.at_level(logging.INFO, logger="sealsim"):
+        row = sealsim.seal_friction(tiny_structure_case, 0.1, "6 bar", "40 degC",
+                                    progress=lambda done, total: reports.append((done, total)))
+    assert reports == [(1, 2), (2, 2)]
+    cached = next((tmp_path / "maps").glob("tiny_rod_seal-*.nc"))
+    assert [r.getMessage() for r in caplog.records] == [
+        f"building FE map from tiny_rod_seal.toml (2 pressures x 2 temperatures, 2 FE load "
+        f"paths), cached at {cached}"]
+    assert row["friction_N"] > 0 and row["normal_force_N"] > 0
+    caplog.clear()
+    again = sealsim.seal_friction(tiny_structure_case, 0.1, "6 bar", "40 degC")   # cached
+    assert caplog.records == [] and again == row

@@ -28,7 +28,7 @@ def _anr_litres_per_min(mass_flow):
 
 
 def test_smc_worked_example():
-    # SMC / ISO 6358 worked example (pneumatic_friction.md §3.3 [V]): C = 2 dm³/(s·bar),
+    # SMC's ISO 6358 worked example (SMC catalogue, flow characteristics): C = 2 dm³/(s·bar),
     # b = 0.3, P1 = 0.4 MPa, P2 = 0.3 MPa gauge (+0.1 MPa atmosphere in SMC's formula), 20 °C:
     # choked maximum 600 dm³/min (ANR); pressure ratio 0.8 → flow ratio 0.7 → 420 dm³/min.
     # Tolerance 1 % (the issue's): SMC rounds the flow ratio sqrt(1 − (0.5/0.7)²) = 0.6999 to

@@ -157,7 +157,7 @@ def test_nothing_is_ever_written_outside_the_target(tmp_path, monkeypatch, name,
 HELD_FRICTION = textwrap.dedent("""
     import sys, time
     from pathlib import Path
-    import sealsim.friction.study as study
+    import sealsim.runs.friction as study
     real = study.run_friction_case
     def slow(*args, **kwargs):     # hold the run until the test says go (at most 60 s)
         end = time.monotonic() + 60
@@ -325,7 +325,7 @@ def test_full_disk_gives_one_message_and_removes_the_staging(tiny_friction, tmp_
 @pytest.mark.parametrize("where", ["file", "under_file", "dot", "case_inside"])
 def test_bad_output_location_is_refused_before_any_simulation(where, tiny_friction, tmp_path,
                                                                monkeypatch):
-    import sealsim.friction.study as study
+    import sealsim.runs.friction as study
 
     monkeypatch.setattr(study, "run_friction_case", lambda *a, **k: pytest.fail("simulated"))
     monkeypatch.chdir(tmp_path)

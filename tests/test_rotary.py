@@ -34,7 +34,7 @@ from sealsim.rotary.simulation import (
     simulate,
     steady_state,
 )
-from sealsim.rotary.study import load_rotary_case
+from sealsim.rotary.simulation import load_rotary_case
 from sealsim.thermal.conduction import AxisymmetricConduction, Solid, ThermalNetwork
 from sealsim.tribology.film import FilmRangeWarning
 
@@ -198,8 +198,8 @@ def test_friction_takes_any_lip_force_source():
 
 
 def test_effective_friction_coefficient_in_measured_range_for_the_right_reason():
-    # Finding 3.  Measured lip seal μ_eff = F_friction/F_radial: 0.2-0.6 (issue; reference
-    # notes §4 give 0.1-0.6).  Checked from 10 to 3000 rpm at 40-120 °C.  The right reason:
+    # Finding 3.  Measured lip seal μ_eff = F_friction/F_radial: 0.2-0.6 (issue; typical
+    # literature values are 0.1-0.6, not checked against a primary source).  Checked from 10 to 3000 rpm at 40-120 °C.  The right reason:
     # at 10 rpm (mixed lubrication) the asperities carry most of the load (α > 0.8 at >= 40 °C)
     # and μ_dry·α is most of μ_eff -- no real-area factor of about 0.2 in front of μ_dry.
     frame = friction_map(_case(), np.geomspace(10, 3000, 9), [40.0, 60.0, 80.0, 100.0, 120.0])

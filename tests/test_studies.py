@@ -15,7 +15,8 @@ import pytest
 from scipy import special
 
 from sealsim.errors import InputError, ResultExistsError
-from sealsim.studies import load_study, run_study
+from sealsim.runs.study import run_study
+from sealsim.studies import load_study
 from sealsim.studies.design import ppf, unit_samples
 
 ROOT = Path(__file__).resolve().parents[1]

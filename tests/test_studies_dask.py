@@ -19,7 +19,8 @@ import numpy as np
 import pytest
 
 from sealsim.errors import ResultExistsError
-from sealsim.studies import load_study, run_study
+from sealsim.runs.study import run_study
+from sealsim.studies import load_study
 from sealsim.studies.store import work_folder_for
 
 STUDY = """

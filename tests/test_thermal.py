@@ -95,8 +95,8 @@ def test_backward_euler_conserves_energy(power, dt, steps):
     assert generated - stored - out == pytest.approx(0.0, abs=1e-8 * (1 + abs(stored)))
 
 
-def test_rotating_shaft_coefficients_match_reference_notes():
-    # Reference notes §7.1 (same Kays & Bjorklund correlation, their numbers): d = 80 mm,
+def test_rotating_shaft_coefficients_match_worked_values():
+    # Kays & Bjorklund's correlation (Incropera) evaluated by hand: d = 80 mm,
     # 1500 rpm: VG 68 at 80 °C (ν = 14.7 mm²/s, k = 0.127, Pr ≈ 190) h ≈ 2000; air h ≈ 60.
     omega = 1500 * np.pi / 30
     assert rotating_cylinder_coefficient(omega, 0.08, 14.7e-6, 0.127, 190) == pytest.approx(

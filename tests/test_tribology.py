@@ -192,6 +192,6 @@ def test_grosch_peak_and_time_temperature_superposition():
 
 
 def test_duty_parameter_equals_guembel_number():
-    # G = η ω b / W' is η ω / p̄ with p̄ = W'/b (reference notes §2)
+    # G = η ω b / W' is η ω / p̄ with p̄ = W'/b (the Gümbel number of lip seal Stribeck curves)
     eta, omega, b, w = 0.0124, 157.1, 0.15e-3, 119.4
     assert duty_parameter(eta, omega, b, w) == pytest.approx(eta * omega / (w / b))

@@ -42,8 +42,9 @@ LIP_SEAL_COLUMNS = ["shaft_diameter_mm", "speed_rpm", "torque_Nm", "power_W", "T
 SEAL_FRICTION_COLUMNS = ["velocity_m_s", "pressure_bar", "temperature_C", "friction_N",
                          "normal_force_N", "contact_width_mm"]
 
-#: Friction law of :func:`seal_friction` when none is given: the Θ rate-and-state law (seed
-#: 001 Eq. 4/5) with the illustrative set ``pneumatic_demo`` (not fitted to measurements).
+#: Friction law of :func:`seal_friction` when none is given: the Θ rate-and-state law (Heipl &
+#: Murrenhoff, Eq. 4/5) with the illustrative set ``pneumatic_demo`` (not fitted to
+#: measurements).
 DEFAULT_LAW = {"law": "theta", "parameter_set": "pneumatic_demo"}
 
 
@@ -164,7 +165,7 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
 
 
 def seal_friction(seal, velocity, pressure=0.0, temperature="20 degC", law=None, *,
-                  diameter=None):
+                  diameter=None, progress=None):
     """Steady friction force of a reciprocating seal over sliding velocity.
 
     The seal's normal force F_N and contact width b come from a contact map at the pressure
@@ -180,7 +181,8 @@ def seal_friction(seal, velocity, pressure=0.0, temperature="20 degC", law=None,
         Where F_N and b come from:
 
         * a structure case file (``.toml`` with a ``[map]`` table): its FE map, built on
-          demand (FElupe, tens of seconds) and cached (``sealsim cache list``);
+          demand (FElupe, tens of seconds; announced on the ``sealsim`` logger, see
+          ``progress``) and cached (``sealsim cache list``);
         * a ``map.nc`` written by ``sealsim structure map``;
         * an O-ring for the analytic estimate: ``{"cord_diameter": "2 mm", "squeeze": 0.12}``
           (with ``diameter``, or ``"sliding_diameter"`` in the mapping; ``"elastomer"``
@@ -203,6 +205,11 @@ def seal_friction(seal, velocity, pressure=0.0, temperature="20 degC", law=None,
     diameter : str or float, optional
         Diameter of the sliding surface (rod or bore) for the analytic estimate (plain
         number: m).
+    progress : callable, optional
+        ``progress(done, total)`` while an FE map is built on demand (finished FE load paths).
+        The build is announced before it starts at INFO level on the logger
+        ``sealsim.pneumatic.contact_maps`` ("building FE map from ... cached at ...");
+        ``logging.basicConfig(level=logging.INFO)`` prints it.
 
     Returns
     -------
@@ -237,7 +244,7 @@ def seal_friction(seal, velocity, pressure=0.0, temperature="20 degC", law=None,
     v, dp, t = (np.broadcast_to(np.asarray(x, dtype=float), shape).ravel() for x in (v, dp, t))
     if np.any(dp < 0):
         raise InputError(f"pressure: {pressure!r} must be >= 0 (a gauge pressure difference)")
-    contact_map = _contact_map(seal, diameter)
+    contact_map = _contact_map(seal, diameter, progress)
     _check_ranges(contact_map, dp, t)
     friction_law = _friction_law(DEFAULT_LAW if law is None else law)
     normal_force, width = (np.asarray(x, dtype=float) * np.ones_like(dp)
@@ -264,7 +271,7 @@ def _rows_out(rows: list[dict], shape: tuple, columns: list[str]):
 _MAP_SOURCES = ("analytic", "file", "structure_case")
 
 
-def _contact_map(seal, diameter):
+def _contact_map(seal, diameter, progress=None):
     """The contact map of a ``seal`` argument (see :func:`seal_friction`)."""
     from sealsim.cases import validate_case
     from sealsim.pneumatic.case import MapModel, build_contact_map
@@ -291,7 +298,7 @@ def _contact_map(seal, diameter):
     if spec.analytic is not None and spec.analytic.sliding_diameter is None and sliding is None:
         raise InputError("seal: the analytic estimate needs the diameter of the sliding "
                          "surface (rod or bore): give diameter='12 mm'")
-    return build_contact_map(spec, sliding or 0.0, Path.cwd(), "seal")
+    return build_contact_map(spec, sliding or 0.0, Path.cwd(), "seal", progress)
 
 
 def _check_ranges(contact_map, pressure: np.ndarray, temperature: np.ndarray) -> None:

@@ -29,7 +29,6 @@ from __future__ import annotations
 import contextlib
 import errno
 import json
-import math
 import os
 import re
 import shutil
@@ -41,20 +40,18 @@ from collections.abc import Callable, Iterable, Iterator, Mapping
 from pathlib import Path
 from typing import Any, TypeVar
 
-import numpy as np
-
 from sealsim.errors import InputError, OutputError, ResultBusyError, ResultExistsError, Terminated
+# re-exported: the atomic writes and JSON conversion are part of the result-folder API
+from sealsim.files import (
+    JSON_DIGITS,
+    USER_UMASK,
+    atomic_write_bytes,
+    atomic_write_text,
+    json_ready,
+)
 
 __all__ = ["JSON_DIGITS", "ResultFolder", "atomic_write_bytes", "atomic_write_text",
            "committed_folders", "json_ready", "run_variants"]
-
-# mkstemp/mkdtemp create private (0600/0700) entries; results get the user's normal modes
-_UMASK = os.umask(0)
-os.umask(_UMASK)
-
-#: significant digits of floats in result JSON files: enough for any model result, and
-#: ``67.99999999999949`` is written as ``68.0``
-JSON_DIGITS = 12
 
 #: every result folder committed by this process, in order (see :func:`committed_folders`)
 _COMMITTED: list[Path] = []
@@ -66,57 +63,6 @@ def committed_folders() -> tuple[Path, ...]:
     The CLI uses it to say truthfully, after Ctrl-C, whether the new results were written.
     """
     return tuple(_COMMITTED)
-
-
-def json_ready(value: Any, digits: int | None = None) -> Any:
-    """Make results JSON-safe: numpy scalars become Python numbers, NaN/inf become None.
-
-    JSON has no NaN; a missing value (e.g. no break-away in a run) is written as null.  With
-    ``digits``, floats are rounded to that many significant digits (no ``0.30000000000000004``).
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> json_ready({"a": np.float64(1.5), "b": [float("nan"), np.int64(2)]})
-    {'a': 1.5, 'b': [None, 2]}
-    >>> json_ready([67.99999999999949, 1.0e-20 / 3], digits=12)
-    [68.0, 3.33333333333e-21]
-    """
-    if isinstance(value, dict):
-        return {k: json_ready(v, digits) for k, v in value.items()}
-    if isinstance(value, list | tuple):
-        return [json_ready(v, digits) for v in value]
-    if isinstance(value, bool | np.bool_):
-        return bool(value)
-    if isinstance(value, np.integer):
-        return int(value)
-    if isinstance(value, float | np.floating):
-        if not math.isfinite(value):
-            return None
-        return float(f"{value:.{digits}g}") if digits else float(value)
-    return value
-
-
-def atomic_write_bytes(path: str | Path, data: bytes) -> Path:
-    """Write ``data`` to ``path`` via a temporary file in the same folder and a rename."""
-    path = Path(path)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            fh.write(data)
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.chmod(tmp, 0o666 & ~_UMASK)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-    return path
-
-
-def atomic_write_text(path: str | Path, text: str) -> Path:
-    """Text variant of :func:`atomic_write_bytes` (UTF-8)."""
-    return atomic_write_bytes(path, text.encode("utf-8"))
 
 
 def _pid_alive(pid: int) -> bool:
@@ -266,7 +212,7 @@ class ResultFolder:
             try:
                 self._staging = Path(tempfile.mkdtemp(
                     dir=parent, prefix=f".{self.path.name}.{os.getpid()}.", suffix=".partial"))
-                os.chmod(self._staging, 0o777 & ~_UMASK)
+                os.chmod(self._staging, 0o777 & ~USER_UMASK)
             except OSError as exc:
                 raise InputError(f"cannot create output folder {self._shown()!r}: "
                                  f"{exc.strerror or exc}") from exc
@@ -354,7 +300,7 @@ class ResultFolder:
         path = self._lock_path()
         while True:
             try:
-                fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o666 & ~_UMASK)
+                fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o666 & ~USER_UMASK)
             except OSError as exc:
                 raise InputError(f"cannot create the lock file {str(path)!r} of output folder "
                                  f"{self._shown()!r}: {exc.strerror or exc}") from exc

@@ -9,7 +9,7 @@ analytic O-ring contact map, at two seal temperatures (two variants).  This is w
 """
 
 from sealsim.pneumatic.case import load_pneumatic_case_file
-from sealsim.pneumatic.study import run_cases
+from sealsim.pneumatic.simulation import run_cases
 from sealsim.plotting.pneumatic import pressure_stroke_figure, timeseries_figure
 
 cases = load_pneumatic_case_file("cylinder_32.toml")

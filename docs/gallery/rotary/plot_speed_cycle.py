@@ -10,7 +10,7 @@ what ``sealsim rotary run speed_cycle.toml --out DIR`` computes, here from Pytho
 
 from sealsim.plotting.rotary import cycle_figure, variants_figure
 from sealsim.rotary.simulation import simulate
-from sealsim.rotary.study import load_rotary_case
+from sealsim.rotary.simulation import load_rotary_case
 
 cases = load_rotary_case("speed_cycle.toml")  # {"plain": RotaryCase, "wave": RotaryCase}
 results = {name: simulate(case) for name, case in cases.items()}

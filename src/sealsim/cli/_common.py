@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import functools
 import json
+import logging
 import math
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -16,6 +17,7 @@ from rich.text import Text
 
 from sealsim.errors import SealsimError, Terminated
 from sealsim.output import committed_folders, json_ready
+from sealsim.units import ZERO_CELSIUS_K
 
 console = Console(highlight=False)
 err_console = Console(stderr=True, highlight=False)
@@ -78,30 +80,59 @@ def parse_celsius_list(text: str | None, default: list[float], option: str) -> l
         except ValueError:
             raise InputError(f"{option}: {part.strip()!r} is not a number; give temperatures in "
                              "degC separated by commas, e.g. '20,40,100'") from None
-        if not math.isfinite(value) or value < -273.15:
+        if not math.isfinite(value) or value < -ZERO_CELSIUS_K:
             raise InputError(f"{option}: {value!r} degC is not a valid temperature "
                              "(must be finite and >= -273.15 degC)")
         values.append(value)
     return values
 
 
+class _NoticeHandler(logging.Handler):
+    """Prints log records on stderr (above a running progress bar)."""
+
+    def emit(self, record: logging.LogRecord) -> None:
+        err_console.print(Text(self.format(record), style="cyan"))
+
+
+@contextmanager
+def sealsim_notices(quiet: bool) -> Iterator[None]:
+    """Show the INFO records of the ``sealsim`` loggers on stderr while the block runs (e.g.
+    "building FE map for seal 'rod' ..., cached at ..." before a long FE computation)."""
+    if quiet:
+        yield
+        return
+    logger = logging.getLogger("sealsim")
+    handler, level = _NoticeHandler(logging.INFO), logger.level
+    logger.addHandler(handler)
+    if logger.getEffectiveLevel() > logging.INFO:
+        logger.setLevel(logging.INFO)
+    try:
+        yield
+    finally:
+        logger.removeHandler(handler)
+        logger.setLevel(level)
+
+
 @contextmanager
 def variant_progress(label: str, quiet: bool,
                      describe: Callable[[str, float, float], str]
                      ) -> Iterator[Callable[[str, float, float], None]]:
-    """A progress bar (on stderr) with one task per variant of a case.
+    """A progress bar (on stderr) with one task per variant of a case, and the notices of
+    :func:`sealsim_notices` above it.
 
     Yields ``progress(variant, done, total)`` for the study runners; ``describe`` renders the
     text after the bar, e.g. ``"12/90 min"``.
     """
-    with Progress(TextColumn("{task.description}"), BarColumn(), TextColumn("{task.fields[t]}"),
-                  TimeElapsedColumn(), console=err_console, disable=quiet,
-                  transient=True) as bar:
+    with sealsim_notices(quiet), Progress(
+            TextColumn("{task.description}"), BarColumn(), TextColumn("{task.fields[t]}"),
+            TimeElapsedColumn(), console=err_console, disable=quiet, transient=True) as bar:
         tasks: dict[str, Any] = {}
 
         def progress(variant: str, done: float, total: float) -> None:
             if variant not in tasks:
                 tasks[variant] = bar.add_task(f"{label} {variant}", total=total, t="")
-            bar.update(tasks[variant], completed=done, t=describe(variant, done, total))
+            # the total may change (a second seal's FE map reports under the same name)
+            bar.update(tasks[variant], completed=done, total=total,
+                       t=describe(variant, done, total))
 
         yield progress

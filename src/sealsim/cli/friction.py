@@ -1,6 +1,6 @@
 """``sealsim friction run CASE.toml --out DIR``: run a friction test-bench case.
 
-The command holds no physics: :func:`sealsim.friction.study.run_case_file` runs the case and
+The command holds no physics: :func:`sealsim.runs.friction.run_case_file` runs the case and
 writes the results; the command shows progress and prints the warnings and a short summary.
 """
 
@@ -36,7 +36,7 @@ def run(
     quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress bar."),
 ) -> None:
     """Run a friction bench case: time series, summary, plots and the resolved case."""
-    from sealsim.friction.study import run_case_file
+    from sealsim.runs.friction import run_case_file
 
     with variant_progress("friction", quiet, lambda _, f, __: f"{100 * f:.0f} %") as progress:
         summary = run_case_file(case, out, force, progress)

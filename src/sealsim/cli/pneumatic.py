@@ -1,6 +1,7 @@
-"""``sealsim pneumatic run CASE.toml --out DIR``: pneumatic cylinder with seal friction (seed 001).
+"""``sealsim pneumatic run CASE.toml --out DIR``: pneumatic cylinder with seal friction (Heipl &
+Murrenhoff).
 
-The command holds no physics: it reads the case, calls :mod:`sealsim.pneumatic.study` and
+The command holds no physics: it reads the case, calls :mod:`sealsim.runs.pneumatic` and
 prints a short summary; results go through :class:`sealsim.output.ResultFolder`.
 """
 
@@ -15,8 +16,8 @@ from sealsim.cli._common import console, guarded, variant_progress
 __all__ = ["pneumatic_app"]
 
 pneumatic_app = typer.Typer(
-    help="Pneumatic cylinder system simulation (seed 001): valve, chambers, piston and seal "
-         "friction (Θ law with F_N and b from contact maps).",
+    help="Pneumatic cylinder system simulation (after Heipl & Murrenhoff): valve, chambers, "
+         "piston and seal friction (Θ law with F_N and b from contact maps).",
     no_args_is_help=True,
     add_completion=False,
     pretty_exceptions_enable=False,
@@ -25,7 +26,7 @@ pneumatic_app = typer.Typer(
 
 @pneumatic_app.callback()
 def _pneumatic() -> None:
-    """Pneumatic cylinder system simulation (seed 001)."""
+    """Pneumatic cylinder system simulation (after Heipl & Murrenhoff)."""
 
 
 @pneumatic_app.command("run")
@@ -41,12 +42,12 @@ def run(
 
     Writes timeseries.csv (all variants, column 'variant'), summary.json (extend/retract times,
     friction, air consumption, mass and energy balance errors per variant), case_resolved.toml
-    and figures: pressure_stroke.png (seed 001 Fig. 10), friction_stroke.png (Figs. 12/13),
-    friction_velocity.png and timeseries_VARIANT.png; with seal heating ([thermal]) also
-    heating_VARIANT.png and strokes_VARIANT.csv (temperatures, friction and stroke times, stroke
-    by stroke).
+    and figures: pressure_stroke.png (like Heipl & Murrenhoff Fig. 10), friction_stroke.png
+    (Figs. 12/13), friction_velocity.png and timeseries_VARIANT.png; with seal heating
+    ([thermal]) also heating_VARIANT.png and strokes_VARIANT.csv (temperatures, friction and
+    stroke times, stroke by stroke).
     """
-    from sealsim.pneumatic.study import run_case_file
+    from sealsim.runs.pneumatic import run_case_file
 
     def describe(variant: str, t: float, end: float) -> str:
         unit = "FE load paths" if variant.endswith("FE map") else "s"

@@ -1,4 +1,4 @@
-"""``sealsim rotary ...``: radial lip seal friction and temperature (seed 000)."""
+"""``sealsim rotary ...``: radial lip seal friction and temperature (Organisciak et al. 2014)."""
 
 from __future__ import annotations
 
@@ -9,8 +9,8 @@ import typer
 from sealsim.cli._common import console, guarded, variant_progress
 
 rotary_app = typer.Typer(no_args_is_help=True, help=(
-    "Radial lip seals in gearboxes (seed 000): friction torque and temperatures over speed "
-    "cycles, plain vs wave lips, oil sump volume."))
+    "Radial lip seals in gearboxes (after Organisciak et al., AGMA 14FTM14, 2014): friction "
+    "torque and temperatures over speed cycles, plain vs wave lips, oil sump volume."))
 
 
 @rotary_app.command("run")
@@ -24,10 +24,10 @@ def run(
     """Simulate a duty cycle with coupled friction and heat transfer.
 
     Writes timeseries.csv, steps.csv, summary.json (averages over the last 30 s of each step),
-    case_resolved.toml and figures (cycle_VARIANT.png like seed 000 Fig. 9, variants.png like
-    Fig. 12, stribeck.png).
+    case_resolved.toml and figures (cycle_VARIANT.png like Organisciak et al. 2014, Fig. 9,
+    variants.png like Fig. 12, stribeck.png).
     """
-    from sealsim.rotary.study import run_case_file
+    from sealsim.runs.rotary import run_case_file
     from sealsim.tribology.film import FilmRangeWarning
 
     with variant_progress("rotary", quiet,

@@ -1,7 +1,7 @@
 """``sealsim study run``: parameter sweeps, tolerance and sensitivity studies on Dask.
 
 The command holds no physics: it reads the study file, calls
-:func:`sealsim.studies.run_study` and prints a short summary; results go through
+:func:`sealsim.runs.study.run_study` and prints a short summary; results go through
 :class:`sealsim.output.ResultFolder`.
 """
 
@@ -20,7 +20,7 @@ from rich.progress import (
 )
 from rich.text import Text
 
-from sealsim.cli._common import console, err_console, guarded
+from sealsim.cli._common import console, err_console, guarded, sealsim_notices
 
 __all__ = ["study_app"]
 
@@ -62,13 +62,14 @@ def run(
     complete: after Ctrl-C, a killed process or a lost cluster, run the same command with
     --resume.
     """
-    from sealsim.studies import load_study, run_study
+    from sealsim.runs.study import run_study
+    from sealsim.studies import load_study
 
     spec = load_study(study)
     shape = " x ".join(f"{d} {n}" for d, n in zip(spec.dims, spec.shape))
     console.print(f"study {study}: model {spec.model}, design {spec.design}, "
                   f"{spec.n_runs} runs ({shape})")
-    with _progress(quiet) as bar:
+    with sealsim_notices(quiet), _progress(quiet) as bar:   # notices: FE maps built here
         tasks: dict[str, int] = {}
 
         def progress(phase: str, done: int, total: int, failed: int) -> None:

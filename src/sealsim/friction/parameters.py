@@ -1,9 +1,9 @@
 """Named parameter sets of the friction laws, stored as data in ``parameter_sets.toml``.
 
-Each set records its source and how well it is verified ([V] verified, [M] memory, [R]
-reconstructed / illustrative -- the tags of the project's reference notes).  Use a set from a
-case file with ``parameter_set = "canudas1995"`` in the ``[law]`` table (explicit fields
-override it), or from Python:
+Each set records its source and how well it is verified: [V] verified in the named source,
+[M] a literature value not re-checked against its source, [R] reconstructed or illustrative.
+Use a set from a case file with ``parameter_set = "canudas1995"`` in the ``[law]`` table
+(explicit fields override it), or from Python:
 
 >>> from sealsim.friction import LuGre
 >>> law = LuGre.from_parameter_set("canudas1995", warn=False)

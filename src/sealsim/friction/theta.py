@@ -3,11 +3,11 @@
 A lubrication state Θ ∈ [0, 1] per contact moves between dry/boundary friction (Θ = 0) and
 full hydrodynamic friction (Θ = 1)::
 
-    dΘ/dt = −Θ/τ + (|v|/α)·(F_ref/F_N)^n·(1 − Θ)                         (seed Eq. 4, [R])
-    F     = F_N·[f_a·(1 − Θ) + f_b·Θ]·sgn(v) + γ·b·v                    (seed Eq. 5, [R])
+    dΘ/dt = −Θ/τ + (|v|/α)·(F_ref/F_N)^n·(1 − Θ)       (Heipl & Murrenhoff Eq. 4, [R])
+    F     = F_N·[f_a·(1 − Θ) + f_b·Θ]·sgn(v) + γ·b·v  (Heipl & Murrenhoff Eq. 5, [R])
 
-The seed's equations are only partly legible; this is the reconstruction of
-sealsim's reconstruction with the following choices (each marked [R], to be checked against
+The paper's equations are only partly legible in the available text; this is sealsim's
+reconstruction with the following choices (each marked [R], to be checked against
 the original paper):
 
 * **State term −Θ/τ** ("melting of the film defined by a time constant"): at rest the film is
@@ -17,18 +17,20 @@ the original paper):
 * **Load F_N in the rate term** as (F_ref/F_N)^n (n = 1 by default): the sliding length needed
   to build the film grows with the load, α_eff = α·(F_N/F_ref)^n.  Higher load → lower steady
   Θ at every speed and a transition velocity v* = (α/τ)·(F_N/F_ref)^n that grows with load →
-  the "weakly developed transition" of seed Fig. 6 (upper loop).  Reason for the rate term and
-  not τ: the seed names F_N as a factor added to the description of the rate term, and a load
-  that only changed τ would also change the dwell-time behaviour, which the seed attributes to τ
-  alone.  F_ref only fixes the unit (α is the sliding length at F_N = F_ref).
-* **Force**: the seed distinguishes a static part F_a and a dynamic part F_b, with F_N and b as
+  the "weakly developed transition" of Heipl & Murrenhoff Fig. 6 (upper loop).  Reason for the
+  rate term and not τ: the paper names F_N as a factor added to the description of the rate
+  term, and a load that only changed τ would also change the dwell-time behaviour, which the
+  paper attributes to τ alone.  F_ref only fixes the unit (α is the sliding length at
+  F_N = F_ref).
+* **Force**: the paper distinguishes a static part F_a and a dynamic part F_b, with F_N and b as
   the interfaces to the FE model.  Here F_a, F_b are *friction coefficients* f_a, f_b [-] that
   multiply F_N (so the FE maps F_N(Δp, T) set the friction level, replacing the linear pressure
-  scaling of seed Eq. 3), weighted by the state: dry part f_a·(1 − Θ), mixed/boundary part
-  f_b·Θ; the viscous part γ·b·v with γ [N·s/m²] the grease/viscosity coefficient of the seed.
-* **Convention Θ = 0 dry, 1 hydrodynamic** (as the issue and the reference notes).  The labels
-  of seed Fig. 6 (dry at the top of the state axis) suggest the paper plots the complementary
-  variable 1 − Θ; the physics is the same.
+  scaling of Heipl & Murrenhoff Eq. 3), weighted by the state: dry part f_a·(1 − Θ),
+  mixed/boundary part f_b·Θ; the viscous part γ·b·v with γ [N·s/m²] the grease/viscosity
+  coefficient of the paper.
+* **Convention Θ = 0 dry, 1 hydrodynamic** (θ = 0 is the solid-like, pinned lubricant in
+  Carlson & Batista [2]).  The labels of Heipl & Murrenhoff Fig. 6 (dry at the top of the state
+  axis) suggest the paper plots the complementary variable 1 − Θ; the physics is the same.
 
 Steady state (closed form): Θ_ss(v) = |v|/(|v| + v*), v* = (α/τ)·(F_N/F_ref)^n, so
 F_ss(v) = F_N·[f_a·v* + f_b·|v|]/(|v| + v*)·sgn(v) + γ·b·v -- a Stribeck-shaped curve without an
@@ -42,14 +44,15 @@ a second state, a LuGre bristle z [m] that saturates at that level::
 
     dz/dt = v − σ0·|v|·z/g_Θ,   g_Θ = F_N·[f_a(1 − Θ) + f_b·Θ],   F = σ0·z + σ1·dz/dt + γ·b·v
 
-(the structure of Yanada's lubricant-film LuGre, §1.4).  This smooth variant has the same steady
+(the structure of Yanada's lubricant-film LuGre [3]).  This smooth variant has the same steady
 curve, adds pre-sliding, and suits implicit ODE solvers of coupled models (no switching).
 
 Θ stays in [0, 1] exactly: for constant v the state equation is linear and the exact step is a
 convex combination of the old Θ and Θ_ss ∈ [0, 1).
 
-**Temperature.**  γ is the (equivalent) viscosity of the grease (seed Eq. 5): the viscous force
-γ·b·v is the shear of the film, so γ follows the viscosity of the grease's base oil,
+**Temperature.**  γ is the (equivalent) viscosity of the grease (Heipl & Murrenhoff Eq. 5): the
+viscous force γ·b·v is the shear of the film, so γ follows the viscosity of the grease's base
+oil,
 
     γ(T) = γ_ref·ν(T)/ν(T_ref),   log10 log10(ν + 0.7) = A − B·log10 T   (ASTM D341)
 
@@ -153,7 +156,7 @@ def theta_transition_velocity(tau, alpha, normal_force, reference_normal_force,
 
 
 def theta_rate(theta, v, tau, alpha, normal_force, reference_normal_force, load_exponent=1.0):
-    """dΘ/dt of the reconstructed seed Eq. 4.
+    """dΘ/dt of the reconstructed Heipl & Murrenhoff Eq. 4.
 
     .. math:: \\dot\\Theta = -\\frac{\\Theta}{\\tau}
               + \\frac{|v|}{\\alpha}\\left(\\frac{F_{ref}}{F_N}\\right)^n (1 - \\Theta)
@@ -247,7 +250,8 @@ def _theta_affine(v, dt, tau, alpha, normal_force, reference_normal_force, load_
 
 
 def theta_friction_level(theta, normal_force, f_a, f_b):
-    """Boundary-friction level g_Θ = F_N·[f_a·(1 − Θ) + f_b·Θ] [N] (seed Eq. 5, [R]).
+    """Boundary-friction level g_Θ = F_N·[f_a·(1 − Θ) + f_b·Θ] [N] (Heipl & Murrenhoff Eq. 5,
+    [R]).
 
     This is the sliding force without the viscous part and, at rest, the break-away force.
 
@@ -258,9 +262,9 @@ def theta_friction_level(theta, normal_force, f_a, f_b):
     normal_force : array_like
         Normal force F_N [N].
     f_a : array_like
-        Dry (static) friction coefficient f_a [-] (seed F_a).
+        Dry (static) friction coefficient f_a [-] (F_a of Heipl & Murrenhoff).
     f_b : array_like
-        Friction coefficient with a full film f_b [-] (seed F_b).
+        Friction coefficient with a full film f_b [-] (F_b of Heipl & Murrenhoff).
 
     Returns
     -------
@@ -276,7 +280,7 @@ def theta_friction_level(theta, normal_force, f_a, f_b):
 
 
 def theta_force(theta, v, normal_force, contact_width, f_a, f_b, gamma):
-    """Sliding friction force of the Θ law (seed Eq. 5, reconstructed).
+    """Sliding friction force of the Θ law (Heipl & Murrenhoff Eq. 5, reconstructed).
 
     .. math:: F = F_N\\,[f_a(1-\\Theta) + f_b\\Theta]\\operatorname{sgn}(v) + \\gamma\\,b\\,v
 

@@ -5,7 +5,7 @@ numbers (velocity from position, sliding phases, friction levels, step averages)
   named readers of known rigs (``format = "tudelft"``); bad files give an InputError naming the
   file, row and column.
 * :mod:`.signals` -- pure functions on arrays: Savitzky–Golay derivative, sliding phases,
-  offset-free friction level, last-30-s step averages (seed 000).
+  offset-free friction level, last-30-s step averages (Organisciak et al. 2014).
 
 >>> import numpy as np
 >>> t = np.linspace(0.0, 8.0, 801)

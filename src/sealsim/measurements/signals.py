@@ -214,10 +214,10 @@ def friction_level(friction, phases):
 def step_averages(time, setpoint, signals, window=30.0, tolerance=0.02):
     """Averages over the last ``window`` seconds of each step of a stepped set-point.
 
-    Seed 000 compares model and rig by the mean torque over the last 30 s of every speed step
-    (the steady part of each step).  A step is a run of samples whose set-point stays within
-    ``tolerance`` (relative to the largest |set-point|) of the value at the step's start;
-    steps shorter than ``window`` are skipped.
+    Organisciak et al. (2014) compare model and rig by the mean torque over the last 30 s of
+    every speed step (the steady part of each step).  A step is a run of samples whose
+    set-point stays within ``tolerance`` (relative to the largest |set-point|) of the value at
+    the step's start; steps shorter than ``window`` are skipped.
 
     Parameters
     ----------

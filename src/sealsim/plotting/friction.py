@@ -1,4 +1,5 @@
-"""Figures of friction bench runs: F–v loops (seed 001 Fig. 2/3/6 style), Θ–v, F–x, time series.
+"""Figures of friction bench runs: F–v loops (Heipl & Murrenhoff Fig. 2/3/6 style), Θ–v, F–x,
+time series.
 
 Every function takes ``{variant name: BenchResult}`` and returns a pyplot-free Figure.  Axes
 use readable units (µm, mm/s) chosen from the data.
@@ -111,7 +112,8 @@ def plot_force_velocity(results, steady=None, title: str | None = None):
 
 
 def plot_theta_velocity(results, steady=None, title: str | None = None):
-    """Lubrication state Θ against velocity (seed 001 Fig. 6 style); None without a Θ state.
+    """Lubrication state Θ against velocity (Heipl & Murrenhoff Fig. 6 style); None without
+    a Θ state.
 
     Θ = 0 is dry (boundary) friction, Θ = 1 hydrodynamic.
     """
@@ -134,7 +136,8 @@ def plot_theta_velocity(results, steady=None, title: str | None = None):
 
 
 def plot_force_displacement(results, title: str | None = None):
-    """Friction force against displacement (F–x loops, pre-sliding, seed 001 Fig. 12/13)."""
+    """Friction force against displacement (F–x loops, pre-sliding, Heipl & Murrenhoff
+    Fig. 12/13)."""
     fig, ax = new_figure(width=6.4, height=4.4)
     xf, xl = _scale([r.position for r in results.values()], "m")
     for name, r in results.items():

@@ -1,4 +1,5 @@
-"""Figures of pneumatic cylinder results (seed 001 Fig. 10, Figs. 12/13, friction vs velocity).
+"""Figures of pneumatic cylinder results (Heipl & Murrenhoff Fig. 10, Figs. 12/13, friction vs
+velocity).
 
 All functions read the ``timeseries`` frames of :class:`sealsim.pneumatic.PneumaticResult`
 (columns ``time_s``, ``x_m``, ``v_m_s``, ``p1_bar_abs``, ``p2_bar_abs``, ``F_friction_N``, per
@@ -26,7 +27,8 @@ def _colour(k: int) -> str:
 
 
 def pressure_stroke_figure(frames: dict[str, pd.DataFrame], title: str = ""):
-    """Chamber pressures and stroke against time, all variants (like seed 001 Fig. 10).
+    """Chamber pressures and stroke against time, all variants (like Heipl & Murrenhoff
+    Fig. 10).
 
     Upper panel: p1 (cap side, solid) and p2 (rod side, dashed) [bar abs]; lower panel: piston
     position [mm]; the valve command is shaded in the lower panel (extend: grey).
@@ -65,7 +67,8 @@ def _start_up(f: pd.DataFrame, period: float | None):
 
 def friction_stroke_figure(frames: dict[str, pd.DataFrame], strokes: dict[str, float] | None
                            = None, title: str = "", periods: dict[str, float] | None = None):
-    """Friction force against stroke, one panel per variant (like seed 001 Figs. 12/13).
+    """Friction force against stroke, one panel per variant (like Heipl & Murrenhoff
+    Figs. 12/13).
 
     The total friction of all seals (positive against extension); the loop is run clockwise:
     positive friction while extending, negative while retracting.  Only samples where the
@@ -103,8 +106,8 @@ def friction_stroke_figure(frames: dict[str, pd.DataFrame], strokes: dict[str, f
 def friction_velocity_figure(frames: dict[str, pd.DataFrame], title: str = "",
                              periods: dict[str, float] | None = None):
     """Total friction force against piston velocity, all variants (the dynamic F–v loops of
-    seed 001 Fig. 2/3 as the cylinder runs through them); the start-up period of a prescribed
-    motion is left out (see :func:`friction_stroke_figure`)."""
+    Heipl & Murrenhoff Fig. 2/3 as the cylinder runs through them); the start-up period of a
+    prescribed motion is left out (see :func:`friction_stroke_figure`)."""
     fig, ax = new_figure(width=6.6, height=4.6)
     for k, (name, f) in enumerate(frames.items()):
         keep = ~_start_up(f, (periods or {}).get(name))

@@ -5,9 +5,9 @@ Units are converted for display only (°C, mm²/s, MPa); NaN values are gaps in 
 
 * :func:`viscosity_temperature_figure` -- kinematic viscosity of one or more oils, on ASTM D341
   chart axes (log log(ν + 0.7) against log T, where each oil is a straight line) or on a plain
-  log-viscosity axis; like seed 000 Fig. 2.
+  log-viscosity axis; like Organisciak et al. (2014) Fig. 2.
 * :func:`modulus_temperature_figure` -- storage modulus E(T) of one or more elastomers on a
-  log axis, glassy → transition → rubbery, T_g marked; like seed 000 Fig. 3.
+  log axis, glassy → transition → rubbery, T_g marked; like Organisciak et al. (2014) Fig. 3.
 """
 
 from __future__ import annotations
@@ -19,10 +19,10 @@ from matplotlib.lines import Line2D
 from matplotlib.ticker import FixedLocator, FuncFormatter, LogLocator, NullLocator
 
 from sealsim.plotting import new_figure
+from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["CHARTS", "modulus_temperature_figure", "viscosity_temperature_figure"]
 
-ZERO_CELSIUS = 273.15  # K
 #: Viscosity scales of :func:`viscosity_temperature_figure`.
 CHARTS = ("d341", "log")
 #: Major ticks of the viscosity axis [mm²/s], as on ASTM D341 chart paper, in order of
@@ -47,12 +47,12 @@ def _d341_inverse(y):
 
 
 def _log_kelvin_forward(t_c):
-    t = np.maximum(np.asarray(t_c, dtype=float) + ZERO_CELSIUS, 1.0)
+    t = np.maximum(np.asarray(t_c, dtype=float) + ZERO_CELSIUS_K, 1.0)
     return np.log10(t)
 
 
 def _log_kelvin_inverse(x):
-    return 10.0 ** np.asarray(x, dtype=float) - ZERO_CELSIUS
+    return 10.0 ** np.asarray(x, dtype=float) - ZERO_CELSIUS_K
 
 
 def _d341_ticks(lo: float, hi: float, min_gap: float = 0.04) -> list[float]:
@@ -130,7 +130,7 @@ def viscosity_temperature_figure(
     """
     if chart not in CHARTS:
         raise ValueError(f"chart must be one of {CHARTS}, got {chart!r}")
-    t_c = np.asarray(temperature, dtype=float) - ZERO_CELSIUS
+    t_c = np.asarray(temperature, dtype=float) - ZERO_CELSIUS_K
     fig, ax = new_figure(width=7.0, height=5.0)
     colors = [f"C{i}" for i in range(10)]
     all_nu = []
@@ -141,7 +141,7 @@ def viscosity_temperature_figure(
         ax.plot(t_c, nu_mm2, color=color, lw=2.0, label=name)
         if points and name in points:
             tp, nup = points[name]
-            ax.plot(np.asarray(tp) - ZERO_CELSIUS, np.asarray(nup) * 1e6, ls="none", marker="o",
+            ax.plot(np.asarray(tp) - ZERO_CELSIUS_K, np.asarray(nup) * 1e6, ls="none", marker="o",
                     ms=6, mfc="white", mec=color, mew=1.5, zorder=3)
     values = np.concatenate(all_nu) if all_nu else np.array([])
 
@@ -219,7 +219,7 @@ def modulus_temperature_figure(
     ('log', "Young's modulus E [MPa]")
     """
     t_k = np.asarray(temperature, dtype=float)
-    t_c = t_k - ZERO_CELSIUS
+    t_c = t_k - ZERO_CELSIUS_K
     fig, ax = new_figure(width=7.0, height=5.0)
     single = len(modulus) == 1
     for i, (name, e) in enumerate(modulus.items()):
@@ -238,11 +238,11 @@ def modulus_temperature_figure(
         if tg is not None and np.nanmin(t_k) <= tg <= np.nanmax(t_k):
             ok = np.isfinite(e_mpa)
             e_tg = float(np.exp(np.interp(tg, t_k[ok], np.log(e_mpa[ok]))))
-            ax.axvline(tg - ZERO_CELSIUS, color=color, lw=0.8, ls=":", zorder=1)
-            ax.plot([tg - ZERO_CELSIUS], [e_tg], marker="o", ms=7, mfc="white", mec=color,
+            ax.axvline(tg - ZERO_CELSIUS_K, color=color, lw=0.8, ls=":", zorder=1)
+            ax.plot([tg - ZERO_CELSIUS_K], [e_tg], marker="o", ms=7, mfc="white", mec=color,
                     mew=1.8, zorder=3)
             if single:  # several materials: T_g is in the legend, labels would overlap
-                ax.annotate(f"$T_g$ = {_celsius(tg)}", (tg - ZERO_CELSIUS, e_tg), xytext=(8, 4),
+                ax.annotate(f"$T_g$ = {_celsius(tg)}", (tg - ZERO_CELSIUS_K, e_tg), xytext=(8, 4),
                             textcoords="offset points", color=color, fontsize=10)
         if single:
             _label_regions(ax, t_c, e_mpa)
@@ -267,7 +267,7 @@ def modulus_temperature_figure(
 
 
 def _celsius(kelvin: float) -> str:
-    return f"{kelvin - ZERO_CELSIUS:.0f} °C".replace("-", "\u2212")  # typographic minus
+    return f"{kelvin - ZERO_CELSIUS_K:.0f} °C".replace("-", "\u2212")  # typographic minus
 
 
 def _grow(mask: np.ndarray) -> np.ndarray:

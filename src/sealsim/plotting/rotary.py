@@ -1,4 +1,5 @@
-"""Figures of rotary lip seal results (seed 000 Fig. 9, Fig. 12 and a Stribeck-type plot)."""
+"""Figures of rotary lip seal results (Organisciak et al. 2014, Fig. 9, Fig. 12 and a
+Stribeck-type plot)."""
 
 from __future__ import annotations
 
@@ -17,11 +18,12 @@ def _minutes(frame: pd.DataFrame) -> np.ndarray:
 
 
 def cycle_figure(frame: pd.DataFrame, shaft_radius: float, title: str = ""):
-    """Speed | torque | temperatures over time for one variant (like seed 000 Fig. 9).
+    """Speed | torque | temperatures over time for one variant (like Organisciak et al.
+    2014, Fig. 9).
 
     The torque panel splits the torque into its lubricant-shear and rubber parts (forces times
     the shaft radius [m]); the temperature panel shows the spring-groove temperature (the
-    seed's thermocouple), the contact temperature and the sump in three colours and line
+    paper's thermocouple), the contact temperature and the sump in three colours and line
     styles, so lines that lie on top of each other (a groove in oil at the sump temperature)
     stay distinguishable.
     """

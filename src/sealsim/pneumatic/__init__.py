@@ -13,13 +13,14 @@ law) and characteristic diagrams F_N, b of each seal from FE.  This package is t
 * :mod:`.contact_maps` -- F_N and b: FE maps of :mod:`sealsim.structure` (file or built on
   demand and cached) or an analytic O-ring estimate;
 * :mod:`.seal_heating` -- frictional heating of the seals, the tube and the rod;
-* :mod:`.simulation` -- the coupled stiff ODE (:func:`simulate`), built from :mod:`.system`
-  (the model of a case), :mod:`.rhs` (the compiled right-hand side), :mod:`.integrate`
-  (segments, events, LSODA) and :mod:`.results`;
-* :mod:`.case`, :mod:`.summary`, :mod:`.study` -- case files with variants, the summary numbers
-  and the result folder of ``sealsim pneumatic run``.
+* :mod:`.simulation` -- the coupled stiff ODE (:func:`simulate`, every variant of a case file:
+  :func:`~sealsim.pneumatic.simulation.run_cases`), built from :mod:`.system` (the model of a
+  case), :mod:`.rhs` (the compiled right-hand side), :mod:`.integrate` (segments, events,
+  LSODA) and :mod:`.results`;
+* :mod:`.case`, :mod:`.summary` -- case files with variants, the summary numbers.
 
-Python API (the same as ``sealsim pneumatic run``)::
+The result folder of ``sealsim pneumatic run`` (tables, summary, figures) is written by
+:mod:`sealsim.runs.pneumatic`.  Python API (what that command computes)::
 
     from sealsim.pneumatic import load_pneumatic_case_file, simulate
     cases = load_pneumatic_case_file("examples/pneumatic/cylinder_32.toml")

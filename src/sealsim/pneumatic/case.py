@@ -129,8 +129,8 @@ class CylinderModel(CaseModel):
     ``temperature`` is the temperature of the cylinder body -- the barrel wall the chamber air
     exchanges heat with; default ``air.temperature``.  ``seal_temperature`` is the temperature
     of the seals (where their contact maps are evaluated) unless a seal gives its own; default
-    the body temperature.  Seed 001 (Fig. 10) varies the temperature of the seals to show the
-    effect of their contact force on the motion."""
+    the body temperature.  Heipl & Murrenhoff (Fig. 10) vary the temperature of the seals to
+    show the effect of their contact force on the motion."""
 
     bore: Q("length", gt=0)
     rod_diameter: Q("length", gt=0)
@@ -445,11 +445,14 @@ def _analytic_map(spec: AnalyticMapModel, diameter: float, where: str) -> Analyt
 
 
 def build_contact_map(spec: MapModel, diameter: float, base_dir: Path, where: str,
-                      progress=None, map_workers: int | None = None):
+                      progress=None, map_workers: int | None = None, label: str = ""):
     """The contact map object of a seal's ``map`` table (paths relative to ``base_dir``).
 
-    ``map_workers``: processes for an FE map built on demand (default: the structure case's
-    ``map.workers``; 1 inside a worker process that may not start processes of its own)."""
+    For an FE map built on demand: ``progress(done, total)`` reports its FE load paths,
+    ``label`` names the seal in the notice before the build
+    (:func:`~sealsim.pneumatic.contact_maps.build_or_load_fe_map`), ``map_workers`` are its
+    processes (default: the structure case's ``map.workers``; 1 inside a worker process that
+    may not start processes of its own)."""
     if spec.analytic is not None:
         return _analytic_map(spec.analytic, diameter, where)
     if spec.file is not None:
@@ -467,7 +470,7 @@ def build_contact_map(spec: MapModel, diameter: float, base_dir: Path, where: st
         cache = cache if cache.is_absolute() else base_dir / cache
     try:
         return build_or_load_fe_map(path, squeeze=spec.squeeze, cache_dir=cache,
-                                    progress=progress, workers=map_workers)
+                                    progress=progress, workers=map_workers, label=label)
     except InputError as exc:
         raise InputError(f"{where}.structure_case: {exc}") from None
 
@@ -475,8 +478,8 @@ def build_contact_map(spec: MapModel, diameter: float, base_dir: Path, where: st
 def build_seals(case: PneumaticCase, base_dir: str | Path = ".", progress=None,
                 map_workers: int | None = None) -> list[Seal]:
     """Seal objects of a case: friction law (one object per distinct parameter set, so seals
-    with the same law are evaluated together) and contact map (``map_workers``: see
-    :func:`build_contact_map`)."""
+    with the same law are evaluated together) and contact map (``progress(done, total)``
+    while an FE map is built on demand, ``map_workers``: see :func:`build_contact_map`)."""
     base_dir = Path(base_dir)
     laws: dict[str, Any] = {}
     seals = []
@@ -492,7 +495,7 @@ def build_seals(case: PneumaticCase, base_dir: str | Path = ".", progress=None,
         contact_map = None
         if spec.map is not None:
             contact_map = build_contact_map(spec.map, diameter, base_dir, f"{where}.map",
-                                            progress, map_workers)
+                                            progress, map_workers, f"seal {spec.name!r}")
         elif law.name in _USES_LOAD:
             raise InputError(f"{where}.map: the {law.name} law needs the normal force and "
                              "contact width of the seal; give map = {analytic = {cord_diameter "

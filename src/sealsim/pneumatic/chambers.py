@@ -34,6 +34,7 @@ jet-driven convection of air at several bar (10-100 W/(m²·K)).  It is a single
 faster stroke or a smaller cylinder runs closer to adiabatic.  The measured coefficients of
 Carneiro & de Almeida [3]_ would be the better source; their values could not be retrieved
 for sealsim.
+
 References
 ----------
 .. [1] E. Richer, Y. Hurmuzlu, "A high performance pneumatic force actuator system: Part I --

@@ -1,8 +1,8 @@
 r"""Contact maps of a seal: normal force F_N and contact width b over pressure × temperature.
 
-Seed 001 (Fig. 4, Fig. 9) feeds the Θ friction law of each seal with the normal force F_N and
-the contact width b taken from *characteristic diagrams* precomputed by FE.  Here a contact map
-is any object with
+Heipl & Murrenhoff (Fig. 4, Fig. 9) feed the Θ friction law of each seal with the normal force
+F_N and the contact width b taken from *characteristic diagrams* precomputed by FE.  Here a
+contact map is any object with
 
 * ``evaluate(pressure_difference, temperature) -> (normal_force, contact_width)`` -- vectorised,
   SI (Pa, K → N, m), smooth in both arguments;
@@ -37,13 +37,14 @@ long-held squeeze. Both this estimate and the FE map take the modulus from one l
 :meth:`~sealsim.properties.elastomers.Elastomer.modulus_ratio` (``temperature_scaling``:
 "entropic" by default, "modulus" for the dynamic modulus, "none"), so they agree on the sign
 and size of dF_N/dT for the same gland (tested). With the default both make F_N rise with
-temperature, the trend of seed 001 (Fig. 8: the sealing force falls on cooling; Fig. 10: lower
-temperature, lower contact force).
+temperature, the trend of Heipl & Murrenhoff (Fig. 8: the sealing force falls on cooling;
+Fig. 10: lower temperature, lower contact force).
 """
 
 from __future__ import annotations
 
 import hashlib
+import logging
 import os
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -70,6 +71,11 @@ __all__ = [
     "lindley_force_per_length",
     "thermal_squeeze",
 ]
+
+#: Logger of the FE maps built on demand: one INFO record before a build starts (tens of
+#: seconds), naming the seal, the grid and the cache file.  ``sealsim`` commands print it
+#: above their progress bar; from Python, ``logging.basicConfig(level=logging.INFO)`` shows it.
+logger = logging.getLogger(__name__)
 
 
 @runtime_checkable
@@ -177,7 +183,7 @@ def hertz_contact_width(force_per_length, cord_diameter, modulus, poisson=0.5):
     ----------
     K. L. Johnson, Contact Mechanics, Cambridge 1985, §4.2, via
     :func:`sealsim.tribology.contact.hertz_line_half_width`.  Hertz underestimates b at large
-    squeeze; FE maps (issue 5) replace this estimate.
+    squeeze; FE maps (:class:`FEContactMap`) replace this estimate.
 
     Examples
     --------
@@ -275,10 +281,10 @@ class AnalyticContactMap:
     squeeze, the default), "modulus" the catalogue's dynamic E(T, f) of ``elastomer``, "none".
     See :func:`thermal_squeeze`, :func:`lindley_force_per_length`,
     :func:`energised_force_per_length`, :func:`hertz_contact_width`.  F_N rises with Δp and,
-    with the default, with T (seed 001's trend).  Typical numbers: d = 2.5 mm, c0 = 12 %,
-    E0 = 8 MPa (NBR of the catalogue, 6·(C10 + C01)) on D = 32 mm give F_N ≈ 105 N and
-    b ≈ 0.8 mm unpressurised, +57 % F_N at 6 bar, +17 % from 25 to 55 °C (with "modulus" at
-    1 Hz: −21 %).
+    with the default, with T (the trend of Heipl & Murrenhoff, Fig. 8 and 10).  Typical
+    numbers: d = 2.5 mm, c0 = 12 %, E0 = 8 MPa (NBR of the catalogue, 6·(C10 + C01)) on
+    D = 32 mm give F_N ≈ 105 N and b ≈ 0.8 mm unpressurised, +57 % F_N at 6 bar, +17 % from
+    25 to 55 °C (with "modulus" at 1 Hz: −21 %).
 
     Parameters
     ----------
@@ -389,7 +395,7 @@ class AnalyticContactMap:
                    if self.temperature_scaling == "modulus" else {})}
 
 
-# -- FE characteristic maps (issue 5) ---------------------------------------------------------
+# -- FE characteristic maps -------------------------------------------------------------------
 @dataclass
 class FEContactMap:
     """Adapter of an FE characteristic map (:class:`sealsim.structure.maps.SealMap`).
@@ -492,7 +498,7 @@ def default_cache_dir() -> Path:
 
 def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = None,
                          cache_dir: str | Path | None = None, progress=None,
-                         workers: int | None = None) -> FEContactMap:
+                         workers: int | None = None, label: str = "") -> FEContactMap:
     """FE map of a structure case file, built on demand and cached.
 
     The case (with a ``[map]`` table, no variants) is validated and resolved (all defaults
@@ -502,7 +508,10 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
     ``<cache_dir>/<stem>-<hash16>.nc``.  A cached map is read; otherwise
     :func:`sealsim.structure.mapping.compute_map` runs (FE, minutes) and its result is written
     atomically to the cache.  Any change of the structure case or of the FE model gives a new
-    map (old files stay in the cache folder until deleted).
+    map (old files stay in the cache folder until deleted).  Before a map is computed, the
+    logger ``sealsim.pneumatic.contact_maps`` announces it at INFO level ("building FE map for
+    seal 'rod' from rod_seal_12.toml (5 pressures x 3 temperatures, 3 FE load paths), cached
+    at ...").
 
     Parameters
     ----------
@@ -513,16 +522,19 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
     cache_dir : path, optional
         Cache folder (default :func:`default_cache_dir`).
     progress : callable, optional
-        ``progress(done, total)`` while the map is computed.
+        ``progress(done, total)`` while the map is computed (finished FE load paths: one per
+        squeeze and temperature).
     workers : int, optional
         Processes for the FE map (default: the case's ``map.workers``).
+    label : str, optional
+        What the map is for, in the notice (e.g. ``"seal 'rod'"``).
 
     Returns
     -------
     FEContactMap
     """
     from sealsim.cases import dump_case_toml
-    from sealsim.output import atomic_write_bytes
+    from sealsim.files import atomic_write_bytes
 
     try:
         from sealsim.structure.case import load_structure_cases
@@ -552,9 +564,23 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
         except OSError as exc:
             raise InputError(f"cannot create the map cache folder {str(folder)!r}: {exc}") \
                 from None
+        logger.info(_build_notice(case, path, target, label))
         dataset = compute_map(case, workers=workers, progress=progress, case_text=text)
         atomic_write_bytes(target, dataset.to_netcdf())
     return FEContactMap.from_file(target, squeeze=squeeze)
+
+
+def _build_notice(case, path: Path, target: Path, label: str = "") -> str:
+    """The line announcing that the FE map of structure case ``case`` (read from ``path``) is
+    built and cached at ``target``."""
+    spec = case.map
+    squeezes = len(spec.squeeze or [case.load.squeeze[-1]])
+    grid = f"{len(spec.pressure)} pressures x {len(spec.temperature)} temperatures" + (
+        f" x {squeezes} squeezes" if squeezes > 1 else "")
+    paths = squeezes * len(spec.temperature)
+    what = f"for {label} from {path.name}" if label else f"from {path.name}"
+    return (f"building FE map {what} ({grid}, {paths} FE load path{'s' * (paths != 1)}), "
+            f"cached at {target}")
 
 
 # -- compiled Hermite grid (the FE maps and tabulated maps in the pneumatic right-hand side) --

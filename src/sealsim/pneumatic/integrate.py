@@ -19,6 +19,7 @@ from scipy.integrate import solve_ivp
 
 from sealsim.errors import ConvergenceError
 from sealsim.pneumatic import rhs
+from sealsim.units import ZERO_CELSIUS_K
 
 try:  # scipy's LSODA step routine (what solve_ivp's LSODA class calls)
     from scipy.integrate._ivp.lsoda import LsodaDenseOutput
@@ -92,7 +93,7 @@ def _where(system, t, y, mode) -> str:
     d = system.evaluate(t, y, mode, full=True)
     return (f"t = {t:.6g} s, x = {float(d['x'][0]) * 1e3:.4g} mm, v = {float(d['v'][0]):.4g} m/s,"
             f" p1 = {float(d['p1'][0]) / 1e5:.4g} bar, p2 = {float(d['p2'][0]) / 1e5:.4g} bar, "
-            f"T1 = {float(d['T1'][0]) - 273.15:.4g} degC, T2 = {float(d['T2'][0]) - 273.15:.4g} "
+            f"T1 = {float(d['T1'][0]) - ZERO_CELSIUS_K:.4g} degC, T2 = {float(d['T2'][0]) - ZERO_CELSIUS_K:.4g} "
             f"degC, mode {rhs.MODES[mode]}")
 
 

@@ -16,6 +16,7 @@ import pandas as pd
 from sealsim.pneumatic import rhs
 from sealsim.pneumatic.integrate import segment_states
 from sealsim.pneumatic.valve import ANR_DENSITY
+from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["TIMESERIES_COLUMNS", "PneumaticResult", "Sampler", "column_name", "seal_columns"]
 
@@ -170,7 +171,7 @@ def _frame(system, diag) -> pd.DataFrame:
     cols = {
         "time_s": diag["time"], "x_m": diag["x"], "v_m_s": diag["v"],
         "p1_bar_abs": diag["p1"] / 1e5, "p2_bar_abs": diag["p2"] / 1e5,
-        "T1_C": diag["T1"] - 273.15, "T2_C": diag["T2"] - 273.15,
+        "T1_C": diag["T1"] - ZERO_CELSIUS_K, "T2_C": diag["T2"] - ZERO_CELSIUS_K,
         "valve_command": diag["command"], "spool": diag["spool"],
         "mode": _MODE_NAMES[np.searchsorted(_MODE_CODES, diag["mode"])],
         "F_friction_N": diag["f_fric"], "F_pressure_N": diag["f_press"],
@@ -185,10 +186,10 @@ def _frame(system, diag) -> pd.DataFrame:
         if f"theta{i}" in diag:
             cols[f"theta_{name}"] = diag[f"theta{i}"]
         if system.heating and system.tables[3][i, rhs.SI_HEATED]:
-            cols[f"T_{name}_C"] = diag[f"tseal{i}"] - 273.15
+            cols[f"T_{name}_C"] = diag[f"tseal{i}"] - ZERO_CELSIUS_K
     if system.heating:
-        cols["T_tube_metal_C"] = diag["T_tube"] - 273.15
-        cols["T_rod_metal_C"] = diag["T_rod"] - 273.15
+        cols["T_tube_metal_C"] = diag["T_tube"] - ZERO_CELSIUS_K
+        cols["T_rod_metal_C"] = diag["T_rod"] - ZERO_CELSIUS_K
     return pd.DataFrame(cols)
 
 
@@ -284,8 +285,8 @@ def notes(system, diag) -> list[str]:
         if system.heating and np.any(clipped):
             lo, up = s.contact_map.ranges["temperature"]
             out.append(
-                f"seal {names[i]!r}: its temperature left the contact map ({lo - 273.15:.4g} "
-                f"... {up - 273.15:.4g} degC) in {clipped.mean() * 100:.2g} % of the samples "
-                f"(up to {diag[f'tseal{i}'].max() - 273.15:.4g} degC); F_N and b were held at the "
+                f"seal {names[i]!r}: its temperature left the contact map ({lo - ZERO_CELSIUS_K:.4g} "
+                f"... {up - ZERO_CELSIUS_K:.4g} degC) in {clipped.mean() * 100:.2g} % of the samples "
+                f"(up to {diag[f'tseal{i}'].max() - ZERO_CELSIUS_K:.4g} degC); F_N and b were held at the "
                 "map edge")
     return out

@@ -80,6 +80,7 @@ References
 from __future__ import annotations
 
 import time as _time
+from collections.abc import Callable
 from pathlib import Path
 
 from sealsim.pneumatic import results as _results
@@ -92,7 +93,7 @@ from sealsim.pneumatic.system import PneumaticSystem, stick_tolerance
 
 __all__ = ["BACKWARD", "BOOKKEEPING", "FORWARD", "FREE", "MODES", "PRESCRIBED", "STICK",
            "TIMESERIES_COLUMNS", "PneumaticResult", "PneumaticSystem",
-           "run", "simulate", "stick_tolerance"]
+           "run", "run_cases", "simulate", "simulate_variant", "stick_tolerance"]
 
 
 def simulate(case, seals: list[Seal] | None = None, base_dir: str | Path = ".",
@@ -150,3 +151,39 @@ def run(system: PneumaticSystem, progress=None) -> PneumaticResult:
     names = [s.name for s in seals]
     return PneumaticResult(system.case, frame, balances, stats, notes, names,
                            seal_columns(names))
+
+
+def run_cases(cases: dict, base_dir: str | Path = ".",
+              progress: Callable[[str, float, float], None] | None = None
+              ) -> dict[str, PneumaticResult]:
+    """Simulate every variant of a case file (``{variant: PneumaticCase}``).
+
+    Parameters
+    ----------
+    cases : dict
+        ``{variant: PneumaticCase}``, e.g. from
+        :func:`sealsim.pneumatic.case.load_pneumatic_case_file`.
+    base_dir : path
+        Folder that relative paths in the cases refer to (the case file's folder).
+    progress : callable, optional
+        ``progress(variant, simulated_time, end_time)``; while a seal's FE map is built on
+        demand, ``progress("<variant>: FE map", finished_load_paths, load_paths)``.
+
+    Returns
+    -------
+    dict
+        ``{variant: PneumaticResult}``.
+    """
+    return {name: simulate_variant(name, case, base_dir, progress)
+            for name, case in cases.items()}
+
+
+def simulate_variant(name: str, case, base_dir: str | Path = ".",
+                     progress: Callable[[str, float, float], None] | None = None
+                     ) -> PneumaticResult:
+    """One variant of :func:`run_cases`: its seals (FE maps built on demand) and the run."""
+    maps = None if progress is None else (
+        lambda done, total: progress(f"{name}: FE map", done, total))
+    seals = build_seals(case, base_dir, maps)
+    callback = None if progress is None else (lambda t, end: progress(name, t, end))
+    return simulate(case, seals, base_dir, progress=callback)

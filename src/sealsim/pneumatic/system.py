@@ -29,6 +29,7 @@ from sealsim.pneumatic.seal_heating import (
 )
 from sealsim.pneumatic.seals import Seal
 from sealsim.pneumatic.valve import CENTRES, SpoolMotion, port_openings
+from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["PneumaticSystem", "law_parameters", "stick_tolerance"]
 
@@ -314,8 +315,8 @@ class PneumaticSystem:
             where = f"seals[{k}] ({s.name!r})"
             if not (tlo - 1e-9 <= s.temperature <= thi + 1e-9):
                 raise InputError(
-                    f"{where}: seal temperature {s.temperature - 273.15:.6g} degC is outside its "
-                    f"contact map ({tlo - 273.15:.6g} ... {thi - 273.15:.6g} degC); the map is "
+                    f"{where}: seal temperature {s.temperature - ZERO_CELSIUS_K:.6g} degC is outside its "
+                    f"contact map ({tlo - ZERO_CELSIUS_K:.6g} ... {thi - ZERO_CELSIUS_K:.6g} degC); the map is "
                     "not extrapolated -- extend its temperature grid or change the temperature")
             need = 0.0 if s.location == "wiper" else dp_max
             if need > phi * (1 + 1e-9) or plo > 1e-9 * max(phi, 1.0):

@@ -1,6 +1,8 @@
 """Material and lubricant properties: oils (ASTM D341) and elastomers (WLF, E(T)).
 
-The public API of :mod:`sealsim.properties.oils` and :mod:`sealsim.properties.elastomers` is
+The public API of :mod:`sealsim.properties.oils` and :mod:`sealsim.properties.elastomers` (the
+elastomer record and catalogue, with the laws of :mod:`~sealsim.properties.viscoelasticity`,
+:mod:`~sealsim.properties.rubber_modulus` and :mod:`~sealsim.properties.thermal_expansion`) is
 re-exported here, so ``from sealsim.properties import get_oil, get_elastomer`` works.  The oil
 function ``density`` is deliberately *not* re-exported (the bare name would be ambiguous next to
 elastomer densities); use ``sealsim.properties.oils.density`` or :meth:`Oil.density`.

@@ -98,9 +98,10 @@ RHO_WATER_15 = 999.0
 #: Oil families.
 FAMILIES = ("mineral", "PAO", "PAG", "ester", "other")
 
-#: Default Barus pressure-viscosity coefficient per family [1/Pa].  Reference notes sec. 5.3
-#: (Stachowiak & Batchelor, Engineering Tribology, Table 2.3): mineral 24-35 GPa^-1 at 30 degC and
-#: 16-20 GPa^-1 at 100 degC; PAO 13-18; PAG/ester 10-15.  One temperature-independent value per
+#: Default Barus pressure-viscosity coefficient per family [1/Pa].  Mineral oils: Stachowiak &
+#: Batchelor, Engineering Tribology, Table 2.3 (heavy machine oils 23.7-34.6 GPa^-1 at 30 degC,
+#: 15.8-19.5 GPa^-1 at 100 degC); PAO 13-18, PAG/ester 10-15 GPa^-1 are typical literature
+#: ranges, not checked against a primary source.  One temperature-independent value per
 #: family, chosen for the 60-100 degC of a seal contact.  alpha*p <= 0.1 at lip pressures, so
 #: this choice matters little.
 DEFAULT_PRESSURE_VISCOSITY = {
@@ -112,10 +113,11 @@ DEFAULT_PRESSURE_VISCOSITY = {
 }
 
 #: Constant thermal conductivity [W/(m K)] and specific heat [J/(kg K)] used for synthetic
-#: families when no value is given: middle of the ranges in the reference notes sec. 5.3
-#: (PAO k 0.14-0.15, c_p 2.1-2.3 kJ/(kg K); PAG k 0.15-0.17, c_p 1.9-2.1 kJ/(kg K)).  Cragoe's
-#: correlation is fitted to petroleum oils and gives ~0.11 W/(m K) for a PAG of s15 = 1.02.
-#: Families not listed (mineral, ester, other) use the Cragoe correlations.
+#: families when no value is given: middle of typical literature ranges, not checked against a
+#: primary source (PAO k 0.14-0.15, c_p 2.1-2.3 kJ/(kg K); PAG k 0.15-0.17, c_p
+#: 1.9-2.1 kJ/(kg K)).  Cragoe's correlation is fitted to petroleum oils and gives
+#: ~0.11 W/(m K) for a PAG of s15 = 1.02.  Families not listed (mineral, ester, other) use the
+#: Cragoe correlations.
 DEFAULT_THERMAL = {
     "PAO": (0.145, 2200.0),
     "PAG": (0.160, 2000.0),
@@ -467,8 +469,8 @@ def density(temperature, rho15, expansion=6.4e-4):
 
     References
     ----------
-    Reference notes ``lip_seal_friction.md`` sec. 5.3; the expansion coefficient is the usual
-    value for petroleum oils (e.g. ASTM D1250 / API MPMS 11.1 tables, linearised).
+    The expansion coefficient is the usual value for petroleum oils (e.g. ASTM D1250 / API
+    MPMS 11.1 tables, linearised).
 
     Examples
     --------
@@ -507,7 +509,7 @@ def thermal_conductivity_cragoe(temperature, rho15):
     References
     ----------
     C. S. Cragoe, Thermal Properties of Petroleum Products, NBS Miscellaneous Publication 97,
-    1929 (SI form as in the reference notes ``lip_seal_friction.md`` sec. 5.3).
+    1929 (converted to SI units).
 
     Examples
     --------
@@ -544,7 +546,7 @@ def specific_heat_cragoe(temperature, rho15):
     References
     ----------
     C. S. Cragoe, Thermal Properties of Petroleum Products, NBS Miscellaneous Publication 97,
-    1929 (SI form as in the reference notes ``lip_seal_friction.md`` sec. 5.3).
+    1929 (converted to SI units).
 
     Examples
     --------

@@ -8,14 +8,13 @@ AGMA 14FTM14, 2014).
   lubricant shear and viscoelastic losses on the real contact area;
 * :mod:`.thermal_model` -- the axisymmetric thermal grid of shaft, seal and case;
 * :mod:`.simulation` -- the coupled transient run (:func:`simulate`), the steady operating
-  point (:func:`steady_state`) and the friction map over speed and temperature
-  (:func:`friction_map`);
-* :mod:`.study` -- a case file with variants into a result folder (``sealsim rotary run``,
-  :func:`run_case_file`).
+  point (:func:`steady_state`), the friction map over speed and temperature
+  (:func:`friction_map`) and case files with variants (:func:`load_rotary_case`).
 
-The names below are imported on first use (so ``import sealsim.rotary.case`` stays light and
-:mod:`.study`'s plotting is loaded only when asked for).  One call for a steady operating
-point: :func:`sealsim.lip_seal_torque`.
+The result folder of ``sealsim rotary run`` (tables, summary, figures) is written by
+:mod:`sealsim.runs.rotary`.  The names below are imported on first use (so
+``import sealsim.rotary.case`` stays light).  One call for a steady operating point:
+:func:`sealsim.lip_seal_torque`.
 
 >>> from sealsim.rotary import RotaryCase, steady_state
 >>> case = RotaryCase(seal={"shaft_diameter": 0.06}, environment={"sump_temperature": 343.15})
@@ -32,7 +31,7 @@ _EXPORTS = {
     "LipSealFrictionParameters": "friction",
     "RotaryModel": "simulation", "RotaryResult": "simulation", "friction_map": "simulation",
     "simulate": "simulation", "steady_state": "simulation",
-    "load_rotary_case": "study", "run_case_file": "study",
+    "load_rotary_case": "simulation",
 }
 __all__ = list(_EXPORTS)
 

@@ -1,13 +1,14 @@
-"""Coupled friction–thermal simulation of a radial lip seal (seed 000, Fig. 4).
+"""Coupled friction–thermal simulation of a radial lip seal (Organisciak et al. 2014, Fig. 4).
 
 Every time step (backward Euler, adaptive Δt):
 
 1. the speed ω(t) of the duty cycle;
 2. viscosity, lip force, film, contact area and μ_dry at the current contact temperature
    → friction torque T (:class:`~sealsim.rotary.friction.LipSealFriction`);
-3. heat q = T·ω into the contact band of the shaft (seed Eq. 6);
+3. heat q = T·ω into the contact band of the shaft (Organisciak et al. 2014, Eq. 6);
 4. conduction through shaft and seal, convection to oil (sump node) and air, sump ↔ housing ↔
-   ambient (seed Eq. 7, :mod:`sealsim.thermal.conduction`) → new temperatures.
+   ambient (Organisciak et al. 2014, Eq. 7, :mod:`sealsim.thermal.conduction`) → new
+   temperatures.
 
 Step 2 uses the contact temperature of the previous step (explicit coupling).  The feedback is
 weak and stabilising (a hotter contact has thinner oil and a lower μ_dry), so it needs no
@@ -29,6 +30,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from sealsim.cases import expand_variants, load_toml
 from sealsim.errors import InputError, ModelError
 from sealsim.properties.elastomers import ServiceRangeWarning, get_elastomer
 from sealsim.properties.oils import OilRangeWarning
@@ -55,11 +57,11 @@ from sealsim.tribology.rubber_friction import (
     hysteresis_peak_speed,
     loss_peak_frequency,
 )
+from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["RotaryModel", "RotaryResult", "friction_map", "housing_defaults", "lip_seal_friction",
-           "lip_style", "simulate", "steady_state"]
+           "lip_style", "load_rotary_case", "simulate", "steady_state"]
 
-CELSIUS_0 = 273.15
 STEEL_DENSITY, STEEL_SPECIFIC_HEAT = 7850.0, 460.0
 #: Oil volumetric expansion coefficient for free convection [1/K] (mineral oil ≈ 7e-4).
 OIL_EXPANSION = 7e-4
@@ -90,7 +92,8 @@ def housing_defaults(sump_volume: float) -> tuple[float, float, float]:
 
     The oil level is at the shaft centre in the middle of the box, so the box holds twice the
     oil volume.  Both the outer area (to ambient) and the wetted area (oil to wall) therefore
-    grow with V^(2/3): this is how the sump volume acts on heat dissipation (seed 000 Fig. 13).
+    grow with V^(2/3): this is how the sump volume acts on heat dissipation (Organisciak et al.
+    2014, Fig. 13).
 
     Parameters
     ----------
@@ -417,7 +420,7 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
         except InputError as exc:
             raise ModelError(f"rotary simulation stopped at t = {t1:.1f} s "
                              f"({omega * 30 / math.pi:.0f} rpm, contact temperature "
-                             f"{t_contact - CELSIUS_0:.1f} degC): {exc}") from None
+                             f"{t_contact - ZERO_CELSIUS_K:.1f} degC): {exc}") from None
         power = float(state.power)
         key = (round(math.log1p(abs(omega)) / 0.02), round(t_sump / 2.0))
         before = watched(temps)
@@ -460,10 +463,10 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
     stored = float(capacity @ temps - stored0)
     energy = {"generated": generated, "stored": stored, "dissipated": dissipated,
               "rel_error": abs(generated - stored - dissipated) / max(abs(generated), 1e-12)}
-    if frame["T_contact_C"].max() > service_max - CELSIUS_0:
+    if frame["T_contact_C"].max() > service_max - ZERO_CELSIUS_K:
         notes.append(f"contact temperature reached {frame['T_contact_C'].max():.0f} degC, above "
                      f"the service limit of {model.elastomer.name} "
-                     f"({service_max - CELSIUS_0:.0f} degC)")
+                     f"({service_max - ZERO_CELSIUS_K:.0f} degC)")
     sliding = frame.loc[frame["speed_rpm"] != 0, "film_um"]
     if len(sliding):
         film = film_range_note(sliding.min() * 1e-6, sliding.max() * 1e-6)
@@ -481,15 +484,16 @@ def _row(model: RotaryModel, state: FrictionState, t, omega, temps, t_contact) -
     lip_force = float(state.lip_force)
     mu_eff = abs(torque) * 2 / model.case.seal.shaft_diameter / lip_force
     g = float(model.friction.duty_parameter(state, omega))
-    return (t, omega * 30 / math.pi, torque, float(state.power), t_contact - CELSIUS_0,
-            float(temps[model.grid.groove_cell]) - CELSIUS_0,
-            model.sump_temperature(temps) - CELSIUS_0, float(state.film) * 1e6,
+    return (t, omega * 30 / math.pi, torque, float(state.power), t_contact - ZERO_CELSIUS_K,
+            float(temps[model.grid.groove_cell]) - ZERO_CELSIUS_K,
+            model.sump_temperature(temps) - ZERO_CELSIUS_K, float(state.film) * 1e6,
             float(state.force_lubricant), float(state.force_material),
-            model.housing_temperature(temps) - CELSIUS_0, lip_force, mu_eff,
+            model.housing_temperature(temps) - ZERO_CELSIUS_K, lip_force, mu_eff,
             float(state.film_ratio), g)
 
 
-#: The seed's validation convention: average over the last 30 s of each speed step.
+#: The validation convention of Organisciak et al. (2014): average over the last 30 s of each
+#: speed step.
 AVERAGING_WINDOW = 30.0
 
 
@@ -568,7 +572,7 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
                 return model.friction.evaluate(angular_speed, t_contact)
         except InputError as exc:
             raise ModelError(f"steady state at {angular_speed * 30 / math.pi:.0f} rpm: contact "
-                             f"temperature {t_contact - CELSIUS_0:.1f} degC: {exc}") from None
+                             f"temperature {t_contact - ZERO_CELSIUS_K:.1f} degC: {exc}") from None
 
     sump = None if model.sump_fixed else model.network.node_index["sump"]
     # the first slope from a 1 K difference, then secants through the iterates
@@ -609,10 +613,10 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
     if angular_speed != 0 and film_range_note(film, film):
         warnings.warn(film_range_note(film, film), FilmRangeWarning, stacklevel=2)
     return {"torque_Nm": float(state.torque), "power_W": float(state.power),
-            "T_contact_C": t_contact - CELSIUS_0,
-            "T_groove_C": float(temps[model.grid.groove_cell]) - CELSIUS_0,
-            "T_sump_C": model.sump_temperature(temps) - CELSIUS_0,
-            "T_housing_C": model.housing_temperature(temps) - CELSIUS_0, "film_um": film * 1e6,
+            "T_contact_C": t_contact - ZERO_CELSIUS_K,
+            "T_groove_C": float(temps[model.grid.groove_cell]) - ZERO_CELSIUS_K,
+            "T_sump_C": model.sump_temperature(temps) - ZERO_CELSIUS_K,
+            "T_housing_C": model.housing_temperature(temps) - ZERO_CELSIUS_K, "film_um": film * 1e6,
             "F_lub_N": float(state.force_lubricant), "F_material_N": float(state.force_material),
             "lip_force_N": float(state.lip_force), "mu_dry": float(state.mu_dry),
             "asperity_share": float(state.asperity_share), "iterations": iteration}
@@ -643,7 +647,7 @@ def friction_map(case: RotaryCase, speeds_rpm, temperatures_c) -> pd.DataFrame:
     omega = n.ravel() * np.pi / 30.0
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", (ServiceRangeWarning, OilRangeWarning))
-        state = friction.evaluate(omega, t.ravel() + CELSIUS_0)
+        state = friction.evaluate(omega, t.ravel() + ZERO_CELSIUS_K)
     return pd.DataFrame({
         "speed_rpm": n.ravel(), "T_contact_C": t.ravel(), "torque_Nm": state.torque,
         "power_W": state.power, "film_um": state.film * 1e6, "F_lub_N": state.force_lubricant,
@@ -651,3 +655,13 @@ def friction_map(case: RotaryCase, speeds_rpm, temperatures_c) -> pd.DataFrame:
         "asperity_share": state.asperity_share,
         "mu_eff": np.abs(state.torque) * 2 / case.seal.shaft_diameter / state.lip_force,
         "duty_parameter": friction.duty_parameter(state, omega)})
+
+
+def load_rotary_case(path: str | Path) -> dict[str, RotaryCase]:
+    """Read and validate a rotary case file; returns ``{variant: RotaryCase}``.
+
+    Relative paths in the case (a duty-cycle CSV) refer to the case file's folder: simulate
+    with ``simulate(case, base_dir=Path(path).parent)``.
+    """
+    path = Path(path)
+    return expand_variants(RotaryCase, load_toml(path), f"rotary case {str(path)!r}")

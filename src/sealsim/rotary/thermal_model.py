@@ -1,4 +1,5 @@
-"""Axisymmetric thermal model of a shaft and a radial lip seal in a housing (seed 000 Eq. 6-7).
+"""Axisymmetric thermal model of a shaft and a radial lip seal in a housing (Organisciak et al.
+2014, Eq. 6-7).
 
 Geometry (z = 0 at the contact line, oil side at z < 0, r radial)::
 

@@ -3,9 +3,11 @@
 A study sits above the models: it changes fields of a model's case (``seal.cord_diameter``,
 ``oil.name``, a linked FE map case's material hardness), runs the model's own run function for
 every combination or sample, collects named numbers of the model's summary (and optionally its
-time series) and analyses them::
+time series) and analyses them; :func:`sealsim.runs.study.run_study` writes the result folder
+of ``sealsim study run``::
 
-    from sealsim.studies import load_study, run_study
+    from sealsim.runs.study import run_study
+    from sealsim.studies import load_study
 
     study = load_study("examples/studies/gearbox_oils.toml")
     result = run_study(study, "results/gearbox_oils", workers=2)
@@ -18,13 +20,14 @@ time series) and analyses them::
 * :mod:`~sealsim.studies.engine` -- in this process, a local Dask cluster, or a running one;
 * :mod:`~sealsim.studies.store` -- finished runs kept for ``--resume``;
 * :mod:`~sealsim.studies.results`, :mod:`~sealsim.studies.analysis` -- Dataset, table,
-  percentiles, Sobol' indices; :mod:`~sealsim.studies.study` -- the result folder.
+  percentiles, Sobol' indices; :mod:`~sealsim.studies.study` -- the runs of a study computed
+  and analysed.
 """
 
-__all__ = ["Study", "StudyResult", "load_study", "run_study", "run_study_file"]
+__all__ = ["Study", "StudyResult", "analyse", "compute_runs", "load_study"]
 
-_WHERE = {"Study": "spec", "load_study": "spec", "StudyResult": "study", "run_study": "study",
-          "run_study_file": "study"}
+_WHERE = {"Study": "spec", "load_study": "spec", "StudyResult": "study", "analyse": "study",
+          "compute_runs": "study"}
 
 
 def __getattr__(name: str):

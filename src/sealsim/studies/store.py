@@ -36,7 +36,7 @@ import numpy as np
 
 from sealsim import __version__
 from sealsim.errors import InputError, ResultExistsError
-from sealsim.output import atomic_write_bytes
+from sealsim.files import atomic_write_bytes
 
 __all__ = ["WorkFolder", "work_folder_for"]
 

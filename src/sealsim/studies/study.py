@@ -1,43 +1,34 @@
-"""Run a study into a result folder: what ``sealsim study run`` calls.
+"""Compute a study's runs and analyse them (the result folder is :mod:`sealsim.runs.study`).
 
-:func:`run_study` checks the result folder (:class:`sealsim.output.ResultFolder`: refused if it
-holds results without ``force``, locked while the study runs), opens the study's work folder
-(:mod:`sealsim.studies.store`: finished runs survive an interrupted study, ``resume`` reuses
-them), computes the missing runs on the engine (:mod:`sealsim.studies.engine`), then writes the
-results and commits them all at once:
-
-* ``study.nc`` -- the xarray Dataset (:mod:`sealsim.studies.results`);
-* ``runs.csv`` -- one row per run: factors, outputs, status, error;
-* ``summary.json`` -- counts, engine, timing, statistics of every output, failures, notes;
-* ``distribution.csv`` (sampled designs) -- mean, std, percentiles per output;
-* ``sensitivity.csv`` (sampled designs) -- Sobol' indices per output and factor;
-* ``case_resolved.toml`` (and ``case_resolved_<link>.toml`` per linked case), ``study.toml``;
-* figures: ``response_<output>.png`` and ``heatmap_<output>.png`` for grids,
-  ``histogram_<output>.png`` and ``scatter_<output>.png`` for samples, ``sensitivity.png``.
+:func:`compute_runs` opens the study's work folder (:mod:`sealsim.studies.store`: finished runs
+survive an interrupted study, ``resume`` reuses them), prepares linked cases such as FE maps
+once per distinct case, and computes the missing runs on the engine
+(:mod:`sealsim.studies.engine`).  :func:`analyse` turns the run records into the
+:class:`StudyResult`: the xarray Dataset (:mod:`sealsim.studies.results`), one table row per
+run, the summary (counts, engine, timing, statistics of every output, failures, notes) and, for
+sampled designs, the distribution and Sobol' sensitivity tables
+(:mod:`sealsim.studies.analysis`).
 """
 
 from __future__ import annotations
 
-import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from pathlib import Path
 
 import pandas as pd
 import xarray as xr
 
 from sealsim import __version__
 from sealsim.errors import InputError
-from sealsim.output import ResultFolder
 from sealsim.studies.analysis import distribution_table, sensitivity_table, spread
 from sealsim.studies.engine import link_key, open_engine
 from sealsim.studies.execute import RunTemplate
 from sealsim.studies.models import MODELS
 from sealsim.studies.results import assemble, column_name
-from sealsim.studies.spec import Study, load_study
-from sealsim.studies.store import WorkFolder, work_folder_for
+from sealsim.studies.spec import Study
+from sealsim.studies.store import WorkFolder
 
-__all__ = ["StudyResult", "run_study", "run_study_file"]
+__all__ = ["StudyResult", "analyse", "compute_runs"]
 
 #: failures listed in summary.json (all are in runs.csv)
 LISTED_FAILURES = 20
@@ -45,18 +36,14 @@ LISTED_FAILURES = 20
 
 @dataclass
 class StudyResult:
-    """What :func:`run_study` returns (and wrote)."""
+    """A study's results: what :func:`analyse` returns and :func:`sealsim.runs.study.run_study`
+    writes."""
 
     dataset: xr.Dataset
     table: pd.DataFrame
     summary: dict
     distribution: pd.DataFrame = field(default_factory=pd.DataFrame)
     sensitivity: pd.DataFrame = field(default_factory=pd.DataFrame)
-
-
-def run_study_file(path: str | Path, out: str | Path, **kwargs) -> StudyResult:
-    """:func:`load_study` then :func:`run_study` (keywords as there)."""
-    return run_study(load_study(path), out, **kwargs)
 
 
 class _OutputCheck:
@@ -90,18 +77,20 @@ class _OutputCheck:
                              "then run again with --force")
 
 
-def run_study(study: Study, out: str | Path, *, workers: int | None = None,
-              scheduler: str | None = None, client=None, resume: bool = False,
-              force: bool = False,
-              progress: Callable[[str, int, int, int], None] | None = None) -> StudyResult:
-    """Compute every run of ``study`` and write the result folder ``out``.
+def compute_runs(study: Study, work: WorkFolder, *, workers: int | None = None,
+                 scheduler: str | None = None, client=None, resume: bool = False,
+                 discard: bool = False,
+                 progress: Callable[[str, int, int, int], None] | None = None
+                 ) -> tuple[list[dict], dict]:
+    """Compute every run of ``study`` that ``work`` does not hold yet.
 
     Parameters
     ----------
     study : Study
         From :func:`sealsim.studies.load_study`.
-    out : path-like
-        Result folder (refused if it holds results, unless ``force``).
+    work : WorkFolder
+        Where finished runs are kept (only one process may use it: the caller holds the lock
+        of the result folder it belongs to).
     workers : int, optional
         Processes of the local Dask cluster (default: the usable cores); 0 computes in this
         process without Dask.
@@ -110,59 +99,53 @@ def run_study(study: Study, out: str | Path, *, workers: int | None = None,
     client : distributed.Client, optional
         A connected client to use (from Python; it is not closed).
     resume : bool
-        Reuse the finished runs of an interrupted run of this study (only the missing runs
-        are computed).
-    force : bool
-        Replace existing results; without ``resume``, also drop the finished runs of an
-        interrupted study.
+        Reuse the finished runs of an interrupted run of this study.
+    discard : bool
+        Drop the finished runs of an interrupted study (without ``resume``).
     progress : callable, optional
         ``progress(phase, done, total, failed)``; phase ``"prepare"`` (linked cases such as FE
         maps) or ``"runs"``.
+
+    Returns
+    -------
+    records : list of dict
+        One record per run, in run order (:mod:`sealsim.studies.execute`).
+    info : dict
+        ``engine`` (its description), ``computed`` and ``reused`` run counts.
     """
-    started = time.perf_counter()
-    folder = ResultFolder(out, force=force, inputs=study.inputs)   # checked before computing
-    fingerprint = study.fingerprint()
     counts = {"computed": 0, "failed": 0}
-    with folder:
-        work = WorkFolder(work_folder_for(out))
-        finished = work.start(fingerprint, str(study.source), study.n_runs, resume=resume,
-                              discard=force)
-        reused = len(finished)
-        with open_engine(workers, scheduler, client) as engine:
-            engine_info = engine.describe()
-            template = RunTemplate(
-                model=study.model, documents=study.documents,
-                link_names={key: path.name for key, path in study.link_files.items()},
-                base_dir=str(study.base_dir),
-                series_variables=tuple(study.series.variables) if study.series else (),
-                series_interval=study.series_interval,
-                map_workers=None if engine.client is None else 1)
-            check = _OutputCheck(study)
-            failed_before = sum(1 for i in finished if work.load(i)["status"] != "ok")
-            counts["failed"] = failed_before
+    finished = work.start(study.fingerprint(), str(study.source), study.n_runs, resume=resume,
+                          discard=discard)
+    reused = len(finished)
+    with open_engine(workers, scheduler, client) as engine:
+        engine_info = engine.describe()
+        template = RunTemplate(
+            model=study.model, documents=study.documents,
+            link_names={key: path.name for key, path in study.link_files.items()},
+            base_dir=str(study.base_dir),
+            series_variables=tuple(study.series.variables) if study.series else (),
+            series_interval=study.series_interval,
+            map_workers=None if engine.client is None else 1)
+        check = _OutputCheck(study)
+        counts["failed"] = sum(1 for i in finished if work.load(i)["status"] != "ok")
 
-            def store(record: dict) -> None:
-                work.save(record)
-                counts["computed"] += 1
-                counts["failed"] += record["status"] != "ok"
-                if progress:
-                    progress("runs", reused + counts["computed"], study.n_runs,
-                             counts["failed"])
-                check(record)
-
-            jobs = [(i, study.assignments(i)) for i in range(study.n_runs) if i not in finished]
+        def store(record: dict) -> None:
+            work.save(record)
+            counts["computed"] += 1
+            counts["failed"] += record["status"] != "ok"
             if progress:
-                progress("runs", reused, study.n_runs, counts["failed"])
-            jobs = _prepare(study, template, engine, jobs, store, progress)
-            engine.run(template, jobs, store, batch_size=study.batch_size)
-        records = [work.load(i) for i in range(study.n_runs)]
-        for record in records:
+                progress("runs", reused + counts["computed"], study.n_runs, counts["failed"])
             check(record)
-        result = _write(folder, study, records, {
-            "engine": engine_info, "computed": counts["computed"], "reused": reused,
-            "wall_time_s": time.perf_counter() - started})
-    work.remove()
-    return result
+
+        jobs = [(i, study.assignments(i)) for i in range(study.n_runs) if i not in finished]
+        if progress:
+            progress("runs", reused, study.n_runs, counts["failed"])
+        jobs = _prepare(study, template, engine, jobs, store, progress)
+        engine.run(template, jobs, store, batch_size=study.batch_size)
+    records = [work.load(i) for i in range(study.n_runs)]
+    for record in records:
+        check(record)
+    return records, {"engine": engine_info, "computed": counts["computed"], "reused": reused}
 
 
 def _prepare(study, template, engine, jobs, store, progress) -> list:
@@ -191,18 +174,25 @@ def _prepare(study, template, engine, jobs, store, progress) -> list:
     return sorted(remaining)
 
 
-def _write(folder: ResultFolder, study: Study, records: list[dict], info: dict) -> StudyResult:
-    from sealsim.plotting import studies as plots
+def analyse(study: Study, records: list[dict], info: dict) -> StudyResult:
+    """The dataset, run table, summary and (sampled designs) distribution and sensitivity
+    tables of a study's run records.
 
+    Parameters
+    ----------
+    study : Study
+        The study.
+    records : list of dict
+        Its run records (:func:`compute_runs`).
+    info : dict
+        ``engine``, ``computed``, ``reused`` (:func:`compute_runs`) and ``wall_time_s``, put
+        into the summary.
+
+    Returns
+    -------
+    StudyResult
+    """
     dataset, table = assemble(study, records)
-    folder.write_netcdf("study.nc", dataset)
-    folder.write_csv("runs.csv", table, float_format="%.10g")
-    folder.write_text("study.toml", study.text)
-    for label, text in study.resolved_cases().items():
-        name = "case_resolved.toml" if label == "case" else \
-            f"case_resolved_{label.replace('.', '_')}.toml"
-        folder.write_text(name, text)
-
     ok = dataset["status"].values.astype(bool)
     failures = [{"run": r["index"], "error": r["error"]} for r in records
                 if r["status"] != "ok"]
@@ -213,29 +203,9 @@ def _write(folder: ResultFolder, study: Study, records: list[dict], info: dict) 
         outputs[out.name] = {"path": out.path, "unit": out.unit,
                              "column": column_name(out.name, out.unit),
                              **spread(dataset[out.name].values)}
-    title = study.title or study.source.stem
     if study.sampled:
         distribution = distribution_table(study, dataset)
-        folder.write_csv("distribution.csv", distribution, float_format="%.10g")
         sensitivity, notes = sensitivity_table(study, dataset)
-        if not sensitivity.empty:
-            folder.write_csv("sensitivity.csv", sensitivity, float_format="%.6g")
-            folder.savefig("sensitivity.png", plots.sensitivity_figure(sensitivity, title))
-        names = [f.name for f in study.sampled_factors]
-        for out in study.outputs:
-            folder.savefig(f"histogram_{out.name}.png", plots.histogram_figure(
-                dataset, out.name, outputs[out.name], title))
-            folder.savefig(f"scatter_{out.name}.png",
-                           plots.scatter_figure(dataset, out.name, names, title))
-    grid = study.grid_factors
-    if grid:
-        by_size = sorted(grid, key=lambda f: (not f.numeric, -len(f.values)))
-        for out in study.outputs:
-            folder.savefig(f"response_{out.name}.png",
-                           plots.response_figure(dataset, out.name, by_size[0].name, title))
-            if len(grid) >= 2:
-                folder.savefig(f"heatmap_{out.name}.png", plots.heatmap_figure(
-                    dataset, out.name, by_size[0].name, by_size[1].name, title))
     summary = {
         "title": study.title, "source": str(study.source), "sealsim_version": __version__,
         "model": study.model, "design": study.design, "seed": study.seed,
@@ -257,6 +227,4 @@ def _write(folder: ResultFolder, study: Study, records: list[dict], info: dict) 
     }
     if not sensitivity.empty:
         summary["sensitivity"] = sensitivity.to_dict("records")
-    folder.write_json("summary.json", summary)
     return StudyResult(dataset, table, summary, distribution, sensitivity)
-

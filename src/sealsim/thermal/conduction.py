@@ -1,8 +1,8 @@
 """Transient axisymmetric heat conduction on a structured (r, z) finite-volume grid.
 
-The energy equation of seed 000 (Eq. 7), ρ·c_p·∂T/∂t = ∇·(k∇T) + q, is integrated over
-ring-shaped cells of a tensor grid (r_edges × z_edges).  Each cell holds one solid (index into
-a list of :class:`Solid`) or is void (-1, fluid: oil or air).  Conductances between cell
+The energy equation of Organisciak et al. (2014, Eq. 7), ρ·c_p·∂T/∂t = ∇·(k∇T) + q, is
+integrated over ring-shaped cells of a tensor grid (r_edges × z_edges).  Each cell holds one
+solid (index into a list of :class:`Solid`) or is void (-1, fluid: oil or air).  Conductances between cell
 centres use the exact cylindrical-shell resistance ln(r_face/r_centre)/(2π·k·Δz) radially and
 Δz/(2·k·A) axially, in series across a face (Patankar, *Numerical Heat Transfer and Fluid
 Flow*, 1980, §4.2).  Faces between a solid cell and a void cell or the domain edge are

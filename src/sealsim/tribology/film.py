@@ -1,17 +1,17 @@
 """Lubricant film under a radial lip: EHL-type film law and its measured calibration.
 
-Seed 000 (Organisciak et al., AGMA 14FTM14, 2014) writes the effective film thickness as
+Organisciak et al. (SKF, AGMA 14FTM14, 2014) write the effective film thickness as
 ``h_e = f·(η·u)^0.66`` (Eq. 5, from soft-EHL theory) and reports a capacitance measurement on a
 lip seal fitted by ``h = 3.45·(u·η)^0.68`` (Eq. 8), with h in µm, u in m/s and η in Pa·s
-(units as read in the reference notes, lip_seal_friction.md §1.2: they give 0.1--1 µm in the
-usual speed range, which matches the 0.25--2.5 µm literature range for lip seal films).
+(units inferred by sealsim, the paper states none: with them the fit gives 0.1--1 µm in the usual
+speed range, which matches the 0.25--2.5 µm literature range for lip seal films).
 
 The exponent 0.66 is the isoviscous-elastic (soft EHL) speed exponent of Hamrock & Dowson,
 J. Lubr. Technol. 100 (1978) 236: ``H ∝ U^0.64...0.65``.  Their central film of a soft
 elongated contact, H_c = 7.32·(1 − 0.72·e^(−0.28k))·U^0.64·W^(−0.22) with H = h/R,
-U = η·u/(E′·R) and W = w/(E′·R²), also gives the load and modulus dependence that the seed's
+U = η·u/(E′·R) and W = w/(E′·R²), also gives the load and modulus dependence that the paper's
 law leaves out: at fixed geometry h ∝ w^(−0.22)·E′^(−0.64+0.22) = w^(−0.22)·E′^(−0.42).
-sealsim applies these two exponents to the seed law, relative to the seal the law was
+sealsim applies these two exponents to the paper's law, relative to the seal the law was
 measured on (:func:`soft_ehl_load_modulus_factor`), so a lighter or softer lip gets a thicker
 film.
 
@@ -44,26 +44,27 @@ __all__ = [
     "soft_ehl_load_modulus_factor",
 ]
 
-#: Exponent of (η·u) in the EHL film law, seed 000 Eq. 5 [-].
+#: Exponent of (η·u) in the EHL film law, Organisciak et al. (2014) Eq. 5 [-].
 EHL_EXPONENT = 0.66
-#: Measured film fit of seed 000 Eq. 8: h[µm] = 3.45·(u[m/s]·η[Pa s])^0.68.
+#: Measured film fit of Organisciak et al. (2014) Eq. 8: h[µm] = 3.45·(u[m/s]·η[Pa s])^0.68.
 SKF_FIT_COEFFICIENT = 3.45e-6  # m / (Pa m)^0.68
 SKF_FIT_EXPONENT = 0.68
-#: Range of u·η [Pa·m] over which the fit is used here: 10 rpm to 3000 rpm on an 80 mm shaft
-#: with VG 32...VG 220 oils at 40...100 °C spans about 2e-4...0.5 Pa·m (reference notes §1.2
-#: table; the seed's Fig. 7 range itself is not legible).
+#: Range of u·η [Pa·m] over which the fit is used here (sealsim's choice): 10 to 3000 rpm on an
+#: 80 mm shaft, from VG 32 at 100 °C and 10 rpm (2e-4) to VG 68 at 48 °C or VG 220 at 73 °C and
+#: 3000 rpm (0.5), with the catalogue viscosities (the paper's text does not give the axis range
+#: of its Fig. 7).
 SKF_FIT_RANGE = (2e-4, 0.5)
-#: Thinnest film the model uses [m]: 0.02 µm, the SKF fit at 10 rpm with VG 68 at 80 °C
-#: (reference notes §1.2/§9).  Below it the contact is boundary lubricated; a thinner value
-#: would only make the viscous term diverge at standstill, while the material term (which
-#: dominates there) is unaffected.
+#: Thinnest film the model uses [m]: 0.02 µm, the fit of Organisciak et al. (2014, Eq. 8) at
+#: 10 rpm on an 80 mm shaft with VG 68 at 80 °C, 3.45·(0.042·0.0124)^0.68 µm.  Below it
+#: the contact is boundary lubricated; a thinner value would only make the viscous term diverge
+#: at standstill, while the material term (which dominates there) is unaffected.
 FILM_FLOOR = 2e-8
 #: Range of measured lip seal film thicknesses [m] (Jagger 1957; Poll & Gabelli 1992).
 MEASURED_FILM_RANGE = (0.25e-6, 2.5e-6)
 #: Load and modulus exponents of the soft-EHL central film (Hamrock & Dowson 1978) [-].
 SOFT_EHL_LOAD_EXPONENT = -0.22
 SOFT_EHL_MODULUS_EXPONENT = -0.42
-#: Lip load per unit circumference of the seal the film law was measured on [N/m]: the seed
+#: Lip load per unit circumference of the seal the film law was measured on [N/m]: the paper
 #: does not give it; sealsim takes its default lip, 0.15 N/mm (an assumption).
 FILM_REFERENCE_LOAD = 150.0
 #: Quasi-static Young's modulus of that seal's lip [Pa]: 5 MPa, a 75 Shore A NBR lip between
@@ -86,7 +87,7 @@ def film_coefficient_matching_fit(exponent: float = EHL_EXPONENT,
     Parameters
     ----------
     exponent : float
-        Exponent of the film law [-]; 0.66 in seed 000 Eq. 5.
+        Exponent of the film law [-]; 0.66 in Organisciak et al. (2014) Eq. 5.
     fit_range : tuple of float
         Range of η·u [Pa·m] to match.
 
@@ -107,7 +108,7 @@ def film_coefficient_matching_fit(exponent: float = EHL_EXPONENT,
 
 def film_thickness(viscosity, speed, coefficient, exponent=EHL_EXPONENT, film_factor=1.0,
                    floor=FILM_FLOOR):
-    """Effective lubricant film thickness under the lip, seed 000 Eq. 5.
+    """Effective lubricant film thickness under the lip, Organisciak et al. (2014) Eq. 5.
 
     ``h_e = max(film_factor · f · (η·u)^exponent, floor)``
 
@@ -120,11 +121,11 @@ def film_thickness(viscosity, speed, coefficient, exponent=EHL_EXPONENT, film_fa
     coefficient : float
         Film coefficient f [m/(Pa·m)^exponent]; see :func:`film_coefficient_matching_fit`.
     exponent : float
-        Exponent of η·u [-], 0.66 (seed 000 Eq. 5, soft EHL).
+        Exponent of η·u [-], 0.66 (Organisciak et al. 2014, Eq. 5, soft EHL).
     film_factor : float or array_like
         Multiplier for the lip style [-]: 1 for a plain lip, > 1 for a wave lip whose
-        sinusoidal track builds a thicker film (seed 000, "Comparison between molded wave and
-        trimmed plain lips").
+        sinusoidal track builds a thicker film (Organisciak et al. 2014, "Comparison between
+        molded wave and trimmed plain lips").
     floor : float
         Minimum film thickness [m] (boundary-lubrication limit).
 
@@ -147,7 +148,8 @@ def soft_ehl_load_modulus_factor(load_per_length, modulus, reference_load=FILM_R
                                  reference_modulus=FILM_REFERENCE_MODULUS):
     """Film multiplier for another lip load and modulus, (W′/W′_ref)^−0.22·(E/E_ref)^−0.42.
 
-    The soft-EHL exponents of Hamrock & Dowson (1978) applied to the seed's film law, which
+    The soft-EHL exponents of Hamrock & Dowson (1978) applied to the film law of
+    Organisciak et al. (2014), which
     holds for the reference seal.  E′ = E/(1 − ν²) of rubber on steel is proportional to E, so
     the ratio of Young's moduli is used.
 

@@ -116,7 +116,8 @@ class GroschMasterCurve:
     width_decades: float
 
 
-#: Default master curve for the ``μ_dry`` of seed 000 Eq. 3 (reasoning, not a fit):
+#: Default master curve for the ``μ_dry`` of Organisciak et al. (2014) Eq. 3 (reasoning, not a
+#: fit):
 #:
 #: * μ_peak = 1.0: the hysteresis peak of nitrile rubber on a rough track, the lower end of the
 #:   1-1.5 Grosch (1963) found on silicon carbide, the oil removing adhesion;

@@ -1,4 +1,5 @@
-"""Viscous (Couette) shear of the lubricant film in the lip contact, seed 000 Eq. 4."""
+"""Viscous (Couette) shear of the lubricant film in the lip contact (Organisciak et al., AGMA
+14FTM14, 2014, Eq. 4)."""
 
 from __future__ import annotations
 
@@ -8,7 +9,8 @@ __all__ = ["duty_parameter", "viscous_friction_force"]
 
 
 def viscous_friction_force(viscosity, speed, film, area):
-    """Couette shear force of the film, F_lub = η·u/h_e·S_contact (seed 000 Eq. 4).
+    """Couette shear force of the film, F_lub = η·u/h_e·S_contact (Organisciak et al.
+    2014, Eq. 4).
 
     Parameters
     ----------
@@ -40,7 +42,7 @@ def duty_parameter(viscosity, angular_speed, contact_width, load_per_length):
     """Duty parameter G = η·ω·b / W' of lip seal friction (Gümbel number η·ω/p̄).
 
     Used to plot lip seal friction as a Stribeck-type curve μ_eff(G) (Horve 1992; Haas, cited
-    in seed 000 Fig. 1); G equals η·ω/p̄ because p̄ = W'/b.
+    in Organisciak et al. 2014, Fig. 1); G equals η·ω/p̄ because p̄ = W'/b.
 
     Parameters
     ----------

@@ -1,8 +1,8 @@
-"""Run a rotary case file with all its variants and write the results folder.
+"""``sealsim rotary run``: a rotary case file with all its variants into a result folder.
 
-``run_case_file`` is what ``sealsim rotary run`` calls; it can be used from Python as well.
-The folder gets ``timeseries.csv`` (all variants, long format), ``steps.csv``,
-``summary.json``, ``case_resolved.toml`` and the figures.
+:func:`run_case_file` can be used from Python as well.  The folder gets ``timeseries.csv``
+(all variants, long format), ``steps.csv``, ``summary.json``, ``case_resolved.toml`` and the
+figures (``cycle_<variant>.png``, ``variants.png``, ``stribeck.png``).
 """
 
 from __future__ import annotations
@@ -14,13 +14,12 @@ import numpy as np
 import pandas as pd
 
 from sealsim import __version__
-from sealsim.cases import dump_variants_toml, expand_variants, load_toml
+from sealsim.cases import dump_variants_toml
 from sealsim.output import ResultFolder, run_variants
 from sealsim.plotting.rotary import cycle_figure, stribeck_figure, variants_figure
-from sealsim.rotary.case import RotaryCase
-from sealsim.rotary.simulation import RotaryResult, friction_map, simulate
+from sealsim.rotary.simulation import RotaryResult, friction_map, load_rotary_case, simulate
 
-__all__ = ["load_rotary_case", "run_case_file", "write_results"]
+__all__ = ["run_case_file", "write_results"]
 
 #: Contact temperatures of the model curves in the Stribeck-type plot [°C].
 STRIBECK_TEMPERATURES_C = (40.0, 80.0)
@@ -28,12 +27,6 @@ STRIBECK_TEMPERATURES_C = (40.0, 80.0)
 #: Columns required in timeseries.csv, in this order (extra diagnostics follow).
 TIMESERIES_HEAD = ["variant", "time_s", "speed_rpm", "torque_Nm", "power_W", "T_contact_C",
                    "T_groove_C", "T_sump_C", "film_um", "F_lub_N", "F_material_N"]
-
-
-def load_rotary_case(path: str | Path) -> dict[str, RotaryCase]:
-    """Read and validate a rotary case file; returns ``{variant: RotaryCase}``."""
-    path = Path(path)
-    return expand_variants(RotaryCase, load_toml(path), f"rotary case {str(path)!r}")
 
 
 def run_case_file(path: str | Path, out: str | Path, force: bool = False,

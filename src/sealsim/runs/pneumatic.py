@@ -1,10 +1,10 @@
-"""Run a pneumatic case file with all its variants and write the results folder.
+"""``sealsim pneumatic run``: a pneumatic case file with all its variants into a result folder.
 
-``run_case_file`` is what ``sealsim pneumatic run`` calls; it can be used from Python as well.
-The folder gets ``timeseries.csv`` (all variants, long format with a ``variant`` column),
-``summary.json`` (``{"variants": {NAME: {...}}}``), ``case_resolved.toml`` and the figures
-(``pressure_stroke.png`` like Heipl & Murrenhoff Fig. 10, ``friction_stroke.png`` like Figs. 12/13,
-``friction_velocity.png``, ``timeseries_<variant>.png``; with seal heating also
+:func:`run_case_file` can be used from Python as well.  The folder gets ``timeseries.csv``
+(all variants, long format with a ``variant`` column), ``summary.json``
+(``{"variants": {NAME: {...}}}``), ``case_resolved.toml`` and the figures
+(``pressure_stroke.png`` like Heipl & Murrenhoff Fig. 10, ``friction_stroke.png`` like
+Figs. 12/13, ``friction_velocity.png``, ``timeseries_<variant>.png``; with seal heating also
 ``heating_<variant>.png`` and ``strokes_<variant>.csv``, the drift stroke by stroke).
 """
 
@@ -12,35 +12,25 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from pathlib import Path
+
 import pandas as pd
 
 from sealsim import __version__
 from sealsim.cases import dump_variants_toml
 from sealsim.output import ResultFolder, run_variants
-from sealsim.pneumatic.case import PneumaticCase, build_seals, load_pneumatic_case_file
+from sealsim.pneumatic.case import load_pneumatic_case_file
 from sealsim.pneumatic.results import TIMESERIES_COLUMNS, PneumaticResult
-from sealsim.pneumatic.simulation import simulate
-from sealsim.pneumatic.summary import DEFINITIONS, end_position_times, per_stroke, summarize
+from sealsim.pneumatic.simulation import simulate_variant
+from sealsim.pneumatic.summary import DEFINITIONS, per_stroke
+from sealsim.plotting.pneumatic import (
+    friction_stroke_figure,
+    friction_velocity_figure,
+    heating_figure,
+    pressure_stroke_figure,
+    timeseries_figure,
+)
 
-__all__ = ["DEFINITIONS", "end_position_times", "run_case_file", "run_cases", "summarize",
-           "write_results"]
-
-
-def run_cases(cases: dict[str, PneumaticCase], base_dir: str | Path = ".",
-              progress: Callable[[str, float, float], None] | None = None
-              ) -> dict[str, PneumaticResult]:
-    """Simulate every variant; ``progress(variant, simulated_time, end_time)`` (and
-    ``progress("<variant>: FE map", done, total)`` while a seal's FE map is built)."""
-    return {name: _run_variant(name, case, base_dir, progress) for name, case in cases.items()}
-
-
-def _run_variant(name: str, case: PneumaticCase, base_dir: str | Path,
-                 progress: Callable[[str, float, float], None] | None) -> PneumaticResult:
-    maps = None if progress is None else (
-        lambda done, total: progress(f"{name}: FE map", done, total))
-    seals = build_seals(case, base_dir, maps)
-    callback = None if progress is None else (lambda t, end: progress(name, t, end))
-    return simulate(case, seals, base_dir, progress=callback)
+__all__ = ["run_case_file", "write_results"]
 
 
 def run_case_file(path: str | Path, out: str | Path, force: bool = False,
@@ -62,7 +52,7 @@ def run_case_file(path: str | Path, out: str | Path, force: bool = False,
     path = Path(path)
     cases = load_pneumatic_case_file(path)
     return run_variants(
-        cases, out, lambda name, case, _: _run_variant(name, case, path.parent, progress),
+        cases, out, lambda name, case, _: simulate_variant(name, case, path.parent, progress),
         lambda folder, results: write_results(folder, results, source=str(path)),
         force=force, inputs=[path])
 
@@ -70,14 +60,6 @@ def run_case_file(path: str | Path, out: str | Path, force: bool = False,
 def write_results(folder: ResultFolder, results: dict[str, PneumaticResult],
                   source: str = "") -> None:
     """Write the table, summary, resolved case and figures of a set of variants."""
-    from sealsim.plotting.pneumatic import (
-        friction_stroke_figure,
-        friction_velocity_figure,
-        heating_figure,
-        pressure_stroke_figure,
-        timeseries_figure,
-    )
-
     frames = {name: r.timeseries for name, r in results.items()}
     table = pd.concat([f.assign(variant=name) for name, f in frames.items()], ignore_index=True)
     head = ["variant"] + TIMESERIES_COLUMNS

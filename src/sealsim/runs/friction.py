@@ -1,10 +1,11 @@
-"""Run a friction test-bench case file with all its variants and write the results folder.
+"""``sealsim friction run``: a friction test-bench case file with all its variants into a
+result folder.
 
-``run_case_file`` is what ``sealsim friction run`` calls; it can be used from Python as well.
-The folder gets ``timeseries.csv`` (all variants, one ``variant`` column), ``summary.json``
-(break-away forces, loop areas, dissipated energy per variant, warnings), plots
-(``force_velocity.png``, ``theta_velocity.png`` for the Θ law, ``force_displacement.png``,
-``timeseries.png``) and ``case_resolved.toml`` (the case with every default filled in).
+:func:`run_case_file` can be used from Python as well.  The folder gets ``timeseries.csv``
+(all variants, one ``variant`` column), ``summary.json`` (break-away forces, loop areas,
+dissipated energy per variant, warnings), plots (``force_velocity.png``, ``theta_velocity.png``
+for the Θ law, ``force_displacement.png``, ``timeseries.png``) and ``case_resolved.toml`` (the
+case with every default filled in).
 """
 
 from __future__ import annotations
