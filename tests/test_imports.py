@@ -29,9 +29,8 @@ LAYERS = (
     ("front", ("sealsim.output", "sealsim.plotting", "sealsim.runs", "sealsim.cli")),
 )
 
-#: Known import cycles (module pairs): structure/maps.py <-> structure/run.py is being broken
-#: up in another branch (map building moves out of run.py); remove this entry then.
-KNOWN_CYCLES = {frozenset({"sealsim.structure.maps", "sealsim.structure.run"})}
+#: Known import cycles (module pairs): none.
+KNOWN_CYCLES: set[frozenset] = set()
 
 #: Known layer violations (importing module or package, imported package): modules whose
 #: result-folder writing and plots are being moved above the models in other branches; remove

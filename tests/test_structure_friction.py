@@ -8,7 +8,7 @@ import pytest
 from sealsim.structure.constraints import RollingConstraint
 from sealsim.structure.geometry import Gland, ORing, SealAssembly
 from sealsim.structure.material import HyperelasticSealMaterial
-from sealsim.structure.mesh import mesh_section
+from sealsim.structure.profile_mesh import mesh_section
 from sealsim.structure.model import SealModel
 from sealsim.structure.profiles import rectangular_profile
 from sealsim.structure.solver import LoadStep, solve

@@ -206,7 +206,7 @@ def lip_force_table(seal, lip: LipSpec, installation_temperature: float = 293.15
     import pandas as pd
 
     from sealsim.cases import dump_case_toml
-    from sealsim.output import atomic_write_bytes
+    from sealsim.files import atomic_write_bytes
 
     case = lip_structure_case(seal, lip, installation_temperature)
     text = dump_case_toml(case, header="FE lip model of a rotary case")

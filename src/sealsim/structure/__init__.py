@@ -33,7 +33,7 @@ _EXPORTS = {
     "Contour": "contour", "SealProfile": "profiles", "xring_profile": "profiles",
     "rectangular_profile": "profiles", "ucup_profile": "profiles",
     "wiper_profile": "profiles", "radial_lip_profile": "profiles", "user_profile": "profiles",
-    "mesh_oring": "mesh", "mesh_section": "mesh", "mesh_profile": "profile_mesh",
+    "mesh_oring": "mesh", "mesh_section": "profile_mesh", "mesh_profile": "profile_mesh",
     "HyperelasticSealMaterial": "material", "ViscoelasticSealMaterial": "material",
     "material_from_elastomer": "material",
     "SealModel": "model", "LoadState": "model", "LoadStep": "solver", "solve": "solver",

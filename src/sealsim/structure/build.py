@@ -17,7 +17,7 @@ from sealsim.structure.material import (
     material_from_elastomer,
     thermal_volume_ratio,
 )
-from sealsim.structure.mesh import mesh_section
+from sealsim.structure.profile_mesh import mesh_section
 from sealsim.structure.model import GarterSpringSpec, SealModel
 from sealsim.structure.solver import LoadStep
 

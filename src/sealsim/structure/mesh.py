@@ -15,7 +15,7 @@ import numpy as np
 from sealsim.errors import InputError
 from sealsim.structure.geometry import ORing
 
-__all__ = ["MESH_LEVELS", "SealMesh", "mesh_oring", "mesh_section"]
+__all__ = ["MESH_LEVELS", "SealMesh", "mesh_oring"]
 
 MESH_LEVELS = {
     # level: (elements per 90° of arc at the radial surfaces, ... at the walls, radial layers)
@@ -190,18 +190,3 @@ def _check_cells(points, cells):
     area2 = np.sum(x * np.roll(y, -1, axis=1) - np.roll(x, -1, axis=1) * y, axis=1)
     if np.any(area2 <= 0):
         raise RuntimeError("mesh has cells with non-positive area (internal error)")
-
-
-def mesh_section(section, centre, level: str = "medium", **kwargs) -> SealMesh:
-    """Mesh a seal cross-section with its centre at ``centre`` [m]: the O-grid for an
-    :class:`ORing`, gmsh (or the built-in fallback) for a :class:`~.profiles.SealProfile`
-    (moved axially so that its area centroid lies at ``centre[0]``; radii are kept)."""
-    if isinstance(section, ORing):
-        return mesh_oring(section, centre, level, **kwargs)
-    from sealsim.structure.profile_mesh import mesh_profile
-    from sealsim.structure.profiles import SealProfile
-
-    if isinstance(section, SealProfile):
-        shift = centre[0] - section.contour.centroid()[0]
-        return mesh_profile(section.translated(shift), level, **kwargs)
-    raise InputError(f"no mesh builder for seal sections of type {type(section).__name__}")

@@ -2,7 +2,7 @@
 fluid pressure -- set up once, then driven through load states by :mod:`.solver`.
 
 Pipeline (FElupe style): geometry (:class:`~.geometry.SealAssembly`) → mesh
-(:func:`~.mesh.mesh_section`) → :class:`SealModel` (``RegionQuad`` → ``FieldAxisymmetric``
+(:func:`~.profile_mesh.mesh_section`) → :class:`SealModel` (``RegionQuad`` → ``FieldAxisymmetric``
 → ``SolidBodyNearlyIncompressible`` + one ``ContactRigidPlane`` per rigid line +
 :class:`~.loads.FluidPressure`) → :func:`~.solver.solve` → :mod:`.results`.
 

@@ -38,10 +38,12 @@ from scipy.spatial import Delaunay, cKDTree
 
 from sealsim.errors import InputError
 from sealsim.structure.contour import Contour, arc_geometry
-from sealsim.structure.mesh import SealMesh
+from sealsim.structure.geometry import ORing
+from sealsim.structure.mesh import SealMesh, mesh_oring
 from sealsim.structure.profiles import SealProfile
 
-__all__ = ["PROFILE_MESH_LEVELS", "SizeField", "gmsh_status", "mesh_profile", "size_field"]
+__all__ = ["PROFILE_MESH_LEVELS", "SizeField", "gmsh_status", "mesh_profile", "mesh_section",
+           "size_field"]
 
 PROFILE_MESH_LEVELS = {
     # level: (contact size, body size) as fractions of the radial height, elements across a
@@ -563,3 +565,17 @@ def _mesh_builtin(contour: Contour, sizes: SizeField):
         loop += [i, edge_id[tuple(sorted((i, (i + 1) % nb)))]]
         loop_seg += [bsegs[i], bsegs[i]]
     return np.vstack(new_pts), np.array(quads), np.array(loop), np.array(loop_seg)
+
+
+def mesh_section(section, centre, level: str = "medium", **kwargs) -> SealMesh:
+    """Mesh a seal cross-section with its centre at ``centre`` [m]: the O-grid for an
+    :class:`~.geometry.ORing`, gmsh (or the built-in fallback) for a :class:`~.profiles.SealProfile`
+    (moved axially so that its area centroid lies at ``centre[0]``; radii are kept)."""
+    if isinstance(section, ORing):
+        return mesh_oring(section, centre, level, **kwargs)
+    from sealsim.structure.profiles import SealProfile
+
+    if isinstance(section, SealProfile):
+        shift = centre[0] - section.contour.centroid()[0]
+        return mesh_profile(section.translated(shift), level, **kwargs)
+    raise InputError(f"no mesh builder for seal sections of type {type(section).__name__}")
