@@ -121,12 +121,13 @@ def test_dwell_breakaway_matches_the_law(fmus):
         scale = np.max(np.abs(native.force))
         assert np.max(np.abs(res.force - native.force)) <= 1e-8 * scale, name
         assert np.max(np.abs(res.states[:, 0] - native.states[:, 0])) <= 1e-9, name
-        # break-away from rest: the dry level F_N f_a = 50 N (within the last step's load
+        # break-away from rest: the dry level F_N f_a (within the last step's load
         # increase); after the dwell the film has relaxed only partly: between F_N f_b and it
+        fn = make_inputs(case).normal_force
         onsets = np.flatnonzero(np.diff(res.stuck.astype(int)) == -1)
         assert len(onsets) == 2
-        assert res.force[onsets[0]] == pytest.approx(50.0, rel=1e-3)
-        assert 10.0 < res.force[onsets[1]] < 50.0
+        assert res.force[onsets[0]] == pytest.approx(fn * law.params.f_a, rel=1e-3)
+        assert fn * law.params.f_b < res.force[onsets[1]] < fn * law.params.f_a
 
 
 def test_stick_slip_with_a_mass_matches_the_law(fmus):

@@ -49,7 +49,8 @@ def _identifier(name: str | None, out) -> str:
 
 
 def build_friction_fmu(law, out, *, contact_map=None, normal_force: float | None = None,
-                       contact_width: float | None = None, seal_temperature: float = 293.15,
+                       contact_width: float | None = None,
+                       seal_temperature: float | None = None,
                        name: str | None = None, fmi_version: int = 2, kind: str = "both",
                        force: bool = False, compile: bool = True,
                        table: TableSettings | None = None, title: str = "", source: str = "",
@@ -68,8 +69,9 @@ def build_friction_fmu(law, out, *, contact_map=None, normal_force: float | None
         embedded as a table.
     normal_force, contact_width : float, optional
         A constant contact [N], [m] instead of a map.
-    seal_temperature : float
-        Start value of the input T_seal [K].
+    seal_temperature : float, optional
+        Start value of the input T_seal [K] (default: the law's reference temperature, where
+        the Θ law's γ is γ_ref; else 293.15 K).
     name : str, optional
         Model identifier (default: from the file name).
     fmi_version : {2, 3}
@@ -105,12 +107,12 @@ def build_friction_fmu(law, out, *, contact_map=None, normal_force: float | None
                          document=lambda s: friction_documentation(s, law, tab))
 
 
-def _default_speeds(case, base_dir) -> np.ndarray:
+def _default_speed_max(case, base_dir) -> float:
     top = 3000.0 * RPM
     if case.duty is not None:
         _, speeds, _ = case.duty.profile(base_dir)
         top = max(top, 1.2 * float(np.max(speeds)))
-    return np.concatenate([[0.0], np.geomspace(10.0 * RPM, top, 8)])
+    return top
 
 
 def _default_sumps(case) -> np.ndarray:
@@ -154,13 +156,13 @@ def build_rotary_fmu(case, out, *, settings: RotarySettings | None = None,
     if kind not in FMI_KINDS:
         raise InputError(f"--kind {kind!r} is not allowed; choose me, cs or both")
     s = settings or RotarySettings()
-    speeds = np.asarray(s.speeds, float) if s.speeds is not None else _default_speeds(
-        case, base_dir)
+    speed_max = s.max_speed if s.max_speed is not None else _default_speed_max(case, base_dir)
     sumps = (np.asarray(s.sump_temperatures, float) if s.sump_temperatures is not None
              else _default_sumps(case))
-    maps = rotary_maps(case, speeds=np.sort(speeds), sump_temperatures=np.sort(sumps),
-                       torque_speed_min=s.torque_speed_min, lag_order=s.lag_order,
-                       lag_speeds=s.lag_speeds, lag_sump_temperatures=s.lag_sump_temperatures,
+    maps = rotary_maps(case, speed_max=speed_max, speed_points=s.speed_points,
+                       sump_temperatures=np.sort(sumps), torque_speed_min=s.torque_speed_min,
+                       lag_order=s.lag_order, lag_points=s.lag_points,
+                       lag_sump_temperatures=s.lag_sump_temperatures,
                        lag_duration=s.lag_duration,
                        ambient_step=s.ambient_step if s.ambient_input else None,
                        ambient_range=s.ambient_range, torque_points=tuple(s.torque_points),
@@ -303,7 +305,7 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
         i = case.inputs
         return build_friction_fmu(
             _law(params), out, normal_force=i.normal_force, contact_width=i.contact_width,
-            seal_temperature=i.temperature if i.temperature is not None else 293.15,
+            seal_temperature=i.temperature,
             table=table, title=title or case.title,
             source=f"{source}, variant {name!r}", **common)
     from sealsim.pneumatic.case import body_temperature, build_contact_map, load_pneumatic_cases
