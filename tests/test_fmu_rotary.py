@@ -40,7 +40,7 @@ def plain_case():
 @pytest.fixture(scope="module")
 def rotary_fmu(plain_case, tmp_path_factory):
     # the sump of the speed cycle stays within 23-69 degC: step responses at 20 and 70 degC
-    settings = RotarySettings(speed_points=7, sump_temperatures=list(SUMPS),
+    settings = RotarySettings(speed_points=7, sump_temperatures=list(SUMPS), lag_points=2,
                               lag_sump_temperatures=[SUMPS[0], SUMPS[2]],
                               check_between=False, check_duty_cycle=False)
     path = tmp_path_factory.mktemp("rotary") / "lip_seal.fmu"

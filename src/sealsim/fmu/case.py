@@ -86,7 +86,7 @@ class RotarySettings(CaseModel):
         0.1047197551196598, description="below this speed (default 1 rpm) the torque ramps "
                                         "linearly to 0 at standstill")
     lag_order: int = Field(2, ge=1, le=3)
-    lag_points: int = Field(2, ge=1, le=8, description=(
+    lag_points: int = Field(3, ge=1, le=8, description=(
         "step responses per flow regime and lag sump temperature"))
     lag_sump_temperatures: list[Q("temperature", gt=0)] | None = Field(None, description=(
         "sump temperatures of the step responses; default lowest, middle and highest of the "

@@ -205,7 +205,8 @@ def rotary_documentation(spec: ModelSpec, maps) -> None:
         ax.set_xscale("log")
         ax.set_xlabel("time after the start [s]")
         ax.grid(True, alpha=0.3)
-    axes[0, 0].legend(fontsize=8)
+    for ax in axes[0]:
+        ax.legend(fontsize=8)
     fig.suptitle("thermal lag: transient model (solid), fitted lags (dashed)", fontsize=10)
     docs["thermal_lag.png"] = _png(fig)
     figures.append("thermal_lag.png")

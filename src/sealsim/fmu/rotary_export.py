@@ -85,7 +85,9 @@ class RotaryMaps:
     lag : ThermalLag
         Step responses at the speeds ``lag.speeds`` (p, q): row i at ξ = ``lag_xi[i]``.
     lag_xi : ndarray, shape (p,)
-        ξ of the lag rows, ascending (the rows of regime k have k <= ξ < k + 1).
+        ξ of the lag rows, ascending.
+    lag_regime : ndarray, shape (p,)
+        Regime of the lag rows (ascending; a row on a boundary belongs to one side).
     """
 
     axes: MapAxes
@@ -100,6 +102,7 @@ class RotaryMaps:
     torque: np.ndarray
     lag: ThermalLag
     lag_xi: np.ndarray
+    lag_regime: np.ndarray
     notes: list = field(default_factory=list)
 
     @property
@@ -133,7 +136,8 @@ def rotary_maps(case: RotaryCase, *, speed_max: float, speed_points: int, sump_t
         Lowest speed of the torque table [rad/s]; below it the torque ramps to 0.
     lag_order : {1, 2, 3}
     lag_points : int
-        Step responses per flow regime and lag sump temperature, at ξ = k + (i + 1/2)/n.
+        Step responses per flow regime and lag sump temperature, at the centres of as many
+        equal parts of the regime's ξ.
     lag_sump_temperatures : array_like, optional
         Sump temperatures of the step responses [K] (default: lowest, middle and highest of
         the grid).
@@ -185,9 +189,11 @@ def rotary_maps(case: RotaryCase, *, speed_max: float, speed_points: int, sump_t
             steady.append(steady_rise_map(case, w, sumps, ambient_step, None if part is None
                                           else lambda d, n, base=done: part(base + d, calls)))
             done += w.size * (2 if ambient_step else 1)
-        fractions = (np.arange(lag_points) + 0.5) / lag_points
-        lag_xi = np.concatenate([k + fractions for k in range(axes.n_regimes)])
-        lag_speeds = np.concatenate([axes.speed(k, (k + fractions)[:, None], lag_sumps[None, :])
+        lag_xi = np.concatenate([k + _lag_fractions(lag_points)
+                                 for k in range(axes.n_regimes)])
+        lag_regime = np.repeat(np.arange(axes.n_regimes), lag_points)
+        lag_speeds = np.concatenate([axes.speed(k, (k + _lag_fractions(lag_points))[:, None],
+                                                lag_sumps[None, :])
                                      for k in range(axes.n_regimes)])
         lag = thermal_lag(case, lag_speeds, lag_sumps, lag_order, lag_duration,
                           progress=report("thermal lag"))
@@ -216,7 +222,14 @@ def rotary_maps(case: RotaryCase, *, speed_max: float, speed_points: int, sump_t
                      "rotary.lag_duration")
     return RotaryMaps(axes, sumps, xi, speeds, steady,
                       float(case.environment.ambient_temperature), float(ambient_range),
-                      t_speeds, t_temps, torque, lag, lag_xi, notes)
+                      t_speeds, t_temps, torque, lag, lag_xi, lag_regime, notes)
+
+
+def _lag_fractions(points: int) -> np.ndarray:
+    """Where in a regime (ξ − k) the step responses are taken: at the centres of ``points``
+    equal parts (not at standstill, where nothing heats, nor at the top speed, where the
+    contact of a hot sump may leave the elastomer's range)."""
+    return (np.arange(points) + 0.5) / points
 
 
 def rotary_spec(case: RotaryCase, maps: RotaryMaps, identifier: str, *, title: str = "",
@@ -267,8 +280,7 @@ def rotary_spec(case: RotaryCase, maps: RotaryMaps, identifier: str, *, title: s
     lag = maps.lag
     sump_axis, edges = maps.axes.at(maps.sump_temperatures)
     lag_axis, _ = maps.axes.at(lag.sump_temperatures)
-    regime_of_lag = np.floor(maps.lag_xi).astype(int)
-    lag_start = np.searchsorted(regime_of_lag, np.arange(maps.n_regimes + 1))
+    lag_start = np.searchsorted(maps.lag_regime, np.arange(maps.n_regimes + 1))
 
     def c_array(name, values, kind="double"):
         text = (repr(float(v)) if kind == "double" else str(int(v)) for v in values)
@@ -321,7 +333,7 @@ def rotary_spec(case: RotaryCase, maps: RotaryMaps, identifier: str, *, title: s
                                  int(maps.torque_temperatures.size)],
                        "max_relative_error_at_cell_centres": torque_error},
         "thermal_lag": {"order": order, "speeds_rpm": (lag.speeds / RPM).tolist(),
-                        "xi": maps.lag_xi.tolist(),
+                        "xi": maps.lag_xi.tolist(), "regime": maps.lag_regime.tolist(),
                         "sump_temperatures_C": (lag.sump_temperatures - CELSIUS_0).tolist(),
                         "weights": lag.weights.tolist(),
                         "time_constants_s": lag.time_constants.tolist(),
