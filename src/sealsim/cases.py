@@ -150,7 +150,7 @@ class CaseKind:
 #: The kinds of case file; tests check ``tables`` against the models' fields.
 CASE_KINDS = (
     CaseKind("rotary", "sealsim.rotary.case.RotaryCase", "sealsim rotary run",
-             frozenset({"duty", "environment", "oil", "thermal", "numerics"})),
+             frozenset({"duty", "environment", "oil", "numerics"})),
     CaseKind("structure", "sealsim.structure.case.StructureCase",
              "sealsim structure run (or sealsim structure map)",
              frozenset({"gland", "material", "mesh", "map"})),
@@ -160,9 +160,11 @@ CASE_KINDS = (
     CaseKind("friction", "sealsim.friction.case.FrictionCase", "sealsim friction run",
              frozenset({"bench", "inputs"})),
     CaseKind("friction fit", "sealsim.calibration.case.FrictionFitCase", "sealsim friction fit",
-             frozenset({"fit", "measurements", "contact", "signals"})),
+             frozenset({"fit", "measurements", "signals"})),
     CaseKind("pneumatic compare", "sealsim.calibration.pneumatic_compare.CompareCase",
              "sealsim pneumatic compare", frozenset({"case", "variant", "measurement"})),
+    CaseKind("fmu", "sealsim.fmu.case.FMUCase", "sealsim fmu build",
+             frozenset({"fmu", "table", "rotary"})),
 )
 
 

@@ -20,7 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
-from sealsim.cases import expand_variants, load_toml, validate_case
+from sealsim.cases import detect_case_kind, expand_variants, load_toml, validate_case
 from sealsim.errors import InputError
 from sealsim.fmu.builder import FMI_KINDS, BuildResult, build_archive, check_output
 from sealsim.fmu.case import (
@@ -38,7 +38,7 @@ from sealsim.fmu.friction_export import (
     model_identifier,
 )
 
-__all__ = ["build_fmu", "build_friction_fmu", "build_rotary_fmu", "case_kind"]
+__all__ = ["build_fmu", "build_friction_fmu", "build_rotary_fmu"]
 
 RPM = math.pi / 30.0
 CELSIUS_0 = 273.15
@@ -146,8 +146,8 @@ def build_rotary_fmu(case, out, *, settings: RotarySettings | None = None,
         Folder of a duty-cycle CSV given by a relative path.
     progress : callable, optional
         ``progress(task, done, total)``.
-
-    Other parameters as :func:`build_friction_fmu`.
+    name, fmi_version, kind, force, compile, title, source, inputs
+        As for :func:`build_friction_fmu`.
     """
     from sealsim.fmu.report import rotary_documentation
     from sealsim.fmu.rotary_export import rotary_check, rotary_maps, rotary_spec
@@ -185,20 +185,16 @@ def _hide(variable):
 
 
 # -- case files ---------------------------------------------------------------------------------
-def case_kind(data: dict, source: str) -> str:
-    """"friction", "pneumatic", "rotary" or "fmu" from the tables of a case file."""
-    tables = set(data)
-    if "fmu" in tables:
-        return "fmu"
-    if "bench" in tables:
-        return "friction"
-    if tables & {"cylinder", "seals", "air", "valve", "controller"}:
-        return "pneumatic"
-    if "seal" in tables and not tables & {"gland", "material", "mesh", "map", "load"}:
-        return "rotary"
-    raise InputError(f"{source} is neither a friction case ([bench]), a pneumatic case "
-                     "([cylinder], [[seals]]), a rotary case ([seal], [duty]) nor an FMU case "
-                     "([fmu]); see examples/fmu/")
+def _case_kind(data: dict, source: str) -> str:
+    """"friction", "pneumatic", "rotary" or "fmu": the kind of a case file
+    (:func:`sealsim.cases.detect_case_kind`) that an FMU is built from."""
+    kind = detect_case_kind(data)
+    if kind is not None and kind.name in ("friction", "pneumatic", "rotary", "fmu"):
+        return kind.name
+    found = f" (it looks like a {kind.name} case)" if kind is not None else ""
+    raise InputError(f"{source} is neither a friction case ([bench], [inputs]), a pneumatic case "
+                     "([cylinder], [[seals]]), a rotary case ([seal] with [environment], [oil] "
+                     f"or [duty]) nor an FMU case ([fmu]){found}; see examples/fmu/")
 
 
 def _one_variant(cases: dict, variant: str | None, source: str, same=None):
@@ -250,7 +246,7 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
     check_output(out, force, [path])
     source = f"case file {str(path)!r}"
     data = load_toml(path)
-    kind_of = case_kind(data, source)
+    kind_of = _case_kind(data, source)
     fmu_case = None
     inputs = [path]
     law_override = None
@@ -273,7 +269,7 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
         inputs.append(source_path)
         source = f"case file {str(source_path)!r}"
         data = load_toml(source_path)
-        kind_of = case_kind(data, source)
+        kind_of = _case_kind(data, source)
         if kind_of == "fmu":
             raise InputError(f"fmu.source: {str(source_path)!r} is an FMU case itself; give a "
                              "friction, pneumatic or rotary case")
