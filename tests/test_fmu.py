@@ -356,7 +356,7 @@ def test_fitted_parameters_and_named_sets(tmp_path):
 
 
 def test_fmu_case_with_its_own_law(tmp_path):
-    """An FMU case with [friction] (a named set) and, for the theta law, [contact]."""
+    """An FMU case with [friction] (a named set) and, for the theta law, [seal_contact]."""
     stribeck = {"title": "Stribeck rod seal", "fmu": {"name": "RodSeal"},
                 "friction": {"law": "stribeck", "parameter_set": "pneumatic_demo"}}
     (tmp_path / "stribeck.toml").write_text(tomli_w.dumps(stribeck))
@@ -373,6 +373,17 @@ def test_fmu_case_with_its_own_law(tmp_path):
     (tmp_path / "theta.toml").write_text(tomli_w.dumps(theta))
     with pytest.raises(InputError, match="theta law needs the seal's normal force"):
         build_fmu(tmp_path / "theta.toml", tmp_path / "theta.fmu")
+    theta["seal_contact"] = {"normal_force": "100 N", "contact_width": "1 mm"}
+    (tmp_path / "theta.toml").write_text(tomli_w.dumps(theta))
+    result = build_fmu(tmp_path / "theta.toml", tmp_path / "theta.fmu", kind="cs")
+    variables = {v.name: v for v in fmpy.read_model_description(str(result.path)).modelVariables}
+    # gamma(T) of the base oil (SKF LGMT 2: 110 and 11 mm2/s): parameters with units; T_seal
+    # starts at the reference temperature 25 degC, where gamma(T) = gamma
+    assert variables["base_oil_nu40"].unit == "m2/s"
+    assert float(variables["base_oil_nu40"].start) == pytest.approx(110e-6, rel=1e-12)
+    assert float(variables["base_oil_nu100"].start) == pytest.approx(11e-6, rel=1e-12)
+    assert variables["reference_temperature"].unit == "K"
+    assert float(variables["T_seal"].start) == pytest.approx(298.15, rel=1e-12)
 
 
 def test_cosimulation_example(tmp_path):

@@ -154,17 +154,17 @@ CASE_KINDS = (
     CaseKind("structure", "sealsim.structure.case.StructureCase",
              "sealsim structure run (or sealsim structure map)",
              frozenset({"gland", "material", "mesh", "map"})),
+    CaseKind("fmu", "sealsim.fmu.case.FMUCase", "sealsim fmu build",
+             frozenset({"fmu", "table", "rotary"})),
     CaseKind("pneumatic", "sealsim.pneumatic.case.PneumaticCase", "sealsim pneumatic run",
              frozenset({"cylinder", "air", "valve", "controller", "seals",
                         "initial_position"})),
     CaseKind("friction", "sealsim.friction.case.FrictionCase", "sealsim friction run",
              frozenset({"bench", "inputs"})),
     CaseKind("friction fit", "sealsim.calibration.case.FrictionFitCase", "sealsim friction fit",
-             frozenset({"fit", "measurements", "signals"})),
+             frozenset({"fit", "measurements", "contact", "signals"})),
     CaseKind("pneumatic compare", "sealsim.calibration.pneumatic_compare.CompareCase",
              "sealsim pneumatic compare", frozenset({"case", "variant", "measurement"})),
-    CaseKind("fmu", "sealsim.fmu.case.FMUCase", "sealsim fmu build",
-             frozenset({"fmu", "table", "rotary"})),
 )
 
 

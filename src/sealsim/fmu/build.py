@@ -344,14 +344,14 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
 
 def _inline_friction(fmu_case: FMUCase, params, path: Path, out, fmi_version, kind, force,
                      compile, inputs) -> BuildResult:
-    """An FMU case with its own [friction] and [contact] tables."""
+    """An FMU case with its own [friction] and [seal_contact] tables."""
     from sealsim.pneumatic.case import build_contact_map
 
-    contact = fmu_case.contact or ContactSettings()
+    contact = fmu_case.seal_contact or ContactSettings()
     contact_map = None
     if contact.map is not None:
         contact_map = build_contact_map(contact.map, contact.sliding_diameter or 0.0,
-                                        path.parent, "contact.map")
+                                        path.parent, "seal_contact.map")
     return build_friction_fmu(
         _law(params), out, contact_map=contact_map, normal_force=contact.normal_force,
         contact_width=contact.contact_width, seal_temperature=contact.temperature,

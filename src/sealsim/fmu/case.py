@@ -23,7 +23,8 @@ case, or an FMU case that points at one of them and adds settings::
     lag_order = 2
 
 Without a ``source`` the FMU case gives the law itself (``[friction]``) and its contact
-(``[contact]``: ``normal_force`` and ``contact_width``, or ``map`` and ``sliding_diameter``).
+(``[seal_contact]``: ``normal_force`` and ``contact_width``, or ``map`` and
+``sliding_diameter``).
 """
 
 from __future__ import annotations
@@ -121,7 +122,7 @@ class FMUCase(CaseModel):
     title: str = ""
     fmu: FMUSettings
     friction: LawParameters | None = None
-    contact: ContactSettings | None = None
+    seal_contact: ContactSettings | None = None
     table: TableSettings = TableSettings()
     rotary: RotarySettings = RotarySettings()
 
@@ -129,7 +130,7 @@ class FMUCase(CaseModel):
     def _source_or_law(self):
         if self.fmu.source is None and self.friction is None and self.fmu.friction_file is None:
             raise ValueError("give fmu.source (a friction, pneumatic or rotary case) or a "
-                             "[friction] table with a [contact] table")
+                             "[friction] table with a [seal_contact] table")
         return self
 
 

@@ -265,7 +265,7 @@ def friction_spec(law: FrictionLaw, identifier: str, *, table: ContactTable | No
     if uses_load and table is None and (normal_force is None or contact_width is None):
         raise InputError("the theta law needs the seal's normal force and contact width: give "
                          "a contact map (map = {...}) or normal_force and contact_width (the "
-                         "[inputs] of a friction case, the [contact] of an FMU case)")
+                         "[inputs] of a friction case, the [seal_contact] of an FMU case)")
     stiction = name in _STICTION or (name == "theta" and not bristles)
     has_theta, has_z = name == "theta", name == "lugre" or bristles
     constant = table is None and uses_load
