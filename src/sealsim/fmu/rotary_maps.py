@@ -221,20 +221,6 @@ class MapAxes:
         edges = np.column_stack([np.zeros(t.size), values[:, 1:], np.full(t.size, u_max)])
         return values[:, 0], edges
 
-    def xi(self, speed, temperature):
-        """(regime, ξ) of speeds [rad/s] at sump temperatures [K] (broadcast, 1-D)."""
-        speed, temperature = np.broadcast_arrays(
-            np.atleast_1d(np.asarray(speed, dtype=float)),
-            np.atleast_1d(np.asarray(temperature, dtype=float)))
-        _, edges = self.at(temperature)
-        u = speed_coordinate(np.clip(np.abs(speed), 0.0, self.speed_max))
-        regime = np.zeros(u.size, dtype=int)
-        for k in range(1, self.n_regimes):
-            regime[u >= edges[:, k]] = k
-        rows = np.arange(u.size)
-        lo, hi = edges[rows, regime], edges[rows, regime + 1]
-        return regime, regime + (u - lo) / (hi - lo)
-
     def speed(self, regime: int, xi, temperature):
         """Speeds [rad/s] at coordinates ξ ∈ [k, k+1] of regime k and sump temperatures [K]
         (broadcast); a point on an inner regime edge lies a relative 1e-9 inside the regime
