@@ -11,6 +11,7 @@ from __future__ import annotations
 import math
 import warnings
 from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -18,6 +19,7 @@ import pytest
 import fmpy  # the test extra installs FMPy
 from fmpy import simulate_fmu
 from fmpy.validation import validate_fmu
+from fmu_build_once import build_once
 
 from sealsim.cases import expand_variants, load_toml
 from sealsim.fmu import LoadedFMU, build_rotary_fmu
@@ -38,13 +40,18 @@ def plain_case():
 
 
 @pytest.fixture(scope="module")
-def rotary_fmu(plain_case, tmp_path_factory):
+def rotary_fmu(plain_case, tmp_path_factory, worker_id):
     # the sump of the speed cycle stays within 23-69 degC: step responses at 20 and 70 degC
     settings = RotarySettings(speed_points=7, sump_temperatures=list(SUMPS), lag_points=2,
                               lag_sump_temperatures=[SUMPS[0], SUMPS[2]],
                               check_between=False, check_duty_cycle=False)
-    path = tmp_path_factory.mktemp("rotary") / "lip_seal.fmu"
-    return build_rotary_fmu(plain_case, path, settings=settings)
+
+    def build(folder):
+        result = build_rotary_fmu(plain_case, folder / "lip_seal.fmu", settings=settings)
+        return {"path": str(result.path), "report": result.report}
+
+    built = build_once(tmp_path_factory, worker_id, "rotary_fmu", build)
+    return SimpleNamespace(path=Path(built["path"]), report=built["report"])
 
 
 def steady_fmu(fmu, speed, sump):
