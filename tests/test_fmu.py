@@ -22,6 +22,9 @@ from typer.testing import CliRunner
 
 import fmpy  # the test extra installs FMPy
 from fmpy import simulate_fmu
+from fmu_build_once import build_once
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from fmpy.validation import validate_fmu
 
 from sealsim.cases import load_toml
@@ -31,6 +34,7 @@ from sealsim.fmu import LoadedFMU, build_fmu, build_friction_fmu
 from sealsim.fmu.builder import FMUCompileError, FMUDependencyError
 from sealsim.fmu.cosim import FMUFrictionLaw, run_velocity
 from sealsim.friction import ContactInputs, Theta
+from sealsim.friction import kernels
 from sealsim.friction.bench import simulate_mass, simulate_velocity
 from sealsim.friction.case import build_law, load_friction_cases, make_inputs
 
@@ -50,17 +54,19 @@ def quiet_law(case):
 
 
 @pytest.fixture(scope="module")
-def fmus(tmp_path_factory):
+def fmus(tmp_path_factory, worker_id):
     """The FMUs of the tests, compiled once: LuGre (FMI 2), Θ (FMI 2), the Θ piston seal of
     the Ø32 cylinder with its analytic contact table (FMI 3)."""
-    folder = tmp_path_factory.mktemp("fmus")
-    built = {
-        "lugre": build_fmu(FRICTION / "lugre_hysteresis.toml", folder / "lugre.fmu"),
-        "theta": build_fmu(FRICTION / "theta_dwell.toml", folder / "theta.fmu"),
-        "piston3": build_fmu(PNEUMATIC / "cylinder_32.toml", folder / "piston3.fmu",
-                             seal="piston", fmi_version=3),
-    }
-    return {name: r.path for name, r in built.items()}
+    def build(folder):
+        return {
+            "lugre": build_fmu(FRICTION / "lugre_hysteresis.toml", folder / "lugre.fmu").path,
+            "theta": build_fmu(FRICTION / "theta_dwell.toml", folder / "theta.fmu").path,
+            "piston3": build_fmu(PNEUMATIC / "cylinder_32.toml", folder / "piston3.fmu",
+                                 seal="piston", fmi_version=3).path,
+        }
+
+    return {name: Path(path) for name, path in
+            build_once(tmp_path_factory, worker_id, "fmus", build).items()}
 
 
 def test_every_fmu_is_valid(fmus):
@@ -121,12 +127,13 @@ def test_dwell_breakaway_matches_the_law(fmus):
         scale = np.max(np.abs(native.force))
         assert np.max(np.abs(res.force - native.force)) <= 1e-8 * scale, name
         assert np.max(np.abs(res.states[:, 0] - native.states[:, 0])) <= 1e-9, name
-        # break-away from rest: the dry level F_N f_a = 50 N (within the last step's load
+        # break-away from rest: the dry level F_N f_a (within the last step's load
         # increase); after the dwell the film has relaxed only partly: between F_N f_b and it
+        fn = make_inputs(case).normal_force
         onsets = np.flatnonzero(np.diff(res.stuck.astype(int)) == -1)
         assert len(onsets) == 2
-        assert res.force[onsets[0]] == pytest.approx(50.0, rel=1e-3)
-        assert 10.0 < res.force[onsets[1]] < 50.0
+        assert res.force[onsets[0]] == pytest.approx(fn * law.params.f_a, rel=1e-3)
+        assert fn * law.params.f_b < res.force[onsets[1]] < fn * law.params.f_a
 
 
 def test_stick_slip_with_a_mass_matches_the_law(fmus):
@@ -352,7 +359,7 @@ def test_fitted_parameters_and_named_sets(tmp_path):
 
 
 def test_fmu_case_with_its_own_law(tmp_path):
-    """An FMU case with [friction] (a named set) and, for the theta law, [contact]."""
+    """An FMU case with [friction] (a named set) and, for the theta law, [seal_contact]."""
     stribeck = {"title": "Stribeck rod seal", "fmu": {"name": "RodSeal"},
                 "friction": {"law": "stribeck", "parameter_set": "pneumatic_demo"}}
     (tmp_path / "stribeck.toml").write_text(tomli_w.dumps(stribeck))
@@ -369,6 +376,17 @@ def test_fmu_case_with_its_own_law(tmp_path):
     (tmp_path / "theta.toml").write_text(tomli_w.dumps(theta))
     with pytest.raises(InputError, match="theta law needs the seal's normal force"):
         build_fmu(tmp_path / "theta.toml", tmp_path / "theta.fmu")
+    theta["seal_contact"] = {"normal_force": "100 N", "contact_width": "1 mm"}
+    (tmp_path / "theta.toml").write_text(tomli_w.dumps(theta))
+    result = build_fmu(tmp_path / "theta.toml", tmp_path / "theta.fmu", kind="cs")
+    variables = {v.name: v for v in fmpy.read_model_description(str(result.path)).modelVariables}
+    # gamma(T) of the base oil (SKF LGMT 2: 110 and 11 mm2/s): parameters with units; T_seal
+    # starts at the reference temperature 25 degC, where gamma(T) = gamma
+    assert variables["base_oil_nu40"].unit == "m2/s"
+    assert float(variables["base_oil_nu40"].start) == pytest.approx(110e-6, rel=1e-12)
+    assert float(variables["base_oil_nu100"].start) == pytest.approx(11e-6, rel=1e-12)
+    assert variables["reference_temperature"].unit == "K"
+    assert float(variables["T_seal"].start) == pytest.approx(298.15, rel=1e-12)
 
 
 def test_cosimulation_example(tmp_path):
@@ -387,3 +405,192 @@ def test_cosimulation_example(tmp_path):
     # velocity within 1 % of its peak (0.37 m/s), the peak force within 1e-4 relative
     assert explicit["max_velocity_difference_m_s"] < 0.01 * np.max(native.velocity)
     assert explicit["peak_force_N"] == pytest.approx(np.max(native.force), rel=1e-4)
+
+
+# -- the C code against the compiled law kernels (sealsim.friction.kernels) ------------------------
+@pytest.fixture(scope="module")
+def kernel_fmus(fmus, tmp_path_factory, worker_id):
+    """Every C law: Coulomb and Stribeck (pressure scaling), LuGre, Θ with γ(T) without and
+    with bristles (constant contact)."""
+    from sealsim.friction import CoulombViscous, Stribeck
+
+    def build(folder):
+        bristles = Theta.from_parameter_set("pneumatic_demo", bristle_stiffness=5e4,
+                                            bristle_damping=20.0)
+        return {
+            "coulomb": build_friction_fmu(CoulombViscous.from_parameter_set("unit"),
+                                          folder / "coulomb.fmu", kind="cs").path,
+            "stribeck": build_friction_fmu(Stribeck.from_parameter_set("pneumatic_demo"),
+                                           folder / "stribeck.fmu", kind="cs").path,
+            "theta_bristles": build_friction_fmu(bristles, folder / "bristles.fmu",
+                                                 normal_force=100.0, contact_width=1e-3).path,
+        }
+
+    built = build_once(tmp_path_factory, worker_id, "kernel_fmus", build)
+    return {"lugre": fmus["lugre"], "theta": fmus["theta"],
+            **{name: Path(path) for name, path in built.items()}}
+
+
+def _close(got, want, scale):
+    # the C code evaluates the kernels' formulas in their order: rounding only (1e-9 of the
+    # larger of the value and the scale of its terms, where terms may cancel)
+    assert abs(got - want) <= 1e-9 * max(abs(want), scale), (got, want)
+
+
+def _walther(params):
+    from sealsim.properties.oils import walther_constants
+
+    return walther_constants(313.15, params["base_oil_nu40"], 373.15, params["base_oil_nu100"])
+
+
+_INPUTS = st.fixed_dictionaries({
+    "v": st.one_of(st.floats(-2.0, 2.0), st.sampled_from([0.0, 1e-7, -1e-7])),
+    "dt": st.floats(1e-5, 1.0), "p_A": st.floats(0.0, 1e6), "p_B": st.floats(0.0, 1e6),
+    "T_seal": st.floats(240.0, 400.0), "state": st.floats(0.0, 1.0),
+    "sign": st.sampled_from([-1.0, 1.0])})
+_THETA = st.fixed_dictionaries({
+    "tau": st.floats(0.1, 10.0), "alpha": st.floats(1e-3, 1.0), "f_a": st.floats(0.05, 1.0),
+    "f_b": st.floats(0.01, 1.0), "gamma": st.floats(0.0, 1e5),
+    "reference_normal_force": st.floats(10.0, 1000.0), "load_exponent": st.floats(0.0, 3.0),
+    "normal_force": st.floats(1.0, 1000.0), "contact_width": st.floats(0.0, 5e-3),
+    "reference_temperature": st.floats(270.0, 370.0), "base_oil_nu40": st.floats(2e-5, 5e-4),
+    "viscosity_ratio": st.floats(0.05, 0.5), "bristle_stiffness": st.floats(1e3, 1e6),
+    "bristle_damping": st.floats(0.0, 100.0)})
+_STRIBECK = st.fixed_dictionaries({
+    # F_C = 0 or a real level: a subnormal F_C scales F_S(p) = F_S F_C(p)/F_C to inf
+    "coulomb_force": st.one_of(st.just(0.0), st.floats(1e-3, 50.0)),
+    "excess": st.floats(0.0, 50.0),
+    "stribeck_velocity": st.floats(1e-4, 1.0), "exponent": st.floats(0.2, 10.0),
+    "viscous_coefficient": st.floats(0.0, 100.0), "pressure_coefficient": st.floats(0.0, 1e-4),
+    "sigma0": st.floats(1e3, 1e6), "sigma1": st.floats(0.0, 500.0), "sigma2": st.floats(0.0, 10.0)})
+
+
+def _start(fmu, names, params, x, state):
+    fmu.reset()
+    fmu.set(**{k: params[k] for k in names}, v=x["v"], p_A=x["p_A"], p_B=x["p_B"],
+            T_seal=x["T_seal"], **state)
+    fmu.initialize()
+
+
+@settings(max_examples=40, deadline=None, derandomize=True)  # the same cases in CI
+@given(x=_INPUTS, p=_THETA)
+def test_theta_c_code_matches_the_kernels(kernel_fmus, x, p):
+    p = {**p, "base_oil_nu100": p["base_oil_nu40"] * p["viscosity_ratio"]}
+    names = ["tau", "alpha", "f_a", "f_b", "gamma", "reference_normal_force", "load_exponent",
+             "normal_force", "contact_width", "reference_temperature", "base_oil_nu40",
+             "base_oil_nu100"]
+    v, dt, fn, b = x["v"], x["dt"], p["normal_force"], p["contact_width"]
+    rate = (p["tau"], p["alpha"], fn, p["reference_normal_force"], p["load_exponent"])
+    coefficients = (fn, p["f_a"], p["f_b"])
+    gamma = p["gamma"] * kernels.walther_viscosity_ratio(
+        x["T_seal"], p["reference_temperature"], *_walther(p))
+    theta0 = x["state"]
+    a, c = kernels.theta_affine(v, dt, *rate)
+    theta1 = a * theta0 + c
+    level = kernels.theta_friction_level
+    scale = fn * max(p["f_a"], p["f_b"]) + abs(gamma * b * v)
+    with LoadedFMU(kernel_fmus["theta"]) as fmu:
+        _start(fmu, names, p, x, {"theta": theta0})
+        force, brk = fmu.get("F", "F_breakaway")
+        _close(force, kernels.theta_force(theta0, v, fn, b, p["f_a"], p["f_b"], gamma), scale)
+        _close(brk, level(theta0, *coefficients), scale)
+        fmu.do_step(0.0, dt)
+        theta, force = fmu.get("theta", "F")
+        _close(theta, theta1, 1.0)
+        _close(force, kernels.theta_force(theta1, v, fn, b, p["f_a"], p["f_b"], gamma), scale)
+    with LoadedFMU(kernel_fmus["theta"], "me") as fmu:
+        _start(fmu, names, p, x, {})
+        fmu.set_continuous_states([theta0])
+        _close(fmu.derivatives()[0], kernels.theta_rate(theta0, v, *rate),
+               1.0 / p["tau"] + abs(v) / p["alpha"])
+
+    # with bristles: the LuGre bristle at the level of the step's mid-state
+    s0, s1 = p["bristle_stiffness"], p["bristle_damping"]
+    z0 = x["sign"] * x["state"] * level(theta0, *coefficients) / s0
+    a_z, c_z = kernels.lugre_affine(v, dt, s0, level(0.5 * (theta0 + theta1), *coefficients))
+    z1 = a_z * z0 + c_z
+
+    def bristle_force(theta, z):
+        zdot = kernels.lugre_bristle_rate(z, v, s0, level(theta, *coefficients))
+        return kernels.lugre_force(z, zdot, v, s0, s1, 0.0) + gamma * b * v
+
+    with LoadedFMU(kernel_fmus["theta_bristles"]) as fmu:
+        _start(fmu, names + ["bristle_stiffness", "bristle_damping"], p, x,
+               {"theta": theta0, "z": z0})
+        scale_z = scale + s1 * abs(v)
+        _close(fmu.get("F")[0], bristle_force(theta0, z0), scale_z)
+        fmu.do_step(0.0, dt)
+        theta, z, force = fmu.get("theta", "z", "F")
+        _close(theta, theta1, 1.0)
+        _close(z, z1, scale / s0)
+        _close(force, bristle_force(theta1, z1), scale_z)
+    with LoadedFMU(kernel_fmus["theta_bristles"], "me") as fmu:
+        _start(fmu, names + ["bristle_stiffness", "bristle_damping"], p, x, {})
+        fmu.set_continuous_states([theta0, z0])
+        d_theta, d_z = fmu.derivatives()
+        _close(d_theta, kernels.theta_rate(theta0, v, *rate), 1.0 / p["tau"] + abs(v) / p["alpha"])
+        _close(d_z, kernels.lugre_bristle_rate(z0, v, s0, level(theta0, *coefficients)), abs(v))
+
+
+@settings(max_examples=40, deadline=None, derandomize=True)  # the same cases in CI
+@given(x=_INPUTS, p=_STRIBECK)
+def test_stribeck_lugre_coulomb_c_code_matches_the_kernels(kernel_fmus, x, p):
+    v, dt, pa, pb = x["v"], x["dt"], x["p_A"], x["p_B"]
+    fc, fs = p["coulomb_force"], p["coulomb_force"] + p["excess"]
+    vs, d, fv, f = (p["stribeck_velocity"], p["exponent"], p["viscous_coefficient"],
+                    p["pressure_coefficient"])
+    with LoadedFMU(kernel_fmus["stribeck"]) as fmu:
+        _start(fmu, [], {}, x, {"coulomb_force": fc, "static_force": fs,
+                                "stribeck_velocity": vs, "exponent": d,
+                                "viscous_coefficient": fv, "pressure_coefficient": f})
+        fcp, fsp = kernels.stribeck_scaled_levels(fc, fs, f, pa, pb)
+        force, brk = fmu.get("F", "F_breakaway")
+        _close(force, kernels.stribeck_force(v, fcp, fsp, vs, fv, d), fsp + abs(fv * v))
+        _close(brk, fsp, fsp)
+    with LoadedFMU(kernel_fmus["coulomb"]) as fmu:
+        _start(fmu, [], {}, x, {"coulomb_force": fc, "viscous_coefficient": fv,
+                                "pressure_coefficient": f})
+        fcp = kernels.pressure_scaled_force(fc, f, pa, pb)
+        force, brk = fmu.get("F", "F_breakaway")
+        _close(force, kernels.coulomb_viscous_force(v, fcp, fv), fcp + abs(fv * v))
+        _close(brk, fcp, fcp)
+    if fc <= 0.0:
+        return                                  # LuGre needs F_C > 0
+    s0, s1, s2 = p["sigma0"], p["sigma1"], p["sigma2"]
+    g = kernels.stribeck_level(v, fc, fs, vs, d)
+    z0 = x["sign"] * x["state"] * g / s0
+    a_z, c_z = kernels.lugre_affine(v, dt, s0, g)
+    z1 = a_z * z0 + c_z
+
+    def lugre_force(z):
+        return kernels.lugre_force(z, kernels.lugre_bristle_rate(z, v, s0, g), v, s0, s1, s2)
+
+    scale = g + (s1 + s2) * abs(v)
+    lugre = {"sigma0": s0, "sigma1": s1, "sigma2": s2, "coulomb_force": fc, "static_force": fs,
+             "stribeck_velocity": vs, "exponent": d}
+    with LoadedFMU(kernel_fmus["lugre"]) as fmu:
+        _start(fmu, [], {}, x, {**lugre, "z": z0})
+        _close(fmu.get("F")[0], lugre_force(z0), scale)
+        fmu.do_step(0.0, dt)
+        z, force = fmu.get("z", "F")
+        _close(z, z1, g / s0)
+        _close(force, lugre_force(z1), scale)
+    with LoadedFMU(kernel_fmus["lugre"], "me") as fmu:
+        _start(fmu, [], {}, x, lugre)
+        fmu.set_continuous_states([z0])
+        _close(fmu.derivatives()[0], kernels.lugre_bristle_rate(z0, v, s0, g), abs(v))
+
+
+def test_case_kinds_are_those_of_sealsim_cases(tmp_path):
+    # one registry of case kinds (sealsim.cases.CASE_KINDS): an FMU case run with another
+    # command is named as such, a case the FMU cannot be built from is refused with its kind
+    result = CliRunner().invoke(app, ["rotary", "run", str(ROOT / "examples" / "fmu" /
+                                                           "rotary_lip_seal.toml"),
+                                      "--out", str(tmp_path / "out")])
+    message = " ".join(result.output.split())
+    assert result.exit_code == 2 and "looks like a fmu case" in message
+    assert "sealsim fmu build" in message
+    with pytest.raises(InputError, match=r"neither a friction case .* \(it looks like a "
+                                         r"structure case\)"):
+        build_fmu(ROOT / "examples" / "structure" / "oring_map.toml", tmp_path / "s.fmu")
+    assert not (tmp_path / "s.fmu").exists()

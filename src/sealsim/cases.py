@@ -154,6 +154,8 @@ CASE_KINDS = (
     CaseKind("structure", "sealsim.structure.case.StructureCase",
              "sealsim structure run (or sealsim structure map)",
              frozenset({"gland", "material", "mesh", "map"})),
+    CaseKind("fmu", "sealsim.fmu.case.FMUCase", "sealsim fmu build",
+             frozenset({"fmu", "table", "rotary"})),
     CaseKind("pneumatic", "sealsim.pneumatic.case.PneumaticCase", "sealsim pneumatic run",
              frozenset({"cylinder", "air", "valve", "controller", "seals",
                         "initial_position"})),

@@ -20,7 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
-from sealsim.cases import expand_variants, load_toml, validate_case
+from sealsim.cases import detect_case_kind, expand_variants, load_toml, validate_case
 from sealsim.errors import InputError
 from sealsim.fmu.builder import FMI_KINDS, BuildResult, build_archive, check_output
 from sealsim.fmu.case import (
@@ -38,7 +38,7 @@ from sealsim.fmu.friction_export import (
     model_identifier,
 )
 
-__all__ = ["build_fmu", "build_friction_fmu", "build_rotary_fmu", "case_kind"]
+__all__ = ["build_fmu", "build_friction_fmu", "build_rotary_fmu"]
 
 RPM = math.pi / 30.0
 CELSIUS_0 = 273.15
@@ -49,7 +49,8 @@ def _identifier(name: str | None, out) -> str:
 
 
 def build_friction_fmu(law, out, *, contact_map=None, normal_force: float | None = None,
-                       contact_width: float | None = None, seal_temperature: float = 293.15,
+                       contact_width: float | None = None,
+                       seal_temperature: float | None = None,
                        name: str | None = None, fmi_version: int = 2, kind: str = "both",
                        force: bool = False, compile: bool = True,
                        table: TableSettings | None = None, title: str = "", source: str = "",
@@ -68,8 +69,9 @@ def build_friction_fmu(law, out, *, contact_map=None, normal_force: float | None
         embedded as a table.
     normal_force, contact_width : float, optional
         A constant contact [N], [m] instead of a map.
-    seal_temperature : float
-        Start value of the input T_seal [K].
+    seal_temperature : float, optional
+        Start value of the input T_seal [K] (default: the law's reference temperature, where
+        the Θ law's γ is γ_ref; else 293.15 K).
     name : str, optional
         Model identifier (default: from the file name).
     fmi_version : {2, 3}
@@ -105,12 +107,12 @@ def build_friction_fmu(law, out, *, contact_map=None, normal_force: float | None
                          document=lambda s: friction_documentation(s, law, tab))
 
 
-def _default_speeds(case, base_dir) -> np.ndarray:
+def _default_speed_max(case, base_dir) -> float:
     top = 3000.0 * RPM
     if case.duty is not None:
         _, speeds, _ = case.duty.profile(base_dir)
         top = max(top, 1.2 * float(np.max(speeds)))
-    return np.concatenate([[0.0], np.geomspace(10.0 * RPM, top, 8)])
+    return top
 
 
 def _default_sumps(case) -> np.ndarray:
@@ -144,8 +146,8 @@ def build_rotary_fmu(case, out, *, settings: RotarySettings | None = None,
         Folder of a duty-cycle CSV given by a relative path.
     progress : callable, optional
         ``progress(task, done, total)``.
-
-    Other parameters as :func:`build_friction_fmu`.
+    name, fmi_version, kind, force, compile, title, source, inputs
+        As for :func:`build_friction_fmu`.
     """
     from sealsim.fmu.report import rotary_documentation
     from sealsim.fmu.rotary_export import rotary_check, rotary_maps, rotary_spec
@@ -154,13 +156,13 @@ def build_rotary_fmu(case, out, *, settings: RotarySettings | None = None,
     if kind not in FMI_KINDS:
         raise InputError(f"--kind {kind!r} is not allowed; choose me, cs or both")
     s = settings or RotarySettings()
-    speeds = np.asarray(s.speeds, float) if s.speeds is not None else _default_speeds(
-        case, base_dir)
+    speed_max = s.max_speed if s.max_speed is not None else _default_speed_max(case, base_dir)
     sumps = (np.asarray(s.sump_temperatures, float) if s.sump_temperatures is not None
              else _default_sumps(case))
-    maps = rotary_maps(case, speeds=np.sort(speeds), sump_temperatures=np.sort(sumps),
-                       torque_speed_min=s.torque_speed_min, lag_order=s.lag_order,
-                       lag_speeds=s.lag_speeds, lag_sump_temperatures=s.lag_sump_temperatures,
+    maps = rotary_maps(case, speed_max=speed_max, speed_points=s.speed_points,
+                       sump_temperatures=np.sort(sumps), torque_speed_min=s.torque_speed_min,
+                       lag_order=s.lag_order, lag_points=s.lag_points,
+                       lag_sump_temperatures=s.lag_sump_temperatures,
                        lag_duration=s.lag_duration,
                        ambient_step=s.ambient_step if s.ambient_input else None,
                        ambient_range=s.ambient_range, torque_points=tuple(s.torque_points),
@@ -183,20 +185,16 @@ def _hide(variable):
 
 
 # -- case files ---------------------------------------------------------------------------------
-def case_kind(data: dict, source: str) -> str:
-    """"friction", "pneumatic", "rotary" or "fmu" from the tables of a case file."""
-    tables = set(data)
-    if "fmu" in tables:
-        return "fmu"
-    if "bench" in tables:
-        return "friction"
-    if tables & {"cylinder", "seals", "air", "valve", "controller"}:
-        return "pneumatic"
-    if "seal" in tables and not tables & {"gland", "material", "mesh", "map", "load"}:
-        return "rotary"
-    raise InputError(f"{source} is neither a friction case ([bench]), a pneumatic case "
-                     "([cylinder], [[seals]]), a rotary case ([seal], [duty]) nor an FMU case "
-                     "([fmu]); see examples/fmu/")
+def _case_kind(data: dict, source: str) -> str:
+    """"friction", "pneumatic", "rotary" or "fmu": the kind of a case file
+    (:func:`sealsim.cases.detect_case_kind`) that an FMU is built from."""
+    kind = detect_case_kind(data)
+    if kind is not None and kind.name in ("friction", "pneumatic", "rotary", "fmu"):
+        return kind.name
+    found = f" (it looks like a {kind.name} case)" if kind is not None else ""
+    raise InputError(f"{source} is neither a friction case ([bench], [inputs]), a pneumatic case "
+                     "([cylinder], [[seals]]), a rotary case ([seal] with [environment], [oil] "
+                     f"or [duty]) nor an FMU case ([fmu]){found}; see examples/fmu/")
 
 
 def _one_variant(cases: dict, variant: str | None, source: str, same=None):
@@ -248,7 +246,7 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
     check_output(out, force, [path])
     source = f"case file {str(path)!r}"
     data = load_toml(path)
-    kind_of = case_kind(data, source)
+    kind_of = _case_kind(data, source)
     fmu_case = None
     inputs = [path]
     law_override = None
@@ -271,7 +269,7 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
         inputs.append(source_path)
         source = f"case file {str(source_path)!r}"
         data = load_toml(source_path)
-        kind_of = case_kind(data, source)
+        kind_of = _case_kind(data, source)
         if kind_of == "fmu":
             raise InputError(f"fmu.source: {str(source_path)!r} is an FMU case itself; give a "
                              "friction, pneumatic or rotary case")
@@ -303,7 +301,7 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
         i = case.inputs
         return build_friction_fmu(
             _law(params), out, normal_force=i.normal_force, contact_width=i.contact_width,
-            seal_temperature=i.temperature if i.temperature is not None else 293.15,
+            seal_temperature=i.temperature,
             table=table, title=title or case.title,
             source=f"{source}, variant {name!r}", **common)
     from sealsim.pneumatic.case import body_temperature, build_contact_map, load_pneumatic_cases
@@ -346,14 +344,14 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
 
 def _inline_friction(fmu_case: FMUCase, params, path: Path, out, fmi_version, kind, force,
                      compile, inputs) -> BuildResult:
-    """An FMU case with its own [friction] and [contact] tables."""
+    """An FMU case with its own [friction] and [seal_contact] tables."""
     from sealsim.pneumatic.case import build_contact_map
 
-    contact = fmu_case.contact or ContactSettings()
+    contact = fmu_case.seal_contact or ContactSettings()
     contact_map = None
     if contact.map is not None:
         contact_map = build_contact_map(contact.map, contact.sliding_diameter or 0.0,
-                                        path.parent, "contact.map")
+                                        path.parent, "seal_contact.map")
     return build_friction_fmu(
         _law(params), out, contact_map=contact_map, normal_force=contact.normal_force,
         contact_width=contact.contact_width, seal_temperature=contact.temperature,

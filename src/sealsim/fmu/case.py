@@ -17,12 +17,14 @@ case, or an FMU case that points at one of them and adds settings::
     pressure_points = 33
 
     [rotary]                                 # rotary FMUs: grids of the maps, thermal lag
-    speeds = ["0 rpm", "10 rpm", "100 rpm", "1000 rpm", "3000 rpm"]
+    max_speed = "3000 rpm"
+    speed_points = 9
     sump_temperatures = ["20 degC", "60 degC", "100 degC"]
     lag_order = 2
 
 Without a ``source`` the FMU case gives the law itself (``[friction]``) and its contact
-(``[contact]``: ``normal_force`` and ``contact_width``, or ``map`` and ``sliding_diameter``).
+(``[seal_contact]``: ``normal_force`` and ``contact_width``, or ``map`` and
+``sliding_diameter``).
 """
 
 from __future__ import annotations
@@ -51,7 +53,9 @@ class ContactSettings(CaseModel):
     contact_width: Q("length", ge=0) | None = None
     sliding_diameter: Q("length", gt=0) | None = None
     map: MapModel | None = None
-    temperature: Q("temperature", gt=0) = 293.15
+    temperature: Q("temperature", gt=0) | None = Field(None, description=(
+        "start value of the FMU's seal temperature input; default the law's "
+        "reference_temperature (else 20 degC)"))
 
     @model_validator(mode="after")
     def _one_kind(self):
@@ -69,9 +73,13 @@ class ContactSettings(CaseModel):
 class RotarySettings(CaseModel):
     """Grids of the rotary maps, the thermal lag and the checks against the full model."""
 
-    speeds: list[Q("angular_speed", ge=0)] | None = Field(None, description=(
-        "speed grid of the steady maps; default 0 and 8 speeds from 10 rpm to 3000 rpm (or "
-        "1.2 x the highest speed of the duty cycle)"))
+    max_speed: Q("angular_speed", gt=0) | None = Field(None, description=(
+        "end of the speed axis of the maps; default 3000 rpm (or 1.2 x the highest speed of "
+        "the duty cycle)"))
+    speed_points: int = Field(9, ge=3, le=200, description=(
+        "node spacing of the speed axis: speed_points - 1 equal steps of ln(1 + speed/10 rpm) "
+        "from 0 to max_speed; each flow regime of the oil-side convection gets the nodes its "
+        "widest extent needs (at least 2)"))
     sump_temperatures: list[Q("temperature", gt=0)] | None = Field(None, description=(
         "sump temperature grid; default 6 temperatures from 20 to 120 degC (widened to the "
         "case's sump temperature)"))
@@ -79,12 +87,15 @@ class RotarySettings(CaseModel):
         0.1047197551196598, description="below this speed (default 1 rpm) the torque ramps "
                                         "linearly to 0 at standstill")
     lag_order: int = Field(2, ge=1, le=3)
-    lag_speeds: list[Q("angular_speed", gt=0)] | None = Field(None, description=(
-        "speeds of the step responses; default up to five of the positive grid speeds"))
+    lag_points: int = Field(3, ge=1, le=8, description=(
+        "step responses per flow regime and lag sump temperature"))
     lag_sump_temperatures: list[Q("temperature", gt=0)] | None = Field(None, description=(
         "sump temperatures of the step responses; default lowest, middle and highest of the "
         "grid"))
-    lag_duration: Q("time", gt=0, le=1e6) = 3600.0
+    lag_duration: Q("time", gt=0, le=1e6) = Field(3600.0, description=(
+        "settling time scale of the step responses: a response changing by less than 1 % of "
+        "its rise per lag_duration has settled (each run ends then, at the latest after 16 x "
+        "lag_duration)"))
     ambient_input: bool = True
     ambient_step: Q("temperature_difference", gt=0, le=100) = 10.0
     ambient_range: Q("temperature_difference", gt=0, le=200) = 30.0
@@ -111,7 +122,7 @@ class FMUCase(CaseModel):
     title: str = ""
     fmu: FMUSettings
     friction: LawParameters | None = None
-    contact: ContactSettings | None = None
+    seal_contact: ContactSettings | None = None
     table: TableSettings = TableSettings()
     rotary: RotarySettings = RotarySettings()
 
@@ -119,7 +130,7 @@ class FMUCase(CaseModel):
     def _source_or_law(self):
         if self.fmu.source is None and self.friction is None and self.fmu.friction_file is None:
             raise ValueError("give fmu.source (a friction, pneumatic or rotary case) or a "
-                             "[friction] table with a [contact] table")
+                             "[friction] table with a [seal_contact] table")
         return self
 
 

@@ -7,7 +7,7 @@ variable      unit      meaning
 ============  ========  ===========================================================
 v             m/s       input: sliding velocity of the body relative to the seal
 p_A, p_B      Pa        inputs: gauge pressures on the two sides of the seal
-T_seal        K         input: seal temperature (evaluates the contact table)
+T_seal        K         input: seal temperature (contact table, γ(T) of the Θ law)
 F             N         output: friction force, acts against v (m dv/dt = F_app - F)
 F_breakaway   N         output (laws with true sticking): largest friction at rest
 F_N, b        N, m      outputs: normal force and contact width (Θ law, or a table)
@@ -24,14 +24,15 @@ interpolant as :class:`sealsim.structure.maps.SealMap`); the analytic estimate
 derivatives on a grid of ``temperature_points`` × ``pressure_points``.
 
 The C code implements the laws ``coulomb``, ``stribeck``, ``lugre`` and ``theta`` (with or
-without bristles); any other law, or a parameter the C code does not know, is refused with an
-:class:`~sealsim.errors.InputError`.  A new law parameter -- e.g. the coefficients of a
-temperature-dependent viscous coefficient γ(T) of the Θ law -- needs its entry (unit,
+without bristles, with a constant γ or γ(T) = γ·ν(T)/ν(T_ref) from the base oil's ASTM D341
+viscosity) -- the equations of the compiled kernels of :mod:`sealsim.friction.kernels`, in
+their argument order; any other law, or a parameter the C code does not know, is refused with
+an :class:`~sealsim.errors.InputError`.  A new law parameter needs its entry (unit,
 description, bounds) in ``_PARAMETERS`` and ``_LAW_PARAMETERS`` below, which makes it an FMU
-parameter ``VR_<NAME>``, and its use in ``c/friction_model.c`` (γ(T):
-``viscous_coefficient()``, which has the seal temperature ``P(T_SEAL)`` at hand).  After compiling, :func:`friction_check` runs the binary
-against sealsim's own law object (``step``, ``force``, ``breakaway_force``, ``derivatives``)
-and refuses an FMU that does not reproduce it.
+parameter ``VR_<NAME>``, and its use in ``c/friction_model.c``.  After compiling,
+:func:`friction_check` runs the binary against sealsim's own law object (``step``,
+``force``, ``breakaway_force``, ``derivatives``) and refuses an FMU that does not reproduce
+it.
 """
 
 from __future__ import annotations
@@ -78,6 +79,10 @@ _PARAMETERS = {
     "load_exponent": (None, "load exponent n of (F_N/F_ref)^n"),
     "bristle_stiffness": ("N/m", "pre-sliding bristle stiffness sigma0"),
     "bristle_damping": ("N.s/m", "bristle damping sigma1"),
+    "reference_temperature": ("K", "temperature T_ref at which gamma holds"),
+    "base_oil_nu40": ("m2/s", "kinematic viscosity of the grease's base oil at 40 degC: "
+                      "gamma(T) = gamma nu(T)/nu(T_ref), ASTM D341 (Walther)"),
+    "base_oil_nu100": ("m2/s", "kinematic viscosity of the grease's base oil at 100 degC"),
 }
 _EXPONENT = ((">", 0.0), ("<=", 10.0))
 _LAW_PARAMETERS = {
@@ -93,7 +98,8 @@ _LAW_PARAMETERS = {
               "f_b": (_GE0, None), "gamma": (_GE0, None),
               "reference_normal_force": (_GT0, None),
               "load_exponent": (_GE0, ("<=", 10.0)), "bristle_stiffness": (_GT0, None),
-              "bristle_damping": (_GE0, None)},
+              "bristle_damping": (_GE0, None), "reference_temperature": (_GT0, None),
+              "base_oil_nu40": (_GT0, None), "base_oil_nu100": (_GT0, None)},
 }
 _STICTION = {"coulomb", "stribeck"}
 
@@ -224,12 +230,14 @@ def c_parameters(law: FrictionLaw) -> tuple[str, dict[str, float], bool]:
     params = {k: float(v) for k, v in values.items() if k in known and v is not None}
     if name == "theta" and not bristles:
         params.pop("bristle_damping", None)
+    if name == "theta" and "base_oil_nu40" not in params:
+        params.pop("reference_temperature", None)      # gamma without base oil: constant
     return name, params, bristles
 
 
 def friction_spec(law: FrictionLaw, identifier: str, *, table: ContactTable | None = None,
                   normal_force: float | None = None, contact_width: float | None = None,
-                  seal_temperature: float = 293.15, title: str = "",
+                  seal_temperature: float | None = None, title: str = "",
                   source: str = "") -> ModelSpec:
     """The model of a seal friction FMU.
 
@@ -243,17 +251,21 @@ def friction_spec(law: FrictionLaw, identifier: str, *, table: ContactTable | No
         Contact table F_N, b (Δp, T).
     normal_force, contact_width : float, optional
         Constant contact [N], [m] when there is no table (required by the Θ law).
-    seal_temperature : float
-        Start value of the input T_seal [K].
+    seal_temperature : float, optional
+        Start value of the input T_seal [K]; default the law's ``reference_temperature`` (where
+        the Θ law's γ is γ_ref, as sealsim's law without a temperature), else 293.15 K.
     title, source : str
         Text for the description and documentation (the case it came from).
     """
     name, params, bristles = c_parameters(law)
+    viscosity = "base_oil_nu40" in params
+    if seal_temperature is None:
+        seal_temperature = float(getattr(law.params, "reference_temperature", 293.15))
     uses_load = name == "theta"
     if uses_load and table is None and (normal_force is None or contact_width is None):
         raise InputError("the theta law needs the seal's normal force and contact width: give "
                          "a contact map (map = {...}) or normal_force and contact_width (the "
-                         "[inputs] of a friction case, the [contact] of an FMU case)")
+                         "[inputs] of a friction case, the [seal_contact] of an FMU case)")
     stiction = name in _STICTION or (name == "theta" and not bristles)
     has_theta, has_z = name == "theta", name == "lugre" or bristles
     constant = table is None and uses_load
@@ -308,9 +320,11 @@ def friction_spec(law: FrictionLaw, identifier: str, *, table: ContactTable | No
     variables = [v if not (v.derivative_of and v.derivative_of not in states) else
                  _hidden(v) for v in variables]
     defines = {"FRICTION_LAW": _LAW_CODE[name], "THETA_BRISTLES": int(bristles),
+               "THETA_VISCOSITY": int(viscosity),
                "CONTACT_TABLE": int(table is not None)}
     tables = ""
-    report = {"law": law.describe(), "c_law": name, "bristles": bristles}
+    report = {"law": law.describe(), "c_law": name, "bristles": bristles,
+              "gamma_of_temperature": viscosity}
     if table is not None:
         defines.update({"MAP_T_LO": repr(table.temperature_range[0]),
                         "MAP_T_HI": repr(table.temperature_range[1]),

@@ -152,20 +152,25 @@ def rotary_documentation(spec: ModelSpec, maps) -> None:
 
     rpm = np.pi / 30.0
     docs, figures = {}, []
-    steady = maps.steady
-    grid_w, grid_t = np.meshgrid(maps.speeds, maps.sump_temperatures, indexing="ij")
-    docs["steady_map.csv"] = _csv(pd.DataFrame({
-        "speed_rpm": grid_w.ravel() / rpm, "T_sump_C": grid_t.ravel() - CELSIUS_0,
-        "T_contact_C": steady["T_contact"].ravel() - CELSIUS_0,
-        "rise_K": steady["rise"].ravel(), "torque_Nm": steady["torque"].ravel(),
-        "dRise_dT_ambient": steady["ambient_sensitivity"].ravel()}))
+    rows = []
+    for k, (speeds, part) in enumerate(zip(maps.speeds, maps.steady)):
+        for (i, j), w in np.ndenumerate(speeds):
+            rows.append({"regime": k, "xi": maps.xi[k][i], "speed_rpm": w / rpm,
+                         "T_sump_C": maps.sump_temperatures[j] - CELSIUS_0,
+                         "T_contact_C": part["T_contact"][i, j] - CELSIUS_0,
+                         "rise_K": part["rise"][i, j], "torque_Nm": part["torque"][i, j],
+                         "dRise_dT_ambient": part["ambient_sensitivity"][i, j]})
+    docs["steady_map.csv"] = _csv(pd.DataFrame(rows))
     fig, axes = plt.subplots(1, 2, figsize=(9.5, 3.8))
-    positive = maps.speeds > 0
+    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
     for j, ts in enumerate(maps.sump_temperatures):
-        label = f"sump {ts - CELSIUS_0:.0f} degC"
-        axes[0].plot(maps.speeds[positive] / rpm, steady["rise"][positive, j], "o-", label=label)
-        axes[1].plot(maps.speeds[positive] / rpm, steady["torque"][positive, j], "o-",
-                     label=label)
+        color = colors[j % len(colors)]
+        for k, (speeds, part) in enumerate(zip(maps.speeds, maps.steady)):
+            positive = speeds[:, j] > 0        # one line per flow regime: the jump between
+            label = f"sump {ts - CELSIUS_0:.0f} degC" if k == 0 else None
+            for a, name in zip(axes, ("rise", "torque")):
+                a.plot(speeds[positive, j] / rpm, part[name][positive, j], "o-", ms=3,
+                       color=color, label=label)
     axes[0].set_ylabel("contact temperature rise above the sump [K]")
     axes[1].set_ylabel("steady friction torque [N m]")
     for a in axes:
@@ -173,7 +178,8 @@ def rotary_documentation(spec: ModelSpec, maps) -> None:
         a.set_xlabel("shaft speed [rpm]")
         a.grid(True, alpha=0.3)
     axes[0].legend(fontsize=8)
-    fig.suptitle(f"{spec.model_name}: steady maps (full coupled model, sump held)", fontsize=10)
+    fig.suptitle(f"{spec.model_name}: steady maps (full coupled model, sump held; a line "
+                 "per flow regime of the oil-side convection)", fontsize=10)
     docs["steady_maps.png"] = _png(fig)
     figures.append("steady_maps.png")
 
@@ -182,7 +188,7 @@ def rotary_documentation(spec: ModelSpec, maps) -> None:
     fig, axes = plt.subplots(1, lag.sump_temperatures.size, figsize=(
         4.0 * lag.sump_temperatures.size, 3.8), sharey=True, squeeze=False)
     for (i, j), (t, y) in sorted(lag.responses.items()):
-        rows.append({"speed_rpm": lag.speeds[i] / rpm,
+        rows.append({"xi": maps.lag_xi[i], "speed_rpm": lag.speeds[i, j] / rpm,
                      "T_sump_C": lag.sump_temperatures[j] - CELSIUS_0,
                      "fit_max_error": lag.max_errors[i, j], "settled": lag.settled[i, j],
                      **{f"weight_{k + 1}": a for k, a in enumerate(lag.weights[i, j])},
@@ -190,7 +196,7 @@ def rotary_documentation(spec: ModelSpec, maps) -> None:
                         enumerate(lag.time_constants[i, j])}})
         ax = axes[0, j]
         tt = np.geomspace(max(t[0], 1e-2), t[-1], 200)
-        line, = ax.plot(t, y, lw=2, alpha=0.5, label=f"{lag.speeds[i] / rpm:.4g} rpm")
+        line, = ax.plot(t, y, lw=2, alpha=0.5, label=f"{lag.speeds[i, j] / rpm:.4g} rpm")
         ax.plot(tt, step_response(tt, lag.weights[i, j], lag.time_constants[i, j]), "--",
                 color=line.get_color())
         ax.set_title(f"sump {lag.sump_temperatures[j] - CELSIUS_0:.0f} degC", fontsize=10)
@@ -199,7 +205,8 @@ def rotary_documentation(spec: ModelSpec, maps) -> None:
         ax.set_xscale("log")
         ax.set_xlabel("time after the start [s]")
         ax.grid(True, alpha=0.3)
-    axes[0, 0].legend(fontsize=8)
+    for ax in axes[0]:
+        ax.legend(fontsize=8)
     fig.suptitle("thermal lag: transient model (solid), fitted lags (dashed)", fontsize=10)
     docs["thermal_lag.png"] = _png(fig)
     figures.append("thermal_lag.png")
@@ -240,8 +247,10 @@ def rotary_documentation(spec: ModelSpec, maps) -> None:
     sections = [
         ("Model", "<p>Steady maps of sealsim's coupled friction-thermal model (sump held at "
          "T_sump) give the contact temperature rise above the sump and its sensitivity to the "
-         "ambient. First-order lags fitted to step responses of the transient model make the "
-         "rise follow its steady value, and the contact follow the sump temperature through "
+         "ambient, one table per flow regime of the oil-side convection (they jump at the "
+         "regime boundary), over the speed between the regime's boundaries and the oil's "
+         "viscosity at the sump temperature. First-order lags fitted to step responses of "
+         "the transient model make the rise follow its steady value, and the contact follow the sump temperature through "
          "the slowest of them. The torque is sealsim's friction torque at the speed and the "
          "contact temperature. The housing is taken in equilibrium with sump and ambient.</p>"),
         ("Errors against the full model", text)]

@@ -40,8 +40,12 @@ from sealsim.fmu.rotary_maps import (
     CELSIUS_0,
     MAX_LAG_EXTENSION,
     SETTLED_FRACTION,
+    SPEED_SCALE,
+    MapAxes,
     ThermalLag,
     fixed_sump_case,
+    map_axes,
+    speed_coordinate,
     steady_rise_map,
     thermal_lag,
     torque_map,
@@ -51,60 +55,94 @@ from sealsim.properties.elastomers import ServiceRangeWarning
 from sealsim.properties.oils import OilRangeWarning
 from sealsim.rotary.case import RotaryCase
 from sealsim.rotary.simulation import lip_seal_friction
+from sealsim.tribology.film import FilmRangeWarning
 
-__all__ = ["RPM", "SPEED_SCALE", "RotaryMaps", "rotary_check", "rotary_maps", "rotary_spec"]
+__all__ = ["RPM", "RotaryMaps", "rotary_check", "rotary_maps", "rotary_spec"]
 
 RPM = math.pi / 30.0
-#: ω_s of the speed coordinate u = ln(1 + |ω|/ω_s) of the tables [rad/s] (10 rpm)
-SPEED_SCALE = 10.0 * RPM
-
-
-def speed_coordinate(speed):
-    """u = ln(1 + |ω|/ω_s), the speed axis of the tables (as the C code computes it)."""
-    return np.log1p(np.abs(np.asarray(speed, dtype=float)) / SPEED_SCALE)
+_QUIET = (ServiceRangeWarning, OilRangeWarning, FilmRangeWarning)
 
 
 @dataclass
 class RotaryMaps:
-    """Everything the rotary FMU embeds, with its grids (SI)."""
+    """Everything the rotary FMU embeds, with its grids (SI).
 
-    speeds: np.ndarray
+    The steady maps and the lag are given per flow regime k over the regime coordinate
+    ξ ∈ [k, k+1] and the sump temperature (:class:`~sealsim.fmu.rotary_maps.MapAxes`).
+
+    Attributes
+    ----------
+    axes : MapAxes
+        Viscosity coordinate and regime edges over the sump temperature.
+    sump_temperatures : ndarray, shape (m,)
+        T_s [K] of the steady maps.
+    xi : list of ndarray
+        Per regime, the ξ of its nodes (n_k,).
+    speeds : list of ndarray
+        Per regime, the node speeds [rad/s], shape (n_k, m).
+    steady : list of dict
+        Per regime, :func:`~sealsim.fmu.rotary_maps.steady_rise_map` at those nodes.
+    lag : ThermalLag
+        Step responses at the speeds ``lag.speeds`` (p, q): row i at ξ = ``lag_xi[i]``.
+    lag_xi : ndarray, shape (p,)
+        ξ of the lag rows, ascending.
+    lag_regime : ndarray, shape (p,)
+        Regime of the lag rows (ascending; a row on a boundary belongs to one side).
+    """
+
+    axes: MapAxes
     sump_temperatures: np.ndarray
+    xi: list
+    speeds: list
+    steady: list
     ambient: float
     ambient_range: float
-    steady: dict
     torque_speeds: np.ndarray
     torque_temperatures: np.ndarray
     torque: np.ndarray
     lag: ThermalLag
+    lag_xi: np.ndarray
+    lag_regime: np.ndarray
     notes: list = field(default_factory=list)
 
+    @property
+    def n_regimes(self) -> int:
+        return len(self.xi)
 
-def rotary_maps(case: RotaryCase, *, speeds, sump_temperatures, torque_speed_min: float,
-                lag_order: int = 2, lag_speeds=None, lag_sump_temperatures=None,
-                lag_duration: float = 3600.0, ambient_step: float | None = 10.0,
-                ambient_range: float = 30.0, torque_points: tuple[int, int] = (65, 61),
-                progress=None) -> RotaryMaps:
+    @property
+    def speed_max(self) -> float:
+        return self.axes.speed_max
+
+
+def rotary_maps(case: RotaryCase, *, speed_max: float, speed_points: int, sump_temperatures,
+                torque_speed_min: float, lag_order: int = 2, lag_points: int = 2,
+                lag_sump_temperatures=None, lag_duration: float = 3600.0,
+                ambient_step: float | None = 10.0, ambient_range: float = 30.0,
+                torque_points: tuple[int, int] = (65, 61), progress=None) -> RotaryMaps:
     """Compute the steady maps, the torque map and the thermal lag of a rotary case.
 
     Parameters
     ----------
     case : RotaryCase
-    speeds : array_like
-        Speed grid of the steady map [rad/s] (ascending, >= 0; 0 allowed).
+    speed_max : float
+        End of the speed axis [rad/s].
+    speed_points : int
+        Node spacing of the speed axis: (speed_points − 1) equal steps of u = ln(1 + ω/ω_s)
+        from 0 to ``speed_max``; each flow regime gets the nodes its widest extent needs
+        (at least 2), its edges included.
     sump_temperatures : array_like
         Sump temperature grid [K] (ascending, at least two).
     torque_speed_min : float
         Lowest speed of the torque table [rad/s]; below it the torque ramps to 0.
     lag_order : {1, 2, 3}
-    lag_speeds : array_like, optional
-        Speeds of the step responses [rad/s] (default: up to five of the positive grid
-        speeds, the lowest and the highest among them).
+    lag_points : int
+        Step responses per flow regime and lag sump temperature, at the centres of as many
+        equal parts of the regime's ξ.
     lag_sump_temperatures : array_like, optional
         Sump temperatures of the step responses [K] (default: lowest, middle and highest of
         the grid).
     lag_duration : float
-        Length of each step response run [s].
+        Settling time scale of the step responses [s] (:func:`thermal_lag`).
     ambient_step : float or None
         Step of the ambient sensitivity [K]; None: the ambient is not an input.
     ambient_range : float
@@ -114,36 +152,57 @@ def rotary_maps(case: RotaryCase, *, speeds, sump_temperatures, torque_speed_min
     progress : callable, optional
         ``progress(task, done, total)``.
     """
-    speeds = np.asarray(speeds, dtype=float)
     sumps = np.asarray(sump_temperatures, dtype=float)
-    if speeds.size < 2 or np.any(np.diff(speeds) <= 0) or speeds[0] < 0:
-        raise InputError("rotary.speeds: give at least two ascending speeds >= 0")
     if sumps.size < 2 or np.any(np.diff(sumps) <= 0):
         raise InputError("rotary.sump_temperatures: give at least two ascending temperatures")
-    if not 0 < torque_speed_min < speeds[-1]:
+    if not speed_max > 0:
+        raise InputError("rotary.max_speed must be > 0")
+    if speed_points < 3:
+        raise InputError("rotary.speed_points must be >= 3")
+    if not 0 < torque_speed_min < speed_max:
         raise InputError("rotary.torque_speed_min must be > 0 and below the highest speed")
+    if lag_points < 1:
+        raise InputError("rotary.lag_points must be >= 1")
     report = (lambda task: None if progress is None else
               (lambda done, total: progress(task, done, total)))
+    if lag_sump_temperatures is None:
+        lag_sump_temperatures = [sumps[0], 0.5 * (sumps[0] + sumps[-1]), sumps[-1]]
+    lag_sumps = np.sort(np.asarray(lag_sump_temperatures, dtype=float))
+    if lag_sumps[0] < sumps[0] or lag_sumps[-1] > sumps[-1]:
+        raise InputError("rotary.lag_sump_temperatures must lie within the sump temperatures "
+                         "of the maps")
+    axes = map_axes(case, np.concatenate([sumps, lag_sumps]), speed_max)
+    _, edges = axes.at(sumps)
+    step = float(speed_coordinate(speed_max)) / (speed_points - 1)
+    xi, speeds, steady = [], [], []
     with warnings.catch_warnings():
-        warnings.simplefilter("ignore", (ServiceRangeWarning, OilRangeWarning))
-        steady = steady_rise_map(case, speeds, sumps, ambient_step, report("steady map"))
-        if lag_speeds is None:
-            positive = speeds[speeds > 0]
-            lag_speeds = positive[np.unique(np.linspace(0, positive.size - 1,
-                                                        min(5, positive.size)).round()
-                                            .astype(int))]
-        if lag_sump_temperatures is None:
-            lag_sump_temperatures = [sumps[0], 0.5 * (sumps[0] + sumps[-1]), sumps[-1]]
-        lag = thermal_lag(case, np.sort(np.asarray(lag_speeds, float)),
-                          np.sort(np.asarray(lag_sump_temperatures, float)), lag_order,
-                          lag_duration, progress=report("thermal lag"))
+        warnings.simplefilter("ignore", _QUIET)
+        for k in range(axes.n_regimes):
+            widest = float(np.max(edges[:, k + 1] - edges[:, k]))
+            nodes = np.linspace(k, k + 1, max(2, math.ceil(widest / step - 1e-9) + 1))
+            xi.append(nodes)
+            speeds.append(axes.speed(k, nodes[:, None], sumps[None, :]))
+        calls = sum(w.size for w in speeds) * (2 if ambient_step else 1)
+        done = 0
+        for w in speeds:
+            part = report("steady map")
+            steady.append(steady_rise_map(case, w, sumps, ambient_step, None if part is None
+                                          else lambda d, n, base=done: part(base + d, calls)))
+            done += w.size * (2 if ambient_step else 1)
+        lag_xi = np.concatenate([k + _lag_fractions(lag_points)
+                                 for k in range(axes.n_regimes)])
+        lag_regime = np.repeat(np.arange(axes.n_regimes), lag_points)
+        lag_speeds = np.concatenate([axes.speed(k, (k + _lag_fractions(lag_points))[:, None],
+                                                lag_sumps[None, :])
+                                     for k in range(axes.n_regimes)])
+        lag = thermal_lag(case, lag_speeds, lag_sumps, lag_order, lag_duration,
+                          progress=report("thermal lag"))
         n_speed, n_temp = torque_points
-        t_speeds = np.geomspace(torque_speed_min, speeds[-1], n_speed)
-        contact = sumps[None, :] + steady["rise"]
-        low = min(float(contact.min()), float(sumps[0])) - 10.0 - ambient_range * float(
-            np.abs(steady["ambient_sensitivity"]).max())
-        high = float(contact.max()) + 10.0 + ambient_range * float(
-            np.abs(steady["ambient_sensitivity"]).max())
+        t_speeds = np.geomspace(torque_speed_min, speed_max, n_speed)
+        contact = np.concatenate([s["T_contact"].ravel() for s in steady])
+        sensitivity = max(float(np.abs(s["ambient_sensitivity"]).max()) for s in steady)
+        low = min(float(contact.min()), float(sumps[0])) - 10.0 - ambient_range * sensitivity
+        high = float(contact.max()) + 10.0 + ambient_range * sensitivity
         # within the temperatures the elastomer and oil models accept
         friction = lip_seal_friction(case)
         allowed_lo, allowed_hi = friction.elastomer.allowed_range
@@ -153,13 +212,24 @@ def rotary_maps(case: RotaryCase, *, speeds, sump_temperatures, torque_speed_min
         t_temps = np.linspace(low, high, n_temp)
         torque = torque_map(case, t_speeds, t_temps)
     notes = []
-    unsettled = lag.speeds[np.any(lag.settled < SETTLED_FRACTION, axis=1)]
-    if unsettled.size:
-        notes.append("the step responses at " + ", ".join(f"{w / RPM:.4g}" for w in unsettled)
-                     + " rpm had not settled (within 1 percent) after "
-                     f"{MAX_LAG_EXTENSION:g} times the lag duration; raise rotary.lag_duration")
-    return RotaryMaps(speeds, sumps, float(case.environment.ambient_temperature),
-                      float(ambient_range), steady, t_speeds, t_temps, torque, lag, notes)
+    if np.any(lag.settled < SETTLED_FRACTION):
+        bad = [f"{w / RPM:.4g} rpm at {t - CELSIUS_0:.4g} degC"
+               for (w, t), y in zip(zip(lag.speeds.ravel(), np.broadcast_to(
+                   lag.sump_temperatures, lag.speeds.shape).ravel()), lag.settled.ravel())
+               if y < SETTLED_FRACTION]
+        notes.append("the step responses at " + ", ".join(bad) + " had not settled (within 1 "
+                     f"percent) after {MAX_LAG_EXTENSION:g} times the lag duration; raise "
+                     "rotary.lag_duration")
+    return RotaryMaps(axes, sumps, xi, speeds, steady,
+                      float(case.environment.ambient_temperature), float(ambient_range),
+                      t_speeds, t_temps, torque, lag, lag_xi, lag_regime, notes)
+
+
+def _lag_fractions(points: int) -> np.ndarray:
+    """Where in a regime (ξ − k) the step responses are taken: at the centres of ``points``
+    equal parts (not at standstill, where nothing heats, nor at the top speed, where the
+    contact of a hot sump may leave the elastomer's range)."""
+    return (np.arange(points) + 0.5) / points
 
 
 def rotary_spec(case: RotaryCase, maps: RotaryMaps, identifier: str, *, title: str = "",
@@ -207,28 +277,34 @@ def rotary_spec(case: RotaryCase, maps: RotaryMaps, identifier: str, *, title: s
                  "contact temperature at the start when start_steady is false", "K", sump0,
                  lower=(">", 0.0)),
     ]
-    u_steady = speed_coordinate(maps.speeds)
-    steady_values = np.stack([maps.steady["rise"], maps.steady["ambient_sensitivity"]], -1)
-    steady_table = pchip_table(u_steady, maps.sump_temperatures, steady_values)
+    lag = maps.lag
+    sump_axis, edges = maps.axes.at(maps.sump_temperatures)
+    lag_axis, _ = maps.axes.at(lag.sump_temperatures)
+    lag_start = np.searchsorted(maps.lag_regime, np.arange(maps.n_regimes + 1))
+
+    def c_array(name, values, kind="double"):
+        text = (repr(float(v)) if kind == "double" else str(int(v)) for v in values)
+        return f"static const {kind} {name}[{len(values)}] = {{" + ", ".join(text) + "};"
+
+    steady_tables = [
+        pchip_table(nodes, sump_axis, np.stack([part["rise"], part["ambient_sensitivity"]], -1))
+        .c_source(f"STEADY_MAP_{k}") for k, (nodes, part) in enumerate(zip(maps.xi, maps.steady))]
     torque_table = pchip_table(speed_coordinate(maps.torque_speeds), maps.torque_temperatures,
                                maps.torque[..., None])
     torque_error = _torque_table_error(case, torque_table)
-    lag = maps.lag
-
-    def c_array(name, values):
-        return (f"static const double {name}[{len(values)}] = {{"
-                + ", ".join(repr(float(v)) for v in values) + "};")
-
     tables = "\n".join([
-        steady_table.c_source("STEADY_MAP"), torque_table.c_source("TORQUE_MAP"),
-        c_array("LAG_U", speed_coordinate(lag.speeds)),
-        c_array("LAG_TS", lag.sump_temperatures),
+        maps.axes.table.c_source("AXIS_TABLE"), *steady_tables,
+        "static const HermiteTable *const STEADY_MAPS[NREG] = {"
+        + ", ".join(f"&STEADY_MAP_{k}" for k in range(maps.n_regimes)) + "};",
+        torque_table.c_source("TORQUE_MAP"),
+        c_array("LAG_XI", maps.lag_xi), c_array("LAG_START", lag_start, "int"),
+        c_array("LAG_S", lag_axis),
         c_array("LAG_WEIGHT", lag.weights.ravel()),
         c_array("LAG_LOG_TAU", np.log(lag.time_constants).ravel())])
     defines = {
-        "NLAG": order, "LAG_NU": int(lag.speeds.size),
-        "LAG_NT": int(lag.sump_temperatures.size), "SPEED_SCALE": repr(SPEED_SCALE),
-        "STEADY_SPEED_HI": repr(float(maps.speeds[-1])),
+        "NLAG": order, "NREG": maps.n_regimes, "LAG_NT": int(lag.sump_temperatures.size),
+        "SPEED_SCALE": repr(SPEED_SCALE), "U_MAX": repr(float(speed_coordinate(maps.speed_max))),
+        "STEADY_SPEED_HI": repr(float(maps.speed_max)),
         "STEADY_SUMP_LO": repr(float(maps.sump_temperatures[0])),
         "STEADY_SUMP_HI": repr(float(maps.sump_temperatures[-1])),
         "AMBIENT_MAP": repr(maps.ambient),
@@ -238,9 +314,14 @@ def rotary_spec(case: RotaryCase, maps: RotaryMaps, identifier: str, *, title: s
         "TORQUE_TC_LO": repr(float(maps.torque_temperatures[0])),
         "TORQUE_TC_HI": repr(float(maps.torque_temperatures[-1])),
     }
+    boundaries = SPEED_SCALE * np.expm1(edges[:, 1:-1]) / RPM
     report = {
         "source": source,
-        "steady_map": {"speeds_rpm": (maps.speeds / RPM).tolist(),
+        "steady_map": {"speed_max_rpm": maps.speed_max / RPM,
+                       "regimes": maps.n_regimes,
+                       "speed_nodes_per_regime": [int(x.size) for x in maps.xi],
+                       "node_speeds_rpm": [(w / RPM).tolist() for w in maps.speeds],
+                       "regime_boundaries_rpm": boundaries.T.tolist(),
                        "sump_temperatures_C": (maps.sump_temperatures - CELSIUS_0).tolist(),
                        "ambient_C": maps.ambient - CELSIUS_0},
         "torque_map": {"speed_range_rpm": [float(maps.torque_speeds[0] / RPM),
@@ -252,6 +333,7 @@ def rotary_spec(case: RotaryCase, maps: RotaryMaps, identifier: str, *, title: s
                                  int(maps.torque_temperatures.size)],
                        "max_relative_error_at_cell_centres": torque_error},
         "thermal_lag": {"order": order, "speeds_rpm": (lag.speeds / RPM).tolist(),
+                        "xi": maps.lag_xi.tolist(), "regime": maps.lag_regime.tolist(),
                         "sump_temperatures_C": (lag.sump_temperatures - CELSIUS_0).tolist(),
                         "weights": lag.weights.tolist(),
                         "time_constants_s": lag.time_constants.tolist(),
@@ -275,7 +357,7 @@ def _torque_table_error(case: RotaryCase, table) -> float:
                                indexing="ij")
     speed = np.expm1(mid_u.ravel()) * SPEED_SCALE
     with warnings.catch_warnings():
-        warnings.simplefilter("ignore", (ServiceRangeWarning, OilRangeWarning))
+        warnings.simplefilter("ignore", _QUIET)
         exact = np.asarray(lip_seal_friction(case).evaluate(speed, mid_t.ravel()).torque)
     approx = table.evaluate(mid_u.ravel(), mid_t.ravel())[:, 0]
     return float(np.max(np.abs(approx / exact - 1.0)))
@@ -288,7 +370,8 @@ def rotary_check(case: RotaryCase, maps: RotaryMaps, spec: ModelSpec, *,
 
     Returns ``check(folder, token)`` for :func:`sealsim.fmu.builder.build_archive`.  It
     measures (and records in the build report) the relative error of the steady torque at
-    every grid point (speed > 0); with ``between`` also at the centres between grid points
+    every grid point (above the torque ramp at ``torque_speed_min``); with ``between`` also
+    at the centres of the cells of every regime's table
     (new :func:`~sealsim.rotary.simulation.steady_state` runs); with ``duty_cycle`` the
     errors over the case's own duty cycle: :func:`~sealsim.rotary.simulation.simulate`
     (free or held sump as in the case) against the FMU fed with that run's speed and sump
@@ -309,29 +392,33 @@ def rotary_check(case: RotaryCase, maps: RotaryMaps, spec: ModelSpec, *,
         results = {}
         with LoadedFMU(folder, "cs", "build_check") as fmu:
             errors, contact_errors = [], []
-            for i, w in enumerate(maps.speeds):
-                if w <= 0:
-                    continue
-                for j, ts in enumerate(maps.sump_temperatures):
-                    torque, contact = steady_fmu(fmu, w, ts)
-                    errors.append(abs(torque / maps.steady["torque"][i, j] - 1.0))
-                    contact_errors.append(abs(contact - maps.steady["T_contact"][i, j]))
-            results["grid"] = {"max_torque_rel_error": max(errors),
+            # below torque_speed_min the FMU's torque ramps to 0 on purpose: not compared
+            for speeds, part in zip(maps.speeds, maps.steady):
+                for (i, j), w in np.ndenumerate(speeds):
+                    if w < maps.torque_speeds[0]:
+                        continue
+                    torque, contact = steady_fmu(fmu, w, maps.sump_temperatures[j])
+                    errors.append(abs(torque / part["torque"][i, j] - 1.0))
+                    contact_errors.append(abs(contact - part["T_contact"][i, j]))
+            results["grid"] = {"points": len(errors), "max_torque_rel_error": max(errors),
                                "max_T_contact_error_K": max(contact_errors)}
             if between:
-                mid_w = np.sqrt(maps.speeds[1:] * maps.speeds[:-1])
-                mid_w = mid_w[mid_w > 0]
+                # the centres of the cells of every regime's table
                 mid_t = 0.5 * (maps.sump_temperatures[1:] + maps.sump_temperatures[:-1])
                 rows = []
                 with warnings.catch_warnings():
-                    warnings.simplefilter("ignore", (ServiceRangeWarning, OilRangeWarning))
+                    warnings.simplefilter("ignore", _QUIET)
                     for ts in mid_t:
                         held = fixed_sump_case(case, ts)
-                        for w in mid_w:
-                            full = steady_state(held, float(w))
-                            torque, contact = steady_fmu(fmu, w, ts)
-                            rows.append((w, ts, full["torque_Nm"], torque,
-                                         full["T_contact_C"] + CELSIUS_0, contact))
+                        for k, nodes in enumerate(maps.xi):
+                            mid_xi = 0.5 * (nodes[1:] + nodes[:-1])
+                            for w in maps.axes.speed(k, mid_xi, ts):
+                                if w < maps.torque_speeds[0]:
+                                    continue
+                                full = steady_state(held, float(w))
+                                torque, contact = steady_fmu(fmu, w, ts)
+                                rows.append((w, ts, full["torque_Nm"], torque,
+                                             full["T_contact_C"] + CELSIUS_0, contact))
                 rows = np.array(rows)
                 results["between"] = {
                     "points": int(len(rows)),
@@ -343,7 +430,7 @@ def rotary_check(case: RotaryCase, maps: RotaryMaps, spec: ModelSpec, *,
                                             "was not run")
             elif duty_cycle:
                 with warnings.catch_warnings():
-                    warnings.simplefilter("ignore", (ServiceRangeWarning, OilRangeWarning))
+                    warnings.simplefilter("ignore", _QUIET)
                     full = simulate(case, base_dir=base_dir).timeseries
                 fmu.reset()
                 fmu.set(start_steady=False,

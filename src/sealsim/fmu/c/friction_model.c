@@ -1,10 +1,11 @@
 /* Seal friction: the friction laws of sealsim.friction in C, one law per FMU (FRICTION_LAW).
  *
  * Sign convention (sealsim.friction.base): v is the sliding velocity of the body relative
- * to the seal, F acts against the body (m dv/dt = F_applied - F).  Every formula mirrors
- * the pure function of sealsim named next to it; the states advance with the exact update
- * of sealsim's law.step() for inputs held over the step, so a communication step of any
- * length is stable (stiff bristles, long dwells).
+ * to the seal, F acts against the body (m dv/dt = F_applied - F).  Every formula is the
+ * compiled scalar kernel of sealsim.friction.kernels named next to it (same equations, same
+ * argument order; tests compare them over random inputs); the states advance with the exact
+ * update of sealsim's law.step() for inputs held over the step, so a communication step of
+ * any length is stable (stiff bristles, long dwells).
  *
  * Contact: F_N and b from the contact table (CONTACT_TABLE) at the pressure difference
  * across the seal dp = x tanh(x/eps), x = p_A - p_B (sealsim.pneumatic.seals.smooth_abs),
@@ -26,7 +27,10 @@ static double sgn(double x) {
 
 typedef struct {
     double v, normal_force, contact_width, dp;
+    double gamma;      /* viscous coefficient of the Theta law at T_seal [N s/m^2] */
 } Contact;
+
+static double viscous_coefficient(Instance *c);
 
 /* the contact at the current inputs, cached until an input or a parameter is set */
 static Contact contact(Instance *c) {
@@ -36,6 +40,7 @@ static Contact contact(Instance *c) {
         k.normal_force = c->cache[1];
         k.contact_width = c->cache[2];
         k.dp = c->cache[3];
+        k.gamma = c->cache[4];
         return k;
     }
     double x = P(P_A) - P(P_B);
@@ -57,14 +62,17 @@ static Contact contact(Instance *c) {
     c->cache[0] = k.v;
     c->cache[1] = k.normal_force;
     c->cache[2] = k.contact_width;
+    k.gamma = viscous_coefficient(c);
     c->cache[3] = k.dp;
+    c->cache[4] = k.gamma;
     c->cache_valid = 1;
     return k;
 }
 
 /* -- Stribeck curve and pressure scaling (sealsim.friction.stribeck) --------------------- */
 #if FRICTION_LAW == LAW_COULOMB || FRICTION_LAW == LAW_STRIBECK
-/* pressure_scaled_force: F_C(p) = F_C + f (p_A + p_B); F_S keeps the ratio F_S/F_C */
+/* pressure_scaled_force: F_C(p) = F_C + f (p_A + p_B);
+ * stribeck_scaled_levels: F_S(p) = F_S F_C(p)/F_C, or F_S + (F_C(p) - F_C) when F_C = 0 */
 static void scaled_levels(Instance *c, double *fc, double *fs) {
     double fc0 = P(COULOMB_FORCE);
     double scaled = fc0 + P(PRESSURE_COEFFICIENT) * (P(P_A) + P(P_B));
@@ -92,7 +100,7 @@ static double bristle_rate(double z, double v, double sigma0, double g) {
     return v - sigma0 * fabs(v) * z / g;
 }
 
-/* lugre_bristle_step: z(t+h) = z_ss + (z - z_ss) exp(-sigma0 |v| h / g) */
+/* lugre_affine: z(t+h) = z_ss + (z - z_ss) exp(-sigma0 |v| h / g), z_ss = sgn(v) g/sigma0 */
 static double bristle_step(double z, double v, double h, double sigma0, double g) {
     double decay = -expm1(-sigma0 * fabs(v) * h / g);
     double z_ss = sgn(v) * g / sigma0;
@@ -102,7 +110,7 @@ static double bristle_step(double z, double v, double h, double sigma0, double g
 
 /* -- Theta rate-and-state law (sealsim.friction.theta) --------------------------------------- */
 #if FRICTION_LAW == LAW_THETA
-/* (F_N/F_ref)^n */
+/* theta_load_factor: (F_N/F_ref)^n */
 static double load_factor(Instance *c, double normal_force) {
     return pow(normal_force / P(REFERENCE_NORMAL_FORCE), P(LOAD_EXPONENT));
 }
@@ -112,11 +120,6 @@ static double theta_level(Instance *c, double theta, double normal_force) {
     return normal_force * (P(F_A) * (1.0 - theta) + P(F_B) * theta);
 }
 
-/* The viscous coefficient gamma [N s/m^2] of F = ... + gamma b v.  A temperature-dependent
- * gamma(T) (grease viscosity) is evaluated here from P(T_SEAL). */
-static double viscous_coefficient(Instance *c) {
-    return P(GAMMA);
-}
 
 /* theta_rate: dtheta/dt = -theta/tau + |v|/(alpha (F_N/F_ref)^n) (1 - theta) */
 static double theta_rate(Instance *c, double theta, const Contact *k) {
@@ -124,7 +127,7 @@ static double theta_rate(Instance *c, double theta, const Contact *k) {
     return -theta / P(TAU) + fabs(k->v) / (P(ALPHA) * p) * (1.0 - theta);
 }
 
-/* theta_step: exact theta after h with v and F_N held */
+/* theta_affine: exact theta after h with v and F_N held (theta_steady: |v|/(|v| + v*)) */
 static double theta_step(Instance *c, double theta, const Contact *k, double h) {
     double speed = fabs(k->v), tau = P(TAU), alpha = P(ALPHA);
     double p = load_factor(c, k->normal_force);
@@ -136,6 +139,42 @@ static double theta_step(Instance *c, double theta, const Contact *k, double h) 
 }
 #endif
 
+/* The viscous coefficient gamma [N s/m^2] of F = ... + gamma b v: constant, or with
+ * THETA_VISCOSITY gamma(T) = gamma nu(T)/nu(T_ref) (Theta.gamma, theta_viscous_coefficient)
+ * with the base oil's ASTM D341 (Walther) viscosity log10 log10(nu + 0.7) = A - B log10 T
+ * (nu in mm^2/s, T in K) through its datasheet viscosities at 40 and 100 degC
+ * (sealsim.properties.oils.walther_constants). */
+#if FRICTION_LAW == LAW_THETA && THETA_VISCOSITY
+#define WALTHER_T40 313.15
+#define WALTHER_T100 373.15
+
+/* W = log10 log10(nu + 0.7), nu in mm^2/s (the argument in m^2/s) */
+static double walther_w(double nu) {
+    return log10(log10(nu * 1e6 + 0.7));
+}
+
+/* walther_viscosity_ratio: nu(T)/nu(T_ref), nu = 10^(10^(A - B log10 T)) - 0.7 */
+static double walther_viscosity_ratio(double t, double tref, double wa, double wb) {
+    double nu = pow(10.0, pow(10.0, wa - wb * log10(t))) - 0.7;
+    double nu_ref = pow(10.0, pow(10.0, wa - wb * log10(tref))) - 0.7;
+    return nu / nu_ref;
+}
+#endif
+
+static double viscous_coefficient(Instance *c) {
+#if FRICTION_LAW == LAW_THETA && THETA_VISCOSITY
+    double w40 = walther_w(P(BASE_OIL_NU40)), w100 = walther_w(P(BASE_OIL_NU100));
+    double wb = (w40 - w100) / (log10(WALTHER_T100) - log10(WALTHER_T40));
+    double wa = w40 + wb * log10(WALTHER_T40);
+    return P(GAMMA) * walther_viscosity_ratio(P(T_SEAL), P(REFERENCE_TEMPERATURE), wa, wb);
+#elif FRICTION_LAW == LAW_THETA
+    return P(GAMMA);
+#else
+    (void)c;
+    return 0.0;
+#endif
+}
+
 /* -- the model interface ---------------------------------------------------------------------- */
 FmuStatus model_check_parameters(Instance *c) {
 #if FRICTION_LAW == LAW_STRIBECK || FRICTION_LAW == LAW_LUGRE
@@ -143,6 +182,21 @@ FmuStatus model_check_parameters(Instance *c) {
         fmu_log(c, FMU_ERROR, "logStatusError",
                 "static_force (%g N) must be >= coulomb_force (%g N)", P(STATIC_FORCE),
                 P(COULOMB_FORCE));
+        return FMU_ERROR;
+    }
+#endif
+#if FRICTION_LAW == LAW_THETA && THETA_VISCOSITY
+    /* ThetaParameters and walther_constants: the double logarithm exists above 0.3 mm^2/s */
+    if (!(P(BASE_OIL_NU100) > 0.3e-6)) {
+        fmu_log(c, FMU_ERROR, "logStatusError",
+                "base_oil_nu100 (%g m2/s) must be > 0.3e-6 m2/s (0.3 mm2/s, ASTM D341)",
+                P(BASE_OIL_NU100));
+        return FMU_ERROR;
+    }
+    if (!(P(BASE_OIL_NU40) > P(BASE_OIL_NU100))) {
+        fmu_log(c, FMU_ERROR, "logStatusError",
+                "base_oil_nu40 (%g m2/s) must be larger than base_oil_nu100 (%g m2/s): an oil "
+                "thins when it is heated", P(BASE_OIL_NU40), P(BASE_OIL_NU100));
         return FMU_ERROR;
     }
 #endif
@@ -210,7 +264,15 @@ FmuStatus model_outputs(Instance *c) {
     force = P(SIGMA0) * P(Z) + P(SIGMA1) * zdot + P(SIGMA2) * k.v;   /* lugre_force */
 #elif FRICTION_LAW == LAW_THETA
     double level = theta_level(c, P(THETA), k.normal_force);
-    double gamma = viscous_coefficient(c);
+    double gamma = k.gamma;
+#if THETA_VISCOSITY
+    if (!(P(T_SEAL) > 0.0)) {
+        fmu_log(c, FMU_ERROR, "logStatusError",
+                "seal temperature T_seal = %g K must be > 0 K (gamma(T) of the base oil)",
+                P(T_SEAL));
+        return FMU_ERROR;
+    }
+#endif
 #if THETA_BRISTLES
     double zdot = bristle_rate(P(Z), k.v, P(BRISTLE_STIFFNESS), level);
     force = P(BRISTLE_STIFFNESS) * P(Z) + P(BRISTLE_DAMPING) * zdot +

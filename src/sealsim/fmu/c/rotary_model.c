@@ -1,16 +1,24 @@
 /* Rotary lip seal: steady maps of sealsim's coupled friction-thermal model plus a thermal lag.
  *
- * Steady map (sealsim.rotary.simulation.steady_state with the sump held at T_sump, ambient
- * T_ambient_map): the contact temperature rise above the sump dT_ss(speed, T_sump) and its
- * sensitivity to the ambient temperature, d dT_ss / d T_ambient.  Speed axis:
- * u = log(1 + |speed|/SPEED_SCALE).
+ * Coordinates (sealsim.fmu.rotary_maps.MapAxes): speed u = log(1 + |speed|/SPEED_SCALE); the
+ * oil-side convection of the shaft changes its flow regime (Taylor-Couette: laminar to Taylor
+ * vortices) at speeds e_1(T_sump) < ... that move with the oil's viscosity, and the steady
+ * contact temperature and the lag jump there.  So regime k (k = 0 ... NREG-1) between the
+ * edges e_k and e_k+1 (e_0 = 0, e_NREG = U_MAX) has its own tables over
+ *     xi = k + (u - e_k)/(e_k+1 - e_k)   and   s = -ln(nu(T_sump)/(1 mm^2/s)),
+ * the edges and s from AXIS_TABLE over T_sump.
+ *
+ * Steady maps (sealsim.rotary.simulation.steady_state with the sump held at T_sump, ambient
+ * T_ambient_map): the contact temperature rise above the sump dT_ss and its sensitivity to
+ * the ambient temperature, d dT_ss / d T_ambient (STEADY_MAPS[k]).
  *
  * Thermal lag (identified from step responses of the transient model,
  * sealsim.fmu.rotary_maps): the rise is the sum of NLAG first-order components and the
  * contact follows the sump through the slowest of them:
  *     d x_i/dt = (a_i r - x_i)/tau_i,   d s/dt = (T_sump - s)/tau_NLAG,
  *     T_contact = s + sum x_i,   r = dT_ss + (d dT_ss/d T_ambient) (T_ambient - T_ambient_map);
- * a_i and log tau_i interpolated bilinearly over (u, T_sump) between the identified points.
+ * a_i and log tau_i interpolated bilinearly over (xi, s) between the identified points of
+ * the regime (LAG_XI[LAG_START[k] ... LAG_START[k+1]-1] x LAG_S), constant beyond them.
  * In a communication step the inputs are held and the update is exact:
  *     x(t+h) = x_ss + (x - x_ss) exp(-h/tau).
  *
@@ -30,16 +38,37 @@ static double speed_coordinate(double speed) {
     return log1p(fabs(speed) / SPEED_SCALE);
 }
 
-/* steady rise of the contact temperature above the sump at the current inputs [K] */
-static double steady_rise(Instance *c) {
-    double values[2];
+/* where the current (clipped) inputs lie in the maps */
+typedef struct {
+    int regime;
+    double xi, s;
+} MapPoint;
+
+static MapPoint map_point(Instance *c) {
+    MapPoint m;
+    double axis[NREG], edges[NREG + 1];
     double omega = fmu_clip(c, CLIP_SPEED, "shaft speed |speed|", "rad/s", fabs(P(SPEED)),
                             0.0, STEADY_SPEED_HI);
     double sump = fmu_clip(c, CLIP_SUMP, "sump temperature T_sump", "K", P(T_SUMP),
                            STEADY_SUMP_LO, STEADY_SUMP_HI);
+    double u = speed_coordinate(omega);
+    hermite_evaluate(&AXIS_TABLE, sump, 0.0, axis);
+    m.s = axis[0];
+    edges[0] = 0.0;
+    for (int k = 1; k < NREG; k++) edges[k] = axis[k];
+    edges[NREG] = U_MAX;
+    m.regime = 0;
+    while (m.regime < NREG - 1 && u >= edges[m.regime + 1]) m.regime++;
+    m.xi = m.regime + (u - edges[m.regime]) / (edges[m.regime + 1] - edges[m.regime]);
+    return m;
+}
+
+/* steady rise of the contact temperature above the sump at the current inputs [K] */
+static double steady_rise(Instance *c, const MapPoint *m) {
+    double values[2];
     double ambient = fmu_clip(c, CLIP_AMBIENT, "ambient temperature T_ambient", "K",
                               P(T_AMBIENT), AMBIENT_LO, AMBIENT_HI);
-    hermite_evaluate(&STEADY_MAP, speed_coordinate(omega), sump, values);
+    hermite_evaluate(STEADY_MAPS[m->regime], m->xi, m->s, values);
     return values[0] + values[1] * (ambient - AMBIENT_MAP);
 }
 
@@ -58,18 +87,19 @@ static void locate(const double *nodes, int n, double x, int *j, double *t) {
     *t = (x - nodes[*j]) / (nodes[*j + 1] - nodes[*j]);
 }
 
-/* weights a_i and time constants tau_i [s] at the current inputs */
-static void lag_parameters(Instance *c, double *weight, double *tau) {
+/* weights a_i and time constants tau_i [s] at a point of the maps */
+static void lag_parameters(const MapPoint *m, double *weight, double *tau) {
     int j, k;
     double t, s;
-    locate(LAG_U, LAG_NU, speed_coordinate(P(SPEED)), &j, &t);
-    locate(LAG_TS, LAG_NT, P(T_SUMP), &k, &s);
-    int j1 = LAG_NU > 1 ? j + 1 : j, k1 = LAG_NT > 1 ? k + 1 : k;
+    int first = LAG_START[m->regime], n = LAG_START[m->regime + 1] - first;
+    locate(LAG_XI + first, n, m->xi, &j, &t);
+    locate(LAG_S, LAG_NT, m->s, &k, &s);
+    int j0 = first + j, j1 = first + (n > 1 ? j + 1 : j), k1 = LAG_NT > 1 ? k + 1 : k;
     double w00 = (1.0 - t) * (1.0 - s), w10 = t * (1.0 - s), w01 = (1.0 - t) * s, w11 = t * s;
     for (int i = 0; i < NLAG; i++) {
 #define LAG_AT(table, a, b) table[((a) * LAG_NT + (b)) * NLAG + i]
-#define BILINEAR(table) (w00 * LAG_AT(table, j, k) + w10 * LAG_AT(table, j1, k) + \
-                         w01 * LAG_AT(table, j, k1) + w11 * LAG_AT(table, j1, k1))
+#define BILINEAR(table) (w00 * LAG_AT(table, j0, k) + w10 * LAG_AT(table, j1, k) + \
+                         w01 * LAG_AT(table, j0, k1) + w11 * LAG_AT(table, j1, k1))
         weight[i] = BILINEAR(LAG_WEIGHT);
         tau[i] = exp(BILINEAR(LAG_LOG_TAU));
 #undef BILINEAR
@@ -86,8 +116,9 @@ static double contact_temperature(Instance *c) {
 /* steady values and time constants of the rise components and the lagged sump */
 static void lag_targets(Instance *c, double *target, double *tau) {
     double weight[NLAG];
-    double rise = steady_rise(c);
-    lag_parameters(c, weight, tau);
+    MapPoint m = map_point(c);
+    double rise = steady_rise(c, &m);
+    lag_parameters(&m, weight, tau);
     for (int i = 0; i < NLAG; i++) target[i] = weight[i] * rise;
     target[NLAG] = P(T_SUMP);
     tau[NLAG] = tau[NLAG - 1];
@@ -121,12 +152,13 @@ FmuStatus model_outputs(Instance *c) {
     double t_table = fmu_clip(c, CLIP_CONTACT, "contact temperature", "K", t_contact,
                               TORQUE_TC_LO, TORQUE_TC_HI);
     double torque;
-    /* above the table the speed is clipped (and reported) in steady_rise */
+    MapPoint m = map_point(c);
+    /* above the table the speed is clipped (and reported) in map_point */
     double u = speed_coordinate(omega < TORQUE_SPEED_MIN ? TORQUE_SPEED_MIN
                                 : (omega > STEADY_SPEED_HI ? STEADY_SPEED_HI : omega));
     hermite_evaluate(&TORQUE_MAP, u, t_table, &torque);
     if (omega < TORQUE_SPEED_MIN) torque *= omega / TORQUE_SPEED_MIN;
-    P(T_CONTACT_STEADY) = P(T_SUMP) + steady_rise(c);
+    P(T_CONTACT_STEADY) = P(T_SUMP) + steady_rise(c, &m);
     P(TORQUE) = speed >= 0.0 ? torque : -torque;
     P(POWER) = torque * omega;
     P(T_CONTACT) = t_contact;
