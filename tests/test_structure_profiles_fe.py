@@ -89,7 +89,7 @@ def test_lip_force_from_fe_and_the_speed_cycle(tmp_path, monkeypatch):
     from sealsim.properties.elastomers import get_elastomer
     from sealsim.rotary.lip import LIP_FORCE_FREQUENCY
     from sealsim.rotary.lip_fe import LipSpec, lip_force_table
-    from sealsim.rotary.study import load_rotary_case
+    from sealsim.rotary.simulation import load_rotary_case
 
     monkeypatch.setenv("SEALSIM_CACHE", str(tmp_path / "cache"))
     example = ROOT / "examples/rotary/speed_cycle_fe.toml"
