@@ -211,5 +211,3 @@ def map_case_file(path, out, force: bool = False, progress=None, workers: int | 
 
     return run_variants({"map": case}, out, compute, write, force=force, inputs=[path])["map"]
 
-
-__all__ += ["map_case_file", "run_case_file"]
