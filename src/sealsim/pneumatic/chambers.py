@@ -51,6 +51,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from sealsim.thermal.convection import air_properties, free_convection_horizontal_cylinder
+
 __all__ = [
     "DEFAULT_HEAT_TRANSFER_COEFFICIENT",
     "AIR_GAS_CONSTANT",
@@ -59,6 +61,7 @@ __all__ = [
     "AIR_CV",
     "chamber_energy_rate",
     "chamber_wall_area",
+    "free_convection_coefficient",
     "gas_mass",
     "gas_pressure",
     "gas_temperature",
@@ -80,6 +83,8 @@ AIR_CP = AIR_HEAT_CAPACITY_RATIO * AIR_CV
 #: Default wall heat-transfer coefficient of the chamber air [W/(m²·K)] (module docstring:
 #: the polytropic exponent 1.2 of Richer & Hurmuzlu 2000 for a 0.3 s stroke of the Ø32 example)
 DEFAULT_HEAT_TRANSFER_COEFFICIENT = 45.0
+#: Pressure of the air property tables (Incropera Table A.4: 1 atm) [Pa]
+STANDARD_ATMOSPHERE = 101325.0
 
 
 def polytropic_exponent(p_start, p_end, v_start, v_end):
@@ -203,6 +208,48 @@ def wall_heat_flow(heat_transfer_coefficient, area, wall_temperature, gas_temper
     -6.0
     """
     return heat_transfer_coefficient * area * (wall_temperature - gas_temperature)
+
+
+def free_convection_coefficient(pressure, gas_temperature, wall_temperature, diameter):
+    """Free-convection coefficient between quiescent chamber air and its wall.
+
+    h = Nu·k/D with the Churchill & Chu correlation for a horizontal cylinder [4]_ (Incropera
+    Eq. 9.34, :func:`sealsim.thermal.convection.free_convection_horizontal_cylinder`) evaluated
+    at the chamber pressure: k and the dynamic viscosity of an ideal gas depend on T only, so
+    ν and α scale with 1/p, ν(p, T) = ν(1 atm, T)·p_atm/p, and Ra ∝ p².  Properties at the
+    film temperature (T + T_wall)/2, β = 1/T_film.
+
+    It is the lower bound of the wall heat transfer: no jet from the port, no piston motion.
+    An external-flow correlation stands in for the enclosure, as is usual for gas vessels
+    (a test checks a measured blow-down of an air vessel against it).  Not the default.
+
+    Parameters
+    ----------
+    pressure : float or ndarray
+        Chamber pressure p [Pa], > 0.
+    gas_temperature, wall_temperature : float or ndarray
+        T and T_wall [K].
+    diameter : float
+        Bore or vessel diameter D [m] (the length scale of the correlation).
+
+    Returns
+    -------
+    ndarray
+        h [W/(m²·K)].
+
+    Examples
+    --------
+    >>> round(float(free_convection_coefficient(6e5, 263.15, 293.15, 0.032)), 1)  # Ø32, 6 bar
+    17.2
+    >>> round(float(free_convection_coefficient(1e5, 263.15, 293.15, 0.032)), 1)  # at 1 bar
+    6.3
+    """
+    t_film = 0.5 * (np.asarray(gas_temperature, dtype=float) + wall_temperature)
+    nu, alpha, k, _ = air_properties(t_film)
+    scale = STANDARD_ATMOSPHERE / np.asarray(pressure, dtype=float)
+    return free_convection_horizontal_cylinder(
+        diameter, np.asarray(wall_temperature, dtype=float) - gas_temperature,
+        nu * scale, alpha * scale, k, 1.0 / t_film)
 
 
 def chamber_wall_area(length, bore, face_area):
