@@ -104,7 +104,7 @@ def test_vessel_blow_down_matches_the_measured_air_temperature_swing():
     # the whole record, drop and recovery, within 40 % of the measured swing (16.6 K):
     # sealsim runs up to 15.6 K colder in the drop and recovers faster (τ ≈ 14 s against the
     # measured 27 s at 1 bar, 42-54 s): the correlation's h ≈ 4 W/(m²·K) there against the
-    # 2 W/(m²·K) the measured recovery implies (cold air pooling at the bottom).
+    # 2 W/(m²·K) the measured recovery implies (probably cold air settling in the vessel).
     assert np.max(np.abs(temperature(MEASURED_T_TIME) - MEASURED_T)) < 0.4 * abs(measured_drop)
 
 

@@ -29,11 +29,22 @@ pressure change by piston motion as a polytropic process with the exponent α = 
 isothermal 1 and adiabatic 1.4), from the air temperatures Al-Ibrahim & Otis [2]_ measured in a
 cylinder during charging and discharging.  With h = 45 W/(m²·K) a closed chamber of the Ø32
 example compressed 2:1 in 0.3 s (a typical stroke) follows p·V^1.2 = const
-(:func:`polytropic_exponent`; a test checks it).  Physically this is the order of free plus
-jet-driven convection of air at several bar (10-100 W/(m²·K)).  It is a single constant: a
-faster stroke or a smaller cylinder runs closer to adiabatic.  The measured coefficients of
-Carneiro & de Almeida [3]_ would be the better source; their values could not be retrieved
-for sealsim.
+(:func:`polytropic_exponent`; a test checks it).  It is a single constant: a faster stroke or
+a smaller cylinder runs closer to adiabatic.  The measured coefficients of Carneiro & de
+Almeida [3]_ would be the better source; their values could not be retrieved for sealsim.
+
+Free convection alone, :func:`free_convection_coefficient` (Churchill & Chu [4]_ at the
+chamber pressure), is the lower bound: 6-17 W/(m²·K) for the Ø32 chamber at 1-6 bar and 30 K
+(exponent 1.30-1.37 in the stroke above); the default's excess is the stirring by the port jet
+and the piston.  **Measured air-temperature swing.**  No published temperature record of a
+cylinder chamber could be retrieved with the data needed to simulate it.  The closest measured
+case is the blow-down of a 16-litre air vessel from 7.9 bar through a 2.71 mm orifice [5]_:
+measured drop 41.6 K at 23 s, recovery time constant 27 s at 1 bar.  These equations with
+free convection give a drop of 52.6 K at 20 s and a recovery time constant of 14 s, every
+measured point within 16 K (10 K rms); a lagging thermocouple flattens the measured minimum,
+and cold air settling in the vessel probably slows its recovery.  Any constant h fits worse
+(best h = 10 W/(m²·K): 15 K rms), h = 45 recovers far too fast and h = 0 drops 133 K
+(``tests/test_pneumatic_air_temperature.py``).
 
 References
 ----------
@@ -45,6 +56,15 @@ References
    45th National Conference on Fluid Power, 1992 (as cited by [1]).
 .. [3] J. F. Carneiro, F. G. de Almeida, "Heat transfer evaluation of industrial pneumatic
    cylinders", Proc. IMechE Part I: J. Systems and Control Engineering 221(1), 119-128, 2007.
+.. [4] S. W. Churchill, H. H. S. Chu, "Correlating equations for laminar and turbulent free
+   convection from a horizontal cylinder", Int. J. Heat Mass Transfer 18, 1049-1053, 1975
+   (Incropera et al., Fundamentals of Heat and Mass Transfer, 6th ed., Eq. 9.34).
+.. [5] Air blow-down of a Ø200 × 515 mm steel vessel, measured pressure and mean gas
+   temperature, as digitised in the validation set of A. Andreasen, "HydDown: A Python package
+   for calculation of hydrogen (or other gas) pressure vessel filling and discharge", J. Open
+   Source Softw. 6(66), 3695, 2021 (``validation/Air_790kPa_21mm.yml``); the file names no
+   source, HydDown's references cite for air G. Thorncroft, J. S. Patton, R. G. Gordon,
+   ASEE Annual Conference 2007, paper AC 2007-2695 (not verified).
 """
 
 from __future__ import annotations
