@@ -79,6 +79,7 @@ __all__ = [
     "AIR_HEAT_CAPACITY_RATIO",
     "AIR_CP",
     "AIR_CV",
+    "STANDARD_ATMOSPHERE",
     "chamber_energy_rate",
     "chamber_wall_area",
     "free_convection_coefficient",
