@@ -29,11 +29,22 @@ pressure change by piston motion as a polytropic process with the exponent α = 
 isothermal 1 and adiabatic 1.4), from the air temperatures Al-Ibrahim & Otis [2]_ measured in a
 cylinder during charging and discharging.  With h = 45 W/(m²·K) a closed chamber of the Ø32
 example compressed 2:1 in 0.3 s (a typical stroke) follows p·V^1.2 = const
-(:func:`polytropic_exponent`; a test checks it).  Physically this is the order of free plus
-jet-driven convection of air at several bar (10-100 W/(m²·K)).  It is a single constant: a
-faster stroke or a smaller cylinder runs closer to adiabatic.  The measured coefficients of
-Carneiro & de Almeida [3]_ would be the better source; their values could not be retrieved
-for sealsim.
+(:func:`polytropic_exponent`; a test checks it).  It is a single constant: a faster stroke or
+a smaller cylinder runs closer to adiabatic.  The measured coefficients of Carneiro & de
+Almeida [3]_ would be the better source; their values could not be retrieved for sealsim.
+
+Free convection alone, :func:`free_convection_coefficient` (Churchill & Chu [4]_ at the
+chamber pressure), is the lower bound: 6-17 W/(m²·K) for the Ø32 chamber at 1-6 bar and 30 K
+(exponent 1.30-1.37 in the stroke above); the default's excess is the stirring by the port jet
+and the piston.  **Measured air-temperature swing.**  No published temperature record of a
+cylinder chamber could be retrieved with the data needed to simulate it.  The closest measured
+case is the blow-down of a 16-litre air vessel from 7.9 bar through a 2.71 mm orifice [5]_:
+measured drop 41.6 K at 23 s, recovery time constant 27 s at 1 bar.  These equations with
+free convection give a drop of 52.6 K at 20 s and a recovery time constant of 14 s, every
+measured point within 16 K (10 K rms); a lagging thermocouple flattens the measured minimum,
+and cold air settling in the vessel probably slows its recovery.  Any constant h fits worse
+(best h = 10 W/(m²·K): 15 K rms), h = 45 recovers far too fast and h = 0 drops 133 K
+(``tests/test_pneumatic_air_temperature.py``).
 
 References
 ----------
@@ -45,11 +56,22 @@ References
    45th National Conference on Fluid Power, 1992 (as cited by [1]).
 .. [3] J. F. Carneiro, F. G. de Almeida, "Heat transfer evaluation of industrial pneumatic
    cylinders", Proc. IMechE Part I: J. Systems and Control Engineering 221(1), 119-128, 2007.
+.. [4] S. W. Churchill, H. H. S. Chu, "Correlating equations for laminar and turbulent free
+   convection from a horizontal cylinder", Int. J. Heat Mass Transfer 18, 1049-1053, 1975
+   (Incropera et al., Fundamentals of Heat and Mass Transfer, 6th ed., Eq. 9.34).
+.. [5] Air blow-down of a Ø200 × 515 mm steel vessel, measured pressure and mean gas
+   temperature, as digitised in the validation set of A. Andreasen, "HydDown: A Python package
+   for calculation of hydrogen (or other gas) pressure vessel filling and discharge", J. Open
+   Source Softw. 6(66), 3695, 2021 (``validation/Air_790kPa_21mm.yml``); the file names no
+   source, HydDown's references cite for air G. Thorncroft, J. S. Patton, R. G. Gordon,
+   ASEE Annual Conference 2007, paper AC 2007-2695 (not verified).
 """
 
 from __future__ import annotations
 
 import numpy as np
+
+from sealsim.thermal.convection import air_properties, free_convection_horizontal_cylinder
 
 __all__ = [
     "DEFAULT_HEAT_TRANSFER_COEFFICIENT",
@@ -57,8 +79,10 @@ __all__ = [
     "AIR_HEAT_CAPACITY_RATIO",
     "AIR_CP",
     "AIR_CV",
+    "STANDARD_ATMOSPHERE",
     "chamber_energy_rate",
     "chamber_wall_area",
+    "free_convection_coefficient",
     "gas_mass",
     "gas_pressure",
     "gas_temperature",
@@ -80,6 +104,8 @@ AIR_CP = AIR_HEAT_CAPACITY_RATIO * AIR_CV
 #: Default wall heat-transfer coefficient of the chamber air [W/(m²·K)] (module docstring:
 #: the polytropic exponent 1.2 of Richer & Hurmuzlu 2000 for a 0.3 s stroke of the Ø32 example)
 DEFAULT_HEAT_TRANSFER_COEFFICIENT = 45.0
+#: Pressure of the air property tables (Incropera Table A.4: 1 atm) [Pa]
+STANDARD_ATMOSPHERE = 101325.0
 
 
 def polytropic_exponent(p_start, p_end, v_start, v_end):
@@ -203,6 +229,48 @@ def wall_heat_flow(heat_transfer_coefficient, area, wall_temperature, gas_temper
     -6.0
     """
     return heat_transfer_coefficient * area * (wall_temperature - gas_temperature)
+
+
+def free_convection_coefficient(pressure, gas_temperature, wall_temperature, diameter):
+    """Free-convection coefficient between quiescent chamber air and its wall.
+
+    h = Nu·k/D with the Churchill & Chu correlation for a horizontal cylinder [4]_ (Incropera
+    Eq. 9.34, :func:`sealsim.thermal.convection.free_convection_horizontal_cylinder`) evaluated
+    at the chamber pressure: k and the dynamic viscosity of an ideal gas depend on T only, so
+    ν and α scale with 1/p, ν(p, T) = ν(1 atm, T)·p_atm/p, and Ra ∝ p².  Properties at the
+    film temperature (T + T_wall)/2, β = 1/T_film.
+
+    It is the lower bound of the wall heat transfer: no jet from the port, no piston motion.
+    An external-flow correlation stands in for the enclosure, as is usual for gas vessels
+    (a test checks a measured blow-down of an air vessel against it).  Not the default.
+
+    Parameters
+    ----------
+    pressure : float or ndarray
+        Chamber pressure p [Pa], > 0.
+    gas_temperature, wall_temperature : float or ndarray
+        T and T_wall [K].
+    diameter : float
+        Bore or vessel diameter D [m] (the length scale of the correlation).
+
+    Returns
+    -------
+    ndarray
+        h [W/(m²·K)].
+
+    Examples
+    --------
+    >>> round(float(free_convection_coefficient(6e5, 263.15, 293.15, 0.032)), 1)  # Ø32, 6 bar
+    17.2
+    >>> round(float(free_convection_coefficient(1e5, 263.15, 293.15, 0.032)), 1)  # at 1 bar
+    6.3
+    """
+    t_film = 0.5 * (np.asarray(gas_temperature, dtype=float) + wall_temperature)
+    nu, alpha, k, _ = air_properties(t_film)
+    scale = STANDARD_ATMOSPHERE / np.asarray(pressure, dtype=float)
+    return free_convection_horizontal_cylinder(
+        diameter, np.asarray(wall_temperature, dtype=float) - gas_temperature,
+        nu * scale, alpha * scale, k, 1.0 / t_film)
 
 
 def chamber_wall_area(length, bore, face_area):

@@ -37,6 +37,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from sealsim.pneumatic.chambers import AIR_GAS_CONSTANT, AIR_HEAT_CAPACITY_RATIO
+
 __all__ = [
     "ANR_DENSITY",
     "ANR_PRESSURE",
@@ -44,6 +46,7 @@ __all__ = [
     "iso6358_flow",
     "iso6358_mass_flow",
     "mass_to_anr_volume",
+    "nozzle_conductance",
     "port_openings",
     "openings",
     "series_conductance",
@@ -116,6 +119,47 @@ def iso6358_mass_flow(upstream_pressure, downstream_pressure, upstream_temperatu
     phi = (1.0 - e * e) ** subsonic_index * np.minimum((1.0 - r) / (1.0 - beta), 1.0)
     g = conductance * ANR_DENSITY * p1 * np.sqrt(ANR_TEMPERATURE / upstream_temperature) * phi
     return g * (p1 > p2)
+
+
+def nozzle_conductance(area, discharge_coefficient=1.0):
+    """ISO 6358 parameters (C, b) of a nozzle or sharp orifice with isentropic flow.
+
+    The choked mass flow of an ideal gas through a throat of area A with discharge coefficient
+    C_d (isentropic choked flow, e.g. Anderson, *Modern Compressible Flow*, ch. 5)::
+
+        G* = C_d·A·p·sqrt(γ/(R·T))·(2/(γ + 1))^((γ + 1)/(2(γ − 1)))
+
+    equals the ISO 6358 choked flow C·ρ0·p·sqrt(T0/T) for
+    C = C_d·A·sqrt(γ/R)·(2/(γ + 1))^((γ + 1)/(2(γ − 1)))/(ρ0·sqrt(T0)), and the isentropic
+    critical ratio is b = (2/(γ + 1))^(γ/(γ − 1)) = 0.528.  Below choking the ISO ellipse stands
+    in for the isentropic nozzle law.
+
+    Parameters
+    ----------
+    area : float or ndarray
+        Throat area A [m²], >= 0.
+    discharge_coefficient : float or ndarray
+        C_d [-], 0 < C_d <= 1.
+
+    Returns
+    -------
+    tuple
+        (C [m³/(s·Pa)], b [-]).
+
+    Examples
+    --------
+    A sharp orifice of 2.71 mm, C_d = 0.84 (effective area 4.85 mm², about 5 mm² per
+    dm³/(s·bar) as in pneumatic catalogues):
+
+    >>> c, b = nozzle_conductance(3.14159265 / 4 * 2.71e-3 ** 2, 0.84)
+    >>> round(float(c) * 1e8, 3), round(float(b), 3)    # [dm³/(s·bar)], [-]
+    (0.965, 0.528)
+    """
+    g, r = AIR_HEAT_CAPACITY_RATIO, AIR_GAS_CONSTANT
+    choke = (2.0 / (g + 1.0)) ** ((g + 1.0) / (2.0 * (g - 1.0)))
+    conductance = (np.asarray(discharge_coefficient, dtype=float) * np.asarray(area, dtype=float)
+                   * np.sqrt(g / r) * choke / (ANR_DENSITY * np.sqrt(ANR_TEMPERATURE)))
+    return conductance, (2.0 / (g + 1.0)) ** (g / (g - 1.0))
 
 
 def iso6358_flow(pressure_a, temperature_a, pressure_b, temperature_b, conductance,
