@@ -17,8 +17,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
+from sealsim.files import json_ready  # noqa: E402
 from sealsim.fmu.model_description import ModelSpec  # noqa: E402
-from sealsim.output import json_ready  # noqa: E402
 
 __all__ = ["friction_documentation", "rotary_documentation"]
 
