@@ -47,6 +47,7 @@ from sealsim.measurements import ColumnSpec, read_measurement, step_averages
 from sealsim.rotary.case import MAX_DUTY_DURATION, RotaryCase
 from sealsim.rotary.simulation import simulate
 from sealsim.tribology.film import FilmRangeWarning
+from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["PreparedRotaryRun", "RotaryFitResult", "RotaryPrediction", "duty_from_speed",
            "fit_rotary", "predict_rotary_run", "prepare_rotary_run", "rotary_run_metrics",
@@ -321,7 +322,7 @@ def predict_rotary_run(run: PreparedRotaryRun, values: dict[str, float]) -> Rota
     frame = result.timeseries
     tm = frame["time_s"].to_numpy()
     torque = np.interp(run.time, tm, frame["torque_Nm"].to_numpy())
-    groove = np.interp(run.time, tm, frame["T_groove_C"].to_numpy()) + 273.15
+    groove = np.interp(run.time, tm, frame["T_groove_C"].to_numpy()) + ZERO_CELSIUS_K
     steps = step_averages(run.time, run.speed, {"torque": torque, "temperature": groove},
                           run.window, run.tolerance)
     return RotaryPrediction(frame, torque, groove, steps, list(result.notes))
@@ -352,8 +353,8 @@ def rotary_run_metrics(run: PreparedRotaryRun, prediction: RotaryPrediction) -> 
                "torque_rel_error": ((ps["torque"] - ms["torque"]) / ms["torque"]
                                     if moving and ms["torque"] != 0 else None)}
         if run.has_temperature:
-            row.update({"T_groove_measured_C": ms["temperature"] - 273.15,
-                        "T_groove_predicted_C": ps["temperature"] - 273.15,
+            row.update({"T_groove_measured_C": ms["temperature"] - ZERO_CELSIUS_K,
+                        "T_groove_predicted_C": ps["temperature"] - ZERO_CELSIUS_K,
                         "T_groove_error_K": ps["temperature"] - ms["temperature"]})
         rows.append(row)
     return {"role": run.role, "conditions": expand_dotted(run.spec.conditions), "steps": rows,

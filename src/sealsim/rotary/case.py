@@ -51,11 +51,10 @@ from sealsim.rotary.lip import (
 from sealsim.rotary.lip_fe import LipSpec
 from sealsim.tribology.film import EHL_EXPONENT, FILM_FLOOR, film_coefficient_matching_fit
 from sealsim.tribology.rubber_friction import DEFAULT_ASPERITY_WAVELENGTH, DEFAULT_MASTER_CURVE
+from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["SETUPS", "DutyCycle", "DutyStep", "Environment", "Friction", "Numerics", "OilSpec",
            "RotaryCase", "Seal", "ShaftSetup", "ThermalSpec", "WaveLip"]
-
-CELSIUS_0 = 273.15
 
 
 class WaveLip(CaseModel):
@@ -501,7 +500,7 @@ class RotaryCase(CaseModel):
                             ("environment.housing_temperature", env.housing_temperature)):
             if value is not None and oil.min_temperature is not None and \
                     value < oil.min_temperature:
-                raise ValueError(f"{name} {value - CELSIUS_0:.1f} degC is below the lowest "
+                raise ValueError(f"{name} {value - ZERO_CELSIUS_K:.1f} degC is below the lowest "
                                  f"usable temperature of {oil.name} "
-                                 f"({oil.min_temperature - CELSIUS_0:.1f} degC)")
+                                 f"({oil.min_temperature - ZERO_CELSIUS_K:.1f} degC)")
         return self

@@ -36,7 +36,7 @@ from sealsim.cases import CaseModel, Q
 
 __all__ = ["LipForceTable", "LipSpec", "lip_force_table", "lip_structure_case"]
 
-CELSIUS_0 = 273.15
+from sealsim.units import ZERO_CELSIUS_K as CELSIUS_0
 Temperature = Q("temperature", gt=200.0, lt=500.0)
 
 DEFAULT_TEMPERATURES = tuple(CELSIUS_0 + t for t in (-20.0, 0.0, 20.0, 40.0, 60.0, 80.0, 100.0,

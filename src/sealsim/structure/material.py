@@ -60,6 +60,7 @@ from sealsim.properties.elastomers import (
     fictive_temperature_step,
     thermal_strain,
 )
+from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = [
     "HyperelasticSealMaterial",
@@ -675,8 +676,8 @@ def _check_constants(c10, c01, k, temperature):
     ok = all(math.isfinite(v) for v in (c10, c01, k)) and c10 > 0 and c01 >= 0
     if not ok or k <= 10 * 2 * (c10 + c01) / 3:
         raise InputError(
-            f"material constants at {temperature - 273.15:.1f} degC are invalid: C10 = {c10!r} Pa "
-            f"(must be > 0), C01 = {c01!r} Pa (>= 0), bulk modulus K = {k!r} Pa (must be finite "
+            f"material constants at {temperature - ZERO_CELSIUS_K:.1f} degC are invalid: "
+            f"C10 = {c10!r} Pa (must be > 0), C01 = {c01!r} Pa (>= 0), bulk modulus K = {k!r} Pa (must be finite "
             "and well above the shear modulus for a nearly incompressible rubber)")
 
 
