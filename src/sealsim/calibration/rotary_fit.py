@@ -1,11 +1,12 @@
-"""Identification of rotary lip seal parameters from measured speed cycles (seed 000's rig
-measurements: speed, friction torque and spring-groove temperature over time).
+"""Identification of rotary lip seal parameters from measured speed cycles (rig measurements
+as in Organisciak et al., SKF, AGMA 14FTM14, 2014: speed, friction torque and spring-groove
+temperature over time).
 
 The model of a measured run is the coupled transient simulation
 (:func:`sealsim.rotary.simulation.simulate`) driven by the measured speed: the speed signal is
 turned into a duty cycle of constant-speed plateaus joined by its raw samples
-(:func:`duty_from_speed`).  Measured and model signals are compared as seed 000 compares rig
-and model: by the averages over the last 30 s of every speed step
+(:func:`duty_from_speed`).  Measured and model signals are compared as Organisciak et al.
+compare rig and model: by the averages over the last 30 s of every speed step
 (:func:`sealsim.measurements.step_averages`), computed for both with the same windows of the
 measured speed.
 
@@ -366,7 +367,8 @@ def rotary_run_metrics(run: PreparedRotaryRun, prediction: RotaryPrediction) -> 
 def step_agreement(rows: list[dict]) -> dict[str, Any]:
     """Agreement of step averages (rows of :func:`rotary_run_metrics`): RMSE and R² of the
     torque of the moving steps, mean and largest |relative torque error| and the share
-    within ±20 % (seed 000 Fig. 10), RMSE, R² and largest error of the groove temperature.
+    within ±20 % (Organisciak et al. 2014, Fig. 10), RMSE, R² and largest error of the groove
+    temperature.
 
     Examples
     --------

@@ -1,8 +1,9 @@
 r"""Reduced model of the rotary lip seal for its FMU: steady maps plus a thermal lag.
 
-Seed 001 keeps an expensive model out of the system simulation by precomputing it into
-characteristic diagrams; here the same is done for the coupled friction–thermal model of seed
-000 (:mod:`sealsim.rotary.simulation`).  Everything below is computed from whatever
+Heipl & Murrenhoff (IFAS RWTH Aachen) keep an expensive model out of the system simulation by
+precomputing it into characteristic diagrams; here the same is done for the coupled
+friction–thermal model of Organisciak et al. (SKF, AGMA 14FTM14, 2014,
+:mod:`sealsim.rotary.simulation`).  Everything below is computed from whatever
 ``sealsim.rotary`` gives at build time -- no number of the rotary model is repeated here.
 
 * **Steady maps** (:func:`steady_rise_map`): with the oil sump held at T_s (a thermostat, the
