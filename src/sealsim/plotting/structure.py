@@ -113,15 +113,20 @@ def plot_section(state, title: str = ""):
 def plot_states(frame, x: str | None = None, title: str = ""):
     """F_N, b and peak pressures over the load states of a ``result.csv`` frame.
 
-    ``x`` is the column on the horizontal axis; by default time for a temperature history,
-    the load states (labelled) for a squeeze-then-pressure path, else the varying load.
+    ``x`` is the column on the horizontal axis; by default the temperature for a temperature
+    history (from the installed state on, the axis running the way the temperature goes), the
+    load states (labelled) for a squeeze-then-pressure path, else the varying load.
     """
     labels = None
     if x is None:
         spans = {c: float(np.ptp(frame[c].to_numpy())) for c in
                  ("temperature_C", "pressure_bar", "squeeze")}
         if spans["temperature_C"] > 0:
-            x = "time_s"  # a temperature history (seed 001 Fig. 8 is over time)
+            # installation and hold sit at one temperature: start at the last of them
+            temperature = frame["temperature_C"].to_numpy()
+            first_change = int(np.argmax(temperature != temperature[0]))
+            frame = frame.iloc[max(first_change - 1, 0):]
+            x = "temperature_C"
         elif spans["squeeze"] > 0 and spans["pressure_bar"] > 0:
             x = "load state"
             labels = [f"{s * 100:.3g} %" if k == 0 or s != frame["squeeze"].iloc[k - 1]
@@ -147,7 +152,11 @@ def plot_states(frame, x: str | None = None, title: str = ""):
             ax.set_xlabel("load state (squeeze, then pressure)")
         else:
             ax.set_xlabel({"time_s": "time [s]", "pressure_bar": "pressure [bar]",
-                           "squeeze": "squeeze [-]"}.get(x, x))
+                           "squeeze": "squeeze [-]", "temperature_C": "temperature [°C]"
+                           }.get(x, x))
+    if x == "temperature_C" and xs[-1] < xs[0]:
+        for ax in axes:          # a cooling run reads from left to right
+            ax.invert_xaxis()
     axes[0].legend(fontsize=8)
     axes[2].legend(fontsize=8)
     if title:
