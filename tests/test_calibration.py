@@ -15,7 +15,7 @@ from typer.testing import CliRunner
 
 from sealsim.calibration import fit_friction, parameter_statistics, prepare_run
 from sealsim.calibration.case import FrictionFitCase
-from sealsim.calibration.study import _contact_map, load_fit_case, run_friction_fit_file
+from sealsim.calibration.study import _contact_map, load_fit_case
 from sealsim.cases import validate_case
 from sealsim.cli import app
 from sealsim.errors import InputError

@@ -87,8 +87,29 @@ def test_oring_cooling_example(tmp_path):
     frame = pd.read_csv(out / "result.csv")
     cooling = frame[frame["time_s"] > 3660.0 + 1.0]
     assert cooling["temperature_C"].iloc[-1] == pytest.approx(-45.0)
-    # the groove contact is lost below T_g (seed 001 Fig. 8)
+    # the groove contact is lost below T_g (Heipl & Murrenhoff, Fig. 8)
     assert cooling["F_groove_bottom_N"].iloc[-1] == 0.0
+
+
+def test_states_plot_of_a_cooling_run_is_over_temperature():
+    import matplotlib.pyplot as plt
+
+    from sealsim.plotting.structure import plot_states
+
+    # installation (squeeze ramp) and hold at 20 degC, then cooling to -40 degC
+    temperature = [20.0, 20.0, 20.0, 0.0, -20.0, -40.0]
+    frame = pd.DataFrame({
+        "squeeze": [0.05, 0.15, 0.15, 0.15, 0.15, 0.15], "pressure_bar": 0.0,
+        "temperature_C": temperature, "time_s": [0, 30, 3660, 4860, 6060, 7260],
+        "F_N_N": [40, 130, 120, 100, 60, 200], "F_groove_bottom_N": [50, 170, 160, 120, 0, 0],
+        "b_mm": 1.0, "p_max_MPa": 1.0, "p_max_groove_bottom_MPa": 1.0})
+    fig = plot_states(frame)
+    for ax in fig.axes:
+        assert ax.get_xlabel() == "temperature [°C]"
+        assert ax.xaxis_inverted()                 # the cooling reads from left to right
+    # from the installed and held state on: the squeeze ramp at 20 degC is not drawn
+    assert list(fig.axes[0].lines[0].get_xdata()) == temperature[2:]
+    plt.close(fig)
 
 
 @pytest.mark.parametrize("overrides, message", [

@@ -44,6 +44,7 @@ from sealsim.measurements import (
     sliding_phases,
     smooth_derivative,
 )
+from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["FitResult", "PreparedRun", "fit_friction", "predict_run", "prepare_run",
            "run_metrics"]
@@ -133,8 +134,9 @@ def prepare_run(case: FrictionFitCase, spec: MeasurementModel, contact_map=None,
                 "map's pressure grid (it is never extrapolated)")
         tlo, thi = contact_map.ranges["temperature"]
         if not tlo - 1e-6 <= temperature <= thi + 1e-6:
-            raise InputError(f"{where}: temperature {temperature - 273.15:g} degC is outside "
-                             f"the contact map ({tlo - 273.15:g} … {thi - 273.15:g} degC)")
+            c = ZERO_CELSIUS_K
+            raise InputError(f"{where}: temperature {temperature - c:g} degC is outside "
+                             f"the contact map ({tlo - c:g} … {thi - c:g} degC)")
         fn, b = contact_map.evaluate(np.clip(dp, lo, hi), temperature)
         run.normal_force = np.asarray(fn, dtype=float)
         run.contact_width = np.asarray(b, dtype=float)

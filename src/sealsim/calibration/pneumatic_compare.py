@@ -1,5 +1,6 @@
 """Compare a measured cylinder run -- x(t), p1(t), p2(t) -- with a simulation of its case
-(what ``sealsim pneumatic compare`` calls).
+(what ``sealsim pneumatic compare`` computes;
+:func:`sealsim.runs.calibration.run_pneumatic_compare_file` writes the result folder).
 
 A compare file (TOML)::
 
@@ -22,6 +23,7 @@ extend/retract times of both.
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Literal
 
@@ -33,12 +35,10 @@ from sealsim.calibration.case import ColumnModel
 from sealsim.cases import CaseModel, load_toml, validate_case
 from sealsim.errors import InputError
 from sealsim.measurements import ColumnSpec, read_table
-from sealsim.output import ResultFolder
 from sealsim.pneumatic.case import load_pneumatic_case_file
 from sealsim.pneumatic.simulation import simulate
-from sealsim.plotting.calibration import plot_signals
 
-__all__ = ["CompareCase", "compare_signals", "run_pneumatic_compare_file"]
+__all__ = ["CompareCase", "PneumaticComparison", "compare_pneumatic_file", "compare_signals"]
 
 SIGNALS = {"position": ("x_m", 1.0, "mm", 1e3),
            "pressure_1": ("p1_bar_abs", 1e5, "bar", 1e-5),
@@ -78,13 +78,32 @@ def compare_signals(measured, model) -> dict[str, float]:
             "r2": 1.0 - float(np.sum(resid ** 2)) / ss_tot if ss_tot > 0 else None}
 
 
-def run_pneumatic_compare_file(path: str | Path, out: str | Path, force: bool = False,
-                               progress=None) -> dict:
-    """Simulate the case of a compare file, compare with the measurement, write ``out``:
-    ``report.json`` (per signal: rmse, max_abs_error, r2 in the signal's unit), ``comparison.csv``
-    and ``comparison.png`` (x, p1, p2 over time, measured and model)."""
+@dataclass
+class PneumaticComparison:
+    """A measured cylinder run against its simulation, at the measured times."""
+
+    #: ``{"variant": NAME, "signals": {SIGNAL: {"unit", "rmse", "max_abs_error", "r2"}}}``
+    #: (errors in the signal's unit)
+    report: dict
+    #: ``time_s`` and ``<signal>_measured_<unit>``, ``<signal>_model_<unit>`` columns
+    table: pd.DataFrame
+    #: ``{signal: (measured, model, unit)}`` in display units
+    curves: dict
+    time: np.ndarray
+    title: str
+
+
+def compare_pneumatic_file(path: str | Path, progress=None) -> PneumaticComparison:
+    """Simulate the case of a compare file and compare it with the measurement.
+
+    Parameters
+    ----------
+    path : path
+        Compare file (TOML, see the module docstring).
+    progress : callable, optional
+        ``progress(variant, simulated_time, end_time)``.
+    """
     path = Path(path)
-    folder = ResultFolder(out, force)
     spec = validate_case(CompareCase, load_toml(path), f"compare file {str(path)!r}")
     base = path.parent
     case_path = Path(spec.case) if Path(spec.case).is_absolute() else base / spec.case
@@ -127,9 +146,5 @@ def run_pneumatic_compare_file(path: str | Path, out: str | Path, force: bool = 
         table[f"{q}_measured_{unit}"] = meas * display
         table[f"{q}_model_{unit}"] = model * display
         curves[q] = (meas * display, model * display, unit)
-    with folder:
-        folder.write_json("report.json", report)
-        folder.write_csv("comparison.csv", pd.DataFrame(table), float_format="%.8g")
-        folder.savefig("comparison.png", plot_signals(t, curves, f"{case.title or name}: "
-                                                      f"measured vs model"))
-    return report
+    return PneumaticComparison(report, pd.DataFrame(table), curves, t,
+                               f"{case.title or name}: measured vs model")

@@ -31,10 +31,10 @@ rotary case) and the measured speed cycles (see ``examples/calibration/rotary_sy
     conditions = { environment.sump_volume = "0.2 L" }   # fields of [model] for this run
 
 Residuals are the last-``averaging.window`` step averages of torque and spring-groove
-temperature (seed 000's comparison), each divided by its stated uncertainty.  Stages (strategy
-``staged``): the ``torque`` parameters against the torque averages (thermal parameters at their
-start values), then the ``thermal`` ones against the temperature averages, then all together
-against both; strategy ``joint`` does only the last.
+temperature (the comparison of Organisciak et al., AGMA 14FTM14, 2014), each divided by its
+stated uncertainty.  Stages (strategy ``staged``): the ``torque`` parameters against the torque
+averages (thermal parameters at their start values), then the ``thermal`` ones against the
+temperature averages, then all together against both; strategy ``joint`` does only the last.
 """
 
 from __future__ import annotations
@@ -197,7 +197,7 @@ class AveragingSettings(CaseModel):
     joined in the duty cycle (:func:`sealsim.calibration.rotary_fit.duty_from_speed`)."""
 
     window: Q("time", gt=0) = Field(30.0, description=(
-        "averages over the last window of every step (seed 000: 30 s)"))
+        "averages over the last window of every step (Organisciak et al. 2014: 30 s)"))
     tolerance: float = Field(0.02, gt=0, lt=0.5, description=(
         "relative speed change (of the largest speed) that starts a new step; a step within "
         "it of 0 is standstill"))

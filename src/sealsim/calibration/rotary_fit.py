@@ -1,11 +1,12 @@
-"""Identification of rotary lip seal parameters from measured speed cycles (seed 000's rig
-measurements: speed, friction torque and spring-groove temperature over time).
+"""Identification of rotary lip seal parameters from measured speed cycles (rig measurements
+as in Organisciak et al., SKF, AGMA 14FTM14, 2014: speed, friction torque and spring-groove
+temperature over time).
 
 The model of a measured run is the coupled transient simulation
 (:func:`sealsim.rotary.simulation.simulate`) driven by the measured speed: the speed signal is
 turned into a duty cycle of constant-speed plateaus joined by its raw samples
-(:func:`duty_from_speed`).  Measured and model signals are compared as seed 000 compares rig
-and model: by the averages over the last 30 s of every speed step
+(:func:`duty_from_speed`).  Measured and model signals are compared as Organisciak et al.
+compare rig and model: by the averages over the last 30 s of every speed step
 (:func:`sealsim.measurements.step_averages`), computed for both with the same windows of the
 measured speed.
 
@@ -47,6 +48,7 @@ from sealsim.measurements import ColumnSpec, read_measurement, step_averages
 from sealsim.rotary.case import MAX_DUTY_DURATION, RotaryCase
 from sealsim.rotary.simulation import simulate
 from sealsim.tribology.film import FilmRangeWarning
+from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["PreparedRotaryRun", "RotaryFitResult", "RotaryPrediction", "duty_from_speed",
            "fit_rotary", "predict_rotary_run", "prepare_rotary_run", "rotary_run_metrics",
@@ -321,7 +323,7 @@ def predict_rotary_run(run: PreparedRotaryRun, values: dict[str, float]) -> Rota
     frame = result.timeseries
     tm = frame["time_s"].to_numpy()
     torque = np.interp(run.time, tm, frame["torque_Nm"].to_numpy())
-    groove = np.interp(run.time, tm, frame["T_groove_C"].to_numpy()) + 273.15
+    groove = np.interp(run.time, tm, frame["T_groove_C"].to_numpy()) + ZERO_CELSIUS_K
     steps = step_averages(run.time, run.speed, {"torque": torque, "temperature": groove},
                           run.window, run.tolerance)
     return RotaryPrediction(frame, torque, groove, steps, list(result.notes))
@@ -352,8 +354,8 @@ def rotary_run_metrics(run: PreparedRotaryRun, prediction: RotaryPrediction) -> 
                "torque_rel_error": ((ps["torque"] - ms["torque"]) / ms["torque"]
                                     if moving and ms["torque"] != 0 else None)}
         if run.has_temperature:
-            row.update({"T_groove_measured_C": ms["temperature"] - 273.15,
-                        "T_groove_predicted_C": ps["temperature"] - 273.15,
+            row.update({"T_groove_measured_C": ms["temperature"] - ZERO_CELSIUS_K,
+                        "T_groove_predicted_C": ps["temperature"] - ZERO_CELSIUS_K,
                         "T_groove_error_K": ps["temperature"] - ms["temperature"]})
         rows.append(row)
     return {"role": run.role, "conditions": expand_dotted(run.spec.conditions), "steps": rows,
@@ -365,7 +367,8 @@ def rotary_run_metrics(run: PreparedRotaryRun, prediction: RotaryPrediction) -> 
 def step_agreement(rows: list[dict]) -> dict[str, Any]:
     """Agreement of step averages (rows of :func:`rotary_run_metrics`): RMSE and R² of the
     torque of the moving steps, mean and largest |relative torque error| and the share
-    within ±20 % (seed 000 Fig. 10), RMSE, R² and largest error of the groove temperature.
+    within ±20 % (Organisciak et al. 2014, Fig. 10), RMSE, R² and largest error of the groove
+    temperature.
 
     Examples
     --------

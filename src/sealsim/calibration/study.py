@@ -1,43 +1,41 @@
-"""Run a friction-fit case file and write its result folder (what ``sealsim friction fit``
-calls; usable from Python).
+"""A friction-fit case from measurements to fitted parameters, report and predictions (what
+``sealsim friction fit`` computes; :func:`sealsim.runs.calibration.run_friction_fit_file`
+writes the result folder).
 
-The folder holds
+:func:`friction_fit_study` returns a :class:`FrictionFitStudy` with
 
-* ``fitted_parameters.toml`` -- a ``[friction]`` table with every parameter of the law (fitted
-  ones replaced), readable by any friction or pneumatic case (``[friction]`` of a bench case,
+* ``fitted`` -- a ``[friction]`` table with every parameter of the law (fitted ones replaced),
+  readable by any friction or pneumatic case (``[friction]`` of a bench case,
   ``friction = {...}`` of a pneumatic seal);
-* ``report.json`` -- ``{"parameters": {NAME: {...}}, "measurements": {NAME: {"role",
+* ``report`` -- ``{"parameters": {NAME: {...}}, "measurements": {NAME: {"role",
   "pressure_bar", "F_measured_N", "F_predicted_N", "rel_error", "rmse_N", "r2"}}}``;
-* ``fit.json`` -- status, reasons of a failed fit, stages, correlation matrix, warnings;
-* ``predictions.csv`` -- measured (offset-free) and model friction of every run;
-* ``overlay_<run>.png`` per run, ``parity.png`` (±20 % band), ``case_resolved.toml``.
+* ``diagnostics`` -- status, reasons of a failed fit, stages, correlation matrix, warnings;
+* ``predictions`` -- measured (offset-free) and model friction of every run.
 """
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
-import tomli_w
 
 from sealsim.calibration.case import FrictionFitCase
 from sealsim.calibration.friction_fit import (
     FitResult,
+    PreparedRun,
     fit_friction,
     predict_run,
     prepare_run,
     run_metrics,
 )
-from sealsim.cases import dump_case_toml, load_toml, validate_case
+from sealsim.cases import load_toml, validate_case
 from sealsim.errors import InputError
 from sealsim.friction import make_law
-from sealsim.output import ResultFolder
-from sealsim.plotting.calibration import plot_overlay, plot_parity
 
-__all__ = ["load_fit_case", "run_friction_fit_file"]
+__all__ = ["FrictionFitStudy", "friction_fit_study", "load_fit_case"]
 
 _LOADS = {"theta"}     # laws that need F_N and b from a contact map
 
@@ -80,19 +78,40 @@ def _parameter_table(result: FitResult) -> dict:
     return table
 
 
-def run_friction_fit_file(path: str | Path, out: str | Path, force: bool = False,
-                          progress: Callable[[str, float, float], None] | None = None,
-                          cache_dir: str | Path | None = None) -> dict:
-    """Fit a friction law to measurements and write the result folder ``out``.
+@dataclass
+class FrictionFitStudy:
+    """Everything a friction fit found (see the module docstring for the parts)."""
+
+    case: FrictionFitCase
+    runs: list[PreparedRun]
+    result: FitResult
+    predictions: dict[str, np.ndarray]
+    report: dict
+    diagnostics: dict
+    fitted: dict
+
+    def predictions_frame(self) -> pd.DataFrame:
+        """Measured and model signals of every run, one row per sample (engineering units)."""
+        return pd.concat([pd.DataFrame({
+            "measurement": r.name, "role": r.spec.role, "time_s": r.time,
+            "position_mm": r.position * 1e3, "velocity_mm_s": r.velocity * 1e3,
+            "pressure_bar": r.pressure / 1e5,
+            "normal_force_N": r.normal_force if r.normal_force is not None else np.nan,
+            "friction_measured_N": r.friction, "friction_model_N": self.predictions[r.name]})
+            for r in self.runs], ignore_index=True)
+
+
+def friction_fit_study(case: FrictionFitCase, base_dir: str | Path,
+                       progress: Callable[[str, float, float], None] | None = None,
+                       cache_dir: str | Path | None = None) -> FrictionFitStudy:
+    """Fit a friction law to the measurements of a fit case and evaluate the fit.
 
     Parameters
     ----------
-    path : path
-        Fit case file (TOML), see :mod:`sealsim.calibration.case`.
-    out : path
-        Result folder (refused if it holds results, unless ``force``).
-    force : bool
-        Replace existing results.
+    case : FrictionFitCase
+        Validated fit case (:func:`load_fit_case`).
+    base_dir : path
+        Folder the case's relative paths (measurements, contact map) start from.
     progress : callable, optional
         ``progress(task, done, total)``.
     cache_dir : path, optional
@@ -100,14 +119,11 @@ def run_friction_fit_file(path: str | Path, out: str | Path, force: bool = False
 
     Returns
     -------
-    dict
-        ``{"status", "failure", "warnings", "report"}``; status "failed" when a parameter ended
-        at a bound or the optimiser stopped (results are still written, with the reasons).
+    FrictionFitStudy
+        ``result.status`` is "failed" when a parameter ended at a bound or the optimiser
+        stopped (the other parts are still complete, with the reasons).
     """
-    path = Path(path)
-    folder = ResultFolder(out, force)           # refuse an existing folder before computing
-    case = load_fit_case(path)
-    base = path.parent
+    base = Path(base_dir)
     cmap = _contact_map(case, base, cache_dir,
                         None if progress is None else lambda d, n: progress("FE map", d, n))
     runs = [prepare_run(case, spec, cmap, base) for spec in case.measurements]
@@ -123,45 +139,11 @@ def run_friction_fit_file(path: str | Path, out: str | Path, force: bool = False
         "contact_map": cmap.describe() if cmap is not None else None,
         "offsets_N": {r.name: r.offset for r in runs},
         "sliding_phases": {r.name: len(r.phases) for r in runs}}
-    frames = []
-    for r in runs:
-        frames.append(pd.DataFrame({
-            "measurement": r.name, "role": r.spec.role, "time_s": r.time,
-            "position_mm": r.position * 1e3, "velocity_mm_s": r.velocity * 1e3,
-            "pressure_bar": r.pressure / 1e5,
-            "normal_force_N": r.normal_force if r.normal_force is not None else np.nan,
-            "friction_measured_N": r.friction, "friction_model_N": predictions[r.name]}))
-    fitted_text = (f"# Friction parameters fitted by 'sealsim friction fit {path.name}'\n"
-                   f"# on {', '.join(r.name for r in runs if r.spec.role == 'fit')}; "
-                   f"status {result.status}.\n"
-                   "# Use the [friction] table in a friction case, or as friction = {...} of a "
-                   "pneumatic seal.\n\n"
-                   + tomli_w.dumps({"friction": _drop_none(result.params.model_dump(
-                       mode="json", exclude={"parameter_set"}))}))
-    title = case.title or path.stem
-    with folder:
-        folder.write_text("fitted_parameters.toml", fitted_text)
-        folder.write_json("report.json", report)
-        folder.write_json("fit.json", diagnostics)
-        folder.write_csv("predictions.csv", pd.concat(frames, ignore_index=True),
-                         float_format="%.8g")
-        for r in runs:
-            folder.savefig(f"overlay_{_slug(r.name)}.png",
-                           plot_overlay(r.name, r.spec.role, r.time, r.position, r.friction,
-                                        predictions[r.name], title))
-        points = [(name, m["role"], m["F_measured_N"], m["F_predicted_N"])
-                  for name, m in report["measurements"].items()]
-        folder.savefig("parity.png", plot_parity(points, title))
-        folder.write_text("case_resolved.toml", dump_case_toml(
-            case, header=f"Resolved fit case of {path.name} (all defaults filled in); paths "
-                         f"relative to {str(base.resolve())}"))
-    return {"status": result.status, "failure": result.failure, "warnings": result.warnings,
-            "report": report}
+    fitted = {"friction": _drop_none(result.params.model_dump(
+        mode="json", exclude={"parameter_set"}))}
+    return FrictionFitStudy(case, runs, result, predictions, report, diagnostics, fitted)
 
 
 def _drop_none(data: dict) -> dict:
     return {k: v for k, v in data.items() if v is not None}
 
-
-def _slug(name: str) -> str:
-    return re.sub(r"[^A-Za-z0-9_.-]+", "_", name).strip("_") or "run"

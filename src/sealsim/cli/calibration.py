@@ -1,8 +1,9 @@
 """Calibration commands, registered on the model apps: ``sealsim friction fit``,
 ``sealsim rotary fit``, ``sealsim pneumatic compare``.
 
-The commands hold no physics: :mod:`sealsim.calibration` fits and writes the results; the
-command shows progress, prints the fitted values, the prediction errors and why a fit failed.
+The commands hold no physics: :mod:`sealsim.calibration` fits, :mod:`sealsim.runs.calibration`
+writes the results; the command shows progress, prints the fitted values, the prediction
+errors and why a fit failed.
 """
 
 from __future__ import annotations
@@ -28,7 +29,7 @@ def fit(
     quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress bar."),
 ) -> None:
     """Fit friction-law parameters to measurements; report the error on held-out runs."""
-    from sealsim.calibration.study import run_friction_fit_file
+    from sealsim.runs.calibration import run_friction_fit_file
 
     with variant_progress("fit", quiet, lambda _, d, n: f"{d:g}/{n:g}") as progress:
         summary = run_friction_fit_file(case, out, force, progress)
@@ -61,7 +62,7 @@ def compare(
     quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress bar."),
 ) -> None:
     """Simulate a cylinder case and compare it with a measured run (RMSE, R², overlays)."""
-    from sealsim.calibration.pneumatic_compare import run_pneumatic_compare_file
+    from sealsim.runs.calibration import run_pneumatic_compare_file
 
     with variant_progress("pneumatic", quiet, lambda _, t, e: f"{t:.3g}/{e:.3g} s") as progress:
         report = run_pneumatic_compare_file(compare_file, out, force, progress)
@@ -84,7 +85,7 @@ def rotary_fit(
 ) -> None:
     """Fit lip seal parameters to measured speed cycles (torque, spring-groove temperature);
     report the step-average errors, also on held-out runs."""
-    from sealsim.calibration.rotary_study import run_rotary_fit_file
+    from sealsim.runs.calibration import run_rotary_fit_file
 
     with variant_progress("stage", quiet, lambda _, d, n: f"{d:g}/{n:g} evaluations") \
             as progress:

@@ -1,6 +1,6 @@
 """``sealsim structure run|map``: axisymmetric FE of a seal in its gland, characteristic maps.
 
-The commands hold no physics: they read the case, call :mod:`sealsim.structure.run` and
+The commands hold no physics: they read the case, call :mod:`sealsim.runs.structure` and
 print a short summary; results go through :class:`sealsim.output.ResultFolder`.
 """
 
@@ -44,7 +44,7 @@ def run(
     increments.csv (Newton iterations and cutbacks of every increment), summary.json,
     section_installed.png, section_final.png, states.png and case_resolved.toml.
     """
-    from sealsim.structure.run import run_case_file
+    from sealsim.runs.structure import run_case_file
 
     with _progress(quiet) as bar:
         tasks: dict[str, int] = {}
@@ -81,7 +81,7 @@ def map_(
     Writes map.nc (netCDF; read it with sealsim.structure.load_map), map.csv,
     map_profiles.csv, map.png, map_profiles.png and case_resolved.toml.
     """
-    from sealsim.structure.run import map_case_file
+    from sealsim.runs.structure import map_case_file
 
     with _progress(quiet) as bar:
         task = None

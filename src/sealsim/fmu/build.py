@@ -41,7 +41,6 @@ from sealsim.fmu.friction_export import (
 __all__ = ["build_fmu", "build_friction_fmu", "build_rotary_fmu"]
 
 RPM = math.pi / 30.0
-CELSIUS_0 = 273.15
 
 
 def _identifier(name: str | None, out) -> str:

@@ -39,7 +39,7 @@ from pathlib import Path
 
 from sealsim.errors import InputError, ModelError, OutputError, ResultExistsError, SealsimError
 from sealsim.fmu.model_description import ModelSpec, c_variables, model_description_xml
-from sealsim.output import json_ready
+from sealsim.files import json_ready
 
 __all__ = ["FMI_KINDS", "BuildResult", "FMUCompileError", "FMUDependencyError",
            "build_archive", "check_output", "find_compiler", "platform_folder"]

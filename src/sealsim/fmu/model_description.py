@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 from xml.sax.saxutils import quoteattr
 
 from sealsim import __version__
+from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["UNITS", "ModelSpec", "Variable", "c_variables", "model_description_xml"]
 
@@ -30,7 +31,7 @@ UNITS: dict[str, tuple[dict[str, int], tuple[tuple[str, float, float], ...]]] = 
     "N.s/m": ({"kg": 1, "s": -1}, ()),
     "Pa": ({"kg": 1, "m": -1, "s": -2}, (("bar", 1e-5, 0.0),)),
     "Pa.s": ({"kg": 1, "m": -1, "s": -1}, ()),
-    "K": ({"K": 1}, (("degC", 1.0, -273.15),)),
+    "K": ({"K": 1}, (("degC", 1.0, -ZERO_CELSIUS_K),)),
     "K/s": ({"K": 1, "s": -1}, ()),
     "rad/s": ({"rad": 1, "s": -1}, (("rpm", 30.0 / math.pi, 0.0),)),
     "N.m": ({"kg": 1, "m": 2, "s": -2}, ()),

@@ -17,12 +17,11 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 import pandas as pd  # noqa: E402
 
+from sealsim.files import json_ready  # noqa: E402
 from sealsim.fmu.model_description import ModelSpec  # noqa: E402
-from sealsim.output import json_ready  # noqa: E402
+from sealsim.units import ZERO_CELSIUS_K  # noqa: E402
 
 __all__ = ["friction_documentation", "rotary_documentation"]
-
-CELSIUS_0 = 273.15
 
 
 def _png(fig) -> bytes:
@@ -94,11 +93,11 @@ def friction_documentation(spec: ModelSpec, law, table=None) -> None:
             inputs = ContactInputs(normal_force=fn, contact_width=b, pressure_a=dp)
             ax.plot(v, law.steady_force(v, inputs),
                     label=f"dp = {table.table.axes[1][j] / 1e5:.3g} bar, "
-                          f"T = {table.table.axes[0][i] - CELSIUS_0:.0f} degC")
+                          f"T = {table.table.axes[0][i] - ZERO_CELSIUS_K:.0f} degC")
         values = table.table.values
         grid_t, grid_p = np.meshgrid(*table.table.axes, indexing="ij")
         docs["contact_table.csv"] = _csv(pd.DataFrame({
-            "temperature_C": grid_t.ravel() - CELSIUS_0, "pressure_difference_bar":
+            "temperature_C": grid_t.ravel() - ZERO_CELSIUS_K, "pressure_difference_bar":
             grid_p.ravel() / 1e5, "F_N_N": values[..., 0].ravel(),
             "b_mm": values[..., 1].ravel() * 1e3}))
     else:
@@ -116,7 +115,7 @@ def friction_documentation(spec: ModelSpec, law, table=None) -> None:
     if table is not None:
         fig, axes = plt.subplots(1, 2, figsize=(9.0, 3.6))
         for i in range(0, table.table.axes[0].size, max(1, table.table.axes[0].size // 4)):
-            label = f"{table.table.axes[0][i] - CELSIUS_0:.0f} degC"
+            label = f"{table.table.axes[0][i] - ZERO_CELSIUS_K:.0f} degC"
             axes[0].plot(table.table.axes[1] / 1e5, table.table.values[i, :, 0], label=label)
             axes[1].plot(table.table.axes[1] / 1e5, table.table.values[i, :, 1] * 1e3,
                          label=label)
@@ -156,8 +155,8 @@ def rotary_documentation(spec: ModelSpec, maps) -> None:
     for k, (speeds, part) in enumerate(zip(maps.speeds, maps.steady)):
         for (i, j), w in np.ndenumerate(speeds):
             rows.append({"regime": k, "xi": maps.xi[k][i], "speed_rpm": w / rpm,
-                         "T_sump_C": maps.sump_temperatures[j] - CELSIUS_0,
-                         "T_contact_C": part["T_contact"][i, j] - CELSIUS_0,
+                         "T_sump_C": maps.sump_temperatures[j] - ZERO_CELSIUS_K,
+                         "T_contact_C": part["T_contact"][i, j] - ZERO_CELSIUS_K,
                          "rise_K": part["rise"][i, j], "torque_Nm": part["torque"][i, j],
                          "dRise_dT_ambient": part["ambient_sensitivity"][i, j]})
     docs["steady_map.csv"] = _csv(pd.DataFrame(rows))
@@ -167,7 +166,7 @@ def rotary_documentation(spec: ModelSpec, maps) -> None:
         color = colors[j % len(colors)]
         for k, (speeds, part) in enumerate(zip(maps.speeds, maps.steady)):
             positive = speeds[:, j] > 0        # one line per flow regime: the jump between
-            label = f"sump {ts - CELSIUS_0:.0f} degC" if k == 0 else None
+            label = f"sump {ts - ZERO_CELSIUS_K:.0f} degC" if k == 0 else None
             for a, name in zip(axes, ("rise", "torque")):
                 a.plot(speeds[positive, j] / rpm, part[name][positive, j], "o-", ms=3,
                        color=color, label=label)
@@ -189,7 +188,7 @@ def rotary_documentation(spec: ModelSpec, maps) -> None:
         4.0 * lag.sump_temperatures.size, 3.8), sharey=True, squeeze=False)
     for (i, j), (t, y) in sorted(lag.responses.items()):
         rows.append({"xi": maps.lag_xi[i], "speed_rpm": lag.speeds[i, j] / rpm,
-                     "T_sump_C": lag.sump_temperatures[j] - CELSIUS_0,
+                     "T_sump_C": lag.sump_temperatures[j] - ZERO_CELSIUS_K,
                      "fit_max_error": lag.max_errors[i, j], "settled": lag.settled[i, j],
                      **{f"weight_{k + 1}": a for k, a in enumerate(lag.weights[i, j])},
                      **{f"tau_{k + 1}_s": tau for k, tau in
@@ -199,7 +198,7 @@ def rotary_documentation(spec: ModelSpec, maps) -> None:
         line, = ax.plot(t, y, lw=2, alpha=0.5, label=f"{lag.speeds[i, j] / rpm:.4g} rpm")
         ax.plot(tt, step_response(tt, lag.weights[i, j], lag.time_constants[i, j]), "--",
                 color=line.get_color())
-        ax.set_title(f"sump {lag.sump_temperatures[j] - CELSIUS_0:.0f} degC", fontsize=10)
+        ax.set_title(f"sump {lag.sump_temperatures[j] - ZERO_CELSIUS_K:.0f} degC", fontsize=10)
     axes[0, 0].set_ylabel("normalised contact temperature rise [-]")
     for ax in axes[0]:
         ax.set_xscale("log")

@@ -37,7 +37,6 @@ import numpy as np
 from sealsim.errors import InputError
 from sealsim.fmu.model_description import ModelSpec, Variable
 from sealsim.fmu.rotary_maps import (
-    CELSIUS_0,
     MAX_LAG_EXTENSION,
     SETTLED_FRACTION,
     SPEED_SCALE,
@@ -56,6 +55,7 @@ from sealsim.properties.oils import OilRangeWarning
 from sealsim.rotary.case import RotaryCase
 from sealsim.rotary.simulation import lip_seal_friction
 from sealsim.tribology.film import FilmRangeWarning
+from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["RPM", "RotaryMaps", "rotary_check", "rotary_maps", "rotary_spec"]
 
@@ -213,7 +213,7 @@ def rotary_maps(case: RotaryCase, *, speed_max: float, speed_points: int, sump_t
         torque = torque_map(case, t_speeds, t_temps)
     notes = []
     if np.any(lag.settled < SETTLED_FRACTION):
-        bad = [f"{w / RPM:.4g} rpm at {t - CELSIUS_0:.4g} degC"
+        bad = [f"{w / RPM:.4g} rpm at {t - ZERO_CELSIUS_K:.4g} degC"
                for (w, t), y in zip(zip(lag.speeds.ravel(), np.broadcast_to(
                    lag.sump_temperatures, lag.speeds.shape).ravel()), lag.settled.ravel())
                if y < SETTLED_FRACTION]
@@ -322,19 +322,19 @@ def rotary_spec(case: RotaryCase, maps: RotaryMaps, identifier: str, *, title: s
                        "speed_nodes_per_regime": [int(x.size) for x in maps.xi],
                        "node_speeds_rpm": [(w / RPM).tolist() for w in maps.speeds],
                        "regime_boundaries_rpm": boundaries.T.tolist(),
-                       "sump_temperatures_C": (maps.sump_temperatures - CELSIUS_0).tolist(),
-                       "ambient_C": maps.ambient - CELSIUS_0},
+                       "sump_temperatures_C": (maps.sump_temperatures - ZERO_CELSIUS_K).tolist(),
+                       "ambient_C": maps.ambient - ZERO_CELSIUS_K},
         "torque_map": {"speed_range_rpm": [float(maps.torque_speeds[0] / RPM),
                                            float(maps.torque_speeds[-1] / RPM)],
                        "contact_temperature_range_C": [
-                           float(maps.torque_temperatures[0] - CELSIUS_0),
-                           float(maps.torque_temperatures[-1] - CELSIUS_0)],
+                           float(maps.torque_temperatures[0] - ZERO_CELSIUS_K),
+                           float(maps.torque_temperatures[-1] - ZERO_CELSIUS_K)],
                        "nodes": [int(maps.torque_speeds.size),
                                  int(maps.torque_temperatures.size)],
                        "max_relative_error_at_cell_centres": torque_error},
         "thermal_lag": {"order": order, "speeds_rpm": (lag.speeds / RPM).tolist(),
                         "xi": maps.lag_xi.tolist(), "regime": maps.lag_regime.tolist(),
-                        "sump_temperatures_C": (lag.sump_temperatures - CELSIUS_0).tolist(),
+                        "sump_temperatures_C": (lag.sump_temperatures - ZERO_CELSIUS_K).tolist(),
                         "weights": lag.weights.tolist(),
                         "time_constants_s": lag.time_constants.tolist(),
                         "fit_max_error": lag.max_errors.tolist(),
@@ -418,7 +418,7 @@ def rotary_check(case: RotaryCase, maps: RotaryMaps, spec: ModelSpec, *,
                                 full = steady_state(held, float(w))
                                 torque, contact = steady_fmu(fmu, w, ts)
                                 rows.append((w, ts, full["torque_Nm"], torque,
-                                             full["T_contact_C"] + CELSIUS_0, contact))
+                                             full["T_contact_C"] + ZERO_CELSIUS_K, contact))
                 rows = np.array(rows)
                 results["between"] = {
                     "points": int(len(rows)),
@@ -434,12 +434,12 @@ def rotary_check(case: RotaryCase, maps: RotaryMaps, spec: ModelSpec, *,
                     full = simulate(case, base_dir=base_dir).timeseries
                 fmu.reset()
                 fmu.set(start_steady=False,
-                        T_contact_start=float(full["T_contact_C"].iloc[0] + CELSIUS_0))
+                        T_contact_start=float(full["T_contact_C"].iloc[0] + ZERO_CELSIUS_K))
                 t = full["time_s"].to_numpy()
                 run = run_rotary(fmu, t, full["speed_rpm"].to_numpy() * RPM,
-                                 full["T_sump_C"].to_numpy() + CELSIUS_0)
+                                 full["T_sump_C"].to_numpy() + ZERO_CELSIUS_K)
                 rel = np.abs(run["torque"][1:] / full["torque_Nm"].to_numpy()[1:] - 1.0)
-                d_contact = run["T_contact"] - (full["T_contact_C"].to_numpy() + CELSIUS_0)
+                d_contact = run["T_contact"] - (full["T_contact_C"].to_numpy() + ZERO_CELSIUS_K)
                 rise = full["T_contact_C"] - full["T_sump_C"]
                 results["duty_cycle"] = {
                     "duration_s": float(t[-1]),
@@ -454,7 +454,7 @@ def rotary_check(case: RotaryCase, maps: RotaryMaps, spec: ModelSpec, *,
                     "torque_full_Nm": full["torque_Nm"].to_numpy(),
                     "torque_fmu_Nm": run["torque"],
                     "T_contact_full_C": full["T_contact_C"].to_numpy(),
-                    "T_contact_fmu_C": run["T_contact"] - CELSIUS_0}
+                    "T_contact_fmu_C": run["T_contact"] - ZERO_CELSIUS_K}
         spec.report["validation"] = results
 
     return check

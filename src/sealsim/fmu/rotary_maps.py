@@ -1,8 +1,9 @@
 r"""Reduced model of the rotary lip seal for its FMU: steady maps plus a thermal lag.
 
-Seed 001 keeps an expensive model out of the system simulation by precomputing it into
-characteristic diagrams; here the same is done for the coupled friction–thermal model of seed
-000 (:mod:`sealsim.rotary.simulation`).  Everything below is computed from whatever
+Heipl & Murrenhoff (IFAS RWTH Aachen) keep an expensive model out of the system simulation by
+precomputing it into characteristic diagrams; here the same is done for the coupled
+friction–thermal model of Organisciak et al. (SKF, AGMA 14FTM14, 2014,
+:mod:`sealsim.rotary.simulation`).  Everything below is computed from whatever
 ``sealsim.rotary`` gives at build time -- no number of the rotary model is repeated here.
 
 * **Steady maps** (:func:`steady_rise_map`): with the oil sump held at T_s (a thermostat, the
@@ -60,6 +61,7 @@ from sealsim.rotary.case import RotaryCase
 from sealsim.rotary.simulation import RotaryModel, friction_map, simulate, steady_state
 from sealsim.thermal.convection import rotating_annulus_nusselt, taylor_number
 from sealsim.tribology.film import FilmRangeWarning
+from sealsim.units import ZERO_CELSIUS_K
 
 #: A step response counts as settled at this fraction of its steady rise.
 SETTLED_FRACTION = 0.99
@@ -75,11 +77,10 @@ AXIS_SPACING = 2.0
 #: the speed range (the boundary is clamped to it).
 MIN_REGIME_SHARE = 0.02
 
-__all__ = ["CELSIUS_0", "MapAxes", "SPEED_SCALE", "ThermalLag", "fit_step_response",
-           "fixed_sump_case", "flow_regime_boundaries", "map_axes", "speed_coordinate",
-           "steady_rise_map", "step_response", "thermal_lag", "torque_map"]
+__all__ = ["MapAxes", "SPEED_SCALE", "ThermalLag", "fit_step_response", "fixed_sump_case",
+           "flow_regime_boundaries", "map_axes", "speed_coordinate", "steady_rise_map",
+           "step_response", "thermal_lag", "torque_map"]
 
-CELSIUS_0 = 273.15
 #: ω_s of the speed coordinate u = ln(1 + |ω|/ω_s) of the tables [rad/s] (10 rpm)
 SPEED_SCALE = 10.0 * math.pi / 30.0
 
@@ -308,7 +309,7 @@ def steady_rise_map(case: RotaryCase, speeds, sump_temperatures,
             with warnings.catch_warnings():   # the film range is the rotary model's note
                 warnings.simplefilter("ignore", FilmRangeWarning)
                 point = steady_state(base, float(w))
-            t_contact = point["T_contact_C"] + CELSIUS_0
+            t_contact = point["T_contact_C"] + ZERO_CELSIUS_K
             out["rise"][i, j] = t_contact - ts
             out["T_contact"][i, j] = t_contact
             out["torque"][i, j] = point["torque_Nm"]
@@ -316,7 +317,7 @@ def steady_rise_map(case: RotaryCase, speeds, sump_temperatures,
             if shifted is not None:
                 with warnings.catch_warnings():
                     warnings.simplefilter("ignore", FilmRangeWarning)
-                    other = steady_state(shifted, float(w))["T_contact_C"] + CELSIUS_0
+                    other = steady_state(shifted, float(w))["T_contact_C"] + ZERO_CELSIUS_K
                 out["ambient_sensitivity"][i, j] = (other - t_contact) / ambient_step
                 done += 1
             if progress is not None:
@@ -339,7 +340,7 @@ def torque_map(case: RotaryCase, speeds, contact_temperatures) -> np.ndarray:
     """Friction torque [N m] at speeds ω [rad/s] × contact temperatures [K], shape (n, m)."""
     speeds = np.asarray(speeds, dtype=float)
     temps = np.asarray(contact_temperatures, dtype=float)
-    frame = friction_map(case, speeds * 30.0 / math.pi, temps - CELSIUS_0)
+    frame = friction_map(case, speeds * 30.0 / math.pi, temps - ZERO_CELSIUS_K)
     # friction_map's rows run over temperature (outer) and speed (inner)
     return frame["torque_Nm"].to_numpy().reshape(temps.size, speeds.size).T
 
@@ -490,7 +491,7 @@ def thermal_lag(case: RotaryCase, speeds, sump_temperatures, order: int = 2,
                 warnings.simplefilter("ignore", (ServiceRangeWarning, OilRangeWarning,
                                                  FilmRangeWarning))
                 rise = steady_state(fixed_sump_case(case, ts, ambient_temperature=ts),
-                                    float(w))["T_contact_C"] + CELSIUS_0 - ts
+                                    float(w))["T_contact_C"] + ZERO_CELSIUS_K - ts
                 if abs(rise) < 1e-9:
                     raise InputError(f"lag speed {w * 30 / math.pi:.4g} rpm heats the contact "
                                      f"by {rise:.2g} K only; choose a higher speed")
@@ -503,7 +504,7 @@ def thermal_lag(case: RotaryCase, speeds, sump_temperatures, order: int = 2,
                     max_duration=MAX_LAG_EXTENSION * float(duration))
                 frame = simulate(held).timeseries
             t = frame["time_s"].to_numpy()[1:]
-            y = (frame["T_contact_C"].to_numpy()[1:] + CELSIUS_0 - ts) / rise
+            y = (frame["T_contact_C"].to_numpy()[1:] + ZERO_CELSIUS_K - ts) / rise
             weights[i, j], taus[i, j], errors[i, j] = fit_step_response(t, y, order)
             settled[i, j] = y[-1]
             responses[(i, j)] = (t, y)

@@ -1,6 +1,6 @@
 """Figures of fits against measurements: overlays (friction vs time and vs stroke; a rotary
-speed cycle like seed 000 Fig. 9) and the parity plot of measured vs predicted levels with a
-±20 % band (seed 000 Fig. 10 style)."""
+speed cycle like Fig. 9 of Organisciak et al., SKF, AGMA 14FTM14, 2014) and the parity plot of
+measured vs predicted levels with a ±20 % band (in the style of their Fig. 10)."""
 
 from __future__ import annotations
 
@@ -125,7 +125,7 @@ def plot_signals(time, curves, title: str = ""):
 
 def plot_rotary_overlay(name: str, role: str, time, measured, model, steps, title: str = ""):
     """Speed | torque | spring-groove temperature of one rotary run over time, measured and
-    model (like seed 000 Fig. 9), with the step averages compared.
+    model (like Organisciak et al., AGMA 14FTM14, 2014, Fig. 9), with the step averages compared.
 
     Parameters
     ----------

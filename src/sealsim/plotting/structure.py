@@ -9,6 +9,7 @@ from matplotlib.collections import PolyCollection
 
 from sealsim.plotting import new_figure
 from sealsim.structure.results import pressure_profile
+from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["plot_map", "plot_map_profiles", "plot_section", "plot_states"]
 
@@ -83,7 +84,7 @@ def plot_section(state, title: str = ""):
                                                "fluid pressure from the left") + ")")
     ax.set_ylabel("radius r [mm]")
     ax.set_title(f"squeeze {state.squeeze * 100:.3g} %, {state.pressure / 1e5:.3g} bar, "
-                 f"{state.temperature - 273.15:.4g} °C", fontsize=10)
+                 f"{state.temperature - ZERO_CELSIUS_K:.4g} °C", fontsize=10)
     for name, style in (("sealing_surface", "-"), ("groove_bottom", "--")):
         s = state.surfaces.get(name)
         if s is None or s.position.size == 0:
@@ -112,15 +113,20 @@ def plot_section(state, title: str = ""):
 def plot_states(frame, x: str | None = None, title: str = ""):
     """F_N, b and peak pressures over the load states of a ``result.csv`` frame.
 
-    ``x`` is the column on the horizontal axis; by default time for a temperature history,
-    the load states (labelled) for a squeeze-then-pressure path, else the varying load.
+    ``x`` is the column on the horizontal axis; by default the temperature for a temperature
+    history (from the installed state on, the axis running the way the temperature goes), the
+    load states (labelled) for a squeeze-then-pressure path, else the varying load.
     """
     labels = None
     if x is None:
         spans = {c: float(np.ptp(frame[c].to_numpy())) for c in
                  ("temperature_C", "pressure_bar", "squeeze")}
         if spans["temperature_C"] > 0:
-            x = "time_s"  # a temperature history (seed 001 Fig. 8 is over time)
+            # installation and hold sit at one temperature: start at the last of them
+            temperature = frame["temperature_C"].to_numpy()
+            first_change = int(np.argmax(temperature != temperature[0]))
+            frame = frame.iloc[max(first_change - 1, 0):]
+            x = "temperature_C"
         elif spans["squeeze"] > 0 and spans["pressure_bar"] > 0:
             x = "load state"
             labels = [f"{s * 100:.3g} %" if k == 0 or s != frame["squeeze"].iloc[k - 1]
@@ -146,7 +152,11 @@ def plot_states(frame, x: str | None = None, title: str = ""):
             ax.set_xlabel("load state (squeeze, then pressure)")
         else:
             ax.set_xlabel({"time_s": "time [s]", "pressure_bar": "pressure [bar]",
-                           "squeeze": "squeeze [-]"}.get(x, x))
+                           "squeeze": "squeeze [-]", "temperature_C": "temperature [°C]"
+                           }.get(x, x))
+    if x == "temperature_C" and xs[-1] < xs[0]:
+        for ax in axes:          # a cooling run reads from left to right
+            ax.invert_xaxis()
     axes[0].legend(fontsize=8)
     axes[2].legend(fontsize=8)
     if title:
@@ -161,7 +171,7 @@ def plot_map(dataset, squeeze_index: int = 0, title: str = ""):
     p = ds["pressure"].values / 1e5
     for t in ds["temperature"].values:
         sel = ds.sel(temperature=t)
-        label = f"{t - 273.15:.4g} °C"
+        label = f"{t - ZERO_CELSIUS_K:.4g} °C"
         axes[0].plot(p, sel["F_N"].values, "-o", ms=3, label=label)
         axes[1].plot(p, sel["b"].values * 1e3, "-o", ms=3, label=label)
     axes[0].set_ylabel("F_N (360°) [N]")
@@ -188,8 +198,8 @@ def plot_map_profiles(dataset, squeeze_index: int = 0, title: str = ""):
     p_hi = ds["pressure"].values[-1]
     for t in ds["temperature"].values:
         axes[1].plot(z, ds["contact_pressure"].sel(temperature=t, pressure=p_hi).values / 1e6,
-                     lw=1.2, label=f"{t - 273.15:.4g} °C")
-    axes[0].set_title(f"at {t0 - 273.15:.4g} °C", fontsize=10)
+                     lw=1.2, label=f"{t - ZERO_CELSIUS_K:.4g} °C")
+    axes[0].set_title(f"at {t0 - ZERO_CELSIUS_K:.4g} °C", fontsize=10)
     axes[1].set_title(f"at {p_hi / 1e5:.3g} bar", fontsize=10)
     for ax, legend in zip(axes, ("pressure", "temperature")):
         ax.set_xlabel("axial position z [mm]")

@@ -51,11 +51,10 @@ from sealsim.rotary.lip import (
 from sealsim.rotary.lip_fe import LipSpec
 from sealsim.tribology.film import EHL_EXPONENT, FILM_FLOOR, film_coefficient_matching_fit
 from sealsim.tribology.rubber_friction import DEFAULT_ASPERITY_WAVELENGTH, DEFAULT_MASTER_CURVE
+from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["SETUPS", "DutyCycle", "DutyStep", "Environment", "Friction", "Numerics", "OilSpec",
            "RotaryCase", "Seal", "ShaftSetup", "ThermalSpec", "WaveLip"]
-
-CELSIUS_0 = 273.15
 
 
 class WaveLip(CaseModel):
@@ -85,7 +84,8 @@ class Seal(CaseModel):
         None, description="lip force at radial_force_temperature; default 0.15 N/mm x pi d")
     radial_force_temperature: Q("temperature", gt=200.0, lt=450.0) = 293.15
     spring_share: float = Field(0.45, ge=0.0, le=1.0, description=(
-        "share of the garter spring in the radial force (reference notes: 30-60 % new)"))
+        "share of the garter spring in the radial force (typically 30-60 % for a new "
+        "DIN 3760 NBR lip; handbook range, not checked against one measured source)"))
     hoop_prestrain: float = Field(DEFAULT_HOOP_PRESTRAIN, gt=0.005, le=0.5, description=(
         "hoop strain of the lip ring stretched onto the shaft (radial interference / shaft "
         "radius) at radial_force_temperature; sets how much interference the rubber's thermal "
@@ -216,7 +216,8 @@ class Environment(CaseModel):
                           "heat capacity between sump and ambient")
     oil_level_wetting: float = Field(0.5, ge=0.0, le=1.0, description=(
         "fraction of the shaft circumference under oil on the oil side "
-        "(0.5: oil level at the shaft centre, as in seed 000's rig)"))
+        "(0.5: oil level at the shaft centre, as in the rig of Organisciak et al., AGMA "
+        "14FTM14, 2014)"))
     shaft_oil_convection: Literal["annulus", "open"] = Field("annulus", description=(
         "flow around the oil-side shaft: 'annulus' (Taylor-Couette flow in the annular space "
         "between the shaft and the bore the seal sits in -- a bearing cap, a test head -- after "
@@ -280,7 +281,8 @@ class Friction(CaseModel):
     film_coefficient_um: float = Field(
         round(film_coefficient_matching_fit() * 1e6, 4), gt=0, le=100,
         description="f of h = f (eta u)^0.66 in um/(Pa m)^0.66; default: least-squares match "
-                    "to seed 000's measured h = 3.45 (u eta)^0.68")
+                    "to the h = 3.45 (u eta)^0.68 measured by Organisciak "
+                    "et al. (SKF, AGMA 14FTM14, 2014)")
     film_exponent: float = Field(EHL_EXPONENT, gt=0.3, lt=1.0)
     film_floor: Q("length", gt=0, le=1e-6) = FILM_FLOOR
     mu_peak: float = Field(DEFAULT_MASTER_CURVE.mu_peak, gt=0, le=5)
@@ -468,7 +470,8 @@ def start_temperature(env: Environment) -> float:
 
 
 class RotaryCase(CaseModel):
-    """A complete rotary lip seal case (seed 000)."""
+    """A complete rotary lip seal case (the model of Organisciak et al., SKF, AGMA 14FTM14,
+    2014)."""
 
     title: str = ""
     seal: Seal
@@ -501,7 +504,7 @@ class RotaryCase(CaseModel):
                             ("environment.housing_temperature", env.housing_temperature)):
             if value is not None and oil.min_temperature is not None and \
                     value < oil.min_temperature:
-                raise ValueError(f"{name} {value - CELSIUS_0:.1f} degC is below the lowest "
+                raise ValueError(f"{name} {value - ZERO_CELSIUS_K:.1f} degC is below the lowest "
                                  f"usable temperature of {oil.name} "
-                                 f"({oil.min_temperature - CELSIUS_0:.1f} degC)")
+                                 f"({oil.min_temperature - ZERO_CELSIUS_K:.1f} degC)")
         return self

@@ -65,7 +65,8 @@ __all__ = [
 LIP_FORCE_FREQUENCY = 0.01
 
 #: Radial load per unit circumference of a DIN 3760 lip [N/m]: 0.15 N/mm, the middle of
-#: the 0.1-0.2 N/mm of the reference notes §4 (38 N on an 80 mm shaft).
+#: the 0.1-0.2 N/mm typical of NBR lips measured on split-shaft rigs (DIN 3761-9; handbook
+#: range, not checked against one measured source) -- 38 N on an 80 mm shaft.
 DEFAULT_LOAD_PER_LENGTH = 150.0
 
 #: Hoop pre-strain of the lip ring on the shaft, ε₀ = δ/R [-]: 8 %, the strain at which the
@@ -255,8 +256,10 @@ def default_width(shaft_diameter):
 def default_contact_width(shaft_diameter):
     """Default axial contact width of a run-in lip, 0.25 mm (any size).
 
-    New lips touch over 0.1-0.2 mm, run-in lips over 0.2-0.5 mm (reference notes §4);
-    seed 000 validates run-in seals, so sealsim uses a value at the lower end of run-in.
+    New lips touch over 0.1-0.2 mm, run-in lips over 0.2-0.5 mm (contact widths measured
+    before and after an endurance run in Lubricants 12(4), 103, 2024); Organisciak et al.
+    (SKF, AGMA 14FTM14, 2014) validate with run-in seals, so sealsim uses a value at the
+    lower end of run-in.
 
     Examples
     --------

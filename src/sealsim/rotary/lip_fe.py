@@ -36,7 +36,7 @@ from sealsim.cases import CaseModel, Q
 
 __all__ = ["LipForceTable", "LipSpec", "lip_force_table", "lip_structure_case"]
 
-CELSIUS_0 = 273.15
+from sealsim.units import ZERO_CELSIUS_K as CELSIUS_0
 Temperature = Q("temperature", gt=200.0, lt=500.0)
 
 DEFAULT_TEMPERATURES = tuple(CELSIUS_0 + t for t in (-20.0, 0.0, 20.0, 40.0, 60.0, 80.0, 100.0,
@@ -51,7 +51,7 @@ class LipSpec(CaseModel):
         "'constant': seal.radial_force with the spring share and E(T) (lip.py Eq. 1) and "
         "seal.contact_width; 'fe': both from an FE model of the DIN 3760 lip"))
     contact_width: Literal["constant", "fe"] = Field("constant", description=(
-        "'constant': seal.contact_width (a run-in lip, the width seed 000 validates with); "
+        "'constant': seal.contact_width (a run-in lip, as Organisciak et al. validate with); "
         "'fe': the FE contact width of the new lip"))
     temperatures: list[Temperature] = Field(
         default_factory=lambda: list(DEFAULT_TEMPERATURES), min_length=2, description=(

@@ -10,6 +10,9 @@ plot or write result folders.
 * :mod:`~sealsim.runs.rotary` -- ``sealsim rotary run``;
 * :mod:`~sealsim.runs.pneumatic` -- ``sealsim pneumatic run``;
 * :mod:`~sealsim.runs.friction` -- ``sealsim friction run``;
+* :mod:`~sealsim.runs.structure` -- ``sealsim structure run`` and ``sealsim structure map``;
+* :mod:`~sealsim.runs.calibration` -- ``sealsim friction fit``, ``sealsim rotary fit`` and
+  ``sealsim pneumatic compare``;
 * :mod:`~sealsim.runs.study` -- ``sealsim study run``.
 
 From Python::

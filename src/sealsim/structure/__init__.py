@@ -1,5 +1,6 @@
 """Seal structural mechanics: axisymmetric hyperelastic FE of a seal in its gland (FElupe) and
-characteristic diagrams of the normal force F_N and contact width b (seed 001).
+characteristic diagrams of the normal force F_N and contact width b (Heipl & Murrenhoff,
+IFAS RWTH Aachen).
 
 Pipeline, one concept per module:
 

@@ -20,6 +20,7 @@ from sealsim.structure.material import (
 from sealsim.structure.profile_mesh import mesh_section
 from sealsim.structure.model import GarterSpringSpec, SealModel
 from sealsim.structure.solver import LoadStep
+from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = [
     "RollingSpringWarning",
@@ -197,8 +198,8 @@ def check_temperatures(case: StructureCase, temperatures) -> None:
     for t in temperatures:
         if not lo <= t <= hi:
             raise InputError(
-                f"temperature {t - 273.15:g} degC is outside the range of {name}: "
-                f"{lo - 273.15:g} ... {hi - 273.15:g} degC")
+                f"temperature {t - ZERO_CELSIUS_K:g} degC is outside the range of {name}: "
+                f"{lo - ZERO_CELSIUS_K:g} ... {hi - ZERO_CELSIUS_K:g} degC")
 
 
 def garter_spring(case: StructureCase, assembly: SealAssembly) -> GarterSpringSpec | None:

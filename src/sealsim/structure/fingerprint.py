@@ -23,10 +23,10 @@ from importlib import resources
 
 __all__ = ["FE_MODEL_VERSION", "model_fingerprint"]
 
-#: Version of the FE model's results. History: 1 = issue 5 (hyperelastic/viscoelastic
-#: Mooney-Rivlin, rubbery thermal expansion); 2 = glassy thermal expansion through the fictive
-#: temperature, one modulus-temperature law for FE and analytic maps (issue 10, findings 7/8);
-#: 3 = seal profiles, Coulomb friction on the groove walls by default (issue 12).
+#: Version of the FE model's results. History: 1 = hyperelastic/viscoelastic Mooney-Rivlin,
+#: rubbery thermal expansion; 2 = glassy thermal expansion through the fictive temperature,
+#: one modulus-temperature law for FE and analytic maps; 3 = seal profiles, Coulomb friction
+#: on the groove walls by default.
 FE_MODEL_VERSION = 3
 
 

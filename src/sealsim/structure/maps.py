@@ -29,6 +29,7 @@ import xarray as xr
 from scipy.interpolate import PchipInterpolator
 
 from sealsim.errors import InputError
+from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["MAP_COORDS", "MAP_VARIABLES", "PROFILE_VARIABLES", "HermiteGrid", "SealMap",
            "load_map"]
@@ -245,7 +246,7 @@ class SealMap:
         if not (lo - tol <= value <= hi + tol) or math.isnan(value):
             show = {"pressure": (1e-5, "bar"), "temperature": (None, "degC"),
                     "squeeze": (100.0, "%")}[name]
-            f = (lambda v: v - 273.15) if show[0] is None else (lambda v: v * show[0])
+            f = (lambda v: v - ZERO_CELSIUS_K) if show[0] is None else (lambda v: v * show[0])
             raise InputError(
                 f"{name} = {f(value):.6g} {show[1]} is outside the characteristic map "
                 f"({f(lo):.6g} ... {f(hi):.6g} {show[1]}); extend the map grid or load it with "

@@ -1,7 +1,7 @@
 r"""Seal materials for the FE model: nearly incompressible Mooney–Rivlin with thermal expansion,
 temperature-dependent constants, and a thermo-viscoelastic (Prony series + WLF) variant.
 
-The strain energy per unit undeformed volume follows seed 001, Eq. (6)/(7):
+The strain energy per unit undeformed volume follows Heipl & Murrenhoff, Eq. (6)/(7):
 
 .. math::
 
@@ -11,7 +11,7 @@ The strain energy per unit undeformed volume follows seed 001, Eq. (6)/(7):
 with the isochoric invariants :math:`\bar I_1 = J^{-2/3} I_1`, :math:`\bar I_2 = J^{-4/3} I_2`
 of :math:`C = F^T F` and the volumetric energy :math:`U = K/2\,(\bar J - 1)^2` of FElupe's
 mixed (constant cell pressure) formulation. Thermal expansion is therefore a change of the
-volumetric part only (seed 001: "equivalent to a change in the third invariant"): the
+volumetric part only (Heipl & Murrenhoff: "equivalent to a change in the third invariant"): the
 stress-free volume of every cell is :math:`J_\mathrm{th} V`.
 
 The isochoric part is an FElupe *umat* (methods ``gradient([F, statevars])`` and
@@ -19,8 +19,8 @@ The isochoric part is an FElupe *umat* (methods ``gradient([F, statevars])`` and
 analytic first Piola–Kirchhoff stress and tangent; the volumetric part is added by
 :class:`felupe.SolidBodyNearlyIncompressible`.
 
-Thermo-viscoelasticity (seed 001, Eq. (8)/(9)) is a finite-strain generalised Maxwell model
-in reduced time (Simo 1987; Holzapfel 2000, §6.10): the equilibrium branch is the
+Thermo-viscoelasticity (Heipl & Murrenhoff, Eq. (8)/(9)) is a finite-strain generalised
+Maxwell model in reduced time (Simo 1987; Holzapfel 2000, §6.10): the equilibrium branch is the
 Mooney–Rivlin stress :math:`\bar S_\infty` scaled with :math:`T/T_p` (rubber elasticity); each
 Prony term :math:`i` carries an internal stress :math:`Q_i` (second Piola–Kirchhoff),
 
@@ -37,7 +37,8 @@ branches freeze and strain increments meet the glassy modulus.
 
 References
 ----------
-- O. Heipl, H. Murrenhoff, seed 001, Eq. (6)–(9).
+- O. Heipl, H. Murrenhoff (IFAS RWTH Aachen), "Rate- and state-dependent friction model for
+  elastomeric seals", Eq. (6)–(9).
 - J. C. Simo, "On a fully three-dimensional finite-strain viscoelastic damage model",
   Comput. Methods Appl. Mech. Eng. 60 (1987) 153–173.
 - G. A. Holzapfel, Nonlinear Solid Mechanics, Wiley 2000, §6.10.
@@ -60,6 +61,7 @@ from sealsim.properties.elastomers import (
     fictive_temperature_step,
     thermal_strain,
 )
+from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = [
     "HyperelasticSealMaterial",
@@ -675,9 +677,10 @@ def _check_constants(c10, c01, k, temperature):
     ok = all(math.isfinite(v) for v in (c10, c01, k)) and c10 > 0 and c01 >= 0
     if not ok or k <= 10 * 2 * (c10 + c01) / 3:
         raise InputError(
-            f"material constants at {temperature - 273.15:.1f} degC are invalid: C10 = {c10!r} Pa "
-            f"(must be > 0), C01 = {c01!r} Pa (>= 0), bulk modulus K = {k!r} Pa (must be finite "
-            "and well above the shear modulus for a nearly incompressible rubber)")
+            f"material constants at {temperature - ZERO_CELSIUS_K:.1f} degC are invalid: "
+            f"C10 = {c10!r} Pa (must be > 0), C01 = {c01!r} Pa (>= 0), bulk modulus K = {k!r} Pa "
+            "(must be finite and well above the shear modulus for a nearly incompressible "
+            "rubber)")
 
 
 def material_from_elastomer(elastomer, model: str = "hyperelastic", *,
@@ -703,8 +706,8 @@ def material_from_elastomer(elastomer, model: str = "hyperelastic", *,
         analytic contact estimate of :mod:`sealsim.pneumatic.contact_maps`).
         ``"entropic"`` (default): r = T/T_ref, the equilibrium modulus of rubber elasticity,
         G = n·k·T (Treloar, *The Physics of Rubber Elasticity*, 1975, ch. 4). A seal held at
-        constant squeeze relaxes to it, which is also what seed 001 assumes for slow cooling
-        above Tg; valid above ≈ T_g + 30 K, below that use ``model = "viscoelastic"``.
+        constant squeeze relaxes to it, which is also what Heipl & Murrenhoff assume for slow
+        cooling above Tg; valid above ≈ T_g + 30 K, below that use ``model = "viscoelastic"``.
         ``"modulus"``: the catalogue's E(T) at ``frequency``, which includes the viscoelastic
         softening of the glass-transition tail (the dynamic modulus at that rate, not the
         stiffness of a long-held squeeze). ``"none"``: constant.

@@ -9,7 +9,7 @@ Pipeline (FElupe style): geometry (:class:`~.geometry.SealAssembly`) → mesh
 Thermal expansion enters the mixed formulation through the reference volume of every cell:
 FElupe's constant-pressure body evaluates :math:`\\bar J = v / V` and
 :math:`U = K/2\\,(\\bar J - 1)^2`; the model sets :math:`V = J_{th} V_0`, which makes the
-volumetric energy :math:`J_{th} V_0\\,U(v / (J_{th} V_0))` -- the seed's Eq. (7) with the
+volumetric energy :math:`J_{th} V_0\\,U(v / (J_{th} V_0))` -- Eq. (7) of Heipl & Murrenhoff with the
 stress-free volume of the heated (or cooled) rubber.
 """
 

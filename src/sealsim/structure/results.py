@@ -29,6 +29,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from sealsim.units import ZERO_CELSIUS_K
+
 __all__ = [
     "StateResult",
     "SurfaceResult",
@@ -128,7 +130,7 @@ class StateResult:
         return {
             "squeeze": round(self.squeeze, 10),
             "pressure_bar": self.pressure / 1e5,
-            "temperature_C": self.temperature - 273.15,
+            "temperature_C": self.temperature - ZERO_CELSIUS_K,
             "time_s": self.time,
             "F_N_N": self.F_N,
             "F_N_per_length_N_per_mm": self.F_N_per_length / 1e3,
@@ -442,7 +444,7 @@ def profiles_frame(results):
             for pos, p in zip(s.position, s.pressure):
                 rows.append({"state": k, "squeeze": round(r.squeeze, 10),
                              "pressure_bar": r.pressure / 1e5,
-                             "temperature_C": r.temperature - 273.15, "time_s": r.time,
+                             "temperature_C": r.temperature - ZERO_CELSIUS_K, "time_s": r.time,
                              "surface": name, "position_mm": pos * 1e3,
                              "contact_pressure_MPa": p / 1e6})
     return pd.DataFrame(rows, columns=["state", "squeeze", "pressure_bar", "temperature_C",

@@ -36,6 +36,7 @@ from scipy.sparse.linalg import splu, spsolve
 
 from sealsim.errors import ConvergenceError
 from sealsim.structure.model import LoadState, SealModel
+from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["DEFAULT_LINEAR_SOLVER", "LINEAR_SOLVERS", "LinearSolver", "LoadStep",
            "describe_state", "solve"]
@@ -187,7 +188,7 @@ def _pypardiso():
 def describe_state(state: LoadState) -> str:
     """Human-readable load, e.g. 'squeeze 20 %, pressure 3.5 bar, temperature 20 degC'."""
     return (f"squeeze {state.squeeze * 100:.4g} %, pressure {state.pressure / 1e5:.4g} bar, "
-            f"temperature {state.temperature - 273.15:.4g} degC")
+            f"temperature {state.temperature - ZERO_CELSIUS_K:.4g} degC")
 
 
 def _assemble(model: SealModel):
