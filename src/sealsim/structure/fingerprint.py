@@ -26,8 +26,10 @@ __all__ = ["FE_MODEL_VERSION", "model_fingerprint"]
 #: Version of the FE model's results. History: 1 = issue 5 (hyperelastic/viscoelastic
 #: Mooney-Rivlin, rubbery thermal expansion); 2 = glassy thermal expansion through the fictive
 #: temperature, one modulus-temperature law for FE and analytic maps (issue 10, findings 7/8);
-#: 3 = seal profiles, Coulomb friction on the groove walls by default (issue 12).
-FE_MODEL_VERSION = 3
+#: 3 = seal profiles, Coulomb friction on the groove walls by default (issue 12); 4 = the radial
+#: lip's sharp edge with a refined contact band, and contact results of bonded profiles mapped
+#: to the right loop nodes (issue 12 follow-up).
+FE_MODEL_VERSION = 4
 
 
 @functools.lru_cache(maxsize=1)
