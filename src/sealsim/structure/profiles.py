@@ -421,9 +421,14 @@ SPRING_OFFSET = 0.5e-3
 
 
 CONTACT_BAND = 0.4e-3
-"""Length of the oil- and air-side faces next to the lip edge that is meshed with the contact
-element size, at a 10 mm section (scaled with the section height) [m]: the new lip's contact
-band is 0.1-0.3 mm wide, so this band holds it with room for the heel-over of the head."""
+"""Width of the contact band the contact elements refer to, at a 10 mm section (scaled with
+the section height) [m]: new lips touch over 0.1-0.2 mm, so the contact elements are a
+fraction of that (:data:`~.profile_mesh.PROFILE_MESH_LEVELS`)."""
+
+REFINED_FACES = (0.4e-3, 1.2e-3)
+"""Lengths of the oil-side and the air-side face next to the lip edge that are meshed with the
+contact element size, at a 10 mm section (scaled with the section height) [m]: the band grows
+towards the air side as the head heels over (warm, soft rubber), so that side is longer."""
 
 EDGE_RADIUS = 0.03e-3
 """Radius of the moulded lip edge at a 10 mm section (scaled with the section height) [m]: a
@@ -451,7 +456,7 @@ def radial_lip_profile(shaft_diameter: float, outer_diameter: float, width: floa
     drawings (section height H = 10 mm: head 2.6 mm high, flex 1.2 mm thick at 75° to the
     axis, spring coil Ø 1.6 mm), scaled with the section height H = (D − d)/2 for other sizes.
     The lip edge is where the oil-side and the air-side cones meet, rounded only by
-    :data:`EDGE_RADIUS`; the first :data:`CONTACT_BAND` of both faces is meshed with the contact
+    :data:`EDGE_RADIUS`; the first :data:`REFINED_FACES` of both faces are meshed with the contact
     element size, so the contact band of the installed lip (0.1-0.2 mm) is resolved.
     The drawn lip is the moulded one, without the spring: the garter spring is put on in the
     FE model and pulls the lip inwards before the shaft is installed.
@@ -543,10 +548,13 @@ def radial_lip_profile(shaft_diameter: float, outer_diameter: float, width: floa
     if not (bot0[1] > 0.2 * head and top1[1] < body_t1 and bot1[0] < body_z1):
         raise InputError("seal: the radial lip proportions do not form a valid section "
                          "(check width, flex_thickness and spring_offset)")
-    # the contact band: the first CONTACT_BAND of each face next to the edge is meshed with
+    # the contact band: the first REFINED_FACES of each face next to the edge are meshed with
     # the contact element size (split points on the straight faces, no fillet there)
-    band_air = CONTACT_BAND * s * d_air
-    band_oil = CONTACT_BAND * s * np.array([-math.cos(oil), math.sin(oil)])
+    # (at most 60 % of a face, so the split point stays clear of the face's far fillet)
+    len_air = min(REFINED_FACES[1] * s, 0.6 * float(np.hypot(*bot0)))
+    len_oil = min(REFINED_FACES[0] * s, 0.6 * b_oil / math.sin(oil))
+    band_air = len_air * d_air
+    band_oil = len_oil * np.array([-math.cos(oil), math.sin(oil)])
     pts = [(0.0, 0.0), tuple(band_air), tuple(bot0), tuple(bot1), (body_z1, body_t0),
            (body_z1, body_t1), (body_z0, body_t1), tuple(top1), tuple(top0), (zs + half, head),
            (zs - half, head), oil_top, (oil_face[0], oil_face[1] + 0.15 * head), oil_face,
