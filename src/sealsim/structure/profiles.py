@@ -405,11 +405,14 @@ def wiper_profile(arrangement: str, sealing_diameter: float, height: float, widt
 # -- DIN 3760 radial lip seal -----------------------------------------------------------------------
 
 LIP_OIL_SIDE_ANGLE = 45.0
-"""Oil-side angle of the lip head to the shaft axis [deg]; DIN 3760 lips have 40–60°."""
+"""Oil-side angle of the lip head to the shaft axis [deg]; DIN 3760 lips have 40–60° (range
+from catalogue section drawings, an engineering estimate: no dimensioned source was found)."""
 
 LIP_AIR_SIDE_ANGLE = 25.0
-"""Air-side angle of the lip head to the shaft axis [deg]; typically 20–35°. The steeper oil
-side gives the asymmetric contact pressure (peak towards the oil side) that pumps back."""
+"""Air-side angle of the lip head to the shaft axis [deg]; typically 20–35° (as above). The
+liquid-side angle is the larger one so that the contact pressure is asymmetric, peak towards
+the oil side, which pumps back (Science Progress 104(2), 2021, doi 10.1177/00368504211017010;
+Salant, Proc. IMechE J 213 (1999) 189)."""
 
 FLEX_ANGLE = 75.0
 """Angle of the flex section to the shaft axis [deg]: catalogue sections show a short, mostly
