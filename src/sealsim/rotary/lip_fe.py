@@ -1,8 +1,9 @@
 r"""Radial lip force and contact width of a DIN 3760 lip seal from axisymmetric FE.
 
-With ``[lip] force = "fe"`` a rotary case takes the lip force F_tip(T) (and with
-``contact_width = "fe"`` the contact width b(T)) from an FE model of its seal (:func:`sealsim.structure.profiles.radial_lip_profile`, the
-garter spring as a ring spring, the metal case rigid in the steel housing) instead of the
+With ``[lip] force = "fe"`` a rotary case takes the lip force F_tip(T) and the contact width
+b(T) (unless ``contact_width = "constant"``) from an FE model of its seal
+(:func:`sealsim.structure.profiles.radial_lip_profile`, the garter spring as a ring spring,
+the metal case rigid in the steel housing) instead of the
 constant 0.15 N/mm and 0.25 mm with Eq. (1) of :mod:`sealsim.rotary.lip`. One FE load path
 installs the lip at the installation temperature and then moves through the temperature
 grid; at every temperature
@@ -30,7 +31,7 @@ from pathlib import Path
 from typing import Literal
 
 import numpy as np
-from pydantic import Field, field_validator
+from pydantic import Field, field_validator, model_validator
 
 from sealsim.cases import CaseModel, Q
 
@@ -52,7 +53,8 @@ class LipSpec(CaseModel):
         "seal.contact_width; 'fe': both from an FE model of the DIN 3760 lip"))
     contact_width: Literal["constant", "fe"] = Field("constant", description=(
         "'constant': seal.contact_width (a run-in lip, as Organisciak et al. validate with); "
-        "'fe': the FE contact width of the new lip"))
+        "'fe': the FE contact width of the new lip. Default: 'fe' with force = 'fe', else "
+        "'constant'"))
     temperatures: list[Temperature] = Field(
         default_factory=lambda: list(DEFAULT_TEMPERATURES), min_length=2, description=(
             "temperature grid of the FE table"))
@@ -62,6 +64,15 @@ class LipSpec(CaseModel):
     flex_thickness: Q("length", gt=0.0, le=5e-3) | None = None
     spring_rate: Q("stiffness", ge=0.0) | None = None
     spring_tension: Q("force", ge=0.0) | None = None
+
+    @model_validator(mode="before")
+    @classmethod
+    def _width_follows_force(cls, data):
+        # the FE contact width of the lip (0.1-0.2 mm, mesh-converged) goes with the FE force
+        # unless the case asks for the constant one
+        if isinstance(data, dict) and data.get("contact_width") is None:
+            data = {**data, "contact_width": "fe" if data.get("force") == "fe" else "constant"}
+        return data
 
     @field_validator("temperatures")
     @classmethod

@@ -64,7 +64,7 @@ def build_section(case: StructureCase):
         return build(g.arrangement, s.lip_diameter, s.height, s.width, **kw)
     if s.type == "radial_lip":
         names = ("interference", "flex_thickness", "spring_coil_diameter", "spring_offset",
-                 "oil_side_angle", "air_side_angle", "flex_angle")
+                 "oil_side_angle", "air_side_angle", "flex_angle", "edge_radius")
         kw = {k: getattr(s, k) for k in names if getattr(s, k) is not None}
         return pf.radial_lip_profile(g.sealing_diameter, s.outer_diameter, s.width, **kw)
     unit = s.unit_factor()

@@ -74,8 +74,8 @@ SEAL_FIELDS = {
     "wiper": (("lip_diameter", "height", "width"), ("lip_thickness", "flare", "edge_radius")),
     "radial_lip": (("outer_diameter", "width"),
                    ("interference", "flex_thickness", "spring_coil_diameter", "spring_offset",
-                    "oil_side_angle", "air_side_angle", "flex_angle", "spring_rate",
-                    "spring_tension")),
+                    "oil_side_angle", "air_side_angle", "flex_angle", "edge_radius",
+                    "spring_rate", "spring_tension")),
     "user": ((), ("points", "bulges", "tags", "points_unit", "dxf", "dxf_layer", "dxf_unit",
                   "drawing", "spring_rate", "spring_tension")),
 }

@@ -26,8 +26,9 @@ __all__ = ["FE_MODEL_VERSION", "model_fingerprint"]
 #: Version of the FE model's results. History: 1 = hyperelastic/viscoelastic Mooney-Rivlin,
 #: rubbery thermal expansion; 2 = glassy thermal expansion through the fictive temperature,
 #: one modulus-temperature law for FE and analytic maps; 3 = seal profiles, Coulomb friction
-#: on the groove walls by default.
-FE_MODEL_VERSION = 3
+#: on the groove walls by default; 4 = the radial lip's sharp edge with a refined contact band,
+#: and contact results of bonded profiles mapped to the right loop nodes.
+FE_MODEL_VERSION = 4
 
 
 @functools.lru_cache(maxsize=1)

@@ -146,7 +146,9 @@ class SealModel:
         self.loop = np.asarray(mesh.boundary)
         bonded = mesh.node_sets.get("bonded", np.array([], dtype=int))
         self.bonded = np.asarray(bonded, dtype=int)
-        candidates = np.setdiff1d(self.loop, self.bonded) if len(self.bonded) else self.loop
+        # in loop order (np.setdiff1d would sort them by node number, and gaps() maps the
+        # contact's values back to the loop in this order)
+        candidates = self.loop[~np.isin(self.loop, self.bonded)]
         mu = friction if isinstance(friction, dict) else \
             {name: float(friction or 0.0) for name in self.line_names}
         unknown = set(mu) - set(self.line_names) - {"sealing_surface", "groove_bottom",

@@ -405,11 +405,14 @@ def wiper_profile(arrangement: str, sealing_diameter: float, height: float, widt
 # -- DIN 3760 radial lip seal -----------------------------------------------------------------------
 
 LIP_OIL_SIDE_ANGLE = 45.0
-"""Oil-side angle of the lip head to the shaft axis [deg]; DIN 3760 lips have 40–60°."""
+"""Oil-side angle of the lip head to the shaft axis [deg]; DIN 3760 lips have 40–60° (range
+from catalogue section drawings, an engineering estimate: no dimensioned source was found)."""
 
 LIP_AIR_SIDE_ANGLE = 25.0
-"""Air-side angle of the lip head to the shaft axis [deg]; typically 20–35°. The steeper oil
-side gives the asymmetric contact pressure (peak towards the oil side) that pumps back."""
+"""Air-side angle of the lip head to the shaft axis [deg]; typically 20–35° (as above). The
+liquid-side angle is the larger one so that the contact pressure is asymmetric, peak towards
+the oil side, which pumps back (Science Progress 104(2), 2021, doi 10.1177/00368504211017010;
+Salant, Proc. IMechE J 213 (1999) 189)."""
 
 FLEX_ANGLE = 75.0
 """Angle of the flex section to the shaft axis [deg]: catalogue sections show a short, mostly
@@ -420,13 +423,30 @@ SPRING_OFFSET = 0.5e-3
 'R value') [m]; catalogue designs use 0.3–0.8 mm so that the pressure peak is on the oil side."""
 
 
+CONTACT_BAND = 0.4e-3
+"""Width of the contact band the contact elements refer to, at a 10 mm section (scaled with
+the section height) [m]: new lips touch over 0.1-0.2 mm, so the contact elements are a
+fraction of that (:data:`~.profile_mesh.PROFILE_MESH_LEVELS`)."""
+
+REFINED_FACES = (0.4e-3, 1.2e-3)
+"""Lengths of the oil-side and the air-side face next to the lip edge that are meshed with the
+contact element size, at a 10 mm section (scaled with the section height) [m]: the band grows
+towards the air side as the head heels over (warm, soft rubber), so that side is longer."""
+
+EDGE_RADIUS = 0.03e-3
+"""Radius of the moulded lip edge at a 10 mm section (scaled with the section height) [m]: a
+sharp, trimmed or moulded edge; the contact width of a new lip (0.1-0.3 mm) is several times
+this radius, so its exact value hardly matters once it is meshed finely."""
+
+
 def radial_lip_profile(shaft_diameter: float, outer_diameter: float, width: float, *,
                        interference: float | None = None, flex_thickness: float | None = None,
                        spring_coil_diameter: float | None = None,
                        spring_offset: float = SPRING_OFFSET,
                        flex_angle: float = FLEX_ANGLE,
                        oil_side_angle: float = LIP_OIL_SIDE_ANGLE,
-                       air_side_angle: float = LIP_AIR_SIDE_ANGLE) -> SealProfile:
+                       air_side_angle: float = LIP_AIR_SIDE_ANGLE,
+                       edge_radius: float | None = None) -> SealProfile:
     """DIN 3760 / ISO 6194-1 type A radial shaft seal: the rubber part around the lip.
 
     The section (oil side x < 0, air side x > 0, lip edge at x = 0) is the lip head with the
@@ -436,8 +456,11 @@ def radial_lip_profile(shaft_diameter: float, outer_diameter: float, width: floa
     not take part in the lip mechanics and is left out.
 
     The proportions are engineering estimates of an 80 × 100 × 10 seal from catalogue section
-    drawings (section height H = 10 mm: head 2.6 mm high, flex 1.2 mm thick at 60° to the
+    drawings (section height H = 10 mm: head 2.6 mm high, flex 1.2 mm thick at 75° to the
     axis, spring coil Ø 1.6 mm), scaled with the section height H = (D − d)/2 for other sizes.
+    The lip edge is where the oil-side and the air-side cones meet, rounded only by
+    :data:`EDGE_RADIUS`; the first :data:`REFINED_FACES` of both faces are meshed with the contact
+    element size, so the contact band of the installed lip (0.1-0.2 mm) is resolved.
     The drawn lip is the moulded one, without the spring: the garter spring is put on in the
     FE model and pulls the lip inwards before the shaft is installed.
 
@@ -464,12 +487,14 @@ def radial_lip_profile(shaft_diameter: float, outer_diameter: float, width: floa
         Angle of the flex section to the shaft axis [deg].
     oil_side_angle, air_side_angle : float
         Angles of the lip faces to the shaft axis [deg].
+    edge_radius : float, optional
+        Radius of the lip edge [m] (default :data:`EDGE_RADIUS` scaled with H).
 
     Examples
     --------
     >>> p = radial_lip_profile(0.08, 0.1, 0.01)
     >>> round(p.inner_radius * 1e3, 4), p.has_bonded_edges
-    (39.041, True)
+    (39.0261, True)
     """
     for name, v in (("seal.shaft_diameter", shaft_diameter),
                     ("seal.outer_diameter", outer_diameter), ("seal.width", width)):
@@ -482,6 +507,10 @@ def radial_lip_profile(shaft_diameter: float, outer_diameter: float, width: floa
     i = 0.5e-3 + 0.006 * shaft_diameter if interference is None else interference
     tf = 1.2e-3 * s if flex_thickness is None else flex_thickness
     coil = 1.6e-3 * s if spring_coil_diameter is None else spring_coil_diameter
+    edge_r = EDGE_RADIUS * s if edge_radius is None else edge_radius
+    if not 0 <= edge_r <= 0.5 * CONTACT_BAND * s:
+        raise InputError(f"seal.edge_radius: {edge_r * 1e3:g} mm is out of range for this lip "
+                         f"(0 ... {0.5e3 * CONTACT_BAND * s:g} mm)")
     if not (0 < i < 0.3 * H and 0.25 * H > tf > 0 and 0 < coil < 0.3 * H):
         raise InputError("seal: radial lip proportions out of range (interference < 0.3 H, "
                          "flex_thickness < 0.25 H, spring_coil_diameter < 0.3 H)")
@@ -522,13 +551,21 @@ def radial_lip_profile(shaft_diameter: float, outer_diameter: float, width: floa
     if not (bot0[1] > 0.2 * head and top1[1] < body_t1 and bot1[0] < body_z1):
         raise InputError("seal: the radial lip proportions do not form a valid section "
                          "(check width, flex_thickness and spring_offset)")
-    pts = [(0.0, 0.0), tuple(bot0), tuple(bot1), (body_z1, body_t0), (body_z1, body_t1),
-           (body_z0, body_t1), tuple(top1), tuple(top0), (zs + half, head), (zs - half, head),
-           oil_top, (oil_face[0], oil_face[1] + 0.15 * head), oil_face]
-    edge_r = 0.04 * head
-    radii = [edge_r, 0.4 * tf, 0.3 * tf, 0.0, 0.0, 0.0, 0.3 * tf, 0.4 * tf, 0.0, 0.0,
-             0.1 * head, 0.1 * head, 0.1 * head]
-    tags = ["", "", "", "bonded", "bonded", "", "", "", "spring", "", "", "", ""]
+    # the contact band: the first REFINED_FACES of each face next to the edge are meshed with
+    # the contact element size (split points on the straight faces, no fillet there)
+    # (at most 60 % of a face, so the split point stays clear of the face's far fillet)
+    len_air = min(REFINED_FACES[1] * s, 0.6 * float(np.hypot(*bot0)))
+    len_oil = min(REFINED_FACES[0] * s, 0.6 * b_oil / math.sin(oil))
+    band_air = len_air * d_air
+    band_oil = len_oil * np.array([-math.cos(oil), math.sin(oil)])
+    pts = [(0.0, 0.0), tuple(band_air), tuple(bot0), tuple(bot1), (body_z1, body_t0),
+           (body_z1, body_t1), (body_z0, body_t1), tuple(top1), tuple(top0), (zs + half, head),
+           (zs - half, head), oil_top, (oil_face[0], oil_face[1] + 0.15 * head), oil_face,
+           tuple(band_oil)]
+    radii = [edge_r, 0.0, 0.4 * tf, 0.3 * tf, 0.0, 0.0, 0.0, 0.3 * tf, 0.4 * tf, 0.0, 0.0,
+             0.1 * head, 0.1 * head, 0.1 * head, 0.0]
+    tags = ["contact", "", "", "", "bonded", "bonded", "", "", "", "spring", "", "", "", "",
+            "contact"]
     corner = ["contact"] + [None] * (len(pts) - 1)  # the lip edge's rounding
     y0 = 0.5 * shaft_diameter - i
     xy = _radial(pts, y0, 1.0)
@@ -543,9 +580,9 @@ def radial_lip_profile(shaft_diameter: float, outer_diameter: float, width: floa
     bul[k] = math.tan(sweep / 4.0)
     centre, _, _, _ = arc_geometry(p0, p1, bul[k])
     contour = check_contour(Contour(con.points, bul, con.tags), "radial lip seal")
-    # the lip edge is where the contact is: a band about a tenth of the head height wide
+    # the contact elements are a fraction of the contact band
     return SealProfile("radial_lip", contour, min_feature=tf, spring_radius=float(centre[1]),
-                       contact_size=0.1 * head)
+                       contact_size=CONTACT_BAND * s)
 
 
 STEEL_SHEAR_MODULUS = 79e9
