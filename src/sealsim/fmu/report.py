@@ -10,24 +10,28 @@ import html
 import io
 import json
 
-import matplotlib
+import numpy as np
+import pandas as pd
+from matplotlib import rcParams
+from matplotlib.figure import Figure
 
-matplotlib.use("Agg")
-import matplotlib.pyplot as plt  # noqa: E402
-import numpy as np  # noqa: E402
-import pandas as pd  # noqa: E402
-
-from sealsim.files import json_ready  # noqa: E402
-from sealsim.fmu.model_description import ModelSpec  # noqa: E402
-from sealsim.units import ZERO_CELSIUS_K  # noqa: E402
+from sealsim.files import json_ready
+from sealsim.fmu.model_description import ModelSpec
+from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["friction_documentation", "rotary_documentation"]
+
+
+def _subplots(nrows=1, ncols=1, figsize=None, **kwargs):
+    """``pyplot.subplots`` without pyplot: no backend switch and no figure kept alive in the
+    caller's session (an FMU may be built from a notebook)."""
+    fig = Figure(figsize=figsize)
+    return fig, fig.subplots(nrows, ncols, **kwargs)
 
 
 def _png(fig) -> bytes:
     buffer = io.BytesIO()
     fig.savefig(buffer, format="png", dpi=110, bbox_inches="tight")
-    plt.close(fig)
     return buffer.getvalue()
 
 
@@ -82,7 +86,7 @@ def friction_documentation(spec: ModelSpec, law, table=None) -> None:
     docs = {}
     figures = []
     v = np.linspace(-0.5, 0.5, 801)
-    fig, ax = plt.subplots(figsize=(6.4, 4.0))
+    fig, ax = _subplots(figsize=(6.4, 4.0))
     if table is not None:
         (tlo, thi), (plo, phi) = table.temperature_range, table.pressure_range
         t_mid = 0.5 * (tlo + thi)
@@ -113,7 +117,7 @@ def friction_documentation(spec: ModelSpec, law, table=None) -> None:
     docs["steady_force.png"] = _png(fig)
     figures.append("steady_force.png")
     if table is not None:
-        fig, axes = plt.subplots(1, 2, figsize=(9.0, 3.6))
+        fig, axes = _subplots(1, 2, figsize=(9.0, 3.6))
         for i in range(0, table.table.axes[0].size, max(1, table.table.axes[0].size // 4)):
             label = f"{table.table.axes[0][i] - ZERO_CELSIUS_K:.0f} degC"
             axes[0].plot(table.table.axes[1] / 1e5, table.table.values[i, :, 0], label=label)
@@ -160,8 +164,8 @@ def rotary_documentation(spec: ModelSpec, maps) -> None:
                          "rise_K": part["rise"][i, j], "torque_Nm": part["torque"][i, j],
                          "dRise_dT_ambient": part["ambient_sensitivity"][i, j]})
     docs["steady_map.csv"] = _csv(pd.DataFrame(rows))
-    fig, axes = plt.subplots(1, 2, figsize=(9.5, 3.8))
-    colors = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+    fig, axes = _subplots(1, 2, figsize=(9.5, 3.8))
+    colors = rcParams["axes.prop_cycle"].by_key()["color"]
     for j, ts in enumerate(maps.sump_temperatures):
         color = colors[j % len(colors)]
         for k, (speeds, part) in enumerate(zip(maps.speeds, maps.steady)):
@@ -184,7 +188,7 @@ def rotary_documentation(spec: ModelSpec, maps) -> None:
 
     lag = maps.lag
     rows = []
-    fig, axes = plt.subplots(1, lag.sump_temperatures.size, figsize=(
+    fig, axes = _subplots(1, lag.sump_temperatures.size, figsize=(
         4.0 * lag.sump_temperatures.size, 3.8), sharey=True, squeeze=False)
     for (i, j), (t, y) in sorted(lag.responses.items()):
         rows.append({"xi": maps.lag_xi[i], "speed_rpm": lag.speeds[i, j] / rpm,
@@ -214,7 +218,7 @@ def rotary_documentation(spec: ModelSpec, maps) -> None:
     cycle = spec.data.get("duty_cycle")
     if cycle is not None:
         docs["duty_cycle.csv"] = _csv(pd.DataFrame(cycle))
-        fig, axes = plt.subplots(3, 1, figsize=(8.0, 7.5), sharex=True)
+        fig, axes = _subplots(3, 1, figsize=(8.0, 7.5), sharex=True)
         t = cycle["time_s"] / 60.0
         axes[0].plot(t, cycle["speed_rpm"], color="k")
         axes[0].set_ylabel("speed [rpm]")
