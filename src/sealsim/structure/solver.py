@@ -23,8 +23,10 @@ increment, Newton iterations, cutbacks before it).
 from __future__ import annotations
 
 import functools
+import glob
 import hashlib
 import os
+import sys
 import warnings
 from collections import OrderedDict
 from collections.abc import Callable
@@ -176,11 +178,24 @@ class LinearSolver:
 
 @functools.lru_cache(maxsize=1)
 def _pypardiso():
-    """The pypardiso module, or None (imported on first use: it loads Intel MKL)."""
+    """The pypardiso module, or None (imported on first use: it loads Intel MKL).
+
+    Every ``PyPardisoSolver`` (one per sparsity pattern and load path, and one at import)
+    looks for MKL's runtime library with ``ctypes.util.find_library`` and then a recursive
+    search of ``sys.prefix`` (about 0.2 s each) unless ``PYPARDISO_MKL_RT`` names it: it is
+    set here (inherited by map worker processes) from a direct look into ``sys.prefix``.
+    """
+    if "PYPARDISO_MKL_RT" not in os.environ:
+        found = [path for pattern in ("lib/libmkl_rt.so*", "lib/libmkl_rt*.dylib",
+                                      "Library/bin/mkl_rt*.dll")
+                 for path in glob.glob(os.path.join(sys.prefix, pattern))]
+        if found:
+            os.environ["PYPARDISO_MKL_RT"] = min(found, key=len)
     try:
         import pypardiso
     except (ImportError, OSError):  # not installed, or the MKL library is missing
         return None
+    os.environ.setdefault("PYPARDISO_MKL_RT", pypardiso.ps.libmkl._name)
     return pypardiso
 
 
@@ -204,6 +219,17 @@ def _assemble(model: SealModel):
     return np.asarray(f.toarray()).ravel(), K.tocsr()
 
 
+def _solve_partitioned(field, K11, system, f, ext0, linear):
+    """Newton correction of the partitioned system (as :func:`felupe.solve.solve`):
+    K11 du1 = -r1 - K10 (ext0 - u0), du0 = ext0 - u0."""
+    u = field[0].values
+    du0 = ext0 - u.ravel()[system.dof0]
+    du = np.empty(u.size)
+    du[system.dof1] = linear(K11, -f[system.dof1] - system.coupling(du0))
+    du[system.dof0] = du0
+    return du.reshape(u.shape)
+
+
 def _newton(model: SealModel, ext0, tol: float, maxiter: int, update_wetting: bool,
             linear: LinearSolver) -> int:
     """Newton–Raphson iterations with FElupe's partitioned solver.
@@ -225,7 +251,10 @@ def _newton(model: SealModel, ext0, tol: float, maxiter: int, update_wetting: bo
             # that a flickering edge node cannot keep Newton from converging
             frozen = model.update_wetting() <= wet_tol or iteration >= 8
         with np.errstate(all="ignore"):
-            f, K = _assemble(model)
+            if model.system is not None:
+                f, K11 = model.system.assemble(model.items, field)
+            else:
+                f, K = _assemble(model)
         if not np.all(np.isfinite(f)):
             raise fem.NewtonConvergenceError(f"non-finite residual in iteration {iteration}")
         if iteration > 0:
@@ -234,10 +263,13 @@ def _newton(model: SealModel, ext0, tol: float, maxiter: int, update_wetting: bo
                 for item in model.items:
                     item.results.update_statevars()
                 return iteration
-        system = fem.solve.partition(field, K, model.dof1, model.dof0, f)
         with np.errstate(all="ignore"), warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            du = fem.solve.solve(*system, ext0, solver=linear)
+            if model.system is not None:
+                du = _solve_partitioned(field, K11, model.system, f, ext0, linear)
+            else:
+                system = fem.solve.partition(field, K, model.dof1, model.dof0, f)
+                du = fem.solve.solve(*system, ext0, solver=linear)
         if not np.all(np.isfinite(du)):
             raise fem.NewtonConvergenceError(f"singular system in iteration {iteration}")
         field[0].values[:] += du.reshape(field[0].values.shape)
