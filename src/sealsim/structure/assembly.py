@@ -39,7 +39,7 @@ import felupe as fem
 import numpy as np
 from scipy.sparse import csr_matrix
 
-__all__ = ["CompiledSolidBody", "SystemAssembly", "csr_pattern"]
+__all__ = ["CompiledSolidBody", "ContactRigidPlaneOnce", "SystemAssembly", "csr_pattern"]
 
 try:  # pragma: no cover - depends on the environment
     import numba
@@ -372,6 +372,32 @@ class CompiledSolidBody(fem.SolidBodyNearlyIncompressible):
         self.results.elasticity = None
         self.results.stiffness = K
         return K
+
+
+class ContactRigidPlaneOnce(fem.ContactRigidPlane):
+    """FElupe's rigid-plane contact that evaluates its trial state once per configuration.
+
+    FElupe evaluates the contact (gaps, penalty and friction return mapping) for the
+    residual and again for the tangent; here the tangent reuses the trial of the residual
+    when the gap vectors, the converged state variables and the multipliers are the same
+    objects/values -- the same trial FElupe would compute again.
+    """
+
+    _trial = None
+
+    def _evaluate(self, field=None):
+        if field is not None:
+            self.field = field
+        dx = self._gap_vectors()
+        cached = self._trial
+        if cached is not None and cached[1] is self.results.statevars \
+                and cached[2] is self._multipliers_statevars and cached[3] is self.multipliers \
+                and np.array_equal(cached[0], dx):
+            return cached[4]
+        trial = super()._evaluate()
+        self._trial = (dx, self.results.statevars, self._multipliers_statevars,
+                       self.multipliers, trial)
+        return trial
 
 
 class SystemAssembly:

@@ -21,7 +21,12 @@ import felupe as fem
 import numpy as np
 
 from sealsim.structure import material as material_module
-from sealsim.structure.assembly import HAVE_COMPILED_ASSEMBLY, CompiledSolidBody, SystemAssembly
+from sealsim.structure.assembly import (
+    HAVE_COMPILED_ASSEMBLY,
+    CompiledSolidBody,
+    ContactRigidPlaneOnce,
+    SystemAssembly,
+)
 from sealsim.structure.constraints import (
     AxialPositionConstraint,
     GarterSpring,
@@ -168,8 +173,9 @@ class SealModel:
         if elastic_slip is None:
             seal = assembly.seal
             elastic_slip = 1e-3 * getattr(seal, "contact_scale", seal.radial_extent)
+        contact = ContactRigidPlaneOnce if self.compiled else fem.ContactRigidPlane
         self.contacts = {
-            line.name: fem.ContactRigidPlane(
+            line.name: contact(
                 self.field, points=candidates, centerpoint=self.centerpoints[line.name],
                 normal=line.normal, multiplier=penalty, items=[self.solid],
                 friction=self.friction[line.name],
