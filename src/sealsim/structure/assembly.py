@@ -399,6 +399,22 @@ class ContactRigidPlaneOnce(fem.ContactRigidPlane):
                        self.multipliers, trial)
         return trial
 
+    def stiffness_entries(self):
+        """(rows, cols, values) of the stiffness of the points in contact and the centre
+        point (FElupe's contact matrix, global dofs) for the current configuration."""
+        trial = self._evaluate()
+        dof = self.field[0].indices.dof
+        points = dof[self.points[trial.contact]]  # (m, dim)
+        blocks = trial.stiffness  # (m, dim, dim)
+        center = np.broadcast_to(dof[self.centerpoint].ravel(), points.shape)
+        rows, cols, data = [], [], []
+        for row, col, sign in ((points, points, 1.0), (points, center, -1.0),
+                               (center, points, -1.0), (center, center, 1.0)):
+            rows.append(np.broadcast_to(row[:, :, None], blocks.shape).ravel())
+            cols.append(np.broadcast_to(col[:, None, :], blocks.shape).ravel())
+            data.append(sign * blocks.ravel())
+        return np.concatenate(rows), np.concatenate(cols), np.concatenate(data)
+
 
 class SystemAssembly:
     """Residual and free-dof tangent K11 of a model's items in one cached sparsity pattern.
@@ -438,17 +454,24 @@ class SystemAssembly:
         self._matrices: list = []
 
     def _positions(self, slot, K):
-        """(entries of the CSR matrix K in K11, their positions in K11's pattern) for
-        contribution number ``slot``; the pattern is extended by entries it lacks."""
+        """(entries of K in K11, their positions in K11's pattern) for contribution number
+        ``slot``, K a CSR matrix or (rows, cols, values); the pattern is extended by
+        entries it lacks. Cached while K's pattern repeats."""
+        if isinstance(K, tuple):
+            pattern = (K[0], K[1])
+        else:
+            pattern = (K.indices, K.indptr)
         cached = self._where.get(slot)
-        if cached is not None and cached[2] == self.patterns and (
-                cached[0] is K.indices or np.array_equal(cached[0], K.indices)) and \
-                np.array_equal(cached[1], K.indptr):
+        if cached is not None and cached[2] == self.patterns and \
+                all(a is b or np.array_equal(a, b) for a, b in zip(cached[0], pattern)):
             return cached[3]
-        n1 = len(self.dof1)
-        rows = self._free[np.repeat(np.arange(self.size), np.diff(K.indptr))]
-        cols = self._free[K.indices]
+        if isinstance(K, tuple):
+            rows, cols = self._free[K[0]], self._free[K[1]]
+        else:
+            rows = self._free[np.repeat(np.arange(self.size), np.diff(K.indptr))]
+            cols = self._free[K.indices]
         entries = np.flatnonzero((rows >= 0) & (cols >= 0))
+        n1 = len(self.dof1)
         keys = rows[entries] * n1 + cols[entries]
         pos = np.searchsorted(self.keys, keys)
         if len(keys) and (pos.max() >= len(self.keys)
@@ -456,8 +479,8 @@ class SystemAssembly:
             self._rebuild(np.union1d(self.keys, keys))
             pos = np.searchsorted(self.keys, keys)
         # the solid's pattern arrays never change: identity suffices (others are compared)
-        indices = K.indices if slot == 0 else K.indices.copy()
-        self._where[slot] = (indices, K.indptr.copy(), self.patterns, (entries, pos))
+        kept = pattern if slot == 0 else tuple(a.copy() for a in pattern)
+        self._where[slot] = (kept, None, self.patterns, (entries, pos))
         return entries, pos
 
     def _rebuild(self, keys):
@@ -471,8 +494,9 @@ class SystemAssembly:
                                shape=(n1, n1))
 
     def sum(self, contributions):
-        """(f, K11) of a list of (dense residual, CSR tangent) of all dofs, the first one
-        the solid's; K11 is overwritten by the next call."""
+        """(f, K11) of a list of (dense residual, tangent) of all dofs -- a tangent is a CSR
+        matrix or (rows, cols, values) --, the first one the solid's; K11 is overwritten by
+        the next call."""
         while True:  # again if a contribution extended the pattern
             patterns = self.patterns
             where = [self._positions(k, K) for k, (_, K) in enumerate(contributions)]
@@ -482,8 +506,10 @@ class SystemAssembly:
         data = np.zeros(len(self.keys))
         for (r, K), (entries, pos) in zip(contributions, where):
             f += r
-            # the entries of one CSR matrix are unique: a plain indexed add is exact
-            data[pos] += K.data[entries]
+            if isinstance(K, tuple):  # entries may repeat
+                np.add.at(data, pos, K[2][entries])
+            else:  # the entries of a CSR matrix are unique: a plain indexed add is exact
+                data[pos] += K.data[entries]
         self._K11.data = data
         self._matrices = [K for _, K in contributions]
         return f, self._K11
@@ -494,21 +520,28 @@ class SystemAssembly:
         x[self.dof0] = du0
         y = np.zeros(self.size)
         for K in self._matrices:
-            y += K @ x
+            if isinstance(K, tuple):
+                np.add.at(y, K[0], K[2] * x[K[1]])
+            else:
+                y += K @ x
         return y[self.dof1]
 
     def assemble(self, items, field):
         """(f, K11) of FElupe items, the first a :class:`CompiledSolidBody` (its dense
-        residual is used), the others with sparse residuals."""
+        residual is used), the others with sparse residuals; an item with a method
+        ``stiffness_entries()`` gives its tangent as (rows, cols, values)."""
         contributions = []
         for item in items:
             item.field.link(field)
             r = item.assemble.vector(field=item.field)
-            K = item.assemble.matrix()
+            entries = getattr(item, "stiffness_entries", None)
+            if entries is not None:  # (rows, cols, values): no sparse matrix to build
+                K = entries()
+            else:
+                K = item.assemble.matrix().tocsr()
             if isinstance(item, CompiledSolidBody):
                 r = item.force_vector
             else:
                 r = np.asarray(r.toarray()).ravel()
-                K = K.tocsr()
             contributions.append((r, K))
         return self.sum(contributions)
