@@ -257,7 +257,7 @@ class CompiledSolidBody(fem.SolidBodyNearlyIncompressible):
     Same constructor, state (``results.state``: u, p, J), checkpoints and results
     (``stress``, ``kinematics``, ``force``, ``stiffness``) as
     :class:`felupe.SolidBodyNearlyIncompressible`, for an axisymmetric or plane-strain field
-    of a quad or triangle region. :attr:`force_vector` is the dense residual of the last
+    on a region of one cell type (the seal meshes are quads). :attr:`force_vector` is the dense residual of the last
     assembly; :attr:`results.stiffness` keeps one CSR matrix whose data is overwritten.
     """
 
@@ -291,7 +291,6 @@ class CompiledSolidBody(fem.SolidBodyNearlyIncompressible):
         self._F = np.zeros((3, 3, nq, ncells))
         self._hv = np.zeros((nnodes, 2, ncells))
         self._v = np.zeros(ncells)
-        self._stress = np.zeros((3, 3, nq, ncells))
         self.force_vector = np.zeros(self._size)
         self._gradient_out = "out" in inspect.signature(umat.gradient).parameters
         hessian = inspect.signature(umat.hessian).parameters
@@ -462,9 +461,9 @@ class SystemAssembly:
         else:
             pattern = (K.indices, K.indptr)
         cached = self._where.get(slot)
-        if cached is not None and cached[2] == self.patterns and \
+        if cached is not None and cached[1] == self.patterns and \
                 all(a is b or np.array_equal(a, b) for a, b in zip(cached[0], pattern)):
-            return cached[3]
+            return cached[2]
         if isinstance(K, tuple):
             rows, cols = self._free[K[0]], self._free[K[1]]
         else:
@@ -480,7 +479,7 @@ class SystemAssembly:
             pos = np.searchsorted(self.keys, keys)
         # the solid's pattern arrays never change: identity suffices (others are compared)
         kept = pattern if slot == 0 else tuple(a.copy() for a in pattern)
-        self._where[slot] = (kept, None, self.patterns, (entries, pos))
+        self._where[slot] = (kept, self.patterns, (entries, pos))
         return entries, pos
 
     def _rebuild(self, keys):
