@@ -124,3 +124,23 @@ def test_compute_map_rejects_bad_input(case):
 
 def test_dataset_is_xarray(dataset):
     assert isinstance(dataset, xr.Dataset)
+
+
+def test_shared_installation_gives_the_paths_solved_from_the_start():
+    """A map process solves the installation once per squeeze and starts every path from a
+    copy of the installed model: the same results as paths that install themselves (to
+    1e-12: the linear solver's analysis is redone from another matrix, round-off only)."""
+    from sealsim.structure import mapping
+
+    data = validate_case(StructureCase, {
+        **CASE, "mesh": {"level": "coarse"},
+        "map": {**CASE["map"], "pressure": ["0 bar", "5 bar"]}}).model_dump(mode="json")
+    positions = np.linspace(-2e-3, 2e-3, 5)
+    installed: dict = {}
+    mapping._map_task(data, 0.15, 293.15, positions, installed)  # installs
+    shared = mapping._map_task(data, 0.15, 333.15, positions, installed)  # from the copy
+    own = mapping._map_task(data, 0.15, 333.15, positions, {})
+    assert len(installed) == 1 and shared["increments"] == own["increments"]
+    for key in ("F_N", "b", "contact_pressure"):
+        a, b = np.asarray(shared[key]), np.asarray(own[key])
+        assert np.abs(a - b).max() <= 1e-12 * np.abs(b).max()

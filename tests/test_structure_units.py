@@ -17,6 +17,7 @@ from sealsim.structure.loads import segment_moments, wetted_fractions
 from sealsim.structure.maps import HermiteGrid
 from sealsim.structure.material import (
     HAVE_COMPILED_TANGENT,
+    MooneyRivlinIsochoric,
     ViscoelasticMooneyRivlin,
     _mr_stress,
     _mr_tangent,
@@ -262,3 +263,48 @@ def test_case_validation_messages():
     bad = dict(base, load={"squeeze": [0.1], "temperature_rate": "fast"})
     with pytest.raises(InputError, match="temperature_rate"):
         validate_case(StructureCase, bad)
+
+
+@pytest.mark.parametrize("axisymmetric", [True, False])
+@pytest.mark.parametrize("viscoelastic", [False, True])
+def test_compiled_solid_body_equals_felupe(axisymmetric, viscoelastic):
+    """The compiled nearly incompressible solid (sealsim.structure.assembly) against FElupe's
+    SolidBodyNearlyIncompressible, the same formulation: residual, tangent, cell pressure and
+    stress for a deformed O-ring section, after a second evaluation and after a restore (the
+    state follows FElupe's linearised volume update). Tolerance 1e-10 of the largest entry:
+    round-off of a different summation order (measured ~1e-14)."""
+    import felupe as fem
+
+    from sealsim.structure.assembly import CompiledSolidBody
+
+    ring = ORing(4e-3, 20e-3)
+    a = SealAssembly(ring, Gland("rod", 20e-3, 5.4e-3))
+    mesh = mesh_oring(ring, a.centre, "coarse")
+    region = fem.RegionQuad(fem.Mesh(mesh.points, mesh.cells, "quad"))
+    kind = fem.FieldAxisymmetric if axisymmetric else fem.FieldPlaneStrain
+    umat = (ViscoelasticMooneyRivlin(0.4e6, 0.1e6, betas=[2.0, 0.5]) if viscoelastic
+            else MooneyRivlinIsochoric(0.8e6, 0.2e6))
+    solids = {}
+    for compiled in (False, True):
+        field = fem.FieldContainer([kind(region, dim=2)])
+        cls = CompiledSolidBody if compiled else fem.SolidBodyNearlyIncompressible
+        solids[compiled] = (cls(umat, field, bulk=5e8), field)
+    x = mesh.points
+    u1 = np.stack([0.02 * (x[:, 1] - x[:, 1].mean()), -0.05 * (x[:, 1] - x[:, 1].min())], 1)
+    u2 = u1 + 1e-5 * RNG.standard_normal(u1.shape)
+    out = {}
+    for compiled, (solid, field) in solids.items():
+        cp = solid.checkpoint()
+        res = []
+        for u in (u1, u2, None):
+            if u is None:
+                solid.restore(cp)
+                u = field[0].values
+            field[0].values[:] = u
+            f = np.asarray(solid.assemble.vector(field=field).toarray()).ravel()
+            K = solid.assemble.matrix().toarray()
+            res.append((f, K, solid.results.state.p.copy(), solid.results.stress[0].copy()))
+        out[compiled] = res
+    for ref, new in zip(out[False], out[True], strict=True):
+        for r, n in zip(ref, new, strict=True):
+            assert np.abs(n - r).max() <= 1e-10 * np.abs(r).max()

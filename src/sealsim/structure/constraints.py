@@ -176,13 +176,17 @@ class ScalarPenalty:
         self.results.force = vec
         return vec
 
-    def _matrix(self, field=None, **kwargs):
-        if field is not None:
-            self.field = field
+    def stiffness_entries(self):
+        """(rows, cols, values) of the stiffness Π''(c) g gᵀ (global dofs)."""
         _, d2 = self.derivatives(self.value())
         rows = np.repeat(self._dof, len(self._dof))
         cols = np.tile(self._dof, len(self._dof))
-        vals = d2 * np.outer(self._g, self._g).ravel()
+        return rows, cols, d2 * np.outer(self._g, self._g).ravel()
+
+    def _matrix(self, field=None, **kwargs):
+        if field is not None:
+            self.field = field
+        rows, cols, vals = self.stiffness_entries()
         mat = coo_matrix((vals, (rows, cols)), shape=(self._size, self._size)).tocsr()
         self.results.stiffness = mat
         return mat

@@ -225,6 +225,13 @@ class FluidPressure:
     def _matrix(self, field=None, **kwargs):
         if field is not None:
             self.field = field
+        rows, cols, vals = self.stiffness_entries()
+        mat = coo_matrix((vals, (rows, cols)), shape=(self._size, self._size)).tocsr()
+        self.results.stiffness = mat
+        return mat
+
+    def stiffness_entries(self):
+        """(rows, cols, values) of the follower-load stiffness (global dofs)."""
         nvec, c, dc = self._terms()
         p = self.pressure
         n = len(self.loop)
@@ -236,7 +243,4 @@ class FluidPressure:
                 follower = sign * c[a][:, None, None] * _ROT[None]
                 area = np.einsum("si,j->sij", nvec, ey) * dc[a, b][:, None, None]
                 K[:, a, :, b, :] = p * (follower + area)
-        vals = K.reshape(n, 16).ravel()
-        mat = coo_matrix((vals, (self._rows, self._cols)), shape=(self._size, self._size)).tocsr()
-        self.results.stiffness = mat
-        return mat
+        return self._rows, self._cols, K.reshape(n, 16).ravel()

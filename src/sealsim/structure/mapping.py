@@ -4,6 +4,9 @@ profile over pressure × temperature (× squeeze).
 :func:`compute_map` runs one FE load path per (squeeze, temperature) -- installation to the
 squeeze at the installation temperature, temperature change at the positioning pressure, then
 the pressure sweep over the grid, recording every grid pressure -- in a process pool. The
+installation is the same for every temperature of a squeeze: each process solves it once and
+starts each of its paths from a copy of the installed model (the same state, so the same
+results as a path solved from the start; tested). The
 material of a map is the *equilibrium* (fully relaxed) one: a thermo-viscoelastic case is
 mapped with its long-time hyperelastic constants. The dataset layout is described in
 :mod:`.maps` (which reads maps without importing the FE).
@@ -12,6 +15,8 @@ mapped with its long-time hyperelastic constants. The dataset layout is describe
 from __future__ import annotations
 
 import concurrent.futures as cf
+import copy
+import json
 import warnings
 from collections.abc import Callable
 
@@ -47,17 +52,43 @@ def profile_positions(case: StructureCase, assembly=None) -> np.ndarray:
     return np.linspace(-half, half, n)
 
 
+#: Installed model of the last (case, squeeze) of this process (a pool worker's; the
+#: in-process map keeps its own): the installation is solved once per squeeze and process.
+_INSTALLED: dict = {}
+
+
+def _installed_model(case: StructureCase, case_data: dict, squeeze: float | None,
+                     installed: dict):
+    """A copy of the model installed to ``squeeze`` at the installation temperature (solved
+    on first use and kept in ``installed``)."""
+    key = (json.dumps(case_data, sort_keys=True), squeeze)
+    if key not in installed:
+        spec, sv = case.map, case.solver
+        material = build_material(case, equilibrium=True)
+        # geometry checks for every temperature of the map: the model serves them all
+        model = build_model(case, squeeze, material=material,
+                            temperatures=[case.load.installation_temperature,
+                                          *spec.temperature])
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", category=UserWarning)
+            solve(model, [LoadStep("installation", squeeze=model.installation_squeeze,
+                                   increments=spec.squeeze_increments, record="none")],
+                  on_state=extract, tol=sv.tolerance, maxiter=sv.max_iterations,
+                  max_cutbacks=sv.max_cutbacks)
+        installed.clear()
+        installed[key] = model
+    return copy.deepcopy(installed[key])
+
+
 def _map_task(case_data: dict, squeeze: float | None, temperature: float,
-              positions: np.ndarray) -> dict:
-    """One FE load path: install to ``squeeze``, change to ``temperature``, sweep the pressures."""
+              positions: np.ndarray, installed: dict | None = None) -> dict:
+    """One FE load path: install to ``squeeze`` (or copy the installed model, see
+    :func:`_installed_model`), change to ``temperature``, sweep the pressures."""
     case = StructureCase.model_validate(case_data)
     spec = case.map
-    material = build_material(case, equilibrium=True)
-    model = build_model(case, squeeze, material=material,
-                        temperatures=[case.load.installation_temperature, temperature])
-    steps = [LoadStep("installation", squeeze=model.installation_squeeze,
-                      increments=spec.squeeze_increments, record="none"),
-             LoadStep("temperature", temperature=temperature,
+    model = _installed_model(case, case_data, squeeze,
+                             _INSTALLED if installed is None else installed)
+    steps = [LoadStep("temperature", temperature=temperature,
                       increments=spec.temperature_increments, record="none")]
     steps += [LoadStep("pressure", pressure=p, increments=spec.pressure_increments, record="end")
               for p in spec.pressure]
@@ -137,8 +168,9 @@ def compute_map(case: StructureCase, *, workers: int | None = None,
 
     done = 0
     if n_workers == 1:
+        installed: dict = {}
         for key in tasks:
-            store(key, _map_task(data, *key, positions))
+            store(key, _map_task(data, *key, positions, installed))
             done += 1
             if progress:
                 progress(done, len(tasks))

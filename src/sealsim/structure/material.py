@@ -263,8 +263,9 @@ def _mr_stress_points(F, c10, c01, out):
     return out
 
 
-def _mr_tangent_points(F, c10, c01, out):
-    """dP/dF (3, 3, 3, 3, n) for F (3, 3, n), point by point (see :func:`_mr_tangent`)."""
+def _mr_tangent_points(F, c10, c01, out, reduced=False):
+    """dP/dF (3, 3, 3, 3, n) for F (3, 3, n), point by point (see :func:`_mr_tangent`);
+    ``reduced``: only the components :func:`mr_tangent` names, the others set to zero."""
     Fp = np.empty((3, 3))
     C = np.empty((3, 3))
     b = np.empty((3, 3))
@@ -281,8 +282,13 @@ def _mr_tangent_points(F, c10, c01, out):
         for i in range(3):
             for j in range(3):
                 B2ij = 2.0 * (I1 * Fp[i, j] - FC[i, j])
+                need_ij = (i < 2 and j < 2) or (i == 2 and j == 2)
                 for k in range(3):
                     for l in range(3):  # noqa: E741 - index names of the formula
+                        if reduced and not (need_ij and ((k < 2 and l < 2)
+                                                         or (k == 2 and l == 2))):
+                            out[i, j, k, l, q] = 0.0
+                            continue
                         dik = 1.0 if i == k else 0.0
                         djl = 1.0 if j == l else 0.0
                         ii = dik * djl
@@ -338,14 +344,20 @@ def mr_stress(F, c10, c01, compiled=None, out=None):
     return _mr_stress_points(flat, float(c10), float(c01), res).reshape(3, 3, *shape)
 
 
-def mr_tangent(F, c10, c01, compiled=None, out=None):
-    """dP/dF (3, 3, 3, 3, ...) of the isochoric Mooney–Rivlin energy (see :func:`mr_stress`)."""
+def mr_tangent(F, c10, c01, compiled=None, out=None, reduced=False):
+    """dP/dF (3, 3, 3, 3, ...) of the isochoric Mooney–Rivlin energy (see :func:`mr_stress`).
+
+    ``reduced`` (compiled kernel only): just the 25 components A_ijkl with ij and kl in
+    {11, 12, 21, 22, 33} -- those that meet a non-zero δF of an axisymmetric or plane-strain
+    field (F block-diagonal) -- the others are set to zero; about 3× faster.
+    """
     if not (USE_COMPILED if compiled is None else compiled):
         return _mr_tangent(F, c10, c01)
     shape = F.shape[2:]
     flat = np.ascontiguousarray(F, dtype=float).reshape(3, 3, -1)
     res = _flat_out(out if len(shape) == 2 else None, (3, 3, 3, 3, flat.shape[2]))
-    return _mr_tangent_points(flat, float(c10), float(c01), res).reshape(3, 3, 3, 3, *shape)
+    return _mr_tangent_points(flat, float(c10), float(c01), res,
+                              bool(reduced)).reshape(3, 3, 3, 3, *shape)
 
 
 class MooneyRivlinIsochoric:
@@ -379,8 +391,8 @@ class MooneyRivlinIsochoric:
         F, statevars = x[0], x[-1]
         return [mr_stress(F, self.c10, self.c01, self.compiled, out), statevars]
 
-    def hessian(self, x, out=None):
-        return [mr_tangent(x[0], self.c10, self.c01, self.compiled, out)]
+    def hessian(self, x, out=None, reduced=False):
+        return [mr_tangent(x[0], self.c10, self.c01, self.compiled, out, reduced)]
 
 
 class ViscoelasticMooneyRivlin:

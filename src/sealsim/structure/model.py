@@ -20,6 +20,13 @@ from dataclasses import dataclass
 import felupe as fem
 import numpy as np
 
+from sealsim.structure import material as material_module
+from sealsim.structure.assembly import (
+    HAVE_COMPILED_ASSEMBLY,
+    CompiledSolidBody,
+    ContactRigidPlaneOnce,
+    SystemAssembly,
+)
 from sealsim.structure.constraints import (
     AxialPositionConstraint,
     GarterSpring,
@@ -106,6 +113,11 @@ class SealModel:
         stick/slip state of nodes entering contact chatters between Newton iterations.
     spring : GarterSpringSpec, optional
         Garter spring on the mesh's ``"spring"`` node set (radial lip seals).
+    compiled : bool, optional
+        Assemble with the compiled solid body and the cached system pattern
+        (:mod:`.assembly`) or with FElupe's own assembly, the reference (default
+        :data:`sealsim.structure.material.USE_COMPILED`, i.e. compiled when numba is
+        installed).
     """
 
     def __init__(self, assembly: SealAssembly, mesh: SealMesh, material, *,
@@ -113,7 +125,8 @@ class SealModel:
                  penalty: float = 1.0,
                  positioning_pressure: float = DEFAULT_POSITIONING_PRESSURE,
                  rolling_stiffness: float = 10.0, friction: float | dict | None = None,
-                 elastic_slip: float | None = None, spring: GarterSpringSpec | None = None):
+                 elastic_slip: float | None = None, spring: GarterSpringSpec | None = None,
+                 compiled: bool | None = None):
         self.assembly = assembly
         self.seal_mesh = mesh
         self.material = material
@@ -140,8 +153,11 @@ class SealModel:
         else:
             self.displacement = fem.FieldPlaneStrain(self.region, dim=2)
         self.field = fem.FieldContainer([self.displacement])
-        self.solid = fem.SolidBodyNearlyIncompressible(
-            material.umat, self.field, bulk=material.bulk(t0))
+        if compiled is None:
+            compiled = material_module.USE_COMPILED
+        self.compiled = bool(compiled) and HAVE_COMPILED_ASSEMBLY
+        solid = CompiledSolidBody if self.compiled else fem.SolidBodyNearlyIncompressible
+        self.solid = solid(material.umat, self.field, bulk=material.bulk(t0))
         self.V0 = self.solid.V.copy()
         self.loop = np.asarray(mesh.boundary)
         bonded = mesh.node_sets.get("bonded", np.array([], dtype=int))
@@ -159,8 +175,9 @@ class SealModel:
         if elastic_slip is None:
             seal = assembly.seal
             elastic_slip = 1e-3 * getattr(seal, "contact_scale", seal.radial_extent)
+        contact = ContactRigidPlaneOnce if self.compiled else fem.ContactRigidPlane
         self.contacts = {
-            line.name: fem.ContactRigidPlane(
+            line.name: contact(
                 self.field, points=candidates, centerpoint=self.centerpoints[line.name],
                 normal=line.normal, multiplier=penalty, items=[self.solid],
                 friction=self.friction[line.name],
@@ -202,6 +219,8 @@ class SealModel:
         dof0 += [2 * p + c for p in self.bonded for c in (0, 1)]
         self.dof0 = np.array(sorted(dof0))
         self.dof1 = np.setdiff1d(np.arange(2 * self.mesh.npoints), self.dof0)
+        self.system = (SystemAssembly(2 * self.mesh.npoints, self.dof1, self.dof0)
+                       if self.compiled else None)
         self._line_origin = {line.name: np.array(line.point) for line in lines}
         self.state = LoadState(0.0, 0.0, t0, 0.0)
         self.force_scale = self._force_scale()

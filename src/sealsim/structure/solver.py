@@ -23,8 +23,10 @@ increment, Newton iterations, cutbacks before it).
 from __future__ import annotations
 
 import functools
+import glob
 import hashlib
 import os
+import sys
 import warnings
 from collections import OrderedDict
 from collections.abc import Callable
@@ -95,14 +97,19 @@ class LoadStep:
 class LinearSolver:
     """Direct solver of the Newton systems K du = r, reusing work per sparsity pattern.
 
-    Only a few sparsity patterns occur along a load path (the contact items assemble all loop
-    nodes), so PARDISO's analysis phase (METIS nested-dissection ordering and symbolic
+    Only one or two sparsity patterns occur along a load path, so PARDISO's analysis phase (METIS nested-dissection ordering and symbolic
     factorisation) runs once per pattern and each Newton iteration runs the numerical
     factorisation and solve only (phase 23, single-threaded: deterministic and no
-    oversubscription of the map worker processes). SuperLU (scipy) is used without PARDISO:
-    minimum-degree ordering of A + Aᵀ with symmetric-mode diagonal pivoting (threshold 0.1), about
-    3× faster than ``spsolve``'s default COLAMD ordering on these matrices; scipy cannot keep a
-    SuperLU symbolic factorisation, and re-using the ordering alone gained nothing (measured).
+    oversubscription of the map worker processes). PARDISO runs with MKL's defaults for
+    non-symmetric matrices (METIS ordering, scaling, weighted matching, pivot perturbation
+    1e-13) except that iterative refinement runs only when pivots were perturbed (pypardiso's
+    implicit defaults refine twice in every solve: 15 % of the time, the same solution to
+    1e-12). A matrix with the pattern arrays of the previous call (the
+    :class:`~.assembly.SystemAssembly` keeps them) skips hashing its pattern. SuperLU (scipy)
+    is used without PARDISO: minimum-degree ordering of A + Aᵀ with symmetric-mode diagonal
+    pivoting (threshold 0.1), about 3× faster than ``spsolve``'s default COLAMD ordering on
+    these matrices; scipy cannot keep a SuperLU symbolic factorisation, and re-using the
+    ordering alone gained nothing (measured).
 
     Parameters
     ----------
@@ -129,6 +136,7 @@ class LinearSolver:
         self.backend = backend
         self.max_patterns = int(max_patterns)
         self._pardiso: OrderedDict = OrderedDict()
+        self._last = (None, None, None)  # (indptr, indices, key) of the last PARDISO call
         self.analyses = 0  # symbolic analyses run (PARDISO)
 
     def __call__(self, A, b):
@@ -146,14 +154,21 @@ class LinearSolver:
         if not A.has_sorted_indices:
             A.sort_indices()
         A = A.astype(float, copy=False)
-        key = (A.shape[0], hashlib.sha1(A.indptr).hexdigest(),
-               hashlib.sha1(A.indices).hexdigest())
+        indptr, indices, key = self._last
+        if A.indptr is not indptr or A.indices is not indices:
+            key = (A.shape[0], hashlib.sha1(A.indptr).hexdigest(),
+                   hashlib.sha1(A.indices).hexdigest())
+            self._last = (A.indptr, A.indices, key)
         solver = self._pardiso.get(key)
         pypardiso = _pypardiso()
         try:
             if solver is None:
                 solver = pypardiso.PyPardisoSolver(mtype=11)  # real, non-symmetric
                 solver.libmkl.MKL_Set_Num_Threads(1)
+                # iparm (1-based): own values, METIS, pivot perturbation 1e-13, scaling,
+                # weighted matching; iparm 8 = 0: refinement only after perturbed pivots
+                for number, value in ((1, 1), (2, 2), (10, 13), (11, 1), (13, 1)):
+                    solver.set_iparm(number, value)
                 solver._check_A(A)
                 solver.set_phase(11)  # analysis: ordering + symbolic factorisation
                 solver._call_pardiso(A, np.zeros((A.shape[0], 1)))
@@ -163,10 +178,11 @@ class LinearSolver:
                     self._pardiso.popitem(last=False)[1].free_memory(everything=True)
             else:
                 self._pardiso.move_to_end(key)
-            solver.set_phase(23)  # numerical factorisation + solve (+ iterative refinement)
+            solver.set_phase(23)  # numerical factorisation + solve
             return solver._call_pardiso(A, np.asfortranarray(b.reshape(-1, 1))).ravel()
         except pypardiso.PyPardisoError as exc:  # singular matrix: the caller cuts back
             self._pardiso.pop(key, None)
+            self._last = (None, None, None)
             raise np.linalg.LinAlgError(f"PARDISO error {exc.value}") from None
 
     def release(self) -> None:
@@ -177,11 +193,24 @@ class LinearSolver:
 
 @functools.lru_cache(maxsize=1)
 def _pypardiso():
-    """The pypardiso module, or None (imported on first use: it loads Intel MKL)."""
+    """The pypardiso module, or None (imported on first use: it loads Intel MKL).
+
+    Every ``PyPardisoSolver`` (one per sparsity pattern and load path, and one at import)
+    looks for MKL's runtime library with ``ctypes.util.find_library`` and then a recursive
+    search of ``sys.prefix`` (about 0.2 s each) unless ``PYPARDISO_MKL_RT`` names it: it is
+    set here (inherited by map worker processes) from a direct look into ``sys.prefix``.
+    """
+    if "PYPARDISO_MKL_RT" not in os.environ:
+        found = [path for pattern in ("lib/libmkl_rt.so*", "lib/libmkl_rt*.dylib",
+                                      "Library/bin/mkl_rt*.dll")
+                 for path in glob.glob(os.path.join(sys.prefix, pattern))]
+        if found:
+            os.environ["PYPARDISO_MKL_RT"] = min(found, key=len)
     try:
         import pypardiso
     except (ImportError, OSError):  # not installed, or the MKL library is missing
         return None
+    os.environ.setdefault("PYPARDISO_MKL_RT", pypardiso.ps.libmkl._name)
     return pypardiso
 
 
@@ -205,6 +234,17 @@ def _assemble(model: SealModel):
     return np.asarray(f.toarray()).ravel(), K.tocsr()
 
 
+def _solve_partitioned(field, K11, system, f, ext0, linear):
+    """Newton correction of the partitioned system (as :func:`felupe.solve.solve`):
+    K11 du1 = -r1 - K10 (ext0 - u0), du0 = ext0 - u0."""
+    u = field[0].values
+    du0 = ext0 - u.ravel()[system.dof0]
+    du = np.empty(u.size)
+    du[system.dof1] = linear(K11, -f[system.dof1] - system.coupling(du0))
+    du[system.dof0] = du0
+    return du.reshape(u.shape)
+
+
 def _newton(model: SealModel, ext0, tol: float, maxiter: int, update_wetting: bool,
             linear: LinearSolver) -> int:
     """Newton–Raphson iterations with FElupe's partitioned solver.
@@ -226,7 +266,10 @@ def _newton(model: SealModel, ext0, tol: float, maxiter: int, update_wetting: bo
             # that a flickering edge node cannot keep Newton from converging
             frozen = model.update_wetting() <= wet_tol or iteration >= 8
         with np.errstate(all="ignore"):
-            f, K = _assemble(model)
+            if model.system is not None:
+                f, K11 = model.system.assemble(model.items, field)
+            else:
+                f, K = _assemble(model)
         if not np.all(np.isfinite(f)):
             raise fem.NewtonConvergenceError(f"non-finite residual in iteration {iteration}")
         if iteration > 0:
@@ -235,10 +278,13 @@ def _newton(model: SealModel, ext0, tol: float, maxiter: int, update_wetting: bo
                 for item in model.items:
                     item.results.update_statevars()
                 return iteration
-        system = fem.solve.partition(field, K, model.dof1, model.dof0, f)
         with np.errstate(all="ignore"), warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            du = fem.solve.solve(*system, ext0, solver=linear)
+            if model.system is not None:
+                du = _solve_partitioned(field, K11, model.system, f, ext0, linear)
+            else:
+                system = fem.solve.partition(field, K, model.dof1, model.dof0, f)
+                du = fem.solve.solve(*system, ext0, solver=linear)
         if not np.all(np.isfinite(du)):
             raise fem.NewtonConvergenceError(f"singular system in iteration {iteration}")
         field[0].values[:] += du.reshape(field[0].values.shape)
