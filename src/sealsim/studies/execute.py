@@ -4,9 +4,9 @@
 one record per run.  A record is a plain dict (``index``, ``status`` "ok" or "failed",
 ``error``, ``summary``: every number of the model's summary as ``{"a.b": value}``, ``series``,
 ``notes``, ``wall_s``, ``worker``, ``first_in_process``: the first run of its process, whose
-time includes the imports and numba compilations every later run reuses); an exception inside a run -- invalid input for this
-combination of factors, a solver that does not converge -- becomes a failed record, so one bad
-run never stops a study.
+time includes the imports and numba compilations every later run reuses); an exception
+inside a run -- invalid input for this combination of factors, a solver that does not
+converge -- becomes a failed record, so one bad run never stops a study.
 
 Runs are computed with one BLAS thread (:func:`one_blas_thread`), as on Dask workers: OpenBLAS
 rounds differently with several threads, and a study must give the same numbers in this process
