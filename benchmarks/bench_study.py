@@ -1,46 +1,48 @@
-"""Benchmark of the study engine: 40 pneumatic cylinder cycles, serially in this process and on
-a 2-worker Dask LocalCluster, in the same run.
+"""Benchmark of the study engine: the issue's two studies, serially in this process and on a
+2-worker Dask LocalCluster, in the same run.
 
-The study: the Ø32 cylinder of examples/pneumatic/cylinder_32.toml (variant T25C, Θ-law seals
-with analytic contact maps), one extend/retract cycle of 2 s, 40 Latin-hypercube samples of
-load force and supply pressure; a run takes about 16 ms on an idle core, so the whole study is
-about 0.6 s of work -- short enough that starting a cluster costs more than the study.  Hence
-two comparisons:
+* ``rotary``: 200 steady operating points of the 80 mm lip seal of
+  examples/rotary/sump_volume.toml (``rotary_steady``; Latin hypercube over speed 250-1500 rpm
+  and ambient 20-40 °C, the contact below NBR's limit), a run about 25 ms: about 5 s of
+  work.
+* ``pneumatic``: 40 extend/retract cycles of 2 s of the Ø32 cylinder of
+  examples/pneumatic/cylinder_32.toml (variant T25C, Θ-law seals with analytic contact maps;
+  Latin hypercube over load force and supply pressure), a run about 16 ms: 0.6 s of work, less
+  than starting a cluster.
+
+For each, two comparisons:
 
 * **steady state** (the targets): the study's computing phase
   (:func:`sealsim.studies.study.compute_runs`: work folder, runs, storing each run as it
-  finishes) serially in this process
-  (``workers=0``) against a running, warmed-up 2-worker LocalCluster (``client=``).  Serial
-  and Dask alternate, :data:`REPEATS` times each; the best of each is compared (other
-  processes on the machine slow either one at random) and the median is printed too.
-  Writing the figures is the same for both and not timed.
+  finishes) serially in this process (``workers=0``) against a running, warmed-up 2-worker
+  LocalCluster (``client=``).  Serial and Dask alternate, ``--repeats`` times each; the best
+  of each is compared (other processes on the machine slow either one at random), the median
+  is printed too.  Writing the figures is the same for both and not timed.
 * **with start-up**: ``sealsim study run STUDY --workers 0`` and ``--workers 2`` end to end in
-  fresh processes (imports, the numba compilation of each process, the cluster start, every
-  file and figure): what a user waits for.
-
-What a cluster costs besides: the LocalCluster start and the workers' set-up (first run in
-each worker process: imports and loading the numba-compiled right-hand side), paid once.
+  fresh processes (imports, numba, the cluster start and the workers' set-up, every file and
+  figure): what a user waits for.  The one-off costs are printed apart: the LocalCluster start
+  and the workers' set-up (first run in each worker process: imports, numba), paid once.
 
 Definitions (W = 2 workers, N = runs):
 
     speed-up            serial_s / dask_s                                  (target >= 1.7)
     overhead_fraction   (W * dask_s - serial_s) / serial_s                 (target <= 0.05)
-                        = wall time per run the workers do not spend on the serial work,
-                        (W * dask_s - serial_s) / N, as a fraction of a serial run, serial_s / N
-    cpu_overhead        (CPU s of this process + the workers during the Dask study - CPU s of
-                        the serial study) / CPU s of the serial study: the extra work of Dask
-                        (scheduler, client, worker bookkeeping, transfers); unlike the wall
-                        times it hardly depends on what else runs on the machine
-    ceiling_speedup     the same runs split into W halves on W plain worker processes (no
-                        Dask, nothing stored) against one: what the machine allows
+                        = worker time per run not spent on the serial work, (W * dask_s -
+                        serial_s) / N, as a fraction of a serial run, serial_s / N
+    cpu_overhead        (CPU s of this process and the workers during the Dask study - CPU s
+                        of the serial study) / CPU s of the serial study: the extra work of
+                        Dask (scheduler, client, workers' bookkeeping, transfers); unlike the
+                        wall times it hardly depends on what else runs on the machine
+    ceiling_speedup     the same runs as W halves in W plain processes (no Dask, nothing
+                        stored) against one process: what the machine gives right now
 
-Run on an idle machine (the load average is printed; with other processes on the cores the
-wall-clock speed-up is lower than the hardware allows, the CPU overhead is not)::
+Run it on an idle machine: the load average is printed; other processes on the cores lower
+the wall-clock speed-up (and the ceiling with it), hardly the CPU overhead::
 
-    .venv/bin/python benchmarks/bench_study.py [--runs 40] [--repeats 3]
+    .venv/bin/python benchmarks/bench_study.py [--study rotary|pneumatic|both] [--repeats 3]
 
-The last line is one JSON object with serial_s, dask_s, speedup, runs, overhead_fraction and
-the other numbers above.
+The last line is one JSON object: serial_s, dask_s, speedup, runs, overhead_fraction and the
+other numbers above of the rotary study, the same for the pneumatic study under "pneumatic".
 """
 
 from __future__ import annotations
@@ -58,18 +60,45 @@ import time
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[1]
-RUNS = 40
 WORKERS = 2
 REPEATS = 3
 
-STUDY = """
-title = "benchmark: {runs} cycles of the Ø32 cylinder"
+STUDIES = {
+    "rotary": (200, """
+title = "benchmark: 200 steady points of the 80 mm lip seal"
+[study]
+model = "rotary_steady"
+case = "{examples}/rotary/sump_volume.toml"
+variant = "sump_0.2L"
+design = "latin_hypercube"
+samples = 200
+seed = 1
+[set]
+"duty.steps" = [{{ speed = "1000 rpm", duration = "60 min" }}]
+[[factors]]
+name = "speed"
+path = "duty.steps.0.speed"
+distribution = "uniform"
+lower = "250 rpm"
+upper = "1500 rpm"
+[[factors]]
+name = "ambient"
+path = "environment.ambient_temperature"
+distribution = "uniform"
+lower = "20 degC"
+upper = "40 degC"
+[outputs]
+torque = "torque_Nm"
+T_contact = "T_contact_C"
+"""),
+    "pneumatic": (40, """
+title = "benchmark: 40 cycles of the Ø32 cylinder"
 [study]
 model = "pneumatic"
-case = "{case}"
+case = "{examples}/pneumatic/cylinder_32.toml"
 variant = "T25C"
 design = "latin_hypercube"
-samples = {runs}
+samples = 40
 seed = 1
 [set]
 "controller.duration" = "2 s"
@@ -88,7 +117,8 @@ upper = "7 bar"
 [outputs]
 extend_time = "extend_time_s"
 friction = "mean_friction_N"
-"""
+"""),
+}
 
 
 def _template(study):
@@ -108,8 +138,8 @@ def warm_up(path: str) -> float:
     return time.perf_counter() - t0
 
 
-def run_half(path: str, part: int, parts: int) -> float:
-    """Every ``parts``-th run of the study from ``part`` in this process; wall time [s]."""
+def run_part(path: str, part: int, parts: int) -> float:
+    """Every ``parts``-th run of the study from ``part`` on, in this process; wall time [s]."""
     from sealsim.studies import load_study
     from sealsim.studies.execute import execute_batch
 
@@ -123,16 +153,12 @@ def run_half(path: str, part: int, parts: int) -> float:
 def _cpu_s(pids) -> float:
     import psutil
 
-    total = 0.0
-    for pid in pids:
-        times = psutil.Process(pid).cpu_times()
-        total += times.user + times.system
-    return total
+    return sum(sum(psutil.Process(pid).cpu_times()[:2]) for pid in pids)
 
 
 def _computing_phase(study, work: Path, pids, **kwargs) -> tuple[float, float, list, dict]:
-    """The study's computing phase (work folder, runs, storing each run as it finishes, as
-    in ``sealsim study run``): wall time [s], CPU s of ``pids``, records, info."""
+    """The study's computing phase (as in ``sealsim study run``): wall time [s], CPU s of
+    ``pids``, records, info."""
     from sealsim.studies.store import WorkFolder
     from sealsim.studies.study import compute_runs
 
@@ -149,52 +175,45 @@ def _cli(path: Path, out: Path, workers: int) -> float:
     return time.perf_counter() - t0
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--runs", type=int, default=RUNS)
-    parser.add_argument("--repeats", type=int, default=REPEATS)
-    args = parser.parse_args()
-    runs, repeats = args.runs, args.repeats
-
+def bench(name: str, folder: Path, repeats: int) -> dict:
+    """Every measurement of one study; prints them, returns the JSON numbers."""
     import dask
     from distributed import Client, LocalCluster
 
     from sealsim.studies import load_study
+    from sealsim.studies.engine import local_cluster_config
     from sealsim.studies.study import analyse
 
-    load_before = os.getloadavg()
-    folder = Path(tempfile.mkdtemp(prefix="sealsim-bench-study-"))
-    path = folder / "bench.toml"
-    path.write_text(STUDY.format(runs=runs, case=ROOT / "examples" / "pneumatic" /
-                                 "cylinder_32.toml"))
+    runs, text = STUDIES[name]
+    path = folder / f"{name}.toml"
+    path.write_text(text.format(examples=(ROOT / "examples").as_posix()))
     study = load_study(path)
+    load_before = os.getloadavg()
 
-    # with start-up: the CLI end to end, serial and on a fresh 2-worker LocalCluster
-    cli = {"serial": [], "dask": []}
+    cli = {"serial": [], "dask": []}               # with start-up: the CLI end to end
     for k in range(2):
-        cli["serial"].append(_cli(path, folder / f"cli_serial{k}", 0))
-        cli["dask"].append(_cli(path, folder / f"cli_dask{k}", WORKERS))
+        cli["serial"].append(_cli(path, folder / f"{name}_cli_serial{k}", 0))
+        cli["dask"].append(_cli(path, folder / f"{name}_cli_dask{k}", WORKERS))
 
     serial_setup_s = warm_up(str(path))
     t0 = time.perf_counter()
-    # as sealsim.studies.engine starts its LocalCluster (no statistical profiler)
-    with dask.config.set({"distributed.worker.profile.enabled": False}):
+    with dask.config.set(local_cluster_config()):      # as the study engine starts one
         cluster = LocalCluster(n_workers=WORKERS, threads_per_worker=1, processes=True,
                                dashboard_address=":0", silence_logs=40)
     client = Client(cluster)
     start_s = time.perf_counter() - t0
-    setup = client.run(warm_up, str(path))
-    worker_pids = list(client.run(os.getpid).values())
-    me = [os.getpid()]
+    setup_s = max(client.run(warm_up, str(path)).values())
+    pids = {"serial": [os.getpid()],
+            "dask": [os.getpid(), *client.run(os.getpid).values()]}
+    engines = {"serial": {"workers": 0}, "dask": {"client": client}}
     times: dict = {"serial": [], "dask": []}
     cpu: dict = {"serial": [], "dask": []}
     results = {}
     try:
         for k in range(repeats):
-            for kind, kwargs, pids in (("serial", {"workers": 0}, me),
-                                       ("dask", {"client": client}, me + worker_pids)):
-                wall, used, records, info = _computing_phase(study, folder / f"{kind}{k}",
-                                                             pids, **kwargs)
+            for kind in ("serial", "dask"):
+                wall, used, records, info = _computing_phase(
+                    study, folder / f"{name}_{kind}{k}", pids[kind], **engines[kind])
                 results[kind] = analyse(study, records, {**info, "wall_time_s": wall})
                 times[kind].append(wall)
                 cpu[kind].append(used)
@@ -202,67 +221,71 @@ def main() -> None:
         cluster.close()
         client.close()
 
-    # the machine's ceiling: the same runs in W plain processes, no Dask
-    ceiling = []
+    ceiling = []                                   # the same runs in W plain processes
     with concurrent.futures.ProcessPoolExecutor(
             WORKERS, mp_context=multiprocessing.get_context("spawn")) as pool:
         list(pool.map(warm_up, [str(path)] * WORKERS))
         for _ in range(repeats):
-            one = run_half(str(path), 0, 1)
+            one = run_part(str(path), 0, 1)
             t0 = time.perf_counter()
-            list(pool.map(run_half, [str(path)] * WORKERS, range(WORKERS),
-                          [WORKERS] * WORKERS))
+            list(pool.map(run_part, [str(path)] * WORKERS, range(WORKERS), [WORKERS] * WORKERS))
             ceiling.append(one / (time.perf_counter() - t0))
+    load_after = os.getloadavg()
 
     serial_s, dask_s = min(times["serial"]), min(times["dask"])
     serial_cpu, dask_cpu = min(cpu["serial"]), min(cpu["dask"])
     speedup = serial_s / dask_s
     overhead = (WORKERS * dask_s - serial_s) / serial_s
     cpu_overhead = (dask_cpu - serial_cpu) / serial_cpu
-    serial_run = serial_s / runs
-    dataset = {kind: result.dataset for kind, result in results.items()}
-    identical = all((dataset["serial"][o.name].values == dataset["dask"][o.name].values).all()
-                    for o in study.outputs)
-    median_run = float(dataset["serial"]["wall_time_s"].median())
+    data = {kind: result.dataset for kind, result in results.items()}
+    identical = all(data["serial"][o.name].equals(data["dask"][o.name]) for o in study.outputs)
+    failed = int((~data["dask"]["status"].values.astype(bool)).sum())
+    median_run = float(data["serial"]["wall_time_s"].median())
     cli_serial, cli_dask = min(cli["serial"]), min(cli["dask"])
-    load_after = os.getloadavg()
-    setup_s = max(setup.values())
 
-    print(f"machine: {os.cpu_count()} cores; load average (1, 5, 15 min) before "
-          f"{load_before[0]:.2f} {load_before[1]:.2f} {load_before[2]:.2f}, after "
-          f"{load_after[0]:.2f} {load_after[1]:.2f} {load_after[2]:.2f} (other processes on "
-          "the cores lower the wall-clock numbers)")
-    print(f"study: {runs} pneumatic cycles, median run {median_run * 1e3:.1f} ms "
-          f"(serial, in this process)")
-    print("with start-up, 'sealsim study run' end to end in a fresh process (best of 2): "
-          f"serial {cli_serial:.2f} s, 2-worker LocalCluster {cli_dask:.2f} s "
-          f"(speed-up {cli_serial / cli_dask:.2f})")
-    print(f"one-off costs: first run in this process (imports, numba) {serial_setup_s:.2f} s; "
-          f"LocalCluster start {start_s:.2f} s, then worker set-up (first run in each worker "
-          f"process, in parallel) {setup_s:.2f} s")
-    print(f"steady state, computing phase, best (median) of {repeats} alternating repeats:")
-    print(f"  serial in this process: {serial_s:.3f} s ({statistics.median(times['serial']):.3f}"
-          f" s) = {serial_run * 1e3:.1f} ms per run, CPU {serial_cpu:.3f} s")
-    print(f"  running 2-worker LocalCluster: {dask_s:.3f} s "
-          f"({statistics.median(times['dask']):.3f} s), CPU (client + scheduler + workers) "
+    print(f"== {study.title}: {runs} runs, median run {median_run * 1e3:.1f} ms in this "
+          f"process; load average before {load_before[0]:.2f}, after {load_after[0]:.2f}")
+    print(f"with start-up, 'sealsim study run' end to end in a fresh process (best of 2): "
+          f"serial {cli_serial:.2f} s, 2-worker LocalCluster {cli_dask:.2f} s (speed-up "
+          f"{cli_serial / cli_dask:.2f}); one-off costs: first run in this process (imports, "
+          f"numba) {serial_setup_s:.2f} s, LocalCluster start {start_s:.2f} s, worker set-up "
+          f"(first run in each worker process, in parallel) {setup_s:.2f} s")
+    print(f"steady state, computing phase, best (median) of {repeats} alternating repeats: "
+          f"serial {serial_s:.3f} s ({statistics.median(times['serial']):.3f} s), "
+          f"CPU {serial_cpu:.3f} s; running 2-worker LocalCluster {dask_s:.3f} s "
+          f"({statistics.median(times['dask']):.3f} s), CPU (client, scheduler, workers) "
           f"{dask_cpu:.3f} s")
-    print(f"  speed-up {speedup:.2f} (target >= 1.7); plain processes without Dask reach "
-          f"{max(ceiling):.2f} on this machine now")
-    print(f"  overhead per run (W*dask_s - serial_s)/N = "
-          f"{(WORKERS * dask_s - serial_s) / runs * 1e3:.2f} ms = {100 * overhead:.1f} % of a "
-          f"serial run (target <= 5 %); extra CPU {100 * cpu_overhead:.1f} %")
-    print(f"  identical results serial and Dask: {identical}")
-    print(json.dumps({
-        "serial_s": round(serial_s, 4), "dask_s": round(dask_s, 4),
-        "speedup": round(speedup, 3), "runs": runs, "workers": WORKERS,
-        "overhead_fraction": round(overhead, 4), "cpu_overhead_fraction": round(cpu_overhead, 4),
-        "ceiling_speedup": round(max(ceiling), 3), "median_run_s": round(median_run, 4),
-        "serial_median_s": round(statistics.median(times["serial"]), 4),
-        "dask_median_s": round(statistics.median(times["dask"]), 4),
-        "cli_serial_s": round(cli_serial, 2), "cli_dask_s": round(cli_dask, 2),
-        "cluster_start_s": round(start_s, 2), "worker_setup_s": round(setup_s, 2),
-        "serial_setup_s": round(serial_setup_s, 2), "identical": bool(identical),
-        "load_average": [round(x, 2) for x in load_before + load_after]}))
+    print(f"speed-up {speedup:.2f} (target >= 1.7; W plain processes reach {max(ceiling):.2f} "
+          f"on this machine now); overhead (W*dask_s - serial_s)/N = "
+          f"{(WORKERS * dask_s - serial_s) / runs * 1e3:.2f} ms per run = {100 * overhead:.1f} % "
+          f"of a serial run (target <= 5 %); extra CPU {100 * cpu_overhead:.1f} %; identical "
+          f"results: {identical}; failed runs: {failed}")
+    return {"serial_s": round(serial_s, 4), "dask_s": round(dask_s, 4),
+            "speedup": round(speedup, 3), "runs": runs, "workers": WORKERS,
+            "overhead_fraction": round(overhead, 4),
+            "cpu_overhead_fraction": round(cpu_overhead, 4),
+            "ceiling_speedup": round(max(ceiling), 3), "median_run_s": round(median_run, 4),
+            "serial_median_s": round(statistics.median(times["serial"]), 4),
+            "dask_median_s": round(statistics.median(times["dask"]), 4),
+            "cli_serial_s": round(cli_serial, 2), "cli_dask_s": round(cli_dask, 2),
+            "cluster_start_s": round(start_s, 2), "worker_setup_s": round(setup_s, 2),
+            "serial_setup_s": round(serial_setup_s, 2), "identical": bool(identical),
+            "failed": failed,
+            "load_average": [round(x, 2) for x in (load_before[0], load_after[0])]}
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--study", choices=["rotary", "pneumatic", "both"], default="both")
+    parser.add_argument("--repeats", type=int, default=REPEATS)
+    args = parser.parse_args()
+    folder = Path(tempfile.mkdtemp(prefix="sealsim-bench-study-"))
+    print(f"machine: {os.cpu_count()} cores; load average (1, 5, 15 min) "
+          f"{' '.join(f'{x:.2f}' for x in os.getloadavg())}")
+    names = ["rotary", "pneumatic"] if args.study == "both" else [args.study]
+    out = {name: bench(name, folder, args.repeats) for name in names}
+    first = out.pop(names[0])
+    print(json.dumps({"study": names[0], **first, **out}))
 
 
 if __name__ == "__main__":
