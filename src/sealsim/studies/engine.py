@@ -12,7 +12,7 @@ Runs are sent in batches: one Dask task runs several runs one after the other, s
 thousands of millisecond runs do not drown in scheduling overhead (every task costs a few
 milliseconds of scheduler, client and worker time).  How many (:class:`Batches`):
 
-1. While the run time is unknown, tasks of one run each probe it (two per worker).
+1. While the run time is unknown, tasks of one run each probe it (about two per worker).
 2. Then the remaining runs are cut into tasks of equal size, a multiple of the worker count
    in number (so that the workers finish together), each about :data:`TARGET_TASK_S` of work
    at most and :data:`MIN_TASK_S` at least, and :data:`TASKS_PER_WORKER` per worker where
@@ -22,10 +22,13 @@ milliseconds of scheduler, client and worker time).  How many (:class:`Batches`)
 
 The run time is the median of the last 200 finished runs, without the first run of each worker
 process: that one also pays the worker's imports and numba compilation (once per process; a
-worker keeps them, and its loaded FE maps, between tasks).  At most two tasks per worker are
-queued at a time, so Ctrl-C or a lost worker loses little finished work; every record is
-handed to ``on_record`` (which stores it) as soon as its task returns.  A local cluster is
-started with less housekeeping (:func:`local_cluster_config`).
+worker keeps them, and its loaded FE maps, between tasks).  There is one task per worker thread
+at a time, the next one sent as soon as one finishes: a second task queued on a busy worker
+may wait there while another worker idles (Dask estimates a task's duration from earlier tasks
+of the same function, one-run probes included, and did not move it), and Ctrl-C or a lost
+worker loses little finished work.  Every record is handed to ``on_record`` (which stores it)
+as soon as its task returns.  A local cluster is started with less housekeeping
+(:func:`local_cluster_config`).
 
 Linked cases that several runs share (a seal's FE map) are prepared first, once each
 (:func:`sealsim.studies.execute.prepare_links`), so that workers do not build the same map at
@@ -217,12 +220,12 @@ class Batches:
     Examples
     --------
     >>> batches = Batches([(i, ()) for i in range(40)], workers=2)
-    >>> [len(batches.next()) for _ in range(4)]          # probes
-    [1, 1, 1, 1]
+    >>> [len(batches.next()) for _ in range(3)]          # probes
+    [1, 1, 1]
     >>> batches.done([{"wall_s": 2.5, "first_in_process": True, "status": "ok"},
     ...               {"wall_s": 0.016, "first_in_process": False, "status": "ok"}])
-    >>> [len(batches.next()) for _ in range(3)]          # 36 runs of 16 ms on 2 workers
-    [18, 18, 0]
+    >>> [len(batches.next()) for _ in range(3)]          # 37 runs of 16 ms on 2 workers
+    [19, 18, 0]
     """
 
     def __init__(self, jobs: list, workers: int, batch_size: int | None = None):
@@ -261,10 +264,16 @@ class Batches:
         size = self.fixed or self._planned_size()
         return [self.queue.popleft() for _ in range(min(size, len(self.queue)))]
 
+    @property
+    def probing(self) -> bool:
+        """The run time is not known yet (a first run in a process also pays its set-up, so
+        it tells the run time only if there is nothing else)."""
+        return not self.fixed and not self.warm and len(self.cold) < self.workers
+
     def _planned_size(self) -> int:
+        if self.probing:
+            return 1
         run_s = self.run_time()
-        if run_s is None or not self.warm and len(self.cold) < self.workers:
-            return 1                     # probing (a first run also pays the set-up)
         if self.planned_s is None or not 0.5 <= run_s / self.planned_s <= 2.0:
             self.sizes = deque()
         if not self.sizes:               # cut the remaining runs into equal tasks
@@ -288,9 +297,9 @@ def _run_on_dask(client, template, jobs, on_record, batch_size) -> None:
     in_flight: dict = {}
     no_workers_since = None
 
-    def fill() -> None:
+    def fill() -> None:             # one task per worker thread: see the module docstring
         batches.set_workers(threads())
-        while batches and len(in_flight) < 2 * batches.workers:
+        while batches and len(in_flight) < batches.workers:
             batch = batches.next()
             in_flight[_cluster(client.submit, execute_batch, template, batch,
                                pure=False)] = batch
@@ -312,8 +321,9 @@ def _run_on_dask(client, template, jobs, on_record, batch_size) -> None:
                                  "start workers and run the study again with --resume") \
                     from None
             continue
-        for future in done:
-            batch = in_flight.pop(future)
+        finished = [(future, in_flight.pop(future)) for future in done]
+        fill()                           # keep the workers busy while the results come in
+        for future, batch in finished:
             records = _result(future, "running a batch of runs")
             if isinstance(records, str):   # the workers running it died
                 records = [_failed(index, records) for index, _ in batch]
