@@ -79,11 +79,11 @@ def local_cluster_config() -> dict:
     """Dask settings for the local cluster of a study: less housekeeping in processes whose
     cores are meant for the runs.
 
-    * The nanny starts workers with ``MALLOC_TRIM_THRESHOLD_=65536`` (Dask's default, to hand
-      freed memory back at once): glibc then returns freed memory at once and maps every
-      array above 128 kB anew (no dynamic mmap threshold), and a short run spends 10-15 % more CPU time in page faults (measured: 3200 instead of
-      1300 minor faults per steady rotary point).  The other variables (one BLAS/OpenMP
-      thread) are kept.
+    * The nanny starts workers with ``MALLOC_TRIM_THRESHOLD_=65536`` (Dask's default, so that
+      workers hand freed memory back): glibc then returns freed memory at once and maps
+      every array above 128 kB anew (no dynamic mmap threshold), and a short run spends
+      10-15 % more CPU time in page faults (measured: 3200 instead of 1300 minor faults per
+      steady rotary point).  The other variables (one BLAS/OpenMP thread) are kept.
     * The workers' statistical profiler samples the running task every 10 ms.
     * Event-loop checks 50 times a second and the system monitor twice a second in every
       process took 7 % of a core on an idle 2-worker cluster, 2.5 % at 1 s and 2 s.
