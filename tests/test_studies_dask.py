@@ -165,3 +165,48 @@ def test_real_scheduler_and_workers_survive_a_killed_worker(study_file, referenc
             if proc.poll() is None:
                 os.kill(proc.pid, signal.SIGKILL)
             proc.wait()
+
+
+# -- batching: every run once, in tasks that let the workers finish together -----------------
+def _drain(batches, run_s: float) -> list[list]:
+    """Tasks of ``batches`` as a cluster would see them, every run taking ``run_s``; the
+    first run of each of the workers' processes also pays a set-up of 2 s."""
+    tasks, cold = [], batches.workers
+    while batch := batches.next():
+        tasks.append(batch)
+        records = [{"wall_s": run_s + 2.0 * (cold > 0), "first_in_process": cold > 0,
+                    "status": "ok"} for _ in batch]
+        cold = max(0, cold - len(batch))
+        batches.done(records)
+    return tasks
+
+
+@pytest.mark.parametrize("runs, run_s, workers", [(40, 0.016, 2), (10_000, 0.016, 4),
+                                                   (37, 30.0, 2), (3, 0.01, 8)])
+def test_batches_give_every_run_once_in_equal_tasks(runs, run_s, workers):
+    from sealsim.studies.engine import MIN_TASK_S, TARGET_TASK_S, Batches
+
+    tasks = _drain(Batches([(i, ()) for i in range(runs)], workers), run_s)
+    assert sorted(i for task in tasks for i, _ in task) == list(range(runs))
+    probes = 0
+    while probes < len(tasks) and len(tasks[probes]) == 1 and probes <= workers:
+        probes += 1                      # one-run tasks until a warm run time is known
+    sized = [len(task) for task in tasks[probes:]]
+    if sized:
+        assert max(sized) - min(sized) <= 1                   # equal: workers finish together
+        assert len(sized) % workers == 0 or max(sized) == 1   # a multiple of the workers
+        assert max(sized) * run_s <= TARGET_TASK_S + run_s    # short enough to lose little
+        assert max(sized) == 1 or min(sized) * run_s >= min(
+            MIN_TASK_S, (runs - probes) * run_s / workers) - run_s   # long enough to pay
+
+
+def test_batches_are_cut_again_when_the_run_time_changes():
+    from sealsim.studies.engine import Batches
+
+    batches = Batches([(i, ()) for i in range(1000)], workers=2)
+    batches.done([{"wall_s": 0.01, "first_in_process": False, "status": "ok"}])
+    assert len(batches.next()) == 100          # 1 s tasks of 10 ms runs
+    batches.done([{"wall_s": 0.1, "first_in_process": False, "status": "ok"}] * 20)
+    assert len(batches.next()) == 10           # runs became 10x longer: 1 s tasks again
+    batches.set_workers(4)
+    assert len(batches.next()) == 10

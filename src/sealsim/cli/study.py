@@ -34,7 +34,7 @@ def _progress(quiet: bool) -> Progress:
     return Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(),
                     TextColumn("[red]{task.fields[failed]}"), TextColumn("ETA"),
                     TimeRemainingColumn(), TimeElapsedColumn(), console=err_console,
-                    disable=quiet, transient=True)
+                    disable=quiet, transient=True, refresh_per_second=2)  # 10 Hz: 1 % of a core
 
 
 @study_app.command("run")

@@ -3,9 +3,10 @@
 :func:`execute_batch` is the Dask task: it runs a list of runs one after the other and returns
 one record per run.  A record is a plain dict (``index``, ``status`` "ok" or "failed",
 ``error``, ``summary``: every number of the model's summary as ``{"a.b": value}``, ``series``,
-``notes``, ``wall_s``, ``worker``); an exception inside a run -- invalid input for this
-combination of factors, a solver that does not converge -- becomes a failed record, so one bad
-run never stops a study.
+``notes``, ``wall_s``, ``worker``, ``first_in_process``: the first run of its process, whose
+time includes the imports and numba compilations every later run reuses); an exception
+inside a run -- invalid input for this combination of factors, a solver that does not
+converge -- becomes a failed record, so one bad run never stops a study.
 
 Runs are computed with one BLAS thread (:func:`one_blas_thread`), as on Dask workers: OpenBLAS
 rounds differently with several threads, and a study must give the same numbers in this process
@@ -59,6 +60,10 @@ class RunTemplate:
     series_variables: tuple = ()
     series_interval: float | None = None
     map_workers: int | None = 1           # processes for FE maps built inside a run
+
+
+#: runs started in this process (the first one pays the imports and numba compilations)
+_runs_in_process = 0
 
 
 def _worker_name() -> str:
@@ -137,8 +142,11 @@ def _error_text(exc: Exception) -> str:
 
 def execute_run(template: RunTemplate, index: int, changes) -> dict[str, Any]:
     """Run one case of a study; never raises for a problem of the run itself."""
+    global _runs_in_process
     t0 = time.perf_counter()
-    record: dict[str, Any] = {"index": index, "worker": _worker_name()}
+    record: dict[str, Any] = {"index": index, "worker": _worker_name(),
+                              "first_in_process": _runs_in_process == 0}
+    _runs_in_process += 1
     folder = Path(tempfile.mkdtemp(prefix="sealsim-study-run-")) if template.link_names \
         else None
     try:
