@@ -130,3 +130,17 @@ def test_format_then_parse_round_trips(data, dimension):
     # format_quantity keeps 12 significant digits: 1e-9 relative leaves room for the unit
     # conversion (e.g. K -> degC -> K); abs 1e-300 only for the exact zero
     assert back == pytest.approx(value, rel=1e-9, abs=1e-300)
+
+
+def test_parsed_strings_are_cached_but_each_error_names_its_field():
+    """The string cache (a study re-validates the same case strings every run) returns the
+    same SI value and never a stale error: errors are raised afresh with the field's name."""
+    from sealsim.units import _string_to_si
+
+    assert parse_quantity("80 mm", "length") == parse_quantity("80 mm", "length") == 0.08
+    hits = _string_to_si.cache_info().hits
+    parse_quantity("80 mm", "length", field="seal.diameter")
+    assert _string_to_si.cache_info().hits == hits + 1
+    for field in ("cylinder.bore", "cylinder.stroke"):
+        with pytest.raises(InputError, match=rf"^{field}: '3 kg' has dimension"):
+            parse_quantity("3 kg", "length", field=field)

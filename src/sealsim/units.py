@@ -179,37 +179,48 @@ def parse_quantity(value, dimension: str, field: str | None = None) -> float:
 
 
 def _parse_string(text: str, dim: Dimension, field: str | None) -> float:
+    try:
+        return _string_to_si(text, dim)
+    except InputError as exc:
+        if not field:
+            raise
+        raise InputError(f"{field}: {exc}") from exc.__cause__
+
+
+# A study validates the same case strings once per run; pint's parser costs ~1 ms per case.
+# Errors are not cached (lru_cache does not store exceptions), so each names its field.
+@functools.lru_cache(maxsize=4096)
+def _string_to_si(text: str, dim: Dimension) -> float:
     import pint
 
     ureg = unit_registry()
-    prefix = f"{field}: " if field else ""
     match = _NUMBER.match(text)
     if not match:
-        raise InputError(prefix + f"{text!r} is not 'number unit'; expected a {dim.name} "
+        raise InputError(f"{text!r} is not 'number unit'; expected a {dim.name} "
                          f"such as {dim.example!r}")
     number, unit = match.group(1), match.group(2).strip()
     if _RUNAWAY_POWER.search(unit):  # pint would evaluate e.g. 10**10**8 for minutes
-        raise InputError(prefix + f"unit {unit!r} in {text!r} has an exponent that is too large")
+        raise InputError(f"unit {unit!r} in {text!r} has an exponent that is too large")
     if dim.name == "angular_speed" and re.search(r"hz|hertz", unit, re.IGNORECASE):
-        raise InputError(prefix + f"{text!r} -- Hz is ambiguous for a rotational speed; "
+        raise InputError(f"{text!r} -- Hz is ambiguous for a rotational speed; "
                          "use rpm, rev/s or rad/s")
     try:
         quantity = ureg.Quantity(float(number), unit or "dimensionless")
     except (pint.errors.UndefinedUnitError, pint.errors.DefinitionSyntaxError,
             AttributeError, TypeError, ValueError, AssertionError) as exc:
-        raise InputError(prefix + f"unknown unit {unit!r} in {text!r}; expected a {dim.name} "
+        raise InputError(f"unknown unit {unit!r} in {text!r}; expected a {dim.name} "
                          f"such as {dim.example!r}") from exc
     except Exception as exc:  # pint's parser raises a variety of types on garbage input
-        raise InputError(prefix + f"cannot read {text!r} as a quantity; expected a {dim.name} "
+        raise InputError(f"cannot read {text!r} as a quantity; expected a {dim.name} "
                          f"such as {dim.example!r}") from exc
     if quantity.dimensionality != dim.dimensionality:
         got = f"dimension {quantity.dimensionality}" if unit else "no unit"
-        raise InputError(prefix + f"{text!r} has {got}, expected a {dim.name} "
+        raise InputError(f"{text!r} has {got}, expected a {dim.name} "
                          f"(e.g. {dim.example!r})")
     try:
         return float(quantity.to(dim.si_unit).magnitude)
     except pint.errors.PintError as exc:  # pragma: no cover - guarded by the check above
-        raise InputError(prefix + f"cannot convert {text!r} to {dim.si_unit}") from exc
+        raise InputError(f"cannot convert {text!r} to {dim.si_unit}") from exc
 
 
 def format_quantity(value: float, dimension: str) -> str:
