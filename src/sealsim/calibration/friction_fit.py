@@ -39,7 +39,6 @@ from sealsim.friction.base import ContactInputs, FrictionLaw, validate_parameter
 from sealsim.measurements import (
     Measurement,
     friction_level,
-    phase_mask,
     read_measurement,
     sliding_phases,
     smooth_derivative,

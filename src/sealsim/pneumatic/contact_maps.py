@@ -647,7 +647,6 @@ def hermite_grid_point(row, data, pressure, temperature):
     clipped = 1.0 if abs(t - temperature) > 1e-9 * max(abs(temperature), 1.0) else 0.0
     pos = o + 5
     cell = 0
-    i0 = i1 = i2 = 0
     u0 = u1 = u2 = 0.0
     for k in range(d):
         role = row[3 + k]
@@ -662,11 +661,11 @@ def hermite_grid_point(row, data, pressure, temperature):
         u = (x - axis[i]) / (axis[i + 1] - axis[i])
         cell = cell * (n - 1) + i
         if k == 0:
-            i0, u0 = i, u
+            u0 = u
         elif k == 1:
-            i1, u1 = i, u
+            u1 = u
         else:
-            i2, u2 = i, u
+            u2 = u
         pos += n
     nvars = row[9]
     nb = 4 ** d
