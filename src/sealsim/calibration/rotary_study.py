@@ -38,6 +38,7 @@ from sealsim.calibration.rotary_fit import (
     run_case_with,
     step_agreement,
 )
+from sealsim.calibration.statistics import parameter_report
 from sealsim.cases import load_toml, validate_case
 from sealsim.units import ZERO_CELSIUS_K
 
@@ -63,22 +64,15 @@ def fitted_overlay(run: PreparedRotaryRun, values: dict[str, float]) -> dict:
     return expand_dotted(flat)
 
 
-def _parameter_table(result: RotaryFitResult, overlay: dict) -> dict:
-    table = {}
-    for i, name in enumerate(result.names):
-        value, se = float(result.values[i]), float(result.standard_errors[i])
-        text = overlay
+def _overlay_texts(names: list[str], overlay: dict) -> dict[str, str]:
+    """Each fitted field as written in the overlay (the case-file text of its value)."""
+    texts = {}
+    for name in names:
+        node = overlay
         for part in name.split("."):
-            text = text[part]
-        table[name] = {
-            "value": value, "text": text, "stage": result.stage_of[i],
-            "initial": result.initial[i], "bounds": list(result.bounds[i]),
-            "standard_error": se if np.isfinite(se) else None,
-            "relative_standard_error": (se / abs(value) if np.isfinite(se) and value
-                                        else None),
-            "identifiable": bool(result.identifiable[i]),
-            "notes": result.reasons[i]}
-    return table
+            node = node[part]
+        texts[name] = node
+    return texts
 
 
 def _summary(measurements: dict) -> dict:
@@ -151,7 +145,8 @@ def rotary_fit_study(case: RotaryFitCase, base_dir: str | Path,
     result = fit_rotary(case, runs, progress)
     overlay = fitted_overlay(runs[0], result.value_dict)
     measurements = {r.name: rotary_run_metrics(r, result.predictions[r.name]) for r in runs}
-    report = {"parameters": _parameter_table(result, overlay), "measurements": measurements,
+    report = {"parameters": parameter_report(result, _overlay_texts(result.names, overlay)),
+              "measurements": measurements,
               "summary": _summary(measurements)}
     diagnostics = {
         "status": result.status, "failure": result.failure, "warnings": result.warnings,

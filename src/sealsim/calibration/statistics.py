@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["parameter_statistics"]
+__all__ = ["parameter_report", "parameter_statistics"]
 
 
 def parameter_statistics(jacobian, residuals, *, rcond=1e-8, max_relative_error=0.5,
@@ -117,3 +117,25 @@ def parameter_statistics(jacobian, residuals, *, rcond=1e-8, max_relative_error=
     return {"standard_errors": se, "correlation": corr, "covariance": cov,
             "residual_variance": s2, "identifiable": identifiable, "reasons": reasons,
             "singular_values": sv}
+
+
+def parameter_report(result, texts: dict[str, str]) -> dict:
+    """The ``parameters`` table of a fit's ``report.json``: per fitted parameter its value,
+    the value as written in a case file (``texts[name]``), stage, start, bounds, standard
+    errors (None where infinite) and identifiability with its reasons.
+
+    ``result`` is a fit outcome with ``names``, ``values``, ``standard_errors``, ``stage_of``,
+    ``initial``, ``bounds``, ``identifiable`` and ``reasons`` (friction and rotary fits alike).
+    """
+    table = {}
+    for i, name in enumerate(result.names):
+        value, se = float(result.values[i]), float(result.standard_errors[i])
+        table[name] = {
+            "value": value, "text": texts[name], "stage": result.stage_of[i],
+            "initial": result.initial[i], "bounds": list(result.bounds[i]),
+            "standard_error": se if np.isfinite(se) else None,
+            "relative_standard_error": (se / abs(value) if np.isfinite(se) and value
+                                        else None),
+            "identifiable": bool(result.identifiable[i]),
+            "notes": result.reasons[i]}
+    return table

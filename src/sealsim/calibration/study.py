@@ -31,6 +31,7 @@ from sealsim.calibration.friction_fit import (
     prepare_run,
     run_metrics,
 )
+from sealsim.calibration.statistics import parameter_report
 from sealsim.cases import load_toml, validate_case
 from sealsim.errors import InputError
 from sealsim.friction import make_law
@@ -60,22 +61,6 @@ def _contact_map(case: FrictionFitCase, base_dir: Path, cache_dir, progress):
         spec = spec.model_copy(update={"cache_dir": str(cache_dir)})
     return build_contact_map(spec, case.contact.sliding_diameter, base_dir, "contact.map",
                              progress)
-
-
-def _parameter_table(result: FitResult) -> dict:
-    dumped = result.params.model_dump(mode="json")
-    table = {}
-    for i, name in enumerate(result.names):
-        value, se = float(result.values[i]), float(result.standard_errors[i])
-        table[name] = {
-            "value": value, "text": dumped[name], "stage": result.stage_of[i],
-            "initial": result.initial[i], "bounds": list(result.bounds[i]),
-            "standard_error": se if np.isfinite(se) else None,
-            "relative_standard_error": (se / abs(value) if np.isfinite(se) and value
-                                        else None),
-            "identifiable": bool(result.identifiable[i]),
-            "notes": result.reasons[i]}
-    return table
 
 
 @dataclass
@@ -130,7 +115,7 @@ def friction_fit_study(case: FrictionFitCase, base_dir: str | Path,
     result = fit_friction(case, runs, progress)
     law = make_law(result.params)
     predictions = {r.name: predict_run(law, r) for r in runs}
-    report = {"parameters": _parameter_table(result),
+    report = {"parameters": parameter_report(result, result.params.model_dump(mode="json")),
               "measurements": {r.name: run_metrics(r, predictions[r.name]) for r in runs}}
     diagnostics = {
         "status": result.status, "failure": result.failure, "warnings": result.warnings,
