@@ -253,7 +253,8 @@ def rotary_documentation(spec: ModelSpec, maps) -> None:
          "ambient, one table per flow regime of the oil-side convection (they jump at the "
          "regime boundary), over the speed between the regime's boundaries and the oil's "
          "viscosity at the sump temperature. First-order lags fitted to step responses of "
-         "the transient model make the rise follow its steady value, and the contact follow the sump temperature through "
+         "the transient model make the rise follow its steady value, and the contact follow "
+         "the sump temperature through "
          "the slowest of them. The torque is sealsim's friction torque at the speed and the "
          "contact temperature. The housing is taken in equilibrium with sump and ambient.</p>"),
         ("Errors against the full model", text)]

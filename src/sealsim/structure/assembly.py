@@ -257,8 +257,9 @@ class CompiledSolidBody(fem.SolidBodyNearlyIncompressible):
     Same constructor, state (``results.state``: u, p, J), checkpoints and results
     (``stress``, ``kinematics``, ``force``, ``stiffness``) as
     :class:`felupe.SolidBodyNearlyIncompressible`, for an axisymmetric or plane-strain field
-    on a region of one cell type (the seal meshes are quads). :attr:`force_vector` is the dense residual of the last
-    assembly; :attr:`results.stiffness` keeps one CSR matrix whose data is overwritten.
+    on a region of one cell type (the seal meshes are quads). :attr:`force_vector` is the
+    dense residual of the last assembly; :attr:`results.stiffness` keeps one CSR matrix whose
+    data is overwritten.
     """
 
     def __init__(self, umat, field, bulk, **kwargs):

@@ -246,7 +246,7 @@ def xring_profile(cord_diameter: float, inner_diameter: float, *,
     return SealProfile("xring", contour, min_feature=cord_diameter)
 
 
-# -- rectangular ring -------------------------------------------------------------------------------
+# -- rectangular ring ------------------------------------------------------------------------------
 
 def rectangular_profile(width: float, height: float, inner_diameter: float, *,
                         corner_radius: float | None = None) -> SealProfile:
@@ -402,7 +402,7 @@ def wiper_profile(arrangement: str, sealing_diameter: float, height: float, widt
     return SealProfile("wiper", check_contour(con, "wiper"), min_feature=0.45 * w)
 
 
-# -- DIN 3760 radial lip seal -----------------------------------------------------------------------
+# -- DIN 3760 radial lip seal ----------------------------------------------------------------------
 
 LIP_OIL_SIDE_ANGLE = 45.0
 """Oil-side angle of the lip head to the shaft axis [deg]; DIN 3760 lips have 40–60° (range
@@ -625,7 +625,7 @@ def garter_spring_rate(coil_diameter: float, wire_diameter: float, length: float
     return shear_modulus * wire_diameter**4 / (8.0 * mean**3 * turns)
 
 
-# -- user profiles ----------------------------------------------------------------------------------
+# -- user profiles ---------------------------------------------------------------------------------
 
 def user_profile(points=None, *, bulges=None, tags=None, dxf=None, layer=None,
                  dxf_unit: float = 1e-3, name: str = "seal") -> SealProfile:

@@ -97,16 +97,16 @@ class LoadStep:
 class LinearSolver:
     """Direct solver of the Newton systems K du = r, reusing work per sparsity pattern.
 
-    Only one or two sparsity patterns occur along a load path, so PARDISO's analysis phase (METIS nested-dissection ordering and symbolic
-    factorisation) runs once per pattern and each Newton iteration runs the numerical
-    factorisation and solve only (phase 23, single-threaded: deterministic and no
-    oversubscription of the map worker processes). PARDISO runs with MKL's defaults for
-    non-symmetric matrices (METIS ordering, scaling, weighted matching, pivot perturbation
-    1e-13) except that iterative refinement runs only when pivots were perturbed (pypardiso's
-    implicit defaults refine twice in every solve: 15 % of the time, the same solution to
-    1e-12). A matrix with the pattern arrays of the previous call (the
-    :class:`~.assembly.SystemAssembly` keeps them) skips hashing its pattern. SuperLU (scipy)
-    is used without PARDISO: minimum-degree ordering of A + Aᵀ with symmetric-mode diagonal
+    Only one or two sparsity patterns occur along a load path, so PARDISO's analysis phase
+    (METIS nested-dissection ordering and symbolic factorisation) runs once per pattern and each
+    Newton iteration runs the numerical factorisation and solve only (phase 23, single-threaded:
+    deterministic and no oversubscription of the map worker processes). PARDISO runs with MKL's
+    defaults for non-symmetric matrices (METIS ordering, scaling, weighted matching, pivot
+    perturbation 1e-13) except that iterative refinement runs only when pivots were perturbed
+    (pypardiso's implicit defaults refine twice in every solve: 15 % of the time, the same
+    solution to 1e-12). A matrix with the pattern arrays of the previous call (the
+    :class:`~.assembly.SystemAssembly` keeps them) skips hashing its pattern. SuperLU (scipy) is
+    used without PARDISO: minimum-degree ordering of A + Aᵀ with symmetric-mode diagonal
     pivoting (threshold 0.1), about 3× faster than ``spsolve``'s default COLAMD ordering on
     these matrices; scipy cannot keep a SuperLU symbolic factorisation, and re-using the
     ordering alone gained nothing (measured).
