@@ -49,7 +49,7 @@ from sealsim.measurements.readers import QUANTITIES, ColumnSpec
 from sealsim.pneumatic.case import MapModel
 
 __all__ = ["ContactModel", "FitParameter", "FrictionFitCase", "MeasurementModel",
-           "parse_law_value"]
+           "parse_field_value", "parse_law_value"]
 
 
 class FitParameter(CaseModel):
@@ -175,19 +175,25 @@ class FrictionFitCase(CaseModel):
         return self
 
 
-def parse_law_value(params, name: str, value, where: str) -> float:
-    """A value of the law field ``name`` (a quantity string with its unit) in SI.
-
-    Uses the field's own type, so the units and the range are those of the law model.
-    """
-    field = type(params).model_fields[name]
+def parse_field_value(field, label: str, value, where: str) -> float:
+    """A value for the pydantic ``field`` (a quantity string with its unit, or a number for a
+    dimensionless field) in SI, checked with the field's own type: its units and range.
+    ``label`` names the field in the error message."""
     try:
         parsed = TypeAdapter(field.rebuild_annotation()).validate_python(
             value, context={"require_units": True})
     except Exception as exc:  # pydantic.ValidationError: one readable line
         text = str(exc).splitlines()
         detail = text[-1].strip() if text else str(exc)
-        raise InputError(f"{where}: {value!r} is not a valid {name}: {detail}") from None
+        raise InputError(f"{where}: {value!r} is not a valid {label}: {detail}") from None
     if parsed is None or isinstance(parsed, bool) or not isinstance(parsed, int | float):
-        raise InputError(f"{where}: {value!r} is not a number for {name}")
+        raise InputError(f"{where}: {value!r} is not a number for {label}")
     return float(parsed)
+
+
+def parse_law_value(params, name: str, value, where: str) -> float:
+    """A value of the law field ``name`` (a quantity string with its unit) in SI.
+
+    Uses the field's own type, so the units and the range are those of the law model.
+    """
+    return parse_field_value(type(params).model_fields[name], name, value, where)

@@ -44,10 +44,10 @@ import types
 import typing
 from typing import Any, Literal
 
-from pydantic import Field, TypeAdapter, model_validator
+from pydantic import Field, model_validator
 from pydantic.fields import FieldInfo
 
-from sealsim.calibration.case import ColumnModel
+from sealsim.calibration.case import ColumnModel, parse_field_value
 from sealsim.cases import CaseModel, Q, apply_overrides, validate_case
 from sealsim.errors import InputError
 from sealsim.rotary.case import RotaryCase
@@ -144,17 +144,7 @@ def case_field(path: str) -> FieldInfo:
 def parse_case_value(path: str, value, where: str) -> float:
     """A value for the rotary-case field at ``path`` (a quantity string with its unit, or a
     number for a dimensionless field) in SI, checked against the field's own range."""
-    field = case_field(path)
-    try:
-        parsed = TypeAdapter(field.rebuild_annotation()).validate_python(
-            value, context={"require_units": True})
-    except Exception as exc:  # pydantic.ValidationError: one readable line
-        text = str(exc).splitlines()
-        detail = text[-1].strip() if text else str(exc)
-        raise InputError(f"{where}: {value!r} is not a valid {path}: {detail}") from None
-    if parsed is None or isinstance(parsed, bool) or not isinstance(parsed, int | float):
-        raise InputError(f"{where}: {value!r} is not a number for {path}")
-    return float(parsed)
+    return parse_field_value(case_field(path), path, value, where)
 
 
 class RotaryFitParameter(CaseModel):
