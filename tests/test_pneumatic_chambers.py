@@ -157,12 +157,13 @@ def test_default_wall_heat_gives_the_published_polytropic_exponent():
     # about 0.003 per W/(m²·K) here); adiabatic walls give 1.4.
     from sealsim.pneumatic.chambers import polytropic_exponent
 
-    def exponent(h):
+    def exponent(h, heat_transfer="constant"):
         data = load_toml(EXAMPLES / "cylinder_32.toml")
         data.pop("variants")
         data["seals"] = []
         data["valve"] = {**data["valve"], "type": "5/3", "centre": "closed"}
         data["air"].pop("heat_transfer_coefficient")
+        data["air"]["heat_transfer"] = heat_transfer
         if h is not None:
             data["air"]["heat_transfer_coefficient"] = h
         data["controller"] = {"mode": "position", "duration": "0.3 s", "command": "centre",
@@ -177,3 +178,50 @@ def test_default_wall_heat_gives_the_published_polytropic_exponent():
 
     assert exponent(None) == pytest.approx(1.2, abs=0.02)
     assert exponent("0 W/(m**2*K)") == pytest.approx(1.4, abs=1e-3)
+    # free convection alone (Churchill & Chu at the chamber state, 6-17 W/(m²·K) here) is the
+    # lower bound of the wall heat: the exponent lies between the default's and the adiabat,
+    # in the 1.30-1.37 that constant coefficients of 17 and 6 W/(m²·K) give (chambers module)
+    free = exponent(None, "free_convection")
+    assert 1.30 < free < 1.37
+
+
+def test_free_convection_wall_heat_in_the_compiled_rhs():
+    # The compiled right-hand side evaluates the same free-convection law as the numpy function
+    # chambers.free_convection_coefficient (one implementation, compiled): at random chamber
+    # states the wall heat flows agree to round-off.
+    from sealsim.pneumatic.case import body_temperature
+    from sealsim.pneumatic.chambers import chamber_wall_area, free_convection_coefficient
+
+    data = load_toml(EXAMPLES / "cylinder_32.toml")
+    data["air"].pop("heat_transfer_coefficient")
+    data["air"]["heat_transfer"] = "free_convection"
+    case = validate_case(PneumaticCase, apply_overrides(data, data.pop("variants")["T25C"]))
+    case = case.model_copy(update={"seals": []})
+    system = PneumaticSystem(case, [])
+    cyl, t_wall = case.cylinder, body_temperature(case)
+    rng = np.random.default_rng(3)
+    for _ in range(10):
+        y = system.initial_state()
+        x = rng.uniform(0.0, cyl.stroke)
+        p1, p2 = rng.uniform(1.1e5, 7e5, 2)
+        t1, t2 = rng.uniform(230.0, 370.0, 2)
+        vol1 = cyl.dead_volume_cap + system.a1 * x
+        vol2 = cyl.dead_volume_rod + system.a2 * (cyl.stroke - x)
+        y[:6] = [x, 0.0, gas_mass(p1, vol1, t1), gas_mass(p2, vol2, t2),
+                 p1 * vol1 / (GAMMA - 1.0), p2 * vol2 / (GAMMA - 1.0)]
+        d = system.evaluate(0.0, y, FORWARD, full=True)
+        for q, p, temp, length in ((d["q1"][0], p1, t1, vol1 / system.a1),
+                                   (d["q2"][0], p2, t2, vol2 / system.a2)):
+            h = free_convection_coefficient(p, temp, t_wall, cyl.bore)
+            area = chamber_wall_area(length, cyl.bore, system.a1)
+            assert q == pytest.approx(h * area * (t_wall - temp), rel=1e-9)
+
+
+def test_free_convection_and_a_coefficient_are_exclusive():
+    from sealsim.errors import InputError
+
+    data = load_toml(EXAMPLES / "cylinder_32.toml")
+    data.pop("variants")
+    data["air"]["heat_transfer"] = "free_convection"
+    with pytest.raises(InputError, match="heat_transfer_coefficient .*45 W"):
+        validate_case(PneumaticCase, data)

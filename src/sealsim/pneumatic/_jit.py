@@ -1,6 +1,7 @@
 """Compilation of the numpy physics functions of the pneumatic model with numba.
 
 The physics functions of :mod:`.valve`, :mod:`.chambers`, :mod:`.cylinder` and :mod:`.seals`
+(and the air properties and free convection of :mod:`sealsim.thermal.convection` they use)
 are written with arithmetic and numpy ufuncs only (no ``np.asarray``, no ``np.where``, no Python
 branches on values), so one function body works on floats and on arrays in numpy *and* inside
 numba's nopython mode.  :func:`jit` compiles such a function for the compiled right-hand side

@@ -23,7 +23,7 @@ A case (see ``examples/pneumatic/cylinder_32.toml``)::
     [air]
     supply_pressure = "6 bar"        # gauge
     temperature = "25 degC"          # ambient and supply air
-    heat_transfer_coefficient = "45 W/(m**2*K)"   # the default (sealsim.pneumatic.chambers)
+    heat_transfer_coefficient = "45 W/(m**2*K)"   # the default; or heat_transfer = "free_convection"
 
     [valve]
     type = "5/2"                     # or "5/3" with centre = "closed" | "exhaust" | "pressure"
@@ -180,6 +180,21 @@ class AirModel(CaseModel):
             "air-wall heat transfer in the chambers (default 45 W/(m**2*K): the polytropic "
             "exponent 1.2 of Richer & Hurmuzlu 2000 for a stroke of the Ø32 example, see "
             "sealsim.pneumatic.chambers); 0: adiabatic"))
+    heat_transfer: Literal["constant", "free_convection"] = Field(
+        "constant", description=(
+            "'constant': heat_transfer_coefficient; 'free_convection': Churchill & Chu free "
+            "convection at each chamber's pressure and temperature (the lower bound: no jet, "
+            "no piston stirring; sealsim.pneumatic.chambers.free_convection_coefficient)"))
+
+    @model_validator(mode="after")
+    def _one_heat_transfer(self):
+        if self.heat_transfer == "free_convection" and (
+                "heat_transfer_coefficient" in self.model_fields_set):
+            raise ValueError(
+                "heat_transfer = 'free_convection' computes the coefficient; remove "
+                f"heat_transfer_coefficient ({self.heat_transfer_coefficient:g} W/(m**2*K)) or "
+                "set heat_transfer = 'constant'")
+        return self
 
     @property
     def supply_absolute(self) -> float:

@@ -35,8 +35,9 @@ Almeida [3]_ would be the better source; their values could not be retrieved for
 
 Free convection alone, :func:`free_convection_coefficient` (Churchill & Chu [4]_ at the
 chamber pressure), is the lower bound: 6-17 W/(m²·K) for the Ø32 chamber at 1-6 bar and 30 K
-(exponent 1.30-1.37 in the stroke above); the default's excess is the stirring by the port jet
-and the piston.  **Measured air-temperature swing.**  No published temperature record of a
+(exponent 1.30-1.37 in the stroke above; the case option ``[air] heat_transfer =
+"free_convection"`` evaluates it at each chamber's state and gives 1.34); the default's excess
+is the stirring by the port jet and the piston.  **Measured air-temperature swing.**  No published temperature record of a
 cylinder chamber could be retrieved with the data needed to simulate it.  The closest measured
 case is the blow-down of a 16-litre air vessel from 7.9 bar through a 2.71 mm orifice [5]_:
 measured drop 41.6 K at 23 s, recovery time constant 27 s at 1 bar.  These equations with
@@ -265,11 +266,11 @@ def free_convection_coefficient(pressure, gas_temperature, wall_temperature, dia
     >>> round(float(free_convection_coefficient(1e5, 263.15, 293.15, 0.032)), 1)  # at 1 bar
     6.3
     """
-    t_film = 0.5 * (np.asarray(gas_temperature, dtype=float) + wall_temperature)
+    t_film = 0.5 * np.add(gas_temperature, wall_temperature)
     nu, alpha, k, _ = air_properties(t_film)
-    scale = STANDARD_ATMOSPHERE / np.asarray(pressure, dtype=float)
+    scale = np.divide(STANDARD_ATMOSPHERE, pressure)
     return free_convection_horizontal_cylinder(
-        diameter, np.asarray(wall_temperature, dtype=float) - gas_temperature,
+        diameter, np.subtract(wall_temperature, gas_temperature),
         nu * scale, alpha * scale, k, 1.0 / t_film)
 
 

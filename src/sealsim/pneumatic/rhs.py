@@ -42,6 +42,7 @@ from sealsim.pneumatic.chambers import (
     AIR_CV,
     AIR_HEAT_CAPACITY_RATIO,
     chamber_wall_area,
+    free_convection_coefficient,
     wall_heat_flow,
 )
 from sealsim.pneumatic.contact_maps import _analytic_loads, hermite_grid_point
@@ -49,6 +50,7 @@ from sealsim.pneumatic.cylinder import end_stop_force, load_force
 from sealsim.pneumatic.seal_heating import sliding_contact_coefficient
 from sealsim.pneumatic.seals import pressure_difference, side_pressures, smooth_abs
 from sealsim.pneumatic.valve import iso6358_flow, iso6358_mass_flow, openings, series_pair
+from sealsim.thermal import convection
 
 __all__ = ["BOOKKEEPING", "MODES", "STICK", "FORWARD", "BACKWARD", "FREE", "PRESCRIBED"]
 
@@ -68,7 +70,7 @@ THERMAL_BOOKKEEPING = ("friction_heat", "heat_to_air", "heat_to_ambient")
  C_M, C_BETA, C_CENTRE, C_H, C_TW, C_F0, C_KL, C_X0L, C_CL, C_INCL, C_MASS, C_KS, C_CS, C_DS,
  C_THR1, C_THR2, C_CU1_L, C_CU1_C, C_CU1_E, C_CU2_L, C_CU2_C, C_CU2_E,
  C_BOOK, C_HEAT, C_TOFF, C_TUBE_CAP, C_TUBE_G, C_ROD_CAP, C_ROD_G, C_TAMB,
- C_SPOOL_TAU, C_SPOOL_INIT, C_PROFILE_KIND, C_NCONST) = range(47)
+ C_SPOOL_TAU, C_SPOOL_INIT, C_PROFILE_KIND, C_HFREE, C_NCONST) = range(48)
 
 # -- seal tables ----------------------------------------------------------------------------
 #: law codes
@@ -103,6 +105,10 @@ _series = jit(series_pair)
 _openings = jit(openings)
 _wall_area = jit(chamber_wall_area)
 _heat = jit(wall_heat_flow)
+_free_h = jit(free_convection_coefficient, air_properties=jit(convection.air_properties),
+              free_convection_horizontal_cylinder=jit(
+                  convection.free_convection_horizontal_cylinder,
+                  rayleigh_number=jit(convection.rayleigh_number)))
 _stop = jit(end_stop_force)
 _load = jit(load_force)
 _dp = jit(pressure_difference, smooth_abs=jit(smooth_abs))
@@ -273,8 +279,12 @@ def evaluate_column(t, y, col, mode, tables, dy, diag, full):
         t_wall = t_tube
     else:
         t_tube = t_rod = t_wall = c[C_TW]
-    q1 = _heat(c[C_H], _wall_area(x + c[C_DEAD1] / c[C_A1], c[C_BORE], c[C_A1]), t_wall, t1)
-    q2 = _heat(c[C_H], _wall_area(c[C_STROKE] - x + c[C_DEAD2] / c[C_A2], c[C_BORE], c[C_A1]),
+    hw1 = hw2 = c[C_H]                            # wall heat-transfer coefficients
+    if c[C_HFREE] > 0.0:                          # free convection at the chamber's state
+        hw1 = _free_h(p1, t1, t_wall, c[C_BORE])
+        hw2 = _free_h(p2, t2, t_wall, c[C_BORE])
+    q1 = _heat(hw1, _wall_area(x + c[C_DEAD1] / c[C_A1], c[C_BORE], c[C_A1]), t_wall, t1)
+    q2 = _heat(hw2, _wall_area(c[C_STROKE] - x + c[C_DEAD2] / c[C_A2], c[C_BORE], c[C_A1]),
                t_wall, t2)
     f_press = p1 * c[C_A1] - p2 * c[C_A2] - pa * c[C_AROD]
     f_load = _load(x, v, c[C_F0], c[C_KL], c[C_X0L], c[C_MASS], c[C_INCL], c[C_CL])

@@ -15,7 +15,12 @@ from sealsim.errors import InputError
 from sealsim.friction.hybrid import resolve_stick
 from sealsim.pneumatic import rhs
 from sealsim.pneumatic.case import body_temperature
-from sealsim.pneumatic.chambers import AIR_CV, gas_mass, internal_energy
+from sealsim.pneumatic.chambers import (
+    AIR_CV,
+    free_convection_coefficient,
+    gas_mass,
+    internal_energy,
+)
 from sealsim.pneumatic.contact_maps import FEContactMap, tabulated_map_tables
 from sealsim.pneumatic.controller import command_schedule
 from sealsim.pneumatic.cylinder import piston_areas
@@ -146,6 +151,7 @@ class PneumaticSystem:
             valve.laminar_ratio)
         c[rhs.C_CENTRE] = CENTRES.index(valve.centre) if valve.type == "5/3" else 0
         c[rhs.C_H] = air.heat_transfer_coefficient
+        c[rhs.C_HFREE] = 1.0 if air.heat_transfer == "free_convection" else 0.0
         c[rhs.C_TW] = body_temperature(case)
         c[rhs.C_F0], c[rhs.C_KL], c[rhs.C_X0L], c[rhs.C_CL] = (
             ld.force, ld.stiffness, ld.spring_free_position, ld.viscous)
@@ -244,6 +250,10 @@ class PneumaticSystem:
         tube, rod = METALS[th.tube_material], METALS[th.rod_material]
         t_amb, t_body = self.t_amb, body_temperature(case)
         h_air = case.air.heat_transfer_coefficient
+        if case.air.heat_transfer == "free_convection":   # a constant for the seal flanks:
+            # the chamber air at supply pressure, 10 K from the body (a typical stroke's swing)
+            h_air = float(free_convection_coefficient(self.p_supply, t_body - 10.0, t_body,
+                                                      cyl.bore))
         for i, (seal, spec) in enumerate(zip(self.seals, case.seals)):
             cord = _cord_diameter(spec)
             if cord is None:

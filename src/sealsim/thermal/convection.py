@@ -224,9 +224,8 @@ def rayleigh_number(length, delta_t, kinematic_viscosity, diffusivity, expansion
     >>> f"{float(rayleigh_number(0.1, 10.0, 1.6e-5, 2.2e-5, 1/300)):.3g}"
     '9.29e+05'
     """
-    return (GRAVITY * np.asarray(expansion, dtype=float)
-            * np.abs(np.asarray(delta_t, dtype=float)) * length**3
-            / (np.asarray(kinematic_viscosity, dtype=float) * np.asarray(diffusivity, dtype=float)))
+    return (GRAVITY * length**3 * np.multiply(expansion, np.abs(delta_t))
+            / np.multiply(kinematic_viscosity, diffusivity))
 
 
 def free_convection_horizontal_cylinder(diameter, delta_t, kinematic_viscosity, diffusivity,
@@ -260,9 +259,9 @@ def free_convection_horizontal_cylinder(diameter, delta_t, kinematic_viscosity, 
     4.7
     """
     ra = rayleigh_number(diameter, delta_t, kinematic_viscosity, diffusivity, expansion)
-    pr = np.asarray(kinematic_viscosity, dtype=float) / np.asarray(diffusivity, dtype=float)
+    pr = np.divide(kinematic_viscosity, diffusivity)
     nusselt = (0.60 + 0.387 * ra ** (1 / 6) / (1 + (0.559 / pr) ** (9 / 16)) ** (8 / 27)) ** 2
-    return nusselt * np.asarray(conductivity, dtype=float) / diameter
+    return nusselt * np.divide(conductivity, diameter)
 
 
 def free_convection_vertical_plate(height, delta_t, kinematic_viscosity, diffusivity,
@@ -347,7 +346,7 @@ def air_properties(temperature):
     >>> round(float(nu) * 1e6, 2), round(float(k), 4), round(float(pr), 3)
     (15.89, 0.0263, 0.707)
     """
-    t = np.asarray(temperature, dtype=float) / 300.0
+    t = np.divide(temperature, 300.0)
     nu = 15.89e-6 * t**1.72
     k = 0.0263 * t**0.83
     pr = 0.707 * t**-0.04
