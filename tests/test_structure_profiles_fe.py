@@ -143,11 +143,12 @@ def test_lip_force_from_fe_and_the_speed_cycle(tmp_path, monkeypatch):
     assert cases["constant"].lip.contact_width == "constant"
     assert LipSpec(force="fe", contact_width="constant").contact_width == "constant"
 
-    # Band check, not a validation (generic section, moulded interference estimated):
-    # 0.15 N/mm is the rotary model's constant, the middle of the 0.1-0.2 N/mm of new lips
-    # (rotary/lip.py); the FE must land within a factor of 1.5 of it.
+    # Band check, not a validation (generic section, moulded interference estimated): the
+    # only published range found, 100-200 N/m radial force of oil seals (a seal maker's
+    # technical article, secondary; rotary/lip.py DEFAULT_LOAD_PER_LENGTH), whose middle is
+    # the rotary model's constant.  No primary measured value for this seal exists here.
     per_mm = t["F_tip_per_length_N_per_mm"].iloc[0]
-    assert 0.10 < per_mm < 0.225
+    assert 0.10 < per_mm < 0.20
     # New lips touch over 0.1-0.2 mm (rotary/lip.py default_contact_width); the sharp edge
     # must give a band of that order, not a face lying on the shaft (the earlier 2 mm).
     assert 0.08 < t["contact_width_mm"].iloc[0] < 0.3

@@ -65,8 +65,11 @@ __all__ = [
 LIP_FORCE_FREQUENCY = 0.01
 
 #: Radial load per unit circumference of a DIN 3760 lip [N/m]: 0.15 N/mm, the middle of
-#: the 0.1-0.2 N/mm typical of NBR lips measured on split-shaft rigs (DIN 3761-9; handbook
-#: range, not checked against one measured source) -- 38 N on an 80 mm shaft.
+#: the 100-200 N/m to which oil-seal radial forces are "generally chosen" (100-150 N/m for
+#: high-speed seals; longest life near 100 N/m) in a seal maker's technical article
+#: (http://chrisdelle.com/n1208105.htm, Chinese, unattributed -- a secondary source; no
+#: primary split-shaft measurement, DIN 3761-9 / SAE J1901, could be read) -- 38 N on an
+#: 80 mm shaft.
 DEFAULT_LOAD_PER_LENGTH = 150.0
 
 #: Hoop pre-strain of the lip ring on the shaft, ε₀ = δ/R [-]: 8 %, the strain at which the
