@@ -80,6 +80,14 @@ def test_wave_lip_has_less_torque_and_runs_cooler(speed_cycle):
     reductions, groove, contact = _wave_vs_plain(speed_cycle)
     assert np.all(reductions > 0.05)
     assert groove > 0 and contact > 0
+    # ... and within what SKF states for its WAVE lips: "up to 20% less friction ... resulting
+    # in up to 30% lower temperatures" than plain lips (SKF radial shaft seals, "Sealing lip
+    # design"; bounds, no test conditions given).  Temperature: the contact's rise above
+    # ambient at the end of the cycle (today 7-17 % and 14 %).
+    assert np.all(reductions <= 0.20)
+    ambient = speed_cycle["plain"].case.environment.ambient_temperature - 273.15
+    rise = {k: r.steps[-1]["T_contact_C"] - ambient for k, r in speed_cycle.items()}
+    assert 0.0 < 1.0 - rise["wave"] / rise["plain"] <= 0.30
 
 
 @pytest.mark.xfail(strict=True, reason="seed claim not reproduced by the derived wave "
