@@ -23,7 +23,7 @@ A case (see ``examples/pneumatic/cylinder_32.toml``)::
     [air]
     supply_pressure = "6 bar"        # gauge
     temperature = "25 degC"          # ambient and supply air
-    heat_transfer_coefficient = "45 W/(m**2*K)"   # the default; or heat_transfer = "free_convection"
+    heat_transfer_coefficient = "45 W/(m**2*K)"   # default; or heat_transfer = "free_convection"
 
     [valve]
     type = "5/2"                     # or "5/3" with centre = "closed" | "exhaust" | "pressure"

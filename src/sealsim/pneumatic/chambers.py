@@ -37,8 +37,10 @@ Free convection alone, :func:`free_convection_coefficient` (Churchill & Chu [4]_
 chamber pressure), is the lower bound: 6-17 W/(m²·K) for the Ø32 chamber at 1-6 bar and 30 K
 (exponent 1.30-1.37 in the stroke above; the case option ``[air] heat_transfer =
 "free_convection"`` evaluates it at each chamber's state and gives 1.34); the default's excess
-is the stirring by the port jet and the piston.  **Measured air-temperature swing.**  No published temperature record of a
-cylinder chamber could be retrieved with the data needed to simulate it.  The closest measured
+is the stirring by the port jet and the piston.
+
+**Measured air-temperature swing.**  No published temperature record of a cylinder chamber
+could be retrieved with the data needed to simulate it.  The closest measured
 case is the blow-down of a 16-litre air vessel from 7.9 bar through a 2.71 mm orifice [5]_:
 measured drop 41.6 K at 23 s, recovery time constant 27 s at 1 bar.  These equations with
 free convection give a drop of 52.6 K at 20 s and a recovery time constant of 14 s, every
