@@ -35,7 +35,8 @@ from pydantic import Field, field_validator, model_validator
 
 from sealsim.cases import CaseModel, Q
 
-__all__ = ["LipForceTable", "LipSpec", "lip_force_table", "lip_structure_case"]
+__all__ = ["COLD_LIP_MARGIN", "LipForceTable", "LipSpec", "cold_lip_note",
+           "lip_force_table", "lip_structure_case"]
 
 from sealsim.units import ZERO_CELSIUS_K as CELSIUS_0
 Temperature = Q("temperature", gt=200.0, lt=500.0)
@@ -193,6 +194,47 @@ def _cache_dir() -> Path:
         return Path(root) / "lip_fe"
     xdg = os.environ.get("XDG_CACHE_HOME")
     return (Path(xdg) if xdg else Path.home() / ".cache") / "sealsim" / "lip_fe"
+
+
+#: Distance above T_g [K] below which the FE lip force is a mounted-cold upper bound: the
+#: rubber's modulus at the lip-force frequency climbs out of its rubbery plateau there (NBR of
+#: the catalogue: 1.6x its 20 °C value at 0 °C, T_g + 25 K; 11x at -20 °C).
+COLD_LIP_MARGIN = 30.0
+
+
+def cold_lip_note(lowest_temperature: float, glass_transition: float) -> str:
+    """A note for a run whose FE lip force was used within :data:`COLD_LIP_MARGIN` of T_g.
+
+    The FE table scales the whole stress of the installed lip with the rubber's modulus at
+    the lip temperature, i.e. it gives the force of a lip *mounted* at that temperature; a lip
+    mounted warm and then cooled keeps the stress it relaxed to and only its extra
+    interference meets the stiffer rubber, so near T_g the table is an upper bound.
+
+    Parameters
+    ----------
+    lowest_temperature : float
+        Lowest lip (contact) temperature of the run [K].
+    glass_transition : float
+        T_g of the lip's elastomer [K].
+
+    Returns
+    -------
+    str
+        The note, or "" when the run stayed above T_g + COLD_LIP_MARGIN.
+
+    Examples
+    --------
+    >>> cold_lip_note(293.15, 248.15)
+    ''
+    >>> cold_lip_note(263.15, 248.15)[:40]
+    'the lip was at -10 degC, within 30 K of '
+    """
+    if lowest_temperature >= glass_transition + COLD_LIP_MARGIN:
+        return ""
+    return (f"the lip was at {lowest_temperature - CELSIUS_0:.0f} degC, within "
+            f"{COLD_LIP_MARGIN:.0f} K of the rubber's T_g ({glass_transition - CELSIUS_0:.0f} "
+            "degC): the FE lip force there is that of a lip mounted at that temperature, an "
+            "upper bound for a lip mounted warm and then cooled")
 
 
 def lip_force_table(seal, lip: LipSpec, installation_temperature: float = 293.15, *,

@@ -473,6 +473,13 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
         if film:
             notes.append(film)
             warnings.warn(film, FilmRangeWarning, stacklevel=2)
+    if model.case.lip.force == "fe":
+        from sealsim.rotary.lip_fe import cold_lip_note
+
+        cold = cold_lip_note(frame["T_contact_C"].min() + ZERO_CELSIUS_K,
+                             model.elastomer.glass_transition)
+        if cold:
+            notes.append(cold)
     result = RotaryResult(case, frame, _step_summary(frame, steps, speeds, times), energy, notes,
                           {"time_steps": len(rows), "factorisations": stepper.factorisations,
                            "thermal_nodes": model.network.n_cells})
