@@ -32,7 +32,7 @@ import numpy as np
 from scipy.optimize import least_squares
 
 from sealsim.calibration.case import FrictionFitCase, MeasurementModel, parse_law_value
-from sealsim.calibration.statistics import parameter_statistics
+from sealsim.calibration.statistics import compare_signals, parameter_statistics
 from sealsim.errors import InputError
 from sealsim.friction import make_law
 from sealsim.friction.base import ContactInputs, FrictionLaw, validate_parameters
@@ -194,14 +194,12 @@ def run_metrics(run: PreparedRun, predicted: np.ndarray) -> dict[str, Any]:
     samples of the offset-free friction time series.
     """
     f_pred, _ = friction_level(predicted, run.phases)
-    resid = run.friction - predicted
-    ss_tot = float(np.sum((run.friction - run.friction.mean()) ** 2))
+    agreement = compare_signals(run.friction, predicted)
     return {"role": run.spec.role,
             "pressure_bar": float(np.median(run.pressure)) / 1e5,
             "F_measured_N": run.level, "F_predicted_N": f_pred,
             "rel_error": (f_pred - run.level) / run.level if run.level else None,
-            "rmse_N": float(np.sqrt(np.mean(resid ** 2))),
-            "r2": 1.0 - float(np.sum(resid ** 2)) / ss_tot if ss_tot > 0 else None}
+            "rmse_N": agreement["rmse"], "r2": agreement["r2"]}
 
 
 # -- the fit ------------------------------------------------------------------------------------

@@ -32,13 +32,14 @@ import pandas as pd
 from pydantic import Field
 
 from sealsim.calibration.case import ColumnModel
+from sealsim.calibration.statistics import compare_signals
 from sealsim.cases import CaseModel, load_toml, validate_case
 from sealsim.errors import InputError
 from sealsim.measurements import ColumnSpec, read_table
 from sealsim.pneumatic.case import load_pneumatic_case_file
 from sealsim.pneumatic.simulation import simulate
 
-__all__ = ["CompareCase", "PneumaticComparison", "compare_pneumatic_file", "compare_signals"]
+__all__ = ["CompareCase", "PneumaticComparison", "compare_pneumatic_file"]
 
 SIGNALS = {"position": ("x_m", 1.0, "mm", 1e3),
            "pressure_1": ("p1_bar_abs", 1e5, "bar", 1e-5),
@@ -60,22 +61,6 @@ class CompareCase(CaseModel):
     case: str
     variant: str | None = None
     measurement: CompareMeasurement
-
-
-def compare_signals(measured, model) -> dict[str, float]:
-    """RMSE, largest deviation and R² of a model signal against a measured one.
-
-    Examples
-    --------
-    >>> compare_signals(np.array([0.0, 1.0, 2.0]), np.array([0.0, 1.0, 2.0]))
-    {'rmse': 0.0, 'max_abs_error': 0.0, 'r2': 1.0}
-    """
-    measured = np.asarray(measured, dtype=float)
-    resid = measured - np.asarray(model, dtype=float)
-    ss_tot = float(np.sum((measured - measured.mean()) ** 2))
-    return {"rmse": float(np.sqrt(np.mean(resid ** 2))),
-            "max_abs_error": float(np.max(np.abs(resid))),
-            "r2": 1.0 - float(np.sum(resid ** 2)) / ss_tot if ss_tot > 0 else None}
 
 
 @dataclass

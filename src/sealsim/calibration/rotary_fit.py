@@ -41,7 +41,7 @@ from sealsim.calibration.rotary_case import (
     expand_dotted,
     parse_case_value,
 )
-from sealsim.calibration.statistics import parameter_statistics
+from sealsim.calibration.statistics import compare_signals, parameter_statistics
 from sealsim.cases import apply_overrides, validate_case
 from sealsim.errors import InputError, ModelError
 from sealsim.measurements import ColumnSpec, read_measurement, step_averages
@@ -396,13 +396,10 @@ def step_agreement(rows: list[dict]) -> dict[str, Any]:
 
 
 def _agreement(measured, predicted, prefix: str, unit: str) -> dict[str, float | None]:
-    measured, predicted = np.asarray(measured, float), np.asarray(predicted, float)
-    if not measured.size:
+    if not np.size(measured):
         return {f"{prefix}_rmse_{unit}": None, f"{prefix}_r2": None}
-    resid = predicted - measured
-    ss_tot = float(np.sum((measured - np.mean(measured)) ** 2))
-    return {f"{prefix}_rmse_{unit}": float(np.sqrt(np.mean(resid ** 2))),
-            f"{prefix}_r2": 1.0 - float(np.sum(resid ** 2)) / ss_tot if ss_tot > 0 else None}
+    agreement = compare_signals(measured, predicted)
+    return {f"{prefix}_rmse_{unit}": agreement["rmse"], f"{prefix}_r2": agreement["r2"]}
 
 
 # -- the fit ------------------------------------------------------------------------------------

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["parameter_report", "parameter_statistics"]
+__all__ = ["compare_signals", "parameter_report", "parameter_statistics"]
 
 
 def parameter_statistics(jacobian, residuals, *, rcond=1e-8, max_relative_error=0.5,
@@ -139,3 +139,20 @@ def parameter_report(result, texts: dict[str, str]) -> dict:
             "identifiable": bool(result.identifiable[i]),
             "notes": result.reasons[i]}
     return table
+
+
+def compare_signals(measured, model) -> dict[str, float | None]:
+    """RMSE, largest deviation and coefficient of determination of a model signal against a
+    measured one: R² = 1 − Σ(y − ŷ)²/Σ(y − ȳ)², None when the measurement does not vary.
+
+    Examples
+    --------
+    >>> compare_signals(np.array([0.0, 1.0, 2.0]), np.array([0.0, 1.0, 2.0]))
+    {'rmse': 0.0, 'max_abs_error': 0.0, 'r2': 1.0}
+    """
+    measured = np.asarray(measured, dtype=float)
+    resid = measured - np.asarray(model, dtype=float)
+    ss_tot = float(np.sum((measured - measured.mean()) ** 2))
+    return {"rmse": float(np.sqrt(np.mean(resid ** 2))),
+            "max_abs_error": float(np.max(np.abs(resid))),
+            "r2": 1.0 - float(np.sum(resid ** 2)) / ss_tot if ss_tot > 0 else None}

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from sealsim.calibration.statistics import compare_signals
 from sealsim.plotting import new_figure
 
 __all__ = ["plot_overlay", "plot_parity", "plot_rotary_overlay", "plot_signals"]
@@ -85,8 +86,8 @@ def plot_parity(points, title: str = "", quantity: str = "friction level", unit:
     for label, _, m, p in points if annotate else ():
         ax.annotate(str(label), (m, p), textcoords="offset points", xytext=(5, -10),
                     fontsize=8)
-    ss_tot = float(np.sum((meas - meas.mean()) ** 2))
-    r2 = 1.0 - float(np.sum((meas - pred) ** 2)) / ss_tot if ss_tot > 0 else float("nan")
+    r2 = compare_signals(meas, pred)["r2"]
+    r2 = float("nan") if r2 is None else r2
     ax.set_xlim(bottom, top)
     ax.set_ylim(bottom, top)
     ax.set_aspect("equal")

@@ -25,6 +25,17 @@ def _range_text(lo: float | None, hi: float | None, lo_open: bool, hi_open: bool
     return "finite"
 
 
+def _outside(arr: np.ndarray, lo: float | None, hi: float | None, lo_open: bool,
+             hi_open: bool) -> np.ndarray:
+    """Mask of the values that are not finite or lie outside the (open or closed) range."""
+    bad = ~np.isfinite(arr)
+    if lo is not None:
+        bad |= (arr <= lo) if lo_open else (arr < lo)
+    if hi is not None:
+        bad |= (arr >= hi) if hi_open else (arr > hi)
+    return bad
+
+
 def _array(
     value: Any,
     name: str,
@@ -42,11 +53,7 @@ def _array(
         raise InputError(
             f"{name} must be a number or an array of numbers [{unit}]; got {value!r}"
         ) from exc
-    bad = ~np.isfinite(arr)
-    if lo is not None:
-        bad |= (arr <= lo) if lo_open else (arr < lo)
-    if hi is not None:
-        bad |= (arr >= hi) if hi_open else (arr > hi)
+    bad = _outside(arr, lo, hi, lo_open, hi_open)
     if np.any(bad):
         first = arr[bad].flat[0]
         n_bad = int(np.count_nonzero(bad))

@@ -65,7 +65,14 @@ import numpy as np
 from scipy.optimize import minimize_scalar
 
 from sealsim.errors import InputError
-from sealsim.properties._checks import _array, _broadcast, _out, _range_text, _scalar
+from sealsim.properties._checks import (
+    _array,
+    _broadcast,
+    _out,
+    _outside,
+    _range_text,
+    _scalar,
+)
 from sealsim.properties.rubber_modulus import (
     DEFAULT_TRANSITION_ASYMMETRY,
     DEFAULT_TRANSITION_LOCATION,
@@ -176,11 +183,7 @@ def _check_field(
         v = float(value)
     except (TypeError, ValueError):
         raise _field_error(field, value, f"a number [{unit}]") from None
-    if (
-        not math.isfinite(v)
-        or (lo is not None and (v <= lo if lo_open else v < lo))
-        or (hi is not None and (v >= hi if hi_open else v > hi))
-    ):
+    if _outside(np.float64(v), lo, hi, lo_open, hi_open):
         allowed = _range_text(lo, hi, lo_open, hi_open, unit) + (f" ({why})" if why else "")
         raise _field_error(field, v, allowed, unit)
     return v
