@@ -49,7 +49,7 @@ from sealsim.measurements.readers import QUANTITIES, ColumnSpec
 from sealsim.pneumatic.case import MapModel
 
 __all__ = ["ContactModel", "FitParameter", "FrictionFitCase", "MeasurementModel",
-           "parse_field_value", "parse_law_value"]
+           "check_measurements", "parse_field_value", "parse_law_value"]
 
 
 class FitParameter(CaseModel):
@@ -148,12 +148,7 @@ class FrictionFitCase(CaseModel):
 
     @model_validator(mode="after")
     def _check(self):
-        names = [m.name for m in self.measurements]
-        dupes = sorted({n for n in names if names.count(n) > 1})
-        if dupes:
-            raise ValueError(f"measurement names must be unique, repeated: {dupes}")
-        if not any(m.role == "fit" for m in self.measurements):
-            raise ValueError("at least one measurement needs role = 'fit'")
+        check_measurements(self.measurements)
         fields = type(self.friction).model_fields
         pnames = [p.name for p in self.fit.parameters]
         for p in self.fit.parameters:
@@ -173,6 +168,17 @@ class FrictionFitCase(CaseModel):
             if target in pnames:
                 raise ValueError(f"fit.tied.{target}: it is fitted itself; remove one of the two")
         return self
+
+
+def check_measurements(measurements) -> None:
+    """The measurements of a fit case: unique names, at least one with role 'fit' (ValueError
+    otherwise, which the case validation reports with the table it belongs to)."""
+    names = [m.name for m in measurements]
+    dupes = sorted({n for n in names if names.count(n) > 1})
+    if dupes:
+        raise ValueError(f"measurement names must be unique, repeated: {dupes}")
+    if not any(m.role == "fit" for m in measurements):
+        raise ValueError("at least one measurement needs role = 'fit'")
 
 
 def parse_field_value(field, label: str, value, where: str) -> float:

@@ -47,7 +47,7 @@ from typing import Any, Literal
 from pydantic import Field, model_validator
 from pydantic.fields import FieldInfo
 
-from sealsim.calibration.case import ColumnModel, parse_field_value
+from sealsim.calibration.case import ColumnModel, check_measurements, parse_field_value
 from sealsim.cases import CaseModel, Q, apply_overrides, validate_case
 from sealsim.errors import InputError
 from sealsim.rotary.case import RotaryCase
@@ -241,12 +241,7 @@ class RotaryFitCase(CaseModel):
         if self.model.duty is not None:
             raise ValueError("model.duty: the duty cycle of a fit is each measurement's "
                              "measured speed; remove [model.duty]")
-        names = [m.name for m in self.measurements]
-        dupes = sorted({n for n in names if names.count(n) > 1})
-        if dupes:
-            raise ValueError(f"measurement names must be unique, repeated: {dupes}")
-        if not any(m.role == "fit" for m in self.measurements):
-            raise ValueError("at least one measurement needs role = 'fit'")
+        check_measurements(self.measurements)
         paths = [p.path for p in self.fit.parameters]
         for p in self.fit.parameters:
             try:
