@@ -91,7 +91,7 @@ def test_wave_lip_has_less_torque_and_runs_cooler(speed_cycle):
 
 
 @pytest.mark.xfail(strict=True, reason="seed claim not reproduced by the derived wave "
-                   "mechanism: -14 % torque, 4 K cooler groove (README, Validation)")
+                   "mechanism: -14 % torque, 4 K cooler groove (docs/guide/validation_rotary.md)")
 def test_wave_lip_reproduces_seed_magnitudes(speed_cycle):
     # Seed 000: "about 20 %" less torque and "more than 10 °C" less self-induced temperature;
     # the band 15-25 % (mean over steps >= 100 rpm) and >= 10 K at the groove.
@@ -267,7 +267,7 @@ def test_contact_is_above_a_held_sump_at_4_m_s_in_both_setups():
         assert 0 < slow < fast
 
 
-# Published contact over-temperatures above the sump (README, Validation, finding 1): seal
+# Published contact over-temperatures above the sump (docs/guide/validation_rotary.md, finding 1): seal
 # makers put the lip 20-50 K above the sealed oil (svks-rubberseal.com, 2018, oil-seal selection
 # guidance); the summary of rig thermocouple/thermography studies: 15-30 K at about
 # 4 m/s, 30-50 K at 10-13 m/s.  Rig set-up, 80 mm NBR seal, VG 68, 80 °C sump.
@@ -281,7 +281,7 @@ def test_rig_contact_rise_at_12_6_m_s_within_published_range():
 
 
 @pytest.mark.xfail(strict=True, reason="at 4.2 m/s the rig set-up gives +12 K, below the "
-                   "15-30 K of the issue's summary (README, Validation, finding 1)")
+                   "15-30 K of the issue's summary (docs/guide/validation_rotary.md, finding 1)")
 def test_rig_contact_rise_at_4_2_m_s_within_published_range():
     assert 15 <= _rise_over_sump({"setup": "test_rig"}, 1000) <= 30
 

@@ -46,7 +46,7 @@ def test_xring_against_oring_of_the_same_size():
     with their own glands, which are deeper than O-ring glands (Parker O-Ring & Engineered
     Seals Division, Seal Solutions Guide, "X-rings": "the groove is designed deeper than an
     O-ring groove"), i.e. with less squeeze, not with a softer section
-    (test_xring_in_its_own_gland_needs_less_force; the README discusses it).
+    (test_xring_in_its_own_gland_needs_less_force; docs/guide/seal_profiles.md discusses it).
     """
     base = {"gland": {"sealing_diameter": "20 mm", "groove_width": "5.4 mm"},
             "mesh": {"level": "coarse"},
@@ -136,7 +136,7 @@ def test_lip_force_from_fe_and_the_speed_cycle(tmp_path, monkeypatch):
     faster than E, because the warm rubber ring also expands off the shaft (its interference
     shrinks). The radial force and the contact band of the new lip are checked against the
     bands the rotary model documents (no published radial force of a DIN 3760 seal could be
-    retrieved to compare with, see the README). Then the speed cycle example runs with
+    retrieved to compare with, see docs/guide/seal_profiles.md). Then the speed cycle example runs with
     lip.force = "fe" (shortened), the contact width from the FE too."""
     from sealsim.properties.elastomers import get_elastomer
     from sealsim.rotary.lip import LIP_FORCE_FREQUENCY

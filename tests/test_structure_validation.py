@@ -188,7 +188,7 @@ def test_cooling_below_glass_transition_lowers_force_faster():
     is the same in both runs only up to the relaxation left at -45 to -60 °C; measured 0.265).
     Seed 001 reports the gap at about -80 °C; this model opens it at -35 °C (coarse mesh),
     2 K later than with α_r: the gap follows the mechanical freezing of the catalogue
-    NBR (see README, Validation of the structure model).
+    NBR (see docs/guide/validation_structure.md).
     """
     from sealsim.properties.elastomers import get_elastomer
 
