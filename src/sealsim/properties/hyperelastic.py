@@ -45,15 +45,23 @@ from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
+import numpy as np
+
 from sealsim.errors import InputError
 
 __all__ = [
     "HYPERELASTIC_MODELS",
+    "MODES",
     "HyperelasticModel",
     "check_hyperelastic",
     "initial_shear_modulus",
     "model_name",
+    "nominal_stress",
+    "principal_stretches",
 ]
+
+#: The homogeneous incompressible test deformations (names used in fit files and reports).
+MODES = ("uniaxial", "equibiaxial", "planar")
 
 #: Arruda-Boyce series coefficients a_i (five terms of the inverse Langevin expansion).
 ARRUDA_BOYCE_COEFFICIENTS = (1 / 2, 1 / 20, 11 / 1050, 19 / 7000, 519 / 673750)
@@ -215,3 +223,104 @@ def initial_shear_modulus(model: str, parameters: Mapping[str, Any]) -> float:
     beta = 1.0 / float(p["limit"]) ** 2
     return 2.0 * float(p["C1"]) * sum(i * a * 3.0 ** (i - 1) * beta ** (i - 1)
                                       for i, a in enumerate(ARRUDA_BOYCE_COEFFICIENTS, 1))
+
+
+def principal_stretches(mode: str, stretch) -> np.ndarray:
+    """Principal stretches (3, n) of a homogeneous incompressible test deformation:
+    uniaxial (λ, λ^-1/2, λ^-1/2), equibiaxial (λ, λ, λ^-2), planar (λ, 1, 1/λ).
+
+    Examples
+    --------
+    >>> principal_stretches("planar", [2.0]).ravel().tolist()
+    [2.0, 1.0, 0.5]
+    """
+    lam = np.atleast_1d(np.asarray(stretch, dtype=float))
+    if np.any(~np.isfinite(lam)) or np.any(lam <= 0):
+        raise InputError(f"stretches must be finite and > 0; got {stretch!r}")
+    if mode == "uniaxial":
+        return np.array([lam, lam ** -0.5, lam ** -0.5])
+    if mode == "equibiaxial":
+        return np.array([lam, lam, lam ** -2.0])
+    if mode == "planar":
+        return np.array([lam, np.ones_like(lam), 1.0 / lam])
+    raise InputError(f"deformation mode {mode!r} is not known; choose one of "
+                     f"{', '.join(MODES)}")
+
+
+def _invariant_derivatives(name: str, p: Mapping[str, Any], i1, i2):
+    """∂W/∂I1, ∂W/∂I2 of the invariant-based models."""
+    if name == "neo_hooke":
+        return 0.5 * p["mu"] + 0.0 * i1, 0.0 * i1
+    if name == "mooney_rivlin":
+        return p["C10"] + 0.0 * i1, p["C01"] + 0.0 * i1
+    if name == "yeoh":
+        x = i1 - 3.0
+        return p["C10"] + 2.0 * p["C20"] * x + 3.0 * p["C30"] * x ** 2, 0.0 * i1
+    if name == "third_order_deformation":
+        x, y = i1 - 3.0, i2 - 3.0
+        return (p["C10"] + p["C11"] * y + 2.0 * p["C20"] * x + 3.0 * p["C30"] * x ** 2,
+                p["C01"] + p["C11"] * x)
+    beta = 1.0 / float(p["limit"]) ** 2   # arruda_boyce
+    w1 = sum(i * a * beta ** (i - 1) * i1 ** (i - 1)
+             for i, a in enumerate(ARRUDA_BOYCE_COEFFICIENTS, 1))
+    return p["C1"] * w1, 0.0 * i1
+
+
+def nominal_stress(model: str, parameters: Mapping[str, Any], mode: str, stretch
+                   ) -> np.ndarray:
+    r"""Nominal (engineering) stress P1 [Pa] of a homogeneous incompressible test.
+
+    With the principal stretches of :func:`principal_stretches` and the lateral direction 3
+    free of stress (the pressure eliminated),
+
+    .. math::
+
+        P_1 = \frac{\partial W}{\partial\lambda_1}
+              - \frac{\lambda_3}{\lambda_1}\frac{\partial W}{\partial\lambda_3},
+        \qquad \frac{\partial W}{\partial\lambda_i} = 2\lambda_i\left(W_1 +
+        W_2\,(I_1 - \lambda_i^2)\right)
+
+    for invariant-based energies (:math:`W_k = \partial W/\partial I_k`; Treloar 1975,
+    ch. 10), and :math:`\partial W/\partial\lambda_i = \sum_k (2\mu_k/\alpha_k)
+    \lambda_i^{\alpha_k - 1}` for Ogden.  The same energies as FElupe's (tests compare with
+    ``felupe.ViewMaterialIncompressible`` to 1e-9).
+
+    Parameters
+    ----------
+    model : str
+        A name of :data:`HYPERELASTIC_MODELS`.
+    parameters : mapping
+        Its parameters, stresses in Pa.
+    mode : {"uniaxial", "equibiaxial", "planar"}
+        Test deformation.
+    stretch : array_like
+        λ [-] in the loading direction.
+
+    Returns
+    -------
+    numpy.ndarray
+        P1 [Pa].
+
+    Examples
+    --------
+    Neo-Hooke in uniaxial tension, P1 = μ (λ − λ⁻²):
+
+    >>> float(nominal_stress("neo_hooke", {"mu": 1e6}, "uniaxial", [2.0])[0]) / 1e6
+    1.75
+    """
+    name = model_name(model)
+    lam = principal_stretches(mode, stretch)
+    if name == "ogden":
+        def dw(li):
+            return sum(2.0 * m / a * li ** (a - 1.0)
+                       for m, a in zip(np.atleast_1d(parameters["mu"]),
+                                       np.atleast_1d(parameters["alpha"])))
+    else:
+        sq = lam ** 2
+        i1 = sq.sum(axis=0)
+        i2 = 0.5 * (i1 ** 2 - (sq ** 2).sum(axis=0))
+        w1, w2 = _invariant_derivatives(name, parameters, i1, i2)
+
+        def dw(li):
+            return 2.0 * li * (w1 + w2 * (i1 - li ** 2))
+    return dw(lam[0]) - lam[2] / lam[0] * dw(lam[2])

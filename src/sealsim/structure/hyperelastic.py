@@ -42,20 +42,21 @@ from typing import Any
 import numpy as np
 
 from sealsim.errors import InputError
-from sealsim.properties.hyperelastic import HYPERELASTIC_MODELS, model_name
+from sealsim.properties.hyperelastic import (
+    HYPERELASTIC_MODELS,
+    MODES,
+    model_name,
+    principal_stretches,
+)
 
 __all__ = [
     "MODES",
     "ScaledIsochoric",
     "drucker_stable",
+    "felupe_nominal_stress",
     "felupe_umat",
-    "nominal_stress",
-    "principal_stretches",
     "stability_limits",
 ]
-
-#: The homogeneous test deformations (names used in fit files and reports).
-MODES = ("uniaxial", "equibiaxial", "planar")
 
 #: orthonormal basis of the incompressible strain increments (Σ dε_i = 0)
 _DEVIATORIC = np.array([[1.0, -1.0, 0.0], [1.0, 1.0, -2.0]]) / np.array([[math.sqrt(2.0)],
@@ -99,7 +100,15 @@ def felupe_umat(model: str, parameters: Mapping[str, Any], scale: float = 1.0):
         elif spec.terms:
             value = np.asarray(value, dtype=float)
         kwargs[p] = value
-    return fem.Hyperelastic(getattr(models, name), **kwargs)
+    return fem.Hyperelastic(_ogden if name == "ogden" else getattr(models, name), **kwargs)
+
+
+def _ogden(C, mu, alpha):
+    """FElupe's Ogden energy; one term may be given as scalars (FElupe's ``optimize`` passes
+    a one-element parameter as a scalar)."""
+    from felupe.constitution.tensortrax.models.hyperelastic import ogden
+
+    return ogden(C, np.atleast_1d(mu), np.atleast_1d(alpha))
 
 
 class ScaledIsochoric:
@@ -130,36 +139,17 @@ class ScaledIsochoric:
         return [self.scale * self.umat.hessian(x)[0]]
 
 
-def principal_stretches(mode: str, stretch) -> np.ndarray:
-    """Principal stretches (3, n) of a homogeneous incompressible test deformation.
-
-    Examples
-    --------
-    >>> principal_stretches("planar", [2.0]).ravel().tolist()
-    [2.0, 1.0, 0.5]
-    """
-    lam = np.atleast_1d(np.asarray(stretch, dtype=float))
-    if np.any(~np.isfinite(lam)) or np.any(lam <= 0):
-        raise InputError(f"stretches must be finite and > 0; got {stretch!r}")
-    if mode == "uniaxial":
-        return np.array([lam, lam ** -0.5, lam ** -0.5])
-    if mode == "equibiaxial":
-        return np.array([lam, lam, lam ** -2.0])
-    if mode == "planar":
-        return np.array([lam, np.ones_like(lam), 1.0 / lam])
-    raise InputError(f"deformation mode {mode!r} is not known; choose one of "
-                     f"{', '.join(MODES)}")
-
-
-def nominal_stress(model: str, parameters: Mapping[str, Any], mode: str, stretch
-                   ) -> np.ndarray:
-    """Nominal stress P1 [Pa] of a homogeneous incompressible test at the given stretches.
+def felupe_nominal_stress(model: str, parameters: Mapping[str, Any], mode: str, stretch
+                          ) -> np.ndarray:
+    """Nominal stress P1 [Pa] of a homogeneous incompressible test at the given stretches,
+    evaluated by FElupe (``ViewMaterialIncompressible``; the reference of the closed forms of
+    :func:`sealsim.properties.hyperelastic.nominal_stress`).
 
     Examples
     --------
     Neo-Hooke in uniaxial tension, P1 = μ (λ − λ⁻²):
 
-    >>> float(nominal_stress("neo_hooke", {"mu": 1e6}, "uniaxial", [2.0])[0]) / 1e6
+    >>> float(felupe_nominal_stress("neo_hooke", {"mu": 1e6}, "uniaxial", [2.0])[0]) / 1e6
     1.75
     """
     principal_stretches(mode, stretch)  # checks mode and stretches
