@@ -321,8 +321,8 @@ def fit_prony(frequency, storage, loss, terms_per_decade: float = 2.0,
     Examples
     --------
     >>> f = np.logspace(-3, 3, 25)
-    >>> tau = 10.0 ** np.arange(-3.0, 3.0)
-    >>> e_i = 1e6 * np.exp(-0.5 * (np.log10(tau) / 1.5) ** 2)
+    >>> tau = 10.0 ** np.arange(-3.0, 3.0, 0.5)
+    >>> e_i = 5e5 * np.exp(-0.5 * (np.log10(tau) / 1.5) ** 2)
     >>> w = 2 * np.pi * f
     >>> e1 = prony_storage_modulus(w, 2e6, e_i, tau)
     >>> e2 = prony_loss_modulus(w, 2e6, e_i, tau)
