@@ -169,6 +169,9 @@ CASE_KINDS = (
              frozenset({"model", "averaging"})),
     CaseKind("pneumatic compare", "sealsim.calibration.pneumatic_compare.CompareCase",
              "sealsim pneumatic compare", frozenset({"case", "variant", "measurement"})),
+    CaseKind("material fit", "sealsim.calibration.material_fit.MaterialFitCase",
+             "sealsim material fit",
+             frozenset({"compound", "hyperelastic", "viscoelastic", "dilatometry"})),
     CaseKind("study", "sealsim.studies.spec.StudyFile", "sealsim study run",
              frozenset({"study", "base", "set", "factors", "outputs", "series"})),
 )

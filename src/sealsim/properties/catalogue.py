@@ -292,6 +292,9 @@ class ElastomerEntry(CaseModel):
     specific_heat: Q("specific_heat")
     thermal_expansion: Q("thermal_expansion") = Field(
         description="linear thermal expansion coefficient")
+    glassy_thermal_expansion: Q("thermal_expansion") | None = Field(None, description=(
+        "linear expansion coefficient of the glass (e.g. from dilatometry); default the "
+        "Simha-Boyer estimate 0.31 x thermal_expansion"))
     c10: Q("pressure") | None = Field(None, description=(
         "Mooney-Rivlin C10; with a [NAME.hyperelastic] table default mu0/2 of that model"))
     c01: Q("pressure") | None = Field(None, description=(
@@ -337,6 +340,7 @@ class ElastomerEntry(CaseModel):
             "service_range": (self.service_min, self.service_max), "density": self.density,
             "thermal_conductivity": self.thermal_conductivity,
             "specific_heat": self.specific_heat, "thermal_expansion": self.thermal_expansion,
+            "glassy_thermal_expansion": self.glassy_thermal_expansion,
             "c10": self.c10, "c01": self.c01, "bulk_modulus": self.bulk_modulus,
             "wlf_c1": wlf.c1, "wlf_c2": wlf.c2,
             "wlf_reference_temperature": (self.glass_transition

@@ -253,6 +253,9 @@ class Elastomer:
         [K]; default ``reference_temperature``.
     hardness_shore_a : float, optional
         Shore A hardness [-] (information only).
+    glassy_thermal_expansion : float, optional
+        Measured linear CTE of the glass α_g [1/K] (default Simha–Boyer, see
+        :attr:`glassy_expansion`).
     hyperelastic : tuple, optional
         ``(model, ((parameter, value), ...))`` of
         :func:`~sealsim.properties.hyperelastic.check_hyperelastic` (stresses in Pa, at
@@ -295,6 +298,7 @@ class Elastomer:
     prony_reference_temperature: float | None = None
     hardness_shore_a: float | None = None
     hyperelastic: tuple | None = None
+    glassy_thermal_expansion: float | None = None
 
     # -- validation ---------------------------------------------------------------------------
 
@@ -415,6 +419,10 @@ class Elastomer:
                 "hardness_shore_a",
                 _check_field("hardness_shore_a", self.hardness_shore_a, "Shore A", 0.0, 100.0),
             )
+        if self.glassy_thermal_expansion is not None:
+            set_("glassy_thermal_expansion", _check_field(
+                "glassy_thermal_expansion", self.glassy_thermal_expansion, "1/K", 0.0,
+                self.thermal_expansion, why="between 0 and thermal_expansion"))
         if self.hyperelastic is not None:
             from sealsim.properties.hyperelastic import check_hyperelastic
 
@@ -890,7 +898,8 @@ class Elastomer:
 
     @property
     def glassy_expansion(self) -> float:
-        """Linear CTE of the glassy state α_g [1/K]: the Simha–Boyer estimate 0.31·α_r
+        """Linear CTE of the glassy state α_g [1/K]: ``glassy_thermal_expansion`` where given
+        (measured, e.g. by dilatometry), else the Simha–Boyer estimate 0.31·α_r
         (:func:`~sealsim.properties.thermal_expansion.simha_boyer_glassy_expansion`; no
         compound of the catalogue gives a measured glassy value).
 
@@ -899,6 +908,8 @@ class Elastomer:
         >>> round(get_elastomer("NBR").glassy_expansion * 1e4, 3)
         0.591
         """
+        if self.glassy_thermal_expansion is not None:
+            return self.glassy_thermal_expansion
         return float(simha_boyer_glassy_expansion(self.thermal_expansion))
 
     @property
