@@ -285,7 +285,7 @@ def fit_expansion(temperature, linear_strain) -> ExpansionFit:
                                                [t[-2], 50.0, 50.0, np.inf]))
         if best is None or res.cost < best.cost:
             best = res
-    stats = parameter_statistics(best.jac, best.fun * span, values=best.x)
+    stats = parameter_statistics(best.jac, best.fun, values=best.x)
     se = stats["standard_errors"]
     fit = ExpansionFit(float(best.x[0]), float(best.x[2] * 1e-4), float(best.x[1] * 1e-4),
                        {"glass_transition": float(se[0]), "glassy": float(se[1] * 1e-4),
@@ -419,7 +419,7 @@ def _q(value: float, unit: str) -> str:
     if unit == "degC":
         return f"{value - ZERO_CELSIUS_K:.6g} degC"
     magnitude = unit_registry().Quantity(value, _SI[unit]).to(unit).magnitude
-    return f"{magnitude:.8g} {unit}"
+    return f"{magnitude:.12g} {unit}"
 
 
 _SI = {"MPa": "Pa", "kg/m^3": "kg/m^3", "W/(m*K)": "W/(m*K)", "J/(kg*K)": "J/(kg*K)",

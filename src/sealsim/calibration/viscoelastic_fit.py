@@ -7,7 +7,7 @@ several temperatures (isotherms).
    shifted along log f onto its colder neighbour: the shift Δ = log10 a_T(T_k+1) −
    log10 a_T(T_k) is the mean, over the warmer curve's points, of the log f at which the
    colder curve has the same storage modulus minus the point's own log f (the colder curve
-   interpolated in log–log and continued as a power law from its three end points where the
+   interpolated in log–log by monotone cubics and continued as a power law from its three end points where the
    two do not overlap; pairwise shifting as in Gergesova et al. 2011 and in pyvisco).  The
    storage modulus alone defines the shift: the loss modulus of many polymers carries
    secondary relaxations that do not shift with the main one, so it is the check (it should
@@ -53,7 +53,8 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from scipy.optimize import least_squares, minimize_scalar, nnls
+from scipy.interpolate import PchipInterpolator
+from scipy.optimize import least_squares, nnls
 
 from sealsim.calibration.statistics import compare_signals, parameter_statistics
 from sealsim.errors import InputError
@@ -167,18 +168,24 @@ class PronyFit:
 
 
 def _inverse(x, y):
-    """log f as a function of log E' of one isotherm (E' made non-decreasing in f), with
+    """log f as a function of log E' of one isotherm (E' made increasing in f; monotone cubic
+    interpolation, PCHIP, so that the curvature of the curve does not bias the shift), with
     straight-line (power-law) continuation from its three end points on either side."""
     y = np.maximum.accumulate(y)
+    keep = np.r_[True, np.diff(y) > 0]
+    xs, ys = x[keep], y[keep]
+    inner = PchipInterpolator(ys, xs) if ys.size >= 2 else None
     lo = np.polyfit(y[:3], x[:3], 1) if np.ptp(y[:3]) > 0 else None
     hi = np.polyfit(y[-3:], x[-3:], 1) if np.ptp(y[-3:]) > 0 else None
 
     def f(v):
-        out = np.interp(v, y, x)
+        v = np.asarray(v, dtype=float)
+        out = inner(np.clip(v, ys[0], ys[-1])) if inner is not None else np.full(v.shape,
+                                                                                   xs[0])
         if lo is not None:
-            out = np.where(v < y[0], np.polyval(lo, v), out)
+            out = np.where(v < ys[0], np.polyval(lo, v), out)
         if hi is not None:
-            out = np.where(v > y[-1], np.polyval(hi, v), out)
+            out = np.where(v > ys[-1], np.polyval(hi, v), out)
         return out
     return f
 
