@@ -169,6 +169,9 @@ CASE_KINDS = (
              frozenset({"model", "averaging"})),
     CaseKind("pneumatic compare", "sealsim.calibration.pneumatic_compare.CompareCase",
              "sealsim pneumatic compare", frozenset({"case", "variant", "measurement"})),
+    CaseKind("material fit", "sealsim.calibration.material_fit.MaterialFitCase",
+             "sealsim material fit",
+             frozenset({"compound", "hyperelastic", "viscoelastic", "dilatometry"})),
     CaseKind("study", "sealsim.studies.spec.StudyFile", "sealsim study run",
              frozenset({"study", "base", "set", "factors", "outputs", "series"})),
 )
@@ -216,12 +219,40 @@ def wrong_kind_message(model: type[BaseModel], data: Any) -> str | None:
             f"{expected.name} case: run it with {found.command}")
 
 
+#: keys whose value may name a compound file (``material = "my_nbr.toml"``)
+MATERIAL_KEYS = frozenset({"material", "elastomer"})
+
+
+def resolve_material_files(data: Any, base: Path) -> Any:
+    """``data`` with every ``material``/``elastomer`` value that is a relative path of a
+    ``.toml`` compound file made absolute against ``base`` (the case file's folder), in place.
+
+    Examples
+    --------
+    >>> resolve_material_files({"seal": {"material": "my.toml"}}, Path("/cases"))
+    {'seal': {'material': '/cases/my.toml'}}
+    """
+    items = data.items() if isinstance(data, dict) else enumerate(data) \
+        if isinstance(data, list) else ()
+    for key, value in items:
+        if (key in MATERIAL_KEYS and isinstance(value, str)
+                and value.strip().lower().endswith(".toml")
+                and not Path(value.strip()).is_absolute()):
+            data[key] = str(base / value.strip())
+        else:
+            resolve_material_files(value, base)
+    return data
+
+
 def load_toml(path: str | Path) -> dict[str, Any]:
-    """Read a TOML file; a missing file or a syntax error becomes an :class:`InputError`."""
+    """Read a TOML file; a missing file or a syntax error becomes an :class:`InputError`.
+
+    A compound file named by a relative path (``material = "my_nbr.toml"``) is taken relative
+    to this file (:func:`resolve_material_files`)."""
     path = Path(path)
     try:
         with path.open("rb") as fh:
-            return tomllib.load(fh)
+            return resolve_material_files(tomllib.load(fh), path.parent.absolute())
     except FileNotFoundError as exc:
         raise InputError(f"case file {str(path)!r} does not exist") from exc
     except IsADirectoryError as exc:

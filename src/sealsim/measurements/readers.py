@@ -61,6 +61,17 @@ QUANTITIES: dict[str, str] = {
     "temperature": "K",
     "torque": "N*m",
     "speed": "rad/s",
+    # material tests (sealsim material fit): stress-strain curves, DMA, dilatometry
+    "stretch": "dimensionless",
+    "strain": "dimensionless",
+    "stress": "Pa",
+    "frequency": "Hz",
+    "storage_modulus": "Pa",
+    "loss_modulus": "Pa",
+    "complex_modulus": "Pa",
+    "tan_delta": "dimensionless",
+    "linear_strain": "dimensionless",
+    "volume_strain": "dimensionless",
 }
 
 
@@ -154,7 +165,7 @@ def _split(line: str, delimiter: str | None) -> list[str]:
 
 def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | None = None,
                header: bool = False, skip_rows: int = 0, comment: str = "#",
-               name: str | None = None) -> Measurement:
+               name: str | None = None, index: str | None = "time") -> Measurement:
     """Read a text table of numbers with a column mapping (see the module docstring).
 
     Parameters
@@ -173,6 +184,9 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
         Lines starting with this are ignored.
     name : str, optional
         Label of the run (default: the file stem).
+    index : str or None
+        The quantity that must be present and strictly increasing (``"time"``); None for
+        tables without one (a stress-strain curve, a DMA table).
 
     Returns
     -------
@@ -182,7 +196,7 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
     ------
     InputError
         Missing file, a cell that is not a finite number (file, row, column named), a missing
-        column, a time that does not increase, fewer than 3 rows.
+        column, an index (time) that does not increase, fewer than 3 rows.
 
     Examples
     --------
@@ -205,8 +219,8 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
     except UnicodeDecodeError as exc:
         raise InputError(f"measurement file {label!r} is not UTF-8 text (byte {exc.start})") \
             from None
-    if "time" not in {c.quantity for c in columns}:
-        raise InputError(f"{label}: the column mapping needs a time column")
+    if index is not None and index not in {c.quantity for c in columns}:
+        raise InputError(f"{label}: the column mapping needs a {index} column")
     lines = [(k + 1, line) for k, line in enumerate(text.splitlines())]
     lines = lines[skip_rows:]
     lines = [(n, s) for n, s in lines if s.strip() and not s.lstrip().startswith(comment)]
@@ -251,13 +265,15 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
     for c, spec in enumerate(columns):
         convert = _si_factor(spec.unit, spec.quantity, f"{label}, column {spec.column!r}")
         data[spec.quantity] = convert(values[:, c] * spec.scale)
-    time = data["time"]
-    bad = np.flatnonzero(np.diff(time) <= 0)
-    if bad.size:
-        r = int(bad[0]) + 1
-        raise InputError(f"{label}, row {lines[r][0]}, column {indices[0] + 1} (time): time "
-                         f"{values[r, 0]:g} does not increase (previous row: "
-                         f"{values[r - 1, 0]:g}); the time column must be strictly increasing")
+    if index is not None:
+        c = [spec.quantity for spec in columns].index(index)
+        bad = np.flatnonzero(np.diff(data[index]) <= 0)
+        if bad.size:
+            r = int(bad[0]) + 1
+            raise InputError(f"{label}, row {lines[r][0]}, column {indices[c] + 1} ({index}): "
+                             f"{index} {values[r, c]:g} does not increase (previous row: "
+                             f"{values[r - 1, c]:g}); the {index} column must be strictly "
+                             "increasing")
     return Measurement(name or path.stem, label, pd.DataFrame(data))
 
 

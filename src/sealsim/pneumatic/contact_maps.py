@@ -554,8 +554,12 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
     from sealsim.structure.fingerprint import model_fingerprint
 
     # the model's fingerprint too: a map computed by another FE model is not reused
-    digest = hashlib.sha256(f"{text}\n# FE model {model_fingerprint()}".encode("utf-8")) \
-        .hexdigest()[:16]
+    from sealsim.properties.elastomers import compound_file_digest
+
+    # and the content of a compound file the case names, not only its path
+    material = compound_file_digest(case.material.elastomer)
+    digest = hashlib.sha256(f"{text}\n# FE model {model_fingerprint()}{material}"
+                            .encode("utf-8")).hexdigest()[:16]
     folder = Path(cache_dir) if cache_dir is not None else default_cache_dir()
     target = folder / f"{path.stem}-{digest}.nc"
     if not target.is_file():

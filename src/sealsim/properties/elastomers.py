@@ -125,7 +125,10 @@ __all__ = [
     "ServiceRangeWarning",
     "WLFConstants",
     "get_elastomer",
+    "compound_file_digest",
     "entropic_modulus",
+    "is_compound_file",
+    "load_compound",
     "fictive_temperature",
     "fictive_temperature_step",
     "list_elastomers",
@@ -250,6 +253,15 @@ class Elastomer:
         [K]; default ``reference_temperature``.
     hardness_shore_a : float, optional
         Shore A hardness [-] (information only).
+    glassy_thermal_expansion : float, optional
+        Measured linear CTE of the glass α_g [1/K] (default Simha–Boyer, see
+        :attr:`glassy_expansion`).
+    hyperelastic : tuple, optional
+        ``(model, ((parameter, value), ...))`` of
+        :func:`~sealsim.properties.hyperelastic.check_hyperelastic` (stresses in Pa, at
+        ``reference_temperature``): the strain energy the FE model uses instead of
+        ``c10``/``c01``, which then hold the neo-Hookean equivalent (C10 = μ0/2, C01 = 0) for
+        the analytic estimates.
 
     Examples
     --------
@@ -285,6 +297,8 @@ class Elastomer:
     prony: tuple[float, tuple[float, ...], tuple[float, ...]] | None = None
     prony_reference_temperature: float | None = None
     hardness_shore_a: float | None = None
+    hyperelastic: tuple | None = None
+    glassy_thermal_expansion: float | None = None
 
     # -- validation ---------------------------------------------------------------------------
 
@@ -405,6 +419,19 @@ class Elastomer:
                 "hardness_shore_a",
                 _check_field("hardness_shore_a", self.hardness_shore_a, "Shore A", 0.0, 100.0),
             )
+        if self.glassy_thermal_expansion is not None:
+            set_("glassy_thermal_expansion", _check_field(
+                "glassy_thermal_expansion", self.glassy_thermal_expansion, "1/K", 0.0,
+                self.thermal_expansion, why="between 0 and thermal_expansion"))
+        if self.hyperelastic is not None:
+            from sealsim.properties.hyperelastic import check_hyperelastic
+
+            try:
+                model, params = self.hyperelastic
+                set_("hyperelastic", check_hyperelastic(model, dict(params)))
+            except (TypeError, ValueError, InputError) as exc:
+                raise _field_error("hyperelastic", self.hyperelastic,
+                                   f"(model, ((parameter, value), ...)): {exc}") from None
 
     def _validate_dma(self, set_: Any) -> None:
         try:
@@ -871,7 +898,8 @@ class Elastomer:
 
     @property
     def glassy_expansion(self) -> float:
-        """Linear CTE of the glassy state α_g [1/K]: the Simha–Boyer estimate 0.31·α_r
+        """Linear CTE of the glassy state α_g [1/K]: ``glassy_thermal_expansion`` where given
+        (measured, e.g. by dilatometry), else the Simha–Boyer estimate 0.31·α_r
         (:func:`~sealsim.properties.thermal_expansion.simha_boyer_glassy_expansion`; no
         compound of the catalogue gives a measured glassy value).
 
@@ -880,6 +908,8 @@ class Elastomer:
         >>> round(get_elastomer("NBR").glassy_expansion * 1e4, 3)
         0.591
         """
+        if self.glassy_thermal_expansion is not None:
+            return self.glassy_thermal_expansion
         return float(simha_boyer_glassy_expansion(self.thermal_expansion))
 
     @property
@@ -1078,13 +1108,62 @@ def list_elastomers() -> list[str]:
     return list(_catalogue())
 
 
+def is_compound_file(name: Any) -> bool:
+    """True if a material reference names a compound file (``"my_nbr.toml"``), not a
+    catalogue name."""
+    return isinstance(name, str) and name.strip().lower().endswith(".toml")
+
+
+def compound_file_digest(name: Any) -> str:
+    """SHA-256 (16 hex digits) of a compound file's bytes, ``""`` for a catalogue name: for
+    cache keys of results that depend on the file's content, not only on its path."""
+    if not is_compound_file(name):
+        return ""
+    import hashlib
+
+    try:
+        return hashlib.sha256(Path(name.strip()).read_bytes()).hexdigest()[:16]
+    except OSError:
+        return ""
+
+
+@functools.lru_cache(maxsize=32)
+def _compound(path: str, mtime_ns: int, size: int) -> Elastomer:
+    materials = load_elastomer_file(path)
+    if len(materials) != 1:
+        raise InputError(f"compound file {path!r} holds {len(materials)} materials "
+                         f"({', '.join(materials)}); a material given by its file must be "
+                         "the only table in it (or use --material-file and its name)")
+    return next(iter(materials.values()))
+
+
+def load_compound(path: str | Path) -> Elastomer:
+    """The one material of a compound file (the catalogue format, e.g. written by
+    ``sealsim material fit``); read again when the file changes.
+
+    Raises
+    ------
+    InputError
+        A missing file, invalid content, or not exactly one material table.
+    """
+    p = Path(str(path).strip())
+    try:
+        stat = p.stat()
+    except OSError:
+        raise InputError(f"compound file {str(p)!r} cannot be read: it does not exist "
+                         "(a relative path is relative to the case file, or to the current "
+                         "folder from Python)") from None
+    return _compound(str(p), stat.st_mtime_ns, stat.st_size)
+
+
 def get_elastomer(name: str) -> Elastomer:
-    """Catalogue elastomer by name (case-insensitive).
+    """Catalogue elastomer by name (case-insensitive), or the compound of a file.
 
     Parameters
     ----------
     name : str
-        "NBR", "HNBR", "FKM", "ACM" or "VMQ".
+        "NBR", "HNBR", "FKM", "ACM" or "VMQ"; or the path of a compound file ending in
+        ``.toml`` (one material table in the catalogue format, :func:`load_compound`).
 
     Returns
     -------
@@ -1103,6 +1182,8 @@ def get_elastomer(name: str) -> Elastomer:
     cat = _catalogue()
     if not isinstance(name, str):
         raise InputError(f"elastomer name must be a string; got {name!r}")
+    if is_compound_file(name):
+        return load_compound(name)
     key = name.strip().upper()
     if key in cat:
         return cat[key]
@@ -1110,5 +1191,6 @@ def get_elastomer(name: str) -> Elastomer:
     hint = f" Did you mean {', '.join(close)}?" if close else ""
     raise InputError(
         f"unknown elastomer {name!r}.{hint} Available: {', '.join(cat)} ('sealsim material "
-        f"list'); define others in a file given with --material-file"
+        f"list'), or the path of a compound file ending in .toml (e.g. written by 'sealsim "
+        f"material fit')"
     )

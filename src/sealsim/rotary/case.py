@@ -36,7 +36,7 @@ from pydantic import Field, field_validator, model_validator
 
 from sealsim.cases import CaseModel, Q
 from sealsim.errors import InputError
-from sealsim.properties.elastomers import get_elastomer
+from sealsim.properties.elastomers import get_elastomer, is_compound_file
 from sealsim.properties.oils import FAMILIES, Oil, get_oil
 from sealsim.rotary.lip import (
     DEFAULT_HOOP_PRESTRAIN,
@@ -102,7 +102,8 @@ class Seal(CaseModel):
     @field_validator("material")
     @classmethod
     def _known_material(cls, value: str) -> str:
-        return get_elastomer(value).name
+        name = get_elastomer(value).name
+        return value if is_compound_file(value) else name
 
     @model_validator(mode="after")
     def _defaults(self):

@@ -266,7 +266,12 @@ def lip_force_table(seal, lip: LipSpec, installation_temperature: float = 293.15
     from sealsim.structure.fingerprint import model_fingerprint
 
     # the FE model's fingerprint too: a changed FE model must not read an old table
-    digest = hashlib.sha256((text + model_fingerprint()).encode("utf-8")).hexdigest()[:16]
+    from sealsim.properties.elastomers import compound_file_digest
+
+    # and the content of a compound file the seal is made of, not only its path
+    digest = hashlib.sha256((text + model_fingerprint()
+                             + compound_file_digest(case.material.elastomer))
+                            .encode("utf-8")).hexdigest()[:16]
     target = _cache_dir() / f"lip-{digest}.csv"
     if cache and target.is_file():
         frame = pd.read_csv(target)

@@ -180,6 +180,10 @@ def describe_seal(case: StructureCase) -> str:
              "user": "seal profile"}
     size = s.cord_diameter or s.height or s.width
     material = case.material.elastomer or "custom rubber"
+    if material.lower().endswith(".toml"):
+        from sealsim.properties.elastomers import get_elastomer
+
+        material = get_elastomer(material).name
     where = "shaft seal" if case.gland.arrangement == "shaft" else \
         f"{case.gland.arrangement} seal"
     lead = f"{size * 1e3:g} mm {names[s.type]}" if size else names[s.type]

@@ -30,7 +30,9 @@ gland), ``"radial_lip"`` (a DIN 3760 shaft seal: outer_diameter, width, garter s
 ``gland.arrangement = "shaft"``) and ``"user"`` (a closed polyline ``points`` in
 ``points_unit``, optional ``bulges`` and ``tags``, or a ``dxf`` drawing; a relative path is
 relative to the case file). A material needs no catalogue name: ``c10``, ``c01`` and
-``bulk_modulus`` alone define a custom Mooney–Rivlin rubber.
+``bulk_modulus`` alone define a custom Mooney–Rivlin rubber; ``material = "my_nbr.toml"``
+(or ``[material] elastomer = "my_nbr.toml"``) takes a compound file, e.g. one written by
+``sealsim material fit``, relative to the case file.
 """
 
 from __future__ import annotations
@@ -327,6 +329,12 @@ class StructureCase(CaseModel):
     load: LoadSpec
     map: MapSpec | None = None
     solver: SolverSpec = SolverSpec()
+
+    @field_validator("material", mode="before")
+    @classmethod
+    def _material_name(cls, value):
+        # material = "NBR" or "my_nbr.toml": shorthand for [material] elastomer = ...
+        return {"elastomer": value} if isinstance(value, str) else value
 
     @model_validator(mode="after")
     def _consistent(self):
