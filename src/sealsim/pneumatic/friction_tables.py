@@ -42,7 +42,7 @@ from sealsim.tribology.mixed_lubrication import reciprocating_friction
 from sealsim.tribology.rubber_friction import DEFAULT_ASPERITY_WAVELENGTH
 
 __all__ = ["ContactTribology", "TABLE_SPEEDS", "build_friction_table", "contact_profiles",
-           "friction_table_for", "lubricant_viscosity", "table_orientation"]
+           "friction_table_for", "lubricant_viscosity", "sliding_diameter", "table_orientation"]
 
 #: Version of the table builder: part of the cache key (a change of the physics gives new files)
 TABLE_VERSION = 1
@@ -134,6 +134,21 @@ def table_orientation(code, p1, p2, ambient_pressure):
     if code == 1:
         return 1.0 if p2 >= ambient_pressure else -1.0
     return 1.0
+
+
+def sliding_diameter(contact_map) -> float:
+    """Diameter of the sliding surface of a contact map [m]: the analytic estimate's
+    ``sliding_diameter``; for an FE map F_N/(π·F'_N) of its first grid point (the radius of
+    the sealing surface the FE model integrated the force over)."""
+    if isinstance(contact_map, FEContactMap):
+        ds = contact_map.seal_map.dataset
+        if "F_N_per_length" not in ds.data_vars:
+            raise InputError(f"map {contact_map.source!r} has no F_N_per_length: the diameter "
+                             "of its sealing surface is unknown")
+        fn = float(ds["F_N"].values.reshape(-1)[0])
+        per_length = float(ds["F_N_per_length"].values.reshape(-1)[0])
+        return fn / (math.pi * per_length)
+    return float(contact_map.sliding_diameter)
 
 
 def _hertz_profile(force_per_length, width):
