@@ -36,7 +36,8 @@ def test_table_reproduces_the_tribology_at_and_between_its_nodes(table):
     speeds = np.array([1e-4, 3e-3, 0.05, 0.8])
     modulus = get_elastomer("NBR").modulus(temps[i], speeds / TRIBOLOGY.asperity_wavelength)
     direct = reciprocating_friction(z, p, speeds, float(lubricant_viscosity(temps[i], TRIBOLOGY)),
-                                    TRIBOLOGY.roughness, modulus, 1.0)
+                                    TRIBOLOGY.roughness, modulus, 1.0,
+                                    sealed_pressure=pressures[j])
     load, viscous, film = table.evaluate(speeds, pressures[j], temps[i])
     # between the speed nodes (six per decade): C¹ Hermite of smooth curves, within 2 %
     assert load == pytest.approx(direct.boundary, rel=0.02, abs=1e-3 * direct.boundary.max())
@@ -46,7 +47,8 @@ def test_table_reproduces_the_tribology_at_and_between_its_nodes(table):
     node = table.speed[20:21]
     direct = reciprocating_friction(z, p, node, float(lubricant_viscosity(temps[i], TRIBOLOGY)),
                                     TRIBOLOGY.roughness,
-                                    get_elastomer("NBR").modulus(temps[i], node / 50e-6), 1.0)
+                                    get_elastomer("NBR").modulus(temps[i], node / 50e-6), 1.0,
+                                    sealed_pressure=pressures[j])
     load, viscous, _ = table.evaluate(node, pressures[j], temps[i])
     assert load == pytest.approx(direct.boundary, rel=1e-9)
     assert viscous == pytest.approx(direct.viscous, rel=1e-9)

@@ -176,3 +176,29 @@ def test_two_zones_add_and_the_film_profile_follows_reynolds():
     wet = np.isfinite(r.film_profile[0])
     assert wet.sum() > 150
     assert r.film_profile[0, wet] == pytest.approx(shape[wet], rel=1e-9)
+
+
+def test_sealed_pressure_softens_the_pressurised_inlet():
+    # an FE contact pressure drops from Δp to 0 over one element at the wetted edge (the fluid's
+    # pressure is not part of it); the film's pressure starts at the sealed pressure, so the
+    # inlet on that side rises from Δp: gradient 0.5 MPa/0.4 mm instead of 0.5 MPa/0.01 mm;
+    # the other stroke (inlet on the +z flank) and the contact load are unchanged
+    z0 = np.array([-0.1e-3, 0.0, 0.01e-3, 0.41e-3, 1.61e-3, 1.7e-3])
+    p0 = np.array([0.0, 0.0, 0.5e6, 1e6, 0.0, 0.0])
+    z, p = refine(z0, p0, 8001)
+    u = np.array([0.01])
+    plain = reciprocating_friction(z, p, u, ETA, 1e-15, MODULUS, MU_B, +1, resolution=1e-9)
+    sealed = reciprocating_friction(z, p, u, ETA, 1e-15, MODULUS, MU_B, +1, resolution=1e-9,
+                                    sealed_pressure=0.5e6)
+    assert plain.max_gradient == pytest.approx(0.5e6 / 0.01e-3, rel=1e-6)
+    assert sealed.max_gradient == pytest.approx(0.5e6 / 0.4e-3, rel=1e-6)
+    assert sealed.film == pytest.approx(np.sqrt(40.0) * plain.film, rel=1e-6)
+    back = reciprocating_friction(z, p, u, ETA, 1e-15, MODULUS, MU_B, -1, resolution=1e-9,
+                                  sealed_pressure=0.5e6)
+    back_plain = reciprocating_friction(z, p, u, ETA, 1e-15, MODULUS, MU_B, -1,
+                                        resolution=1e-9)
+    assert back.film == pytest.approx(back_plain.film, rel=1e-12)
+    rough = dict(roughness=SIGMA, asperity_modulus=MODULUS, boundary_friction=MU_B)
+    slow = reciprocating_friction(z, p, [1e-12], ETA, direction=1, sealed_pressure=0.5e6,
+                                  **rough)
+    assert slow.boundary[0] == pytest.approx(MU_B * np.trapezoid(p, z), rel=5e-3)

@@ -12,6 +12,11 @@ unit circumference, is written as netCDF into the map cache
 (:func:`~sealsim.pneumatic.contact_maps.default_cache_dir`; ``sealsim cache list``) under a hash
 of the map and of every tribology parameter, and read from there next time.
 
+**Sealed pressure.**  On the pressurised side the lubricant is at the sealed pressure Δp, so
+the film's pressure rises from Δp, not from 0, into the first contact (Reynolds' boundary
+condition; the FE contact pressure drops to 0 at the wetted edge because the fluid's pressure
+is not part of it).
+
 **Direction.**  The table's "+" direction is the counter surface sliding from the pressurised
 side of the seal to the other (+z of an FE profile: the upstream side is z < 0): a rod seal's
 outstroke.  :func:`table_orientation` maps the piston velocity of a cylinder onto it.
@@ -45,7 +50,7 @@ __all__ = ["ContactTribology", "TABLE_SPEEDS", "build_friction_table", "contact_
            "friction_table_for", "lubricant_viscosity", "sliding_diameter", "table_orientation"]
 
 #: Version of the table builder: part of the cache key (a change of the physics gives new files)
-TABLE_VERSION = 1
+TABLE_VERSION = 2
 #: Speeds of a table [m/s]: 1e-7 to 10 m/s, six per decade
 TABLE_SPEEDS = np.logspace(-7.0, 1.0, 49)
 #: Largest temperature step of a table [K]: FE profiles are interpolated linearly between the
@@ -263,7 +268,8 @@ def build_friction_table(contact_map, tribology: ContactTribology,
                     values[i, j, :, 5] = values[i, j, :, 4]
                     continue
                 r = reciprocating_friction(z, p, speeds, eta, tribology.roughness, modulus,
-                                           1.0, direction, **kwargs)
+                                           1.0, direction, sealed_pressure=pressures[j],
+                                           **kwargs)
                 values[i, j, :, 2 * k] = r.boundary          # μ_b = 1: the asperity load
                 values[i, j, :, 2 * k + 1] = r.viscous
                 values[i, j, :, 4 + k] = np.where(np.isfinite(r.film), r.film, 0.0)

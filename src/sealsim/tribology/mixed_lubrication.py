@@ -195,7 +195,7 @@ class ContactFriction(NamedTuple):
 
 def reciprocating_friction(position, pressure, speed, viscosity, roughness, asperity_modulus,
                            boundary_friction, direction=1, *, film_factor=1.0,
-                           resolution=None, poisson=0.5,
+                           sealed_pressure=0.0, resolution=None, poisson=0.5,
                            roughness_density=DEFAULT_ROUGHNESS_DENSITY,
                            roughness_slope=DEFAULT_ROUGHNESS_SLOPE) -> ContactFriction:
     """Steady friction of a lubricated seal contact per unit circumference, Eq. (2).
@@ -220,6 +220,12 @@ def reciprocating_friction(position, pressure, speed, viscosity, roughness, aspe
         Sliding direction of the counter surface relative to the seal (+1 towards +z).
     film_factor : float
         Multiplier of the full film h*₀ [-] (1: the IHL film; a calibration may fit it).
+    sealed_pressure : float
+        Fluid pressure on the −z side of the profile Δp [Pa] (the pressurised side of an FE
+        map's profile).  The film's pressure there starts at Δp, not at 0: Reynolds' equation
+        is solved for the film pressure max(p, Δp) up to the first contact zone's peak, whose
+        inlet on that side rises from Δp (the contact pressure, the solid part of the load
+        that the asperity share and the boundary friction act on, is unchanged).
     resolution : float, optional
         Secant length of :func:`~.inverse_hydrodynamics.max_inlet_gradient` [m].
     poisson, roughness_density, roughness_slope : float
@@ -254,14 +260,19 @@ def reciprocating_friction(position, pressure, speed, viscosity, roughness, aspe
     h_profile = np.full((n, z.size), np.inf)
     main = None
     total_load = 0.0
-    for zone in contact_zone_slices(p):
+    for number, zone in enumerate(contact_zone_slices(p)):
         zz, pz = z[zone], p[zone]
         if zz.size < 2:
             continue
         load = float(np.trapezoid(pz, zz))
         total_load += load
-        w_max = max_inlet_gradient(zz, pz, direction, resolution)
         pmax = float(pz.max())
+        if number == 0 and sealed_pressure > 0.0:
+            # the film's pressure: the sealed pressure up to the first contact's peak
+            peak = int(np.argmax(pz))
+            pz = np.concatenate([np.maximum(pz[:peak], min(sealed_pressure, pmax)),
+                                 pz[peak:]])
+        w_max = max_inlet_gradient(zz, pz, direction, resolution)
         h0 = film_factor * film_at_pressure_maximum(eta, u, w_max) if w_max > 0 else \
             np.full(n, np.inf)
         alpha, film = ihl_load_share(h0, pmax, roughness, modulus, *args)
