@@ -86,12 +86,13 @@ def test_theta_on_the_contact_table_keeps_the_steady_curve_and_the_dwell(table):
     # in steady sliding the dynamic force equals the steady one
     z_ss = law.steady_state(v, inputs)
     assert law.force(z_ss, v, inputs) == pytest.approx(steady, rel=1e-9)
-    # at rest after a long dwell: the boundary level μ_b·F_N (asperities carry the load;
-    # the table's load integrates the Hertz profile: F_N within 0.5 %)
+    # at rest after a long dwell: the boundary level μ_b·F_N (asperities carry the load: at
+    # the table's slowest speed, 0.1 µm/s, 99.5 % of it; the Hertz profile's integral is F_N
+    # within 0.1 %) -> within 1 %
     fn = inputs.normal_force
-    assert law.breakaway_force(np.zeros((1, 1)), inputs)[0] == pytest.approx(0.2 * fn, rel=5e-3)
+    assert law.breakaway_force(np.zeros((1, 1)), inputs)[0] == pytest.approx(0.2 * fn, rel=0.01)
     # just after sliding (Θ = 1) it is lower by the dwell drop d = 0.5
-    assert law.breakaway_force(np.ones((1, 1)), inputs)[0] == pytest.approx(0.1 * fn, rel=5e-3)
+    assert law.breakaway_force(np.ones((1, 1)), inputs)[0] == pytest.approx(0.1 * fn, rel=0.01)
     # accelerating from rest (Θ below Θ_ss): more friction than steady
     assert law.force(np.zeros((1, 1)), [0.05], inputs)[0] > steady[3]
     # bristles: the same steady curve
