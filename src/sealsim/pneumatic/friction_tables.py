@@ -328,3 +328,31 @@ def friction_table_for(contact_map, tribology: ContactTribology,
             pass
     memo[digest] = table
     return table
+
+
+def film_profiles(contact_map, tribology: ContactTribology, temperature: float,
+                  speed: float = 0.1):
+    """The contact pressure and film profiles of a seal at one temperature and speed, per
+    pressure of its map: ``[(Δp [Pa], z [m], p_c [Pa], h_+ [m], h_− [m]), ...]`` (the films
+    of the two stroke directions, inf outside the contact) -- what the friction table is made
+    of, for plots."""
+    from sealsim.properties.elastomers import get_elastomer
+
+    temps, pressures, profile = contact_profiles(contact_map)
+    i = int(np.argmin(np.abs(temps - temperature)))
+    eta = float(lubricant_viscosity(temps[i], tribology))
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        modulus = float(get_elastomer(tribology.elastomer).modulus(
+            temps[i], speed / tribology.asperity_wavelength))
+    out = []
+    for j, dp in enumerate(pressures):
+        z, p = profile(i, j)
+        films = [reciprocating_friction(z, p, [speed], eta, tribology.roughness, modulus, 1.0,
+                                        direction, film_factor=tribology.film_factor,
+                                        sealed_pressure=dp).film_profile[0]
+                 for direction in (1, -1)]
+        out.append((float(dp), z, p, films[0], films[1]))
+    return out
