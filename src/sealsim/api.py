@@ -243,9 +243,9 @@ def seal_friction(seal, velocity, pressure=0.0, temperature="20 degC", law=None,
     >>> curve = seal_friction(oring, [0.01, 0.1, 1.0], "6 bar", diameter="12 mm")
     >>> curve[["velocity_m_s", "friction_N", "normal_force_N", "film_um"]].round(2)
        velocity_m_s  friction_N  normal_force_N  film_um
-    0          0.01        6.56           49.24     0.48
-    1          0.10        2.70           49.24     1.00
-    2          1.00        3.72           49.24     2.89
+    0          0.01        5.30           49.24     0.67
+    1          0.10        0.92           49.24     1.48
+    2          1.00        2.26           49.24     4.62
     """
     from sealsim.friction.base import ContactInputs
     from sealsim.units import ZERO_CELSIUS_K, to_si
