@@ -40,12 +40,14 @@ LIP_SEAL_COLUMNS = ["shaft_diameter_mm", "speed_rpm", "torque_Nm", "power_W", "T
                     "T_groove_C", "T_sump_C", "film_um", "F_lub_N", "F_material_N"]
 #: Columns of :func:`seal_friction` (units in the names; pressure is gauge, across the seal).
 SEAL_FRICTION_COLUMNS = ["velocity_m_s", "pressure_bar", "temperature_C", "friction_N",
-                         "normal_force_N", "contact_width_mm"]
+                         "normal_force_N", "contact_width_mm", "film_um", "asperity_share",
+                         "transport_mm3_per_m"]
 
 #: Friction law of :func:`seal_friction` when none is given: the Θ rate-and-state law (Heipl &
-#: Murrenhoff, Eq. 4/5) with the illustrative set ``pneumatic_demo`` (not fitted to
-#: measurements).
-DEFAULT_LAW = {"law": "theta", "parameter_set": "pneumatic_demo"}
+#: Murrenhoff, Eq. 4/5) whose steady curve comes from the seal's own contact pressure profile
+#: (set ``seal_contact``: inverse hydrodynamics and mixed lubrication, cited defaults).  The
+#: lumped set ``pneumatic_demo`` stays available by name; it is illustrative.
+DEFAULT_LAW = {"law": "theta", "parameter_set": "seal_contact"}
 
 
 def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] = "VG68-mineral",
@@ -173,7 +175,12 @@ def seal_friction(seal, velocity, pressure=0.0, temperature="20 degC", law=None,
     Murrenhoff's characteristic diagrams, or the analytic O-ring estimate of
     :class:`~sealsim.pneumatic.contact_maps.AnalyticContactMap`); the friction is that of a
     friction law after sliding at constant velocity for a long time
-    (``FrictionLaw.steady_force``), e.g. the Θ rate-and-state law's Stribeck curve.
+    (``FrictionLaw.steady_force``).  By default the Θ law's steady curve comes from the
+    seal's own contact pressure profile (inverse hydrodynamic film, asperity load share,
+    boundary and viscous shear: :mod:`sealsim.tribology.mixed_lubrication`, tabulated per
+    seal and cached, :mod:`sealsim.pneumatic.friction_tables`); then the film at the pressure
+    maximum, the asperity share of the load and the net fluid transport per metre of double
+    stroke come with it.
 
     Parameters
     ----------
@@ -190,7 +197,9 @@ def seal_friction(seal, velocity, pressure=0.0, temperature="20 degC", law=None,
           ``{"file": ...}``, ``{"structure_case": ...}``);
         * a contact map object (``AnalyticContactMap``, ``FEContactMap``).
     velocity : str, float or array
-        Sliding velocity, e.g. ``[0.01, 0.1, 1.0]`` (plain numbers: m/s) or ``"0.2 m/s"``.
+        Sliding velocity, e.g. ``[0.01, 0.1, 1.0]`` (plain numbers: m/s) or ``"0.2 m/s"``;
+        positive: the counter surface slides from the pressurised side to the other (a rod
+        seal's outstroke).
     pressure : str, float or array
         Gauge pressure on the pressurised side, atmosphere on the other (a rod seal, or a
         piston seal with one chamber vented), e.g. ``"6 bar"`` (plain number: Pa).
@@ -215,8 +224,12 @@ def seal_friction(seal, velocity, pressure=0.0, temperature="20 degC", law=None,
     -------
     dict or pandas.DataFrame
         velocity_m_s, pressure_bar (gauge), temperature_C, friction_N (signed like the
-        velocity), normal_force_N, contact_width_mm: a DataFrame with one row per point if
-        velocity, pressure or temperature is an array (broadcast), else a dict.
+        velocity), normal_force_N, contact_width_mm, and with a steady curve from the contact
+        film_um (film at the pressure maximum in the stroke direction of the velocity),
+        asperity_share (share of F_N the asperities carry) and transport_mm3_per_m (fluid
+        the seal lets pass per metre of double stroke at this speed, π·D·(h*_out − h*_in)/2:
+        > 0 leaks out, <= 0 is dragged back; NaN for other laws): a DataFrame with one row per
+        point if velocity, pressure or temperature is an array (broadcast), else a dict.
 
     Raises
     ------
@@ -228,11 +241,11 @@ def seal_friction(seal, velocity, pressure=0.0, temperature="20 degC", law=None,
     --------
     >>> oring = {"cord_diameter": "2 mm", "squeeze": 0.12}
     >>> curve = seal_friction(oring, [0.01, 0.1, 1.0], "6 bar", diameter="12 mm")
-    >>> curve[["velocity_m_s", "friction_N", "normal_force_N"]].round(2)
-       velocity_m_s  friction_N  normal_force_N
-    0          0.01       12.75           49.24
-    1          0.10        9.98           49.24
-    2          1.00       18.96           49.24
+    >>> curve[["velocity_m_s", "friction_N", "normal_force_N", "film_um"]].round(2)
+       velocity_m_s  friction_N  normal_force_N  film_um
+    0          0.01        5.30           49.24     0.67
+    1          0.10        0.92           49.24     1.48
+    2          1.00        2.26           49.24     4.62
     """
     from sealsim.friction.base import ContactInputs
     from sealsim.units import ZERO_CELSIUS_K, to_si
@@ -249,14 +262,38 @@ def seal_friction(seal, velocity, pressure=0.0, temperature="20 degC", law=None,
     friction_law = _friction_law(DEFAULT_LAW if law is None else law)
     normal_force, width = (np.asarray(x, dtype=float) * np.ones_like(dp)
                            for x in contact_map.evaluate(dp, t))
+    table, diameter_m = _contact_table(friction_law, contact_map)
     inputs = ContactInputs(normal_force=normal_force, contact_width=width, pressure_a=dp,
-                           pressure_b=0.0, temperature=t)
+                           pressure_b=0.0, temperature=t, contact_table=table,
+                           sliding_diameter=diameter_m)
     force = np.asarray(friction_law.steady_force(v, inputs), dtype=float).reshape(-1)
+    film = share = transport = np.full(v.size, np.nan)
+    if table is not None:
+        from sealsim.tribology.inverse_hydrodynamics import stroke_transport
+
+        load, _, film = table.evaluate(v, dp, t)
+        share = np.pi * diameter_m * load / normal_force
+        film_out = table.evaluate(np.abs(v), dp, t)[2]
+        film_in = table.evaluate(-np.abs(v), dp, t)[2]
+        transport = stroke_transport(diameter_m, 1.0, film_out, film_in)
     rows = [{"velocity_m_s": v[k], "pressure_bar": dp[k] / 1e5,
              "temperature_C": t[k] - ZERO_CELSIUS_K, "friction_N": force[k],
-             "normal_force_N": normal_force[k], "contact_width_mm": width[k] * 1e3}
+             "normal_force_N": normal_force[k], "contact_width_mm": width[k] * 1e3,
+             "film_um": film[k] * 1e6, "asperity_share": share[k],
+             "transport_mm3_per_m": transport[k] * 1e9}
             for k in range(v.size)]
     return _rows_out(rows, shape, SEAL_FRICTION_COLUMNS)
+
+
+def _contact_table(friction_law, contact_map):
+    """(friction table, sliding diameter [m]) of a law whose steady curve comes from the
+    seal's contact, else (None, None)."""
+    from sealsim.pneumatic.case import seal_friction_table
+    from sealsim.pneumatic.friction_tables import sliding_diameter
+
+    if getattr(friction_law.params, "steady", "lumped") != "contact":
+        return None, None
+    return seal_friction_table(friction_law, contact_map, "seal"), sliding_diameter(contact_map)
 
 
 def _rows_out(rows: list[dict], shape: tuple, columns: list[str]):

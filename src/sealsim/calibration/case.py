@@ -89,6 +89,11 @@ class ContactModel(CaseModel):
     sliding_diameter: Q("length", gt=0)
     temperature: Q("temperature", gt=0) = 293.15
     map: MapModel | None = None
+    positive_velocity: Literal["away_from_pressure", "towards_pressure"] = Field(
+        "away_from_pressure", description=(
+            "how the counter surface slides relative to the seal when the measured velocity "
+            "is positive: away from the pressurised side (a rod seal's outstroke) or towards "
+            "it; sets the stroke direction of a friction table from the seal's contact"))
 
 
 class ColumnModel(CaseModel):

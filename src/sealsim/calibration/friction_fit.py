@@ -68,6 +68,9 @@ class PreparedRun:
     normal_force: np.ndarray | None = None
     contact_width: np.ndarray | None = None
     samples: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
+    contact_table: Any = None          # steady friction table from the seal's contact
+    sliding_diameter: float | None = None
+    orientation: float = 1.0
 
     @property
     def name(self) -> str:
@@ -81,7 +84,8 @@ def _resolve(path: str, base_dir: Path) -> Path:
 
 def prepare_run(case: FrictionFitCase, spec: MeasurementModel, contact_map=None,
                 base_dir: str | Path = ".") -> PreparedRun:
-    """Read a measurement, derive v(t), find the sliding phases, evaluate F_N(t), b(t).
+    """Read a measurement, derive v(t), find the sliding phases, evaluate F_N(t), b(t) and,
+    for a Θ law on the seal's own contact, its friction table.
 
     Raises
     ------
@@ -139,6 +143,14 @@ def prepare_run(case: FrictionFitCase, spec: MeasurementModel, contact_map=None,
         fn, b = contact_map.evaluate(np.clip(dp, lo, hi), temperature)
         run.normal_force = np.asarray(fn, dtype=float)
         run.contact_width = np.asarray(b, dtype=float)
+        from sealsim.pneumatic.case import seal_friction_table
+
+        law = make_law(case.friction)
+        run.contact_table = seal_friction_table(law, contact_map, "contact.map")
+        if run.contact_table is not None:
+            run.sliding_diameter = case.contact.sliding_diameter
+            run.orientation = (1.0 if case.contact.positive_velocity == "away_from_pressure"
+                               else -1.0)
     stride = max(1, int(math.ceil(t.size / case.fit.max_samples)))
     run.samples = np.arange(0, t.size, stride)
     return run
@@ -153,7 +165,10 @@ def _inputs(run: PreparedRun, index=slice(None), column=False) -> ContactInputs:
     return ContactInputs(normal_force=pick(run.normal_force),
                          contact_width=pick(run.contact_width),
                          pressure_a=pick(run.pressure), pressure_b=0.0,
-                         temperature=run.temperature)
+                         temperature=run.temperature, contact_table=run.contact_table,
+                         sliding_diameter=run.sliding_diameter,
+                         pressure_difference=pick(run.pressure_difference),
+                         table_orientation=run.orientation)
 
 
 def predict_run(law: FrictionLaw, run: PreparedRun) -> np.ndarray:

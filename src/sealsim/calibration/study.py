@@ -35,6 +35,7 @@ from sealsim.calibration.statistics import parameter_report
 from sealsim.cases import load_toml, validate_case
 from sealsim.errors import InputError
 from sealsim.friction import make_law
+from sealsim.measurements import friction_level
 
 __all__ = ["FrictionFitStudy", "friction_fit_study", "load_fit_case"]
 
@@ -117,6 +118,13 @@ def friction_fit_study(case: FrictionFitCase, base_dir: str | Path,
     predictions = {r.name: predict_run(law, r) for r in runs}
     report = {"parameters": parameter_report(result, result.params.model_dump(mode="json")),
               "measurements": {r.name: run_metrics(r, predictions[r.name]) for r in runs}}
+    # the starting parameters' prediction: how far the law is off before any fitting
+    start = make_law(case.friction)
+    for r in runs:
+        level, _ = friction_level(predict_run(start, r), r.phases)
+        report["measurements"][r.name]["F_predicted_without_fit_N"] = level
+        report["measurements"][r.name]["ratio_without_fit"] = (level / r.level if r.level
+                                                               else None)
     diagnostics = {
         "status": result.status, "failure": result.failure, "warnings": result.warnings,
         "stages": result.stages, "parameter_names": result.names,

@@ -42,6 +42,9 @@ def fit(
         console.print(f"{name} ({m['role']}): friction level measured {m['F_measured_N']:.3f} N,"
                       f" model {m['F_predicted_N']:.3f} N, error {100 * m['rel_error']:+.1f} %, "
                       f"RMSE {m['rmse_N']:.3f} N, R² {m['r2']:.3f}")
+        if m.get("ratio_without_fit") is not None:
+            console.print(f"  without fitting: {m['F_predicted_without_fit_N']:.3f} N, "
+                          f"{m['ratio_without_fit']:.2f} x measured")
     for text in summary["warnings"]:
         console.print(f"[yellow]warning:[/yellow] {text}")
     console.print(f"results written to {out}")

@@ -212,6 +212,11 @@ def _table_error(table, sample, t_range, p_range) -> dict:
 
 
 # -- the model ---------------------------------------------------------------------------------
+#: fields of the Θ law used only when its steady curve comes from the contact table
+_CONTACT_FIELDS = ("boundary_friction", "dwell_drop", "roughness", "film_factor",
+                   "lubricant_density", "thickener_factor", "asperity_wavelength")
+
+
 def c_parameters(law: FrictionLaw) -> tuple[str, dict[str, float], bool]:
     """(law name, parameters for the C code, bristles) of a law; an InputError for a law or a
     parameter the C code does not implement."""
@@ -220,6 +225,14 @@ def c_parameters(law: FrictionLaw) -> tuple[str, dict[str, float], bool]:
         raise InputError(f"friction.law: the {name!r} law has no C implementation in the FMU "
                          f"export; choose one of {', '.join(C_LAWS)}")
     values = {k: getattr(law.params, k) for k in type(law.params).model_fields}
+    if name == "theta":
+        if values.pop("steady") == "contact":
+            raise InputError("friction: the theta law with steady = 'contact' (the seal's own "
+                             "contact friction table) is not in the FMU's C code yet; export "
+                             "the lumped law (steady = 'lumped', e.g. parameter_set = "
+                             "'pneumatic_demo')")
+        for field in _CONTACT_FIELDS:       # only used with steady = 'contact'
+            values.pop(field, None)
     known = _LAW_PARAMETERS[name]
     unknown = sorted(k for k, v in values.items()
                      if k not in known and k not in ("law", "parameter_set") and v is not None)

@@ -520,5 +520,37 @@ def build_seals(case: PneumaticCase, base_dir: str | Path = ".", progress=None,
             temperature = case.cylinder.seal_temperature
         if temperature is None:
             temperature = body_temperature(case)
-        seals.append(Seal(spec.name, spec.location, law, contact_map, temperature, notes))
+        table = seal_friction_table(law, contact_map, f"{where}.map")
+        seals.append(Seal(spec.name, spec.location, law, contact_map, temperature, notes,
+                          table))
     return seals
+
+
+def seal_friction_table(law, contact_map, where: str = "map"):
+    """The steady friction table of a seal whose Θ law takes its steady curve from the
+    contact (``steady = "contact"``), built from its contact map or read from the cache
+    (:func:`sealsim.pneumatic.friction_tables.friction_table_for`); None for other laws."""
+    from sealsim.pneumatic.friction_tables import ContactTribology, friction_table_for
+
+    if getattr(law.params, "steady", "lumped") != "contact":
+        return None
+    if contact_map is None:
+        raise InputError(f"{where}: the theta law with steady = 'contact' needs the seal's "
+                         "contact map (its contact pressure profile)")
+    return friction_table_for(contact_map,
+                              ContactTribology.from_law(law, map_elastomer(contact_map)))
+
+
+def map_elastomer(contact_map) -> str:
+    """Catalogue elastomer of a contact map (FE: the map's ``elastomer`` attribute; analytic:
+    its ``elastomer``); NBR for an FE map of a custom material."""
+    from sealsim.properties.elastomers import get_elastomer
+
+    name = getattr(contact_map, "elastomer", None)
+    if name is None and hasattr(contact_map, "seal_map"):
+        name = contact_map.seal_map.dataset.attrs.get("elastomer")
+    try:
+        get_elastomer(name)
+    except (InputError, TypeError, KeyError):
+        return "NBR"
+    return name

@@ -20,6 +20,11 @@ Tables
 ``map_data`` (float64), ``map_int`` (int64, one row per seal)
     Contact maps: exact analytic O-ring estimate or a C¹ Hermite grid
     (:func:`sealsim.pneumatic.contact_maps.hermite_grid_point`).
+``fric_data`` (float64), ``fric_int`` (int64, one row per seal: data offset, then the table's
+    layout row)
+    Steady friction tables from the seals' contacts
+    (:func:`sealsim.friction.contact_table.contact_table_point`) for Θ laws with
+    ``steady = "contact"``; a seal without one has an empty row.
 ``spool`` (float64, 3 rows) and ``profile`` (float64)
     Valve command arrivals / targets / start positions, and the prescribed position profile.
 
@@ -45,7 +50,9 @@ from sealsim.pneumatic.chambers import (
     free_convection_coefficient,
     wall_heat_flow,
 )
+from sealsim.friction.contact_table import contact_table_point
 from sealsim.pneumatic.contact_maps import _analytic_loads, hermite_grid_point
+from sealsim.pneumatic.friction_tables import table_orientation
 from sealsim.pneumatic.cylinder import end_stop_force, load_force
 from sealsim.pneumatic.seal_heating import sliding_contact_coefficient
 from sealsim.pneumatic.seals import pressure_difference, side_pressures, smooth_abs
@@ -113,6 +120,7 @@ _stop = jit(end_stop_force)
 _load = jit(load_force)
 _dp = jit(pressure_difference, smooth_abs=jit(smooth_abs))
 _sides = jit(side_pressures)
+_orient = njit(cache=True)(table_orientation)
 
 
 @njit(cache=True)
@@ -178,11 +186,24 @@ def _seal_loads(i, dp, temp, map_int, map_data):
 
 
 @njit(cache=True)
-def _law_rates(law, par, z, off, vv, fn, b, pa, pb, temp, dy, col):
+def _contact_steady(par, frow, fdata, temp, dp, orient, vv):
+    """(|F_ss(v)| [N], F_ss(0⁺) [N]) of a Θ law on its seal's contact table
+    (:meth:`sealsim.friction.theta.Theta.contact_steady`): par[13] = μ_b, par[15] = π·D."""
+    load, visc, _ = contact_table_point(frow, fdata, temp, dp, orient * vv)
+    slow = 10.0 ** fdata[frow[0] + frow[1]]
+    up, _, _ = contact_table_point(frow, fdata, temp, dp, slow)
+    down, _, _ = contact_table_point(frow, fdata, temp, dp, -slow)
+    return par[15] * (par[13] * load + visc), par[15] * par[13] * 0.5 * (up + down)
+
+
+@njit(cache=True)
+def _law_rates(law, par, z, off, vv, fn, b, pa, pb, temp, dy, col, frow, fdata, dp, orient):
     """Friction force and break-away force of one seal; writes its state rates into dy.
 
     The laws are the kernels of :mod:`sealsim.friction.kernels`; the parameter layout of each
-    law is :func:`sealsim.pneumatic.system.law_parameters`."""
+    law is :func:`sealsim.pneumatic.system.law_parameters`.  ``frow``/``fdata``: the seal's
+    contact friction table (Θ law with a steady curve from its contact), read at the pressure
+    difference ``dp`` [Pa] and the velocity times the table ``orient``-ation."""
     force = 0.0
     brk = 0.0
     if law == COULOMB:
@@ -217,12 +238,22 @@ def _law_rates(law, par, z, off, vv, fn, b, pa, pb, temp, dy, col):
             gamma = gamma * fk.walther_viscosity_ratio(temp, par[9], par[10], par[11])
         th = z[off, col]
         fn = max(fn, 1e-9)
-        level = fk.theta_friction_level(th, fn, par[2], par[3])
+        if par[12] > 0.0:                       # steady curve from the contact table
+            fss, fb = _contact_steady(par, frow, fdata, temp, dp, orient, vv)
+            level = fk.theta_contact_level(th, vv, fss, fb, par[14],
+                                           fk.theta_steady(vv, par[0], par[1], fn, par[5],
+                                                           par[6]))
+            gamma = 0.0
+        else:
+            level = fk.theta_friction_level(th, fn, par[2], par[3])
         dy[off, col] = fk.theta_rate(th, vv, par[0], par[1], fn, par[5], par[6])
         if par[7] > 0.0:                        # bristles
             zdot = fk.lugre_bristle_rate(z[off + 1, col], vv, par[7], level)
             dy[off + 1, col] = zdot
             force = par[7] * z[off + 1, col] + par[8] * zdot + gamma * b * vv
+        elif par[12] > 0.0:
+            force = level * fk.sgn(vv)
+            brk = level
         else:
             force = fk.theta_force(th, vv, fn, b, par[2], par[3], gamma)
             brk = level
@@ -234,9 +265,11 @@ def evaluate_column(t, y, col, mode, tables, dy, diag, full):
     """dy/dt of column ``col`` of ``y`` (shape (n, k)) in integration mode ``mode``.
 
     Writes dy[:, col] (and, with ``full``, every intermediate quantity into diag[:, col]).
-    ``tables`` = (c, spool, profile, seal_int, law_par, seal_therm, map_int, map_data).
+    ``tables`` = (c, spool, profile, seal_int, law_par, seal_therm, map_int, map_data,
+    fric_int, fric_data).
     """
-    c, spool, profile, seal_int, law_par, seal_therm, map_int, map_data = tables
+    (c, spool, profile, seal_int, law_par, seal_therm, map_int, map_data, fric_int,
+     fric_data) = tables
     gm1 = AIR_HEAT_CAPACITY_RATIO - 1.0
     prescribed = mode == PRESCRIBED
     if prescribed:
@@ -314,8 +347,11 @@ def evaluate_column(t, y, col, mode, tables, dy, diag, full):
         else:                                     # slip: hold the direction down to v = 0
             d = float(mode)
             vv = d * max(d * v, _TINY_SPEED)
+        frow = fric_int[i, 1:]
+        orient = _orient(seal_int[i, SI_LOC], p1, p2, pa)
         force, brk = _law_rates(law, law_par[i], y, seal_int[i, SI_OFF], vv, fn, b, pside_a,
-                                pside_b, temp, dy, col)
+                                pside_b, temp, dy, col, frow, fric_data[fric_int[i, 0]:], dp,
+                                orient)
         if sticky:
             sticky_any = True
             nsticky += 1

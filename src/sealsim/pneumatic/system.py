@@ -38,7 +38,7 @@ from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["PneumaticSystem", "law_parameters", "stick_tolerance"]
 
-_LAW_WIDTH = 12          # columns of law_par (GMS needs 7 + 2·N)
+_LAW_WIDTH = 16          # columns of law_par (GMS needs 7 + 2·N)
 
 
 def stick_tolerance(breakaway_force):
@@ -62,7 +62,9 @@ def law_parameters(law) -> np.ndarray:
     * dahl: σ0, F_C, α;
     * gms: N, C, σ2, F_C, F_S, v_S, δ, k_1..k_N, α_1..α_N;
     * theta: τ, α, f_a, f_b, γ, F_ref, n, σ0 (0 without bristles), σ1, T_ref, A, B (ASTM D341
-      constants of the base oil, B = 0: γ constant).
+      constants of the base oil, B = 0: γ constant), then 1 if the steady curve comes from the
+      seal's contact table (else 0), μ_b, the dwell drop d and the circumference π·D (set by
+      :class:`PneumaticSystem`; 0 here).
     """
     p = law.params
     name = law.name
@@ -81,9 +83,10 @@ def law_parameters(law) -> np.ndarray:
                   p.stribeck_velocity, p.exponent, *law.k[:, 0], *law.alpha[:, 0]]
     elif name == "theta":
         a, b = law.walther
-        values = [p.tau, p.alpha, p.f_a, p.f_b, p.gamma, p.reference_normal_force,
-                  p.load_exponent, p.bristle_stiffness or 0.0, p.bristle_damping,
-                  p.reference_temperature, a, b]
+        values = [p.tau, p.alpha, p.f_a or 0.0, p.f_b or 0.0, p.gamma,
+                  p.reference_normal_force, p.load_exponent, p.bristle_stiffness or 0.0,
+                  p.bristle_damping, p.reference_temperature, a, b,
+                  1.0 if p.steady == "contact" else 0.0, p.boundary_friction, p.dwell_drop, 0.0]
     else:  # pragma: no cover - every law of sealsim.friction is listed
         raise InputError(f"the pneumatic model does not know the {name!r} law")
     return np.asarray(values, dtype=float)
@@ -178,12 +181,22 @@ class PneumaticSystem:
         law_par = np.zeros((nseal, _LAW_WIDTH))
         seal_therm = np.zeros((nseal, rhs.ST_NCOLS))
         map_int = np.zeros((nseal, 12), dtype=np.int64)
+        fric_int = np.zeros((nseal, 5), dtype=np.int64)
         map_chunks, used = [], 0
+        fric_chunks, fric_used = [], 0
         for i, seal in enumerate(seals):
             values = law_parameters(seal.law)
             if values.size > law_par.shape[1]:
                 law_par = np.pad(law_par, ((0, 0), (0, values.size - law_par.shape[1])))
             law_par[i, :values.size] = values
+            if seal.friction_table is not None:
+                diameter = cyl.bore if seal.location == "piston" else cyl.rod_diameter
+                law_par[i, 15] = math.pi * diameter
+                frow, fdata = seal.friction_table.tables()
+                fric_int[i, 0] = fric_used
+                fric_int[i, 1:] = frow
+                fric_chunks.append(fdata)
+                fric_used += fdata.size
             seal_int[i, rhs.SI_LAW] = rhs.LAW_CODES[seal.law.name]
             seal_int[i, rhs.SI_LOC] = seal.location_code
             seal_int[i, rhs.SI_OFF] = self.offsets[i]
@@ -207,8 +220,11 @@ class PneumaticSystem:
         self.thermal_notes: list[str] = []
         if self.heating:
             self._thermal_setup()
+        self._fric_int = fric_int
+        self._fric_data = np.concatenate(fric_chunks) if fric_chunks else np.zeros(1)
         self.tables = (self._c, self._spool, self._profile, self._seal_int, self._law_par,
-                       self._seal_therm, self._map_int, self._map_data)
+                       self._seal_therm, self._map_int, self._map_data, self._fric_int,
+                       self._fric_data)
         self.n_diag = rhs.D_NFIXED + rhs.DS_NROWS * nseal
         self._diag1 = np.zeros((self.n_diag, 1))
         self._dy = np.zeros(self.n_states)

@@ -82,6 +82,7 @@ def write_results(folder: ResultFolder, results: dict[str, PneumaticResult],
     folder.savefig("friction_stroke.png", friction_stroke_figure(frames, strokes, title,
                                                                  periods))
     folder.savefig("friction_velocity.png", friction_velocity_figure(frames, title, periods))
+    _contact_friction_figures(folder, first, Path(source).parent if source else Path("."))
     for name, r in results.items():
         heated = r.case.thermal is not None and r.case.thermal.seal_heating
         if heated and r.case.controller.mode == "cycle":
@@ -93,3 +94,24 @@ def write_results(folder: ResultFolder, results: dict[str, PneumaticResult],
         folder.savefig(f"timeseries_{name}.png",
                        timeseries_figure(r.timeseries, r.seal_columns,
                                          f"{title} -- {name}" if title else name))
+
+
+def _contact_friction_figures(folder: ResultFolder, case, base_dir: Path) -> None:
+    """``contact_friction_<seal>.png`` for every seal whose steady friction comes from its
+    contact: p_c(z), h(z) and the Stribeck curve per pressure (maps and tables are cached)."""
+    from sealsim.pneumatic.case import build_seals
+    from sealsim.pneumatic.friction_tables import ContactTribology, film_profiles
+    from sealsim.plotting.contact_friction import contact_friction_figure
+
+    for seal in build_seals(case, base_dir):
+        if seal.friction_table is None:
+            continue
+        cyl = case.cylinder
+        diameter = cyl.bore if seal.location == "piston" else cyl.rod_diameter
+        tribology = ContactTribology(**seal.friction_table.attrs["tribology"])
+        profiles = film_profiles(seal.contact_map, tribology, seal.temperature, 0.1)
+        folder.savefig(f"contact_friction_{seal.name}.png", contact_friction_figure(
+            profiles, seal.friction_table, diameter, seal.temperature,
+            seal.law.params.boundary_friction, 0.1,
+            f"seal {seal.name!r}: friction from its contact at "
+            f"{seal.temperature - 273.15:.0f} degC"))

@@ -1,0 +1,204 @@
+"""A seal's friction table from its own contact, and the Θ law on it."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from sealsim.friction import Theta
+from sealsim.friction.base import ContactInputs
+from sealsim.friction.contact_table import SteadyFrictionTable
+from sealsim.pneumatic.contact_maps import AnalyticContactMap
+from sealsim.pneumatic.friction_tables import (
+    ContactTribology,
+    build_friction_table,
+    contact_profiles,
+    friction_table_for,
+    lubricant_viscosity,
+)
+from sealsim.tribology.mixed_lubrication import reciprocating_friction
+
+TRIBOLOGY = ContactTribology()
+ROD = AnalyticContactMap(0.012, 2e-3, 0.12, 8e6, 1.9e-4, 293.15)
+
+
+@pytest.fixture(scope="module")
+def table():
+    return build_friction_table(ROD, TRIBOLOGY)
+
+
+def test_table_reproduces_the_tribology_at_and_between_its_nodes(table):
+    from sealsim.properties.elastomers import get_elastomer
+
+    temps, pressures, profile = contact_profiles(ROD)
+    i, j = 3, 4
+    z, p = profile(i, j)
+    speeds = np.array([1e-4, 3e-3, 0.05, 0.8])
+    modulus = get_elastomer("NBR").modulus(temps[i], speeds / TRIBOLOGY.asperity_wavelength)
+    direct = reciprocating_friction(z, p, speeds, float(lubricant_viscosity(temps[i], TRIBOLOGY)),
+                                    TRIBOLOGY.roughness, modulus, 1.0,
+                                    sealed_pressure=pressures[j])
+    load, viscous, film = table.evaluate(speeds, pressures[j], temps[i])
+    # between the speed nodes (six per decade): C¹ Hermite of smooth curves, within 2 %
+    assert load == pytest.approx(direct.boundary, rel=0.02, abs=1e-3 * direct.boundary.max())
+    assert viscous == pytest.approx(direct.viscous, rel=0.02)
+    assert film == pytest.approx(direct.film, rel=0.02)
+    # at a node: exact
+    node = table.speed[20:21]
+    direct = reciprocating_friction(z, p, node, float(lubricant_viscosity(temps[i], TRIBOLOGY)),
+                                    TRIBOLOGY.roughness,
+                                    get_elastomer("NBR").modulus(temps[i], node / 50e-6), 1.0,
+                                    sealed_pressure=pressures[j])
+    load, viscous, _ = table.evaluate(node, pressures[j], temps[i])
+    assert load == pytest.approx(direct.boundary, rel=1e-9)
+    assert viscous == pytest.approx(direct.viscous, rel=1e-9)
+
+
+def test_table_is_cached_and_read_back(tmp_path, table):
+    first = friction_table_for(ROD, TRIBOLOGY, cache_dir=tmp_path)
+    files = list(tmp_path.glob("friction-*.nc"))
+    assert len(files) == 1
+    fresh = AnalyticContactMap(0.012, 2e-3, 0.12, 8e6, 1.9e-4, 293.15)   # no memo
+    again = friction_table_for(fresh, TRIBOLOGY, cache_dir=tmp_path)
+    assert np.array_equal(first.values, again.values)
+    assert again.attrs["tribology"]["roughness"] == TRIBOLOGY.roughness
+    # another roughness is another table
+    friction_table_for(fresh, ContactTribology(roughness=0.5e-6), cache_dir=tmp_path)
+    assert len(list(tmp_path.glob("friction-*.nc"))) == 2
+    ds = first.to_dataset()
+    assert SteadyFrictionTable.from_dataset(ds).values == pytest.approx(first.values)
+
+
+def inputs_for(table, dp=3e5, temperature=293.15, diameter=0.012, **extra):
+    fn, b = ROD.evaluate(dp, temperature)
+    return ContactInputs(normal_force=float(fn), contact_width=float(b), pressure_a=dp,
+                         temperature=temperature, contact_table=table,
+                         sliding_diameter=diameter, **extra)
+
+
+def test_theta_on_the_contact_table_keeps_the_steady_curve_and_the_dwell(table):
+    law = Theta.from_parameter_set("seal_contact")
+    inputs = inputs_for(table)
+    v = np.array([-0.3, -1e-3, 1e-3, 0.05, 0.5])
+    steady = law.steady_force(v, inputs)
+    expected = table.steady_force(v, 3e5, 293.15, 0.012, 0.2)
+    assert steady == pytest.approx(expected, rel=1e-12)
+    # in steady sliding the dynamic force equals the steady one
+    z_ss = law.steady_state(v, inputs)
+    assert law.force(z_ss, v, inputs) == pytest.approx(steady, rel=1e-9)
+    # at rest after a long dwell: the boundary level μ_b·F_N (asperities carry the load: at
+    # the table's slowest speed, 0.1 µm/s, 99.5 % of it; the Hertz profile's integral is F_N
+    # within 0.1 %) -> within 1 %
+    fn = inputs.normal_force
+    assert law.breakaway_force(np.zeros((1, 1)), inputs)[0] == pytest.approx(0.2 * fn, rel=0.01)
+    # just after sliding (Θ = 1) it is lower by the dwell drop d = 0.5
+    assert law.breakaway_force(np.ones((1, 1)), inputs)[0] == pytest.approx(0.1 * fn, rel=0.01)
+    # accelerating from rest (Θ below Θ_ss): more friction than steady
+    assert law.force(np.zeros((1, 1)), [0.05], inputs)[0] > steady[3]
+    # bristles: the same steady curve
+    bristle = Theta.from_parameter_set("seal_contact", bristle_stiffness=5e4)
+    z = bristle.steady_state(v, inputs)
+    assert bristle.force(z, v, inputs) == pytest.approx(steady, rel=1e-9)
+
+
+def test_theta_contact_partials_match_finite_differences(table):
+    law = Theta.from_parameter_set("seal_contact", bristle_stiffness=5e4)
+    inputs = inputs_for(table)
+    z = np.array([[0.3], [2e-5]])
+    v = np.array([0.02])
+    part = law.partials(z, v, inputs)
+    h = 1e-7
+    num = (law.force(z, v + h, inputs) - law.force(z, v - h, inputs)) / (2 * h)
+    assert part.dforce_dv[0] == pytest.approx(num[0], rel=1e-3)
+    dz = np.array([[0.0], [1e-9]])
+    num_z = (law.force(z + dz, v, inputs) - law.force(z - dz, v, inputs)) / 2e-9
+    assert part.dforce_dz[1, 0] == pytest.approx(num_z[0], rel=1e-4)
+
+
+def test_per_circumference_friction_does_not_depend_on_the_diameter():
+    # same cord, squeeze and pressure on Ø12 ... Ø192: the analytic contact per unit
+    # circumference is the same, and so is the friction per unit circumference
+    per_length = []
+    for diameter in (0.012, 0.048, 0.192):
+        rod = AnalyticContactMap(diameter, 2e-3, 0.12, 8e6, 1.9e-4, 293.15)
+        t = build_friction_table(rod, TRIBOLOGY)
+        per_length.append(t.steady_force([0.01, 1.0], 6e5, 293.15, diameter, 0.2)
+                          / (np.pi * diameter))
+    assert per_length[1] == pytest.approx(per_length[0], rel=0.05)
+    assert per_length[2] == pytest.approx(per_length[0], rel=0.05)
+
+
+def test_cold_seal_stays_below_a_friction_coefficient_of_one():
+    # 2 mm cord O-ring on a 12 mm rod at -20 degC: the grease's base oil is ~60x thicker than
+    # at 20 degC, but the inverse-hydrodynamic film thickens with it (h ∝ √η), so the viscous
+    # friction grows like √(η·u), not like η, and the asperity share falls; F/F_N < 1 over
+    # 0-6 bar and 0.01-1 m/s (the lumped law gave 11-27 here)
+    import sealsim
+
+    frame = sealsim.seal_friction({"cord_diameter": "2 mm", "squeeze": 0.12},
+                                  np.repeat([0.01, 0.1, 1.0], 3), np.tile([0.0, 3e5, 6e5], 3),
+                                  "-20 degC", diameter="12 mm")
+    mu = frame["friction_N"] / frame["normal_force_N"]
+    assert mu.max() < 1.0
+    assert mu.max() > 0.1                  # the viscous part is real: not a vanishing number
+    warm = sealsim.seal_friction({"cord_diameter": "2 mm", "squeeze": 0.12}, 1.0, 0.0,
+                                 "20 degC", diameter="12 mm")
+    cold = frame[(frame.velocity_m_s == 1.0) & (frame.pressure_bar == 0.0)].iloc[0]
+    eta_ratio = float(lubricant_viscosity(253.15, TRIBOLOGY) / lubricant_viscosity(293.15,
+                                                                                TRIBOLOGY))
+    # hydrodynamic at 1 m/s: friction per unit load grows about like √η (the width and the
+    # gradient change a little with the colder, stiffer contact): within 0.5x-2x of √η
+    ratio = (cold.friction_N / cold.normal_force_N) / (warm["friction_N"]
+                                                        / warm["normal_force_N"])
+    assert 0.5 * np.sqrt(eta_ratio) < ratio < 2.0 * np.sqrt(eta_ratio)
+
+
+@pytest.mark.slow
+def test_fe_friction_per_unit_load_does_not_depend_on_the_diameter(tmp_path):
+    # the same 2 mm cord at 12 % squeeze on Ø12, Ø48 and Ø192 rods, FE maps (coarse mesh):
+    # the friction per unit circumference follows the FE contact load per unit circumference
+    # (a small ring is stiffer in hoop compression: Ø12 carries +14 % per mm), the friction
+    # per unit load is the same within 5 % (the old lumped law: 0.44 vs 0.20)
+    from sealsim.pneumatic.case import map_elastomer
+    from sealsim.pneumatic.contact_maps import build_or_load_fe_map
+    from sealsim.pneumatic.friction_tables import sliding_diameter
+
+    mu = {}
+    for d in (12, 48, 192):
+        case = tmp_path / f"rod_{d}.toml"
+        case.write_text(f"""title = "rod seal on a {d} mm rod"
+[seal]
+cord_diameter = "2 mm"
+inner_diameter = "{d} mm"
+[gland]
+arrangement = "rod"
+sealing_diameter = "{d} mm"
+groove_width = "2.7 mm"
+[material]
+elastomer = "NBR"
+[mesh]
+level = "coarse"
+[load]
+installation_temperature = "20 degC"
+squeeze = [0.12]
+[map]
+pressure = ["0 bar", "6 bar"]
+temperature = ["20 degC", "30 degC"]
+squeeze_increments = 4
+temperature_increments = 1
+workers = 1
+profile_points = 181
+""")
+        fe = build_or_load_fe_map(case, cache_dir=tmp_path / "cache")
+        table = friction_table_for(fe, ContactTribology(elastomer=map_elastomer(fe)),
+                                   cache_dir=tmp_path / "cache")
+        diameter = sliding_diameter(fe)
+        assert diameter == pytest.approx(d * 1e-3, rel=1e-6)
+        u = np.array([0.01, 0.1, 1.0, -0.01])
+        rows = []
+        for dp in (0.0, 6e5):
+            fn, _ = fe.evaluate(dp, 293.15)
+            rows.append(table.steady_force(u, dp, 293.15, diameter, 0.2) / fn)
+        mu[d] = np.array(rows)
+    assert mu[48] == pytest.approx(mu[12], rel=0.05)
+    assert mu[192] == pytest.approx(mu[12], rel=0.05)
