@@ -36,7 +36,7 @@ import pandas as pd
 import pint
 
 from sealsim.errors import InputError
-from sealsim.units import ureg
+from sealsim.units import rotational_speed, ureg
 
 __all__ = [
     "FORMATS",
@@ -131,9 +131,17 @@ def _si_factor(unit: str, quantity: str, where: str):
     target = QUANTITIES[quantity]
     if re.search(r"(\*\*|\^)\s*\d{3,}", unit):
         raise InputError(f"{where}: unit {unit!r} has an exponent that is too large")
+    if quantity == "speed" and re.search(r"hz|hertz", unit, re.IGNORECASE):
+        raise InputError(f"{where}: unit {unit!r} is ambiguous for a rotational speed (pint "
+                         "reads 1 Hz as 1 rad/s); use rpm, 1/min, rev/s or rad/s")
+
+    def as_quantity(values):
+        if quantity == "speed":  # 1/min, U/min are revolutions per minute (DIN 1301)
+            return rotational_speed(values, unit)
+        return ureg.Quantity(values, unit)
+
     try:
-        q = ureg.Quantity(1.0, unit)
-        q.to(target)
+        as_quantity(1.0).to(target)
     except pint.errors.DimensionalityError:
         raise InputError(f"{where}: unit {unit!r} is not a unit of {quantity} "
                          f"(expected something convertible to {target})") from None
@@ -142,7 +150,7 @@ def _si_factor(unit: str, quantity: str, where: str):
                          f"(e.g. {target!r})") from None
 
     def convert(values: np.ndarray) -> np.ndarray:
-        return np.asarray(ureg.Quantity(values, unit).to(target).magnitude, dtype=float)
+        return np.asarray(as_quantity(values).to(target).magnitude, dtype=float)
     return convert
 
 
