@@ -83,6 +83,7 @@ __all__ = [
     "ThermalModel",
     "ValveModel",
     "build_seals",
+    "case_input_files",
     "load_pneumatic_case_file",
     "load_pneumatic_cases",
 ]
@@ -457,6 +458,17 @@ def _analytic_map(spec: AnalyticMapModel, diameter: float, where: str) -> Analyt
         reference_temperature=spec.reference_temperature, pressure_max=spec.pressure_max,
         temperature_range=(spec.temperature_min, spec.temperature_max),
         temperature_scaling=spec.temperature_scaling, elastomer=spec.elastomer)
+
+
+def case_input_files(case: PneumaticCase, base_dir: str | Path) -> list[Path]:
+    """The files a pneumatic case reads besides itself: its seals' map files and structure
+    cases (relative to ``base_dir``, the case file's folder)."""
+    files = []
+    for seal in case.seals:
+        if seal.map is not None:
+            files += [Path(base_dir) / f for f in (seal.map.file, seal.map.structure_case)
+                      if f is not None]
+    return files
 
 
 def build_contact_map(spec: MapModel, diameter: float, base_dir: Path, where: str,
