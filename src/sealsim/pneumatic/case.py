@@ -66,6 +66,7 @@ from sealsim.errors import InputError
 from sealsim.friction import make_law
 from sealsim.friction.profiles import profile_type
 from sealsim.friction.case import LawParameters
+from sealsim.friction.parameters import parameter_set_note
 from sealsim.pneumatic.chambers import DEFAULT_HEAT_TRANSFER_COEFFICIENT
 from sealsim.pneumatic.contact_maps import (
     AnalyticContactMap,
@@ -516,7 +517,10 @@ def build_seals(case: PneumaticCase, base_dir: str | Path = ".", progress=None,
         if key not in laws:
             with warnings.catch_warnings(record=True) as caught:
                 warnings.simplefilter("always")     # e.g. LuGre passivity: kept as notes
-                laws[key] = (make_law(spec.friction), [str(w.message) for w in caught])
+                law = make_law(spec.friction)
+            unfitted = parameter_set_note(spec.friction)
+            laws[key] = (law, [str(w.message) for w in caught] + ([unfitted] if unfitted
+                                                                   else []))
         law, notes = laws[key]
         diameter = case.cylinder.bore if spec.location == "piston" else case.cylinder.rod_diameter
         contact_map = None
