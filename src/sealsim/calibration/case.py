@@ -112,7 +112,20 @@ class ColumnModel(CaseModel):
 
 
 class MeasurementModel(CaseModel):
-    """A measured run: a file, how to read it, its role and the conditions not measured."""
+    """A measured run: a file, how to read it, its role and the conditions not measured.
+
+    Sign convention: the friction is the force the seal resists the motion with, positive
+    while the velocity is positive.  A file that counts it the other way gives a negative
+    friction level, which is refused with a hint: flip it with ``scale = -1`` on the friction
+    column, or on the position (or velocity) column when the friction is computed from the
+    rod force and the pressure (columns ``force`` and ``pressure`` with ``bore``: friction =
+    p·π·D²/4 − F_rod, the force balance of a piston the pressure drives against its rod).
+
+    Conditions: the pressure (a ``pressure`` column or ``pressure``) is needed when a contact
+    map or a pressure-scaled law uses it, the seal temperature (``temperature`` here or in
+    ``[contact]``) when a contact map does; a fit without them is refused, never run at a
+    default.  German rigs' files: ``delimiter = ";"`` with ``decimal = ","``.
+    """
 
     name: str = Field(min_length=1)
     file: str
