@@ -533,3 +533,26 @@ def test_friction_run_summary_notes_an_illustrative_set(tmp_path):
     assert result.exit_code == 0, text
     summary = json.loads((tmp_path / "out" / "summary.json").read_text())
     assert any("'pneumatic_demo' holds illustrative" in n for n in summary["notes"])
+
+
+def test_oil_plot_into_the_folder_of_its_oil_file_is_refused(tmp_path):
+    project = tmp_path / "proj"
+    project.mkdir()
+    (project / "oils.toml").write_text(
+        '[oils."Gear 150"]\nfamily = "PAO"\nnu40_mm2_s = 150.0\nnu100_mm2_s = 19.0\n'
+        'rho15_kg_m3 = 850.0\nsource = "datasheet X"\n')
+    before = tree(tmp_path)
+    result, text = cli("oil", "plot", "Gear 150", "--oil-file", project / "oils.toml",
+                       "--out", project, "--force")
+    assert result.exit_code == 2
+    one_message(text)
+    assert "input file" in text and "lies inside the output folder" in text
+    assert tree(tmp_path) == before
+
+
+def test_pneumatic_seals_note_an_illustrative_set():
+    from sealsim.pneumatic.case import build_seals, load_pneumatic_case_file
+
+    cases = load_pneumatic_case_file(EXAMPLES / "pneumatic" / "friction_rig.toml")
+    (seal,) = build_seals(next(iter(cases.values())))
+    assert any("'pneumatic_demo' holds illustrative" in n for n in seal.notes)
