@@ -209,10 +209,9 @@ def _string_to_si(text: str, dim: Dimension) -> float:
     number, unit = match.group(1), match.group(2).strip()
     if _RUNAWAY_POWER.search(unit):  # pint would evaluate e.g. 10**10**8 for minutes
         raise InputError(f"unit {unit!r} in {text!r} has an exponent that is too large")
-    if dim.name == "angular_speed":
-        if re.search(r"hz|hertz", unit, re.IGNORECASE):
-            raise InputError(f"{text!r} -- Hz is ambiguous for a rotational speed; "
-                             "use rpm, rev/s or rad/s")
+    if dim.name == "angular_speed" and re.search(r"hz|hertz", unit, re.IGNORECASE):
+        raise InputError(f"{text!r} -- Hz is ambiguous for a rotational speed; "
+                         "use rpm, rev/s or rad/s")
     try:
         quantity = (rotational_speed(float(number), unit) if dim.name == "angular_speed"
                     else ureg.Quantity(float(number), unit or "dimensionless"))
@@ -294,7 +293,8 @@ def format_quantity(value: float, dimension: str) -> str:
 
 def _shown(value) -> str:
     """``repr`` of a value, shortened to 40 characters (an int of 400 digits)."""
-    text = repr(value.tolist() if isinstance(value, np.ndarray) else value)
+    text = (np.array2string(value, threshold=6, separator=", ") if isinstance(value, np.ndarray)
+            else repr(value))
     return text if len(text) <= 40 else text[:37] + "..."
 
 
@@ -342,11 +342,11 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
     prefix = f"{field}: " if field else ""
     quantity_type = unit_registry().Quantity
     if isinstance(value, quantity_type) and np.ndim(value.magnitude) > 0:
-        if dimension == "angular_speed" and "hertz" in str(value.units):
-            raise InputError(prefix + "Hz is ambiguous for a rotational speed; use rpm, rev/s "
-                             "or rad/s")
         if dimension == "angular_speed":
-            value = revolutions_per_time(value)
+            if "hertz" in str(value.units):
+                raise InputError(prefix + "Hz is ambiguous for a rotational speed; use rpm, "
+                                 "rev/s or rad/s")
+            value = revolutions_per_time(value)   # 1/min given for a speed: rpm
         if value.dimensionality != dim.dimensionality:
             raise InputError(prefix + f"unit {value.units:~} has dimension "
                              f"{value.dimensionality}, expected a {dim.name} (e.g. "
