@@ -14,7 +14,9 @@ row per point; scalar arguments give a dict.  Where a result leaves the range of
 (a contact above the elastomer's service limit, a film outside the measured range, an
 illustrative friction parameter set), the notes that ``sealsim rotary run`` and ``sealsim
 friction run`` print are returned once per call: as ``result["notes"]`` (a dict) or
-``frame.attrs["notes"]`` (a DataFrame), and each as a :class:`~sealsim.errors.SealsimWarning`.  The numbers are those of the long-form API: :func:`lip_seal_torque` is
+``frame.attrs["notes"]`` (a DataFrame), and each as a :class:`~sealsim.errors.SealsimWarning`.
+
+The numbers are those of the long-form API: :func:`lip_seal_torque` is
 :func:`sealsim.rotary.simulation.steady_state` of a :class:`~sealsim.rotary.case.RotaryCase`,
 :func:`seal_friction` is ``FrictionLaw.steady_force`` of :mod:`sealsim.friction` with F_N and
 b from a contact map of :mod:`sealsim.pneumatic.contact_maps`.

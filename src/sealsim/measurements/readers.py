@@ -1,8 +1,9 @@
 """Readers of rig measurements: text tables whose columns are mapped to quantities and units.
 
 A measurement file is a table of numbers (comma, semicolon or whitespace separated, optional
-header line; decimal points, or decimal commas with ``decimal = ","`` as German rigs write
-them, ``delimiter = ";"``).  A *column mapping* says which column holds which quantity and in which unit::
+header line; decimal points, or decimal commas with ``decimal = ","`` and
+``delimiter = ";"`` as German rigs write them).  A *column mapping* says which column holds
+which quantity and in which unit::
 
     columns = { time = { column = 1, unit = "ms" },
                 position = { column = "x", unit = "mm" },      # a header name, or 1-based index
