@@ -25,6 +25,9 @@ from sealsim.rotary.simulation import simulate, steady_state
 from sealsim.units import to_si, unit_registry
 
 RPM = math.pi / 30.0
+# the notes of a call (illustrative parameter set, service limit) are tested in
+# test_input_meaning.py; here they would only fill the summary
+pytestmark = pytest.mark.filterwarnings("ignore::sealsim.errors.SealsimWarning")
 
 
 def _long_form_case(**environment) -> RotaryCase:
