@@ -32,7 +32,7 @@ RUNNER = CliRunner()
 TRUTH = {"tau": 0.2, "alpha": 0.005, "f_a": 0.30, "f_b": 0.08, "gamma": 1e4,
          "reference_normal_force": 100.0, "bristle_stiffness": 2e4}
 #: the contact of the synthetic rig: the analytic O-ring estimate, 2 bar on the seal
-CONTACT = {"sliding_diameter": "25 mm",
+CONTACT = {"sliding_diameter": "25 mm", "temperature": "20 degC",
            "map": {"analytic": {"cord_diameter": "3.5 mm", "squeeze": 0.1}}}
 P_BAR = 2.0
 

@@ -135,13 +135,15 @@ def test_cold_seal_stays_below_a_friction_coefficient_of_one():
     # 0-6 bar and 0.01-1 m/s (the lumped law gave 11-27 here)
     import sealsim
 
+    ureg = sealsim.units.unit_registry()
     frame = sealsim.seal_friction({"cord_diameter": "2 mm", "squeeze": 0.12},
-                                  np.repeat([0.01, 0.1, 1.0], 3), np.tile([0.0, 3e5, 6e5], 3),
+                                  np.repeat([0.01, 0.1, 1.0], 3) * ureg("m/s"),
+                                  np.tile([0.0, 3.0, 6.0], 3) * ureg("bar"),
                                   "-20 degC", diameter="12 mm")
     mu = frame["friction_N"] / frame["normal_force_N"]
     assert mu.max() < 1.0
     assert mu.max() > 0.1                  # the viscous part is real: not a vanishing number
-    warm = sealsim.seal_friction({"cord_diameter": "2 mm", "squeeze": 0.12}, 1.0, 0.0,
+    warm = sealsim.seal_friction({"cord_diameter": "2 mm", "squeeze": 0.12}, "1 m/s", "0 bar",
                                  "20 degC", diameter="12 mm")
     cold = frame[(frame.velocity_m_s == 1.0) & (frame.pressure_bar == 0.0)].iloc[0]
     eta_ratio = float(lubricant_viscosity(253.15, TRIBOLOGY) / lubricant_viscosity(293.15,

@@ -227,7 +227,7 @@ def test_fe_map_built_for_seal_friction_is_announced_and_reports_progress(
     monkeypatch.setenv("SEALSIM_CACHE", str(tmp_path))
     reports = []
     with caplog.at_level(logging.INFO, logger="sealsim"):
-        row = sealsim.seal_friction(tiny_structure_case, 0.1, "6 bar", "40 degC",
+        row = sealsim.seal_friction(tiny_structure_case, "0.1 m/s", "6 bar", "40 degC",
                                     progress=lambda done, total: reports.append((done, total)))
     assert reports == [(1, 2), (2, 2)]
     cached = next((tmp_path / "maps").glob("tiny_rod_seal-*.nc"))
@@ -236,5 +236,5 @@ def test_fe_map_built_for_seal_friction_is_announced_and_reports_progress(
         f"paths), cached at {cached}"]
     assert row["friction_N"] > 0 and row["normal_force_N"] > 0
     caplog.clear()
-    again = sealsim.seal_friction(tiny_structure_case, 0.1, "6 bar", "40 degC")   # cached
+    again = sealsim.seal_friction(tiny_structure_case, "0.1 m/s", "6 bar", "40 degC")  # cached
     assert caplog.records == [] and again == row

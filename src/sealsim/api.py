@@ -1,15 +1,22 @@
 """One-call answers: the friction torque of a lip seal, the friction of a reciprocating seal.
 
 Both functions take quantities as strings with units (``"60 mm"``, ``"1500 rpm"``,
-``"70 degC"``, ``"6 bar"``), as pint quantities (:func:`sealsim.units.unit_registry`), or as
-plain numbers in SI units (m, K, Pa, m/s).  A rotational speed must carry its unit: a plain
-1500 could be rpm or rad/s, so it is refused.  Oils and elastomers are catalogue names
-(``"ISO VG 220"``, ``"NBR"``; ``sealsim oil list``, ``sealsim material list``); an unknown name
-is an error that lists close matches.
+``"1500 1/min"``, ``"70 degC"``, ``"6 bar"``) or as pint quantities
+(:func:`sealsim.units.unit_registry`, also for numpy arrays: ``np.array([0.1, 1.0]) *
+ureg("m/s")``), as case files do.  A plain number is refused for every dimensional argument:
+``pressure=6`` could be bar or Pa, ``sump_temperature=80`` degC or K.  Oils and elastomers are
+catalogue names (``"ISO VG 220"``, ``"NBR"``; ``sealsim oil list``, ``sealsim material list``);
+an unknown name is an error that lists close matches.
 
 Arrays of operating points are evaluated point by point (arguments broadcast against each
-other, numpy style) and give a pandas DataFrame with one row per point; scalar arguments give
-a dict.  The numbers are those of the long-form API: :func:`lip_seal_torque` is
+other, numpy style; at most :data:`MAX_POINTS` per call) and give a pandas DataFrame with one
+row per point; scalar arguments give a dict.  Where a result leaves the range of its models
+(a contact above the elastomer's service limit, a film outside the measured range, an
+illustrative friction parameter set), the notes that ``sealsim rotary run`` and ``sealsim
+friction run`` print are returned once per call: as ``result["notes"]`` (a dict) or
+``frame.attrs["notes"]`` (a DataFrame), and each as a :class:`~sealsim.errors.SealsimWarning`.
+
+The numbers are those of the long-form API: :func:`lip_seal_torque` is
 :func:`sealsim.rotary.simulation.steady_state` of a :class:`~sealsim.rotary.case.RotaryCase`,
 :func:`seal_friction` is ``FrictionLaw.steady_force`` of :mod:`sealsim.friction` with F_N and
 b from a contact map of :mod:`sealsim.pneumatic.contact_maps`.
@@ -31,9 +38,13 @@ from typing import Any
 
 import numpy as np
 
-from sealsim.errors import InputError
+from sealsim.errors import InputError, SealsimWarning
 
 __all__ = ["lip_seal_torque", "seal_friction"]
+
+#: Most operating points one call evaluates: a lip-seal point is a steady-state solve of about
+#: 20 ms, a seal-friction point one vectorised evaluation of the law.
+MAX_POINTS = {"lip_seal_torque": 10_000, "seal_friction": 1_000_000}
 
 #: Columns of :func:`lip_seal_torque` (units in the names).
 LIP_SEAL_COLUMNS = ["shaft_diameter_mm", "speed_rpm", "torque_Nm", "power_W", "T_contact_C",
@@ -64,17 +75,18 @@ def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] = "VG68-
 
     Parameters
     ----------
-    shaft_diameter : str, float or array
-        Shaft diameter, e.g. ``"60 mm"`` (plain number: m).  The seal's other dimensions and
+    shaft_diameter : str, pint quantity or array
+        Shaft diameter, e.g. ``"60 mm"``.  The seal's other dimensions and
         its lip force default to a DIN 3760 seal of that size (:mod:`sealsim.rotary.lip`).
     speed : str, pint quantity or array
-        Shaft speed with its unit, e.g. ``"1500 rpm"`` or ``["500 rpm", "3000 rpm"]``; >= 0.
+        Shaft speed with its unit, e.g. ``"1500 rpm"``, ``"1500 1/min"`` (revolutions per
+        minute, as on data sheets) or ``["500 rpm", "3000 rpm"]``; >= 0.
     oil : str or mapping
         Catalogue oil (``"ISO VG 220"``, ``"VG68-PAO"``; ``sealsim oil list``), or your oil's
         datasheet ``{"name": ..., "nu40": "220 mm^2/s", "nu100": "19 mm^2/s",
         "density15": "895 kg/m^3"}``.
-    sump_temperature : str, float or array, optional
-        Oil sump held at this temperature, e.g. ``"70 degC"`` (plain number: K), as in a
+    sump_temperature : str, pint quantity or array, optional
+        Oil sump held at this temperature, e.g. ``"70 degC"``, as in a
         gearbox whose gears heat the oil.  ``None``: the sump is heated by the seal alone and
         finds its own temperature.
     material : str
@@ -82,29 +94,35 @@ def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] = "VG68-
         ``"VMQ"``).
     lip_style : {"plain", "wave"}
         Plain or wave (hydrodynamic) lip.
-    ambient_temperature : str, float or array
-        Air around the housing (plain number: K), default 20 °C.
-    radial_force : str or float, optional
-        Lip force at 20 °C (plain number: N); default 0.15 N/mm · π·d.
-    contact_width : str or float, optional
-        Axial contact width of the lip (plain number: m); default from the diameter.
+    ambient_temperature : str, pint quantity or array
+        Air around the housing, default 20 °C.
+    radial_force : str or pint quantity, optional
+        Lip force at 20 °C, e.g. ``"40 N"``; default 0.15 N/mm · π·d.
+    contact_width : str or pint quantity, optional
+        Axial contact width of the lip, e.g. ``"0.25 mm"``; default from the diameter.
     case : mapping, optional
         Any further fields of a rotary case (:class:`~sealsim.rotary.case.RotaryCase`), as
-        nested tables: ``{"environment": {"sump_volume": "0.2 L"}, "friction": {...}}``.
+        nested tables with units as in a case file: ``{"environment": {"sump_volume":
+        "0.2 L"}, "friction": {...}}``.
 
     Returns
     -------
     dict or pandas.DataFrame
         shaft_diameter_mm, speed_rpm, torque_Nm, power_W, T_contact_C, T_groove_C,
-        T_sump_C, film_um, F_lub_N, F_material_N: a dict for scalar arguments, a DataFrame
-        with one row per point when any of shaft_diameter, speed, sump_temperature,
-        ambient_temperature is an array (they broadcast against each other).
+        T_sump_C, film_um, F_lub_N, F_material_N: a dict for scalar arguments (with
+        ``notes``, a list of str), a DataFrame with one row per point when any of
+        shaft_diameter, speed, sump_temperature, ambient_temperature is an array (they
+        broadcast against each other; notes in ``frame.attrs["notes"]``).  The notes (also
+        issued as :class:`~sealsim.errors.SealsimWarning`, once per call) are those of
+        ``sealsim rotary run``: a contact above the elastomer's service limit, films outside
+        the measured range.
 
     Raises
     ------
     InputError
-        A speed without a unit, a wrong unit or dimension, an unknown oil or material (with
-        close matches), a value out of range (naming the case field).
+        A value without a unit, a wrong unit or dimension, an unknown oil or material (with
+        close matches), a value out of range (naming the case field), arrays that do not
+        broadcast, more than ``MAX_POINTS["lip_seal_torque"]`` points.
 
     Examples
     --------
@@ -124,49 +142,50 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
     """
     from sealsim.cases import apply_overrides, validate_case
     from sealsim.rotary.case import RotaryCase
-    from sealsim.rotary.simulation import steady_state
-    from sealsim.units import to_si
+    from sealsim.rotary.simulation import lip_seal_friction, operating_notes, steady_state
+    from sealsim.tribology.film import FilmRangeWarning
 
-    d = to_si(shaft_diameter, "length", "shaft_diameter")
-    omega = to_si(speed, "angular_speed", "speed", plain_is_si=False)
-    if np.any(np.asarray(omega) < 0):
+    shape, points = _operating_points("lip_seal_torque", {
+        "shaft_diameter": (shaft_diameter, "length"), "speed": (speed, "angular_speed"),
+        "ambient_temperature": (ambient_temperature, "temperature"),
+        **({} if sump_temperature is None
+           else {"sump_temperature": (sump_temperature, "temperature")})})
+    if np.any(points["speed"] < 0):
         raise InputError(f"speed: {speed!r} must be >= 0")
-    t_sump = (None if sump_temperature is None
-              else to_si(sump_temperature, "temperature", "sump_temperature"))
-    t_amb = to_si(ambient_temperature, "temperature", "ambient_temperature")
     seal: dict[str, Any] = {"material": material, "lip_style": lip_style}
-    if radial_force is not None:
-        seal["radial_force"] = to_si(radial_force, "force", "radial_force")
-    if contact_width is not None:
-        seal["contact_width"] = to_si(contact_width, "length", "contact_width")
+    for name, value, dimension, unit in (("radial_force", radial_force, "force", "N"),
+                                         ("contact_width", contact_width, "length", "m")):
+        if value is not None:
+            seal[name] = _si_text(_scalar(value, dimension, name), unit)
     oil_table = {"name": oil} if isinstance(oil, str) else dict(oil)
     base = apply_overrides({"seal": seal, "oil": oil_table}, dict(case or {}))
 
-    vectors = {"d": d, "omega": omega, "t_amb": t_amb,
-               "t_sump": np.nan if t_sump is None else t_sump}
-    shape = np.broadcast_shapes(*(np.shape(v) for v in vectors.values()))
-    points = {k: np.broadcast_to(np.asarray(v, dtype=float), shape).ravel()
-              for k, v in vectors.items()}
     cases: dict[tuple, RotaryCase] = {}  # one case per geometry and temperatures
     rows = []
-    for k in range(int(np.prod(shape))):
-        key = (points["d"][k], points["t_amb"][k], points["t_sump"][k])
-        if key not in cases:
-            env = {"ambient_temperature": key[1]}
-            if not math.isnan(key[2]):
-                env["sump_temperature"] = key[2]
-            data = apply_overrides(base, {"seal": {"shaft_diameter": key[0]},
-                                          "environment": env})
-            cases[key] = validate_case(RotaryCase, data, "lip_seal_torque arguments",
-                                       require_units=False)
-        result = steady_state(cases[key], float(points["omega"][k]))
-        rows.append({"shaft_diameter_mm": key[0] * 1e3,
-                     "speed_rpm": float(points["omega"][k]) * 30.0 / math.pi,
-                     **{c: result[c] for c in LIP_SEAL_COLUMNS[2:]}})
-    return _rows_out(rows, shape, LIP_SEAL_COLUMNS)
+    t_sump = points.get("sump_temperature", np.full(points["speed"].shape, np.nan))
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", FilmRangeWarning)  # one note per call, not per point
+        for k in range(points["speed"].size):
+            key = (points["shaft_diameter"][k], points["ambient_temperature"][k], t_sump[k])
+            if key not in cases:
+                env = {"ambient_temperature": _si_text(key[1], "K")}
+                if not math.isnan(key[2]):
+                    env["sump_temperature"] = _si_text(key[2], "K")
+                data = apply_overrides(base, {"seal": {"shaft_diameter": _si_text(key[0], "m")},
+                                              "environment": env})
+                cases[key] = validate_case(RotaryCase, data, "lip_seal_torque arguments")
+            omega = float(points["speed"][k])
+            result = steady_state(cases[key], omega)
+            rows.append({"shaft_diameter_mm": key[0] * 1e3, "speed_rpm": omega * 30.0 / math.pi,
+                         **{c: result[c] for c in LIP_SEAL_COLUMNS[2:]}})
+    first = next(iter(cases.values()))
+    films = [r["film_um"] for r in rows if r["speed_rpm"] != 0]
+    notes = operating_notes(first, lip_seal_friction(first).elastomer,
+                            [r["T_contact_C"] for r in rows], films)
+    return _rows_out(rows, shape, LIP_SEAL_COLUMNS, notes)
 
 
-def seal_friction(seal, velocity, pressure=0.0, temperature="20 degC", law=None, *,
+def seal_friction(seal, velocity, pressure="0 bar", temperature="20 degC", law=None, *,
                   diameter=None, progress=None):
     """Steady friction force of a reciprocating seal over sliding velocity.
 
@@ -196,24 +215,28 @@ def seal_friction(seal, velocity, pressure=0.0, temperature="20 degC", law=None,
           defaults to NBR), or any ``map`` table of a pneumatic case (``{"analytic": {...}}``,
           ``{"file": ...}``, ``{"structure_case": ...}``);
         * a contact map object (``AnalyticContactMap``, ``FEContactMap``).
-    velocity : str, float or array
-        Sliding velocity, e.g. ``[0.01, 0.1, 1.0]`` (plain numbers: m/s) or ``"0.2 m/s"``;
-        positive: the counter surface slides from the pressurised side to the other (a rod
-        seal's outstroke).
-    pressure : str, float or array
+    velocity : str, pint quantity or array
+        Sliding velocity, e.g. ``"0.2 m/s"``, ``["0.01 m/s", "0.1 m/s"]`` or a numpy array
+        times its unit, ``np.linspace(0.01, 1.0, 50) * sealsim.units.ureg("m/s")``; positive:
+        the counter surface slides from the pressurised side to the other (a rod seal's
+        outstroke).
+    pressure : str, pint quantity or array
         Gauge pressure on the pressurised side, atmosphere on the other (a rod seal, or a
-        piston seal with one chamber vented), e.g. ``"6 bar"`` (plain number: Pa).
-    temperature : str, float or array
-        Seal temperature (plain number: K), default 20 °C.
+        piston seal with one chamber vented), e.g. ``"6 bar"``; default 0 bar.
+    temperature : str, pint quantity or array
+        Seal temperature, default 20 °C.
     law : str, mapping or FrictionLaw, optional
         The friction law: a law name whose parameters are its only named set
         (``"theta"``: ``pneumatic_demo``), a ``[friction]`` table of a case file
         (``{"law": "stribeck", "parameter_set": "pneumatic_demo", "coulomb_force": "12 N"}``)
-        or a law object of :mod:`sealsim.friction`.  Default :data:`DEFAULT_LAW` (the Θ law
-        with illustrative parameters, not fitted to measurements).
-    diameter : str or float, optional
-        Diameter of the sliding surface (rod or bore) for the analytic estimate (plain
-        number: m).
+        or a law object of :mod:`sealsim.friction`.  Default :data:`DEFAULT_LAW`: the Θ law
+        whose steady curve comes from the seal's contact (set ``seal_contact``: boundary
+        friction and roughness are generic literature values; fit ``boundary_friction`` to
+        your seal with ``sealsim friction fit``).  The lumped set ``pneumatic_demo`` is
+        illustrative, and the result's notes say so.
+    diameter : str or pint quantity, optional
+        Diameter of the sliding surface (rod or bore) for the analytic estimate, e.g.
+        ``"12 mm"``.
     progress : callable, optional
         ``progress(done, total)`` while an FE map is built on demand (finished FE load paths).
         The build is announced before it starts at INFO level on the logger
@@ -230,17 +253,24 @@ def seal_friction(seal, velocity, pressure=0.0, temperature="20 degC", law=None,
         the seal lets pass per metre of double stroke at this speed, π·D·(h*_out − h*_in)/2:
         > 0 leaks out, <= 0 is dragged back; NaN for other laws): a DataFrame with one row per
         point if velocity, pressure or temperature is an array (broadcast), else a dict.
+        Notes (an illustrative parameter set) as for :func:`lip_seal_torque`:
+        ``result["notes"]``, ``frame.attrs["notes"]`` and
+        :class:`~sealsim.errors.SealsimWarning`.
 
     Raises
     ------
     InputError
-        A wrong unit, an unknown law or material, a pressure or temperature outside the
-        contact map, a law that needs parameters.
+        A value without a unit, a wrong unit, an unknown law or material, a pressure or
+        temperature outside the contact map, a law that needs parameters, arrays that do not
+        broadcast, more than ``MAX_POINTS["seal_friction"]`` points.
 
     Examples
     --------
+    >>> import warnings
     >>> oring = {"cord_diameter": "2 mm", "squeeze": 0.12}
-    >>> curve = seal_friction(oring, [0.01, 0.1, 1.0], "6 bar", diameter="12 mm")
+    >>> with warnings.catch_warnings(record=True):   # notes on illustrative parameters
+    ...     curve = seal_friction(oring, ["0.01 m/s", "0.1 m/s", "1 m/s"], "6 bar",
+    ...                           diameter="12 mm")
     >>> curve[["velocity_m_s", "friction_N", "normal_force_N", "film_um"]].round(2)
        velocity_m_s  friction_N  normal_force_N  film_um
     0          0.01        5.30           49.24     0.67
@@ -248,18 +278,17 @@ def seal_friction(seal, velocity, pressure=0.0, temperature="20 degC", law=None,
     2          1.00        2.26           49.24     4.62
     """
     from sealsim.friction.base import ContactInputs
-    from sealsim.units import ZERO_CELSIUS_K, to_si
+    from sealsim.units import ZERO_CELSIUS_K
 
-    v = to_si(velocity, "velocity", "velocity")
-    dp = to_si(pressure, "pressure", "pressure")
-    t = to_si(temperature, "temperature", "temperature")
-    shape = np.broadcast_shapes(np.shape(v), np.shape(dp), np.shape(t))
-    v, dp, t = (np.broadcast_to(np.asarray(x, dtype=float), shape).ravel() for x in (v, dp, t))
+    shape, points = _operating_points("seal_friction", {
+        "velocity": (velocity, "velocity"), "pressure": (pressure, "pressure"),
+        "temperature": (temperature, "temperature")})
+    v, dp, t = points["velocity"], points["pressure"], points["temperature"]
     if np.any(dp < 0):
         raise InputError(f"pressure: {pressure!r} must be >= 0 (a gauge pressure difference)")
     contact_map = _contact_map(seal, diameter, progress)
     _check_ranges(contact_map, dp, t)
-    friction_law = _friction_law(DEFAULT_LAW if law is None else law)
+    friction_law, notes = _friction_law(DEFAULT_LAW if law is None else law)
     normal_force, width = (np.asarray(x, dtype=float) * np.ones_like(dp)
                            for x in contact_map.evaluate(dp, t))
     table, diameter_m = _contact_table(friction_law, contact_map)
@@ -276,13 +305,11 @@ def seal_friction(seal, velocity, pressure=0.0, temperature="20 degC", law=None,
         film_out = table.evaluate(np.abs(v), dp, t)[2]
         film_in = table.evaluate(-np.abs(v), dp, t)[2]
         transport = stroke_transport(diameter_m, 1.0, film_out, film_in)
-    rows = [{"velocity_m_s": v[k], "pressure_bar": dp[k] / 1e5,
-             "temperature_C": t[k] - ZERO_CELSIUS_K, "friction_N": force[k],
-             "normal_force_N": normal_force[k], "contact_width_mm": width[k] * 1e3,
-             "film_um": film[k] * 1e6, "asperity_share": share[k],
-             "transport_mm3_per_m": transport[k] * 1e9}
-            for k in range(v.size)]
-    return _rows_out(rows, shape, SEAL_FRICTION_COLUMNS)
+    columns = {"velocity_m_s": v, "pressure_bar": dp / 1e5, "temperature_C": t - ZERO_CELSIUS_K,
+               "friction_N": force, "normal_force_N": normal_force,
+               "contact_width_mm": width * 1e3, "film_um": film * 1e6, "asperity_share": share,
+               "transport_mm3_per_m": transport * 1e9}
+    return _rows_out(columns, shape, SEAL_FRICTION_COLUMNS, notes)
 
 
 def _contact_table(friction_law, contact_map):
@@ -296,13 +323,69 @@ def _contact_table(friction_law, contact_map):
     return seal_friction_table(friction_law, contact_map, "seal"), sliding_diameter(contact_map)
 
 
-def _rows_out(rows: list[dict], shape: tuple, columns: list[str]):
-    """A dict of floats for a single point given as scalars, else a DataFrame."""
-    if shape == ():
-        return {c: float(rows[0][c]) for c in columns}
+def _rows_out(rows: list[dict] | dict[str, np.ndarray], shape: tuple, columns: list[str],
+              notes: list[str]):
+    """A dict of floats (and its notes) for a single point given as scalars, else a DataFrame
+    (notes in ``attrs``); each note is issued once as a :class:`SealsimWarning`."""
+    for note in notes:
+        warnings.warn(note, SealsimWarning, stacklevel=3)
     import pandas as pd
 
-    return pd.DataFrame(rows, columns=columns)
+    frame = pd.DataFrame(rows, columns=columns)
+    if shape == ():
+        return {**{c: float(frame[c].iloc[0]) for c in columns}, "notes": list(notes)}
+    frame.attrs["notes"] = list(notes)
+    return frame
+
+
+def _operating_points(function: str, arguments: dict[str, tuple[Any, str]]
+                      ) -> tuple[tuple, dict[str, np.ndarray]]:
+    """The shape of the broadcast point arguments and each as a flat SI array.
+
+    ``arguments`` maps an argument's name to ``(value, dimension)``.  A value needs its unit
+    (a plain number is refused); arguments that do not broadcast against each other and more
+    than :data:`MAX_POINTS` points are refused before any value is converted.
+    """
+    from sealsim.units import to_si
+
+    shapes = {name: _shape(value) for name, (value, _) in arguments.items()}
+    try:
+        shape = np.broadcast_shapes(*shapes.values())
+    except ValueError:
+        given = ", ".join(f"{name} has shape {s}" for name, s in shapes.items() if s)
+        raise InputError(f"{function}: the arrays do not broadcast against each other ({given}):"
+                         " give arrays of one length, or scalars") from None
+    size = math.prod(shape)
+    if size > MAX_POINTS[function]:
+        raise InputError(f"{function}: {size} operating points are more than the "
+                         f"{MAX_POINTS[function]} one call evaluates; split them into several "
+                         "calls")
+    return shape, {name: np.broadcast_to(np.asarray(
+        to_si(value, dimension, name, plain_is_si=False), dtype=float), shape).ravel()
+        for name, (value, dimension) in arguments.items()}
+
+
+def _shape(value) -> tuple:
+    """Shape of an argument (a pint array's magnitude, a nested list)."""
+    magnitude = getattr(value, "magnitude", value)
+    if not isinstance(magnitude, list | tuple | np.ndarray):
+        return ()
+    return np.asarray(magnitude, dtype=object).shape   # a ragged list: refused by to_si
+
+
+def _scalar(value, dimension: str, name: str) -> float:
+    """One SI value of an argument that takes no array."""
+    from sealsim.units import to_si
+
+    si = to_si(value, dimension, name, plain_is_si=False)
+    if np.ndim(si) != 0:
+        raise InputError(f"{name}: one value is expected, got an array of shape {np.shape(si)}")
+    return float(si)
+
+
+def _si_text(value: float, unit: str) -> str:
+    """A case-file quantity string of an SI value, exact (``repr`` of the float)."""
+    return f"{float(value)!r} {unit}"
 
 
 _MAP_SOURCES = ("analytic", "file", "structure_case")
@@ -312,7 +395,6 @@ def _contact_map(seal, diameter, progress=None):
     """The contact map of a ``seal`` argument (see :func:`seal_friction`)."""
     from sealsim.cases import validate_case
     from sealsim.pneumatic.case import MapModel, build_contact_map
-    from sealsim.units import to_si
 
     if hasattr(seal, "evaluate") and hasattr(seal, "ranges"):
         return seal
@@ -330,8 +412,11 @@ def _contact_map(seal, diameter, progress=None):
     else:
         raise InputError(f"seal: {seal!r} is not a structure case, a map file, an O-ring "
                          "table or a contact map")
-    spec = validate_case(MapModel, table, "seal", require_units=False)
-    sliding = None if diameter is None else to_si(diameter, "length", "diameter")
+    spec = validate_case(MapModel, table, "seal")
+    sliding = None if diameter is None else _scalar(diameter, "length", "diameter")
+    if sliding is not None and sliding <= 0:
+        raise InputError(f"diameter: {diameter!r} must be > 0 (the diameter of the sliding "
+                         "surface, rod or bore)")
     if spec.analytic is not None and spec.analytic.sliding_diameter is None and sliding is None:
         raise InputError("seal: the analytic estimate needs the diameter of the sliding "
                          "surface (rod or bore): give diameter='12 mm'")
@@ -358,12 +443,14 @@ def _check_ranges(contact_map, pressure: np.ndarray, temperature: np.ndarray) ->
 
 
 def _friction_law(law):
-    """A friction law object from a name, a ``[friction]`` table or a law object."""
+    """A friction law object from a name, a ``[friction]`` table or a law object, and its notes
+    (an illustrative parameter set)."""
     from sealsim.friction import PARAMETER_SETS, make_law
     from sealsim.friction.base import FrictionLaw, PassivityWarning
+    from sealsim.friction.parameters import parameter_set_note
 
     if isinstance(law, FrictionLaw):
-        return law
+        return law, []
     if isinstance(law, str):
         sets = sorted(PARAMETER_SETS.get(law, {}))
         if len(sets) != 1:
@@ -376,10 +463,11 @@ def _friction_law(law):
     if not isinstance(law, Mapping):
         raise InputError(f"law: {law!r} is not a law name, a [friction] table or a law object")
     params = _law_parameters(law)
+    note = parameter_set_note(params)
     with warnings.catch_warnings():
         # passivity concerns fast velocity changes, not the steady friction computed here
         warnings.simplefilter("ignore", PassivityWarning)
-        return make_law(params)
+        return make_law(params), [note] if note else []
 
 
 def _law_parameters(table: Mapping[str, Any]):
@@ -390,6 +478,6 @@ def _law_parameters(table: Mapping[str, Any]):
 
     try:
         return TypeAdapter(LawParameters).validate_python(dict(table),
-                                                          context={"require_units": False})
+                                                          context={"require_units": True})
     except ValidationError as exc:
         raise InputError(format_validation_error(exc, "law")) from None

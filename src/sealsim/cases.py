@@ -19,6 +19,7 @@ per problem, the field path (``seal.shaft_diameter``), the value given and what 
 from __future__ import annotations
 
 import copy
+import logging
 import math
 import re
 import tomllib
@@ -481,7 +482,9 @@ def expand_variants(model: type[ModelT], data: dict[str, Any],
     """Validate a case with optional ``[variants.NAME]`` tables that override base fields.
 
     Without variants the case is one variant named ``"base"``.  With variants, each variant is
-    the base deep-merged with its overrides (:func:`apply_overrides`) and validated on its own.
+    the base deep-merged with its overrides (:func:`apply_overrides`) and validated on its own;
+    the base case itself is not a run (add an empty ``[variants.base]`` to run it), which an
+    INFO record on the ``sealsim.cases`` logger says (the CLI prints it).
     A problem shared by every variant (usually one in the base case) is reported once; others
     name their variant (``variant 'wave': seal.lip_style: ...``).  Variant names are checked
     by :func:`check_variant_name` (they become file names), and two names that differ only in
@@ -531,7 +534,17 @@ def expand_variants(model: type[ModelT], data: dict[str, Any],
         lines = shared + [f"variant {name!r}: {p}" for name, found in problems.items()
                           for p in found if p not in shared]
         raise InputError(_message(source, lines))
+    _say_base_not_run(cases, source)
     return cases
+
+
+def _say_base_not_run(cases: dict[str, Any], source: str) -> None:
+    """Announce (INFO on the ``sealsim.cases`` logger, which the CLI prints) that a case with
+    variants runs the variants only, not its base case."""
+    logging.getLogger(__name__).info(
+        "%s: runs the variants %s; the base case only gives their common fields and is not run "
+        "on its own (add an empty [variants.%s] table to run it too)", source, ", ".join(cases),
+        DEFAULT_VARIANT)
 
 
 def dump_variants_toml(cases: dict[str, BaseModel], header: str | None = None) -> str:

@@ -45,8 +45,8 @@ from sealsim.measurements import (
 )
 from sealsim.units import ZERO_CELSIUS_K
 
-__all__ = ["FitResult", "PreparedRun", "fit_friction", "predict_run", "prepare_run",
-           "run_metrics"]
+__all__ = ["FitResult", "PreparedRun", "fit_friction", "friction_from_rod_force", "predict_run",
+           "prepare_run", "run_metrics"]
 
 
 @dataclass
@@ -64,13 +64,14 @@ class PreparedRun:
     phases: list
     pressure: np.ndarray           # gauge pressure on the pressurised side [Pa]
     pressure_difference: np.ndarray
-    temperature: float
+    temperature: float | None
     normal_force: np.ndarray | None = None
     contact_width: np.ndarray | None = None
     samples: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
     contact_table: Any = None          # steady friction table from the seal's contact
     sliding_diameter: float | None = None
     orientation: float = 1.0
+    pressure_known: bool = True    # False: no pressure given and none needed (zeros)
 
     @property
     def name(self) -> str:
@@ -90,43 +91,66 @@ def prepare_run(case: FrictionFitCase, spec: MeasurementModel, contact_map=None,
     Raises
     ------
     InputError
-        Bad file (file/row/column named), no sliding phase, a pressure outside the contact
-        map's range.
+        Bad file (file/row/column named), no sliding phase, a condition the model needs that
+        neither the file nor the case gives (pressure, temperature), a negative friction level
+        (a reversed sign convention), a pressure outside the contact map's range.
     """
     path = _resolve(spec.file, Path(base_dir))
     where = f"measurement {spec.name!r} ({path})"
     options = {"bore": spec.bore} if spec.format == "tudelft" else None
-    table = {} if spec.format else {"delimiter": spec.delimiter, "header": spec.header}
+    table = {} if spec.format else {"delimiter": spec.delimiter, "header": spec.header,
+                                    "decimal": spec.decimal}
     if spec.skip_rows is not None:
         table["skip_rows"] = spec.skip_rows
     m = read_measurement(path, format=spec.format,
                          columns=spec.column_specs() if spec.columns else None,
                          options=options, name=spec.name, **table)
+    computed = not m.has("friction")
+    if computed:  # a rig that logs the rod force and the pressure on the piston
+        m.data["friction"] = friction_from_rod_force(m.column("pressure"), m.column("force"),
+                                                     spec.bore)
     t = m.time
     sig = case.signals
-    if m.has("position"):
-        x = m.column("position")
-        v = m.column("velocity") if m.has("velocity") else smooth_derivative(
-            t, x, window=sig.velocity_window)
-    else:
-        v = m.column("velocity")
-        x = np.concatenate([[0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * np.diff(t))])
     try:
+        if m.has("position"):
+            x = m.column("position")
+            v = m.column("velocity") if m.has("velocity") else smooth_derivative(
+                t, x, window=sig.velocity_window)
+        else:
+            v = m.column("velocity")
+            x = np.concatenate([[0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * np.diff(t))])
         phases = sliding_phases(t, v, sig.sliding_threshold, sig.min_phase_duration, sig.settle)
         level, offset = friction_level(m.column("friction"), phases)
     except InputError as exc:
         raise InputError(f"{where}: {exc}") from None
+    if level < 0:
+        flip = ("the position (or velocity) column" if computed else "the friction column")
+        raise InputError(
+            f"{where}: the measured friction level is {level:.4g} N, negative: the friction "
+            "in the file probably counts the other way than sealsim (the force the seal "
+            "resists the motion with, positive while the velocity is positive); flip it with "
+            f"scale = -1 on {flip}")
+    needs = _needed_conditions(case, contact_map)
     if m.has("pressure"):
         p = m.column("pressure")
     elif spec.pressure is not None:
         p = np.full(t.shape, spec.pressure)
+    elif "pressure" in needs:
+        raise InputError(f"{where}: no pressure: {needs['pressure']} needs the pressure of "
+                         "every run; give a pressure column or pressure = '2 bar' (gauge) in "
+                         "this measurement")
     else:
-        p = np.zeros(t.shape)
+        p = None
     temperature = spec.temperature if spec.temperature is not None else (
-        case.contact.temperature if case.contact is not None else 293.15)
+        case.contact.temperature if case.contact is not None else None)
+    if temperature is None and "temperature" in needs:
+        raise InputError(f"{where}: no seal temperature: {needs['temperature']} needs it; give "
+                         "temperature = '20 degC' in this measurement or in [contact]")
+    known = p is not None
+    p = p if known else np.zeros(t.shape)   # the law does not use it (see _needed_conditions)
     dp = np.abs(p)          # piston seal: pressurised side | ambient; rod seal: chamber | ambient
     run = PreparedRun(spec, m, t, x, v, m.column("friction") - offset, offset, level, phases,
-                      p, dp, temperature)
+                      p, dp, temperature, pressure_known=known)
     if contact_map is not None:
         lo, hi = contact_map.ranges["pressure"]
         tol = 0.02 * max(hi - lo, 1.0)
@@ -154,6 +178,48 @@ def prepare_run(case: FrictionFitCase, spec: MeasurementModel, contact_map=None,
     stride = max(1, int(math.ceil(t.size / case.fit.max_samples)))
     run.samples = np.arange(0, t.size, stride)
     return run
+
+
+def friction_from_rod_force(pressure, rod_force, bore: float) -> np.ndarray:
+    """Friction of a piston seal from the pressure on the piston and the rod force [N].
+
+    .. math:: F_f = p\\,A - F_{rod}, \\qquad A = \\pi D^2/4
+
+    The force balance of a piston that the gauge pressure p drives against the rod force
+    F_rod (the force the rod passes on to the load cell), with the friction resisting the
+    motion: positive while the piston moves the way the pressure pushes it.  If the rig counts
+    position the other way, the friction level comes out negative: flip the position (or
+    velocity) column with ``scale = -1``.
+
+    Parameters
+    ----------
+    pressure : array_like
+        Gauge pressure on the piston [Pa].
+    rod_force : array_like
+        Rod force [N].
+    bore : float
+        Bore diameter D [m].
+
+    Examples
+    --------
+    >>> round(float(friction_from_rod_force(2e5, 90.0, 0.025)), 3)   # 98.175 N - 90 N
+    8.175
+    """
+    area = math.pi * bore ** 2 / 4.0
+    return np.asarray(pressure, dtype=float) * area - np.asarray(rod_force, dtype=float)
+
+
+def _needed_conditions(case: FrictionFitCase, contact_map) -> dict[str, str]:
+    """The conditions the model of a fit uses, each with what uses it."""
+    needs = {}
+    if contact_map is not None:
+        needs["pressure"] = needs["temperature"] = "the contact map (F_N and b)"
+    fitted = {p.name for p in case.fit.parameters}
+    if "pressure_coefficient" in type(case.friction).model_fields and (
+            getattr(case.friction, "pressure_coefficient", None) or
+            "pressure_coefficient" in fitted):
+        needs.setdefault("pressure", f"the pressure scaling of the {case.friction.law} law")
+    return needs
 
 
 def _inputs(run: PreparedRun, index=slice(None), column=False) -> ContactInputs:
@@ -211,7 +277,8 @@ def run_metrics(run: PreparedRun, predicted: np.ndarray) -> dict[str, Any]:
     f_pred, _ = friction_level(predicted, run.phases)
     agreement = compare_signals(run.friction, predicted)
     return {"role": run.spec.role,
-            "pressure_bar": float(np.median(run.pressure)) / 1e5,
+            "pressure_bar": (float(np.median(run.pressure)) / 1e5 if run.pressure_known
+                             else None),
             "F_measured_N": run.level, "F_predicted_N": f_pred,
             "rel_error": (f_pred - run.level) / run.level if run.level else None,
             "rmse_N": agreement["rmse"], "r2": agreement["r2"]}
@@ -257,6 +324,7 @@ def fit_friction(case: FrictionFitCase, runs: list[PreparedRun], progress=None) 
     """
     start = case.friction
     names, bounds, initial, stage_of = [], [], [], []
+    start_notes: list[str] = []
     for k, p in enumerate(case.fit.parameters):
         where = f"fit.parameters[{k}] ({p.name!r})"
         lo = parse_law_value(start, p.name, p.bounds[0], f"{where}.bounds[0]")
@@ -269,7 +337,15 @@ def fit_friction(case: FrictionFitCase, runs: list[PreparedRun], progress=None) 
         if x0 is None:
             raise InputError(f"{where}: the law has no value for {p.name}; give initial")
         if not lo <= x0 <= hi:
-            x0 = math.sqrt(lo * hi) if _log_space(lo, hi) else 0.5 * (lo + hi)
+            if p.initial is not None:
+                raise InputError(f"{where}.initial: {p.initial!r} lies outside the bounds "
+                                 f"[{p.bounds[0]!r}, {p.bounds[1]!r}]; give a start value "
+                                 "inside them (or widen the bounds)")
+            middle = math.sqrt(lo * hi) if _log_space(lo, hi) else 0.5 * (lo + hi)
+            start_notes.append(f"{p.name}: the law's value {x0:.6g} (SI) lies outside the "
+                               f"bounds {p.bounds}; the fit started from {middle:.6g} (SI); "
+                               "give initial to choose the start")
+            x0 = middle
         names.append(p.name)
         bounds.append((lo, hi))
         initial.append(float(x0))
@@ -281,7 +357,7 @@ def fit_friction(case: FrictionFitCase, runs: list[PreparedRun], progress=None) 
         return {**vals, **{target: vals[source] for target, source in tied.items()}}
 
     values = dict(zip(names, initial))
-    stages, notes = [], []
+    stages, notes = [], start_notes
     failure: list[str] = []
     all_jac_rows = {}
     for stage in ("steady", "dynamic"):

@@ -81,7 +81,7 @@ class FrictionFitStudy:
         return pd.concat([pd.DataFrame({
             "measurement": r.name, "role": r.spec.role, "time_s": r.time,
             "position_mm": r.position * 1e3, "velocity_mm_s": r.velocity * 1e3,
-            "pressure_bar": r.pressure / 1e5,
+            "pressure_bar": r.pressure / 1e5 if r.pressure_known else np.nan,
             "normal_force_N": r.normal_force if r.normal_force is not None else np.nan,
             "friction_measured_N": r.friction, "friction_model_N": self.predictions[r.name]})
             for r in self.runs], ignore_index=True)

@@ -268,7 +268,7 @@ def oil_plot(
     extra = _extra_oils(oil_file)
     oils = unique_by_name([get_oil(n, extra) for n in names])
     grid = _grid_celsius(t_min, t_max)
-    folder = ResultFolder(out, force=force)  # refuse an existing folder before any work
+    folder = ResultFolder(out, force=force, inputs=[oil_file] if oil_file else [])  # before work
     frame, notes = viscosity_curves(oils, grid, "--t-min/--t-max")
     if frame.drop(columns="temperature_C").isna().all().all():
         raise InputError(f"nothing to plot between {grid[0]:g} and {grid[-1]:g} degC: "
@@ -408,7 +408,8 @@ def material_plot(
     hi = max(celsius(m.service_range[1]) for m in materials) + 20.0 if t_max is None else t_max
     grid = _grid_celsius(math.floor(lo / 10.0) * 10.0 if t_min is None else lo,
                          math.ceil(hi / 10.0) * 10.0 if t_max is None else hi)
-    folder = ResultFolder(out, force=force)  # refuse an existing folder before any work
+    folder = ResultFolder(out, force=force,
+                          inputs=[material_file] if material_file else [])  # before any work
     frame = modulus_curves(materials, grid, freq)
     if frame.drop(columns="temperature_C").isna().all().all():
         ranges = ", ".join(f"{m.name} {celsius(m.allowed_range[0]):.0f} to "

@@ -19,7 +19,8 @@ import tomllib
 from importlib import resources
 from typing import Any
 
-__all__ = ["PARAMETER_SETS", "parameter_set_source", "parameter_set_values"]
+__all__ = ["PARAMETER_SETS", "parameter_set_note", "parameter_set_source",
+           "parameter_set_values"]
 
 
 def _load() -> dict[str, dict[str, dict[str, Any]]]:
@@ -50,3 +51,33 @@ def parameter_set_values(law: str, name: str) -> dict[str, Any]:
 def parameter_set_source(law: str, name: str) -> str:
     """Where the numbers of a named set come from (with its [V]/[M]/[R] tag)."""
     return PARAMETER_SETS[law][name]["source"]
+
+
+def parameter_set_note(params) -> str:
+    """A note when a law takes values from a set that is not measured ([R]: reconstructed or
+    illustrative), else "" -- the note of ``sealsim friction run``, ``sealsim pneumatic run``
+    and :func:`sealsim.seal_friction`.
+
+    Parameters
+    ----------
+    params : pydantic model
+        Validated parameters of a law (``law``, ``parameter_set`` and the law's fields).
+
+    Examples
+    --------
+    >>> from sealsim.friction.case import ThetaParameters
+    >>> parameter_set_note(ThetaParameters(law="theta", parameter_set="pneumatic_demo"))[:60]
+    "theta parameter set 'pneumatic_demo' holds illustrative or r"
+    """
+    name = getattr(params, "parameter_set", None)
+    if name is None or not parameter_set_source(params.law, name).startswith("[R]"):
+        return ""
+    published = type(params).model_validate({"law": params.law, "parameter_set": name})
+    values = parameter_set_values(params.law, name)
+    taken = [f for f in values if getattr(params, f, None) == getattr(published, f, None)]
+    if not taken:
+        return ""
+    used = "" if len(taken) == len(values) else f" ({', '.join(taken)} from it)"
+    return (f"{params.law} parameter set {name!r} holds illustrative or reconstructed values, "
+            f"not fitted to measurements{used}: fit them to your seal with sealsim friction "
+            "fit before trusting the friction force")

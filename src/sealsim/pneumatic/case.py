@@ -66,6 +66,7 @@ from sealsim.errors import InputError
 from sealsim.friction import make_law
 from sealsim.friction.profiles import profile_type
 from sealsim.friction.case import LawParameters
+from sealsim.friction.parameters import parameter_set_note
 from sealsim.pneumatic.chambers import DEFAULT_HEAT_TRANSFER_COEFFICIENT
 from sealsim.pneumatic.contact_maps import (
     AnalyticContactMap,
@@ -83,6 +84,7 @@ __all__ = [
     "ThermalModel",
     "ValveModel",
     "build_seals",
+    "case_input_files",
     "load_pneumatic_case_file",
     "load_pneumatic_cases",
 ]
@@ -459,6 +461,17 @@ def _analytic_map(spec: AnalyticMapModel, diameter: float, where: str) -> Analyt
         temperature_scaling=spec.temperature_scaling, elastomer=spec.elastomer)
 
 
+def case_input_files(case: PneumaticCase, base_dir: str | Path) -> list[Path]:
+    """The files a pneumatic case reads besides itself: its seals' map files and structure
+    cases (relative to ``base_dir``, the case file's folder)."""
+    files = []
+    for seal in case.seals:
+        if seal.map is not None:
+            files += [Path(base_dir) / f for f in (seal.map.file, seal.map.structure_case)
+                      if f is not None]
+    return files
+
+
 def build_contact_map(spec: MapModel, diameter: float, base_dir: Path, where: str,
                       progress=None, map_workers: int | None = None, label: str = ""):
     """The contact map object of a seal's ``map`` table (paths relative to ``base_dir``).
@@ -504,7 +517,10 @@ def build_seals(case: PneumaticCase, base_dir: str | Path = ".", progress=None,
         if key not in laws:
             with warnings.catch_warnings(record=True) as caught:
                 warnings.simplefilter("always")     # e.g. LuGre passivity: kept as notes
-                laws[key] = (make_law(spec.friction), [str(w.message) for w in caught])
+                law = make_law(spec.friction)
+            unfitted = parameter_set_note(spec.friction)
+            laws[key] = (law, [str(w.message) for w in caught] + ([unfitted] if unfitted
+                                                                   else []))
         law, notes = laws[key]
         diameter = case.cylinder.bore if spec.location == "piston" else case.cylinder.rod_diameter
         contact_map = None

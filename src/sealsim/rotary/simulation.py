@@ -60,7 +60,7 @@ from sealsim.tribology.rubber_friction import (
 from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["RotaryModel", "RotaryResult", "friction_map", "housing_defaults", "lip_seal_friction",
-           "lip_style", "load_rotary_case", "simulate", "steady_state"]
+           "lip_style", "load_rotary_case", "operating_notes", "simulate", "steady_state"]
 
 STEEL_DENSITY, STEEL_SPECIFIC_HEAT = 7850.0, 460.0
 #: Oil volumetric expansion coefficient for free convection [1/K] (mineral oil ≈ 7e-4).
@@ -397,7 +397,6 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
     dt = num.min_time_step
     generated = dissipated = 0.0
     notes: list[str] = []
-    service_max = model.elastomer.service_range[1]
     k_break = 1
     last_report = -1.0
     calm_since, steady = None, False
@@ -463,27 +462,53 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
     stored = float(capacity @ temps - stored0)
     energy = {"generated": generated, "stored": stored, "dissipated": dissipated,
               "rel_error": abs(generated - stored - dissipated) / max(abs(generated), 1e-12)}
-    if frame["T_contact_C"].max() > service_max - ZERO_CELSIUS_K:
-        notes.append(f"contact temperature reached {frame['T_contact_C'].max():.0f} degC, above "
-                     f"the service limit of {model.elastomer.name} "
-                     f"({service_max - ZERO_CELSIUS_K:.0f} degC)")
     sliding = frame.loc[frame["speed_rpm"] != 0, "film_um"]
-    if len(sliding):
-        film = film_range_note(sliding.min() * 1e-6, sliding.max() * 1e-6)
-        if film:
-            notes.append(film)
-            warnings.warn(film, FilmRangeWarning, stacklevel=2)
-    if model.case.lip.force == "fe":
-        from sealsim.rotary.lip_fe import cold_lip_note
-
-        cold = cold_lip_note(frame["T_contact_C"].min() + ZERO_CELSIUS_K,
-                             model.elastomer.glass_transition)
-        if cold:
-            notes.append(cold)
+    found = operating_notes(case, model.elastomer, frame["T_contact_C"], sliding)
+    notes += found
+    for film in (n for n in found if n.startswith("film ")):
+        warnings.warn(film, FilmRangeWarning, stacklevel=2)
     result = RotaryResult(case, frame, _step_summary(frame, steps, speeds, times), energy, notes,
                           {"time_steps": len(rows), "factorisations": stepper.factorisations,
                            "thermal_nodes": model.network.n_cells})
     return result
+
+
+def operating_notes(case: RotaryCase, elastomer, contact_temperatures_c, sliding_films_um
+                    ) -> list[str]:
+    """Where a run left the range of its models: a contact above the elastomer's service
+    limit, films outside the measured range of lip seal films
+    (:func:`~sealsim.tribology.film.film_range_note`), an FE lip force used near T_g
+    (:func:`~sealsim.rotary.lip_fe.cold_lip_note`).  The notes of ``sealsim rotary run`` and of
+    :func:`sealsim.lip_seal_torque` (one set per call, over all its points).
+
+    Parameters
+    ----------
+    case : RotaryCase
+    elastomer : Elastomer
+        The lip's elastomer (``RotaryModel.elastomer``).
+    contact_temperatures_c : array_like
+        Contact temperatures of the run [°C].
+    sliding_films_um : array_like
+        Films of the samples with the shaft turning [µm] (may be empty).
+    """
+    contact = np.asarray(contact_temperatures_c, dtype=float)
+    films = np.asarray(sliding_films_um, dtype=float)
+    notes = []
+    service_max = elastomer.service_range[1] - ZERO_CELSIUS_K
+    if contact.max() > service_max:
+        notes.append(f"contact temperature reached {contact.max():.0f} degC, above the service "
+                     f"limit of {elastomer.name} ({service_max:.0f} degC)")
+    if films.size:
+        film = film_range_note(films.min() * 1e-6, films.max() * 1e-6)
+        if film:
+            notes.append(film)
+    if case.lip.force == "fe":
+        from sealsim.rotary.lip_fe import cold_lip_note
+
+        cold = cold_lip_note(contact.min() + ZERO_CELSIUS_K, elastomer.glass_transition)
+        if cold:
+            notes.append(cold)
+    return notes
 
 
 def _row(model: RotaryModel, state: FrictionState, t, omega, temps, t_contact) -> tuple:

@@ -27,6 +27,7 @@ from sealsim.friction.case import (
     make_inputs,
     run_friction_case,
 )
+from sealsim.friction.parameters import parameter_set_note
 from sealsim.output import ResultFolder, run_variants
 from sealsim.plotting.friction import (
     last_cycles,
@@ -74,6 +75,9 @@ def run_case_file(path: str | Path, out: str | Path, force: bool = False,
             text = known or str(w.message)
             if text not in target:
                 target.append(text)
+        unfitted = parameter_set_note(c.friction)
+        if unfitted and unfitted not in notes:
+            notes.append(unfitted)
     title = next(iter(cases.values())).title or case.stem
     summary = {"title": title, "source": str(case), "sealsim_version": __version__,
                "warnings": alarms, "notes": notes, "variants": {}}

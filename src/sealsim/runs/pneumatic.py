@@ -18,7 +18,7 @@ import pandas as pd
 from sealsim import __version__
 from sealsim.cases import dump_variants_toml
 from sealsim.output import ResultFolder, run_variants
-from sealsim.pneumatic.case import load_pneumatic_case_file
+from sealsim.pneumatic.case import case_input_files, load_pneumatic_case_file
 from sealsim.pneumatic.results import TIMESERIES_COLUMNS, PneumaticResult
 from sealsim.pneumatic.simulation import simulate_variant
 from sealsim.pneumatic.summary import DEFINITIONS, per_stroke
@@ -51,10 +51,11 @@ def run_case_file(path: str | Path, out: str | Path, force: bool = False,
     """
     path = Path(path)
     cases = load_pneumatic_case_file(path)
+    inputs = [path] + [f for case in cases.values() for f in case_input_files(case, path.parent)]
     return run_variants(
         cases, out, lambda name, case, _: simulate_variant(name, case, path.parent, progress),
         lambda folder, results: write_results(folder, results, source=str(path)),
-        force=force, inputs=[path])
+        force=force, inputs=inputs)
 
 
 def write_results(folder: ResultFolder, results: dict[str, PneumaticResult],

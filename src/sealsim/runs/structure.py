@@ -65,7 +65,14 @@ def run_case_file(path: str | Path, out: str | Path, force: bool = False,
     return run_variants(
         cases, out, lambda name, case, report: run_case(case, progress=report),
         lambda folder, runs: folder.write_text("case_resolved.toml", _resolved_text(cases)),
-        force=force, inputs=[path], progress=progress, write_each=write_variant)
+        force=force, inputs=_inputs(path, cases), progress=progress, write_each=write_variant)
+
+
+def _inputs(path, cases: dict[str, StructureCase]) -> list[Path]:
+    """The case file and the DXF drawings it read (refused inside the result folder)."""
+    path = Path(path)
+    return [path] + [path.parent / c.seal.drawing for c in cases.values()
+                     if getattr(c.seal, "drawing", None)]
 
 
 def _write_variant(folder: ResultFolder, prefix: str, name: str, case: StructureCase,
@@ -163,4 +170,5 @@ def map_case_file(path: str | Path, out: str | Path, force: bool = False,
             folder.savefig(name, plot_map_profiles(ds, i, title=title))
         folder.write_text("case_resolved.toml", text)
 
-    return run_variants({"map": case}, out, compute, write, force=force, inputs=[path])["map"]
+    return run_variants({"map": case}, out, compute, write, force=force,
+                        inputs=_inputs(path, cases))["map"]
