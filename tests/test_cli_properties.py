@@ -153,7 +153,7 @@ def test_broken_oil_file_is_a_clean_error(tmp_path):
     path.write_text('[oils."X"]\nfamily = "mineral"\nnu40 = 68\n')
     msg = user_error("oil", "list", "--oil-file", str(path))
     assert "nu40: 68 has no unit" in msg and "density15: required field is missing" in msg
-    assert "cannot be read" in user_error("oil", "list", "--oil-file", str(tmp_path / "no.toml"))
+    assert "does not exist" in user_error("oil", "list", "--oil-file", str(tmp_path / "no.toml"))
 
 
 # -- plots ---------------------------------------------------------------------------------------

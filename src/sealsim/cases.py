@@ -39,6 +39,7 @@ from pydantic import (
 )
 
 from sealsim.errors import InputError
+from sealsim.files import read_input_text
 from sealsim.units import DIMENSIONS, format_quantity, parse_quantity
 
 __all__ = [
@@ -54,6 +55,7 @@ __all__ = [
     "expand_variants",
     "format_validation_error",
     "load_toml",
+    "parse_toml",
     "validate_case",
     "validation_problems",
     "wrong_kind_message",
@@ -216,23 +218,50 @@ def wrong_kind_message(model: type[BaseModel], data: Any) -> str | None:
             f"{expected.name} case: run it with {found.command}")
 
 
-def load_toml(path: str | Path) -> dict[str, Any]:
-    """Read a TOML file; a missing file or a syntax error becomes an :class:`InputError`."""
-    path = Path(path)
+#: deepest nesting of tables and arrays in a TOML file (the examples nest at most 6 levels);
+#: deeper files are refused before any code walks them recursively
+MAX_TOML_DEPTH = 32
+
+
+def parse_toml(text: str, source: str) -> dict[str, Any]:
+    """Parse TOML text read from ``source`` (e.g. ``"case file 'a.toml'"``); a syntax error or
+    nesting deeper than :data:`MAX_TOML_DEPTH` becomes an :class:`InputError`.
+
+    Examples
+    --------
+    >>> parse_toml("a = " + "[" * 40 + "]" * 40, "case file 'deep.toml'")
+    Traceback (most recent call last):
+    ...
+    sealsim.errors.InputError: case file 'deep.toml' nests tables or arrays more than 32 \
+levels deep (at 'a'); a case needs only a few levels
+    """
     try:
-        with path.open("rb") as fh:
-            return tomllib.load(fh)
-    except FileNotFoundError as exc:
-        raise InputError(f"case file {str(path)!r} does not exist") from exc
-    except IsADirectoryError as exc:
-        raise InputError(f"case file {str(path)!r} is a directory, expected a .toml file") from exc
-    except UnicodeDecodeError as exc:
-        raise InputError(f"case file {str(path)!r} is not UTF-8 text") from exc
+        data = tomllib.loads(text)
+    except RecursionError:
+        raise InputError(f"{source} nests tables or arrays more than {MAX_TOML_DEPTH} levels "
+                         "deep; a case needs only a few levels") from None
     except ValueError as exc:  # TOMLDecodeError, and integers tomllib cannot convert
-        raise InputError(f"case file {str(path)!r} is not valid TOML: {exc}") from exc
-    except OSError as exc:  # no permission, an I/O error
-        raise InputError(f"case file {str(path)!r} cannot be read: "
-                         f"{exc.strerror or exc}") from exc
+        raise InputError(f"{source} is not valid TOML: {exc}") from None
+    stack: list[tuple[Any, int, str]] = [(data, 0, "")]
+    while stack:
+        node, depth, where = stack.pop()
+        if depth > MAX_TOML_DEPTH:
+            raise InputError(f"{source} nests tables or arrays more than {MAX_TOML_DEPTH} "
+                             f"levels deep (at {where!r}); a case needs only a few levels")
+        items = node.items() if isinstance(node, dict) else enumerate(node) \
+            if isinstance(node, list) else ()
+        for key, value in items:
+            if isinstance(value, dict | list):
+                stack.append((value, depth + 1, where or str(key)))
+    return data
+
+
+def load_toml(path: str | Path, what: str = "case file") -> dict[str, Any]:
+    """Read a TOML file (:func:`sealsim.files.read_input_text`: a regular file of limited
+    size); a missing file, a syntax error or too deep a nesting becomes an
+    :class:`InputError` naming the file (``what`` says what it is, e.g. ``"friction file"``)."""
+    text = read_input_text(path, what)
+    return parse_toml(text, f"{what} {str(path)!r}")
 
 
 def validate_case(model: type[ModelT], data: Any, source: str = "case",

@@ -48,6 +48,7 @@ from sealsim.files import (
     atomic_write_bytes,
     atomic_write_text,
     json_ready,
+    raise_terminated,
 )
 
 __all__ = ["JSON_DIGITS", "ResultFolder", "atomic_write_bytes", "atomic_write_text",
@@ -77,10 +78,6 @@ def _pid_alive(pid: int) -> bool:
 
 def _in_main_thread() -> bool:
     return threading.current_thread() is threading.main_thread()
-
-
-def _raise_terminated(signum, frame):
-    raise Terminated("SIGTERM")
 
 
 class ResultFolder:
@@ -217,7 +214,7 @@ class ResultFolder:
                 raise InputError(f"cannot create output folder {self._shown()!r}: "
                                  f"{exc.strerror or exc}") from exc
             if _in_main_thread() and signal.getsignal(signal.SIGTERM) is signal.SIG_DFL:
-                self._old_sigterm = signal.signal(signal.SIGTERM, _raise_terminated)
+                self._old_sigterm = signal.signal(signal.SIGTERM, raise_terminated)
         except BaseException:
             self._unlock()
             self._remove_created()

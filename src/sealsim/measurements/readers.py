@@ -36,6 +36,7 @@ import pandas as pd
 import pint
 
 from sealsim.errors import InputError
+from sealsim.files import MAX_DATA_BYTES, read_input_text
 from sealsim.units import ureg
 
 __all__ = [
@@ -196,15 +197,7 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
     """
     path = Path(path)
     label = str(path)
-    try:
-        text = path.read_text(encoding="utf-8", errors="strict")
-    except FileNotFoundError:
-        raise InputError(f"measurement file {label!r} does not exist") from None
-    except IsADirectoryError:
-        raise InputError(f"measurement file {label!r} is a directory") from None
-    except UnicodeDecodeError as exc:
-        raise InputError(f"measurement file {label!r} is not UTF-8 text (byte {exc.start})") \
-            from None
+    text = read_input_text(path, "measurement file", MAX_DATA_BYTES)
     if "time" not in {c.quantity for c in columns}:
         raise InputError(f"{label}: the column mapping needs a time column")
     lines = [(k + 1, line) for k, line in enumerate(text.splitlines())]
