@@ -48,6 +48,7 @@ __all__ = [
     "CaseModel",
     "Q",
     "apply_overrides",
+    "case_json_schema",
     "check_variant_name",
     "detect_case_kind",
     "dump_case_toml",
@@ -123,7 +124,9 @@ def Q(dimension: str, *, gt: float | None = None, ge: float | None = None,  # no
         PlainValidator(validate),
         PlainSerializer(lambda v: float(v) if dimension == "dimensionless"
                         else format_quantity(v, dimension), return_type=float | str),
-        WithJsonSchema({"type": "string", "description": description}),
+        # in a file: a text with a unit ("80 mm"); a dimensionless value may be a plain number
+        WithJsonSchema({"type": ["number", "string"] if dimension == "dimensionless"
+                        else "string", "description": description, "examples": [dim.example]}),
     ]
 
 
@@ -141,28 +144,31 @@ class CaseKind:
         The command that runs it.
     tables : frozenset of str
         Top-level tables (fields of ``model``) that no other kind's model has.
+    variants : bool
+        The command reads ``[variants.NAME]`` tables (:func:`expand_variants`).
     """
 
     name: str
     model: str
     command: str
     tables: frozenset[str]
+    variants: bool = False
 
 
 #: The kinds of case file; tests check ``tables`` against the models' fields.
 CASE_KINDS = (
     CaseKind("rotary", "sealsim.rotary.case.RotaryCase", "sealsim rotary run",
-             frozenset({"duty", "environment", "oil", "numerics"})),
+             frozenset({"duty", "environment", "oil", "numerics"}), variants=True),
     CaseKind("structure", "sealsim.structure.case.StructureCase",
              "sealsim structure run (or sealsim structure map)",
-             frozenset({"gland", "material", "mesh", "map"})),
+             frozenset({"gland", "material", "mesh", "map"}), variants=True),
     CaseKind("fmu", "sealsim.fmu.case.FMUCase", "sealsim fmu build",
              frozenset({"fmu", "table", "rotary"})),
     CaseKind("pneumatic", "sealsim.pneumatic.case.PneumaticCase", "sealsim pneumatic run",
              frozenset({"cylinder", "air", "valve", "controller", "seals",
-                        "initial_position"})),
+                        "initial_position"}), variants=True),
     CaseKind("friction", "sealsim.friction.case.FrictionCase", "sealsim friction run",
-             frozenset({"bench", "inputs"})),
+             frozenset({"bench", "inputs"}), variants=True),
     # a friction fit and a rotary fit share [fit] and [[measurements]]; [model] (the rotary
     # case) or [contact]/[signals] tell them apart
     CaseKind("friction fit", "sealsim.calibration.case.FrictionFitCase", "sealsim friction fit",
@@ -545,3 +551,97 @@ def dump_variants_toml(cases: dict[str, BaseModel], header: str | None = None) -
     if header:
         text = "".join(f"# {line}\n" for line in header.splitlines()) + "\n" + text
     return text
+
+
+# -- JSON Schema of a case file -----------------------------------------------------------------
+#: dialect of the schemas: draft 7 is what editors' TOML and JSON tooling supports most widely
+JSON_SCHEMA_DIALECT = "http://json-schema.org/draft-07/schema#"
+
+
+def case_json_schema(model: type[BaseModel], *, variants: bool = False,
+                     title: str | None = None) -> dict[str, Any]:
+    """JSON Schema (draft 7) of a case file read by ``model``, for editors that check TOML.
+
+    Quantities are texts with a unit (``"80 mm"``; a dimensionless one may be a plain number),
+    as the file needs them.  With ``variants``, a ``[variants.NAME]`` table holds overrides:
+    any part of the case, nothing required (:func:`expand_variants` merges it into the base
+    case).  Checks across fields (one of two fields given, a lower bound below an upper one)
+    are the case model's; the schema checks names, types and the bounds of single fields.
+
+    Examples
+    --------
+    >>> class Lip(CaseModel):
+    ...     width: Q("length", gt=0)
+    >>> schema = case_json_schema(Lip, variants=True)
+    >>> schema["else"], schema["definitions"]["Lip"]["required"]
+    ({'$ref': '#/definitions/Lip'}, ['width'])
+    >>> with_variants = schema["definitions"]["LipWithVariants"]
+    >>> "required" in with_variants, with_variants["properties"]["variants"]["type"]
+    (False, 'object')
+    """
+    schema = model.model_json_schema(ref_template="#/definitions/{model}")
+    definitions = schema.pop("$defs", {})
+    out: dict[str, Any] = {"$schema": JSON_SCHEMA_DIALECT}
+    if title:
+        out["title"] = title
+    if variants:
+        # with [variants], the base case is completed by each variant: nothing is required
+        override = {name: _override(d) for name, d in definitions.items()}
+        definitions.update({f"{name}Override": d for name, d in override.items()})
+        partial = _override(schema)
+        partial["properties"]["variants"] = {
+            "type": "object", "minProperties": 1,
+            "description": "named variants, each run on its own: a table of fields that "
+                           "override the base case, e.g. [variants.wave] seal.lip_style = "
+                           "'wave'",
+            "propertyNames": {"pattern": f"^{VARIANT_NAME.pattern}$"},
+            "additionalProperties": _override(schema),
+        }
+        name = model.__name__
+        definitions[name], definitions[f"{name}WithVariants"] = schema, partial
+        out.update({"description": schema.get("description", ""),
+                    "if": {"required": ["variants"]},
+                    "then": {"$ref": f"#/definitions/{name}WithVariants"},
+                    "else": {"$ref": f"#/definitions/{name}"}})
+    else:
+        out.update(_draft7(schema))
+    if definitions:
+        out["definitions"] = {name: _draft7(d) for name, d in definitions.items()}
+    return out
+
+
+def _override(schema: Any) -> Any:
+    """``schema`` with nothing required (at any depth) and references to the override
+    definitions: what a variant may give."""
+    if isinstance(schema, list):
+        return [_override(item) for item in schema]
+    if not isinstance(schema, dict):
+        return schema
+    out = {}
+    for key, value in schema.items():
+        if key in ("required", "title", "discriminator"):
+            continue
+        if key == "$ref" and isinstance(value, str) and value.startswith("#/definitions/"):
+            out[key] = value + "Override"
+        elif key == "oneOf":       # several partial alternatives may match: any of them
+            out["anyOf"] = _override(value)
+        elif key == "anyOf" and all(set(v) == {"required"} for v in value):
+            continue               # alternatives of what is required (a law's parameter set)
+        elif key == "properties":
+            out[key] = {k: _override(v) for k, v in value.items()}
+        else:
+            out[key] = _override(value)
+    return out
+
+
+def _draft7(schema: Any) -> Any:
+    """A draft-7 schema: a ``$ref`` with siblings (a field's description) goes into ``allOf``
+    (draft 7 ignores the siblings of ``$ref``); pydantic's ``discriminator`` is dropped."""
+    if isinstance(schema, list):
+        return [_draft7(item) for item in schema]
+    if not isinstance(schema, dict):
+        return schema
+    out = {k: _draft7(v) for k, v in schema.items() if k != "discriminator"}
+    if "$ref" in out and len(out) > 1:
+        out["allOf"] = [{"$ref": out.pop("$ref")}]
+    return out

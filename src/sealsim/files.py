@@ -32,8 +32,8 @@ import numpy as np
 
 from sealsim.errors import InputError, Terminated
 
-__all__ = ["JSON_DIGITS", "MAX_CASE_BYTES", "MAX_DATA_BYTES", "USER_UMASK", "atomic_write_bytes",
-           "atomic_write_text", "check_input_file", "json_ready", "raise_terminated",
+__all__ = ["CF_CONVENTIONS", "JSON_DIGITS", "MAX_CASE_BYTES", "MAX_DATA_BYTES", "USER_UMASK", "atomic_write_bytes",
+           "atomic_write_text", "check_input_file", "json_ready", "netcdf_ready", "raise_terminated",
            "read_input_bytes", "read_input_text", "sigterm_as_interrupt"]
 
 #: The process's umask: mkstemp/mkdtemp create private (0600/0700) entries, written files get
@@ -206,6 +206,26 @@ def json_ready(value: Any, digits: int | None = None) -> Any:
             return None
         return float(f"{value:.{digits}g}") if digits else float(value)
     return value
+
+
+#: the CF metadata conventions sealsim's netCDF files follow (``units``, ``long_name``)
+CF_CONVENTIONS = "CF-1.8"
+
+
+def netcdf_ready(dataset) -> tuple[Any, dict]:
+    """A dataset and the encoding to write it with, as every netCDF file of sealsim is written:
+    the global attribute ``Conventions = "CF-1.8"`` and no ``_FillValue`` on coordinates (a
+    coordinate has no missing values; CF tools warn about a fill value there).
+
+    Examples
+    --------
+    >>> import xarray as xr
+    >>> ds, encoding = netcdf_ready(xr.Dataset({"F": ("T", [1.0, 2.0])}, coords={"T": [1, 2]}))
+    >>> ds.attrs["Conventions"], encoding
+    ('CF-1.8', {'T': {'_FillValue': None}})
+    """
+    dataset = dataset.assign_attrs(Conventions=CF_CONVENTIONS)
+    return dataset, {str(name): {"_FillValue": None} for name in dataset.coords}
 
 
 def atomic_write_bytes(path: str | Path, data: bytes) -> Path:

@@ -48,6 +48,7 @@ from sealsim.files import (
     atomic_write_bytes,
     atomic_write_text,
     json_ready,
+    netcdf_ready,
     raise_terminated,
 )
 
@@ -414,8 +415,11 @@ class ResultFolder:
         return target
 
     def write_netcdf(self, name: str, dataset) -> Path:
-        """Write an xarray Dataset to netCDF atomically."""
-        return self._write_via_temporary(name, dataset.to_netcdf)
+        """Write an xarray Dataset to netCDF atomically (CF ``Conventions``, no fill value on
+        coordinates: :func:`sealsim.files.netcdf_ready`)."""
+        dataset, encoding = netcdf_ready(dataset)
+        return self._write_via_temporary(
+            name, lambda tmp: dataset.to_netcdf(tmp, encoding=encoding))
 
     def savefig(self, name: str, figure, dpi: int = 130) -> Path:
         """Save a matplotlib figure as PNG atomically.

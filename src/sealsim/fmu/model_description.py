@@ -93,6 +93,10 @@ class Variable:
         ``(">", 0.0)``; inclusive bounds also become the FMI ``min``/``max``.
     relative : bool
         A temperature difference (FMI ``relativeQuantity``: no offset in unit conversion).
+    nominal : float, optional
+        Typical magnitude (FMI ``nominal``): a solver scales the error tolerance of a
+        continuous state with it, so a state of 1e-5 m is not integrated with an absolute
+        tolerance meant for values near 1.
     exposed : bool
         Listed in modelDescription.xml.
     """
@@ -109,6 +113,7 @@ class Variable:
     lower: tuple[str, float] | None = None
     upper: tuple[str, float] | None = None
     relative: bool = False
+    nominal: float | None = None
     exposed: bool = True
 
     @property
@@ -212,6 +217,8 @@ def _type_attributes(v: Variable, spec: ModelSpec, fmi_version: int) -> str:
         attrs.append(f'min="{_number(v.lower[1])}"')
     if v.upper and v.upper[0] == "<=":
         attrs.append(f'max="{_number(v.upper[1])}"')
+    if v.nominal is not None:
+        attrs.append(f'nominal="{_number(v.nominal)}"')
     if v.derivative_of is not None:
         state_vr = spec.value_reference(v.derivative_of)
         if fmi_version == 2:
