@@ -39,6 +39,7 @@ from sealsim.studies.store import WorkFolder, work_folder_for
 from sealsim.studies.study import compute_runs
 from test_calibration import fit_case
 from test_reliability import TINY_FRICTION, cli, one_message
+from test_studies import COULOMB_BASE
 
 ROOT = Path(__file__).resolve().parents[1]
 EXAMPLES = ROOT / "examples"
@@ -220,19 +221,7 @@ def test_fifo_as_dxf_drawing_is_refused(tmp_path, no_hang):
 
 
 # -- 10. study sizes checked before anything is generated; bounded expressions -----------------
-STUDY_BASE = """
-[base.friction]
-law = "coulomb"
-coulomb_force = "10 N"
-viscous_coefficient = "50 N*s/m"
-[base.bench]
-mode = "velocity"
-duration = "0.05 s"
-time_step = "10 ms"
-velocity = { kind = "constant", level = "0.1 m/s" }
-[outputs]
-F = "max_friction_force_N"
-"""
+STUDY_BASE = COULOMB_BASE + '[outputs]\nF = "max_friction_force_N"\n'
 SAMPLED_FACTOR = """
 [[factors]]
 name = "fc"

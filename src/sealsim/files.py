@@ -32,9 +32,10 @@ import numpy as np
 
 from sealsim.errors import InputError, Terminated
 
-__all__ = ["CF_CONVENTIONS", "JSON_DIGITS", "MAX_CASE_BYTES", "MAX_DATA_BYTES", "USER_UMASK", "atomic_write_bytes",
-           "atomic_write_text", "check_input_file", "json_ready", "netcdf_ready", "raise_terminated",
-           "read_input_bytes", "read_input_text", "sigterm_as_interrupt"]
+__all__ = ["CF_CONVENTIONS", "JSON_DIGITS", "MAX_CASE_BYTES", "MAX_DATA_BYTES", "USER_UMASK",
+           "atomic_write_bytes", "atomic_write_text", "check_input_file", "json_ready",
+           "netcdf_ready", "raise_terminated", "read_input_bytes", "read_input_text",
+           "sigterm_as_interrupt"]
 
 #: The process's umask: mkstemp/mkdtemp create private (0600/0700) entries, written files get
 #: the user's normal modes (0o666 & ~USER_UMASK).
