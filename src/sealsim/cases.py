@@ -44,6 +44,8 @@ from sealsim.units import DIMENSIONS, format_quantity, parse_quantity
 
 __all__ = [
     "CASE_KINDS",
+    "JSON_SCHEMA_DIALECT",
+    "MAX_TOML_DEPTH",
     "CaseKind",
     "CaseModel",
     "Q",
