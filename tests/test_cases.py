@@ -187,7 +187,7 @@ def test_invalid_toml_is_an_input_error(tmp_path):
 def test_missing_case_file_and_folder_are_input_errors(tmp_path):
     with pytest.raises(InputError, match="does not exist"):
         load_toml(tmp_path / "nope.toml")
-    with pytest.raises(InputError, match="directory"):
+    with pytest.raises(InputError, match="is a folder"):
         load_toml(tmp_path)
 
 

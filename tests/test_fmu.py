@@ -80,6 +80,11 @@ def test_every_fmu_is_valid(fmus):
     names = {v.name: v for v in md.modelVariables}
     assert {"v", "p_A", "p_B", "T_seal", "F", "F_N", "b", "theta", "tau"} <= set(names)
     assert names["tau"].unit == "s" and names["T_seal"].unit == "K"
+    # a solver scales its tolerance of a state with the nominal: z of LuGre is F_s/σ0 = 1.5 N
+    # / 1e5 N/m (canudas1995), not 1 m; Θ is of order 1
+    states = {v.name: v for v in md2.modelVariables}
+    assert float(states["z"].nominal) == pytest.approx(1.5e-5, rel=1e-12)
+    assert names["theta"].nominal in (None, "1", 1.0)
     with zipfile.ZipFile(fmus["piston3"]) as zf:     # sources for other platforms
         files = set(zf.namelist())
     assert {"sources/all.c", "sources/buildDescription.xml", "sources/friction_model.c",

@@ -18,6 +18,7 @@ from sealsim.cli.friction import friction_app
 from sealsim.cli.pneumatic import pneumatic_app
 from sealsim.cli.properties import material_app, oil_app
 from sealsim.cli.rotary import rotary_app
+from sealsim.cli.schema import schema_command
 from sealsim.cli.structure import structure_app
 from sealsim.cli.study import study_app
 
@@ -39,6 +40,7 @@ app.add_typer(pneumatic_app, name="pneumatic")
 app.add_typer(cache_app, name="cache")
 app.add_typer(fmu_app, name="fmu")
 app.add_typer(study_app, name="study")
+app.command("schema")(schema_command)
 
 
 def _version(value: bool) -> None:

@@ -16,7 +16,7 @@ from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.text import Text
 
 from sealsim.errors import SealsimError, Terminated
-from sealsim.output import committed_folders, json_ready
+from sealsim.output import JSON_DIGITS, committed_folders, json_ready
 from sealsim.units import ZERO_CELSIUS_K
 
 console = Console(highlight=False)
@@ -63,8 +63,10 @@ def _fail(kind: str, message: str) -> None:
 
 
 def print_json(data: Any) -> None:
-    """Print JSON to stdout (plain text, no rich markup); NaN is written as null."""
-    typer.echo(json.dumps(json_ready(data), indent=2))
+    """Print JSON to stdout (plain text, no rich markup); NaN is written as null, floats with
+    :data:`~sealsim.files.JSON_DIGITS` significant digits (32.0, not 31.999999999999808), as
+    in the result files."""
+    typer.echo(json.dumps(json_ready(data, JSON_DIGITS), indent=2))
 
 
 def parse_celsius_list(text: str | None, default: list[float], option: str) -> list[float]:

@@ -248,6 +248,19 @@ def c_parameters(law: FrictionLaw) -> tuple[str, dict[str, float], bool]:
     return name, params, bristles
 
 
+def _deflection_scale(name: str, params: dict[str, float], normal_force: float | None,
+                      table: ContactTable | None) -> float:
+    """Typical bristle deflection z [m], the FMU's ``nominal`` of the state z: the largest
+    steady deflection F_s/σ0 of LuGre (Canudas de Wit et al. 1995), max(f_a, f_b)·F_N/σ0 of
+    the Θ law with bristles (F_N: the constant normal force, else the table's largest)."""
+    if name == "lugre":
+        return params["static_force"] / params["sigma0"]
+    if normal_force is None and table is not None:
+        normal_force = float(np.max(table.table.values[..., 0]))
+    force = max(params.get("f_a", 0.0), params.get("f_b", 0.0)) * (normal_force or 0.0)
+    return force / params["bristle_stiffness"] if force > 0 else 1e-5
+
+
 def friction_spec(law: FrictionLaw, identifier: str, *, table: ContactTable | None = None,
                   normal_force: float | None = None, contact_width: float | None = None,
                   seal_temperature: float | None = None, title: str = "",
@@ -305,7 +318,8 @@ def friction_spec(law: FrictionLaw, identifier: str, *, table: ContactTable | No
         Variable("theta", "THETA", "output", "lubrication state Theta (0 dry, 1 full film)",
                  None, 0.0, state=True, exposed=has_theta),
         Variable("z", "Z", "output", "bristle deflection", "m", 0.0, state=True,
-                 exposed=has_z),
+                 nominal=_deflection_scale(name, params, normal_force, table) if has_z
+                 else None, exposed=has_z),
     ]
     states = [v.name for v in variables if v.state and v.exposed]
     variables += [Variable(f"der({s})", f"DER_{s.upper()}", "local", f"time derivative of {s}",

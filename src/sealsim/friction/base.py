@@ -393,9 +393,17 @@ def as_state(z, n_states: int, n: int | None = None) -> np.ndarray:
 # --------------------------------------------------------------------------------------------
 # Parameter models
 # --------------------------------------------------------------------------------------------
-from pydantic import model_validator  # noqa: E402
+from pydantic import ConfigDict, model_validator  # noqa: E402
 
 from sealsim.cases import CaseModel  # noqa: E402
+
+
+def _fields_or_parameter_set(schema: dict, model: type) -> None:
+    """JSON Schema of a law's parameters: its fields are required unless a ``parameter_set``
+    gives them."""
+    required = schema.pop("required", None)
+    if required:
+        schema["anyOf"] = [{"required": required}, {"required": ["parameter_set"]}]
 
 
 class LawParameters(CaseModel):
@@ -404,6 +412,8 @@ class LawParameters(CaseModel):
     ``parameter_set`` names a set from :mod:`sealsim.friction.parameters`; its values fill
     every field the user did not give (explicit fields override the set).
     """
+
+    model_config = ConfigDict(json_schema_extra=_fields_or_parameter_set)
 
     parameter_set: str | None = None
 

@@ -38,6 +38,7 @@ import pandas as pd
 import pint
 
 from sealsim.errors import InputError
+from sealsim.files import MAX_DATA_BYTES, read_input_text
 from sealsim.units import rotational_speed, ureg
 
 __all__ = [
@@ -251,15 +252,7 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
     """
     path = Path(path)
     label = str(path)
-    try:
-        text = path.read_text(encoding="utf-8", errors="strict")
-    except FileNotFoundError:
-        raise InputError(f"measurement file {label!r} does not exist") from None
-    except IsADirectoryError:
-        raise InputError(f"measurement file {label!r} is a directory") from None
-    except UnicodeDecodeError as exc:
-        raise InputError(f"measurement file {label!r} is not UTF-8 text (byte {exc.start})") \
-            from None
+    text = read_input_text(path, "measurement file", MAX_DATA_BYTES)
     text = text.removeprefix("\ufeff")  # the byte-order mark some spreadsheets write
     if index is not None and index not in {c.quantity for c in columns}:
         raise InputError(f"{label}: the column mapping needs a {index} column")

@@ -534,7 +534,7 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
     FEContactMap
     """
     from sealsim.cases import dump_case_toml
-    from sealsim.files import atomic_write_bytes
+    from sealsim.files import atomic_write_bytes, netcdf_ready
 
     try:
         from sealsim.structure.case import load_structure_cases
@@ -570,7 +570,8 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
                 from None
         logger.info(_build_notice(case, path, target, label))
         dataset = compute_map(case, workers=workers, progress=progress, case_text=text)
-        atomic_write_bytes(target, dataset.to_netcdf())
+        dataset, encoding = netcdf_ready(dataset)
+        atomic_write_bytes(target, dataset.to_netcdf(encoding=encoding))
     return FEContactMap.from_file(target, squeeze=squeeze)
 
 

@@ -46,7 +46,6 @@ Examples
 
 from __future__ import annotations
 
-import tomllib
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
@@ -54,7 +53,7 @@ from typing import Any
 import pydantic
 from pydantic import ConfigDict, Field, PrivateAttr, model_validator
 
-from sealsim.cases import CaseModel, Q, validation_problems
+from sealsim.cases import CaseModel, Q, parse_toml, validation_problems
 from sealsim.errors import InputError
 
 __all__ = [
@@ -73,7 +72,6 @@ __all__ = [
     "read_elastomer_table",
     "read_elastomer_tables",
     "read_oil_tables",
-    "read_text_file",
 ]
 
 
@@ -168,7 +166,7 @@ def read_oil_tables(text: str, origin: str, catalogue: bool = False
     InputError
         Invalid TOML or an invalid entry; the message names the oil and the field.
     """
-    data = _parse_toml(text, origin)
+    data = parse_toml(text, origin)
     extra = sorted(set(data) - {"oils"})
     if extra or not isinstance(data.get("oils"), dict):
         raise InputError(f"{origin}: expected only [oils.\"NAME\"] tables"
@@ -461,7 +459,7 @@ def read_elastomer_tables(text: str, origin: str
     """Every material table of an elastomer file's text, by table key (see
     :func:`read_elastomer_table`)."""
     out = {}
-    for key, table in _parse_toml(text, origin).items():
+    for key, table in parse_toml(text, origin).items():
         if not isinstance(table, Mapping):
             raise InputError(f"{origin}: top-level key {key!r} must be a material table")
         out[key] = read_elastomer_table(table, table.get("name", key), origin)
@@ -471,27 +469,6 @@ def read_elastomer_tables(text: str, origin: str
 
 
 # -- shared -----------------------------------------------------------------------------------
-def read_text_file(path: str | Path, what: str) -> str:
-    """Text of a user file; a missing or unreadable file is an InputError naming it."""
-    p = Path(path)
-    try:
-        return p.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise InputError(f"{what} {str(p)!r} cannot be read: it does not exist") from None
-    except IsADirectoryError:
-        raise InputError(f"{what} {str(p)!r} is a folder, expected a TOML file") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(f"{what} {str(p)!r} cannot be read: "
-                         f"{getattr(exc, 'strerror', None) or exc}") from None
-
-
-def _parse_toml(text: str, origin: str) -> dict[str, Any]:
-    try:
-        return tomllib.loads(text)
-    except ValueError as exc:  # TOMLDecodeError and integers tomllib cannot convert
-        raise InputError(f"{origin} is not valid TOML: {exc}") from None
-
-
 def _upgrade_legacy(table: Mapping[str, Any], legacy: Mapping[str, tuple[str, str]],
                     where: str) -> tuple[dict[str, Any], dict[str, str]]:
     """The table with older keys (``nu40_mm2_s = 68.0``) as fields with units

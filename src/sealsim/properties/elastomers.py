@@ -1072,9 +1072,10 @@ def load_elastomer_file(path: str | Path) -> dict[str, Elastomer]:
     >>> sorted(load_elastomer_file(_catalogue_path()))
     ['ACM', 'FKM', 'HNBR', 'NBR', 'VMQ']
     """
-    from sealsim.properties.catalogue import read_elastomer_tables, read_text_file
+    from sealsim.files import read_input_text
+    from sealsim.properties.catalogue import read_elastomer_tables
 
-    text = read_text_file(path, "elastomer file")
+    text = read_input_text(path, "elastomer file")
     return {key: _build(*table) for key, table
             in read_elastomer_tables(text, f"elastomer file {str(path)!r}").items()}
 

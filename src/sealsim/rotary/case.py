@@ -27,6 +27,7 @@ results lists them all.
 from __future__ import annotations
 
 import csv
+import io
 from dataclasses import dataclass, fields
 from pathlib import Path
 from typing import Literal
@@ -36,6 +37,7 @@ from pydantic import Field, field_validator, model_validator
 
 from sealsim.cases import CaseModel, Q
 from sealsim.errors import InputError
+from sealsim.files import MAX_DATA_BYTES, read_input_bytes
 from sealsim.properties.elastomers import get_elastomer, is_compound_file
 from sealsim.properties.oils import FAMILIES, Oil, get_oil
 from sealsim.rotary.lip import (
@@ -398,22 +400,17 @@ def _read_duty_csv(path: Path):
     """Break points, speeds and constant-speed steps of a duty-cycle CSV (every problem an
     InputError naming the file and row)."""
     where = f"duty.csv: {str(path)!r}"
+    data = read_input_bytes(path, "duty.csv file", MAX_DATA_BYTES)
     try:
         # utf-8-sig: a byte-order mark (spreadsheet export) is not part of the first header
-        with path.open(newline="", encoding="utf-8-sig") as fh:
-            reader = csv.DictReader(fh)
-            header = reader.fieldnames or []
-            rows = list(reader)
-    except FileNotFoundError:
-        raise InputError(f"{where} does not exist") from None
-    except IsADirectoryError:
-        raise InputError(f"{where} is a folder, expected a CSV file") from None
+        reader = csv.DictReader(io.StringIO(data.decode("utf-8-sig"), newline=""))
+        header = reader.fieldnames or []
+        rows = list(reader)
     except UnicodeDecodeError:
         raise InputError(f"{where} is not a UTF-8 text file (a CSV with columns time_s, "
                          "speed_rpm)") from None
-    except (OSError, csv.Error) as exc:  # no permission, NUL bytes of a binary file
-        raise InputError(f"{where} cannot be read as CSV: "
-                         f"{getattr(exc, 'strerror', None) or exc}") from None
+    except csv.Error as exc:  # NUL bytes of a binary file
+        raise InputError(f"{where} cannot be read as CSV: {exc}") from None
     header = [h.strip() for h in header if h is not None]
     if not {"time_s", "speed_rpm"} <= set(header):
         raise InputError(f"{where} needs the columns time_s, speed_rpm; its header is "
