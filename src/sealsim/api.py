@@ -33,7 +33,7 @@ import numpy as np
 
 from sealsim.errors import InputError
 
-__all__ = ["lip_seal_torque", "seal_friction"]
+__all__ = ["lip_seal_torque", "oring_gland", "seal_friction"]
 
 #: Columns of :func:`lip_seal_torque` (units in the names).
 LIP_SEAL_COLUMNS = ["shaft_diameter_mm", "speed_rpm", "torque_Nm", "power_W", "T_contact_C",
@@ -356,3 +356,129 @@ def _law_parameters(table: Mapping[str, Any]):
                                                           context={"require_units": False})
     except ValidationError as exc:
         raise InputError(format_validation_error(exc, "law")) from None
+
+
+def oring_gland(gland, *, fe: bool = False, progress=None) -> dict[str, Any]:
+    """Design check of an O-ring (or X-ring) gland: squeeze, stretch, gland fill and extrusion
+    gap from the worst-case tolerance stack, at the lowest and highest service temperature,
+    against the published design ranges; with ``fe=True`` also the FE contact force and the
+    friction at nominal.
+
+    The stack and the checks are :func:`sealsim.structure.gland_check.check_gland` (ISO 286
+    fits and ISO 3601-1 ring tolerances, rubber and metal expansion, fluid swell; every limit
+    with its source).  The FE force is the structure model's (:mod:`sealsim.structure`) for
+    the nominal gland (every size at the middle of its band), the friction
+    :func:`seal_friction`'s with that FE map.
+
+    Parameters
+    ----------
+    gland : str, path or mapping
+        A gland case file (``examples/gland/piston_static.toml``) or its tables as a mapping
+        with quantities as strings with units: ``{"ring": {...}, "housing": {...},
+        "service": {...}}`` (see the gland case reference).
+    fe : bool
+        Also run the FE model at nominal (needs the case's ``[fe]`` table with the sliding
+        velocity; piston and rod glands only).
+    progress : callable, optional
+        ``progress(done, total)`` while the FE map is built.
+
+    Returns
+    -------
+    dict
+        The ``report.json`` of ``sealsim gland check``: ``squeeze_percent``,
+        ``stretch_percent``, ``gland_fill_percent``, ``extrusion_gap_mm`` (each ``{"min",
+        "nominal", "max"}``), ``by_temperature``, ``extrusion``, ``checks`` (``{"name",
+        "value", "limit", "ok", "source", ...}``), ``ok``, ``failed``, ``notes`` and, with
+        ``fe``, ``fe``.
+
+    Examples
+    --------
+    >>> r = oring_gland("examples/gland/piston_static.toml")
+    >>> r["ok"], [round(r["squeeze_percent"][k], 1) for k in ("min", "nominal", "max")]
+    (True, [12.2, 16.6, 21.2])
+    """
+    from sealsim.cases import validate_case
+    from sealsim.structure.gland_case import GlandCase, load_gland_case
+    from sealsim.structure.gland_check import check_gland
+
+    if isinstance(gland, str | Path):
+        case = load_gland_case(gland)
+    elif isinstance(gland, Mapping):
+        case = validate_case(GlandCase, dict(gland), "gland")
+    else:
+        raise InputError(f"gland: {gland!r} is neither a gland case file nor a mapping of its "
+                         "tables")
+    report = check_gland(case)
+    out = report.to_dict()
+    if fe:
+        out["fe"] = _gland_fe(report, progress)
+    return out
+
+
+def _gland_fe(report, progress=None) -> dict[str, Any]:
+    """FE normal force, contact width and friction of the nominal gland of a gland report."""
+    import tempfile
+
+    import tomli_w
+
+    from sealsim.units import ZERO_CELSIUS_K
+
+    case, geometry = report.case, report.geometry
+    if case.fe is None:
+        raise InputError("fe: the FE check needs the case's [fe] table with the sliding "
+                         "velocity, e.g. [fe] velocity = '0.1 m/s'")
+    housing = case.housing
+    if housing.type == "face":
+        raise InputError("fe: the structure model has rod, piston and shaft glands; a face "
+                         "gland (axial squeeze) has no FE model yet")
+    nominal = geometry.nominal()
+    t_ref = case.service.assembly_temperature
+    state = geometry.state(nominal, t_ref)
+    squeeze_nominal = float(state["squeeze"])
+    # the installed ring: its section after stretch, sitting on its seat (the FE closes both
+    # radial surfaces on the free section to the nominal squeeze)
+    seat = nominal["groove_diameter"] if housing.type == "piston" else nominal["rod"]
+    sealing = nominal["bore"] if housing.type == "piston" else nominal["rod"]
+    pressure = case.service.pressure
+    grid = [0.0, 0.5 * pressure, pressure] if pressure > 0 else [0.0, 1e5]
+    mm = lambda x: f"{x * 1e3:.6g} mm"  # noqa: E731
+    structure = {
+        "title": f"nominal gland of {case.title or 'a gland check'}",
+        "seal": {"type": case.ring.type, "cord_diameter": mm(float(state["cord"])),
+                 "inner_diameter": mm(seat)},
+        "gland": {"arrangement": housing.type, "sealing_diameter": mm(sealing),
+                  "groove_width": mm(nominal["groove_width"]),
+                  "inner_expansion": f"{housing.inner_expansion:.6g} 1/K",
+                  "outer_expansion": f"{housing.outer_expansion:.6g} 1/K"},
+        "material": {"elastomer": case.ring.material, "hardness_shore_a": report.hardness},
+        "mesh": {"level": case.fe.mesh},
+        "load": {"installation_temperature": f"{t_ref - ZERO_CELSIUS_K:.6g} degC",
+                 "squeeze": [round(squeeze_nominal, 6)]},
+        "map": {"pressure": [f"{p / 1e5:.6g} bar" for p in grid],
+                "temperature": [f"{t_ref - ZERO_CELSIUS_K:.6g} degC"], "workers": 1},
+    }
+    with tempfile.TemporaryDirectory(prefix="sealsim-gland-") as tmp:
+        path = Path(tmp) / "gland_nominal.toml"
+        path.write_text(tomli_w.dumps(structure), encoding="utf-8")
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            curve = seal_friction(str(path), f"{case.fe.velocity:.6g} m/s",
+                                  [f"{p / 1e5:.6g} bar" for p in (0.0, pressure)],
+                                  f"{t_ref - ZERO_CELSIUS_K:.6g} degC", law=case.fe.law,
+                                  progress=progress)
+    notes = list(dict.fromkeys(str(w.message) for w in caught
+                               if w.category.__module__.startswith("sealsim")))
+    notes += [n for n in (getattr(curve, "attrs", {}) or {}).get("notes", []) if n not in notes]
+    rest, loaded = curve.iloc[0], curve.iloc[-1]
+    return {"squeeze_percent": squeeze_nominal * 100.0,
+            "temperature_C": t_ref - ZERO_CELSIUS_K,
+            "velocity_m_s": case.fe.velocity,
+            "pressure_bar": pressure / 1e5,
+            "normal_force_N": {"unpressurised": float(rest["normal_force_N"]),
+                               "at_pressure": float(loaded["normal_force_N"])},
+            "contact_width_mm": {"unpressurised": float(rest["contact_width_mm"]),
+                                 "at_pressure": float(loaded["contact_width_mm"])},
+            "friction_N": {"unpressurised": float(rest["friction_N"]),
+                           "at_pressure": float(loaded["friction_N"])},
+            "law": case.fe.law or DEFAULT_LAW, "mesh": case.fe.mesh,
+            "structure_case": structure, "notes": notes}

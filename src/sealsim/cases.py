@@ -169,6 +169,8 @@ CASE_KINDS = (
              frozenset({"model", "averaging"})),
     CaseKind("pneumatic compare", "sealsim.calibration.pneumatic_compare.CompareCase",
              "sealsim pneumatic compare", frozenset({"case", "variant", "measurement"})),
+    CaseKind("gland", "sealsim.structure.gland_case.GlandCase", "sealsim gland check",
+             frozenset({"ring", "housing", "service"})),
     CaseKind("study", "sealsim.studies.spec.StudyFile", "sealsim study run",
              frozenset({"study", "base", "set", "factors", "outputs", "series"})),
 )

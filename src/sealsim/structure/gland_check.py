@@ -65,7 +65,8 @@ def installed_cord(cord, inner_diameter, seat_inner=None, seat_outer=None):
 
     The torus volume π²/4 · C · d2² (C = d1 + d2, the centreline diameter) is kept: stretched
     onto a seat of diameter D_i > d1 the ring has C' = D_i + d2', compressed into a bore D_o <
-    d1 + 2 d2 it has C' = D_o - d2'; otherwise it is unchanged.  Solved by fixed-point
+    d1 + 2 d2 (a face-gland groove's outer wall) it has C' = D_o - d2'; otherwise it is
+    unchanged.  Solved by fixed-point
     iteration (a contraction: dC'/dd2' << C'/d2').
 
     Parameters
@@ -220,7 +221,9 @@ def gland_state(housing: str, values: dict[str, Any], temperature, *,
         depth = 0.5 * (metal["bore"] - metal["groove_diameter"])
         gap = metal["bore"] - metal["piston_diameter"]
     elif housing == "rod":
-        hardware, outer_seat = metal["rod"], metal["groove_diameter"]
+        # a rod-gland ring larger than the groove is squeezed radially (that is its squeeze),
+        # not compressed around its circumference: only a stretch onto the rod thins it
+        hardware, outer_seat = metal["rod"], None
         depth = 0.5 * (metal["groove_diameter"] - metal["rod"])
         gap = metal["bore"] - metal["rod"]
     else:
@@ -290,16 +293,42 @@ def worst_case(geometry: GlandGeometry, temperature: float, volume_swell: float 
     moved = geometry.state(trial, temperature, volume_swell)
     out = {}
     for q in ("squeeze", "stretch", "fill", "gap"):
-        slope = moved[q][1::2] - moved[q][0::2]
-        high = {k: geometry.limits[k][2] if slope[j] > 0 else geometry.limits[k][0]
-                for j, k in enumerate(names)}
-        low = {k: geometry.limits[k][0] if slope[j] > 0 else geometry.limits[k][2]
-               for j, k in enumerate(names)}
-        lo = float(geometry.state(low, temperature, volume_swell)[q])
-        hi = float(geometry.state(high, temperature, volume_swell)[q])
-        out[q] = {"min": lo, "nominal": float(base[q]), "max": hi, "min_at": low,
-                  "max_at": high}
+        rising = moved[q][1::2] > moved[q][0::2]
+        ends = {}
+        for sign, key in ((1.0, "max"), (-1.0, "min")):
+            corner = np.where(rising == (sign > 0), 2, 0)
+            corner, value = _improve_corner(geometry, q, sign, corner, temperature,
+                                            volume_swell)
+            ends[key] = value
+            ends[f"{key}_at"] = {k: geometry.limits[k][c] for k, c in zip(names, corner)}
+        out[q] = {"min": ends["min"], "nominal": float(base[q]), "max": ends["max"],
+                  "min_at": ends["min_at"], "max_at": ends["max_at"]}
     return out
+
+
+def _improve_corner(geometry: GlandGeometry, quantity: str, sign: float, corner: np.ndarray,
+                    temperature: float, volume_swell: float) -> tuple[np.ndarray, float]:
+    """Steepest ascent of sign·quantity over the tolerance corners, from ``corner`` (indices
+    0/2 of the limits): a size whose sensitivity vanishes at nominal (a ring neither stretched
+    nor compressed there) may still matter at the other limits."""
+    names = list(geometry.limits)
+    n = len(names)
+
+    def values(corners):
+        return {k: np.array([geometry.limits[k][c] for c in corners[:, j]])
+                for j, k in enumerate(names)}
+
+    current = float(geometry.state(values(corner[None, :]), temperature,
+                                   volume_swell)[quantity][0])
+    for _ in range(n):
+        flips = np.repeat(corner[None, :], n, axis=0)
+        flips[np.arange(n), np.arange(n)] = 2 - flips[np.arange(n), np.arange(n)]
+        trial = geometry.state(values(flips), temperature, volume_swell)[quantity]
+        best = int(np.argmax(sign * trial))
+        if sign * trial[best] <= sign * current * (1.0 + 1e-12) + 1e-15:
+            break
+        corner, current = flips[best], float(trial[best])
+    return corner, current
 
 
 def corner_values(geometry: GlandGeometry, temperature: float, volume_swell: float = 0.0
