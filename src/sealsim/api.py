@@ -372,10 +372,11 @@ def oring_gland(gland, *, fe: bool = False, progress=None) -> dict[str, Any]:
 
     Parameters
     ----------
-    gland : str, path or mapping
-        A gland case file (``examples/gland/piston_static.toml``) or its tables as a mapping
-        with quantities as strings with units: ``{"ring": {...}, "housing": {...},
-        "service": {...}}`` (see the gland case reference).
+    gland : str, path, mapping or GlandCase
+        A gland case file (``examples/gland/piston_static.toml``), its tables as a mapping
+        with quantities as strings with units (``{"ring": {...}, "housing": {...},
+        "service": {...}}``, see the gland case reference) or a validated
+        :class:`~sealsim.structure.gland_case.GlandCase`.
     fe : bool
         Also run the FE model at nominal (needs the case's ``[fe]`` table with the sliding
         velocity; piston and rod glands only).
@@ -401,7 +402,9 @@ def oring_gland(gland, *, fe: bool = False, progress=None) -> dict[str, Any]:
     from sealsim.structure.gland_case import GlandCase, load_gland_case
     from sealsim.structure.gland_check import check_gland
 
-    if isinstance(gland, str | Path):
+    if isinstance(gland, GlandCase):
+        case = gland
+    elif isinstance(gland, str | Path):
         case = load_gland_case(gland)
     elif isinstance(gland, Mapping):
         case = validate_case(GlandCase, dict(gland), "gland")

@@ -15,6 +15,7 @@ from sealsim.cli._common import console
 from sealsim.cli.cache import cache_app
 from sealsim.cli.fmu import fmu_app
 from sealsim.cli.friction import friction_app
+from sealsim.cli.gland import gland_app
 from sealsim.cli.pneumatic import pneumatic_app
 from sealsim.cli.properties import material_app, oil_app
 from sealsim.cli.rotary import rotary_app
@@ -39,6 +40,7 @@ app.add_typer(pneumatic_app, name="pneumatic")
 app.add_typer(cache_app, name="cache")
 app.add_typer(fmu_app, name="fmu")
 app.add_typer(study_app, name="study")
+app.add_typer(gland_app, name="gland")
 
 
 def _version(value: bool) -> None:

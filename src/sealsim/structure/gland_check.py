@@ -519,9 +519,10 @@ def geometry_of(case) -> tuple[GlandGeometry, Any, list[str]]:
         tol_d2 = iso3601_cord_tolerance(ring.cord_diameter)
     if tol_d1 is None:
         tol_d1 = iso3601_inner_diameter_tolerance(ring.inner_diameter)
-    if ring.cord_tolerance is None or ring.inner_diameter_tolerance is None:
-        notes.append(f"ring tolerances from ISO 3601-1: d2 ±{tol_d2 * 1e3:.3g} mm, "
-                     f"d1 ±{tol_d1 * 1e3:.3g} mm")
+    notes.append(f"ring tolerances: d2 ±{tol_d2 * 1e3:.3g} mm "
+                 f"({'ISO 3601-1' if ring.cord_tolerance is None else 'given'}), "
+                 f"d1 ±{tol_d1 * 1e3:.3g} mm "
+                 f"({'ISO 3601-1' if ring.inner_diameter_tolerance is None else 'given'})")
     limits = {"cord": (ring.cord_diameter - tol_d2, ring.cord_diameter,
                        ring.cord_diameter + tol_d2),
               "inner_diameter": (ring.inner_diameter - tol_d1, ring.inner_diameter,
