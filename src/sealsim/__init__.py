@@ -11,7 +11,9 @@ One-call answers at the top level (:mod:`sealsim.api`, imported on first use so 
 * :func:`seal_friction` -- steady friction of a reciprocating seal over velocity, with F_N and
   b from an FE map or the analytic O-ring estimate;
 * :func:`oring_gland` -- design check of an O-ring gland (squeeze, stretch, fill, extrusion
-  gap from the worst-case tolerance stack), optionally with the FE force and friction.
+  gap from the worst-case tolerance stack), optionally with the FE force and friction;
+* :func:`friction_loop` -- friction over a harmonic velocity (the hysteresis loop of a
+  friction law with states).
 
 The subpackages hold the long-form API: :mod:`sealsim.rotary`, :mod:`sealsim.pneumatic`,
 :mod:`sealsim.friction`, :mod:`sealsim.structure`, :mod:`sealsim.properties`,
@@ -29,7 +31,7 @@ except PackageNotFoundError:  # pragma: no cover - only when run from an uninsta
 
 #: top-level names imported on first use: name -> module
 _LAZY = {"lip_seal_torque": "sealsim.api", "seal_friction": "sealsim.api",
-         "oring_gland": "sealsim.api"}
+         "oring_gland": "sealsim.api", "friction_loop": "sealsim.api"}
 
 
 def __getattr__(name: str):
@@ -53,6 +55,7 @@ __all__ = [
     "ResultExistsError",
     "SealsimError",
     "__version__",
+    "friction_loop",
     "lip_seal_torque",
     "oring_gland",
     "seal_friction",
