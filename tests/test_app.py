@@ -146,6 +146,7 @@ def test_gland_page_names_the_failed_check_of_an_example(server, browser):
     assert float(cell.get_attribute("data-value")) == expected["squeeze_percent"]["min"]
     notes = browser.find_element("id", "gland-notes").text
     assert "extrusion_gap fails" in notes
+    _wait(browser, _visible("gland-figure"))
     _shot(browser, "gland")
 
 

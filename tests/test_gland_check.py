@@ -232,3 +232,28 @@ def test_cli_writes_the_result_folder(tmp_path):
     second = CliRunner().invoke(app, ["gland", "check", str(EXAMPLES / "face_static.toml"),
                                       "--out", str(out), "-q"])
     assert second.exit_code == 2 and "--force" in second.output
+
+
+def test_fe_at_nominal_is_the_structure_model_of_the_nominal_gland(tmp_path, monkeypatch):
+    # one coarse FE load path (about 15 s); the map is cached in tmp_path
+    monkeypatch.setenv("SEALSIM_CACHE", str(tmp_path))
+    r = sealsim.oring_gland(EXAMPLES / "rod_reciprocating.toml", fe=True)
+    fe = r["fe"]
+    structure = fe["structure_case"]
+    # the FE gland is the nominal gland: its depth d2'(1 - s) is the nominal gland depth
+    # (26.1165 H8 middle - 19.9695 f7 middle) / 2 = 3.0735 mm
+    cord = float(structure["seal"]["cord_diameter"].split()[0])
+    assert cord * (1 - structure["load"]["squeeze"][0]) == pytest.approx(3.0735, abs=1e-4)
+    assert fe["squeeze_percent"] == pytest.approx(r["squeeze_percent"]["nominal"], abs=1e-6)
+    rest, loaded = fe["normal_force_N"]["unpressurised"], fe["normal_force_N"]["at_pressure"]
+    # pressure energises the ring: F_N(100 bar) > F_N(0) + a share of p·b·π·d
+    b = fe["contact_width_mm"]["unpressurised"] * 1e-3
+    assert loaded > rest + 0.5 * 100e5 * b * math.pi * 0.02
+    # Lindley's empirical law for the same cord and squeeze (the analytic estimate) is within
+    # a factor 2: it is a free-compression fit, the FE has the groove, friction and the rod
+    analytic = sealsim.seal_friction({"cord_diameter": f"{cord} mm",
+                                      "squeeze": structure["load"]["squeeze"][0]},
+                                     "0.1 m/s", "0 bar", "20 degC",
+                                     diameter=structure["gland"]["sealing_diameter"])
+    assert 0.5 < rest / analytic["normal_force_N"] < 2.0
+    assert fe["friction_N"]["at_pressure"] > fe["friction_N"]["unpressurised"] > 0

@@ -120,18 +120,19 @@ def create_app(config: AppConfig) -> Flask:
     @app.post("/api/gland")
     def gland():
         import sealsim
+
+        report, notes = call_with_notes(sealsim.oring_gland, _gland_case(request))
+        return _json({"report": report, "notes": _merge(report.get("notes", []), notes)})
+
+    @app.post("/api/gland/figure")
+    def gland_figure():
+        import sealsim
         from sealsim.plotting.calculators import figure_png
         from sealsim.plotting.gland import plot_gland_section
 
-        gland_data = _gland_tables(request.get_json(silent=True))
-        from sealsim.cases import validate_case
-        from sealsim.structure.gland_case import GlandCase
-
-        case = validate_case(GlandCase, gland_data, "gland")
-        report, notes = call_with_notes(sealsim.oring_gland, case)
-        figure = plot_gland_section(case, report)
-        return _json({"report": report, "notes": _merge(report.get("notes", []), notes),
-                      "figure": _png_data(figure_png(figure))})
+        case = _gland_case(request)
+        report, _ = call_with_notes(sealsim.oring_gland, case)
+        return _json({"figure": _png_data(figure_png(plot_gland_section(case, report)))})
 
     @app.post("/api/gland/fe")
     def gland_fe():
@@ -319,6 +320,14 @@ def rotary_case_toml(args: dict[str, Any]) -> str:
               "# holds the speed until the temperatures are steady; the end of the run is the\n"
               "# operating point the page showed.\n\n")
     return header + tomli_w.dumps(data)
+
+
+def _gland_case(req):
+    """The validated gland case of a request (its TOML text)."""
+    from sealsim.cases import validate_case
+    from sealsim.structure.gland_case import GlandCase
+
+    return validate_case(GlandCase, _gland_tables(req.get_json(silent=True)), "gland")
 
 
 def _gland_tables(data) -> dict[str, Any]:

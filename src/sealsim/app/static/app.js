@@ -205,9 +205,16 @@ $("gland-check").addEventListener("click", async () => {
   $("gland-failed").textContent = report.failed.length ? report.failed.join(", ") : "none";
   fillStack(report);
   fillChecks(report.checks);
-  $("gland-figure").src = data.figure;
   fillNotes("gland-notes", data.notes);
+  $("gland-figure").hidden = true;
   $("gland-result").hidden = false;
+  try {
+    const picture = await post("/api/gland/figure", {toml: $("gland-toml").value});
+    $("gland-figure").src = picture.figure;
+    $("gland-figure").hidden = false;
+  } catch (error) {
+    showError("gland-error", error.message);
+  }
 });
 
 async function poll(token, onProgress) {
