@@ -14,10 +14,11 @@ matplotlib):
    section (``POST /api/gland/figure``).
 
 Baseline in the same process: the API call alone (``sealsim.lip_seal_torque``,
-``sealsim.oring_gland``), so the ratio shows what the server, JSON and picture add.  Each
-time is the median of 7 requests.  The last line is one JSON object with lip_seal_s,
-gland_s, lip_seal_curve_s, gland_figure_s, lip_seal_api_s, gland_api_s, cold_lip_seal_s (the first request
-after start, before the warm-up finished) and targets_met.
+``sealsim.oring_gland``), so the ratio shows what the server and JSON add.  Each time is
+the median of 7 requests (3 for the pictures).  The last line is one JSON object with
+lip_seal_s, gland_s, lip_seal_curve_s, gland_figure_s, lip_seal_api_s, gland_api_s,
+cold_lip_seal_s (the first request after start, before the warm-up finished) and
+targets_met.
 """
 
 import json
