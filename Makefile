@@ -22,8 +22,9 @@ demo: $(STAMP)
 	$(BIN)/sealsim rotary run $(DEMO_CASE) --out $(DEMO_OUT) --force
 
 # pytest exits with 5 when it collected no tests: that must fail, not pass silently.
+# --dist loadgroup: the browser tests (xdist group "browser") share one app server and browser.
 test: $(STAMP)
-	@$(BIN)/python -m pytest -n 2 -q; rc=$$?; \
+	@$(BIN)/python -m pytest -n 2 --dist loadgroup -q; rc=$$?; \
 	if [ $$rc -eq 5 ]; then echo "make test: pytest collected no tests" >&2; exit 1; fi; \
 	exit $$rc
 

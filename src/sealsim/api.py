@@ -40,7 +40,7 @@ import numpy as np
 
 from sealsim.errors import InputError, SealsimWarning
 
-__all__ = ["lip_seal_torque", "seal_friction"]
+__all__ = ["friction_loop", "lip_seal_torque", "oring_gland", "seal_friction"]
 
 #: Most operating points one call evaluates: a lip-seal point is a steady-state solve of about
 #: 20 ms, a seal-friction point one vectorised evaluation of the law.
@@ -481,3 +481,223 @@ def _law_parameters(table: Mapping[str, Any]):
                                                           context={"require_units": True})
     except ValidationError as exc:
         raise InputError(format_validation_error(exc, "law")) from None
+
+
+def oring_gland(gland, *, fe: bool = False, progress=None) -> dict[str, Any]:
+    """Design check of an O-ring (or X-ring) gland: squeeze, stretch, gland fill and extrusion
+    gap from the worst-case tolerance stack, at the lowest and highest service temperature,
+    against the published design ranges; with ``fe=True`` also the FE contact force and the
+    friction at nominal.
+
+    The stack and the checks are :func:`sealsim.structure.gland_check.check_gland` (ISO 286
+    fits and ISO 3601-1 ring tolerances, rubber and metal expansion, fluid swell; every limit
+    with its source).  The FE force is the structure model's (:mod:`sealsim.structure`) for
+    the nominal gland (every size at the middle of its band), the friction
+    :func:`seal_friction`'s with that FE map.
+
+    Parameters
+    ----------
+    gland : str, path, mapping or GlandCase
+        A gland case file (``examples/gland/piston_static.toml``), its tables as a mapping
+        with quantities as strings with units (``{"ring": {...}, "housing": {...},
+        "service": {...}}``, see the gland case reference) or a validated
+        :class:`~sealsim.structure.gland_case.GlandCase`.
+    fe : bool
+        Also run the FE model at nominal (needs the case's ``[fe]`` table with the sliding
+        velocity; piston and rod glands only).
+    progress : callable, optional
+        ``progress(done, total)`` while the FE map is built.
+
+    Returns
+    -------
+    dict
+        The ``report.json`` of ``sealsim gland check``: ``squeeze_percent``,
+        ``stretch_percent``, ``gland_fill_percent``, ``extrusion_gap_mm`` (each ``{"min",
+        "nominal", "max"}``), ``by_temperature``, ``extrusion``, ``checks`` (``{"name",
+        "value", "limit", "ok", "source", ...}``), ``ok``, ``failed``, ``notes`` and, with
+        ``fe``, ``fe``.
+
+    Examples
+    --------
+    >>> r = oring_gland("examples/gland/piston_static.toml")
+    >>> r["ok"], [round(r["squeeze_percent"][k], 1) for k in ("min", "nominal", "max")]
+    (True, [17.0, 21.2, 25.7])
+    """
+    from sealsim.cases import validate_case
+    from sealsim.structure.gland_case import GlandCase, load_gland_case
+    from sealsim.structure.gland_check import check_gland
+
+    if isinstance(gland, GlandCase):
+        case = gland
+    elif isinstance(gland, str | Path):
+        case = load_gland_case(gland)
+    elif isinstance(gland, Mapping):
+        case = validate_case(GlandCase, dict(gland), "gland")
+    else:
+        raise InputError(f"gland: {gland!r} is neither a gland case file nor a mapping of its "
+                         "tables")
+    report = check_gland(case)
+    out = report.to_dict()
+    if fe:
+        out["fe"] = _gland_fe(report, progress)
+    return out
+
+
+def _gland_fe(report, progress=None) -> dict[str, Any]:
+    """FE normal force, contact width and friction of the nominal gland of a gland report."""
+    import tempfile
+
+    import tomli_w
+
+    from sealsim.units import ZERO_CELSIUS_K
+
+    case, geometry = report.case, report.geometry
+    if case.fe is None:
+        raise InputError("fe: the FE check needs the case's [fe] table with the sliding "
+                         "velocity, e.g. [fe] velocity = '0.1 m/s'")
+    housing = case.housing
+    if housing.type == "face":
+        raise InputError("fe: the structure model has rod, piston and shaft glands; a face "
+                         "gland (axial squeeze) has no FE model yet")
+    nominal = geometry.nominal()
+    t_ref = case.service.assembly_temperature
+    state = geometry.state(nominal, t_ref)
+    squeeze_nominal = float(state["squeeze"])
+    # the installed ring: its section after stretch, sitting on its seat (the FE closes both
+    # radial surfaces on the free section to the nominal squeeze)
+    seat = nominal["groove_diameter"] if housing.type == "piston" else nominal["rod"]
+    sealing = nominal["bore"] if housing.type == "piston" else nominal["rod"]
+    pressure = case.service.pressure
+    grid = [0.0, 0.5 * pressure, pressure] if pressure > 0 else [0.0, 1e5]
+    mm = lambda x: f"{x * 1e3:.6g} mm"  # noqa: E731
+    structure = {
+        "title": f"nominal gland of {case.title or 'a gland check'}",
+        "seal": {"type": case.ring.type, "cord_diameter": mm(float(state["cord"])),
+                 "inner_diameter": mm(seat)},
+        "gland": {"arrangement": housing.type, "sealing_diameter": mm(sealing),
+                  "groove_width": mm(nominal["groove_width"]),
+                  "inner_expansion": f"{housing.inner_expansion:.6g} 1/K",
+                  "outer_expansion": f"{housing.outer_expansion:.6g} 1/K"},
+        "material": {"elastomer": case.ring.material, "hardness_shore_a": report.hardness},
+        "mesh": {"level": case.fe.mesh},
+        "load": {"installation_temperature": f"{t_ref - ZERO_CELSIUS_K:.6g} degC",
+                 "squeeze": [round(squeeze_nominal, 6)]},
+        "map": {"pressure": [f"{p / 1e5:.6g} bar" for p in grid],
+                "temperature": [f"{t_ref - ZERO_CELSIUS_K:.6g} degC"], "workers": 1},
+    }
+    with tempfile.TemporaryDirectory(prefix="sealsim-gland-") as tmp:
+        path = Path(tmp) / "gland_nominal.toml"
+        path.write_text(tomli_w.dumps(structure), encoding="utf-8")
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            curve = seal_friction(str(path), f"{case.fe.velocity:.6g} m/s",
+                                  [f"{p / 1e5:.6g} bar" for p in (0.0, pressure)],
+                                  f"{t_ref - ZERO_CELSIUS_K:.6g} degC", law=case.fe.law,
+                                  progress=progress)
+    notes = list(dict.fromkeys(str(w.message) for w in caught
+                               if w.category.__module__.startswith("sealsim")))
+    notes += [n for n in (getattr(curve, "attrs", {}) or {}).get("notes", []) if n not in notes]
+    rest, loaded = curve.iloc[0], curve.iloc[-1]
+    return {"squeeze_percent": squeeze_nominal * 100.0,
+            "temperature_C": t_ref - ZERO_CELSIUS_K,
+            "velocity_m_s": case.fe.velocity,
+            "pressure_bar": pressure / 1e5,
+            "normal_force_N": {"unpressurised": float(rest["normal_force_N"]),
+                               "at_pressure": float(loaded["normal_force_N"])},
+            "contact_width_mm": {"unpressurised": float(rest["contact_width_mm"]),
+                                 "at_pressure": float(loaded["contact_width_mm"])},
+            "friction_N": {"unpressurised": float(rest["friction_N"]),
+                           "at_pressure": float(loaded["friction_N"])},
+            "law": case.fe.law or DEFAULT_LAW, "mesh": case.fe.mesh,
+            "structure_case": structure, "notes": notes}
+
+
+#: Columns of :func:`friction_loop` (units in the names).
+FRICTION_LOOP_COLUMNS = ["time_s", "velocity_m_s", "displacement_mm", "friction_N"]
+
+
+def friction_loop(seal, velocity_amplitude, frequency, pressure="0 bar",
+                  temperature="20 degC", law=None, *, mean_velocity="0 m/s", diameter=None,
+                  cycles: int = 3, steps_per_cycle: int = 400, progress=None):
+    """Friction of a reciprocating seal over a harmonic sliding velocity: the hysteresis loop.
+
+    The velocity v(t) = v_mean + v_a·sin(2π f t) drives the friction law's states from rest
+    (``FrictionLaw.trajectory``, exact for the velocity held over each step, taken at the
+    step's midpoint); F_N and b come from the seal's contact map at the pressure and
+    temperature, as in :func:`seal_friction`.  A law without states (Coulomb, Stribeck)
+    follows its steady curve; LuGre, Dahl, GMS and Θ lag behind the velocity and open a loop
+    (Canudas de Wit et al., IEEE TAC 40 (1995) 419, Fig. 3).
+
+    Parameters
+    ----------
+    seal, pressure, temperature, law, diameter, progress
+        As for :func:`seal_friction`.
+    velocity_amplitude : str or pint quantity
+        v_a, e.g. ``"5 mm/s"``.
+    frequency : str or pint quantity
+        f, e.g. ``"1 Hz"``.
+    mean_velocity : str or pint quantity
+        v_mean (default 0: the sliding reverses, a force-displacement loop).
+    cycles : int
+        Periods simulated; all are returned (the first starts from rest).
+    steps_per_cycle : int
+        Time steps per period.
+
+    Returns
+    -------
+    pandas.DataFrame
+        time_s, velocity_m_s, displacement_mm, friction_N; notes as for
+        :func:`seal_friction` (``frame.attrs["notes"]`` and :class:`SealsimWarning`).
+
+    Examples
+    --------
+    >>> oring = {"cord_diameter": "2 mm", "squeeze": 0.12}
+    >>> loop = friction_loop(oring, "5 mm/s", "1 Hz", "6 bar", diameter="12 mm",
+    ...                      law={"law": "lugre", "parameter_set": "canudas1995"})
+    >>> len(loop), round(float(loop["displacement_mm"].max()), 3)
+    (1201, 1.592)
+    """
+    import pandas as pd
+
+    from sealsim.friction.base import ContactInputs
+    from sealsim.units import to_si
+
+    v_a = to_si(velocity_amplitude, "velocity", "velocity_amplitude", plain_is_si=False)
+    v_m = to_si(mean_velocity, "velocity", "mean_velocity", plain_is_si=False)
+    f = to_si(frequency, "frequency", "frequency", plain_is_si=False)
+    dp = to_si(pressure, "pressure", "pressure", plain_is_si=False)
+    temp = to_si(temperature, "temperature", "temperature", plain_is_si=False)
+    for name, value in (("velocity_amplitude", v_a), ("mean_velocity", v_m),
+                        ("frequency", f), ("pressure", dp), ("temperature", temp)):
+        if np.ndim(value) != 0 or not math.isfinite(float(value)):
+            raise InputError(f"{name}: {value!r} must be one finite value")
+    if not (v_a > 0 and f > 0 and dp >= 0):
+        raise InputError("velocity_amplitude and frequency must be > 0, pressure >= 0")
+    if not (1 <= int(cycles) <= 50 and 20 <= int(steps_per_cycle) <= 20000):
+        raise InputError("cycles: 1 ... 50, steps_per_cycle: 20 ... 20000")
+    contact_map = _contact_map(seal, diameter, progress)
+    _check_ranges(contact_map, np.array([dp]), np.array([temp]))
+    friction_law, notes = _friction_law(DEFAULT_LAW if law is None else law)
+    normal_force, width = (float(np.asarray(x, dtype=float).reshape(-1)[0])
+                           for x in contact_map.evaluate(dp, temp))
+    table, diameter_m = _contact_table(friction_law, contact_map)
+    n = int(cycles) * int(steps_per_cycle)
+    t = np.linspace(0.0, int(cycles) / f, n + 1)
+    dt = np.diff(t)
+    omega = 2.0 * math.pi * f
+    velocity = v_m + v_a * np.sin(omega * t)
+    displacement = v_m * t + v_a / omega * (1.0 - np.cos(omega * t))
+    mid = v_m + v_a * np.sin(omega * (t[:-1] + 0.5 * dt))
+    inputs = ContactInputs(normal_force=np.array([normal_force]), contact_width=width,
+                           pressure_a=dp, pressure_b=0.0, temperature=temp,
+                           contact_table=table, sliding_diameter=diameter_m)
+    states = friction_law.trajectory(friction_law.initial_state(1), mid, dt, inputs)
+    z = np.moveaxis(states[:, :, 0], 0, -1)           # (n_states, n + 1)
+    force = np.asarray(friction_law.force(z, velocity, inputs), dtype=float).reshape(-1)
+    for note in notes:
+        warnings.warn(note, SealsimWarning, stacklevel=2)
+    frame = pd.DataFrame({"time_s": t, "velocity_m_s": velocity,
+                          "displacement_mm": displacement * 1e3, "friction_N": force},
+                         columns=FRICTION_LOOP_COLUMNS)
+    frame.attrs["notes"] = list(notes)
+    return frame

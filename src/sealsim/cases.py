@@ -183,6 +183,8 @@ CASE_KINDS = (
     CaseKind("material fit", "sealsim.calibration.material_fit.MaterialFitCase",
              "sealsim material fit",
              frozenset({"compound", "hyperelastic", "viscoelastic", "dilatometry"})),
+    CaseKind("gland", "sealsim.structure.gland_case.GlandCase", "sealsim gland check",
+             frozenset({"ring", "housing", "service"})),
     CaseKind("study", "sealsim.studies.spec.StudyFile", "sealsim study run",
              frozenset({"study", "base", "set", "factors", "outputs", "series"})),
 )

@@ -37,8 +37,7 @@ def guarded(func):
         try:
             return func(*args, **kwargs)
         except SealsimError as exc:
-            kind = "input error" if exc.exit_code == 2 else "error"
-            _fail(kind, str(exc))
+            _fail(*error_parts(exc))
             raise typer.Exit(exc.exit_code) from None
         except OSError as exc:
             where = f" {exc.filename!r}" if exc.filename else ""
@@ -56,6 +55,12 @@ def guarded(func):
             raise typer.Exit(getattr(exc, "exit_code", 130)) from None
 
     return wrapper
+
+
+def error_parts(exc: SealsimError) -> tuple[str, str]:
+    """(kind, message) of a sealsim error as the CLI prints it ("input error: ..."); the app
+    shows the same text."""
+    return ("input error" if exc.exit_code == 2 else "error"), str(exc)
 
 
 def _fail(kind: str, message: str) -> None:

@@ -198,11 +198,16 @@ def contact_profiles(contact_map):
         t_nodes = np.asarray(ds["temperature"].values, dtype=float)
         values = np.nan_to_num(np.clip(prof.values, 0.0, None))
         z = np.asarray(ds["position"].values, dtype=float)
-        temps = _grid(t_nodes, TEMPERATURE_STEP) if t_nodes.size > 1 else t_nodes
-        pressures = np.asarray(ds["pressure"].values, dtype=float)
+        # a map at one temperature (or one pressure) allows only that value; the table's
+        # interpolation needs two nodes per axis, so a second one 1 K (1 kPa) above repeats it
+        temps = (_grid(t_nodes, TEMPERATURE_STEP) if t_nodes.size > 1
+                 else np.array([t_nodes[0], t_nodes[0] + 1.0]))
+        p_nodes = np.asarray(ds["pressure"].values, dtype=float)
+        pressures = p_nodes if p_nodes.size > 1 else np.array([p_nodes[0], p_nodes[0] + 1e3])
 
         def profile(i, j):
             t = temps[i]
+            j = min(j, p_nodes.size - 1)
             if t_nodes.size == 1:
                 return z, values[0, j]
             k = min(max(int(np.searchsorted(t_nodes, t, side="right")) - 1, 0),
