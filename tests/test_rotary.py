@@ -287,12 +287,94 @@ def test_rig_contact_rise_at_4_2_m_s_within_published_range():
 
 
 def test_gearbox_contact_runs_cooler_than_the_rig():
-    # In the gearbox the shaft is held at the sump temperature at the bearing 30 mm inside:
-    # that conduction path (k·A/L = 7.5 W/K on 80 mm) bounds the rise, so at equal speed the
-    # gearbox contact rises less above the sump than the rig's (insulated shaft ends).
+    # In the gearbox the shaft continues as a rotating fin in the sump (≈ 7 W/K on 80 mm at
+    # 1000 rpm) and leads to a coupling outside: at equal speed the gearbox contact rises less
+    # above the sump than the rig's (insulated shaft ends), even with the bearing's heat.
     for rpm in (1000, 3000):
         assert _rise_over_sump({"setup": "gearbox"}, rpm) < _rise_over_sump(
             {"setup": "test_rig"}, rpm)
+
+
+# Issue 24, finding 1: the default gearbox set-up has no boundary of fixed temperature on the
+# oil side: the shaft passes the bearing beside the seal (a heat source, Palmgren) and
+# continues as a rotating fin in the sump.  The bands of the issue (80 mm, VG 68, sump held at
+# 80 °C, 20 °C ambient) are the references; those the physics misses are strict xfails with
+# the measured number (README, Validation).
+GEARBOX_RPM = [10, 100, 300, 1000, 2000, 3000, 5000]
+
+
+def test_gearbox_contact_rise_at_12_6_m_s_within_published_band():
+    assert 20 <= _rise_over_sump({}, 3000) <= 60
+
+
+@pytest.mark.xfail(strict=True, reason="the default gearbox gives +3.4 K at 1000 rpm (33 W): "
+                   "the rotating fin in the sump (≈ 7 W/K) and the 20 °C air side cool the "
+                   "shaft; even with no sink colder than the sump the rise is +9 K")
+def test_gearbox_contact_rise_at_4_2_m_s_within_published_band():
+    assert 10 <= _rise_over_sump({}, 1000) <= 40
+
+
+@pytest.mark.xfail(strict=True, reason="40 mm at 1000 rpm gives -0.9 K: 8 W of friction "
+                   "against the heat the 20 °C air side draws from the 80 °C oil along the shaft")
+def test_gearbox_small_shaft_contact_rises_3_k_at_1000_rpm():
+    assert _rise_over_sump({}, 1000, "40 mm") >= 3.0
+
+
+@pytest.mark.xfail(strict=True, reason="at 10-300 rpm the contact is 2.7-7.2 K below the 80 °C "
+                   "sump: the shaft conducts heat from the oil to the coupling at the housing "
+                   "temperature (70 °C) and the 20 °C air, more than the friction makes")
+def test_gearbox_contact_never_below_the_sump_with_cold_ambient():
+    assert min(_rise_over_sump({}, rpm) for rpm in GEARBOX_RPM) >= 0.0
+
+
+def test_gearbox_contact_never_below_the_sump_when_nothing_is_colder():
+    # The maximum principle of heat conduction: with the seal and the bearing as the only
+    # sources and no boundary colder than the held sump (ambient at the sump temperature),
+    # no temperature of the model can fall below the sump, at any speed.  The old set-up met
+    # this too; it is the invariant the gearbox must keep (rounding: 1e-6 K).
+    for diameter in ("80 mm", "40 mm"):
+        for rpm in GEARBOX_RPM:
+            case = _case(seal={"shaft_diameter": diameter},
+                         environment={"sump_temperature": "80 degC",
+                                      "ambient_temperature": "80 degC"})
+            result = steady_state(case, rpm * RPM)
+            assert result["T_contact_C"] >= 80.0 - 1e-6
+            assert result["T_groove_C"] >= 80.0 - 1e-6
+
+
+def test_gearbox_oil_side_fin_equals_a_long_modelled_shaft():
+    # The semi-infinite fin at the oil-side end (conductance √(hPkA), Incropera §3.6.4) must
+    # give the contact temperature of a shaft modelled four decay lengths further into the
+    # gear case with the same coefficient: e^-4 = 2 % of the end's temperature excess is
+    # left, so within 2 % of the rise above the sump.
+    short = _case(environment={"sump_temperature": "80 degC", "ambient_temperature": "80 degC"})
+    model = RotaryModel(short)
+    h = model.coefficients(1000 * RPM, 353.15)["shaft_end_oil"]
+    decay = 45.0 / h  # 1/m = √(4h/(k d)) and h_end = √(4 h k/d): 1/m = k/h_end
+    long = _case(environment={"sump_temperature": "80 degC", "ambient_temperature": "80 degC",
+                              "shaft_length_oil_side":
+                                  f"{(model.section.shaft_length_oil + 4 * decay) * 1e3} mm"})
+    rise_short = steady_state(short, 1000 * RPM)["T_contact_C"] - 80
+    rise_long = steady_state(long, 1000 * RPM)["T_contact_C"] - 80
+    assert rise_short == pytest.approx(rise_long, rel=0.02)
+
+
+def test_bearing_heat_enters_the_gearbox_and_the_energy_balance():
+    # The bearing beside the seal heats the shaft (Palmgren's viscous moment × ω: 104 W at
+    # 3000 rpm in VG 68 at 80 °C for the 6216 of an 80 mm shaft; half into the shaft): the
+    # contact runs hotter than without it, and the transient books its heat.
+    with_bearing = _rise_over_sump({}, 3000)
+    without = _rise_over_sump({"bearing": {"model": "none"}}, 3000)
+    assert with_bearing > without
+    given = steady_state(_case(environment={"sump_temperature": "80 degC",
+                                            "bearing": {"model": "power", "power": "50 W"}}),
+                         3000 * RPM)
+    assert given["bearing_power_W"] == 50.0
+    case = _case(environment={"sump_volume": "0.5 L"},
+                 duty={"steps": [{"speed": "2000 rpm", "duration": "5 min"}]})
+    result = simulate(case)
+    assert result.energy["generated_bearing"] > 0.1 * result.energy["generated"]
+    assert result.energy["rel_error"] < 1e-9
 
 
 def test_open_bath_convection_cools_the_shaft_more_than_the_annulus():
