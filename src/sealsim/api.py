@@ -37,7 +37,7 @@ __all__ = ["lip_seal_torque", "seal_friction"]
 
 #: Columns of :func:`lip_seal_torque` (units in the names).
 LIP_SEAL_COLUMNS = ["shaft_diameter_mm", "speed_rpm", "torque_Nm", "power_W", "T_contact_C",
-                    "T_groove_C", "T_sump_C", "film_um", "F_lub_N", "F_material_N"]
+                    "T_groove_C", "T_sump_C", "film_um", "F_lub_N", "F_material_N", "lip_note"]
 #: Columns of :func:`seal_friction` (units in the names; pressure is gauge, across the seal).
 SEAL_FRICTION_COLUMNS = ["velocity_m_s", "pressure_bar", "temperature_C", "friction_N",
                          "normal_force_N", "contact_width_mm"]
@@ -51,7 +51,7 @@ DEFAULT_LAW = {"law": "theta", "parameter_set": "pneumatic_demo"}
 def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] = "VG68-mineral",
                     sump_temperature=None, *, material: str = "NBR", lip_style: str = "plain",
                     ambient_temperature="20 degC", radial_force=None, contact_width=None,
-                    case: Mapping[str, Any] | None = None):
+                    mounting_temperature=None, case: Mapping[str, Any] | None = None):
     """Steady friction torque, power, contact temperature and film of a radial lip seal.
 
     The seal runs at constant speed until friction and heat transfer are in equilibrium: the
@@ -86,6 +86,10 @@ def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] = "VG68-
         Lip force at 20 °C (plain number: N); default 0.15 N/mm · π·d.
     contact_width : str or float, optional
         Axial contact width of the lip (plain number: m); default from the diameter.
+    mounting_temperature : str or float, optional
+        Temperature at which the seal was mounted (plain number: K), default 20 °C.  A lip
+        running colder keeps the stress it relaxed to there; only its thermal contraction
+        since meets the stiffer cold rubber (the ``lip_note`` column says so).
     case : mapping, optional
         Any further fields of a rotary case (:class:`~sealsim.rotary.case.RotaryCase`), as
         nested tables: ``{"environment": {"sump_volume": "0.2 L"}, "friction": {...}}``.
@@ -94,7 +98,8 @@ def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] = "VG68-
     -------
     dict or pandas.DataFrame
         shaft_diameter_mm, speed_rpm, torque_Nm, power_W, T_contact_C, T_groove_C,
-        T_sump_C, film_um, F_lub_N, F_material_N: a dict for scalar arguments, a DataFrame
+        T_sump_C, film_um, F_lub_N, F_material_N, lip_note (text: the lip's mounting case when
+        it runs colder than it was mounted, else ""): a dict for scalar arguments, a DataFrame
         with one row per point when any of shaft_diameter, speed, sump_temperature,
         ambient_temperature is an array (they broadcast against each other).
 
@@ -137,6 +142,9 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
         seal["radial_force"] = to_si(radial_force, "force", "radial_force")
     if contact_width is not None:
         seal["contact_width"] = to_si(contact_width, "length", "contact_width")
+    if mounting_temperature is not None:
+        seal["mounting_temperature"] = to_si(mounting_temperature, "temperature",
+                                             "mounting_temperature")
     oil_table = {"name": oil} if isinstance(oil, str) else dict(oil)
     base = apply_overrides({"seal": seal, "oil": oil_table}, dict(case or {}))
 
@@ -262,7 +270,7 @@ def seal_friction(seal, velocity, pressure=0.0, temperature="20 degC", law=None,
 def _rows_out(rows: list[dict], shape: tuple, columns: list[str]):
     """A dict of floats for a single point given as scalars, else a DataFrame."""
     if shape == ():
-        return {c: float(rows[0][c]) for c in columns}
+        return {c: v if isinstance(v := rows[0][c], str) else float(v) for c in columns}
     import pandas as pd
 
     return pd.DataFrame(rows, columns=columns)

@@ -84,6 +84,11 @@ class Seal(CaseModel):
     radial_force: Q("force", gt=0, le=1000.0) | None = Field(
         None, description="lip force at radial_force_temperature; default 0.15 N/mm x pi d")
     radial_force_temperature: Q("temperature", gt=200.0, lt=450.0) = 293.15
+    mounting_temperature: Q("temperature", gt=200.0, lt=450.0) | None = Field(None, description=(
+        "temperature at which the seal was mounted on the shaft and its lip stress relaxed "
+        "(held for an hour); a lip cooled below it keeps that stress and only the contraction "
+        "increment meets the stiffer cold rubber (rotary/lip.py Eq. 1); default "
+        "radial_force_temperature"))
     spring_share: float = Field(0.45, ge=0.0, le=1.0, description=(
         "share of the garter spring in the radial force (typically 30-60 % for a new "
         "DIN 3760 NBR lip; handbook range, not checked against one measured source)"))
@@ -117,6 +122,8 @@ class Seal(CaseModel):
             values["radial_force"] = float(default_radial_force(d))
         if self.contact_width is None:
             values["contact_width"] = default_contact_width(d)
+        if self.mounting_temperature is None:
+            values["mounting_temperature"] = self.radial_force_temperature
         for key, value in values.items():
             object.__setattr__(self, key, value)
         if self.outer_diameter <= d + 4e-3:

@@ -36,7 +36,13 @@ from sealsim.properties.elastomers import ServiceRangeWarning, get_elastomer
 from sealsim.properties.oils import OilRangeWarning
 from sealsim.rotary.case import RotaryCase, start_temperature
 from sealsim.rotary.friction import FrictionState, LipSealFriction, LipSealFrictionParameters
-from sealsim.rotary.lip import LIP_STYLES, AnalyticLipForce, LipStyle, wave_lip_style
+from sealsim.rotary.lip import (
+    LIP_STYLES,
+    AnalyticLipForce,
+    LipStyle,
+    lip_mounting_note,
+    wave_lip_style,
+)
 from sealsim.rotary.thermal_model import SealSection, build_thermal_grid
 from sealsim.thermal.conduction import (
     BackwardEulerStepper,
@@ -173,10 +179,17 @@ def lip_force_source(case: RotaryCase):
     if case.lip.force == "fe":
         from sealsim.rotary.lip_fe import lip_force_table
 
-        return lip_force_table(seal, case.lip, seal.radial_force_temperature).force_at
+        return lip_force_table(seal, case.lip, seal.mounting_temperature).force_at
     return AnalyticLipForce(seal.radial_force, seal.radial_force_temperature, seal.spring_share,
                             get_elastomer(seal.material), seal.hoop_prestrain,
-                            case.environment.shaft_expansion)
+                            case.environment.shaft_expansion, seal.mounting_temperature)
+
+
+def lip_note(case: RotaryCase, lowest_temperature: float) -> str:
+    """The run's note on the lip's mounting path (:func:`~sealsim.rotary.lip.lip_mounting_note`)
+    for its lowest contact temperature [K]."""
+    history = case.lip.force != "fe" or get_elastomer(case.seal.material).prony is not None
+    return lip_mounting_note(lowest_temperature, case.seal.mounting_temperature, history)
 
 
 def contact_width_source(case: RotaryCase):
@@ -187,7 +200,7 @@ def contact_width_source(case: RotaryCase):
     from sealsim.rotary.lip_fe import lip_force_table
 
     seal = case.seal
-    return lip_force_table(seal, case.lip, seal.radial_force_temperature).contact_width_at
+    return lip_force_table(seal, case.lip, seal.mounting_temperature).contact_width_at
 
 
 def lip_seal_friction(case: RotaryCase) -> LipSealFriction:
@@ -554,13 +567,9 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
         if film:
             notes.append(film)
             warnings.warn(film, FilmRangeWarning, stacklevel=2)
-    if model.case.lip.force == "fe":
-        from sealsim.rotary.lip_fe import cold_lip_note
-
-        cold = cold_lip_note(frame["T_contact_C"].min() + ZERO_CELSIUS_K,
-                             model.elastomer.glass_transition)
-        if cold:
-            notes.append(cold)
+    mounting = lip_note(model.case, frame["T_contact_C"].min() + ZERO_CELSIUS_K)
+    if mounting:
+        notes.append(mounting)
     result = RotaryResult(case, frame, _step_summary(frame, steps, speeds, times), energy, notes,
                           {"time_steps": len(rows), "factorisations": stepper.factorisations,
                            "thermal_nodes": model.network.n_cells})
@@ -609,7 +618,7 @@ def _time_average(t: np.ndarray, y: np.ndarray, lo: float, hi: float) -> float:
 
 
 def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
-                 max_iter: int = 100) -> dict[str, float]:
+                 max_iter: int = 100) -> dict:
     """Steady operating point at constant speed: friction and temperatures in equilibrium.
 
     Solves K(T_sump)·T = F·T_fixed + e·P(ω, T_contact) for the temperatures T (e spreads the
@@ -640,7 +649,8 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
     dict
         torque_Nm, power_W, T_contact_C, T_groove_C, T_sump_C, T_housing_C, film_um, F_lub_N,
         F_material_N, lip_force_N, mu_dry, asperity_share, bearing_power_W (friction heat of
-        the bearing beside the seal), iterations.  A film outside the
+        the bearing beside the seal), iterations, lip_note (which mounting case the lip
+        force is when the lip runs colder than it was mounted, else "").  A film outside the
         measured range of lip seal films gives a
         :class:`~sealsim.tribology.film.FilmRangeWarning`.
     """
@@ -711,7 +721,7 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
             "lip_force_N": float(state.lip_force), "mu_dry": float(state.mu_dry),
             "asperity_share": float(state.asperity_share),
             "bearing_power_W": model.bearing_heat(angular_speed, model.sump_temperature(temps)),
-            "iterations": iteration}
+            "iterations": iteration, "lip_note": lip_note(case, t_contact)}
 
 
 def friction_map(case: RotaryCase, speeds_rpm, temperatures_c) -> pd.DataFrame:
