@@ -18,7 +18,7 @@ b from a contact map of :mod:`sealsim.pneumatic.contact_maps`.
 >>> r = sealsim.lip_seal_torque(shaft_diameter="60 mm", speed="1500 rpm", oil="ISO VG 220",
 ...                             sump_temperature="70 degC")
 >>> round(r["torque_Nm"], 3), round(r["power_W"], 1), round(r["T_contact_C"], 1)
-(0.222, 34.9, 76.7)
+(0.229, 35.9, 79.8)
 """
 
 from __future__ import annotations
@@ -113,11 +113,11 @@ def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] = "VG68-
     --------
     >>> r = lip_seal_torque("60 mm", "1500 rpm", "ISO VG 220", "70 degC")
     >>> round(r["torque_Nm"], 3), round(r["film_um"], 2)
-    (0.222, 1.04)
+    (0.229, 0.91)
     >>> lip_seal_torque("60 mm", ["500 rpm", "3000 rpm"], "ISO VG 220",
     ...                 "70 degC")[["speed_rpm", "torque_Nm"]].round(3)
        speed_rpm  torque_Nm
-    0      500.0      0.187
+    0      500.0      0.200
     1     3000.0      0.242
     >>> lip_seal_torque("60 mm", 1500, "ISO VG 220")
     Traceback (most recent call last):
@@ -238,9 +238,9 @@ def seal_friction(seal, velocity, pressure=0.0, temperature="20 degC", law=None,
     >>> curve = seal_friction(oring, [0.01, 0.1, 1.0], "6 bar", diameter="12 mm")
     >>> curve[["velocity_m_s", "friction_N", "normal_force_N"]].round(2)
        velocity_m_s  friction_N  normal_force_N
-    0          0.01       12.75           49.24
-    1          0.10        9.98           49.24
-    2          1.00       18.96           49.24
+    0          0.01        9.58           38.02
+    1          0.10        8.01           38.02
+    2          1.00       19.80           38.02
     """
     from sealsim.friction.base import ContactInputs
     from sealsim.units import ZERO_CELSIUS_K, to_si
