@@ -54,7 +54,8 @@ from sealsim.tribology.rolling_bearing import DEEP_GROOVE_OIL_BATH_F0
 from sealsim.tribology.rubber_friction import DEFAULT_ASPERITY_WAVELENGTH, DEFAULT_MASTER_CURVE
 from sealsim.units import ZERO_CELSIUS_K
 
-__all__ = ["SETUPS", "Bearing", "DutyCycle", "DutyStep", "Environment", "Friction", "Numerics", "OilSpec",
+__all__ = ["SETUPS", "Bearing", "DutyCycle", "DutyStep", "Environment", "Friction", "Numerics",
+           "OilSpec",
            "RotaryCase", "Seal", "ShaftSetup", "ThermalSpec", "WaveLip"]
 
 

@@ -18,7 +18,7 @@ T_m and only the contraction increment meets the stiff cold rubber; a lip warmed
 relaxes further, as if mounted warm (then Eq. 1 is E_h(T)·ε(T)).  With the rubber share
 s_r = 1 − s_spring of F_ref at T_ref (a lip mounted at T_ref),
 
-    F_tip(T) = F_ref·[s_spring + (1 − s_spring)·σ(T)/σ_ref],  σ_ref = E_h(T_ref)·ε(T_ref).  (2)
+    F_tip(T) = F_ref·[s_spring + (1 − s_spring)·σ(T)/σ_ref],  σ_ref = E_h(T_ref)·ε(T_ref). (2)
 
 The interference shrinks as the lip warms: rubber expands about fifteen times more than the
 steel shaft, and the lip head hangs on a flexible membrane, so its ring grows nearly freely
@@ -26,7 +26,7 @@ steel shaft, and the lip head hangs on a flexible membrane, so its ring grows ne
 seals, whose "contact force decreases with the thermal volume increase", with axial ones).
 Written as the lip ring's hoop pre-strain ε₀ = δ/R on a shaft of radius R,
 
-    ε(T)/ε(T_ref) = max(0, 1 − [ε_th(T) − α_shaft·(T − T_ref)]/ε₀),                 (3)
+    ε(T)/ε(T_ref) = max(0, 1 − [ε_th(T) − α_shaft·(T − T_ref)]/ε₀),               (3)
 
 with the rubber's free thermal strain ε_th (rubbery coefficient above T_g, the glassy one of
 Simha & Boyer below, the structure frozen at T_g:

@@ -11,7 +11,8 @@ material of a map is the held (relaxed) one: a hyperelastic case with its
 ``temperature_scaling`` ("held" by default), a thermo-viscoelastic case with its long-time
 hyperelastic constants.  Both are rubbery, so a map refuses temperatures within
 :data:`~sealsim.properties.elastomers.GLASS_TRANSITION_MARGIN` of the rubber's T_g (where only
-a viscoelastic load path, ``sealsim structure run``, with its glassy expansion holds). The dataset layout is described in
+a viscoelastic load path, ``sealsim structure run``, with its glassy expansion holds).
+The dataset layout is described in
 :mod:`.maps` (which reads maps without importing the FE).
 """
 
