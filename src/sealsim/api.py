@@ -25,7 +25,7 @@ b from a contact map of :mod:`sealsim.pneumatic.contact_maps`.
 >>> r = sealsim.lip_seal_torque(shaft_diameter="60 mm", speed="1500 rpm", oil="ISO VG 220",
 ...                             sump_temperature="70 degC")
 >>> round(r["torque_Nm"], 3), round(r["power_W"], 1), round(r["T_contact_C"], 1)
-(0.222, 34.9, 76.7)
+(0.229, 35.9, 79.8)
 """
 
 from __future__ import annotations
@@ -48,7 +48,7 @@ MAX_POINTS = {"lip_seal_torque": 10_000, "seal_friction": 1_000_000}
 
 #: Columns of :func:`lip_seal_torque` (units in the names).
 LIP_SEAL_COLUMNS = ["shaft_diameter_mm", "speed_rpm", "torque_Nm", "power_W", "T_contact_C",
-                    "T_groove_C", "T_sump_C", "film_um", "F_lub_N", "F_material_N"]
+                    "T_groove_C", "T_sump_C", "film_um", "F_lub_N", "F_material_N", "lip_note"]
 #: Columns of :func:`seal_friction` (units in the names; pressure is gauge, across the seal).
 SEAL_FRICTION_COLUMNS = ["velocity_m_s", "pressure_bar", "temperature_C", "friction_N",
                          "normal_force_N", "contact_width_mm", "film_um", "asperity_share",
@@ -64,7 +64,7 @@ DEFAULT_LAW = {"law": "theta", "parameter_set": "seal_contact"}
 def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] = "VG68-mineral",
                     sump_temperature=None, *, material: str = "NBR", lip_style: str = "plain",
                     ambient_temperature="20 degC", radial_force=None, contact_width=None,
-                    case: Mapping[str, Any] | None = None):
+                    mounting_temperature=None, case: Mapping[str, Any] | None = None):
     """Steady friction torque, power, contact temperature and film of a radial lip seal.
 
     The seal runs at constant speed until friction and heat transfer are in equilibrium: the
@@ -100,6 +100,10 @@ def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] = "VG68-
         Lip force at 20 °C, e.g. ``"40 N"``; default 0.15 N/mm · π·d.
     contact_width : str or pint quantity, optional
         Axial contact width of the lip, e.g. ``"0.25 mm"``; default from the diameter.
+    mounting_temperature : str or pint quantity, optional
+        Temperature at which the seal was mounted, e.g. ``"20 degC"`` (the default).  A lip
+        running colder keeps the stress it relaxed to there; only its thermal contraction
+        since meets the stiffer cold rubber (the ``lip_note`` column says so).
     case : mapping, optional
         Any further fields of a rotary case (:class:`~sealsim.rotary.case.RotaryCase`), as
         nested tables with units as in a case file: ``{"environment": {"sump_volume":
@@ -109,7 +113,8 @@ def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] = "VG68-
     -------
     dict or pandas.DataFrame
         shaft_diameter_mm, speed_rpm, torque_Nm, power_W, T_contact_C, T_groove_C,
-        T_sump_C, film_um, F_lub_N, F_material_N: a dict for scalar arguments (with
+        T_sump_C, film_um, F_lub_N, F_material_N, lip_note (text: the lip's mounting case when
+        it runs colder than it was mounted, else ""): a dict for scalar arguments (with
         ``notes``, a list of str), a DataFrame with one row per point when any of
         shaft_diameter, speed, sump_temperature, ambient_temperature is an array (they
         broadcast against each other; notes in ``frame.attrs["notes"]``).  The notes (also
@@ -128,11 +133,11 @@ def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] = "VG68-
     --------
     >>> r = lip_seal_torque("60 mm", "1500 rpm", "ISO VG 220", "70 degC")
     >>> round(r["torque_Nm"], 3), round(r["film_um"], 2)
-    (0.222, 1.04)
+    (0.229, 0.91)
     >>> lip_seal_torque("60 mm", ["500 rpm", "3000 rpm"], "ISO VG 220",
     ...                 "70 degC")[["speed_rpm", "torque_Nm"]].round(3)
        speed_rpm  torque_Nm
-    0      500.0      0.187
+    0      500.0      0.200
     1     3000.0      0.242
     >>> lip_seal_torque("60 mm", 1500, "ISO VG 220")
     Traceback (most recent call last):
@@ -154,7 +159,9 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
         raise InputError(f"speed: {speed!r} must be >= 0")
     seal: dict[str, Any] = {"material": material, "lip_style": lip_style}
     for name, value, dimension, unit in (("radial_force", radial_force, "force", "N"),
-                                         ("contact_width", contact_width, "length", "m")):
+                                         ("contact_width", contact_width, "length", "m"),
+                                         ("mounting_temperature", mounting_temperature,
+                                          "temperature", "K")):
         if value is not None:
             seal[name] = _si_text(_scalar(value, dimension, name), unit)
     oil_table = {"name": oil} if isinstance(oil, str) else dict(oil)
@@ -325,15 +332,18 @@ def _contact_table(friction_law, contact_map):
 
 def _rows_out(rows: list[dict] | dict[str, np.ndarray], shape: tuple, columns: list[str],
               notes: list[str]):
-    """A dict of floats (and its notes) for a single point given as scalars, else a DataFrame
-    (notes in ``attrs``); each note is issued once as a :class:`SealsimWarning`."""
+    """A dict of floats (text columns as str; and its notes) for a single point given as
+    scalars, else a DataFrame (notes in ``attrs``); each note is issued once as a
+    :class:`SealsimWarning`."""
     for note in notes:
         warnings.warn(note, SealsimWarning, stacklevel=3)
     import pandas as pd
 
     frame = pd.DataFrame(rows, columns=columns)
     if shape == ():
-        return {**{c: float(frame[c].iloc[0]) for c in columns}, "notes": list(notes)}
+        first = {c: frame[c].iloc[0] for c in columns}
+        return {**{c: v if isinstance(v, str) else float(v) for c, v in first.items()},
+                "notes": list(notes)}
     frame.attrs["notes"] = list(notes)
     return frame
 

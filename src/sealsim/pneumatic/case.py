@@ -273,8 +273,10 @@ Controller = Annotated[CycleController | PositionController, Field(discriminator
 class AnalyticMapModel(CaseModel):
     """Engineering estimate of F_N and b of an O-ring (see AnalyticContactMap).  ``modulus``
     and ``thermal_expansion`` default to the catalogue values of ``elastomer``
-    (E = 6·(C10 + C01)); ``temperature_scaling`` is the modulus law in T, as in a structure
-    case's ``material.temperature_scaling``."""
+    (E = 6·(C10 + C01), the modulus at the catalogue's test frequency); ``temperature_scaling``
+    is the modulus law in T, as in a structure case's ``material.temperature_scaling`` ("held":
+    the relaxed modulus of a seal held for an hour); ``temperature_min`` defaults to 20 K above
+    the elastomer's T_g, the lowest temperature of a rubbery estimate."""
 
     cord_diameter: Q("length", gt=0)
     squeeze: Q("dimensionless", gt=0, lt=0.5)
@@ -284,9 +286,9 @@ class AnalyticMapModel(CaseModel):
     reference_temperature: Q("temperature", gt=0) = 293.15
     sliding_diameter: Q("length", gt=0) | None = None
     pressure_max: Q("pressure", gt=0) = 16e5
-    temperature_min: Q("temperature", gt=0) = 243.15
+    temperature_min: Q("temperature", gt=0) | None = None
     temperature_max: Q("temperature", gt=0) = 393.15
-    temperature_scaling: Literal["entropic", "modulus", "none"] = "entropic"
+    temperature_scaling: Literal["held", "entropic", "modulus", "none"] = "held"
 
 
 class MapModel(CaseModel):
@@ -451,14 +453,24 @@ def _analytic_map(spec: AnalyticMapModel, diameter: float, where: str) -> Analyt
             modulus = 6.0 * (elastomer.c10 + elastomer.c01)
         if expansion is None:
             expansion = elastomer.thermal_expansion
-    if spec.temperature_min >= spec.temperature_max:
+    from sealsim.properties.elastomers import GLASS_TRANSITION_MARGIN, get_elastomer
+
+    try:
+        lowest = get_elastomer(spec.elastomer).glass_transition + GLASS_TRANSITION_MARGIN
+    except Exception as exc:  # unknown name: InputError or KeyError from the catalogue
+        raise InputError(f"{where}.analytic.elastomer: {exc}") from None
+    t_min = lowest if spec.temperature_min is None else spec.temperature_min
+    if t_min >= spec.temperature_max:
         raise InputError(f"{where}.analytic: temperature_min must be below temperature_max")
-    return AnalyticContactMap(
-        sliding_diameter=spec.sliding_diameter or diameter, cord_diameter=spec.cord_diameter,
-        squeeze=spec.squeeze, modulus=modulus, thermal_expansion=expansion,
-        reference_temperature=spec.reference_temperature, pressure_max=spec.pressure_max,
-        temperature_range=(spec.temperature_min, spec.temperature_max),
-        temperature_scaling=spec.temperature_scaling, elastomer=spec.elastomer)
+    try:
+        return AnalyticContactMap(
+            sliding_diameter=spec.sliding_diameter or diameter, cord_diameter=spec.cord_diameter,
+            squeeze=spec.squeeze, modulus=modulus, thermal_expansion=expansion,
+            reference_temperature=spec.reference_temperature, pressure_max=spec.pressure_max,
+            temperature_range=(t_min, spec.temperature_max),
+            temperature_scaling=spec.temperature_scaling, elastomer=spec.elastomer)
+    except InputError as exc:
+        raise InputError(f"{where}.analytic.temperature_min: {exc}") from None
 
 
 def case_input_files(case: PneumaticCase, base_dir: str | Path) -> list[Path]:

@@ -751,7 +751,7 @@ def _check_constants(c10, c01, k, temperature):
 
 def material_from_elastomer(elastomer, model: str = "hyperelastic", *,
                             reference_temperature: float,
-                            temperature_scaling: str = "entropic",
+                            temperature_scaling: str = "held",
                             frequency: float | None = None):
     """Build a seal material from a catalogue :class:`~sealsim.properties.elastomers.Elastomer`.
 
@@ -766,11 +766,16 @@ def material_from_elastomer(elastomer, model: str = "hyperelastic", *,
         as the catalogue), the catalogue Prony series and its WLF/Arrhenius shift.
     reference_temperature : float
         T_0 [K] at which the geometry is stress-free (installation temperature).
-    temperature_scaling : {"entropic", "modulus", "none"}
+    temperature_scaling : {"held", "entropic", "modulus", "none"}
         Hyperelastic only: C(T) = C(T_ref)·r(T) with r from
         :meth:`~sealsim.properties.elastomers.Elastomer.modulus_ratio` (the same law as the
         analytic contact estimate of :mod:`sealsim.pneumatic.contact_maps`).
-        ``"entropic"`` (default): r = T/T_ref, the equilibrium modulus of rubber elasticity,
+        ``"held"`` (default): r = E_h(T)/E(T_ref, f_test), the relaxed modulus of a seal held
+        for :data:`~sealsim.properties.elastomers.HELD_SEAL_TIME` from the master curve,
+        installed at ``reference_temperature``, relative to the test-frequency modulus the
+        constants hold for (sealsim's convention for an installed seal; the rotary lip force
+        uses the same modulus for its mounted stress).
+        ``"entropic"``: r = T/T_ref, the equilibrium modulus of rubber elasticity,
         G = n·k·T (Treloar, *The Physics of Rubber Elasticity*, 1975, ch. 4). A seal held at
         constant squeeze relaxes to it, which is also what Heipl & Murrenhoff assume for slow
         cooling above Tg; valid above ≈ T_g + 30 K, below that use ``model = "viscoelastic"``.
@@ -786,8 +791,11 @@ def material_from_elastomer(elastomer, model: str = "hyperelastic", *,
             raise InputError(f"material.temperature_scaling: {temperature_scaling!r} is not "
                              "allowed; choose 'entropic', 'modulus' or 'none'")
 
+        mounted = reference_temperature if temperature_scaling == "held" else None
+
         def stiffness(T):
-            return e.modulus_ratio(T, scaling=temperature_scaling, frequency=frequency)
+            return e.modulus_ratio(T, scaling=temperature_scaling, frequency=frequency,
+                                   mounting_temperature=mounted)
 
         def c10(T):
             return e.c10 * stiffness(T)

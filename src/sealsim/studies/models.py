@@ -127,7 +127,9 @@ def _rotary_steady(case, base_dir: Path) -> RunOutput:
 
     _one_duty_step(case)
     speed = float(case.duty.steps[0].speed)
-    return RunOutput({"speed_rpm": speed * 30.0 / math.pi, **steady_state(case, speed)})
+    result = steady_state(case, speed)
+    note = result.pop("lip_note")
+    return RunOutput({"speed_rpm": speed * 30.0 / math.pi, **result}, notes=(note,) if note else ())
 
 
 def _friction(case, base_dir: Path) -> RunOutput:
