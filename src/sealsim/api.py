@@ -280,9 +280,9 @@ def seal_friction(seal, velocity, pressure="0 bar", temperature="20 degC", law=N
     ...                           diameter="12 mm")
     >>> curve[["velocity_m_s", "friction_N", "normal_force_N", "film_um"]].round(2)
        velocity_m_s  friction_N  normal_force_N  film_um
-    0          0.01        5.30           49.24     0.67
-    1          0.10        0.92           49.24     1.48
-    2          1.00        2.26           49.24     4.62
+    0          0.01        1.66           38.02     0.93
+    1          0.10        0.47           38.02     2.61
+    2          1.00        1.47           38.02     8.25
     """
     from sealsim.friction.base import ContactInputs
     from sealsim.units import ZERO_CELSIUS_K
