@@ -86,13 +86,20 @@ def test_theta_on_the_contact_table_keeps_the_steady_curve_and_the_dwell(table):
     # in steady sliding the dynamic force equals the steady one
     z_ss = law.steady_state(v, inputs)
     assert law.force(z_ss, v, inputs) == pytest.approx(steady, rel=1e-9)
-    # at rest after a long dwell: the boundary level μ_b·F_N (asperities carry the load: at
-    # the table's slowest speed, 0.1 µm/s, 99.5 % of it; the Hertz profile's integral is F_N
-    # within 0.1 %) -> within 1 %
+    # at rest after a long dwell: μ_b times the asperity load at the table's slowest speed,
+    # 0.1 µm/s (exact), which is nearly the boundary level μ_b·F_N: with the held modulus
+    # (F_N 25 N, b 0.79 mm) the asperities carry 98.1 % of the load there (99.4 % with the
+    # stiffer entropic modulus: a gentler pressure gradient leaves a thicker squeeze film); the
+    # Hertz profile's integral is F_N within 0.1 % -> between 97 and 100 % of μ_b·F_N
     fn = inputs.normal_force
-    assert law.breakaway_force(np.zeros((1, 1)), inputs)[0] == pytest.approx(0.2 * fn, rel=0.01)
+    slowest, _, _ = table.evaluate(table.speed[0], 3e5, 293.15)
+    boundary = 0.2 * np.pi * 0.012 * float(slowest)
+    rested = law.breakaway_force(np.zeros((1, 1)), inputs)[0]
+    assert rested == pytest.approx(boundary, rel=1e-9)
+    assert 0.97 * 0.2 * fn < rested < 0.2 * fn
     # just after sliding (Θ = 1) it is lower by the dwell drop d = 0.5
-    assert law.breakaway_force(np.ones((1, 1)), inputs)[0] == pytest.approx(0.1 * fn, rel=0.01)
+    assert law.breakaway_force(np.ones((1, 1)), inputs)[0] == pytest.approx(0.5 * boundary,
+                                                                              rel=1e-9)
     # accelerating from rest (Θ below Θ_ss): more friction than steady
     assert law.force(np.zeros((1, 1)), [0.05], inputs)[0] > steady[3]
     # bristles: the same steady curve
