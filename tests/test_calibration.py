@@ -37,6 +37,17 @@ CONTACT = {"sliding_diameter": "25 mm", "temperature": "20 degC",
 P_BAR = 2.0
 
 
+def synthetic_contact():
+    """(F_N [N], b [m]) of the synthetic rig: the analytic contact map the case names (NBR
+    catalogue modulus 6·(C10 + C01)) at P_BAR and 20 °C."""
+    from sealsim.properties.elastomers import get_elastomer
+    nbr = get_elastomer("NBR")
+    cmap = AnalyticContactMap(0.025, 3.5e-3, 0.10, 6 * (nbr.c10 + nbr.c01),
+                              nbr.thermal_expansion)
+    fn, b = cmap.evaluate(P_BAR * 1e5, 293.15)
+    return float(fn), float(b)
+
+
 def synthetic_run(path: Path, speeds, seed: int, segment=6.0, ramp=0.2, noise=0.2,
                   offset=0.7):
     """A rig run made by the true law: back-and-forth strokes at each speed [m/s], friction
@@ -53,12 +64,7 @@ def synthetic_run(path: Path, speeds, seed: int, segment=6.0, ramp=0.2, noise=0.
     t = np.arange(0.0, knots_t[-1], dt)
     v = np.interp(t, knots_t, knots_v)
     x = np.concatenate([[0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * dt)])
-    # the same analytic contact map the case names (NBR catalogue modulus 6·(C10 + C01))
-    from sealsim.properties.elastomers import get_elastomer
-    nbr = get_elastomer("NBR")
-    cmap = AnalyticContactMap(0.025, 3.5e-3, 0.10, 6 * (nbr.c10 + nbr.c01),
-                              nbr.thermal_expansion)
-    fn, b = cmap.evaluate(P_BAR * 1e5, 293.15)
+    fn, b = synthetic_contact()
     law = Theta(**TRUTH)
     inputs = ContactInputs(normal_force=fn, contact_width=b)
     z = law.trajectory(law.initial_state(1), 0.5 * (v[1:] + v[:-1]), dt, inputs)
@@ -142,9 +148,11 @@ def test_one_speed_cannot_separate_the_two_friction_coefficients(tmp_path):
     assert any("f_a is not identifiable" in w for w in result.warnings)
     assert any("correlated with f_b" in r for r in result.reasons[0])
     # ... while the identifiable combination is right: the fitted model reproduces the level
+    # at the contact the run had (Θ_ss depends on F_N, so only there is the combination fixed)
     law = Theta(**{**TRUTH, "f_a": result.values[0], "f_b": result.values[1]})
     true_law = Theta(**TRUTH)
-    inputs = ContactInputs(normal_force=100.0, contact_width=1e-3)
+    fn, b = synthetic_contact()
+    inputs = ContactInputs(normal_force=fn, contact_width=b)
     assert law.steady_force([0.02], inputs) == pytest.approx(
         true_law.steady_force([0.02], inputs), rel=0.01)
 
