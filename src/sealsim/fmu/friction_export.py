@@ -144,6 +144,27 @@ class ContactTable:
     max_relative_error: dict
 
 
+#: half width of the cells around a kink of a contact map's F_N(T), as a fraction of the
+#: temperature range: 5x the finite-difference step of the node derivatives (1e-5 of the range,
+#: :func:`~sealsim.fmu.tables.smooth_table`), so the nodes beside a kink get its one-sided
+#: slopes and the rounded-off kink spans 2.5e-4 of the range (0.03 K over 125 K)
+KINK_CELL = 1e-4
+
+
+def _with_kinks(axis: np.ndarray, kinks) -> np.ndarray:
+    """``axis`` with nodes at each kink and at ± :data:`KINK_CELL` of the range beside it
+    (kinks closer than that to the ends are left out)."""
+    lo, hi = float(axis[0]), float(axis[-1])
+    half = KINK_CELL * (hi - lo)
+    extra = [k + s * half for k in kinks if lo + 2 * half < k < hi - 2 * half
+             for s in (-1.0, 0.0, 1.0)]
+    if not extra:
+        return axis
+    axis = np.union1d(axis, extra)
+    keep = np.concatenate([[True], np.diff(axis) > 0.5 * half])   # no near-duplicate nodes
+    return axis[keep]
+
+
 def _axis(lo: float, hi: float, points: int) -> tuple[np.ndarray, tuple[float, float]]:
     """Node coordinates over [lo, hi]; a single value gets a second node 1 unit above (the
     table is then constant along the axis and the FMU clips to the single value)."""
@@ -188,6 +209,8 @@ def contact_table(contact_map, temperature_points: int = 13,
         source = contact_map.describe()["source"]
     else:
         t_axis, t_range = _axis(tlo, thi, temperature_points)
+        if thi > tlo:   # F_N(T) of a held seal peaks at its mounting temperature
+            t_axis = _with_kinks(t_axis, getattr(contact_map, "temperature_kinks", ()))
         p_axis, p_range = _axis(plo, phi, pressure_points)
         clip_t, clip_p = t_range, p_range
         table = smooth_table(lambda t, p: sample(np.clip(t, *clip_t), np.clip(p, *clip_p)),
