@@ -147,7 +147,7 @@ class ContactTable:
 #: half width of the cells around a kink of a contact map's F_N(T), as a fraction of the
 #: temperature range: 5x the finite-difference step of the node derivatives (1e-5 of the range,
 #: :func:`~sealsim.fmu.tables.smooth_table`), so the nodes beside a kink get its one-sided
-#: slopes and the rounded-off kink spans 2.5e-4 of the range (0.03 K over 125 K)
+#: slopes and the rounded-off kink spans 2e-4 of the range (0.025 K over 125 K)
 KINK_CELL = 1e-4
 
 

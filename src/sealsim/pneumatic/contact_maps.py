@@ -403,9 +403,10 @@ class AnalyticContactMap:
     @property
     def temperature_kinks(self) -> tuple[float, ...]:
         """Temperatures [K] inside the range where dF_N/dT jumps: with the "held" modulus the
-        installation temperature T0 (a seal cooled after mounting keeps the stress it relaxed
-        to, one warmed relaxes further: :meth:`~sealsim.properties.elastomers.Elastomer.\
-held_modulus`), so F_N(T) peaks there; a table of the map puts nodes at them."""
+        installation temperature T0, where F_N(T) peaks (a seal cooled after mounting keeps
+        the stress it relaxed to, one warmed relaxes further, see
+        :meth:`~sealsim.properties.elastomers.Elastomer.held_modulus`); a table of the map
+        puts nodes at them."""
         lo, hi = self.temperature_range
         t0 = self.reference_temperature
         return (t0,) if self.temperature_scaling == "held" and lo < t0 < hi else ()
