@@ -263,9 +263,10 @@ def lip_force_table(seal, lip: LipSpec, installation_temperature: float = 293.15
     # the FE model's fingerprint too: a changed FE model must not read an old table
     from sealsim.properties.elastomers import compound_file_digest
 
-    # and the content of a compound file the seal is made of, not only its path
+    # and the content of a compound file the seal is made of, not only its path (every load
+    # path is made of the seal's one material)
     digest = hashlib.sha256((text + model_fingerprint()
-                             + compound_file_digest(case.material.elastomer))
+                             + compound_file_digest(paths[0][0].material.elastomer))
                             .encode("utf-8")).hexdigest()[:16]
     target = _cache_dir() / f"lip-{digest}.csv"
     if cache and target.is_file():
