@@ -574,9 +574,9 @@ def operating_notes(case: RotaryCase, elastomer, contact_temperatures_c, sliding
                     ) -> list[str]:
     """Where a run left the range of its models: a contact above the elastomer's service
     limit, films outside the measured range of lip seal films
-    (:func:`~sealsim.tribology.film.film_range_note`), an FE lip force used near T_g
-    (:func:`~sealsim.rotary.lip_fe.cold_lip_note`).  The notes of ``sealsim rotary run`` and of
-    :func:`sealsim.lip_seal_torque` (one set per call, over all its points).
+    (:func:`~sealsim.tribology.film.film_range_note`).  The notes of ``sealsim rotary run`` and
+    of :func:`sealsim.lip_seal_torque` (one set per call, over all its points); the lip's
+    mounting path has its own note (:func:`lip_note`).
 
     Parameters
     ----------
@@ -599,12 +599,6 @@ def operating_notes(case: RotaryCase, elastomer, contact_temperatures_c, sliding
         film = film_range_note(films.min() * 1e-6, films.max() * 1e-6)
         if film:
             notes.append(film)
-    if case.lip.force == "fe":
-        from sealsim.rotary.lip_fe import cold_lip_note
-
-        cold = cold_lip_note(contact.min() + ZERO_CELSIUS_K, elastomer.glass_transition)
-        if cold:
-            notes.append(cold)
     return notes
 
 
