@@ -204,3 +204,31 @@ profile_points = 181
         mu[d] = np.array(rows)
     assert mu[48] == pytest.approx(mu[12], rel=0.05)
     assert mu[192] == pytest.approx(mu[12], rel=0.05)
+
+
+def test_default_contact_set_notes_its_generic_values_once():
+    # seal_contact's mu_b and roughness are literature values, not fitted to the seal: a call
+    # with the default law says so once (and how to fit them); values of the user's own seal
+    # (both given) need no note
+    import warnings
+
+    import sealsim
+    from sealsim.errors import SealsimWarning
+
+    oring = {"cord_diameter": "2 mm", "squeeze": 0.12}
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        frame = sealsim.seal_friction(oring, ["0.01 m/s", "0.1 m/s"], "3 bar",
+                                      diameter="12 mm")
+    notes = frame.attrs["notes"]
+    assert len(notes) == 1
+    assert "'seal_contact'" in notes[0] and "boundary_friction = 0.2" in notes[0]
+    assert "roughness = 0.3 um" in notes[0] and "generic literature values" in notes[0]
+    assert "sealsim friction fit" in notes[0]
+    assert [str(w.message) for w in caught if issubclass(w.category, SealsimWarning)] == notes
+    own = {"law": "theta", "parameter_set": "seal_contact", "boundary_friction": 0.12,
+           "roughness": "0.2 um"}
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", SealsimWarning)
+        result = sealsim.seal_friction(oring, "0.1 m/s", "3 bar", diameter="12 mm", law=own)
+    assert result["notes"] == []
