@@ -232,3 +232,68 @@ def test_default_contact_set_notes_its_generic_values_once():
         warnings.simplefilter("error", SealsimWarning)
         result = sealsim.seal_friction(oring, "0.1 m/s", "3 bar", diameter="12 mm", law=own)
     assert result["notes"] == []
+
+
+def bench_case(tmp_path, velocity="50 mm/s", seal=True, **inputs):
+    """A velocity bench case (dict) with seal_contact on the 2 mm O-ring of a 12 mm rod."""
+    data = {"friction": {"law": "theta", "parameter_set": "seal_contact"},
+            "inputs": {"pressure_a": "3 bar", "temperature": "20 degC", **inputs},
+            "bench": {"mode": "velocity", "start": "steady", "duration": "0.2 s",
+                      "time_step": "1 ms",
+                      "velocity": {"kind": "constant", "level": velocity}}}
+    if seal:
+        data["seal"] = {"sliding_diameter": "12 mm",
+                        "map": {"analytic": {"cord_diameter": "2 mm", "squeeze": 0.12}}}
+    return data
+
+
+@pytest.mark.parametrize("velocity", ["50 mm/s", "-0.4 m/s", "0.1 mm/s"])
+def test_bench_with_a_seal_gives_the_seal_friction_in_steady_sliding(tmp_path, velocity):
+    # the bench names the seal as a pneumatic seal does; started steady at constant speed the
+    # Theta state stays at its steady value, so the bench force is the seal's steady friction:
+    # equal to sealsim.seal_friction at the same speed, pressure and temperature (the same
+    # contact map and friction table, read the same way) to rounding
+    import warnings
+
+    import sealsim
+    from sealsim.friction.case import build_law, load_friction_cases, run_friction_case
+    from sealsim.pneumatic.bench import bench_inputs
+
+    case = load_friction_cases(bench_case(tmp_path, velocity))["base"]
+    law = build_law(case)
+    inputs, seal = bench_inputs(case, law, tmp_path)
+    result, _ = run_friction_case(case, law, inputs=inputs)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", sealsim.errors.SealsimWarning)
+        point = sealsim.seal_friction({"cord_diameter": "2 mm", "squeeze": 0.12}, velocity,
+                                      "3 bar", "20 degC", diameter="12 mm")
+    assert seal["normal_force_N"] == pytest.approx(point["normal_force_N"], rel=1e-12)
+    assert result.force[-1] == pytest.approx(point["friction_N"], rel=1e-9)
+    assert result.force[0] == pytest.approx(point["friction_N"], rel=1e-9)
+
+
+def test_contact_law_on_a_bench_without_a_seal_is_refused(tmp_path):
+    from sealsim.errors import InputError
+    from sealsim.runs.friction import run_case_file
+
+    import tomli_w
+
+    path = tmp_path / "no_seal.toml"
+    path.write_text(tomli_w.dumps(bench_case(tmp_path, seal=False, normal_force="40 N",
+                                             contact_width="0.7 mm")))
+    with pytest.raises(InputError) as err:
+        run_case_file(path, tmp_path / "out")
+    text = str(err.value)
+    assert "steady = 'contact'" in text and "give [seal] with sliding_diameter" in text
+    assert "map = {analytic" in text and "steady = 'lumped'" in text
+    assert not (tmp_path / "out").exists()
+    # a seal and a normal force at once: the seal's contact gives F_N, the case may not
+    path.write_text(tomli_w.dumps(bench_case(tmp_path, normal_force="40 N")))
+    with pytest.raises(InputError, match="inputs.normal_force: the bench has a \\[seal\\]"):
+        run_case_file(path, tmp_path / "out")
+    # a map table that is none of the three sources names the field
+    data = bench_case(tmp_path)
+    data["seal"]["map"] = {"analytic": {"cord_diameter": "2 mm"}}
+    path.write_text(tomli_w.dumps(data))
+    with pytest.raises(InputError, match="seal.map: .*squeeze"):
+        run_case_file(path, tmp_path / "out")
