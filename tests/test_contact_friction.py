@@ -157,20 +157,30 @@ def test_cold_seal_stays_below_a_friction_coefficient_of_one():
 
 @pytest.mark.slow
 def test_fe_friction_per_unit_load_does_not_depend_on_the_diameter(tmp_path):
-    # the same 2 mm cord at 12 % squeeze on Ø12, Ø48 and Ø192 rods, FE maps (coarse mesh):
-    # the friction per unit circumference follows the FE contact load per unit circumference
-    # (a small ring is stiffer in hoop compression: Ø12 carries +14 % per mm), the friction
-    # per unit load is the same within 5 % (the old lumped law: 0.44 vs 0.20)
+    # the same 2 mm cord at 12 % squeeze on Ø12, Ø48 and Ø192 rods, FE maps (coarse mesh).
+    # What the model makes of the diameter, measured (docs/physics/contact_friction.rst):
+    # * load: the ring's section pushes with the same force per radian whatever D, spread
+    #   over the rod's arc D/2 instead of the section's centroid arc (D + d)/2, so the
+    #   squeeze load per unit rod circumference grows like (D + d)/D (Ø12: +15.5 % against
+    #   Ø192; FE +14.3 %); the pressure adds the same per unit rod circumference
+    # * friction follows that load: per unit load the outstroke friction (inlet on the sealed
+    #   side) is the same within 5 % for all diameters in the boundary and mixed branches,
+    #   per unit circumference only where D/d is large (Ø48 vs Ø192 within 4 %); in the full
+    #   film (1 m/s) the viscous shear per unit circumference grows like b·√w ∝ √F' (Hertz)
+    # * the instroke flank's w_max is not resolved by the 15 µm profile (secant width/64 ≈
+    #   12 µm at the contact edge): it scatters ±25 % between the maps and is not asserted
     from sealsim.pneumatic.case import map_elastomer
     from sealsim.pneumatic.contact_maps import build_or_load_fe_map
     from sealsim.pneumatic.friction_tables import sliding_diameter
 
-    mu = {}
+    cord = 2.0
+    u = np.array([0.01, 0.1, 1.0])          # outstroke
+    load, mu, per_length = {}, {}, {}
     for d in (12, 48, 192):
         case = tmp_path / f"rod_{d}.toml"
         case.write_text(f"""title = "rod seal on a {d} mm rod"
 [seal]
-cord_diameter = "2 mm"
+cord_diameter = "{cord} mm"
 inner_diameter = "{d} mm"
 [gland]
 arrangement = "rod"
@@ -196,14 +206,29 @@ profile_points = 181
                                    cache_dir=tmp_path / "cache")
         diameter = sliding_diameter(fe)
         assert diameter == pytest.approx(d * 1e-3, rel=1e-6)
-        u = np.array([0.01, 0.1, 1.0, -0.01])
-        rows = []
+        rows_mu, rows_length, rows_load = [], [], []
         for dp in (0.0, 6e5):
-            fn, _ = fe.evaluate(dp, 293.15)
-            rows.append(table.steady_force(u, dp, 293.15, diameter, 0.2) / fn)
-        mu[d] = np.array(rows)
-    assert mu[48] == pytest.approx(mu[12], rel=0.05)
-    assert mu[192] == pytest.approx(mu[12], rel=0.05)
+            fn = float(fe.evaluate(dp, 293.15)[0])
+            force = table.steady_force(u, dp, 293.15, diameter, 0.2)
+            rows_load.append(fn / (np.pi * diameter))
+            rows_mu.append(force / fn)
+            rows_length.append(force / (np.pi * diameter))
+        load[d], mu[d], per_length[d] = (np.array(x) for x in (rows_load, rows_mu, rows_length))
+    for d in (12, 48):
+        # squeeze load per unit rod circumference ∝ (D + d)/D within 2 % (the rest: hoop
+        # stress and mesh); the pressure's share per unit rod circumference within 5 %
+        centroid = ((d + cord) / d) / ((192 + cord) / 192)
+        assert load[d][0] / load[192][0] == pytest.approx(centroid, rel=0.02)
+        assert load[d][1] - load[d][0] == pytest.approx(load[192][1] - load[192][0], rel=0.05)
+        # boundary and mixed branches: per unit load the same within 5 %
+        assert mu[d][:, :2] == pytest.approx(mu[192][:, :2], rel=0.05)
+        # full film: per unit circumference ∝ √(load per unit circumference) within 5 %
+        assert per_length[d][:, 2] / per_length[192][:, 2] == pytest.approx(
+            np.sqrt(load[d] / load[192]), rel=0.05)
+    # per unit circumference where D/d is large (24 and 96): within 5 %
+    assert per_length[48] == pytest.approx(per_length[192], rel=0.05)
+    # ... and not for Ø12 (D/d = 6) in the boundary branch: its load is 10-15 % higher
+    assert np.all(per_length[12][:, 0] / per_length[192][:, 0] > 1.08)
 
 
 def test_default_contact_set_notes_its_generic_values_once():
