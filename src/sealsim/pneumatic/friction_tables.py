@@ -19,7 +19,10 @@ is not part of it).
 
 **Direction.**  The table's "+" direction is the counter surface sliding from the pressurised
 side of the seal to the other (+z of an FE profile: the upstream side is z < 0): a rod seal's
-outstroke.  :func:`table_orientation` maps the piston velocity of a cylinder onto it.
+outstroke.  :func:`table_orientation` maps the piston velocity of a cylinder onto it.  The
+analytic O-ring estimate's Hertz profile is symmetric: its table holds one direction for both
+(the same film both ways, so no net fluid transport per stroke); the directions differ only
+on an FE map's profile.
 
 **Lubricant.**  Pneumatic seals run in grease; the film is that of its base oil (ASTM D341
 through the datasheet's ν40, ν100) times ``thickener_factor``.  Grease films measured in EHL
