@@ -255,14 +255,15 @@ def test_fitted_parameters_load_in_friction_and_pneumatic_cases(example_run):
     report = json.loads((out / "report.json").read_text())
     assert law_table["boundary_friction"] == pytest.approx(
         report["parameters"]["boundary_friction"]["value"])
-    # a friction bench case knows no seal geometry: the law on the seal's contact is refused
-    # there with a clear message (it needs the seal's contact map)
+    # a friction bench case without a [seal]: the law on the seal's contact is refused there
+    # with a clear message (it needs the seal's contact map; tests/test_contact_friction.py
+    # runs it on a bench with a seal)
     bench = {"friction": law_table, "inputs": {"normal_force": "100 N",
                                                "contact_width": "1 mm"},
              "bench": {"mode": "velocity", "duration": "1 s", "time_step": "1 ms",
                        "velocity": {"kind": "constant", "level": "10 mm/s"}}}
     (case,) = load_friction_cases(bench).values()
-    with pytest.raises(InputError, match="contact_table"):
+    with pytest.raises(InputError, match="steady = 'contact'.*give \\[seal\\]"):
         run_friction_case(case)
     # a pneumatic seal with the fitted law: the case validates and its seal gets the law
     data = tomllib.loads((ROOT / "examples" / "pneumatic" / "friction_rig.toml").read_text())

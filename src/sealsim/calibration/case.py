@@ -188,12 +188,20 @@ class FrictionFitCase(CaseModel):
     def _check(self):
         check_measurements(self.measurements)
         fields = type(self.friction).model_fields
+        unused = getattr(self.friction, "unused_fields", tuple)()
         pnames = [p.name for p in self.fit.parameters]
         for p in self.fit.parameters:
             if p.name in ("law", "parameter_set") or p.name not in fields:
                 allowed = sorted(f for f in fields if f not in ("law", "parameter_set"))
                 raise ValueError(f"fit parameter {p.name!r} is not a parameter of the "
                                  f"{self.friction.law} law; choose from {allowed}")
+            if p.name in unused:
+                allowed = sorted(f for f in fields if f not in (
+                    "law", "parameter_set", "steady", *unused))
+                raise ValueError(
+                    f"fit parameter {p.name!r} is not used by the {self.friction.law} law with "
+                    f"steady = {self.friction.steady!r} (unused: {', '.join(unused)}), so the "
+                    f"fit could not determine it; fit one of {allowed}")
             if pnames.count(p.name) > 1:
                 raise ValueError(f"fit parameter {p.name!r} is listed twice")
         for target, source in self.fit.tied.items():

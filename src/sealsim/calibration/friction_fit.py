@@ -22,8 +22,10 @@ Jacobian (:func:`sealsim.calibration.statistics.parameter_statistics`).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import warnings
+from collections import OrderedDict
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -43,10 +45,18 @@ from sealsim.measurements import (
     sliding_phases,
     smooth_derivative,
 )
+from sealsim.pneumatic.friction_tables import (
+    LAW_TABLE_FIELDS,
+    ContactTribology,
+    build_friction_table,
+)
 from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["FitResult", "PreparedRun", "fit_friction", "friction_from_rod_force", "predict_run",
-           "prepare_run", "run_metrics"]
+           "prepare_run", "run_metrics", "with_law_table"]
+
+#: friction tables of the tribology values a fit tried last, kept per contact map (in memory)
+_FIT_TABLES = 16
 
 
 @dataclass
@@ -69,6 +79,8 @@ class PreparedRun:
     contact_width: np.ndarray | None = None
     samples: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
     contact_table: Any = None          # steady friction table from the seal's contact
+    contact_map: Any = None            # the map the table was built from
+    tribology: Any = None              # ... and its ContactTribology
     sliding_diameter: float | None = None
     orientation: float = 1.0
     pressure_known: bool = True    # False: no pressure given and none needed (zeros)
@@ -167,11 +179,13 @@ def prepare_run(case: FrictionFitCase, spec: MeasurementModel, contact_map=None,
         fn, b = contact_map.evaluate(np.clip(dp, lo, hi), temperature)
         run.normal_force = np.asarray(fn, dtype=float)
         run.contact_width = np.asarray(b, dtype=float)
-        from sealsim.pneumatic.case import seal_friction_table
+        from sealsim.pneumatic.case import map_elastomer, seal_friction_table
 
         law = make_law(case.friction)
         run.contact_table = seal_friction_table(law, contact_map, "contact.map")
         if run.contact_table is not None:
+            run.contact_map = contact_map
+            run.tribology = ContactTribology.from_law(law, map_elastomer(contact_map))
             run.sliding_diameter = case.contact.sliding_diameter
             run.orientation = (1.0 if case.contact.positive_velocity == "away_from_pressure"
                                else -1.0)
@@ -207,6 +221,37 @@ def friction_from_rod_force(pressure, rod_force, bore: float) -> np.ndarray:
     """
     area = math.pi * bore ** 2 / 4.0
     return np.asarray(pressure, dtype=float) * area - np.asarray(rod_force, dtype=float)
+
+
+def with_law_table(law: FrictionLaw, runs: list[PreparedRun]) -> list[PreparedRun]:
+    """The runs with the friction table of ``law``'s own tribology.
+
+    A run's table from the seal's contact is built with the starting values of the fields
+    :data:`~sealsim.pneumatic.friction_tables.LAW_TABLE_FIELDS` (roughness, film_factor,
+    thickener_factor, asperity_wavelength, the base oil, ...).  A fit that varies one of them
+    needs the table of every value it tries: it is built in memory from the run's contact map
+    (0.05-0.5 s for one map; never written to the map cache) and the last few are kept, so the
+    finite-difference steps and the final evaluation reuse them.  Runs whose table already
+    matches, or that have none, are returned as they are.
+    """
+    out = []
+    for run in runs:
+        if run.contact_map is None or not getattr(law, "contact", False):
+            out.append(run)
+            continue
+        tribology = ContactTribology.from_law(law, run.tribology.elastomer)
+        if tribology == run.tribology:
+            out.append(run)
+            continue
+        memo = run.contact_map.__dict__.setdefault("_fit_friction_tables", OrderedDict())
+        table = memo.pop(tribology, None)
+        if table is None:
+            table = build_friction_table(run.contact_map, tribology)
+        memo[tribology] = table
+        while len(memo) > _FIT_TABLES:
+            memo.popitem(last=False)
+        out.append(dataclasses.replace(run, contact_table=table, tribology=tribology))
+    return out
 
 
 def _needed_conditions(case: FrictionFitCase, contact_map) -> dict[str, str]:
@@ -352,6 +397,8 @@ def fit_friction(case: FrictionFitCase, runs: list[PreparedRun], progress=None) 
         stage_of.append(p.stage)
     fit_runs = [r for r in runs if r.spec.role == "fit"]
     tied = case.fit.tied
+    # a varied field the friction table is built with needs the table of each value it takes
+    retable = bool(set(LAW_TABLE_FIELDS) & (set(names) | set(tied)))
 
     def with_ties(vals):
         return {**vals, **{target: vals[source] for target, source in tied.items()}}
@@ -382,7 +429,7 @@ def fit_friction(case: FrictionFitCase, runs: list[PreparedRun], progress=None) 
             except InputError:
                 return np.full(n_res, 1e6)
             parts = []
-            for r in fit_runs:
+            for r in (with_law_table(law, fit_runs) if retable else fit_runs):
                 if stage == "steady":
                     parts.append(measured_phase_forces(r) - steady_phase_forces(law, r))
                 else:

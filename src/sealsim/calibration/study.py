@@ -30,6 +30,7 @@ from sealsim.calibration.friction_fit import (
     predict_run,
     prepare_run,
     run_metrics,
+    with_law_table,
 )
 from sealsim.calibration.statistics import parameter_report
 from sealsim.cases import load_toml, validate_case
@@ -115,7 +116,8 @@ def friction_fit_study(case: FrictionFitCase, base_dir: str | Path,
     runs = [prepare_run(case, spec, cmap, base) for spec in case.measurements]
     result = fit_friction(case, runs, progress)
     law = make_law(result.params)
-    predictions = {r.name: predict_run(law, r) for r in runs}
+    # fitted roughness, film factor, ...: the friction table of the fitted values
+    predictions = {r.name: predict_run(law, r) for r in with_law_table(law, runs)}
     report = {"parameters": parameter_report(result, result.params.model_dump(mode="json")),
               "measurements": {r.name: run_metrics(r, predictions[r.name]) for r in runs}}
     # the starting parameters' prediction: how far the law is off before any fitting

@@ -437,6 +437,13 @@ def theta_viscous_coefficient(temperature, gamma, reference_temperature, walther
 # --------------------------------------------------------------------------------------------
 # Parameters and law object
 # --------------------------------------------------------------------------------------------
+#: fields only the steady curve from the seal's contact uses (``steady = "contact"``)
+CONTACT_ONLY_FIELDS = ("boundary_friction", "dwell_drop", "roughness", "film_factor",
+                       "lubricant_density", "thickener_factor", "asperity_wavelength")
+#: fields only the lumped steady curve uses (``steady = "lumped"``)
+LUMPED_ONLY_FIELDS = ("f_a", "f_b", "gamma")
+
+
 class ThetaParameters(LawParameters):
     """Parameters of the Θ law (Heipl & Murrenhoff Eq. 4/5 as reconstructed, see module
     docstring)."""
@@ -477,6 +484,17 @@ class ThetaParameters(LawParameters):
         "contact: grease film viscosity / base-oil viscosity"))
     asperity_wavelength: Q("length", gt=0) = Field(50e-6, description=(
         "contact: roughness wavelength of the counter surface (rubber frequency u/lambda)"))
+
+    def unused_fields(self) -> tuple[str, ...]:
+        """Fields the chosen steady curve does not use: the contact's (μ_b, dwell drop and the
+        friction-table fields) with ``steady = "lumped"``, f_a, f_b and γ with ``"contact"``.
+
+        >>> ThetaParameters(law="theta", parameter_set="seal_contact").unused_fields()
+        ('f_a', 'f_b', 'gamma')
+        """
+        if self.steady == "contact":
+            return LUMPED_ONLY_FIELDS
+        return CONTACT_ONLY_FIELDS
 
     @model_validator(mode="after")
     def _check(self):

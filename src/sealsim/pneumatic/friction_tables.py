@@ -19,7 +19,10 @@ is not part of it).
 
 **Direction.**  The table's "+" direction is the counter surface sliding from the pressurised
 side of the seal to the other (+z of an FE profile: the upstream side is z < 0): a rod seal's
-outstroke.  :func:`table_orientation` maps the piston velocity of a cylinder onto it.
+outstroke.  :func:`table_orientation` maps the piston velocity of a cylinder onto it.  The
+analytic O-ring estimate's Hertz profile is symmetric: its table holds one direction for both
+(the same film both ways, so no net fluid transport per stroke); the directions differ only
+on an FE map's profile.
 
 **Lubricant.**  Pneumatic seals run in grease; the film is that of its base oil (ASTM D341
 through the datasheet's ν40, ν100) times ``thickener_factor``.  Grease films measured in EHL
@@ -46,8 +49,9 @@ from sealsim.tribology.contact import DEFAULT_ROUGHNESS_DENSITY, DEFAULT_ROUGHNE
 from sealsim.tribology.mixed_lubrication import reciprocating_friction
 from sealsim.tribology.rubber_friction import DEFAULT_ASPERITY_WAVELENGTH
 
-__all__ = ["ContactTribology", "TABLE_SPEEDS", "build_friction_table", "contact_profiles",
-           "friction_table_for", "lubricant_viscosity", "sliding_diameter", "table_orientation"]
+__all__ = ["ContactTribology", "LAW_TABLE_FIELDS", "TABLE_SPEEDS", "build_friction_table",
+           "contact_profiles", "friction_table_for", "lubricant_viscosity", "sliding_diameter",
+           "table_orientation"]
 
 #: Version of the table builder: part of the cache key (a change of the physics gives new files)
 TABLE_VERSION = 2
@@ -58,6 +62,10 @@ TABLE_SPEEDS = np.logspace(-7.0, 1.0, 49)
 TEMPERATURE_STEP = 5.0
 #: Points of a Hertz profile across its contact (analytic map)
 _HERTZ_POINTS = 257
+#: Fields of the Θ law (``steady = "contact"``) a friction table is built with: another value of
+#: one of them is another table (μ_b, the dwell drop and the Θ dynamics apply when it is read)
+LAW_TABLE_FIELDS = ("roughness", "film_factor", "base_oil_nu40", "base_oil_nu100",
+                    "lubricant_density", "thickener_factor", "asperity_wavelength")
 
 
 @dataclass(frozen=True)
@@ -98,12 +106,9 @@ class ContactTribology:
 
     @classmethod
     def from_law(cls, law, elastomer: str = "NBR") -> ContactTribology:
-        """The tribology fields of a Θ law in ``steady = "contact"`` mode."""
-        p = law.params
-        return cls(roughness=p.roughness, film_factor=p.film_factor,
-                   base_oil_nu40=p.base_oil_nu40, base_oil_nu100=p.base_oil_nu100,
-                   lubricant_density=p.lubricant_density, thickener_factor=p.thickener_factor,
-                   asperity_wavelength=p.asperity_wavelength, elastomer=elastomer)
+        """The tribology fields (:data:`LAW_TABLE_FIELDS`) of a Θ law in ``steady =
+        "contact"`` mode."""
+        return cls(**{f: getattr(law.params, f) for f in LAW_TABLE_FIELDS}, elastomer=elastomer)
 
 
 def lubricant_viscosity(temperature, tribology: ContactTribology):
