@@ -62,7 +62,7 @@ regularisation, not a law: exact for a flank that is straight over Δ (a triangl
 edge (the film then depends on Δ only as Δ^(1/4)).  What it buys is a w_max that does not
 depend on the mesh or on where the edge falls between two samples of an FE profile: on the FE
 maps of a 2 mm O-ring on 12, 48 and 192 mm rods (181 profile points over 2.7 mm, 15 µm apart)
-it lies within 9 % of its fine-mesh value on the medium mesh and within 18 % on the coarse one
+it lies within 9 % of its fine-mesh value on the medium mesh and within 17 % on the coarse one
 (one coarse contact edge that itself moves, 29 %), where the former secant of width/64 --
 shorter than the sample spacing -- scattered between 0.46 and 1.66 times the fine-mesh value
 (``tests/test_contact_friction.py``).  Δ is longer than the physical inlet: for the O-ring
