@@ -47,8 +47,8 @@ is unbounded, so the inverse theory needs the gradient over a finite length Δ. 
 contact that length is set by the elasto-hydrodynamics of the inlet: the film pressure leaves
 the dry profile where the gap the rubber opens just outside the contact edge,
 g(s) ≈ (4√2/3)·(p0·a/E*)·(s/a)^(3/2) for a Hertz line contact (Johnson, *Contact Mechanics*,
-1985, ch. 4, line contact), is comparable with the film, over a length ℓ ≈ a·(3·h·E*/(4√2·p0·a))^(2/3)
-that shrinks with the film (this is why a lubricated Hertzian contact of a soft solid has
+1985, ch. 4, line contact), is comparable with the film, over a length
+ℓ ≈ a·(3·h·E*/(4√2·p0·a))^(2/3) that shrinks with the film (this is why a lubricated Hertzian contact of a soft solid has
 h ∝ u^(3/5), not u^(1/2): Snoeijer, Eggers & Venner, Phys. Fluids 25 (2013) 101705).
 sealsim does not resolve that inlet: it measures w_max as the largest *secant* slope of the
 inlet flank over a fixed length (:func:`max_inlet_gradient`),
