@@ -147,9 +147,10 @@ def test_cold_seal_friction_grows_like_the_root_of_viscosity_and_speed():
     # the file).  The grease's base oil is 76x thicker than at 20 degC, but the inverse-
     # hydrodynamic film thickens with it (h ∝ √(η·u)), so the viscous friction grows like
     # √(η·u), not like η (the lumped law gave F/F_N = 11-27 here).  Issue 23's target
-    # F/F_N < 1 over 0-6 bar and 0.01-1 m/s holds except at 0 bar and 1 m/s, where the held
-    # (relaxed) modulus leaves the contact a low load (16 N): F/F_N = 1.16 there
-    # (docs/physics/contact_friction.rst, "A cold seal")
+    # F/F_N < 1 over 0-6 bar and 0.01-1 m/s holds: at most 0.85, at 0 bar and 1 m/s, where the
+    # held (relaxed) modulus leaves the contact a low load (16 N); with the former inlet
+    # secant of width/64 (a steeper w_max at the Hertz edge, a √2 thinner film) it was 1.16
+    # there (docs/physics/contact_friction.rst, "A cold seal")
     import sealsim
     from sealsim.errors import InputError
 
@@ -162,12 +163,12 @@ def test_cold_seal_friction_grows_like_the_root_of_viscosity_and_speed():
                                   np.tile([0.0, 3.0, 6.0], 3) * ureg("bar"),
                                   "-20 degC", diameter="12 mm")
     mu = (frame["friction_N"] / frame["normal_force_N"]).to_numpy().reshape(3, 3)
-    # full film everywhere (h* 3-68 µm against σ = 0.3 µm): friction is all viscous
+    # full film everywhere (h* 5-74 µm against σ = 0.3 µm): friction is all viscous
     assert frame["asperity_share"].max() < 1e-6
     # hydrodynamic: F/F_N ∝ √u at each pressure, 0.01 -> 1 m/s a factor 10 (within 2 %)
     assert mu[2] / mu[0] == pytest.approx(np.full(3, 10.0), rel=0.02)
-    # below 1 m/s, and at 1 m/s from 3 bar on, F/F_N < 1 (issue 23's bound)
-    assert mu[:2].max() < 1.0 and mu[2, 1:].max() < 1.0
+    # F/F_N < 1 everywhere (issue 23's bound; measured at most 0.85)
+    assert mu.max() < 1.0
     assert mu.max() > 0.1                  # the viscous part is real: not a vanishing number
     warm = sealsim.seal_friction(lt_oring, "1 m/s", "0 bar", "20 degC", diameter="12 mm")
     eta_ratio = float(lubricant_viscosity(253.15, TRIBOLOGY) / lubricant_viscosity(293.15,
@@ -178,32 +179,9 @@ def test_cold_seal_friction_grows_like_the_root_of_viscosity_and_speed():
     assert 0.5 * np.sqrt(eta_ratio) < ratio < 2.0 * np.sqrt(eta_ratio)
 
 
-@pytest.mark.slow
-def test_fe_friction_per_unit_load_does_not_depend_on_the_diameter(tmp_path):
-    # the same 2 mm cord at 12 % squeeze on Ø12, Ø48 and Ø192 rods, FE maps (coarse mesh).
-    # What the model makes of the diameter, measured (docs/physics/contact_friction.rst):
-    # * load: the ring's section pushes with the same force per radian whatever D, spread
-    #   over the rod's arc D/2 instead of the section's centroid arc (D + d)/2, so the
-    #   squeeze load per unit rod circumference grows like (D + d)/D (Ø12: +15.5 % against
-    #   Ø192; FE +14.3 %); the pressure adds the same per unit rod circumference
-    # * friction follows that load: per unit load the outstroke friction (inlet on the sealed
-    #   side) is the same within 5 % for all diameters in the boundary and mixed branches,
-    #   per unit circumference only where D/d is large (Ø48 vs Ø192 within 4 %); in the full
-    #   film (1 m/s) the viscous shear per unit circumference grows like b·√w ∝ √F' (Hertz)
-    # * the instroke flank's w_max is not resolved by the 15 µm profile (secant width/64 ≈
-    #   12 µm at the contact edge): it scatters ±25 % between the maps and is not asserted
-    from sealsim.pneumatic.case import map_elastomer
-    from sealsim.pneumatic.contact_maps import build_or_load_fe_map
-    from sealsim.pneumatic.friction_tables import sliding_diameter
-
-    cord = 2.0
-    u = np.array([0.01, 0.1, 1.0])          # outstroke
-    load, mu, per_length = {}, {}, {}
-    for d in (12, 48, 192):
-        case = tmp_path / f"rod_{d}.toml"
-        case.write_text(f"""title = "rod seal on a {d} mm rod"
+ROD_SEAL_CASE = """title = "2 mm O-ring on a {d} mm rod, {level} mesh"
 [seal]
-cord_diameter = "{cord} mm"
+cord_diameter = "2 mm"
 inner_diameter = "{d} mm"
 [gland]
 arrangement = "rod"
@@ -212,7 +190,7 @@ groove_width = "2.7 mm"
 [material]
 elastomer = "NBR"
 [mesh]
-level = "coarse"
+level = "{level}"
 [load]
 installation_temperature = "20 degC"
 squeeze = [0.12]
@@ -223,35 +201,136 @@ squeeze_increments = 4
 temperature_increments = 1
 workers = 1
 profile_points = 181
-""")
-        fe = build_or_load_fe_map(case, cache_dir=tmp_path / "cache")
-        table = friction_table_for(fe, ContactTribology(elastomer=map_elastomer(fe)),
-                                   cache_dir=tmp_path / "cache")
+"""
+
+
+@pytest.fixture(scope="module")
+def rod_seal(tmp_path_factory):
+    """``rod_seal(d, level) -> (FE map, friction table)``: the same 2 mm cord at 12 % squeeze
+    on a d mm rod (ring inner diameter = rod diameter), FE map at a mesh level, 20-30 degC,
+    0 and 6 bar, contact pressure profile every 15 µm; built once per module."""
+    from sealsim.pneumatic.case import map_elastomer
+    from sealsim.pneumatic.contact_maps import build_or_load_fe_map
+
+    folder = tmp_path_factory.mktemp("rod_seal")
+    built = {}
+
+    def get(diameter, level):
+        if (diameter, level) not in built:
+            case = folder / f"rod_{diameter}_{level}.toml"
+            case.write_text(ROD_SEAL_CASE.format(d=diameter, level=level))
+            fe = build_or_load_fe_map(case, cache_dir=folder / "cache")
+            table = friction_table_for(fe, ContactTribology(elastomer=map_elastomer(fe)),
+                                       cache_dir=folder / "cache")
+            built[diameter, level] = fe, table
+        return built[diameter, level]
+    return get
+
+
+def _inlet_gradients(fe, pressure, resolution=None):
+    """w_max [Pa/m] of a map's profile at 20 degC, outstroke and instroke, as the friction
+    table sees it (the film's pressure rises from the sealed pressure on that side)."""
+    from sealsim.tribology.inverse_hydrodynamics import max_inlet_gradient
+    from sealsim.tribology.mixed_lubrication import contact_zone_slices
+
+    temps, pressures, profile = contact_profiles(fe)
+    z, p = profile(int(np.argmin(np.abs(temps - 293.15))),
+                   int(np.argmin(np.abs(pressures - pressure))))
+    zone = contact_zone_slices(p)[0]
+    z, p = z[zone], p[zone]
+    peak = int(np.argmax(p))
+    p = np.concatenate([np.maximum(p[:peak], min(pressure, p[peak])), p[peak:]])
+    width = z[-1] - z[0]
+    return np.array([max_inlet_gradient(z, p, s, None if resolution is None
+                                        else resolution * width) for s in (1, -1)])
+
+
+@pytest.mark.slow
+def test_inlet_gradient_and_friction_converge_with_the_mesh(rod_seal):
+    # w_max is the steepest secant over Δ = max(width/16, two profile spacings) (a documented
+    # regularisation of the Hertz-like square-root edge, whose slope is unbounded): the same
+    # seal (2 mm cord on a 12 mm rod) on the coarse, medium and fine FE mesh, 0 and 6 bar,
+    # both strokes.  Measured: medium within 6 % of fine (w_max) and 3 % (friction per unit
+    # load); coarse within 18 % and 14 % (its contact edge itself moves: at 6 bar the coarse
+    # contact of a 192 mm ring ends 100 µm short of the finer meshes')
+    from sealsim.pneumatic.friction_tables import sliding_diameter
+
+    u = np.array([0.01, 0.1, 1.0])
+    w, mu = {}, {}
+    for level in ("coarse", "medium", "fine"):
+        fe, table = rod_seal(12, level)
+        diameter = sliding_diameter(fe)
+        for dp in (0.0, 6e5):
+            fn = float(fe.evaluate(dp, 293.15)[0])
+            w[level, dp] = _inlet_gradients(fe, dp)
+            mu[level, dp] = np.concatenate(
+                [sign * table.steady_force(sign * u, dp, 293.15, diameter, 0.2) / fn
+                 for sign in (1, -1)])
+    for dp in (0.0, 6e5):
+        assert np.all((w["fine", dp] > 5e9) & (w["fine", dp] < 20e9))   # 9-13 GPa/m
+        # medium vs fine: w_max within 10 %, friction per unit load within 5 %
+        assert w["medium", dp] == pytest.approx(w["fine", dp], rel=0.10)
+        assert mu["medium", dp] == pytest.approx(mu["fine", dp], rel=0.05)
+        # coarse vs fine: within 20 % and 15 %
+        assert w["coarse", dp] == pytest.approx(w["fine", dp], rel=0.20)
+        assert mu["coarse", dp] == pytest.approx(mu["fine", dp], rel=0.15)
+    # the former secant of width/64 (12 µm, shorter than the 15 µm sample spacing) measures
+    # where the edge falls between two samples: on the same maps it misses the medium-mesh
+    # tolerance (0 bar outstroke: 1.66x the fine mesh's)
+    old = {level: _inlet_gradients(rod_seal(12, level)[0], 0.0, 1 / 64)
+           for level in ("medium", "fine")}
+    assert np.max(np.abs(old["medium"] / old["fine"] - 1)) > 0.3
+
+
+@pytest.mark.slow
+def test_fe_friction_per_unit_load_does_not_depend_on_the_diameter(rod_seal):
+    # the same 2 mm cord at 12 % squeeze on Ø12, Ø48 and Ø192 rods, FE maps (medium mesh:
+    # the coarse mesh's own contact-edge error, up to 14 % in friction, would hide 5 %).
+    # What the model makes of the diameter, measured (docs/physics/contact_friction.rst):
+    # * load: the ring's section pushes with the same force per radian whatever D, spread
+    #   over the rod's arc D/2 instead of the section's centroid arc (D + d)/2, so the
+    #   squeeze load per unit rod circumference grows like (D + d)/D (Ø12: +15.5 % against
+    #   Ø192; FE +14.6 %); the pressure adds the same per unit rod circumference
+    # * friction follows that load.  Full film (0.1 and 1 m/s at 20 degC): the viscous shear
+    #   per unit circumference grows like b·√w ∝ √F' (Hertz); mixed (0.01 m/s, the asperities
+    #   carry a share that grows with the contact pressure): per unit load within 8 %
+    # * both strokes: the inlet gradient is mesh-converged (test above)
+    from sealsim.pneumatic.friction_tables import sliding_diameter
+
+    cord = 2.0
+    u = np.array([0.01, 0.1, 1.0])
+    load, mu, per_length = {}, {}, {}
+    for d in (12, 48, 192):
+        fe, table = rod_seal(d, "medium")
         diameter = sliding_diameter(fe)
         assert diameter == pytest.approx(d * 1e-3, rel=1e-6)
         rows_mu, rows_length, rows_load = [], [], []
         for dp in (0.0, 6e5):
             fn = float(fe.evaluate(dp, 293.15)[0])
-            force = table.steady_force(u, dp, 293.15, diameter, 0.2)
+            # outstroke (inlet on the sealed side), then instroke
+            force = np.concatenate([sign * table.steady_force(sign * u, dp, 293.15, diameter,
+                                                              0.2) for sign in (1, -1)])
             rows_load.append(fn / (np.pi * diameter))
             rows_mu.append(force / fn)
             rows_length.append(force / (np.pi * diameter))
         load[d], mu[d], per_length[d] = (np.array(x) for x in (rows_load, rows_mu, rows_length))
+    mixed, full = [0, 3], [1, 2, 4, 5]
     for d in (12, 48):
         # squeeze load per unit rod circumference ∝ (D + d)/D within 2 % (the rest: hoop
         # stress and mesh); the pressure's share per unit rod circumference within 5 %
         centroid = ((d + cord) / d) / ((192 + cord) / 192)
         assert load[d][0] / load[192][0] == pytest.approx(centroid, rel=0.02)
         assert load[d][1] - load[d][0] == pytest.approx(load[192][1] - load[192][0], rel=0.05)
-        # boundary and mixed branches: per unit load the same within 5 %
-        assert mu[d][:, :2] == pytest.approx(mu[192][:, :2], rel=0.05)
+        # mixed branch: per unit load within 8 % (measured: Ø12 +1 ... +8 %)
+        assert mu[d][:, mixed] == pytest.approx(mu[192][:, mixed], rel=0.08)
         # full film: per unit circumference ∝ √(load per unit circumference) within 5 %
-        assert per_length[d][:, 2] / per_length[192][:, 2] == pytest.approx(
-            np.sqrt(load[d] / load[192]), rel=0.05)
+        ratio = per_length[d][:, full] / per_length[192][:, full]
+        assert ratio == pytest.approx(np.sqrt(load[d] / load[192])[:, None]
+                                      * np.ones((1, len(full))), rel=0.05)
     # per unit circumference where D/d is large (24 and 96): within 5 %
     assert per_length[48] == pytest.approx(per_length[192], rel=0.05)
-    # ... and not for Ø12 (D/d = 6) in the boundary branch: its load is 10-15 % higher
-    assert np.all(per_length[12][:, 0] / per_length[192][:, 0] > 1.08)
+    # ... and not for Ø12 (D/d = 6) in the mixed branch at 0 bar: its load is 15 % higher
+    assert np.all(per_length[12][0, mixed] / per_length[192][0, mixed] > 1.1)
 
 
 def test_default_contact_set_notes_its_generic_values_once():

@@ -283,9 +283,9 @@ def seal_friction(seal, velocity, pressure="0 bar", temperature="20 degC", law=N
     ...                           diameter="12 mm")
     >>> curve[["velocity_m_s", "friction_N", "normal_force_N", "film_um"]].round(2)
        velocity_m_s  friction_N  normal_force_N  film_um
-    0          0.01        1.66           38.02     0.93
-    1          0.10        0.47           38.02     2.61
-    2          1.00        1.47           38.02     8.25
+    0          0.01        1.41           38.02     0.99
+    1          0.10        0.43           38.02     2.84
+    2          1.00        1.35           38.02     8.97
     """
     from sealsim.friction.base import ContactInputs
     from sealsim.units import ZERO_CELSIUS_K

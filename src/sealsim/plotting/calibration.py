@@ -94,7 +94,7 @@ def plot_parity(points, title: str = "", quantity: str = "friction level", unit:
     ax.set_xlabel(f"measured {quantity} [{unit}]")
     ax.set_ylabel(f"predicted {quantity} [{unit}]")
     ax.grid(alpha=0.3)
-    ax.legend(loc="upper left", fontsize=8)
+    ax.legend(loc="best", fontsize=8)          # not over a point far off the 1:1 line
     ax.set_title((f"{title}\n" if title else "") + f"R² = {r2:.3f}" if np.isfinite(r2)
                  else title)
     return fig

@@ -54,7 +54,7 @@ __all__ = ["ContactTribology", "LAW_TABLE_FIELDS", "TABLE_SPEEDS", "build_fricti
            "table_orientation"]
 
 #: Version of the table builder: part of the cache key (a change of the physics gives new files)
-TABLE_VERSION = 2
+TABLE_VERSION = 3
 #: Speeds of a table [m/s]: 1e-7 to 10 m/s, six per decade
 TABLE_SPEEDS = np.logspace(-7.0, 1.0, 49)
 #: Largest temperature step of a table [K]: FE profiles are interpolated linearly between the
