@@ -124,10 +124,12 @@ def _curves(t):
 
 def _sections(states):
     fig, axes = new_figure(len(states), 1, width=3.0 * len(states), height=3.6)
+    vmax = max(float(st.von_mises.max()) for st in states.values()) / 1e6
     for ax, (scale, st) in zip(np.atleast_1d(axes), states.items()):
         pts = st.deformed_points * 1e3
-        ax.add_collection(PolyCollection(pts[st.cells], array=st.von_mises / 1e6,
-                                         cmap="viridis", edgecolors="face", linewidths=0.2))
+        coll = ax.add_collection(PolyCollection(
+            pts[st.cells], array=st.von_mises / 1e6, cmap="viridis", clim=(0.0, vmax),
+            edgecolors="face", linewidths=0.2))
         shaft = st.lines[0].point[1] * 1e3
         ax.axhline(shaft, color="0.2", lw=2.0)
         seat = st.spring_points.mean(axis=0) * 1e3
@@ -139,7 +141,8 @@ def _sections(states):
         ax.set_xlabel("z [mm] (oil side left)")
         ax.set_title(f"× {scale:g}: F = {st.F_N:.1f} N\nb = {st.b * 1e3:.3f} mm, "
                      f"R = {seat[0] - edge[0]:.2f} mm", fontsize=9)
-    fig.suptitle("installed lip (von Mises stress; red: spring seat)")
+    fig.colorbar(coll, ax=axes, shrink=0.8, label="von Mises stress [MPa]")
+    fig.suptitle("installed lip (red: spring seat)")
     return fig
 
 
