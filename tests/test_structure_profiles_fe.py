@@ -160,16 +160,17 @@ def test_lip_force_from_fe_and_the_speed_cycle(lip_fe, monkeypatch):
     lip force falls as the rubber softens and the warm ring expands off the shaft. The contact
     band of the new lip is checked against the band the rotary model documents. Then the speed
     cycle example runs with lip.force = "fe" (shortened), the contact width from the FE too.
-    (What the rubber carries: test_fe_lip_rubber_share_and_load_per_length.)"""
+    (What the rubber carries: test_fe_lip_rubber_share, test_fe_lip_force_is_affine_in_the_
+    rubber_modulus.)"""
     from sealsim.rotary.lip_fe import LipSpec
 
     path, cases, table, cache = lip_fe
     monkeypatch.setenv("SEALSIM_CACHE", str(cache))
     t = table.frame()
     assert np.all(np.diff(t["F_tip_N"]) < 0)  # the lip force falls with temperature
-    rubber = t["F_tip_N"] - t["F_spring_N"]
-    assert np.all(np.diff(rubber) < 0)
-    # the spring carries a growing share; the steel spring's force hardly changes
+    # the lip without its spring (the rubber's force) falls too; the spring carries a growing
+    # share; the steel spring's force hardly changes
+    assert np.all(np.diff(t["F_without_spring_N"]) < 0)
     assert np.all(np.diff(t["spring_share"]) > 0)
     assert t["F_spring_N"].max() / t["F_spring_N"].min() < 1.05
     assert isinstance(cases["fe"].lip, LipSpec) and cases["constant"].lip.force == "constant"
@@ -187,6 +188,9 @@ def test_lip_force_from_fe_and_the_speed_cycle(lip_fe, monkeypatch):
     result = RUNNER.invoke(app, ["rotary", "run", str(path), "--out", str(out), "-q"])
     assert result.exit_code == 0, result.output
     assert (out / "lip_fe.csv").is_file() and (out / "lip_fe.png").is_file()
+    # the run writes the table its simulation used
+    written = pd.read_csv(out / "lip_fe.csv")
+    assert np.allclose(written["F_tip_N"], t["F_tip_N"], rtol=1e-5)
     ts = pd.read_csv(out / "timeseries.csv")
     fe = ts[ts["variant"] == "fe"]
     # the simulation used the FE force at the contact temperature of the step before (the
@@ -195,27 +199,82 @@ def test_lip_force_from_fe_and_the_speed_cycle(lip_fe, monkeypatch):
     assert np.allclose(fe["lip_force_N"].to_numpy()[1:], expected, rtol=2e-3)
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "with the held-seal modulus (0.51 of the catalogue constants' 1 Hz level) the FE lip's "
-    "rubber carries 0.4 N of 23.4 N at 20 degC and -0.8 N at 100 degC (spring share 0.98-1.04, "
-    "0.093 N/mm), against about 9 N of 32.7 N with the 0.01 Hz modulus (0.70) and 32.1 N with "
-    "the constants themselves: between 0.70 and 0.51 the lip's contact changes (b 0.16 -> "
-    "0.27 mm, p_max 2.3 -> 1.2 MPa). Not resolved; DIN 3760 spring shares are 30-60 %"))
-def test_fe_lip_rubber_share_and_load_per_length(lip_fe):
-    """The rubber of a new lip carries a positive share of its force that falls with the
-    rubber's held modulus (in the FE faster than E_h, because the warm ring also expands off
-    the shaft), and the lip presses 100-200 N/m: the only published range found for oil seals
-    (a seal maker's technical article, secondary; rotary/lip.py DEFAULT_LOAD_PER_LENGTH), whose
-    middle is the rotary model's constant. Band check, not a validation (generic section,
-    moulded interference estimated)."""
+def test_fe_lip_rubber_share(lip_fe):
+    """The rubber of the new lip, mounted at 20 °C and held an hour, carries a positive share
+    of its force, F_without/F (the lip on the same path without its spring, as a split-shaft
+    measurement with and without the spring gives it), of roughly half: 30-60 % (the handbook
+    figure for new DIN 3760 lips; no primary source found, rotary/case.py spring_share). Its
+    force falls from 20 to 100 °C faster than the held modulus E_h, because the warm ring also
+    expands off the shaft. The garter spring's own radial force 2πT does not all reach the
+    shaft (0 < α < 1): its seat lies behind the contact edge, and the flex takes part of it
+    to the case (rotary/lip_fe.py)."""
     from sealsim.properties.elastomers import get_elastomer
 
     t = lip_fe[2].frame()
-    rubber = t["F_tip_N"] - t["F_spring_N"]
+    rubber = t["F_without_spring_N"] / t["F_tip_N"]
     assert np.all(rubber > 0)
+    assert 0.3 < rubber.iloc[0] < 0.6
     e = get_elastomer("NBR")
     e_ratio = e.held_modulus(373.15) / e.held_modulus(293.15)
-    assert rubber.iloc[-1] / rubber.iloc[0] < e_ratio
+    assert t["F_without_spring_N"].iloc[-1] / t["F_without_spring_N"].iloc[0] < e_ratio
+    alpha = (t["F_tip_N"] - t["F_without_spring_N"]) / t["F_spring_N"]
+    assert np.all((alpha > 0.5) & (alpha < 0.9))
+
+
+def test_fe_lip_force_is_affine_in_the_rubber_modulus():
+    """The 80 mm lip (coarse mesh, 20 °C, hyperelastic catalogue NBR constants scaled by 1 and
+    0.5) with and without its spring. References: a body whose supports are given
+    displacements carries a force ∝ its modulus (the hyperelastic stress scales with c10, c01;
+    the bulk modulus is kept, so to within the small volume change); and the share of an
+    applied force (the spring's) that goes to each support of an elastic body does not depend
+    on its modulus. So F = α·2πT + F_without(E): the spring's contribution to the contact,
+    F − F_without, is the same at both moduli, and a fraction α < 1 of the spring's own force
+    (its seat is behind the contact edge). The former measure of the rubber's share, F − 2πT,
+    falls far faster than the modulus and goes to zero near half the constants, which looked
+    like a defect of the lip model at the held modulus (0.51 of the constants)."""
+    from sealsim.properties.elastomers import get_elastomer
+
+    c10, c01, bulk = get_elastomer("NBR").mooney_rivlin(293.15)
+    force = {}
+    for scale in (1.0, 0.5):
+        for spring in (True, False):
+            seal = {"type": "radial_lip", "outer_diameter": "101 mm", "width": "9 mm"}
+            if not spring:
+                seal.update(spring_rate="0 N/m", spring_tension="0 N")
+            s = quiet_run(case({
+                "seal": seal, "gland": {"arrangement": "shaft", "sealing_diameter": "80 mm"},
+                "material": {"c10": f"{c10 * scale} Pa", "c01": f"{c01 * scale} Pa",
+                             "bulk_modulus": f"{bulk} Pa", "temperature_scaling": "none"},
+                "mesh": {"level": "coarse"}, "load": {"squeeze_increments": 8}}))[-1]
+            force[scale, spring] = (s.F_N, s.spring_force)
+    bare = {k: force[k, False][0] for k in (1.0, 0.5)}
+    from_spring = {k: force[k, True][0] - bare[k] for k in (1.0, 0.5)}
+    # 2 %: the bulk modulus is not scaled, and the spring's seat moves 0.03 mm less on the
+    # softer lip (2πT 23.35 vs 23.08 N)
+    assert bare[0.5] / bare[1.0] == pytest.approx(0.5, rel=0.02)
+    assert from_spring[0.5] / from_spring[1.0] == pytest.approx(1.0, rel=0.02)
+    for k in (1.0, 0.5):
+        alpha = from_spring[k] / force[k, True][1]
+        assert 0.5 < alpha < 0.9
+    # the rubber's share of the lip with its spring, both ways: F_without/F stays near half,
+    # F - 2πT drops to a few per cent of F
+    assert bare[0.5] / force[0.5, True][0] > 0.3
+    share_old = {k: (force[k, True][0] - force[k, True][1]) / force[k, True][0]
+                 for k in (1.0, 0.5)}
+    assert share_old[0.5] < 0.1 < share_old[1.0]
+
+
+@pytest.mark.xfail(strict=True, reason=(
+    "the generic 80 mm lip held an hour (held modulus, 0.51 of the constants' 1 Hz level) "
+    "presses with 23.4 N = 0.093 N/mm at 20 degC, 7 % below the 100-200 N/m design range "
+    "(0.13 N/mm with the constants themselves): the moulded interference (1 mm) and spring "
+    "pre-tension (34 N/m x d) are estimates, not tuned to a secondary design range"))
+def test_fe_lip_load_per_length(lip_fe):
+    """The lip presses 100-200 N/m at 20 °C: the only published range found for oil seals (a
+    seal maker's technical article, secondary; rotary/lip.py DEFAULT_LOAD_PER_LENGTH), whose
+    middle is the rotary model's constant. Band check, not a validation (generic section,
+    moulded interference estimated)."""
+    t = lip_fe[2].frame()
     assert 0.10 < t["F_tip_per_length_N_per_mm"].iloc[0] < 0.20
 
 

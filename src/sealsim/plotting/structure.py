@@ -214,17 +214,21 @@ def plot_map_profiles(dataset, squeeze_index: int = 0, title: str = ""):
 
 
 def plot_lip_force(tables: dict, title: str = ""):
-    """Radial lip force, spring share and contact width of FE lip tables vs temperature
-    (frames of :meth:`sealsim.rotary.lip_fe.LipForceTable.frame`, one per variant)."""
+    """Radial lip force (with and without the garter spring, and the spring's own radial
+    force), spring share and contact width of FE lip tables vs temperature (frames of
+    :meth:`sealsim.rotary.lip_fe.LipForceTable.frame`, one per variant)."""
     fig, axes = new_figure(3, 1, width=12.0, height=3.6)
     for name, t in tables.items():
-        axes[0].plot(t["temperature_C"], t["F_tip_N"], "-o", ms=3, label=f"{name}: lip force")
-        axes[0].plot(t["temperature_C"], t["F_spring_N"], "--", lw=1.0,
-                     label=f"{name}: garter spring")
+        line, = axes[0].plot(t["temperature_C"], t["F_tip_N"], "-o", ms=3,
+                             label=f"{name}: lip force")
+        axes[0].plot(t["temperature_C"], t["F_without_spring_N"], "-s", ms=3, mfc="none",
+                     color=line.get_color(), label=f"{name}: without its spring")
+        axes[0].plot(t["temperature_C"], t["F_spring_N"], "--", lw=1.0, color=line.get_color(),
+                     label=f"{name}: spring's own 2πT")
         axes[1].plot(t["temperature_C"], t["spring_share"], "-o", ms=3, label=name)
         axes[2].plot(t["temperature_C"], t["contact_width_mm"], "-o", ms=3, label=name)
     axes[0].set_ylabel("radial force (360°) [N]")
-    axes[1].set_ylabel("spring share [-]")
+    axes[1].set_ylabel("spring share 1 − F_without/F [-]")
     axes[2].set_ylabel("contact width [mm]")
     for ax in axes:
         ax.set_xlabel("temperature [°C]")

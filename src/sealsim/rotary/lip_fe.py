@@ -23,8 +23,23 @@ up through those above:
 
 So the lip force falls where the rubber softens and the interference shrinks, and stays up
 through the spring share -- the temperature dependence comes out of the FE instead of
-Eq. (2). Between grid temperatures F_tip and b are interpolated monotonically (PCHIP), outside
-the grid they are held at the end values. The table is cached under ``$SEALSIM_CACHE/lip_fe``
+Eq. (2).
+
+**What the spring carries.** The garter spring pulls its seat inwards with its whole radial
+force 2πT, but the seat lies on the air side of the contact edge (the R value; once the
+shaft has swung the head onto it, about 1.2 mm on the 80 mm lip): the head is a lever on the
+contact edge, and the flex takes part of the spring's pull to the metal case. Only a fraction
+α of 2πT reaches the shaft; α depends on the geometry (R value, flex), not on the rubber's
+modulus (the split of a load between the supports of an elastic body does not depend on its
+modulus), so F_tip ≈ α·2πT + F_without, the force of the same lip without its spring, which
+scales with the modulus. The FE tables therefore run the lip without its spring too, and the
+spring share is 1 − F_without/F_tip, the share a split-shaft measurement with and without the
+spring gives and the E-independent share of the rotary model's Eq. (2). F_tip − 2πT is not
+the rubber's share: it also subtracts the spring's pull that the flex carries, and a soft
+lip's would be negative (tests/test_structure_profiles_fe.py, the modulus sweep).
+
+Between grid temperatures F_tip and b are interpolated monotonically (PCHIP), outside the grid
+they are held at the end values. The table is cached under ``$SEALSIM_CACHE/lip_fe``
 keyed by the resolved structure cases, like the FE maps of the pneumatic model.
 """
 
@@ -76,8 +91,9 @@ class LipSpec(CaseModel):
     @model_validator(mode="before")
     @classmethod
     def _width_follows_force(cls, data):
-        # the FE contact width of the lip (0.1-0.2 mm, mesh-converged) goes with the FE force
-        # unless the case asks for the constant one
+        # the FE contact width of the new lip (0.27 mm at 20 degC on 80 mm, mesh-converged,
+        # widening as the rubber expands: docs, "Seal profiles") goes with the FE force unless
+        # the case asks for the constant one
         if isinstance(data, dict) and data.get("contact_width") is None:
             data = {**data, "contact_width": "fe" if data.get("force") == "fe" else "constant"}
         return data
@@ -91,7 +107,7 @@ class LipSpec(CaseModel):
 
 
 def lip_structure_case(seal, lip: LipSpec, installation_temperature: float = 293.15,
-                       temperatures=None, viscoelastic: bool = False):
+                       temperatures=None, viscoelastic: bool = False, spring: bool = True):
     """The structure case (:class:`~sealsim.structure.case.StructureCase`) of a rotary case's
     seal: DIN 3760 radial lip on its shaft, mounted at ``installation_temperature``, held for
     :data:`~sealsim.properties.elastomers.HELD_SEAL_TIME`, then ``temperatures`` (default the
@@ -109,6 +125,8 @@ def lip_structure_case(seal, lip: LipSpec, installation_temperature: float = 293
         The load path's temperatures [K].
     viscoelastic : bool
         Thermo-viscoelastic material (Prony/WLF) instead of the hyperelastic held modulus.
+    spring : bool
+        With the garter spring; False: the same lip without it (its rubber's own force).
     """
     from sealsim.cases import validate_case
     from sealsim.properties.elastomers import HELD_SEAL_TIME
@@ -123,6 +141,8 @@ def lip_structure_case(seal, lip: LipSpec, installation_temperature: float = 293
     for key in ("interference", "flex_thickness", "spring_rate", "spring_tension"):
         if getattr(lip, key) is not None:
             section[key] = getattr(lip, key)
+    if not spring:
+        section.update(spring_rate=0.0, spring_tension=0.0)
     material = ({"elastomer": seal.material, "model": "viscoelastic"} if viscoelastic else
                 {"elastomer": seal.material, "temperature_scaling": "held"})
     installation_time = 60.0
@@ -143,20 +163,22 @@ def lip_structure_case(seal, lip: LipSpec, installation_temperature: float = 293
                          require_units=False)
 
 
-def lip_load_paths(seal, lip: LipSpec, mounting_temperature: float):
+def lip_load_paths(seal, lip: LipSpec, mounting_temperature: float, spring: bool = True):
     """The FE load paths of a lip table: (structure case, its temperatures) per path -- down
     from the mounting temperature through the grid temperatures below it, up through the
     others; thermo-viscoelastic when the rubber has a Prony series, else hyperelastic with the
-    held modulus (one path in grid order: its forces do not depend on the path)."""
+    held modulus (one path in grid order: its forces do not depend on the path). ``spring =
+    False``: the same paths for the lip without its garter spring."""
     from sealsim.properties.elastomers import get_elastomer
 
     grid = list(lip.temperatures)
     if get_elastomer(seal.material).prony is None:
-        return [(lip_structure_case(seal, lip, mounting_temperature, grid), grid)]
+        return [(lip_structure_case(seal, lip, mounting_temperature, grid, spring=spring),
+                 grid)]
     down = sorted((t for t in grid if t < mounting_temperature), reverse=True)
     up = sorted(t for t in grid if t >= mounting_temperature)
-    return [(lip_structure_case(seal, lip, mounting_temperature, temps, viscoelastic=True),
-             temps) for temps in (down, up) if temps]
+    return [(lip_structure_case(seal, lip, mounting_temperature, temps, viscoelastic=True,
+                                spring=spring), temps) for temps in (down, up) if temps]
 
 
 @dataclass(frozen=True)
@@ -172,16 +194,22 @@ class LipForceTable:
     contact_width : numpy.ndarray
         Contact width [m].
     spring_force : numpy.ndarray
-        Radial force of the garter spring [N].
+        The garter spring's own radial force 2πT on its seat [N] (not all of it reaches the
+        shaft: module docstring).
     p_max : numpy.ndarray
         Peak contact pressure [Pa].
+    force_without_spring : numpy.ndarray
+        Radial lip force of the same lip on the same load path without its spring [N].
 
     Examples
     --------
     >>> t = LipForceTable(np.array([293.15, 373.15]), np.array([30.0, 25.0]),
-    ...                   np.array([2e-4, 1.8e-4]), np.array([15.0, 15.2]), np.array([1e6, 8e5]))
+    ...                   np.array([2e-4, 1.8e-4]), np.array([15.0, 15.2]), np.array([1e6, 8e5]),
+    ...                   np.array([12.0, 8.0]))
     >>> round(float(t.force_at(333.15)), 3), round(float(t.force_at(400.0)), 3)
     (27.5, 25.0)
+    >>> t.spring_share().round(3).tolist()
+    [0.6, 0.68]
     """
 
     temperature: np.ndarray
@@ -189,6 +217,7 @@ class LipForceTable:
     contact_width: np.ndarray
     spring_force: np.ndarray
     p_max: np.ndarray
+    force_without_spring: np.ndarray
 
     def _interp(self, values, temperature):
         from scipy.interpolate import PchipInterpolator
@@ -206,8 +235,10 @@ class LipForceTable:
         return self._interp(self.contact_width, temperature)
 
     def spring_share(self):
-        """Spring share of the lip force at each grid temperature [-]."""
-        return self.spring_force / self.force
+        """Spring share of the lip force at each grid temperature [-]: 1 − F_without/F, the
+        share a split-shaft measurement with and without the spring gives (the rubber's share
+        is F_without/F)."""
+        return 1.0 - self.force_without_spring / self.force
 
     def frame(self):
         """pandas DataFrame in engineering units (``lip_fe.csv``)."""
@@ -217,7 +248,8 @@ class LipForceTable:
             "temperature_C": self.temperature - CELSIUS_0, "F_tip_N": self.force,
             "F_tip_per_length_N_per_mm": self.force / (np.pi * self._diameter) / 1e3
             if self._diameter else np.nan,
-            "contact_width_mm": self.contact_width * 1e3, "F_spring_N": self.spring_force,
+            "contact_width_mm": self.contact_width * 1e3,
+            "F_without_spring_N": self.force_without_spring, "F_spring_N": self.spring_force,
             "spring_share": self.spring_share(), "p_max_MPa": self.p_max / 1e6})
 
     _diameter: float = 0.0
@@ -255,9 +287,11 @@ def lip_force_table(seal, lip: LipSpec, installation_temperature: float = 293.15
     from sealsim.cases import dump_case_toml
     from sealsim.files import atomic_write_bytes
 
-    paths = lip_load_paths(seal, lip, installation_temperature)
+    # the lip with its spring, and without it for the rubber's share (module docstring)
+    paths = {spring: lip_load_paths(seal, lip, installation_temperature, spring=spring)
+             for spring in (True, False)}
     text = "\n".join(dump_case_toml(case, header="FE lip model of a rotary case")
-                     for case, _ in paths)
+                     for spring in (True, False) for case, _ in paths[spring])
     from sealsim.structure.fingerprint import model_fingerprint
 
     # the FE model's fingerprint too: a changed FE model must not read an old table
@@ -266,7 +300,7 @@ def lip_force_table(seal, lip: LipSpec, installation_temperature: float = 293.15
     # and the content of a compound file the seal is made of, not only its path (every load
     # path is made of the seal's one material)
     digest = hashlib.sha256((text + model_fingerprint()
-                             + compound_file_digest(paths[0][0].material.elastomer))
+                             + compound_file_digest(paths[True][0][0].material.elastomer))
                             .encode("utf-8")).hexdigest()[:16]
     target = _cache_dir() / f"lip-{digest}.csv"
     if cache and target.is_file():
@@ -274,19 +308,23 @@ def lip_force_table(seal, lip: LipSpec, installation_temperature: float = 293.15
     else:
         from sealsim.structure.run import run_case
 
-        rows = []
-        for case, temps in paths:
-            # the last states are the grid temperatures in the path's order (installation and
-            # hold come first)
-            for state in run_case(case).states[-len(temps):]:
-                rows.append({"temperature_K": state.temperature, "force_N": state.F_N,
-                             "contact_width_m": state.b, "spring_force_N": state.spring_force,
-                             "p_max_Pa": state.p_max})
-        frame = pd.DataFrame(rows).sort_values("temperature_K", ignore_index=True)
+        def states(spring):
+            # the last states are the grid temperatures in the path's order (installation
+            # and hold come first)
+            return [state for case, temps in paths[spring]
+                    for state in run_case(case).states[-len(temps):]]
+
+        frame = pd.DataFrame([
+            {"temperature_K": state.temperature, "force_N": state.F_N,
+             "contact_width_m": state.b, "spring_force_N": state.spring_force,
+             "p_max_Pa": state.p_max, "force_without_spring_N": bare.F_N}
+            for state, bare in zip(states(True), states(False))
+        ]).sort_values("temperature_K", ignore_index=True)
         if cache:
             target.parent.mkdir(parents=True, exist_ok=True)
             atomic_write_bytes(target, frame.to_csv(index=False).encode("utf-8"))
     return LipForceTable(frame["temperature_K"].to_numpy(), frame["force_N"].to_numpy(),
                          frame["contact_width_m"].to_numpy(),
                          frame["spring_force_N"].to_numpy(), frame["p_max_Pa"].to_numpy(),
+                         frame["force_without_spring_N"].to_numpy(),
                          _diameter=float(seal.shaft_diameter))

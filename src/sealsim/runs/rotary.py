@@ -95,8 +95,10 @@ def write_results(folder: ResultFolder, results: dict[str, RotaryResult], source
         from sealsim.plotting.structure import plot_lip_force
         from sealsim.rotary.lip_fe import lip_force_table
 
-        tables = {name: lip_force_table(c.seal, c.lip, c.seal.radial_force_temperature).frame()
-                  for name, c in fe.items()}  # cached by the simulation
+        # the table the simulation used (cached by it): the lip mounted at its mounting
+        # temperature
+        tables = {name: lip_force_table(c.seal, c.lip, c.seal.mounting_temperature).frame()
+                  for name, c in fe.items()}
         folder.write_csv("lip_fe.csv", pd.concat(
             [t.assign(variant=name) for name, t in tables.items()], ignore_index=True),
             float_format="%.6g")

@@ -594,9 +594,11 @@ STEEL_SHEAR_MODULUS = 79e9
 
 SPRING_TENSION_PER_DIAMETER = 34.0
 """Default hoop pre-tension of the garter spring per shaft diameter [N/m] (2.7 N at
-d = 80 mm): with the spring's radial force 2πT this is a spring share of 0.45 of a radial
-load of 0.15 N/mm, the defaults of :mod:`sealsim.rotary.lip`; the same order as the 3.34 N
-'circumferential load' of the helicopter-gearbox seal springs of Coatings 2021, 11(2), 156."""
+d = 80 mm): its radial force 2πT is 0.45 of a radial load of 0.15 N/mm, the defaults of
+:mod:`sealsim.rotary.lip` (an estimate; on the installed FE lip, stretched by the shaft, the
+spring's 2πT is 23 N, of which about 0.64 reaches the shaft: :mod:`sealsim.rotary.lip_fe`);
+the same order as the 3.34 N 'circumferential load' of the helicopter-gearbox seal springs of
+Coatings 2021, 11(2), 156."""
 
 
 def garter_spring_rate(coil_diameter: float, wire_diameter: float, length: float,
