@@ -129,6 +129,10 @@ class Sampler:
         self.states.append(ys)
         self.modes.append(np.full(ts.shape, seg.mode, dtype=np.int64))
 
+    def store(self, times, states, modes) -> None:
+        """All samples at once (the compiled integrator samples the grid itself)."""
+        self.times, self.states, self.modes = [times], [states], [modes]
+
     def finish(self):
         """(times, states, modes) of all samples."""
         if self.pending is not None:
