@@ -20,8 +20,8 @@ def vdp(t, y, args, dy):
     mu = args[0]
     dy[0] = y[1]
     dy[1] = mu * (1.0 - y[0] * y[0]) * y[1] - y[0]
-    for i in range(2, y.shape[0]):      # quadratures: ∫ y0² dt, ∫ 1 dt
-        dy[i] = y[0] * y[0] if i == 2 else 1.0
+    for i in range(2, y.shape[0]):      # quadratures: ∫ y0² dt, ∫ 1 dt, ∫ y1 dt
+        dy[i] = y[0] * y[0] if i == 2 else (1.0 if i == 3 else y[1])
 
 
 @njit(cache=True)
@@ -31,6 +31,9 @@ def vdp_jac(t, y, args, J):
     J[0, 1] = 1.0
     J[1, 0] = -2.0 * mu * y[0] * y[1] - 1.0
     J[1, 1] = mu * (1.0 - y[0] * y[0])
+    for i in range(2, y.shape[0]):      # the quadratures' rows
+        J[i, 0] = 2.0 * y[0] if i == 2 else 0.0
+        J[i, 1] = 1.0 if i == 4 else 0.0
 
 
 @njit(cache=True)
@@ -117,15 +120,18 @@ def test_dense_output_is_scipys_interpolant():
 
 def test_quadrature_states_are_integrated_but_not_controlled():
     # ∫ 1 dt is exact for any step sequence; ∫ y0² dt against a tight scipy run.  The
-    # quadratures do not change the steps (they are outside the Newton matrix and the norms).
-    y0 = np.array([2.0, 0.0, 0.0, 0.0])
-    ws4 = workspace(4, 2, 1e-6, 1e-8)
+    # quadratures do not change the steps (they are outside the LU and the norms).
+    y0 = np.array([2.0, 0.0, 0.0, 0.0, 0.0])
+    ws4 = workspace(5, 2, 1e-6, 1e-8)
     times4, y4, _, _ = run(ws4, 0.0, y0, 20.0, (MU,), np.zeros(10))
     ws2 = workspace(2, 2, 1e-6, 1e-8)
     times2, _, _, _ = run(ws2, 0.0, y0[:2].copy(), 20.0, (MU,), np.zeros(10))
     assert ws4[1][I_NSTEPS] == ws2[1][I_NSTEPS]
     np.testing.assert_array_equal(times4, times2)
     assert y4[3] == pytest.approx(20.0, rel=1e-12)
+    # a linear invariant (y0 − ∫ y1 dt = 2, as the mass balance of the cylinder) holds to
+    # round-off: the quadrature follows the dynamic states through its Jacobian row
+    assert abs(y4[0] - y4[4] - 2.0) < 1e-12
     ref = solve_ivp(lambda t, y: [y[1], MU * (1 - y[0] ** 2) * y[1] - y[0], y[0] ** 2],
                     (0, 20), [2.0, 0.0, 0.0], method="Radau", rtol=1e-11, atol=1e-12)
     # the quadrature carries the BDF error of the states it integrates (rtol 1e-6)

@@ -9,9 +9,11 @@ Two additions for the models here:
 
 * **quadrature states**: the states ``ndyn ... n-1`` (bookkeeping integrals of boundary
   flows, energy, heat) do not feed back into the right-hand side.  They are integrated with
-  the same formula but excluded from the Newton matrix (LU of the ``ndyn × ndyn`` block only;
-  their own update is explicit once the dynamic states are known) and from the error and
-  convergence norms (the RMS over the dynamic states);
+  the same formula and the same Newton iteration, but the LU factorisation is of the
+  ``ndyn × ndyn`` block only -- a quadrature's Newton update follows from the dynamic one
+  through its Jacobian row, so a linear invariant such as the mass balance holds to round-off
+  as with the full matrix -- and they are excluded from the error and convergence norms (the
+  RMS over the dynamic states);
 * **events**: :func:`locate` finds the root of an event function on the dense output of the
   last step with Brent's method (scipy's ``brentq``, tolerance 4 ε, as ``solve_ivp``).
 
@@ -19,7 +21,7 @@ Two additions for the models here:
 names ``FUN``, ``JAC`` and ``EVENT``::
 
     FUN(t, y, args, dy)        # dy/dt into dy (shape (n,))
-    JAC(t, y, args, J)         # ∂f/∂y of the dynamic states into J (ndyn × ndyn)
+    JAC(t, y, args, J)         # ∂f/∂y_j of all states by the dynamic ones j (n × ndyn)
     EVENT(t, y, args) -> g     # the event function (any float; unused problems return 1)
 
 ``args`` is any tuple the problem needs (its tables, its mode); the integrator passes it
@@ -58,8 +60,8 @@ ALPHA = (1.0 - _KAPPA) * GAMMA
 ERROR_CONST = _KAPPA * GAMMA + 1.0 / np.arange(1, MAX_ORDER + 2)
 
 #: float slots of the workspace: time, time before the last step, step size, tolerance,
-#: largest step, Newton tolerance, end of the interval
-(S_T, S_T_OLD, S_H_ABS, S_RTOL, S_MAX_STEP, S_NEWTON_TOL, S_T_BOUND, S_NS) = range(8)
+#: largest step, Newton tolerance, end of the interval, c = h/α of the factorised matrix
+(S_T, S_T_OLD, S_H_ABS, S_RTOL, S_MAX_STEP, S_NEWTON_TOL, S_T_BOUND, S_C_LU, S_NS) = range(9)
 #: integer slots: order, equal steps since the last change, LU valid, counters, ndyn
 (I_ORDER, I_NEQ, I_LU_OK, I_NFEV, I_NJEV, I_NLU, I_NSTEPS, I_NDYN, I_NI) = range(9)
 #: step results
@@ -76,9 +78,9 @@ def workspace(n: int, ndyn: int, rtol: float, atol, max_step: float = np.inf) ->
     s[S_NEWTON_TOL] = max(10.0 * EPS / rtol, min(0.03, rtol ** 0.5))
     iv[I_NDYN] = ndyn
     atol = np.ascontiguousarray(np.broadcast_to(np.asarray(atol, dtype=float), (n,)))
-    return (s, iv, atol, np.zeros((MAX_ORDER + 3, n)), np.zeros((ndyn, ndyn)),
+    return (s, iv, atol, np.zeros((MAX_ORDER + 3, n)), np.zeros((n, ndyn)),
             np.zeros((ndyn, ndyn)), np.zeros(ndyn, dtype=np.int64), np.zeros((8, n)),
-            np.zeros((MAX_ORDER + 1, MAX_ORDER + 1)))
+            np.zeros((3, MAX_ORDER + 1, MAX_ORDER + 1)))
 
 
 # -- small dense linear algebra -------------------------------------------------------------
@@ -148,34 +150,32 @@ def rms(x, scale, m):
 @njit(cache=True)
 def change_differences(D, order, factor, R):
     """Re-express the differences D for a step size changed by ``factor`` (scipy's
-    ``change_D``: D[:order+1] = (R(factor)·R(1))ᵀ·D[:order+1])."""
+    ``change_D``: D[:order+1] = (R(factor)·R(1))ᵀ·D[:order+1]); R (3, 6, 6) is scratch."""
     m = order + 1
-    # R(factor) into R[:m, :m] (cumulative products of M), U = R(1) computed on the fly
-    u = np.empty((m, m))
-    for j in range(m):
-        R[0, j] = 1.0
+    r, u, ru = R[0], R[1], R[2]
+    for j in range(m):             # R(factor) and U = R(1): cumulative products of M
+        r[0, j] = 1.0
         u[0, j] = 1.0
     for i in range(1, m):
-        R[i, 0] = 0.0
+        r[i, 0] = 0.0
         u[i, 0] = 0.0
         for j in range(1, m):
-            R[i, j] = R[i - 1, j] * ((i - 1 - factor * j) / i)
+            r[i, j] = r[i - 1, j] * ((i - 1 - factor * j) / i)
             u[i, j] = u[i - 1, j] * ((i - 1 - 1.0 * j) / i)
-    ru = np.zeros((m, m))
     for i in range(m):
-        for k in range(m):
-            r = R[i, k]
-            for j in range(m):
-                ru[i, j] += r * u[k, j]
+        for j in range(m):
+            acc = 0.0
+            for k in range(m):
+                acc += r[i, k] * u[k, j]
+            ru[i, j] = acc
     n = D.shape[1]
-    col = np.empty(m)
     for c in range(n):
         for i in range(m):
-            col[i] = D[i, c]
+            r[0, i] = D[i, c]          # the column (row 0 of r is free now)
         for i in range(m):
             acc = 0.0
             for k in range(m):
-                acc += ru[k, i] * col[k]
+                acc += ru[k, i] * r[0, k]
             D[i, c] = acc
 
 
@@ -224,6 +224,12 @@ def _newton(ws, args, t_new, c):
         for i in range(n):
             dy[i] = c * f[i] - psi[i] - d[i]
         lu_solve(LU, piv, dy)
+        c_lu = s[S_C_LU]        # the quadrature rows of the matrix that was factorised
+        for i in range(ndyn, n):              # quadratures: (dy - c·J·dy)_q = r_q
+            acc = 0.0
+            for j in range(ndyn):
+                acc += J[i, j] * dy[j]
+            dy[i] += c_lu * acc
         dy_norm = rms(dy, scale, ndyn)
         rate = -1.0
         if dy_norm_old >= 0.0:
@@ -345,6 +351,7 @@ def step(ws, args):
                         LU[i, j] = -c * J[i, j]
                     LU[i, i] += 1.0
                 lu_factor(LU, piv)
+                s[S_C_LU] = c
                 iv[I_NLU] += 1
                 iv[I_LU_OK] = 1
             converged, n_iter = _newton(ws, args, t_new, c)

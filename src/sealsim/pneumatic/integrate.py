@@ -239,7 +239,7 @@ def _fun(t, y, args, dy):
 
 @njit(cache=True)
 def _jac(t, y, args, jac):
-    """The dynamic block of :func:`.rhs.jacobian` (forward differences)."""
+    """The columns of the dynamic states of :func:`.rhs.jacobian` (forward differences)."""
     work = args[2]
     full = work[5]
     rhs.jacobian(t, y, args[0], args[1], work[1], work[2], work[3], work[4], work[0], full)

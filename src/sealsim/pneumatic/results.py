@@ -150,7 +150,7 @@ def sample(system, sampler: Sampler):
 
 
 def _diagnostics(system, ts, ys, modes) -> dict[str, np.ndarray]:
-    d = system.evaluate(ts, ys, modes, full=True)
+    d = system.evaluate(ts, ys, modes, full=True, outputs_only=True)
     out = {"time": ts, "x": d["x"], "v": d["v"], "p1": d["p1"], "p2": d["p2"], "T1": d["T1"],
            "T2": d["T2"], "spool": np.asarray(d["spool"], dtype=float),
            "command": system.schedule.command_at(ts), "mode": modes,

@@ -12,6 +12,7 @@ import math
 import numpy as np
 
 from sealsim.errors import InputError
+from sealsim.friction.compiled import law_parameters
 from sealsim.friction.hybrid import resolve_stick
 from sealsim.pneumatic import rhs
 from sealsim.pneumatic.case import body_temperature
@@ -50,43 +51,6 @@ def stick_tolerance(breakaway_force):
     would alternate between stick and slip at every step of the integrator; with it, such a
     creep advances in steps of the tolerance (a break-away force 0.01 % high)."""
     return 1e-4 * abs(breakaway_force) + 1e-3
-
-
-def law_parameters(law) -> np.ndarray:
-    """The parameters of a friction-law object in the layout of the compiled right-hand side
-    (:func:`sealsim.pneumatic.rhs._law_rates`), SI units:
-
-    * coulomb: F_C, F_v, f;
-    * stribeck: F_C, F_S, v_S, δ, F_v, f;
-    * lugre: σ0, σ1, σ2, F_C, F_S, v_S, δ;
-    * dahl: σ0, F_C, α;
-    * gms: N, C, σ2, F_C, F_S, v_S, δ, k_1..k_N, α_1..α_N;
-    * theta: τ, α, f_a, f_b, γ, F_ref, n, σ0 (0 without bristles), σ1, T_ref, A, B (ASTM D341
-      constants of the base oil, B = 0: γ constant).
-    """
-    p = law.params
-    name = law.name
-    if name == "coulomb":
-        values = [p.coulomb_force, p.viscous_coefficient, p.pressure_coefficient]
-    elif name == "stribeck":
-        values = [p.coulomb_force, p.static_force, p.stribeck_velocity, p.exponent,
-                  p.viscous_coefficient, p.pressure_coefficient]
-    elif name == "lugre":
-        values = [p.sigma0, p.sigma1, p.sigma2, p.coulomb_force, p.static_force,
-                  p.stribeck_velocity, p.exponent]
-    elif name == "dahl":
-        values = [p.sigma0, p.coulomb_force, p.exponent]
-    elif name == "gms":
-        values = [p.n_elements, p.attraction, p.sigma2, p.coulomb_force, p.static_force,
-                  p.stribeck_velocity, p.exponent, *law.k[:, 0], *law.alpha[:, 0]]
-    elif name == "theta":
-        a, b = law.walther
-        values = [p.tau, p.alpha, p.f_a, p.f_b, p.gamma, p.reference_normal_force,
-                  p.load_exponent, p.bristle_stiffness or 0.0, p.bristle_damping,
-                  p.reference_temperature, a, b]
-    else:  # pragma: no cover - every law of sealsim.friction is listed
-        raise InputError(f"the pneumatic model does not know the {name!r} law")
-    return np.asarray(values, dtype=float)
 
 
 class PneumaticSystem:
@@ -413,10 +377,12 @@ class PneumaticSystem:
             return jac
         return j
 
-    def evaluate(self, t, y, mode, full: bool = False):
+    def evaluate(self, t, y, mode, full: bool = False, outputs_only: bool = False):
         """Derivatives dy/dt (and, with ``full``, every intermediate quantity) at (t, y).
 
-        ``y`` has shape (n,) or (n, k) (k columns, ``t`` scalar or (k,)).
+        ``y`` has shape (n,) or (n, k) (k columns, ``t`` scalar or (k,)).  With
+        ``outputs_only`` (and ``full``) only the quantities of the output time series are
+        computed (no flows, heat or derivatives: their entries are 0), at about half the cost.
         """
         y = np.asarray(y, dtype=float)
         column = y.ndim == 1
@@ -426,7 +392,8 @@ class PneumaticSystem:
         modes = np.ascontiguousarray(np.broadcast_to(np.asarray(mode, dtype=np.int64), (k,)))
         dy = np.zeros_like(ys)
         diag = np.zeros((self.n_diag, k))
-        rhs.evaluate_many(ts, ys, modes, self.tables, dy, diag)
+        rhs.evaluate_many(ts, ys, modes, self.tables, dy, diag,
+                          rhs.OUTPUTS if outputs_only and full else rhs.FULL)
         if not full:
             return dy[:, 0] if column else dy
         return self.unpack(dy, diag)
