@@ -2,9 +2,11 @@
 
 * :func:`build_friction_fmu` -- a friction law object (any of :data:`C_LAWS`) with a contact
   map or a constant contact;
+* :func:`build_cylinder_fmu` -- a whole pneumatic cylinder (chambers, valve, seals, end
+  stops) from its case;
 * :func:`build_rotary_fmu` -- a rotary lip-seal case;
-* :func:`build_fmu` -- a case file: a friction case, a pneumatic case (one seal), a rotary
-  case, or an FMU case (:mod:`sealsim.fmu.case`).
+* :func:`build_fmu` -- a case file: a friction case, a pneumatic case (the whole cylinder, or
+  one seal with ``seal``), a rotary case, or an FMU case (:mod:`sealsim.fmu.case`).
 
 Each checks the output file first, builds in a temporary folder, checks the compiled FMU
 against sealsim's own model, writes the ``.fmu`` atomically and returns a
@@ -38,7 +40,7 @@ from sealsim.fmu.friction_export import (
     model_identifier,
 )
 
-__all__ = ["build_fmu", "build_friction_fmu", "build_rotary_fmu"]
+__all__ = ["build_cylinder_fmu", "build_fmu", "build_friction_fmu", "build_rotary_fmu"]
 
 RPM = math.pi / 30.0
 
@@ -104,6 +106,37 @@ def build_friction_fmu(law, out, *, contact_map=None, normal_force: float | None
                          compile=compile,
                          check=friction_check(law, spec, contact_map, tab, FMI_KINDS[kind]),
                          document=lambda s: friction_documentation(s, law, tab))
+
+
+def build_cylinder_fmu(case, out, *, name: str | None = None, fmi_version: int = 2,
+                       kind: str = "both", force: bool = False, compile: bool = True,
+                       base_dir: str | Path = ".", title: str = "", source: str = "",
+                       inputs=()) -> BuildResult:
+    """Build the FMU of a whole pneumatic cylinder (:mod:`sealsim.fmu.cylinder_export`).
+
+    Parameters
+    ----------
+    case : PneumaticCase
+        The case (one variant); its seals' contact maps are built or read first.
+    out : path
+        The ``.fmu`` file.
+    base_dir : path
+        Folder that relative map paths of the case refer to.
+    name, fmi_version, kind, force, compile, title, source, inputs
+        As for :func:`build_friction_fmu`.
+    """
+    from sealsim.fmu.cylinder_export import cylinder_check, cylinder_spec, cylinder_system
+    from sealsim.fmu.report import cylinder_documentation
+
+    check_output(out, force, inputs)
+    if kind not in FMI_KINDS:
+        raise InputError(f"--kind {kind!r} is not allowed; choose me, cs or both")
+    system = cylinder_system(case, base_dir)
+    spec = cylinder_spec(system, _identifier(name, out), title=title or case.title,
+                         source=source)
+    return build_archive(spec, out, fmi_version=fmi_version, kind=kind, force=force,
+                         compile=compile, check=cylinder_check(system, spec, FMI_KINDS[kind]),
+                         document=cylinder_documentation)
 
 
 def _default_speed_max(case, base_dir) -> float:
@@ -227,7 +260,8 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
     ----------
     path : path
         A friction case (``[friction]`` + ``[bench]``: the law with the constant contact of
-        its ``[inputs]``), a pneumatic case (the law and contact map of one seal), a rotary
+        its ``[inputs]``), a pneumatic case (the whole cylinder, or with ``seal`` the law and
+        contact map of that seal), a rotary
         case (the lip-seal FMU), or an FMU case (``[fmu]``, see :mod:`sealsim.fmu.case`).
     out : path
         The ``.fmu`` file; refused if it exists, unless ``force``.
@@ -235,7 +269,7 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
     kind : {"me", "cs", "both"}
     variant, seal : str, optional
         Which variant of the case, which seal of a pneumatic case (also ``fmu.variant``,
-        ``fmu.seal`` of an FMU case).
+        ``fmu.seal`` of an FMU case; without a seal: the whole cylinder).
     compile : bool
         False: a source-only FMU.
     progress : callable, optional
@@ -306,15 +340,15 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
     from sealsim.pneumatic.case import body_temperature, build_contact_map, load_pneumatic_cases
 
     cases = load_pneumatic_cases(data, source)
+    if seal is None:                                   # the whole cylinder
+        if law_override is not None:
+            raise InputError("[friction] and fmu.friction_file replace the law of one seal: "
+                             "give fmu.seal (or --seal) to export that seal")
+        name, case = _one_variant(cases, variant, source, same=lambda c: repr(c))
+        return build_cylinder_fmu(case, out, base_dir=base, title=title or case.title,
+                                  source=f"{source}, variant {name!r}", **common)
     name, case = _one_variant(cases, variant, source, same=lambda c: repr(c.seals))
     seals = {s.name: s for s in case.seals}
-    if not seals:
-        raise InputError(f"{source} has no [[seals]] to export")
-    if seal is None:
-        if len(seals) > 1:
-            raise InputError(f"{source} has the seals {', '.join(seals)}; choose one with "
-                             "--seal (or fmu.seal)")
-        seal = next(iter(seals))
     if seal not in seals:
         raise InputError(f"{source}: there is no seal {seal!r}; choose one of "
                          f"{', '.join(seals)}")
