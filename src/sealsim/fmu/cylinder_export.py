@@ -16,8 +16,9 @@ Interface (SI):
 variable               unit      meaning
 =====================  ========  ============================================================
 valve_command          1         input: spool command, +1 extend, -1 retract, 0 centre (5/3);
-                                 the spool follows with the valve's time constant; the valve's
-                                 dead time is the host's (e.g. a transport delay)
+                                 it reaches the spool after the valve's dead time
+                                 (``valve_delay``), then the spool follows with the valve's
+                                 time constant
 F_load                 N         input: external force on the rod, resisting extension (the
                                  case's load force is its start value)
 x, v                   m, m/s    states/outputs: piston position (0 retracted) and velocity
@@ -34,7 +35,7 @@ b_<seal>, dp_<seal>    m, Pa     outputs per seal: contact width, pressure diffe
 stuck                  -         output: true while the piston sticks
 =====================  ========  ============================================================
 
-Parameters: ``p_supply`` (absolute), ``moving_mass``, ``valve_conductance``,
+Parameters: ``p_supply`` (absolute), ``moving_mass``, ``valve_conductance``, ``valve_delay``,
 ``heat_transfer_coefficient``; the start values of the states are the case's initial state.
 Not in the FMU yet (refused with an :class:`~sealsim.errors.InputError`): seal heating,
 ``air.heat_transfer = "free_convection"`` and a prescribed position (test rig).
@@ -118,8 +119,8 @@ def cylinder_spec(system, identifier: str, *, title: str = "", source: str = "")
     variables = [
         Variable("time", "TIME", "independent", "simulation time", "s"),
         Variable("valve_command", "VALVE_COMMAND", "input",
-                 "spool command: +1 extend, -1 retract, 0 centre (5/3); without the valve's "
-                 "dead time", None, float(c[rhs.C_SPOOL_INIT])),
+                 "spool command: +1 extend, -1 retract, 0 centre (5/3); reaches the spool "
+                 "after valve_delay", None, float(c[rhs.C_SPOOL_INIT])),
         Variable("F_load", "F_LOAD", "input", "external force on the rod, resisting extension",
                  "N", float(c[rhs.C_F0])),
         *states,
@@ -163,6 +164,9 @@ def cylinder_spec(system, identifier: str, *, title: str = "", source: str = "")
         Variable("valve_conductance", "VALVE_CONDUCTANCE", "parameter",
                  "sonic conductance C of the valve's paths (ISO 6358)", "m3/(s.Pa)",
                  float(c[rhs.C_C]), lower=_GT0),
+        Variable("valve_delay", "VALVE_DELAY", "parameter",
+                 "dead time of the valve: a command reaches the spool this much later", "s",
+                 float(system.case.valve.delay), lower=(">=", 0.0)),
         Variable("heat_transfer_coefficient", "HEAT_TRANSFER_COEFFICIENT", "parameter",
                  "heat-transfer coefficient between the chamber air and the wall", "W/(m2.K)",
                  float(c[rhs.C_H]), lower=(">=", 0.0)),
@@ -177,6 +181,7 @@ def cylinder_spec(system, identifier: str, *, title: str = "", source: str = "")
     atol = system.tolerances(rtol)[:n]
     defines = {
         "NSEAL": len(system.seals), "LAW_WIDTH": law_par.shape[1], "BDF_MAXN": n,
+        "MODEL_TIME_EVENTS": 1,
         "STICKY": int(sticky), "RTOL": repr(rtol),
         "MAX_STEP": repr(float(system.case.solver.max_step)),
         "SPEED_RESOLUTION": repr(float(0.1 * atol[1])),
@@ -258,6 +263,7 @@ void sealsim_rhs(double t, const double *y, int mode, double u, double s0, int r
     m.command = u;
     m.s_command = s0;
     m.t_command = 0.0;
+    m.npending = 0;
     evaluate(&m, t, y, mode, rates, dy, &o);
     double fixed[10] = {o.x, o.v, o.p1, o.p2, o.t1, o.t2, o.spool, o.f_fric, o.hold, o.brk};
     for (int i = 0; i < 10; i++) out[i] = fixed[i];
@@ -394,12 +400,11 @@ def cylinder_check(system, spec: ModelSpec, kinds=("me", "cs")):
 
 
 def command_signal(system):
-    """(times, values) of the valve command as the FMU's host gives it: the case's commands
-    at their arrival at the spool (command time + the valve's dead time), as steps."""
-    arrivals = np.asarray(system.spool.arrivals, dtype=float)
-    targets = np.asarray(system.spool.targets, dtype=float)
-    times, values = [0.0], [float(system.spool.initial)]
-    for t, u in zip(arrivals, targets):
+    """(times, values) of the case's valve commands as steps (the FMU applies the valve's
+    dead time)."""
+    schedule = system.schedule
+    times, values = [0.0], [float(schedule.initial)]
+    for t, u in zip(np.asarray(schedule.times, float), np.asarray(schedule.commands, float)):
         times += [float(t), float(t)]
         values += [values[-1], float(u)]
     times.append(float(system.duration))

@@ -297,8 +297,8 @@ def cylinder_documentation(spec: ModelSpec) -> None:
                  "of the case. Co-simulation integrates with the variable-order BDF method "
                  "of sealsim (its C port) and locates the stick/slip transitions inside the "
                  "communication step; model exchange switches the stick/slip mode at its event "
-                 "indicator. The valve command reaches the spool without the valve's dead "
-                 "time: apply the dead time in the host.</p>")]
+                 "indicator. A valve command reaches the spool after the valve's dead time "
+                 "(<code>valve_delay</code>).</p>")]
     rhs_check = spec.report.get("rhs_check")
     cycle = spec.report.get("cycle_check")
     if rhs_check or cycle:

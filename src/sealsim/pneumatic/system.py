@@ -13,6 +13,7 @@ import numpy as np
 
 from sealsim.errors import InputError
 from sealsim.friction.compiled import law_parameters
+from sealsim.friction.kernels import walther_viscosity_ratio
 from sealsim.friction.hybrid import resolve_stick
 from sealsim.pneumatic import rhs
 from sealsim.pneumatic.case import body_temperature
@@ -165,6 +166,8 @@ class PneumaticSystem:
                 map_int[i, :row.size] = row
                 map_chunks.append(data)
                 used += data.size
+        if not self.heating:
+            _constant_viscosity(seal_int, law_par, seals)
         self._map_data = np.concatenate(map_chunks) if map_chunks else np.zeros(1)
         self._seal_int, self._law_par, self._seal_therm = seal_int, law_par, seal_therm
         self._map_int = map_int
@@ -448,6 +451,19 @@ class PneumaticSystem:
         if bool(stuck):
             return rhs.STICK
         return rhs.FORWARD if hold > 0 else rhs.BACKWARD
+
+
+def _constant_viscosity(seal_int, law_par, seals) -> None:
+    """γ(T) of the Θ law at each seal's constant temperature, once: the same product the
+    compiled law would form at every evaluation (:func:`sealsim.friction.compiled.law_rates`:
+    γ·ν(T)/ν(T_ref), ASTM D341), so the results do not change -- the four powers and two
+    logarithms per seal and evaluation are saved."""
+    for i, seal in enumerate(seals):
+        par = law_par[i]
+        if seal_int[i, rhs.SI_LAW] == rhs.THETA and par[11] != 0.0:
+            par[4] = par[4] * walther_viscosity_ratio(float(seal.temperature), par[9], par[10],
+                                                      par[11])
+            par[11] = 0.0
 
 
 def _profile_table(position):

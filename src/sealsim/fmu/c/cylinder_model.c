@@ -8,10 +8,11 @@
  * check compares this right-hand side with the numba one at random states.
  *
  * States (x, v, m1, m2, U1, U2, the friction states of the seals) as in the Python model;
- * the spool follows the valve command input with its first-order lag, exactly
- * (s = u + (s0 - u) exp(-(t - t_u)/tau) from the time t_u the command changed, the
- * sealsim.pneumatic.valve.SpoolMotion of the Python model); the valve's dead time is left to
- * the host.  Sticking seals (Coulomb, Stribeck, Theta without bristles) make the model hybrid
+ * a change of the valve command input reaches the spool after the valve's dead time, then
+ * the spool follows with its first-order lag, exactly (s = u + (s0 - u) exp(-(t - a)/tau)
+ * from the arrival a: sealsim.pneumatic.valve.SpoolMotion); arrivals are time events (model
+ * exchange) and restart points of the integrator (co-simulation), as in
+ * sealsim.pneumatic.integrate.  Sticking seals (Coulomb, Stribeck, Theta without bristles) make the model hybrid
  * (sealsim.pneumatic.simulation): model exchange has one event indicator and switches the
  * mode in event mode; co-simulation integrates with the BDF method of bdf.c (the port of
  * sealsim.ode.bdf) and locates the stick/slip events inside the step, as
@@ -30,6 +31,7 @@ static double power(double x, double e) {           /* kernels.power */
     if (e == 2.0) return x * x;
     if (e == 1.0) return x;
     if (e == 0.0) return 1.0;
+    if (e == 0.5) return sqrt(x);
     return pow(x, e);
 }
 
@@ -200,7 +202,7 @@ static void seal_loads(int i, double dp, double temp, double *fn, double *b, dou
 /* -- valve, chambers, cylinder (sealsim.pneumatic.valve, .chambers, .cylinder) --------------- */
 static double series_pair(double c1, double c2) {
     double small = fmin(c1, c2), large = fmax(c1, c2);
-    double s = fmin(small, 1e300), l = fmin(large, 1e300);
+    double s = fmin(small, 1e100), l = fmin(large, 1e100);
     double ratio = s / (l + (l == 0.0));
     return small / sqrt(1.0 + ratio * ratio);
 }
@@ -209,7 +211,7 @@ static double iso6358_mass_flow(double p1, double p2, double t1, double cond, do
                                 double m, double beta) {
     double r = fmin(fmax(p2 / p1, 0.0), 1.0);
     double e = (fmin(fmax(r, bcrit), beta) - bcrit) / (1.0 - bcrit);
-    double phi = pow(1.0 - e * e, m) * fmin((1.0 - r) / (1.0 - beta), 1.0);
+    double phi = power(1.0 - e * e, m) * fmin((1.0 - r) / (1.0 - beta), 1.0);
     double g = cond * ANR_DENSITY * p1 * sqrt(ANR_TEMPERATURE / t1) * phi;
     return g * (p1 > p2);
 }
@@ -256,11 +258,15 @@ typedef struct {
     double f[NSEAL], fn[NSEAL], b[NSEAL], dp[NSEAL], clip[NSEAL], brk_seal[NSEAL];
 } Outputs;
 
+#define MAX_PENDING 16
+
 typedef struct {
     double cst[C_NCONST];            /* CYL_C with the FMU's parameters and inputs */
     int mode;
-    double command, t_command, s_command;   /* the valve command and when it changed */
-    double f_load_input;
+    double command, t_command, s_command;   /* the spool's target, its arrival, s there */
+    double last_input;                      /* the valve command input last seen */
+    double pending_t[MAX_PENDING], pending_u[MAX_PENDING];  /* commands on their way */
+    int npending;
     int bdf_active;
     double g_old;
     double recent[MAX_SWITCHES_PER_MS + 1];
@@ -270,10 +276,39 @@ typedef struct {
 
 #define DATA(c) ((CylinderData *)(void *)(c)->work)
 
-static double spool_position(const CylinderData *m, double t) {
+/* rhs.spool_position: the lag towards u from s0 since the arrival a */
+static double spool_lag(const CylinderData *m, double u, double s0, double a, double t) {
     double tau = m->cst[C_SPOOL_TAU];
-    if (tau <= 0.0) return m->command;
-    return m->command + (m->s_command - m->command) * exp(-fmax(t - m->t_command, 0.0) / tau);
+    if (tau <= 0.0) return u;
+    return u + (s0 - u) * exp(-fmax(t - a, 0.0) / tau);
+}
+
+/* the spool at t, with the commands that arrive until t */
+static double spool_position(const CylinderData *m, double t) {
+    double u = m->command, s0 = m->s_command, a = m->t_command;
+    for (int k = 0; k < m->npending && m->pending_t[k] <= t; k++) {
+        s0 = spool_lag(m, u, s0, a, m->pending_t[k]);
+        a = m->pending_t[k];
+        u = m->pending_u[k];
+    }
+    return spool_lag(m, u, s0, a, t);
+}
+
+/* make the commands that have arrived until t the spool's target; 1 if one arrived */
+static int commit_arrivals(CylinderData *m, double t) {
+    int arrived = 0;
+    while (m->npending > 0 && m->pending_t[0] <= t) {
+        m->s_command = spool_lag(m, m->command, m->s_command, m->t_command, m->pending_t[0]);
+        m->t_command = m->pending_t[0];
+        m->command = m->pending_u[0];
+        for (int k = 1; k < m->npending; k++) {
+            m->pending_t[k - 1] = m->pending_t[k];
+            m->pending_u[k - 1] = m->pending_u[k];
+        }
+        m->npending--;
+        arrived = 1;
+    }
+    return arrived;
 }
 
 static void evaluate(const CylinderData *m, double t, const double *y, int mode, int rates,
@@ -478,8 +513,8 @@ static void write_states(Instance *c, const double *y) {
     for (int i = 0; i < NSTATES; i++) c->r[STATE_VR[i]] = y[i];
 }
 
-/* take the inputs at the current time: a new valve command starts the spool's lag from its
- * present position; a changed input restarts the co-simulation integrator (a kink) */
+/* take the inputs at the current time: a new valve command arrives at the spool after the
+ * dead time; an arrival, or a new load, restarts the co-simulation integrator (a kink) */
 static FmuStatus take_inputs(Instance *c) {
     CylinderData *m = DATA(c);
     double u = P(VALVE_COMMAND);
@@ -489,12 +524,19 @@ static FmuStatus take_inputs(Instance *c) {
                 "-1 retract, 0 centre of a 5/3 valve)", u);
         return FMU_ERROR;
     }
-    if (u != m->command) {
-        m->s_command = spool_position(m, c->time);
-        m->t_command = c->time;
-        m->command = u;
-        m->bdf_active = 0;
+    if (u != m->last_input) {
+        if (m->npending == MAX_PENDING) {
+            fmu_log(c, FMU_ERROR, "logStatusError",
+                    "more than %d valve commands within the valve's dead time (%g s) at "
+                    "t = %g s", MAX_PENDING, P(VALVE_DELAY), c->time);
+            return FMU_ERROR;
+        }
+        m->pending_t[m->npending] = c->time + P(VALVE_DELAY);
+        m->pending_u[m->npending] = u;
+        m->npending++;
+        m->last_input = u;
     }
+    if (commit_arrivals(m, c->time)) m->bdf_active = 0;
     if (P(F_LOAD) != m->cst[C_F0]) {
         m->cst[C_F0] = P(F_LOAD);
         m->bdf_active = 0;
@@ -520,6 +562,8 @@ FmuStatus model_initialize(Instance *c) {
     m->command = CYL_C[C_SPOOL_INIT];
     m->s_command = CYL_C[C_SPOOL_INIT];
     m->t_command = c->time;
+    m->last_input = CYL_C[C_SPOOL_INIT];
+    m->npending = 0;
     for (int i = 0; i <= MAX_SWITCHES_PER_MS; i++) m->recent[i] = -INFINITY;
     m->recent_next = 0;
     if (take_inputs(c) > FMU_WARNING) return FMU_ERROR;
@@ -579,6 +623,12 @@ void model_derivatives(Instance *c, double *dx) {
     evaluate(m, c->time, y, m->mode, 1, dx, &o);
 }
 
+/* the next time event: the arrival of a command at the spool (model exchange) */
+double model_next_event_time(Instance *c) {
+    CylinderData *m = DATA(c);
+    return m->npending > 0 ? m->pending_t[0] : INFINITY;
+}
+
 #if NEVENT_INDICATORS > 0
 void model_event_indicators(Instance *c, double *z) {
     z[0] = P(STICK_SLIP_INDICATOR);
@@ -622,13 +672,16 @@ FmuStatus model_step(Instance *c, double h) {
     while (t < t_end) {
         direction = (m->mode == MODE_FORWARD || m->mode == MODE_BACKWARD) ? -1
                     : (m->mode == MODE_STICK ? 1 : 0);
+        /* the next breakpoint: the end of the step or a command's arrival at the spool */
+        double t_stop = t_end;
+        if (m->npending > 0 && m->pending_t[0] < t_stop) t_stop = m->pending_t[0];
         if (!m->bdf_active) {
             bdf_init(b, NSTATES, RTOL, ATOL, MAX_STEP);
-            bdf_start(b, t, y, t_end, bp);
+            bdf_start(b, t, y, t_stop, bp);
             m->g_old = direction != 0 ? problem_event(&p, t, y) : 1.0;
             m->bdf_active = 1;
         } else {
-            b->t_bound = t_end;
+            b->t_bound = t_stop;
         }
         if (bdf_step(b, bp) != BDF_OK) {
             fmu_log(c, FMU_ERROR, "logStatusError",
@@ -662,6 +715,7 @@ FmuStatus model_step(Instance *c, double h) {
         }
         t = t_new;
         for (int i = 0; i < NSTATES; i++) y[i] = b->y_new[i];
+        if (t >= t_stop && commit_arrivals(m, t)) m->bdf_active = 0;
     }
     if (m->mode == MODE_STICK) y[1] = 0.0;
     write_states(c, y);

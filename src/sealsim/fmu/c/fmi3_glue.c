@@ -478,8 +478,9 @@ fmi3Status fmi3UpdateDiscreteStates(fmi3Instance instance, fmi3Boolean *discrete
     if (nominalsOfContinuousStatesChanged) *nominalsOfContinuousStatesChanged = fmi3False;
     if (valuesOfContinuousStatesChanged)
         *valuesOfContinuousStatesChanged = changed ? fmi3True : fmi3False;
-    if (nextEventTimeDefined) *nextEventTimeDefined = fmi3False;
-    if (nextEventTime) *nextEventTime = 0.0;
+    double next = fmu_next_event_time(INSTANCE);
+    if (nextEventTimeDefined) *nextEventTimeDefined = isfinite(next) ? fmi3True : fmi3False;
+    if (nextEventTime) *nextEventTime = isfinite(next) ? next : 0.0;
     return fmi3OK;
 }
 

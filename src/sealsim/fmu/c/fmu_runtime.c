@@ -294,13 +294,22 @@ FmuStatus fmu_get_event_indicators(Instance *c, double *z, size_t n) {
 
 FmuStatus fmu_new_discrete_states(Instance *c, int *states_changed) {
     *states_changed = 0;
+    c->outputs_valid = 0;
 #if NEVENT_INDICATORS > 0
     FmuStatus status = model_event_update(c, states_changed);
-    c->outputs_valid = 0;
     if (status > FMU_WARNING) return fail(c);
     return status;
 #else
-    return FMU_OK;
+    return update_outputs(c) > FMU_WARNING ? fail(c) : FMU_OK;
+#endif
+}
+
+double fmu_next_event_time(Instance *c) {
+#if MODEL_TIME_EVENTS
+    return model_next_event_time(c);
+#else
+    (void)c;
+    return INFINITY;
 #endif
 }
 

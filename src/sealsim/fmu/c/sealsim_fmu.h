@@ -78,6 +78,9 @@ void hermite_evaluate(const HermiteTable *t, double a, double b, double *out);
 #ifndef MODEL_WORK_DOUBLES
 #define MODEL_WORK_DOUBLES 1
 #endif
+#ifndef MODEL_TIME_EVENTS
+#define MODEL_TIME_EVENTS 0
+#endif
 
 typedef struct {
     double r[NVARS];          /* every variable by value reference */
@@ -110,6 +113,10 @@ FmuStatus model_outputs(Instance *c);
 void model_derivatives(Instance *c, double *dx);
 /* Advance the states by h with the inputs held constant (co-simulation): exact or implicit. */
 FmuStatus model_step(Instance *c, double h);
+#if MODEL_TIME_EVENTS
+/* The next time event (model exchange), INFINITY for none. */
+double model_next_event_time(Instance *c);
+#endif
 #if NEVENT_INDICATORS > 0
 /* The event indicators (model exchange); a discrete state switches where one crosses 0. */
 void model_event_indicators(Instance *c, double *z);
@@ -136,6 +143,8 @@ FmuStatus fmu_get_derivatives(Instance *c, double *dx, size_t n);
 FmuStatus fmu_get_nominals(Instance *c, double *x, size_t n);
 FmuStatus fmu_get_event_indicators(Instance *c, double *z, size_t n);
 FmuStatus fmu_new_discrete_states(Instance *c, int *states_changed);
+/* the next time event of the model (model exchange); INFINITY for none */
+double fmu_next_event_time(Instance *c);
 void fmu_set_time(Instance *c, double t);
 /* Clip value to [lo, hi]; warn once when it leaves the range (bit: a CLIP_... flag). */
 double fmu_clip(Instance *c, unsigned bit, const char *what, const char *unit, double value,
