@@ -401,11 +401,17 @@ def cylinder_check(system, spec: ModelSpec, kinds=("me", "cs")):
 
 def command_signal(system):
     """(times, values) of the case's valve commands as steps (the FMU applies the valve's
-    dead time)."""
+    dead time).  Each step sits 1 ns before its command time: FMPy (like most hosts) gives
+    the value before a discontinuity at the discontinuity itself, and the command issued at
+    t must be the input of the communication step that starts at t."""
     schedule = system.schedule
     times, values = [0.0], [float(schedule.initial)]
     for t, u in zip(np.asarray(schedule.times, float), np.asarray(schedule.commands, float)):
-        times += [float(t), float(t)]
+        if t <= 0.0:                                   # a command at the start: the start value
+            values[0] = float(u)
+            continue
+        t = float(t) - 1e-9
+        times += [t, t]
         values += [values[-1], float(u)]
     times.append(float(system.duration))
     values.append(values[-1])
