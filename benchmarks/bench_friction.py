@@ -34,7 +34,6 @@ from sealsim.friction.bench import profile_type, simulate_velocity
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "tests"))
 from reference_v0 import friction_laws as reference  # noqa: E402
-from reference_v0 import hybrid_stepper as old_stepper  # noqa: E402
 
 DURATION = 10.0
 V = TypeAdapter(profile_type("velocity"))
@@ -140,11 +139,17 @@ def vectorised_case(n=1_000_000):
     return times, baseline
 
 
+class _NumpyTheta(Theta):
+    """The Θ law as an object of its own class: simulate_mass runs it through the vectorised
+    stepper of sealsim.friction.hybrid (the stepper of before issue 27)."""
+
+
 def mass_cases():
     """The stick-slip examples: examples/friction/lugre_stick_slip.toml (25 s, compiled BDF, with
     solve_ivp Radau -- the integrator before issue 27 -- as the baseline in the same run) and
     the dwell_5s variant of theta_dwell.toml (9 s, the compiled stick/slip stepper at 1 ms,
-    against the stepper of before issue 27 -- one numpy call per step -- in the same run)."""
+    against the vectorised stepper of sealsim.friction.hybrid -- the stepper of before issue
+    27, numpy calls per step -- in the same run)."""
     from sealsim.friction.bench import simulate_mass, summarize
 
     with warnings.catch_warnings():
@@ -173,9 +178,11 @@ def mass_cases():
 
     dwell_run()
     t_dw, dwell = best_of(dwell_run, repeat=3)
-    t_dw_old, dwell_old = best_of(lambda: old_stepper.dwell_stepper(theta, dwell.time, drive,
-                                                                  inputs), repeat=1)
-    dwell_diff = float(np.max(np.abs(dwell.force - dwell_old)))
+    old_theta = _NumpyTheta(theta.params)
+    t_dw_old, dwell_old = best_of(lambda: simulate_mass(old_theta, 1.0, 9.0, 1e-3,
+                                                        stiffness=2000.0, drive_velocity=drive,
+                                                        inputs=inputs), repeat=1)
+    dwell_diff = float(np.max(np.abs(dwell.force - dwell_old.force)))
     print(f"LuGre stick-slip, 25 s (compiled BDF, rtol 1e-7): real-time factor "
           f"{25.0 / t_ss:.0f}x (solve_ivp Radau before: {25.0 / t_ss_old:.1f}x); period and "
           f"largest force differ by {period_diff:.1e} and {force_diff:.1e} (relative)")

@@ -105,4 +105,19 @@ def test_failed_integration_says_where(monkeypatch):
     monkeypatch.setattr(integrate, "_lsoda_step", failing)
     with pytest.raises(ConvergenceError, match=r"failed at t = [0-9.]+ s, x = .* mm, v = .*"
                                                r"p1 = .* bar, p2 = .* bar, T1 = .* degC"):
+        simulate(case_with({"controller": {"duration": "0.5 s"},
+                            "solver": {"method": "LSODA"}}))
+
+
+def test_failed_compiled_integration_says_where(monkeypatch):
+    # the compiled driver's failure (step size too small) names the time and the state too
+    real = integrate.run_interval
+
+    def failing(t, t_end, y, mode, *args):
+        result, t_new, mode, k, nseg = real(t, t_end, y, mode, *args)
+        return integrate.STEP_FAILED, t_new, mode, k, nseg
+
+    monkeypatch.setattr(integrate, "run_interval", failing)
+    with pytest.raises(ConvergenceError, match=r"compiled BDF\) failed at t = [0-9.]+ s, "
+                                               r"x = .* mm, v = .* m/s, p1 = .* bar, .*mode"):
         simulate(case_with({"controller": {"duration": "0.5 s"}}))

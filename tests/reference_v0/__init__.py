@@ -1,7 +1,6 @@
 """Frozen copies of the pre-issue-13 implementation (commit 9cdec80).
 
 * :mod:`.friction_laws` -- the numpy friction laws (pure functions and law classes);
-* :mod:`.hybrid_stepper` -- the stick/slip stepper of before issue 27 (numpy, vectorised);
 * :mod:`.pneumatic_simulation` -- the pneumatic right-hand side with numpy glue and law objects,
   :func:`~.pneumatic_simulation.simulate_reference`.
 

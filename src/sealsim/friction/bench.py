@@ -41,7 +41,7 @@ from sealsim.friction.bench_results import (  # noqa: F401  (re-exported)
     summarize,
 )
 from sealsim.friction.compiled import LAW_CODES, law_parameters, law_rates, mass_steps
-from sealsim.friction.hybrid import contact_values
+from sealsim.friction.hybrid import compiled_law, contact_values, implicit_mass_step
 from sealsim.friction.profiles import (
     _constant,
     profile_integral,
@@ -235,23 +235,25 @@ def _mass_stepper(law, mass, stiffness, t, xd, fa, inputs, z0, progress):
         stuck[0] = abs(f_ext0) <= brk
     else:
         force[0] = law.force(z, np.zeros(1), inputs)[0]
-    # the steps run compiled (sealsim.friction.compiled.mass_steps), in chunks for progress
-    code, par = LAW_CODES[law.name], law_parameters(law)
-    fn, width, pa, pb, temp = (float(a[0]) for a in contact_values(law, inputs, 1))
-    zk = np.ascontiguousarray(z[:, 0])
-    xk = vk = 0.0
-    every = max(1, n // 50)
-    for k0 in range(1, n, every):
-        k1 = min(k0 + every, n)
-        reached, xk, vk = mass_steps(code, par, law.has_stiction, zk, xk, vk, t, xd, fa, k0,
-                                     k1, float(mass), float(stiffness), fn, width, pa, pb, temp,
-                                     states, x, v, force, stuck, 60)
-        if reached < k1:
-            raise ConvergenceError(f"friction bench: the velocity of the body did not converge "
-                                   f"in 60 iterations at t = {t[reached]:.6g} s; try a "
-                                   "smaller time_step")
-        if progress is not None:
-            progress((k1 - 1) / (n - 1))
+    if compiled_law(law):
+        _compiled_steps(law, mass, stiffness, t, xd, fa, inputs, z, states, x, v, force, stuck,
+                        progress)
+    else:                               # any other law object: the vectorised stepper
+        xi = np.zeros(1)
+        vi = np.zeros(1)
+        every = max(1, n // 50)
+        for k in range(1, n):
+            dt = t[k] - t[k - 1]
+            z, xi, vi, fk, st = implicit_mass_step(
+                law, z, xi, vi, dt, mass, stiffness, np.array([xd[k]]), np.array([fa[k]]),
+                inputs, where=f" at t = {t[k]:.6g} s")
+            states[k] = z[:, 0]
+            x[k] = xi[0]
+            v[k] = vi[0]
+            force[k] = fk[0]
+            stuck[k] = st[0]
+            if progress is not None and k % every == 0:
+                progress(k / (n - 1))
     return BenchResult(t, x, v, force, states, tuple(law.state_names), "mass",
                        drive_position=xd, applied_force=fa + stiffness * (xd - x),
                        stuck=stuck if law.has_stiction else None,
@@ -336,6 +338,29 @@ def _mass_compiled(law, mass, stiffness, t, drive_velocity, applied_force, input
     return out.T, stats
 
 
+def _compiled_steps(law, mass, stiffness, t, xd, fa, inputs, z, states, x, v, force, stuck,
+                    progress):
+    """The steps of :func:`_mass_stepper` with the compiled stepper
+    (:func:`sealsim.friction.compiled.mass_steps`), in chunks for the progress callback."""
+    n = t.size
+    code, par = LAW_CODES[law.name], law_parameters(law)
+    fn, width, pa, pb, temp = (float(a[0]) for a in contact_values(law, inputs, 1))
+    zk = np.ascontiguousarray(z[:, 0])
+    xk = vk = 0.0
+    every = max(1, n // 50)
+    for k0 in range(1, n, every):
+        k1 = min(k0 + every, n)
+        reached, xk, vk = mass_steps(code, par, law.has_stiction, zk, xk, vk, t, xd, fa, k0,
+                                     k1, float(mass), float(stiffness), fn, width, pa, pb, temp,
+                                     states, x, v, force, stuck, 60)
+        if reached < k1:
+            raise ConvergenceError(f"friction bench: the velocity of the body did not converge "
+                                   f"in 60 iterations at t = {t[reached]:.6g} s; try a "
+                                   "smaller time_step")
+        if progress is not None:
+            progress((k1 - 1) / (n - 1))
+
+
 def _mass_ivp(law, mass, stiffness, t, drive_velocity, applied_force, inputs, z0, method, rtol,
               max_step):
     from scipy.integrate import solve_ivp
@@ -377,6 +402,8 @@ def _mass_ivp(law, mass, stiffness, t, drive_velocity, applied_force, inputs, z0
     y0 = np.concatenate([[0.0, 0.0], np.asarray(z0, dtype=float)[:, 0]])
     zscale = np.abs(law.steady_state(np.array([1.0]), inputs)[:, 0])
     atol = np.concatenate([[1e-12, 1e-12], np.maximum(zscale, 1e-12) * 1e-9])
+    if method == "compiled" and not compiled_law(law):
+        method = "Radau"                 # a law object without a compiled form: scipy
     if method == "compiled":
         ys, extra = _mass_compiled(law, mass, stiffness, t, drive_velocity, applied_force,
                                    inputs, z0, rtol, atol, max_step, y0)

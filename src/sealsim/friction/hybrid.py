@@ -25,6 +25,11 @@ of Heipl & Murrenhoff Eq. 2 (friction balances the applied force up to F_S).
 directly (bracket found by expansion from the previous velocity).  The bristle state makes the
 body rest elastically in pre-sliding.
 
+**Compiled.**  For the laws of :mod:`sealsim.friction` the same algorithm runs compiled,
+one contact at a time (:func:`sealsim.friction.compiled.mass_step`; a test finds the same
+bits); :func:`implicit_mass_step` is the vectorised form for any :class:`FrictionLaw` (e.g. a
+law run through an FMU).
+
 References
 ----------
 .. [1] J. J. Moreau, "Unilateral contact and dry friction in finite freedom dynamics", in
@@ -39,9 +44,9 @@ import numpy as np
 
 from sealsim.errors import ConvergenceError
 from sealsim.friction.base import ContactInputs, FrictionLaw
-from sealsim.friction.compiled import LAW_CODES, STEP_OK, law_parameters, mass_step
+from sealsim.friction.compiled import LAW_CODES
 
-__all__ = ["contact_values", "implicit_mass_step", "resolve_stick"]
+__all__ = ["compiled_law", "contact_values", "implicit_mass_step", "resolve_stick"]
 
 
 def resolve_stick(required_force, breakaway_force):
@@ -73,6 +78,14 @@ def resolve_stick(required_force, breakaway_force):
     return stick, np.where(stick, required, np.sign(required) * brk)
 
 
+def compiled_law(law: FrictionLaw) -> bool:
+    """True for the laws of :mod:`sealsim.friction` (their compiled form in
+    :mod:`sealsim.friction.compiled` runs the stepper); other :class:`FrictionLaw` objects
+    (e.g. an FMU) run through :func:`implicit_mass_step`."""
+    return LAW_CODES.get(law.name) is not None and type(law).__module__.startswith(
+        "sealsim.friction.")
+
+
 def contact_values(law: FrictionLaw, inputs: ContactInputs, n: int):
     """The inputs of ``n`` contacts as the compiled laws take them
     (:mod:`sealsim.friction.compiled`): arrays F_N [N], b [m], p_A, p_B [Pa] and T [K]
@@ -95,8 +108,7 @@ def contact_values(law: FrictionLaw, inputs: ContactInputs, n: int):
 def implicit_mass_step(law: FrictionLaw, z0, x0, v0, dt, mass, stiffness, drive_position,
                        applied_force, inputs: ContactInputs, *, max_iter: int = 60,
                        where: str = ""):
-    """One implicit step of a body on the contacts (see the module docstring); the compiled
-    :func:`sealsim.friction.compiled.mass_step` for every contact.
+    """One implicit step of a body on the contacts (see the module docstring).
 
     Parameters
     ----------
@@ -131,26 +143,82 @@ def implicit_mass_step(law: FrictionLaw, z0, x0, v0, dt, mass, stiffness, drive_
     """
     x0 = np.asarray(x0, dtype=float)
     v0 = np.asarray(v0, dtype=float)
+    m_eff = mass / dt + stiffness * dt
+    rhs = mass * v0 / dt + applied_force + stiffness * (drive_position - x0)
+
+    def h(v):
+        z1 = law.step(z0, v, dt, inputs)
+        return m_eff * v + law.force(z1, v, inputs) - rhs
+
     n = x0.shape[0]
-    z0 = np.asarray(z0, dtype=float).reshape(law.n_states, -1)
-    code, par = LAW_CODES[law.name], law_parameters(law)
-    fn, width, pa, pb, temp = contact_values(law, inputs, n)
-    mass, stiffness, drive_position, applied_force = (
-        np.broadcast_to(np.asarray(a, dtype=float), (n,)) for a in
-        (mass, stiffness, drive_position, applied_force))
-    z1 = np.empty((law.n_states, n))
-    x1, v1, force = np.empty(n), np.empty(n), np.empty(n)
     stuck = np.zeros(n, dtype=bool)
-    zi, zo = np.empty(law.n_states), np.empty(law.n_states)
-    rates = np.empty((max(law.n_states, 1), 1))
-    for i in range(n):
-        zi[:] = z0[:, i] if z0.shape[1] > 1 else z0[:, 0]
-        x1[i], v1[i], force[i], stuck[i], status = mass_step(
-            code, par, law.has_stiction, zi, x0[i], v0[i], dt, mass[i], stiffness[i],
-            drive_position[i], applied_force[i], fn[i], width[i], pa[i], pb[i], temp[i], zo,
-            rates, max_iter)
-        if status != STEP_OK:
-            raise ConvergenceError(f"friction bench: the velocity of the body did not converge "
-                                   f"in {max_iter} iterations{where}; try a smaller time_step")
-        z1[:, i] = zo
+    if law.has_stiction:
+        z_rest = law.step(z0, np.zeros(n), dt, inputs)
+        stuck, _ = resolve_stick(rhs, law.breakaway_force(z_rest, inputs))
+        if stuck.all():                                  # fast path: everything sticks
+            return z_rest, x0.copy(), np.zeros(n), rhs, stuck
+        direction = np.where(rhs >= 0, 1.0, -1.0)
+        lo = np.where(direction > 0, 0.0, rhs / m_eff)
+        hi = np.where(direction > 0, rhs / m_eff, 0.0)
+        guess = np.clip(v0, lo, hi)
+        guess = np.where((guess == 0) | ~np.isfinite(guess), 0.5 * (lo + hi), guess)
+        v1 = _solve_bracketed(h, guess, lo, hi, max_iter, where, m_eff, rhs,
+                              active=~stuck)
+        v1 = np.where(stuck, 0.0, v1)
+    else:
+        v1 = _solve_expanding(h, v0, m_eff, rhs, max_iter, where)
+    z1 = law.step(z0, v1, dt, inputs)
+    force = np.where(stuck, rhs, law.force(z1, v1, inputs)) if law.has_stiction else \
+        law.force(z1, v1, inputs)
+    x1 = x0 + dt * v1
     return z1, x1, v1, force, stuck
+
+
+def _tolerance(m_eff, rhs, v):
+    return 1e-12 * (np.abs(rhs) + m_eff * np.abs(v) + 1.0)
+
+
+def _solve_bracketed(h, v, lo, hi, max_iter, where, m_eff, rhs, active):
+    """Safeguarded Newton (finite-difference slope) inside [lo, hi] with h(lo) <= 0 <= h(hi)."""
+    v = np.array(v, dtype=float)
+    lo = np.array(lo, dtype=float)
+    hi = np.array(hi, dtype=float)
+    if not np.any(active):
+        return v
+    for _ in range(max_iter):
+        hv = h(v)
+        done = (np.abs(hv) <= _tolerance(m_eff, rhs, v)) | (hi - lo <= 1e-15 * (
+            np.abs(v) + 1e-12)) | ~active
+        if np.all(done):
+            return v
+        lo = np.where(hv < 0, v, lo)
+        hi = np.where(hv > 0, v, hi)
+        eps = 1e-7 * (np.abs(v) + 1e-6)
+        slope = (h(v + eps) - hv) / eps
+        with np.errstate(divide="ignore", invalid="ignore"):
+            newton = v - hv / slope
+        ok = (slope > 0) & (newton > lo) & (newton < hi) & np.isfinite(newton)
+        v = np.where(done, v, np.where(ok, newton, 0.5 * (lo + hi)))
+    raise ConvergenceError(f"friction bench: the velocity of the body did not converge in "
+                           f"{max_iter} iterations{where}; try a smaller time_step")
+
+
+def _solve_expanding(h, v0, m_eff, rhs, max_iter, where):
+    """Bracket the root of h by expansion around v0, then solve it with safeguarded Newton."""
+    v0 = np.asarray(v0, dtype=float)
+    scale = np.abs(rhs) / m_eff + np.abs(v0) + 1e-9
+    lo = v0 - scale
+    hi = v0 + scale
+    for _ in range(200):
+        h_lo, h_hi = h(lo), h(hi)
+        bad_lo, bad_hi = h_lo > 0, h_hi < 0
+        if not (np.any(bad_lo) or np.any(bad_hi)):
+            break
+        width = hi - lo
+        lo = np.where(bad_lo, lo - width, lo)
+        hi = np.where(bad_hi, hi + width, hi)
+    else:  # pragma: no cover - h grows like M·v, so the expansion always ends
+        raise ConvergenceError(f"friction bench: no bracket for the body velocity{where}")
+    guess = np.clip(v0, lo, hi)
+    return _solve_bracketed(h, guess, lo, hi, max_iter, where, m_eff, rhs,
+                            active=np.ones(v0.shape, dtype=bool))

@@ -22,7 +22,7 @@ Kernels and their equations (H&M: Heipl & Murrenhoff [1]_)
 kernel (arguments)                                 returns
 =================================================  ===============================================
 ``sgn(x)``                                         +1, −1 or 0
-``power(x, e)``                                    x^e (exact for e = 2, 1, 0, 1/2)
+``power(x, e)``                                    x^e (exact products for e = 2, 1, 0)
 ``pressure_scaled_force(f0, f, pa, pb)``           F_pr + f·(p_A + p_B)              (H&M Eq. 3)
 ``stribeck_scaled_levels(fc, fs, f, pa, pb)``      (F_C(p), F_S(p)), F_S(p) = F_S·F_C(p)/F_C
 ``stribeck_level(v, fc, fs, vs, d)``               g = F_C + (F_S − F_C)·exp(−|v/v_S|^δ)
@@ -87,17 +87,14 @@ def sgn(x):
 
 @kernel
 def power(x, e):
-    """x**e [-] with the exact results for e = 2, 1, 0 and 0.5 (what numpy's ``array ** 2.0``
-    and ``array ** 0.5`` compute: x·x, x, 1, √x): no call to the C library's ``pow`` for the
-    exponents the models use by default."""
+    """x**e [-] with the exact products for e = 2, 1 and 0 (what numpy's ``array ** 2.0``
+    computes): no call to the C library's ``pow`` for the exponents the laws use by default."""
     if e == 2.0:
         return x * x
     if e == 1.0:
         return x
     if e == 0.0:
         return 1.0
-    if e == 0.5:
-        return math.sqrt(x)
     return x ** e
 
 

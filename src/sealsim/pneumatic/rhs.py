@@ -45,7 +45,6 @@ from sealsim.friction.compiled import (  # noqa: F401  (law codes re-exported)
     STRIBECK,
     THETA,
 )
-from sealsim.friction import kernels as fk
 from sealsim.friction.compiled import law_rates as _law_rates
 from sealsim.pneumatic._jit import jit
 from sealsim.pneumatic.chambers import (
@@ -111,7 +110,7 @@ NODE_TUBE, NODE_ROD = 0, 1
 
 _TINY_SPEED = 1e-300          # |v| used for sticking laws at v = 0 in a slip mode (sign only)
 
-_flow = jit(iso6358_flow, iso6358_mass_flow=jit(iso6358_mass_flow, power=fk.power))
+_flow = jit(iso6358_flow, iso6358_mass_flow=jit(iso6358_mass_flow))
 _series = jit(series_pair)
 _openings = jit(openings)
 _wall_area = jit(chamber_wall_area)

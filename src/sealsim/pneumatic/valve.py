@@ -63,12 +63,6 @@ ANR_TEMPERATURE = 293.15
 ANR_PRESSURE = 1.0e5
 
 
-def power(base, exponent):
-    """base**exponent (numpy); compiled as :func:`sealsim.friction.kernels.power`, which gives
-    numpy's exact results for the exponents 2, 1, 0 and 0.5 (the default subsonic index)."""
-    return base ** exponent
-
-
 def iso6358_mass_flow(upstream_pressure, downstream_pressure, upstream_temperature,
                       conductance, critical_ratio, subsonic_index=0.5, laminar_ratio=0.999):
     """Mass flow through a restriction from its upstream to its downstream side (ISO 6358).
@@ -122,7 +116,7 @@ def iso6358_mass_flow(upstream_pressure, downstream_pressure, upstream_temperatu
     # branch-free: the ellipse at r clipped to [b, β] (1 when choked), times the laminar
     # factor (1 − r)/(1 − β) where that is below 1 (r > β)
     e = (np.minimum(np.maximum(r, b), beta) - b) / (1.0 - b)
-    phi = power(1.0 - e * e, subsonic_index) * np.minimum((1.0 - r) / (1.0 - beta), 1.0)
+    phi = (1.0 - e * e) ** subsonic_index * np.minimum((1.0 - r) / (1.0 - beta), 1.0)
     g = conductance * ANR_DENSITY * p1 * np.sqrt(ANR_TEMPERATURE / upstream_temperature) * phi
     return g * (p1 > p2)
 

@@ -31,7 +31,6 @@ static double power(double x, double e) {           /* kernels.power */
     if (e == 2.0) return x * x;
     if (e == 1.0) return x;
     if (e == 0.0) return 1.0;
-    if (e == 0.5) return sqrt(x);
     return pow(x, e);
 }
 
@@ -211,7 +210,7 @@ static double iso6358_mass_flow(double p1, double p2, double t1, double cond, do
                                 double m, double beta) {
     double r = fmin(fmax(p2 / p1, 0.0), 1.0);
     double e = (fmin(fmax(r, bcrit), beta) - bcrit) / (1.0 - bcrit);
-    double phi = power(1.0 - e * e, m) * fmin((1.0 - r) / (1.0 - beta), 1.0);
+    double phi = pow(1.0 - e * e, m) * fmin((1.0 - r) / (1.0 - beta), 1.0);
     double g = cond * ANR_DENSITY * p1 * sqrt(ANR_TEMPERATURE / t1) * phi;
     return g * (p1 > p2);
 }
