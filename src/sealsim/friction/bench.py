@@ -266,12 +266,11 @@ def _mass_stepper(law, mass, stiffness, t, xd, fa, inputs, z0, progress):
 @njit(cache=True)
 def _mass_fun(t, y, args, dy):
     """d/dt [x, v, z...] of the body: m·dv/dt = F_app + k·(x_d − x) − F."""
-    n = y.shape[0]
     c = args[8]
     x_drive = profile_integral(args[4], args[5], t)
     f_ext = profile_value(args[6], args[7], t) + args[3] * (x_drive - y[0])
-    force, _ = law_rates(args[0], args[1], y.reshape(n, 1), 2, y[1], c[0], c[1], c[2], c[3],
-                         c[4], dy.reshape(n, 1), 0)
+    force, _ = law_rates(args[0], args[1], y[:, None], 2, y[1], c[0], c[1], c[2], c[3], c[4],
+                         dy[:, None], 0)
     dy[0] = y[1]
     dy[1] = (f_ext - force) / args[2]
 

@@ -165,7 +165,7 @@ def law_step(law, par, z0, v, dt, fn, z1):
 def _stepped_force(law, par, z0, v, dt, fn, b, pa, pb, temp, z1, rates):
     """(F, F_brk) after the step with v held: z1 = law_step(z0), then the force at (z1, v)."""
     law_step(law, par, z0, v, dt, fn, z1)
-    return law_rates(law, par, z1.reshape(z1.shape[0], 1), 0, v, fn, b, pa, pb, temp, rates,
+    return law_rates(law, par, z1[:, None], 0, v, fn, b, pa, pb, temp, rates,
                      0)
 
 

@@ -442,8 +442,9 @@ def _plain(y):
 def derivatives(t, y, mode, tables, dy, diag):
     """dy/dt at (t, y) for a state vector y of shape (n,) into dy (shape (n,))."""
     zero = _plain(y)
-    evaluate_column(t, y.reshape(y.shape[0], 1), zero, mode + zero, tables,
-                    dy.reshape(dy.shape[0], 1), diag, zero + RATES)
+    # y[:, None]: a column view without numba's general reshape (which costs a third of the
+    # whole evaluation)
+    evaluate_column(t, y[:, None], zero, mode + zero, tables, dy[:, None], diag, zero + RATES)
 
 
 @njit(cache=True)
@@ -483,8 +484,8 @@ def stick_margin(t, y, tables, work_y, dy, diag):
         work_y[i] = y[i]
     work_y[1] = 0.0
     zero = _plain(y)
-    evaluate_column(t, work_y.reshape(work_y.shape[0], 1), zero, STICK + zero, tables,
-                    dy.reshape(dy.shape[0], 1), diag, zero + OUTPUTS)
+    evaluate_column(t, work_y[:, None], zero, STICK + zero, tables, dy[:, None], diag,
+                    zero + OUTPUTS)
     return diag[D_HOLD, 0], diag[D_BRK, 0]
 
 
