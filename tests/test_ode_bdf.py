@@ -49,7 +49,7 @@ start, step, locate = SOLVER.start, SOLVER.step, SOLVER.locate     # globals num
 def run(ws, t0, y0, t1, args, events):
     """Integrate to t1, record the step ends and the down-crossings of y0 = 0."""
     start(ws, t0, y0, t1, args)
-    y = ws[7][2]
+    y = ws[2]
     ytmp = np.empty(y0.shape[0])
     times = [t0]
     g_old = y0[0]

@@ -69,145 +69,187 @@ OK, TOO_SMALL_STEP = 0, -1
 
 
 def workspace(n: int, ndyn: int, rtol: float, atol, max_step: float = np.inf) -> tuple:
-    """The solver state for ``n`` states of which the first ``ndyn`` are dynamic: a tuple of
-    arrays (float scalars, int scalars, atol, differences D, J, LU, pivots, and scratch)."""
-    s = np.zeros(S_NS)
-    iv = np.zeros(I_NI, dtype=np.int64)
-    s[S_RTOL] = rtol
-    s[S_MAX_STEP] = max_step
-    s[S_NEWTON_TOL] = max(10.0 * EPS / rtol, min(0.03, rtol ** 0.5))
+    """The solver state for ``n`` states of which the first ``ndyn`` are dynamic.
+
+    A tuple ``(w, iv, y, f, dy)``: one float array ``w`` with the float slots ``S_*`` first,
+    then atol, the differences D, J, the LU factors and scratch (offsets: :func:`_offsets`);
+    the int slots ``I_*`` and the pivots in ``iv``; the state after the last step ``y`` and two
+    work vectors.  Few arrays, and no views of them in the steps: numba counts references
+    of every array it hands around, which cost more than the arithmetic of a small system."""
+    size = _offsets(n, ndyn)[-1]
+    w = np.zeros(size)
+    iv = np.zeros(I_NI + ndyn, dtype=np.int64)
+    w[S_RTOL] = rtol
+    w[S_MAX_STEP] = max_step
+    w[S_NEWTON_TOL] = max(10.0 * EPS / rtol, min(0.03, rtol ** 0.5))
     iv[I_NDYN] = ndyn
-    atol = np.ascontiguousarray(np.broadcast_to(np.asarray(atol, dtype=float), (n,)))
-    return (s, iv, atol, np.zeros((MAX_ORDER + 3, n)), np.zeros((n, ndyn)),
-            np.zeros((ndyn, ndyn)), np.zeros(ndyn, dtype=np.int64), np.zeros((8, n)),
-            np.zeros((3, MAX_ORDER + 1, MAX_ORDER + 1)))
+    o_atol = _offsets(n, ndyn)[0]
+    w[o_atol:o_atol + n] = np.broadcast_to(np.asarray(atol, dtype=float), (n,))
+    return (w, iv, np.zeros(n), np.zeros(n), np.zeros(n))
+
+
+@njit(cache=True)
+def _offsets(n, ndyn):
+    """Offsets in ``w`` of atol, D, J (n × ndyn), LU (ndyn × ndyn), y_pred, psi, d, scale,
+    err, the scratch of :func:`change_differences` (3 × 6 × 6), and the size."""
+    o_atol = S_NS
+    o_d = o_atol + n
+    o_j = o_d + (MAX_ORDER + 3) * n
+    o_lu = o_j + n * ndyn
+    o_pred = o_lu + ndyn * ndyn
+    o_psi = o_pred + n
+    o_dd = o_psi + n
+    o_scale = o_dd + n
+    o_err = o_scale + n
+    o_r = o_err + n
+    return o_atol, o_d, o_j, o_lu, o_pred, o_psi, o_dd, o_scale, o_err, o_r, o_r + 108
 
 
 # -- small dense linear algebra -------------------------------------------------------------
 @njit(cache=True)
-def lu_factor(a, piv):
-    """LU factorisation with partial pivoting in place (LAPACK getrf, unblocked); returns
-    False for a singular matrix."""
-    n = a.shape[0]
-    for k in range(n):
+def lu_factor_at(a, o, m, piv, po):
+    """LU factorisation with partial pivoting (LAPACK getrf, unblocked) in place of the m × m
+    matrix a[o:o + m·m] (row-major), pivots into piv[po:po + m]; False when singular."""
+    for k in range(m):
         p = k
-        big = abs(a[k, k])
-        for i in range(k + 1, n):
-            if abs(a[i, k]) > big:
-                big = abs(a[i, k])
+        big = abs(a[o + k * m + k])
+        for i in range(k + 1, m):
+            if abs(a[o + i * m + k]) > big:
+                big = abs(a[o + i * m + k])
                 p = i
-        piv[k] = p
+        piv[po + k] = p
         if big == 0.0:
             return False
         if p != k:
-            for j in range(n):
-                tmp = a[k, j]
-                a[k, j] = a[p, j]
-                a[p, j] = tmp
-        inv = 1.0 / a[k, k]
-        for i in range(k + 1, n):
-            a[i, k] *= inv
-            m = a[i, k]
-            if m != 0.0:
-                for j in range(k + 1, n):
-                    a[i, j] -= m * a[k, j]
+            for j in range(m):
+                tmp = a[o + k * m + j]
+                a[o + k * m + j] = a[o + p * m + j]
+                a[o + p * m + j] = tmp
+        inv = 1.0 / a[o + k * m + k]
+        for i in range(k + 1, m):
+            a[o + i * m + k] *= inv
+            f = a[o + i * m + k]
+            if f != 0.0:
+                for j in range(k + 1, m):
+                    a[o + i * m + j] -= f * a[o + k * m + j]
     return True
 
 
 @njit(cache=True)
-def lu_solve(lu, piv, b):
-    """Solve with the factors of :func:`lu_factor`, b (length >= n) overwritten in its first
-    n entries."""
-    n = lu.shape[0]
-    for k in range(n):
-        p = piv[k]
+def lu_solve_at(a, o, m, piv, po, b):
+    """Solve with the factors of :func:`lu_factor_at`; b (length >= m) overwritten in its
+    first m entries."""
+    for k in range(m):
+        p = piv[po + k]
         if p != k:
             tmp = b[k]
             b[k] = b[p]
             b[p] = tmp
-    for i in range(n):
+    for i in range(m):
         acc = b[i]
         for j in range(i):
-            acc -= lu[i, j] * b[j]
+            acc -= a[o + i * m + j] * b[j]
         b[i] = acc
-    for i in range(n - 1, -1, -1):
+    for i in range(m - 1, -1, -1):
         acc = b[i]
-        for j in range(i + 1, n):
-            acc -= lu[i, j] * b[j]
-        b[i] = acc / lu[i, i]
+        for j in range(i + 1, m):
+            acc -= a[o + i * m + j] * b[j]
+        b[i] = acc / a[o + i * m + i]
+
+
+def lu_factor(a, piv):
+    """LU factorisation with partial pivoting of the square array ``a`` in place
+    (:func:`lu_factor_at`); returns False for a singular matrix."""
+    flat = a.reshape(-1)
+    ok = lu_factor_at(flat, 0, a.shape[0], piv, 0)
+    return ok
+
+
+def lu_solve(lu, piv, b):
+    """Solve with the factors of :func:`lu_factor` (b overwritten)."""
+    lu_solve_at(lu.reshape(-1), 0, lu.shape[0], piv, 0, b)
 
 
 @njit(cache=True)
-def rms(x, scale, m):
-    """RMS norm of x/scale over the first m entries (scipy's ``norm``)."""
+def _rms(w, o, scale_o, m):
+    """RMS norm of w[o + i]/w[scale_o + i] over i < m (scipy's ``norm``)."""
     acc = 0.0
     for i in range(m):
-        q = x[i] / scale[i]
+        q = w[o + i] / w[scale_o + i]
         acc += q * q
     return math.sqrt(acc) / math.sqrt(m)
 
 
 @njit(cache=True)
-def change_differences(D, order, factor, R):
-    """Re-express the differences D for a step size changed by ``factor`` (scipy's
-    ``change_D``: D[:order+1] = (R(factor)·R(1))ᵀ·D[:order+1]); R (3, 6, 6) is scratch."""
+def _rms_vec(x, w, scale_o, m):
+    """RMS norm of x[i]/w[scale_o + i] over i < m."""
+    acc = 0.0
+    for i in range(m):
+        q = x[i] / w[scale_o + i]
+        acc += q * q
+    return math.sqrt(acc) / math.sqrt(m)
+
+
+@njit(cache=True)
+def change_differences(w, od, n, order, factor, o_r):
+    """Re-express the differences D = w[od:] (rows of n) for a step size changed by
+    ``factor`` (scipy's ``change_D``: D[:order+1] = (R(factor)·R(1))ᵀ·D[:order+1]); scratch
+    w[o_r:o_r + 108]."""
     m = order + 1
-    r, u, ru = R[0], R[1], R[2]
+    r, u, ru = o_r, o_r + 36, o_r + 72        # three 6 × 6 matrices
     for j in range(m):             # R(factor) and U = R(1): cumulative products of M
-        r[0, j] = 1.0
-        u[0, j] = 1.0
+        w[r + j] = 1.0
+        w[u + j] = 1.0
     for i in range(1, m):
-        r[i, 0] = 0.0
-        u[i, 0] = 0.0
+        w[r + 6 * i] = 0.0
+        w[u + 6 * i] = 0.0
         for j in range(1, m):
-            r[i, j] = r[i - 1, j] * ((i - 1 - factor * j) / i)
-            u[i, j] = u[i - 1, j] * ((i - 1 - 1.0 * j) / i)
+            w[r + 6 * i + j] = w[r + 6 * (i - 1) + j] * ((i - 1 - factor * j) / i)
+            w[u + 6 * i + j] = w[u + 6 * (i - 1) + j] * ((i - 1 - 1.0 * j) / i)
     for i in range(m):
         for j in range(m):
             acc = 0.0
             for k in range(m):
-                acc += r[i, k] * u[k, j]
-            ru[i, j] = acc
-    n = D.shape[1]
+                acc += w[r + 6 * i + k] * w[u + 6 * k + j]
+            w[ru + 6 * i + j] = acc
     for c in range(n):
         for i in range(m):
-            r[0, i] = D[i, c]          # the column (row 0 of r is free now)
+            w[r + i] = w[od + i * n + c]          # the column (row 0 of r is free now)
         for i in range(m):
             acc = 0.0
             for k in range(m):
-                acc += ru[k, i] * r[0, k]
-            D[i, c] = acc
+                acc += w[ru + 6 * k + i] * w[r + k]
+            w[od + i * n + c] = acc
 
 
 @njit(cache=True)
 def dense(ws, t, out):
     """The solution at ``t`` (within the last step) from the BDF interpolant (scipy's
     ``BdfDenseOutput``)."""
-    s, iv, D = ws[0], ws[1], ws[3]
+    w, iv = ws[0], ws[1]
+    n = out.shape[0]
+    od = S_NS + n
     order = iv[I_ORDER]
-    h = s[S_H_ABS]
-    t_end = s[S_T]
-    n = D.shape[1]
+    h = w[S_H_ABS]
+    t_end = w[S_T]
     for i in range(n):
-        out[i] = D[0, i]
+        out[i] = w[od + i]
     p = 1.0
     for k in range(order):
         p *= (t - (t_end - h * k)) / (h * (1 + k))
+        row = od + (k + 1) * n
         for i in range(n):
-            out[i] += D[k + 1, i] * p
+            out[i] += w[row + i] * p
 
 
 # -- the problem-dependent functions (copied per problem by compile_bdf) --------------------
-def _newton(ws, args, t_new, c):
+def _newton(w, iv, y, f, dy, args, t_new, c, n, ndyn):
     """Simplified Newton iteration of the BDF system; (converged, iterations)."""
-    s, iv, atol, D, J, LU, piv, buf = ws[0], ws[1], ws[2], ws[3], ws[4], ws[5], ws[6], ws[7]
-    y_pred, psi, y, d, f, dy, scale = buf[0], buf[1], buf[2], buf[3], buf[4], buf[5], buf[6]
-    n = y.shape[0]
-    ndyn = iv[I_NDYN]
-    tol = s[S_NEWTON_TOL]
+    o_atol, od, oj, olu, opred, opsi, odd, oscale, oerr, o_r, _ = _offsets(n, ndyn)
+    tol = w[S_NEWTON_TOL]
     for i in range(n):
-        y[i] = y_pred[i]
-        d[i] = 0.0
+        y[i] = w[opred + i]
+        w[odd + i] = 0.0
     dy_norm_old = -1.0
     converged = False
     iterations = 0
@@ -222,15 +264,15 @@ def _newton(ws, args, t_new, c):
         if not finite:
             break
         for i in range(n):
-            dy[i] = c * f[i] - psi[i] - d[i]
-        lu_solve(LU, piv, dy)
-        c_lu = s[S_C_LU]        # the quadrature rows of the matrix that was factorised
+            dy[i] = c * f[i] - w[opsi + i] - w[odd + i]
+        lu_solve_at(w, olu, ndyn, iv, I_NI, dy)
+        c_lu = w[S_C_LU]        # the quadrature rows of the matrix that was factorised
         for i in range(ndyn, n):              # quadratures: (dy - c·J·dy)_q = r_q
             acc = 0.0
             for j in range(ndyn):
-                acc += J[i, j] * dy[j]
+                acc += w[oj + i * ndyn + j] * dy[j]
             dy[i] += c_lu * acc
-        dy_norm = rms(dy, scale, ndyn)
+        dy_norm = _rms_vec(dy, w, oscale, ndyn)
         rate = -1.0
         if dy_norm_old >= 0.0:
             rate = dy_norm / dy_norm_old
@@ -239,7 +281,7 @@ def _newton(ws, args, t_new, c):
             break
         for i in range(n):
             y[i] += dy[i]
-            d[i] += dy[i]
+            w[odd + i] += dy[i]
         if dy_norm == 0.0 or (rate >= 0.0 and rate / (1.0 - rate) * dy_norm < tol):
             converged = True
             break
@@ -247,17 +289,25 @@ def _newton(ws, args, t_new, c):
     return converged, iterations
 
 
+def _jacobian(w, iv, t, y, args, n, ndyn):
+    """JAC into the J block of w (through the scratch rows of f and dy is not possible: J is
+    n × ndyn), counted."""
+    oj = _offsets(n, ndyn)[2]
+    JAC(t, y, args, w[oj:oj + n * ndyn].reshape(n, ndyn))  # noqa: F821
+    iv[I_NJEV] += 1
+
+
 def start(ws, t0, y0, t_bound, args):
     """Start (or restart) at (t0, y0) towards t_bound: order 1, the initial step of scipy's
     ``select_initial_step``, a fresh Jacobian."""
-    s, iv, atol, D, J, buf = ws[0], ws[1], ws[2], ws[3], ws[4], ws[7]
-    f0, y1, f1, scale = buf[4], buf[5], buf[3], buf[6]
+    w, iv, y1, f0, f1 = ws[0], ws[1], ws[2], ws[3], ws[4]
     n = y0.shape[0]
     ndyn = iv[I_NDYN]
-    rtol = s[S_RTOL]
-    s[S_T] = t0
-    s[S_T_OLD] = t0
-    s[S_T_BOUND] = t_bound
+    o_atol, od, oj, olu, opred, opsi, odd, oscale, oerr, o_r, _ = _offsets(n, ndyn)
+    rtol = w[S_RTOL]
+    w[S_T] = t0
+    w[S_T_OLD] = t0
+    w[S_T_BOUND] = t_bound
     FUN(t0, y0, args, f0)  # noqa: F821
     iv[I_NFEV] += 1
     interval = abs(t_bound - t0)
@@ -265,9 +315,9 @@ def start(ws, t0, y0, t_bound, args):
         h_abs = 0.0
     else:
         for i in range(n):
-            scale[i] = atol[i] + abs(y0[i]) * rtol
-        d0 = rms(y0, scale, ndyn)
-        d1 = rms(f0, scale, ndyn)
+            w[oscale + i] = w[o_atol + i] + abs(y0[i]) * rtol
+        d0 = _rms_vec(y0, w, oscale, ndyn)
+        d1 = _rms_vec(f0, w, oscale, ndyn)
         h0 = 1e-6 if (d0 < 1e-5 or d1 < 1e-5) else 0.01 * d0 / d1
         h0 = min(h0, interval)
         for i in range(n):
@@ -276,18 +326,18 @@ def start(ws, t0, y0, t_bound, args):
         iv[I_NFEV] += 1
         for i in range(n):
             y1[i] = f1[i] - f0[i]
-        d2 = rms(y1, scale, ndyn) / h0
+        d2 = _rms_vec(y1, w, oscale, ndyn) / h0
         if d1 <= 1e-15 and d2 <= 1e-15:
             h1 = max(1e-6, h0 * 1e-3)
         else:
             h1 = (0.01 / max(d1, d2)) ** 0.5
-        h_abs = min(100.0 * h0, h1, interval, s[S_MAX_STEP])
-    s[S_H_ABS] = h_abs
+        h_abs = min(100.0 * h0, h1, interval, w[S_MAX_STEP])
+    w[S_H_ABS] = h_abs
     for i in range(n):
-        D[0, i] = y0[i]
-        D[1, i] = f0[i] * h_abs
-    JAC(t0, y0, args, J)  # noqa: F821
-    iv[I_NJEV] += 1
+        w[od + i] = y0[i]
+        w[od + n + i] = f0[i] * h_abs
+        y1[i] = y0[i]
+    _jacobian(w, iv, t0, y0, args, n, ndyn)
     iv[I_ORDER] = 1
     iv[I_NEQ] = 0
     iv[I_LU_OK] = 0
@@ -295,26 +345,25 @@ def start(ws, t0, y0, t_bound, args):
 
 def step(ws, args):
     """One accepted step (scipy's ``BDF._step_impl``); returns :data:`OK` or
-    :data:`TOO_SMALL_STEP`.  Afterwards ws[7][2] holds the new state and :func:`dense`
+    :data:`TOO_SMALL_STEP`.  Afterwards ws[2] holds the new state and :func:`dense`
     interpolates over the step."""
-    s, iv, atol, D, J, LU, piv, buf, R = (ws[0], ws[1], ws[2], ws[3], ws[4], ws[5], ws[6],
-                                          ws[7], ws[8])
-    y_pred, psi, y_new, d, scale, err = buf[0], buf[1], buf[2], buf[3], buf[6], buf[7]
-    n = D.shape[1]
+    w, iv, y, f, dy = ws[0], ws[1], ws[2], ws[3], ws[4]
+    n = y.shape[0]
     ndyn = iv[I_NDYN]
-    rtol = s[S_RTOL]
-    t = s[S_T]
-    t_bound = s[S_T_BOUND]
-    max_step = s[S_MAX_STEP]
+    o_atol, od, oj, olu, opred, opsi, odd, oscale, oerr, o_r, _ = _offsets(n, ndyn)
+    rtol = w[S_RTOL]
+    t = w[S_T]
+    t_bound = w[S_T_BOUND]
+    max_step = w[S_MAX_STEP]
     order = iv[I_ORDER]
     min_step = 10.0 * abs(np.nextafter(t, np.inf) - t)
-    h_abs = s[S_H_ABS]
+    h_abs = w[S_H_ABS]
     if h_abs > max_step:
-        change_differences(D, order, max_step / h_abs, R)
+        change_differences(w, od, n, order, max_step / h_abs, o_r)
         h_abs = max_step
         iv[I_NEQ] = 0
     elif h_abs < min_step:
-        change_differences(D, order, min_step / h_abs, R)
+        change_differences(w, od, n, order, min_step / h_abs, o_r)
         h_abs = min_step
         iv[I_NEQ] = 0
     current_jac = False
@@ -327,7 +376,7 @@ def step(ws, args):
         t_new = t + h_abs
         if t_new - t_bound > 0.0:
             t_new = t_bound
-            change_differences(D, order, abs(t_new - t) / h_abs, R)
+            change_differences(w, od, n, order, abs(t_new - t) / h_abs, o_r)
             iv[I_NEQ] = 0
             iv[I_LU_OK] = 0
         h = t_new - t
@@ -335,74 +384,75 @@ def step(ws, args):
         for i in range(n):
             acc = 0.0
             for k in range(order + 1):
-                acc += D[k, i]
-            y_pred[i] = acc
-            scale[i] = atol[i] + rtol * abs(acc)
+                acc += w[od + k * n + i]
+            w[opred + i] = acc
+            w[oscale + i] = w[o_atol + i] + rtol * abs(acc)
             acc = 0.0
             for k in range(1, order + 1):
-                acc += D[k, i] * GAMMA[k]
-            psi[i] = acc / ALPHA[order]
+                acc += w[od + k * n + i] * GAMMA[k]
+            w[opsi + i] = acc / ALPHA[order]
         c = h / ALPHA[order]
         converged = False
         while not converged:
             if iv[I_LU_OK] == 0:
                 for i in range(ndyn):
                     for j in range(ndyn):
-                        LU[i, j] = -c * J[i, j]
-                    LU[i, i] += 1.0
-                lu_factor(LU, piv)
-                s[S_C_LU] = c
+                        w[olu + i * ndyn + j] = -c * w[oj + i * ndyn + j]
+                    w[olu + i * ndyn + i] += 1.0
+                lu_factor_at(w, olu, ndyn, iv, I_NI)
+                w[S_C_LU] = c
                 iv[I_NLU] += 1
                 iv[I_LU_OK] = 1
-            converged, n_iter = _newton(ws, args, t_new, c)
+            converged, n_iter = _newton(w, iv, y, f, dy, args, t_new, c, n, ndyn)
             if not converged:
                 if current_jac:
                     break
-                JAC(t_new, y_pred, args, J)  # noqa: F821
-                iv[I_NJEV] += 1
+                for i in range(n):
+                    f[i] = w[opred + i]
+                _jacobian(w, iv, t_new, f, args, n, ndyn)
                 iv[I_LU_OK] = 0
                 current_jac = True
         if not converged:
             h_abs *= 0.5
-            change_differences(D, order, 0.5, R)
+            change_differences(w, od, n, order, 0.5, o_r)
             iv[I_NEQ] = 0
             iv[I_LU_OK] = 0
             continue
         safety = 0.9 * (2 * NEWTON_MAXITER + 1) / (2 * NEWTON_MAXITER + n_iter)
         for i in range(n):
-            scale[i] = atol[i] + rtol * abs(y_new[i])
-            err[i] = ERROR_CONST[order] * d[i]
-        error_norm = rms(err, scale, ndyn)
+            w[oscale + i] = w[o_atol + i] + rtol * abs(y[i])
+            w[oerr + i] = ERROR_CONST[order] * w[odd + i]
+        error_norm = _rms(w, oerr, oscale, ndyn)
         if error_norm > 1.0:
             factor = max(MIN_FACTOR, safety * error_norm ** (-1.0 / (order + 1)))
             h_abs *= factor
-            change_differences(D, order, factor, R)
+            change_differences(w, od, n, order, factor, o_r)
             iv[I_NEQ] = 0
         else:
             break
     iv[I_NEQ] += 1
     iv[I_NSTEPS] += 1
-    s[S_T_OLD] = t
-    s[S_T] = t_new
-    s[S_H_ABS] = h_abs
+    w[S_T_OLD] = t
+    w[S_T] = t_new
+    w[S_H_ABS] = h_abs
     for i in range(n):
-        D[order + 2, i] = d[i] - D[order + 1, i]
-        D[order + 1, i] = d[i]
+        w[od + (order + 2) * n + i] = w[odd + i] - w[od + (order + 1) * n + i]
+        w[od + (order + 1) * n + i] = w[odd + i]
     for k in range(order, -1, -1):
         for i in range(n):
-            D[k, i] += D[k + 1, i]
+            w[od + k * n + i] += w[od + (k + 1) * n + i]
     if iv[I_NEQ] < order + 1:
         return OK
     if order > 1:
         for i in range(n):
-            err[i] = ERROR_CONST[order - 1] * D[order, i]
-        error_m = rms(err, scale, ndyn)
+            w[oerr + i] = ERROR_CONST[order - 1] * w[od + order * n + i]
+        error_m = _rms(w, oerr, oscale, ndyn)
     else:
         error_m = np.inf
     if order < MAX_ORDER:
         for i in range(n):
-            err[i] = ERROR_CONST[order + 1] * D[order + 2, i]
-        error_p = rms(err, scale, ndyn)
+            w[oerr + i] = ERROR_CONST[order + 1] * w[od + (order + 2) * n + i]
+        error_p = _rms(w, oerr, oscale, ndyn)
     else:
         error_p = np.inf
     # factors = error_norms ** (-1 / [order, order + 1, order + 2]); 0 ** -x = inf
@@ -420,8 +470,8 @@ def step(ws, args):
     order += delta
     iv[I_ORDER] = order
     factor = min(MAX_FACTOR, safety * best)
-    s[S_H_ABS] = h_abs * factor
-    change_differences(D, order, factor, R)
+    w[S_H_ABS] = h_abs * factor
+    change_differences(w, od, n, order, factor, o_r)
     iv[I_NEQ] = 0
     iv[I_LU_OK] = 0
     return OK
@@ -510,7 +560,7 @@ def compile_bdf(name: str, fun, jac, event) -> BdfSolver:
     names the compiled copies in numba's disk cache."""
     env = dict(globals())
     env.update(FUN=fun, JAC=jac, EVENT=event)
-    for func in (_newton, start, step, locate):
+    for func in (_newton, _jacobian, start, step, locate):
         copy = types.FunctionType(func.__code__, env, func.__name__, func.__defaults__,
                                   func.__closure__)
         copy.__qualname__ = f"{func.__qualname__}__{name}"

@@ -300,8 +300,7 @@ def run_interval(t, t_end, y, mode, tables, work, ws, grid, k, samples, sample_m
     of the last transitions (chattering guard; recent[-1] is the ring index).  Returns
     (result, t, mode, k, segments): :data:`DONE`, :data:`SEGMENTS_FULL` (call again),
     :data:`STEP_FAILED` or :data:`CHATTERING`."""
-    s, iv, buf = ws[0], ws[1], ws[7]
-    y_new = buf[2]
+    s, iv, y_new = ws[0], ws[1], ws[2]
     y_tmp = work[7]
     cap = seg_t.shape[0]
     nseg = 0
