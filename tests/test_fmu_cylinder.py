@@ -10,6 +10,7 @@ from pathlib import Path
 import fmpy
 import numpy as np
 import pytest
+import tomli_w
 from fmpy.validation import validate_fmu
 
 from fmu_build_once import build_once
@@ -172,3 +173,27 @@ def test_unsupported_cases_are_refused(tmp_path):
     rig = load_pneumatic_cases(load_toml(PNEUMATIC / "friction_rig.toml"))
     with pytest.raises(InputError, match="test rig"):
         cylinder_system(next(iter(rig.values())), PNEUMATIC)
+
+
+def test_fe_map_in_c_is_the_compiled_interpolant(tmp_path):
+    # a seal with a gridded (FE) contact map: the C port of the Hermite grid interpolant
+    # gives the numba one's values (the build's right-hand-side check, 1e-9 of the range)
+    import xarray as xr
+
+    p = np.linspace(0.0, 8e5, 9)
+    t = np.array([283.15, 303.15, 333.15])
+    pp, tt = np.meshgrid(p, t, indexing="ij")
+    fn = 30.0 + 6e-5 * pp + 0.2 * (tt - 293.15) + 5e-12 * pp ** 2
+    b = 5e-4 + 4e-10 * pp + 1e-6 * (tt - 293.15)
+    dims = ("squeeze", "temperature", "pressure")
+    xr.Dataset({"F_N": (dims, fn.T[None]), "b": (dims, b.T[None])},
+               coords={"squeeze": [0.12], "temperature": t, "pressure": p}).to_netcdf(
+        tmp_path / "map.nc")
+    data = load_toml(PNEUMATIC / "cylinder_32.toml")
+    data.pop("variants")
+    data["seals"][1]["map"] = {"file": str(tmp_path / "map.nc")}
+    case_file = tmp_path / "fe.toml"
+    case_file.write_text(tomli_w.dumps(data))
+    result = build_fmu(case_file, tmp_path / "fe.fmu", kind="me")
+    assert result.report["seals"][1]["contact_map"] == "FEContactMap"
+    assert max(result.report["rhs_check"]["max_relative_difference"].values()) <= 1e-9
