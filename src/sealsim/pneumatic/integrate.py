@@ -375,7 +375,15 @@ def run_interval(t, t_end, y, mode, tables, work, ws, grid, k, samples, sample_m
 
 
 def _integrate_compiled(system, progress, sampler) -> list[Segment]:
-    """All valve intervals with :func:`run_interval`; fills ``sampler`` with the samples."""
+    """All valve intervals with :func:`run_interval`; fills ``sampler`` (a
+    :class:`.results.Sampler`) with the samples on its grid; any other ``on_segment`` callable
+    is called with every segment (they carry no dense output)."""
+    if not hasattr(sampler, "store"):
+        segments = _integrate_compiled(system, progress, _EndOnly(system.duration))
+        if sampler is not None:
+            for seg in segments:
+                sampler(seg)
+        return segments
     case = system.case
     end = system.duration
     rtol = case.solver.rtol
@@ -442,6 +450,16 @@ def _integrate_compiled(system, progress, sampler) -> list[Segment]:
     return segments
 
 
+class _EndOnly:
+    """A sample grid of one point, the end (a run without an output table)."""
+
+    def __init__(self, end: float):
+        self.grid = np.array([float(end)])
+
+    def store(self, times, states, modes) -> None:
+        pass
+
+
 def _initial_mode(system, t, y) -> int:
     if system.position is not None:
         return rhs.PRESCRIBED
@@ -453,8 +471,8 @@ def _initial_mode(system, t, y) -> int:
 def integrate(system, progress=None, on_segment=None) -> list[Segment]:
     """Integrate a :class:`.system.PneumaticSystem` segment by segment (valve switches,
     stick/slip transitions); ``on_segment(segment)`` and ``progress(t, end)`` after every
-    segment (the compiled method: ``progress`` after every valve interval, and
-    ``on_segment`` must be a :class:`.results.Sampler`, which receives the samples)."""
+    segment (the compiled method: ``progress`` after every valve interval; a
+    :class:`.results.Sampler` as ``on_segment`` receives the samples)."""
     case = system.case
     method = case.solver.method
     if method == "compiled":
