@@ -322,7 +322,7 @@ def walther_viscosity_ratio(t, tref, wa, wb):
 # only the arrays, has no branch on the argument shapes and vectorises (SIMD) where the kernel
 # has no call into the C library.  The loops are serial on purpose: on the shared 2-core
 # machine a ``prange`` version was 2x slower than the serial one whenever another process
-# held a core (the slower thread sets the pace), while the serial loops beat numpy either way.
+# held a core (the slower thread sets the pace).
 # --------------------------------------------------------------------------------------------
 def _at(a, i):  # pragma: no cover - compiled through the overload below
     return a[i]
@@ -335,62 +335,59 @@ def _overload_at(a, i):
     return lambda a, i: a
 
 
-loop = kernel
-
-
-@loop
+@kernel
 def _loop_pressure_scaled_force(f0, f, pa, pb, out):
     for i in range(out.shape[0]):
         out[i] = pressure_scaled_force(_at(f0, i), _at(f, i), _at(pa, i), _at(pb, i))
 
 
-@loop
+@kernel
 def _loop_stribeck_scaled_levels(fc, fs, f, pa, pb, out, out2):
     for i in range(out.shape[0]):
         out[i], out2[i] = stribeck_scaled_levels(_at(fc, i), _at(fs, i), _at(f, i),
                                                  _at(pa, i), _at(pb, i))
 
 
-@loop
+@kernel
 def _loop_stribeck_level(v, fc, fs, vs, d, out):
     for i in range(out.shape[0]):
         out[i] = stribeck_level(_at(v, i), _at(fc, i), _at(fs, i), _at(vs, i), _at(d, i))
 
 
-@loop
+@kernel
 def _loop_stribeck_level_derivative(v, fc, fs, vs, d, out):
     for i in range(out.shape[0]):
         out[i] = stribeck_level_derivative(_at(v, i), _at(fc, i), _at(fs, i), _at(vs, i),
                                            _at(d, i))
 
 
-@loop
+@kernel
 def _loop_stribeck_force(v, fc, fs, vs, fv, d, out):
     for i in range(out.shape[0]):
         out[i] = stribeck_force(_at(v, i), _at(fc, i), _at(fs, i), _at(vs, i), _at(fv, i),
                                 _at(d, i))
 
 
-@loop
+@kernel
 def _loop_coulomb_viscous_force(v, fc, fv, out):
     for i in range(out.shape[0]):
         out[i] = coulomb_viscous_force(_at(v, i), _at(fc, i), _at(fv, i))
 
 
-@loop
+@kernel
 def _loop_lugre_bristle_rate(z, v, s0, g, out):
     for i in range(out.shape[0]):
         out[i] = lugre_bristle_rate(_at(z, i), _at(v, i), _at(s0, i), _at(g, i))
 
 
-@loop
+@kernel
 def _loop_lugre_force(z, zdot, v, s0, s1, s2, out):
     for i in range(out.shape[0]):
         out[i] = lugre_force(_at(z, i), _at(zdot, i), _at(v, i), _at(s0, i), _at(s1, i),
                              _at(s2, i))
 
 
-@loop
+@kernel
 def _loop_lugre_rate(z, v, s0, fc, fs, vs, d, out):
     """dz/dt of LuGre with g(v) of its Stribeck curve (one pass: LuGre.derivatives)."""
     for i in range(out.shape[0]):
@@ -399,7 +396,7 @@ def _loop_lugre_rate(z, v, s0, fc, fs, vs, d, out):
         out[i] = lugre_bristle_rate(_at(z, i), vi, _at(s0, i), g)
 
 
-@loop
+@kernel
 def _loop_lugre_state_force(z, v, s0, s1, s2, fc, fs, vs, d, out):
     """F of LuGre from the state and v (one pass: LuGre.force)."""
     for i in range(out.shape[0]):
@@ -410,87 +407,87 @@ def _loop_lugre_state_force(z, v, s0, s1, s2, fc, fs, vs, d, out):
         out[i] = lugre_force(zi, zdot, vi, _at(s0, i), _at(s1, i), _at(s2, i))
 
 
-@loop
+@kernel
 def _loop_lugre_affine(v, dt, s0, g, out, out2):
     for i in range(out.shape[0]):
         out[i], out2[i] = lugre_affine(_at(v, i), _at(dt, i), _at(s0, i), _at(g, i))
 
 
-@loop
+@kernel
 def _loop_dahl_bristle_rate(z, v, s0, fc, a, out):
     for i in range(out.shape[0]):
         out[i] = dahl_bristle_rate(_at(z, i), _at(v, i), _at(s0, i), _at(fc, i), _at(a, i))
 
 
-@loop
+@kernel
 def _loop_dahl_bristle_step(z, v, dt, s0, fc, a, out):
     for i in range(out.shape[0]):
         out[i] = dahl_bristle_step(_at(z, i), _at(v, i), _at(dt, i), _at(s0, i), _at(fc, i),
                                    _at(a, i))
 
 
-@loop
+@kernel
 def _loop_gms_element_rate(z, v, k, frac, c, s, out):
     for i in range(out.shape[0]):
         out[i] = gms_element_rate(_at(z, i), _at(v, i), _at(k, i), _at(frac, i), _at(c, i),
                                   _at(s, i))
 
 
-@loop
+@kernel
 def _loop_gms_element_step(z, v, dt, k, frac, c, s, out):
     for i in range(out.shape[0]):
         out[i] = gms_element_step(_at(z, i), _at(v, i), _at(dt, i), _at(k, i), _at(frac, i),
                                   _at(c, i), _at(s, i))
 
 
-@loop
+@kernel
 def _loop_theta_load_factor(fn, fref, n, out):
     for i in range(out.shape[0]):
         out[i] = theta_load_factor(_at(fn, i), _at(fref, i), _at(n, i))
 
 
-@loop
+@kernel
 def _loop_theta_rate(th, v, tau, al, fn, fref, n, out):
     for i in range(out.shape[0]):
         out[i] = theta_rate(_at(th, i), _at(v, i), _at(tau, i), _at(al, i), _at(fn, i),
                             _at(fref, i), _at(n, i))
 
 
-@loop
+@kernel
 def _loop_theta_transition_velocity(tau, al, fn, fref, n, out):
     for i in range(out.shape[0]):
         out[i] = theta_transition_velocity(_at(tau, i), _at(al, i), _at(fn, i), _at(fref, i),
                                            _at(n, i))
 
 
-@loop
+@kernel
 def _loop_theta_steady(v, tau, al, fn, fref, n, out):
     for i in range(out.shape[0]):
         out[i] = theta_steady(_at(v, i), _at(tau, i), _at(al, i), _at(fn, i), _at(fref, i),
                               _at(n, i))
 
 
-@loop
+@kernel
 def _loop_theta_affine(v, dt, tau, al, fn, fref, n, out, out2):
     for i in range(out.shape[0]):
         out[i], out2[i] = theta_affine(_at(v, i), _at(dt, i), _at(tau, i), _at(al, i),
                                        _at(fn, i), _at(fref, i), _at(n, i))
 
 
-@loop
+@kernel
 def _loop_theta_friction_level(th, fn, fa, fb, out):
     for i in range(out.shape[0]):
         out[i] = theta_friction_level(_at(th, i), _at(fn, i), _at(fa, i), _at(fb, i))
 
 
-@loop
+@kernel
 def _loop_theta_force(th, v, fn, b, fa, fb, gamma, out):
     for i in range(out.shape[0]):
         out[i] = theta_force(_at(th, i), _at(v, i), _at(fn, i), _at(b, i), _at(fa, i),
                              _at(fb, i), _at(gamma, i))
 
 
-@loop
+@kernel
 def _loop_walther_viscosity_ratio(t, tref, wa, wb, out):
     for i in range(out.shape[0]):
         out[i] = walther_viscosity_ratio(_at(t, i), _at(tref, i), _at(wa, i), _at(wb, i))
