@@ -454,14 +454,16 @@ def jacobian(t, y, mode, tables, scale, work_y, work_dy, f0, diag, jac):
     state plus one at y."""
     n = y.shape[0]
     ndyn = scale.shape[0]
+    zero = _plain(y)
     derivatives(t, y, mode, tables, f0, diag)
     jac[:, :] = 0.0
+    shifted, rates = work_y[:, None], work_dy[:, None]      # column views, made once
     for j in range(ndyn):
         h = 1.5e-8 * max(abs(y[j]), scale[j])
         for i in range(n):
             work_y[i] = y[i]
         work_y[j] = y[j] + h
-        derivatives(t, work_y, mode, tables, work_dy, diag)
+        evaluate_column(t, shifted, zero, mode + zero, tables, rates, diag, zero + RATES)
         for i in range(n):
             jac[i, j] = (work_dy[i] - f0[i]) / h
 
