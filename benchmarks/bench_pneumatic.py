@@ -8,7 +8,8 @@ loop (``solver.method = "compiled"``) -- and two baselines measured in the same 
 case: the LSODA driver (scipy's LSODA routine called from Python with the compiled right-hand
 side, the default before issue 27) and the former implementation of before issue 13 (numpy
 glue, friction laws as numpy objects, solve_ivp; tests/reference_v0).  All are timed as the
-best of three runs after a warm-up run that loads (or compiles) the numba code.  Targets
+best of 7 runs (FE map and seal heating: 5; before issue 13: 3) after a warm-up run that loads
+(or compiles) the numba code: on a shared machine the best run is the one least disturbed.  Targets
 (issue 27): >= 1000x real time with the analytic map, >= 700x with the FE map of the rod seal
 and with seal heating.
 
@@ -97,20 +98,20 @@ def main() -> None:
     warm = time.perf_counter() - t0
     simulate(_with(short, method="LSODA"), build_seals(short, EXAMPLE.parent))
     simulate_reference(_with(short, method="LSODA"), build_seals(short, EXAMPLE.parent))
-    wall, cpu, result = _best(lambda: simulate(case, seals))
-    ls_wall, _, ls = _best(lambda: simulate(lsoda, seals))
+    wall, cpu, result = _best(lambda: simulate(case, seals), repeat=7)
+    ls_wall, _, ls = _best(lambda: simulate(lsoda, seals), repeat=7)
     base_wall, _, _ = _best(lambda: simulate_reference(lsoda, seals))
     stats = result.stats
     summary, ls_summary = result.summary(), ls.summary()
     print(f"load average (1 min) {load:.2f} on {os.cpu_count()} cores")
     print(f"first call, numba code loaded or compiled (0.2 s simulated): {warm:.2f} s")
     print(f"10 s of {EXAMPLE.name} [T25C], end to end (simulate):")
-    print(f"  compiled BDF : best of 3 = {wall * 1e3:.2f} ms wall, {cpu * 1e3:.2f} ms CPU "
+    print(f"  compiled BDF : best of 7 = {wall * 1e3:.2f} ms wall, {cpu * 1e3:.2f} ms CPU "
           f"(integration {stats['wall_time_s'] * 1e3:.2f} ms; {stats['steps']} steps, "
           f"{stats['rhs_evaluations']} RHS, {stats['jacobian_evaluations']} Jacobians, "
           f"{stats['segments']} segments), real-time factor {SIMULATED / wall:.0f}x "
           f"(CPU: {SIMULATED / cpu:.0f}x)")
-    print(f"  LSODA        : best of 3 = {ls_wall * 1e3:.2f} ms wall (integration "
+    print(f"  LSODA        : best of 7 = {ls_wall * 1e3:.2f} ms wall (integration "
           f"{ls.stats['wall_time_s'] * 1e3:.2f} ms; {ls.stats['steps']} steps), real-time "
           f"factor {SIMULATED / ls_wall:.0f}x; compiled/LSODA speed-up {ls_wall / wall:.1f}x")
     print(f"  before issue 13: best of 3 = {base_wall * 1e3:.1f} ms wall, real-time factor "
@@ -131,8 +132,9 @@ def main() -> None:
     fe_seals = build_seals(fe_case, FE_EXAMPLE.parent)    # FE map: built once, then cached
     built = time.perf_counter() - t0
     simulate(_case(0.2, FE_EXAMPLE), fe_seals)
-    fe_wall, _, _ = _best(lambda: simulate(fe_case, fe_seals))
-    fe_ls_wall, _, _ = _best(lambda: simulate(_with(fe_case, method="LSODA"), fe_seals))
+    fe_wall, _, _ = _best(lambda: simulate(fe_case, fe_seals), repeat=5)
+    fe_ls_wall, _, _ = _best(lambda: simulate(_with(fe_case, method="LSODA"), fe_seals),
+                             repeat=5)
     print(f"with the FE map of the rod seal ({FE_EXAMPLE.name}): map ready in {built:.1f} s, "
           f"10 s simulated in {fe_wall * 1e3:.2f} ms, real-time factor "
           f"{SIMULATED / fe_wall:.0f}x (LSODA {SIMULATED / fe_ls_wall:.0f}x)")
@@ -141,8 +143,9 @@ def main() -> None:
     hot_case = _case(SIMULATED, thermal=ThermalModel())
     hot_seals = build_seals(hot_case, EXAMPLE.parent)
     simulate(_case(0.2, thermal=ThermalModel()), build_seals(_case(0.2), EXAMPLE.parent))
-    hot_wall, _, hot = _best(lambda: simulate(hot_case, hot_seals))
-    hot_ls_wall, _, _ = _best(lambda: simulate(_with(hot_case, method="LSODA"), hot_seals))
+    hot_wall, _, hot = _best(lambda: simulate(hot_case, hot_seals), repeat=5)
+    hot_ls_wall, _, _ = _best(lambda: simulate(_with(hot_case, method="LSODA"), hot_seals),
+                              repeat=5)
     print(f"with seal heating: 10 s simulated in {hot_wall * 1e3:.2f} ms, real-time factor "
           f"{SIMULATED / hot_wall:.0f}x (LSODA {SIMULATED / hot_ls_wall:.0f}x; heat balance "
           f"error {hot.balances['heat_balance_rel_error']:.1e})")
