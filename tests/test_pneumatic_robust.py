@@ -57,7 +57,11 @@ def test_random_command_sequences_run_clean(steps, centre, load, bristles):
         theta = f[f"theta_{name}"]
         assert theta.min() >= 0.0 and theta.max() <= 1.0
     assert result.balances["mass_balance_rel_error"] < 1e-12
-    assert result.balances["energy_balance_rel_error"] < 1e-3
+    # the energy balance measures the integration (kinetic and stop energy are not linear in
+    # the states): a piston pressed into its stop from rest stores ½kδ² with δ resolved to the
+    # position tolerance (1 µm at rtol 1e-5): up to 1.2e-3 with the compiled BDF, 1.5e-4 with
+    # LSODA in the worst sequence hypothesis found (retract, retract, 123 N load)
+    assert result.balances["energy_balance_rel_error"] < 2e-3
 
 
 @pytest.mark.parametrize("overrides, expected", [

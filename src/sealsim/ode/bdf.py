@@ -12,8 +12,8 @@ Two additions for the models here:
   the same formula and the same Newton iteration, but the LU factorisation is of the
   ``ndyn × ndyn`` block only -- a quadrature's Newton update follows from the dynamic one
   through its Jacobian row, so a linear invariant such as the mass balance holds to round-off
-  as with the full matrix -- and they are excluded from the convergence norm (the RMS over
-  the dynamic states) and, unless asked for (:func:`workspace`), from the error norm;
+  as with the full matrix -- and they are excluded from the error and convergence norms (the
+  RMS over the dynamic states);
 * **events**: :func:`locate` finds the root of an event function on the dense output of the
   last step with Brent's method (scipy's ``brentq``, tolerance 4 ε, as ``solve_ivp``).
 
@@ -62,18 +62,14 @@ ERROR_CONST = _KAPPA * GAMMA + 1.0 / np.arange(1, MAX_ORDER + 2)
 #: float slots of the workspace: time, time before the last step, step size, tolerance,
 #: largest step, Newton tolerance, end of the interval, c = h/α of the factorised matrix
 (S_T, S_T_OLD, S_H_ABS, S_RTOL, S_MAX_STEP, S_NEWTON_TOL, S_T_BOUND, S_C_LU, S_NS) = range(9)
-#: integer slots: order, equal steps since the last change, LU valid, counters, ndyn, the
-#: number of (leading) states in the error norm
-(I_ORDER, I_NEQ, I_LU_OK, I_NFEV, I_NJEV, I_NLU, I_NSTEPS, I_NDYN, I_NERR, I_NI) = range(10)
+#: integer slots: order, equal steps since the last change, LU valid, counters, ndyn
+(I_ORDER, I_NEQ, I_LU_OK, I_NFEV, I_NJEV, I_NLU, I_NSTEPS, I_NDYN, I_NI) = range(9)
 #: step results
 OK, TOO_SMALL_STEP = 0, -1
 
 
-def workspace(n: int, ndyn: int, rtol: float, atol, max_step: float = np.inf,
-              control_quadratures: bool = False) -> tuple:
-    """The solver state for ``n`` states of which the first ``ndyn`` are dynamic; with
-    ``control_quadratures`` the quadrature states count in the error norm too (with their
-    atol), otherwise the dynamic states alone.
+def workspace(n: int, ndyn: int, rtol: float, atol, max_step: float = np.inf) -> tuple:
+    """The solver state for ``n`` states of which the first ``ndyn`` are dynamic.
 
     A tuple ``(w, iv, y, f, dy)``: one float array ``w`` with the float slots ``S_*`` first,
     then atol, the differences D, J, the LU factors and scratch (offsets: :func:`_offsets`);
@@ -87,7 +83,6 @@ def workspace(n: int, ndyn: int, rtol: float, atol, max_step: float = np.inf,
     w[S_MAX_STEP] = max_step
     w[S_NEWTON_TOL] = max(10.0 * EPS / rtol, min(0.03, rtol ** 0.5))
     iv[I_NDYN] = ndyn
-    iv[I_NERR] = n if control_quadratures else ndyn
     o_atol = _offsets(n, ndyn)[0]
     w[o_atol:o_atol + n] = np.broadcast_to(np.asarray(atol, dtype=float), (n,))
     return (w, iv, np.zeros(n), np.zeros(n), np.zeros(n))
@@ -427,7 +422,7 @@ def step(ws, args):
         for i in range(n):
             w[oscale + i] = w[o_atol + i] + rtol * abs(y[i])
             w[oerr + i] = ERROR_CONST[order] * w[odd + i]
-        error_norm = _rms(w, oerr, oscale, iv[I_NERR])
+        error_norm = _rms(w, oerr, oscale, ndyn)
         if error_norm > 1.0:
             factor = max(MIN_FACTOR, safety * error_norm ** (-1.0 / (order + 1)))
             h_abs *= factor
@@ -451,13 +446,13 @@ def step(ws, args):
     if order > 1:
         for i in range(n):
             w[oerr + i] = ERROR_CONST[order - 1] * w[od + order * n + i]
-        error_m = _rms(w, oerr, oscale, iv[I_NERR])
+        error_m = _rms(w, oerr, oscale, ndyn)
     else:
         error_m = np.inf
     if order < MAX_ORDER:
         for i in range(n):
             w[oerr + i] = ERROR_CONST[order + 1] * w[od + (order + 2) * n + i]
-        error_p = _rms(w, oerr, oscale, iv[I_NERR])
+        error_p = _rms(w, oerr, oscale, ndyn)
     else:
         error_p = np.inf
     # factors = error_norms ** (-1 / [order, order + 1, order + 2]); 0 ** -x = inf
