@@ -43,8 +43,8 @@ def test_compiled_stepper_is_the_numpy_stepper():
 
 
 def test_compiled_lugre_stick_slip_matches_radau():
-    # examples/friction/lugre_stick_slip.toml (25 s, four slips): the compiled BDF and scipy's Radau at
-    # the same rtol (1e-7) give the same stick-slip cycle -- period and largest force to
+    # examples/friction/lugre_stick_slip.toml (25 s, four slips): the compiled BDF and scipy's
+    # Radau at the same rtol (1e-7) give the same stick-slip cycle -- period and largest force to
     # 1e-5 relative (each integrator is accurate to about its tolerance; the cycle is a
     # limit cycle, so small differences do not grow)
     with warnings.catch_warnings():

@@ -12,11 +12,11 @@
  * the spool follows with its first-order lag, exactly (s = u + (s0 - u) exp(-(t - a)/tau)
  * from the arrival a: sealsim.pneumatic.valve.SpoolMotion); arrivals are time events (model
  * exchange) and restart points of the integrator (co-simulation), as in
- * sealsim.pneumatic.integrate.  Sticking seals (Coulomb, Stribeck, Theta without bristles) make the model hybrid
- * (sealsim.pneumatic.simulation): model exchange has one event indicator and switches the
- * mode in event mode; co-simulation integrates with the BDF method of bdf.c (the port of
- * sealsim.ode.bdf) and locates the stick/slip events inside the step, as
- * sealsim.pneumatic.integrate.run_interval. */
+ * sealsim.pneumatic.integrate.  Sticking seals (Coulomb, Stribeck, Theta without
+ * bristles) make the model hybrid (sealsim.pneumatic.simulation): model exchange has one
+ * event indicator and switches the mode in event mode; co-simulation integrates with the
+ * BDF method of bdf.c (the port of sealsim.ode.bdf) and locates the stick/slip events
+ * inside the step, as sealsim.pneumatic.integrate.run_interval. */
 #include "sealsim_fmu.h"
 #include "bdf.h"
 
@@ -503,7 +503,7 @@ static void problem_init(Problem *p, CylinderData *m) {
     p->bp.event = problem_event;
 }
 
-/* -- the inputs ---------------------------------------------------------------------------------- */
+/* -- the inputs ----------------------------------------------------------------------------- */
 static void read_states(Instance *c, double *y) {
     for (int i = 0; i < NSTATES; i++) y[i] = c->r[STATE_VR[i]];
 }
@@ -543,7 +543,7 @@ static FmuStatus take_inputs(Instance *c) {
     return FMU_OK;
 }
 
-/* -- the model interface ------------------------------------------------------------------------- */
+/* -- the model interface -------------------------------------------------------------------- */
 FmuStatus model_check_parameters(Instance *c) {
     (void)c;
     return FMU_OK;
