@@ -11,29 +11,35 @@ DOCS_STAMP := $(VENV)/.sealsim-docs-installed
 
 .PHONY: demo test bench docs clean
 
+# The first install takes about 2 minutes: say so, and let pip show what it is doing.
 $(STAMP): pyproject.toml
 	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet --disable-pip-version-check -e ".[test]"
+	@echo "installing sealsim and its dependencies into $(VENV) (first time: about 2 minutes)"
+	$(BIN)/python -m pip install --progress-bar off --disable-pip-version-check -e ".[test]"
 	@touch $(STAMP)
 
 demo: $(STAMP)
 	$(BIN)/sealsim rotary run $(DEMO_CASE) --out $(DEMO_OUT) --force
 
 # pytest exits with 5 when it collected no tests: that must fail, not pass silently.
+# --dist loadgroup: the browser tests (xdist group "browser") share one app server and browser.
 test: $(STAMP)
-	@$(BIN)/python -m pytest -n 2 -q; rc=$$?; \
+	@$(BIN)/python -m pytest -n 2 --dist loadgroup -q; rc=$$?; \
 	if [ $$rc -eq 5 ]; then echo "make test: pytest collected no tests" >&2; exit 1; fi; \
 	exit $$rc
 
 $(DOCS_STAMP): pyproject.toml
 	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet --disable-pip-version-check -e ".[test,docs]"
+	@echo "installing sealsim with its docs extra into $(VENV)"
+	$(BIN)/python -m pip install --progress-bar off --disable-pip-version-check -e ".[test,docs]"
 	@touch $(DOCS_STAMP)
 
 # HTML into docs/_build/html; every warning is an error, nothing is downloaded, and -E plus the
-# regenerated docs/_generated/ make each build start from the code as it is now.
+# regenerated docs/_generated/ make each build start from the code as it is now. About 5-6
+# minutes on 2 cores (the gallery runs the examples); Sphinx prints each stage as it goes.
 docs: $(DOCS_STAMP)
-	$(BIN)/python -m sphinx -b html -E -W --keep-going -q -d docs/_build/doctrees docs docs/_build/html
+	@echo "building the documentation (about 5-6 minutes; the gallery runs every example)"
+	$(BIN)/python -m sphinx -b html -E -W --keep-going -d docs/_build/doctrees docs docs/_build/html
 	@echo "documentation: docs/_build/html/index.html"
 
 bench: $(STAMP)

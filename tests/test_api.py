@@ -19,12 +19,16 @@ from sealsim.cli import app
 from sealsim.errors import InputError
 from sealsim.friction import ContactInputs, Stribeck, Theta
 from sealsim.pneumatic.contact_maps import AnalyticContactMap, FEContactMap
+from sealsim.pneumatic.friction_tables import ContactTribology, friction_table_for
 from sealsim.properties import get_elastomer
 from sealsim.rotary.case import RotaryCase
 from sealsim.rotary.simulation import simulate, steady_state
 from sealsim.units import to_si, unit_registry
 
 RPM = math.pi / 30.0
+# the notes of a call (illustrative parameter set, service limit) are tested in
+# test_input_meaning.py; here they would only fill the summary
+pytestmark = pytest.mark.filterwarnings("ignore::sealsim.errors.SealsimWarning")
 
 
 def _long_form_case(**environment) -> RotaryCase:
@@ -50,7 +54,7 @@ def test_lip_seal_torque_is_the_steady_state_of_the_case():
 
 def test_lip_seal_torque_vectorised_one_row_per_point():
     speeds = unit_registry().Quantity(np.array([500.0, 3000.0]), "rpm")
-    frame = sealsim.lip_seal_torque(0.06, speeds, "VG220-mineral",
+    frame = sealsim.lip_seal_torque("60 mm", speeds, "VG220-mineral",
                                     ["50 degC", "90 degC"])  # broadcast pairwise
     assert isinstance(frame, pd.DataFrame) and len(frame) == 2
     for k, (rpm, sump) in enumerate([(500.0, "50 degC"), (3000.0, "90 degC")]):
@@ -78,7 +82,7 @@ def test_lip_seal_torque_options_reach_the_case():
 
 @pytest.mark.parametrize(("kwargs", "words"), [
     ({"speed": 1500}, ["speed", "no unit", "rpm or rad/s"]),
-    ({"speed": [1000, 2000]}, ["speed", "no unit"]),
+    ({"speed": [1000, 2000]}, ["speed", "without a unit"]),
     ({"speed": "25 Hz"}, ["Hz is ambiguous"]),
     ({"speed": "-10 rpm"}, ["speed", ">= 0"]),
     ({"speed": "1500 m"}, ["speed", "angular_speed"]),
@@ -122,15 +126,23 @@ def _nbr_oring_map(diameter=0.012) -> AnalyticContactMap:
 
 
 def test_seal_friction_is_the_steady_force_of_the_law_on_the_map():
+    # the default: the Θ law whose steady curve comes from the seal's own contact
     v = np.array([-0.5, 0.01, 0.1, 1.0])
-    frame = sealsim.seal_friction({"cord_diameter": "2 mm", "squeeze": 0.12}, v, "6 bar",
-                                  "40 degC", diameter="12 mm")
-    fn, b = _nbr_oring_map().evaluate(np.full(4, 6e5), np.full(4, 313.15))
-    law = Theta.from_parameter_set("pneumatic_demo")
+    frame = sealsim.seal_friction({"cord_diameter": "2 mm", "squeeze": 0.12},
+                                  v * unit_registry()("m/s"), "6 bar", "40 degC",
+                                  diameter="12 mm")
+    contact_map = _nbr_oring_map()
+    fn, b = contact_map.evaluate(np.full(4, 6e5), np.full(4, 313.15))
+    law = Theta.from_parameter_set("seal_contact")
+    table = friction_table_for(contact_map, ContactTribology.from_law(law, "NBR"))
     ref = law.steady_force(v, ContactInputs(normal_force=fn, contact_width=b,
                                             pressure_a=np.full(4, 6e5), pressure_b=0.0,
-                                            temperature=np.full(4, 313.15)))
+                                            temperature=np.full(4, 313.15),
+                                            contact_table=table, sliding_diameter=0.012))
     np.testing.assert_array_equal(frame["friction_N"], ref)  # same computation
+    _, _, film = table.evaluate(v, 6e5, 313.15)
+    np.testing.assert_array_equal(frame["film_um"], film * 1e6)
+    assert np.all((frame["asperity_share"] >= 0) & (frame["asperity_share"] <= 1))
     np.testing.assert_array_equal(frame["normal_force_N"], fn)
     assert list(frame["pressure_bar"]) == [6.0] * 4
     assert frame["temperature_C"].to_numpy() == pytest.approx(40.0, abs=1e-12)
@@ -145,7 +157,7 @@ def test_seal_friction_pressure_scaling_and_broadcasting():
     ref = Stribeck.from_parameter_set("pneumatic_demo").steady_force(
         np.full(3, 0.05), ContactInputs(pressure_a=np.array([0.0, 4e5, 8e5])))
     np.testing.assert_allclose(out["friction_N"], ref, rtol=1e-14)
-    one = sealsim.seal_friction(_nbr_oring_map(), 0.05, "4 bar", law=law)
+    one = sealsim.seal_friction(_nbr_oring_map(), "0.05 m/s", "4 bar", law=law)
     assert isinstance(one, dict) and one["friction_N"] == pytest.approx(ref[1], rel=1e-14)
 
 
@@ -159,7 +171,13 @@ def test_seal_friction_from_an_fe_map_file(tmp_path):
     path = tmp_path / "map.nc"
     ds.to_netcdf(path)
     v = [0.02, 0.2]
-    out = sealsim.seal_friction(path, v, "5 bar", "30 degC")
+    speeds = ["0.02 m/s", "0.2 m/s"]
+    # a map without contact pressure profiles: the contact law cannot be used, say so
+    with pytest.raises(InputError, match="no contact pressure profile"):
+        sealsim.seal_friction(path, speeds, "5 bar", "30 degC")
+    lumped = {"law": "theta", "parameter_set": "pneumatic_demo"}
+    out = sealsim.seal_friction(path, speeds, "5 bar", "30 degC", law=lumped)
+    assert out["film_um"].isna().all()
     fe = FEContactMap.from_file(path)
     f_n, b = fe.evaluate(np.full(2, 5e5), np.full(2, 303.15))
     ref = Theta.from_parameter_set("pneumatic_demo").steady_force(
@@ -169,13 +187,14 @@ def test_seal_friction_from_an_fe_map_file(tmp_path):
     # linear data: the Hermite map reproduces it (interpolation round-off only)
     assert out["normal_force_N"].to_numpy() == pytest.approx(30.0 + 25.0 + 2.0, rel=1e-9)
     with pytest.raises(InputError, match=r"pressure: 9 bar is outside .* \(0 \.\.\. 8 bar\)"):
-        sealsim.seal_friction(path, v, "9 bar", "30 degC")
+        sealsim.seal_friction(path, "0.2 m/s", "9 bar", "30 degC", law=lumped)
     with pytest.raises(InputError, match="temperature: 80 degC is outside"):
-        sealsim.seal_friction(path, v, "5 bar", "80 degC")
+        sealsim.seal_friction(path, "0.2 m/s", "5 bar", "80 degC", law=lumped)
 
 
 @pytest.mark.parametrize(("kwargs", "words"), [
     ({"law": "stribeck"}, ["parameter sets", "modelica_friction_example"]),
+    ({"law": "theta"}, ["parameter sets", "pneumatic_demo", "seal_contact"]),
     ({"law": "friction"}, ["not a friction law", "theta"]),
     ({"law": {"law": "coulomb"}}, ["law", "coulomb_force"]),
     ({"diameter": None}, ["diameter of the sliding surface"]),
@@ -186,7 +205,7 @@ def test_seal_friction_from_an_fe_map_file(tmp_path):
     ({"pressure": "-1 bar"}, ["pressure", ">= 0"]),
 ])
 def test_seal_friction_errors(kwargs, words):
-    args = {"seal": {"cord_diameter": "2 mm", "squeeze": 0.12}, "velocity": [0.1],
+    args = {"seal": {"cord_diameter": "2 mm", "squeeze": 0.12}, "velocity": ["0.1 m/s"],
             "pressure": "2 bar", "diameter": "12 mm", **kwargs}
     with pytest.raises(InputError) as info:
         sealsim.seal_friction(**args)

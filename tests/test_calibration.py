@@ -32,9 +32,20 @@ RUNNER = CliRunner()
 TRUTH = {"tau": 0.2, "alpha": 0.005, "f_a": 0.30, "f_b": 0.08, "gamma": 1e4,
          "reference_normal_force": 100.0, "bristle_stiffness": 2e4}
 #: the contact of the synthetic rig: the analytic O-ring estimate, 2 bar on the seal
-CONTACT = {"sliding_diameter": "25 mm",
+CONTACT = {"sliding_diameter": "25 mm", "temperature": "20 degC",
            "map": {"analytic": {"cord_diameter": "3.5 mm", "squeeze": 0.1}}}
 P_BAR = 2.0
+
+
+def synthetic_contact():
+    """(F_N [N], b [m]) of the synthetic rig: the analytic contact map the case names (NBR
+    catalogue modulus 6·(C10 + C01)) at P_BAR and 20 °C."""
+    from sealsim.properties.elastomers import get_elastomer
+    nbr = get_elastomer("NBR")
+    cmap = AnalyticContactMap(0.025, 3.5e-3, 0.10, 6 * (nbr.c10 + nbr.c01),
+                              nbr.thermal_expansion)
+    fn, b = cmap.evaluate(P_BAR * 1e5, 293.15)
+    return float(fn), float(b)
 
 
 def synthetic_run(path: Path, speeds, seed: int, segment=6.0, ramp=0.2, noise=0.2,
@@ -53,12 +64,7 @@ def synthetic_run(path: Path, speeds, seed: int, segment=6.0, ramp=0.2, noise=0.
     t = np.arange(0.0, knots_t[-1], dt)
     v = np.interp(t, knots_t, knots_v)
     x = np.concatenate([[0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * dt)])
-    # the same analytic contact map the case names (NBR catalogue modulus 6·(C10 + C01))
-    from sealsim.properties.elastomers import get_elastomer
-    nbr = get_elastomer("NBR")
-    cmap = AnalyticContactMap(0.025, 3.5e-3, 0.10, 6 * (nbr.c10 + nbr.c01),
-                              nbr.thermal_expansion)
-    fn, b = cmap.evaluate(P_BAR * 1e5, 293.15)
+    fn, b = synthetic_contact()
     law = Theta(**TRUTH)
     inputs = ContactInputs(normal_force=fn, contact_width=b)
     z = law.trajectory(law.initial_state(1), 0.5 * (v[1:] + v[:-1]), dt, inputs)
@@ -142,9 +148,11 @@ def test_one_speed_cannot_separate_the_two_friction_coefficients(tmp_path):
     assert any("f_a is not identifiable" in w for w in result.warnings)
     assert any("correlated with f_b" in r for r in result.reasons[0])
     # ... while the identifiable combination is right: the fitted model reproduces the level
+    # at the contact the run had (Θ_ss depends on F_N, so only there is the combination fixed)
     law = Theta(**{**TRUTH, "f_a": result.values[0], "f_b": result.values[1]})
     true_law = Theta(**TRUTH)
-    inputs = ContactInputs(normal_force=100.0, contact_width=1e-3)
+    fn, b = synthetic_contact()
+    inputs = ContactInputs(normal_force=fn, contact_width=b)
     assert law.steady_force([0.02], inputs) == pytest.approx(
         true_law.steady_force([0.02], inputs), rel=0.01)
 
@@ -219,19 +227,22 @@ def test_tudelft_example_runs_through_the_cli(example_run):
     assert set(report["measurements"]) == {"1 bar", "7 bar"}
     for m in report["measurements"].values():
         assert set(m) == {"role", "pressure_bar", "F_measured_N", "F_predicted_N",
-                          "rel_error", "rmse_N", "r2"}
+                          "rel_error", "rmse_N", "r2", "F_predicted_without_fit_N",
+                          "ratio_without_fit"}
     fit_run, held_out = report["measurements"]["1 bar"], report["measurements"]["7 bar"]
     assert held_out["role"] == "validate" and fit_run["role"] == "fit"
     # the measured levels (offset-free, half the difference of the direction medians)
     assert fit_run["F_measured_N"] == pytest.approx(3.99, abs=0.01)
     assert held_out["F_measured_N"] == pytest.approx(8.04, abs=0.01)
-    # the fitted run is matched (one coefficient for one level); every parameter determined
-    assert abs(fit_run["rel_error"]) < 0.02
+    # the fitted run is matched (one coefficient for one level; the time-series loss also
+    # weighs the reversals, which the model takes more slowly than the rig, so the level sits
+    # +2.6 % above the measured one): within 3 %; every parameter determined
+    assert abs(fit_run["rel_error"]) < 0.03
     assert all(p["identifiable"] for p in report["parameters"].values())
-    # the README states the 7 bar prediction error this command measured
-    readme = (ROOT / "README.md").read_text()
+    # the calibration page of the documentation states the 7 bar error this command measured
+    readme = (ROOT / "docs" / "guide" / "calibration.md").read_text()
     match = re.search(r"7 bar run \(not fitted\): ([+-]\d+\.\d) %", readme)
-    assert match, "README must state the 7 bar prediction error"
+    assert match, "docs/guide/calibration.md must state the 7 bar prediction error"
     assert 100 * held_out["rel_error"] == pytest.approx(float(match.group(1)), abs=0.05)
     # an existing result folder is refused without --force
     again = RUNNER.invoke(app, ["friction", "fit", str(case), "--out", str(out), "--quiet"])
@@ -242,17 +253,18 @@ def test_fitted_parameters_load_in_friction_and_pneumatic_cases(example_run):
     _, out, _ = example_run
     law_table = tomllib.loads((out / "fitted_parameters.toml").read_text())["friction"]
     report = json.loads((out / "report.json").read_text())
-    assert law_table["f_a"] == pytest.approx(report["parameters"]["f_a"]["value"])
-    # a friction bench case with the fitted law
+    assert law_table["boundary_friction"] == pytest.approx(
+        report["parameters"]["boundary_friction"]["value"])
+    # a friction bench case without a [seal]: the law on the seal's contact is refused there
+    # with a clear message (it needs the seal's contact map; tests/test_contact_friction.py
+    # runs it on a bench with a seal)
     bench = {"friction": law_table, "inputs": {"normal_force": "100 N",
                                                "contact_width": "1 mm"},
              "bench": {"mode": "velocity", "duration": "1 s", "time_step": "1 ms",
                        "velocity": {"kind": "constant", "level": "10 mm/s"}}}
     (case,) = load_friction_cases(bench).values()
-    result, summary = run_friction_case(case)
-    # after 10 mm of sliding the force is the fitted coefficient times F_N (f_b tied to f_a)
-    assert result.force[-1] == pytest.approx(
-        report["parameters"]["f_a"]["value"] * 100.0 + 1e4 * 1e-3 * 0.01, rel=1e-3)
+    with pytest.raises(InputError, match="steady = 'contact'.*give \\[seal\\]"):
+        run_friction_case(case)
     # a pneumatic seal with the fitted law: the case validates and its seal gets the law
     data = tomllib.loads((ROOT / "examples" / "pneumatic" / "friction_rig.toml").read_text())
     data.pop("variants")

@@ -57,6 +57,9 @@ def test_every_catalogue_entry_gives_the_same_numbers_as_before():
             _assert_same(REFERENCE["oils"][name][key], value, f"{name}.{key}")
     for name in list_elastomers():
         for key, value in _plain(dataclasses.asdict(get_elastomer(name))).items():
+            if key in ("hyperelastic", "glassy_thermal_expansion"):  # added later; unset
+                assert value is None, name
+                continue
             _assert_same(REFERENCE["elastomers"][name][key], value, f"{name}.{key}")
     assert oil_catalogue()[1] == REFERENCE["oil_aliases"]
 

@@ -80,6 +80,11 @@ def test_every_fmu_is_valid(fmus):
     names = {v.name: v for v in md.modelVariables}
     assert {"v", "p_A", "p_B", "T_seal", "F", "F_N", "b", "theta", "tau"} <= set(names)
     assert names["tau"].unit == "s" and names["T_seal"].unit == "K"
+    # a solver scales its tolerance of a state with the nominal: z of LuGre is F_s/σ0 = 1.5 N
+    # / 1e5 N/m (canudas1995), not 1 m; Θ is of order 1
+    states = {v.name: v for v in md2.modelVariables}
+    assert float(states["z"].nominal) == pytest.approx(1.5e-5, rel=1e-12)
+    assert names["theta"].nominal in (None, "1", 1.0)
     with zipfile.ZipFile(fmus["piston3"]) as zf:     # sources for other platforms
         files = set(zf.namelist())
     assert {"sources/all.c", "sources/buildDescription.xml", "sources/friction_model.c",
@@ -175,14 +180,23 @@ def test_model_exchange_matches_the_exact_law(fmus):
 
 def test_contact_table_reproduces_the_maps(fmus, tmp_path):
     """The analytic estimate is tabulated with exact node derivatives (fourth order: better
-    than 1e-5); an FE map keeps its grid and slopes: the same interpolant as SealMap."""
+    than 1e-5 at these points, 3e-5 anywhere); F_N(T) of a held seal peaks with a kink at its
+    mounting temperature (20 °C), where the table has a node and two close neighbours; an FE
+    map keeps its grid and slopes: the same interpolant as SealMap."""
+    from sealsim.fmu.friction_export import contact_table
     from sealsim.pneumatic.case import build_contact_map, load_pneumatic_cases
     from sealsim.pneumatic.contact_maps import FEContactMap
 
     case = next(iter(load_pneumatic_cases(load_toml(PNEUMATIC / "cylinder_32.toml")).values()))
     seal = case.seals[0]
     cmap = build_contact_map(seal.map, case.cylinder.bore, PNEUMATIC, "map")
-    points = [(0.0, 250.0), (3e5, 298.15), (7.7e5, 330.0), (1.6e6, 393.15), (1.23e5, 271.3)]
+    # inside the map: from its cold edge (NBR's T_g + 20 K = -5 degC; colder is clipped, see
+    # test_out_of_range_inputs_are_clipped_and_logged) to its hot corner
+    coldest = cmap.ranges["temperature"][0]
+    assert cmap.temperature_kinks == (293.15,)
+    points = [(0.0, coldest), (3e5, 298.15), (7.7e5, 330.0), (1.6e6, 393.15), (1.23e5, 271.3),
+              (0.0, 293.15), (2e5, 293.4), (5e5, 292.9)]
+    assert max(contact_table(cmap).max_relative_error.values()) < 3e-5
     with LoadedFMU(fmus["piston3"]) as fmu:
         fmu.set(p_A=points[0][0], T_seal=points[0][1])
         fmu.initialize()

@@ -73,6 +73,9 @@ def test_rotary_fmu_is_valid(rotary_fmu):
     names = {v.name: v for v in fmpy.read_model_description(str(rotary_fmu.path)).modelVariables}
     assert names["speed"].unit == "rad/s" and names["torque"].unit == "N.m"
     assert {"T_sump", "T_ambient", "power", "T_contact", "T_rise_1", "T_rise_2"} <= set(names)
+    # nominal values of the states: kelvin near 300 and the largest rise (K), not 1
+    assert 240.0 < float(names["T_sump_lagged"].nominal) < 400.0
+    assert 1.0 <= float(names["T_rise_1"].nominal) < 100.0
     lag = rotary_fmu.report["thermal_lag"]
     assert lag["order"] == 2 and np.all(np.array(lag["settled"]) > 0.98)
     # the oil-side convection of this case changes its flow regime (Taylor vortices) between

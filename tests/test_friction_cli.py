@@ -40,10 +40,10 @@ def run(*args):
     return RUNNER.invoke(friction_app, ["run", *map(str, args)])
 
 
-def test_there_are_six_examples():
+def test_there_are_seven_examples():
     assert {p.stem for p in EXAMPLES} == {
-        "lugre_hysteresis", "lugre_presliding", "lugre_stick_slip", "theta_dwell",
-        "theta_load", "theta_stribeck"}
+        "lugre_hysteresis", "lugre_presliding", "lugre_stick_slip", "theta_contact_stribeck",
+        "theta_dwell", "theta_load", "theta_stribeck"}
 
 
 @pytest.mark.parametrize("example", EXAMPLES, ids=[p.stem for p in EXAMPLES])

@@ -6,7 +6,7 @@ import still makes the lower module depend on the higher one.  Layers, lowest fi
 
     base (errors, units, cases, files, ode) -> properties -> tribology, friction, structure,
     thermal -> rotary, pneumatic -> measurements, calibration, fmu, studies, api ->
-    output, plotting, runs, cli
+    output, plotting, runs, cli, app
 """
 
 from __future__ import annotations
@@ -27,7 +27,8 @@ LAYERS = (
     ("systems", ("sealsim.rotary", "sealsim.pneumatic")),
     ("applications", ("sealsim.measurements", "sealsim.calibration", "sealsim.fmu",
                       "sealsim.studies", "sealsim.api")),
-    ("front", ("sealsim.output", "sealsim.plotting", "sealsim.runs", "sealsim.cli")),
+    ("front", ("sealsim.output", "sealsim.plotting", "sealsim.runs", "sealsim.cli",
+               "sealsim.app")),
 )
 
 #: Known import cycles (module pairs): none.

@@ -61,26 +61,39 @@ def test_friction_stroke_loop_is_hysteretic(temperatures):
     assert loop == pytest.approx(temperatures["T25C"].balances["friction_work_J"], rel=0.02)
 
 
-def test_lower_seal_temperature_gives_lower_contact_force_friction_and_faster_response(
-        temperatures):
+def test_warmer_seal_presses_a_little_harder_but_its_thinner_grease_wins(temperatures):
     # Seed 001 Fig. 10 text: "at low temperature the piston reacts a little bit faster and more
     # dynamic due to lower contact forces and in succession lower friction".  The analytic
-    # contact map: thermal expansion raises the squeeze and E ~ T (about +14 % F_N from 25 to
-    # 55 °C).  The grease thins on heating (γ(T) of the Θ law falls to about a fifth), which
-    # takes back part of it at speed: the mean friction rises by a few percent and the stroke
-    # times by about 0.2 %, above the integration error (1e-4 of the stroke,
-    # test_pneumatic_cylinder).
+    # contact map with the held-seal modulus (mounted at 20 °C): from 25 to 55 °C the cord's
+    # thermal expansion raises the squeeze (+4 %), the relaxed modulus falls 5 %, so F_N
+    # rises by only 1-4 % (with the former E ∝ T: +14 %).  The lumped Θ law's grease term
+    # γ(T) falls to 0.18 (ASTM D341), and that wins: the warm seal has less friction and the
+    # piston is faster -- the opposite of the paper's claim for this illustrative law
+    # (docs/guide/pneumatic.md, "Seal temperature").
+    from sealsim.pneumatic.contact_maps import lindley_force_per_length, thermal_squeeze
+    from sealsim.properties.elastomers import get_elastomer
+
+    nbr = get_elastomer("NBR")
     cold, hot = temperatures["T25C"], temperatures["T55C"]
     s_cold, s_hot = cold.summary(), hot.summary()
-    for seal in ("piston", "rod"):
+    for seal, squeeze in (("piston", 0.10), ("rod", 0.12)):
         fn_cold = cold.timeseries[f"F_N_{seal}_N"].to_numpy()
         fn_hot = hot.timeseries[f"F_N_{seal}_N"].to_numpy()
-        assert fn_hot.max() > 1.10 * fn_cold.max()
-        assert fn_hot.min() > 1.10 * fn_cold.min()
-    assert s_hot["mean_friction_N"] > 1.01 * s_cold["mean_friction_N"]
-    assert s_hot["peak_friction_N"] > s_cold["peak_friction_N"]
-    assert s_hot["extend_time_s"] > 1.001 * s_cold["extend_time_s"]
-    assert s_hot["retract_time_s"] > 1.001 * s_cold["retract_time_s"]
+        # unpressurised (the runs' smallest F_N, at about Δp = 0): the ratio of the hand
+        # calculation, Lindley's force of the thermally grown squeeze times the held modulus
+        # (within 0.5 %: the piston seal's minimum has a little pressure on it)
+        hand = [lindley_force_per_length(thermal_squeeze(squeeze, nbr.thermal_expansion, t,
+                                                         293.15), 2e-3,
+                                         nbr.held_modulus(t, mounting_temperature=293.15))
+                for t in (298.15, 328.15)]
+        assert fn_hot.min() / fn_cold.min() == pytest.approx(hand[1] / hand[0], rel=0.005)
+        assert 1.005 < fn_hot.min() / fn_cold.min() < 1.05
+        assert 1.005 < fn_hot.max() / fn_cold.max() < 1.05
+    # the grease wins: mean friction -14 %, stroke times -0.6 % (above the integration error,
+    # 1e-4 of the stroke, test_pneumatic_cylinder)
+    assert s_hot["mean_friction_N"] < 0.95 * s_cold["mean_friction_N"]
+    assert s_hot["extend_time_s"] < 0.998 * s_cold["extend_time_s"]
+    assert s_hot["retract_time_s"] < 0.998 * s_cold["retract_time_s"]
 
 
 def test_stroke_times_grow_with_friction(temperatures):

@@ -9,7 +9,11 @@ One-call answers at the top level (:mod:`sealsim.api`, imported on first use so 
 * :func:`lip_seal_torque` -- steady torque, power, contact temperature and film of a radial
   lip seal (``sealsim.lip_seal_torque("60 mm", "1500 rpm", "ISO VG 220", "70 degC")``);
 * :func:`seal_friction` -- steady friction of a reciprocating seal over velocity, with F_N and
-  b from an FE map or the analytic O-ring estimate.
+  b from an FE map or the analytic O-ring estimate;
+* :func:`oring_gland` -- design check of an O-ring gland (squeeze, stretch, fill, extrusion
+  gap from the worst-case tolerance stack), optionally with the FE force and friction;
+* :func:`friction_loop` -- friction over a harmonic velocity (the hysteresis loop of a
+  friction law with states).
 
 The subpackages hold the long-form API: :mod:`sealsim.rotary`, :mod:`sealsim.pneumatic`,
 :mod:`sealsim.friction`, :mod:`sealsim.structure`, :mod:`sealsim.properties`,
@@ -26,7 +30,8 @@ except PackageNotFoundError:  # pragma: no cover - only when run from an uninsta
     __version__ = "0+unknown"
 
 #: top-level names imported on first use: name -> module
-_LAZY = {"lip_seal_torque": "sealsim.api", "seal_friction": "sealsim.api"}
+_LAZY = {"lip_seal_torque": "sealsim.api", "seal_friction": "sealsim.api",
+         "oring_gland": "sealsim.api", "friction_loop": "sealsim.api"}
 
 
 def __getattr__(name: str):
@@ -50,6 +55,8 @@ __all__ = [
     "ResultExistsError",
     "SealsimError",
     "__version__",
+    "friction_loop",
     "lip_seal_torque",
+    "oring_gland",
     "seal_friction",
 ]

@@ -19,6 +19,7 @@ per problem, the field path (``seal.shaft_diameter``), the value given and what 
 from __future__ import annotations
 
 import copy
+import logging
 import math
 import re
 import tomllib
@@ -39,14 +40,18 @@ from pydantic import (
 )
 
 from sealsim.errors import InputError
+from sealsim.files import read_input_text
 from sealsim.units import DIMENSIONS, format_quantity, parse_quantity
 
 __all__ = [
     "CASE_KINDS",
+    "JSON_SCHEMA_DIALECT",
+    "MAX_TOML_DEPTH",
     "CaseKind",
     "CaseModel",
     "Q",
     "apply_overrides",
+    "case_json_schema",
     "check_variant_name",
     "detect_case_kind",
     "dump_case_toml",
@@ -54,6 +59,7 @@ __all__ = [
     "expand_variants",
     "format_validation_error",
     "load_toml",
+    "parse_toml",
     "validate_case",
     "validation_problems",
     "wrong_kind_message",
@@ -121,7 +127,9 @@ def Q(dimension: str, *, gt: float | None = None, ge: float | None = None,  # no
         PlainValidator(validate),
         PlainSerializer(lambda v: float(v) if dimension == "dimensionless"
                         else format_quantity(v, dimension), return_type=float | str),
-        WithJsonSchema({"type": "string", "description": description}),
+        # in a file: a text with a unit ("80 mm"); a dimensionless value may be a plain number
+        WithJsonSchema({"type": ["number", "string"] if dimension == "dimensionless"
+                        else "string", "description": description, "examples": [dim.example]}),
     ]
 
 
@@ -139,28 +147,31 @@ class CaseKind:
         The command that runs it.
     tables : frozenset of str
         Top-level tables (fields of ``model``) that no other kind's model has.
+    variants : bool
+        The command reads ``[variants.NAME]`` tables (:func:`expand_variants`).
     """
 
     name: str
     model: str
     command: str
     tables: frozenset[str]
+    variants: bool = False
 
 
 #: The kinds of case file; tests check ``tables`` against the models' fields.
 CASE_KINDS = (
     CaseKind("rotary", "sealsim.rotary.case.RotaryCase", "sealsim rotary run",
-             frozenset({"duty", "environment", "oil", "numerics"})),
+             frozenset({"duty", "environment", "oil", "numerics"}), variants=True),
     CaseKind("structure", "sealsim.structure.case.StructureCase",
              "sealsim structure run (or sealsim structure map)",
-             frozenset({"gland", "material", "mesh", "map"})),
+             frozenset({"gland", "material", "mesh", "map"}), variants=True),
     CaseKind("fmu", "sealsim.fmu.case.FMUCase", "sealsim fmu build",
              frozenset({"fmu", "table", "rotary"})),
     CaseKind("pneumatic", "sealsim.pneumatic.case.PneumaticCase", "sealsim pneumatic run",
              frozenset({"cylinder", "air", "valve", "controller", "seals",
-                        "initial_position"})),
+                        "initial_position"}), variants=True),
     CaseKind("friction", "sealsim.friction.case.FrictionCase", "sealsim friction run",
-             frozenset({"bench", "inputs"})),
+             frozenset({"bench", "inputs"}), variants=True),
     # a friction fit and a rotary fit share [fit] and [[measurements]]; [model] (the rotary
     # case) or [contact]/[signals] tell them apart
     CaseKind("friction fit", "sealsim.calibration.case.FrictionFitCase", "sealsim friction fit",
@@ -169,6 +180,11 @@ CASE_KINDS = (
              frozenset({"model", "averaging"})),
     CaseKind("pneumatic compare", "sealsim.calibration.pneumatic_compare.CompareCase",
              "sealsim pneumatic compare", frozenset({"case", "variant", "measurement"})),
+    CaseKind("material fit", "sealsim.calibration.material_fit.MaterialFitCase",
+             "sealsim material fit",
+             frozenset({"compound", "hyperelastic", "viscoelastic", "dilatometry"})),
+    CaseKind("gland", "sealsim.structure.gland_case.GlandCase", "sealsim gland check",
+             frozenset({"ring", "housing", "service"})),
     CaseKind("study", "sealsim.studies.spec.StudyFile", "sealsim study run",
              frozenset({"study", "base", "set", "factors", "outputs", "series"})),
 )
@@ -216,23 +232,80 @@ def wrong_kind_message(model: type[BaseModel], data: Any) -> str | None:
             f"{expected.name} case: run it with {found.command}")
 
 
-def load_toml(path: str | Path) -> dict[str, Any]:
-    """Read a TOML file; a missing file or a syntax error becomes an :class:`InputError`."""
-    path = Path(path)
+#: keys whose value may name a compound file (``material = "my_nbr.toml"``)
+MATERIAL_KEYS = frozenset({"material", "elastomer"})
+
+
+def resolve_material_files(data: Any, base: Path) -> Any:
+    """``data`` with every ``material``/``elastomer`` value that is a relative path of a
+    ``.toml`` compound file made absolute against ``base`` (the case file's folder), in place.
+
+    Examples
+    --------
+    >>> resolve_material_files({"seal": {"material": "my.toml"}}, Path("/cases"))
+    {'seal': {'material': '/cases/my.toml'}}
+    """
+    items = data.items() if isinstance(data, dict) else enumerate(data) \
+        if isinstance(data, list) else ()
+    for key, value in items:
+        if (key in MATERIAL_KEYS and isinstance(value, str)
+                and value.strip().lower().endswith(".toml")
+                and not Path(value.strip()).is_absolute()):
+            data[key] = str(base / value.strip())
+        else:
+            resolve_material_files(value, base)
+    return data
+
+
+#: deepest nesting of tables and arrays in a TOML file (the examples nest at most 6 levels);
+#: deeper files are refused before any code walks them recursively
+MAX_TOML_DEPTH = 32
+
+
+def parse_toml(text: str, source: str) -> dict[str, Any]:
+    """Parse TOML text read from ``source`` (e.g. ``"case file 'a.toml'"``); a syntax error or
+    nesting deeper than :data:`MAX_TOML_DEPTH` becomes an :class:`InputError`.
+
+    Examples
+    --------
+    >>> parse_toml("a = " + "[" * 40 + "]" * 40, "case file 'deep.toml'")
+    Traceback (most recent call last):
+    ...
+    sealsim.errors.InputError: case file 'deep.toml' nests tables or arrays more than 32 \
+levels deep (at 'a'); a case needs only a few levels
+    """
     try:
-        with path.open("rb") as fh:
-            return tomllib.load(fh)
-    except FileNotFoundError as exc:
-        raise InputError(f"case file {str(path)!r} does not exist") from exc
-    except IsADirectoryError as exc:
-        raise InputError(f"case file {str(path)!r} is a directory, expected a .toml file") from exc
-    except UnicodeDecodeError as exc:
-        raise InputError(f"case file {str(path)!r} is not UTF-8 text") from exc
+        data = tomllib.loads(text)
+    except RecursionError:
+        raise InputError(f"{source} nests tables or arrays more than {MAX_TOML_DEPTH} levels "
+                         "deep; a case needs only a few levels") from None
     except ValueError as exc:  # TOMLDecodeError, and integers tomllib cannot convert
-        raise InputError(f"case file {str(path)!r} is not valid TOML: {exc}") from exc
-    except OSError as exc:  # no permission, an I/O error
-        raise InputError(f"case file {str(path)!r} cannot be read: "
-                         f"{exc.strerror or exc}") from exc
+        raise InputError(f"{source} is not valid TOML: {exc}") from None
+    stack: list[tuple[Any, int, str]] = [(data, 0, "")]
+    while stack:
+        node, depth, where = stack.pop()
+        if depth > MAX_TOML_DEPTH:
+            raise InputError(f"{source} nests tables or arrays more than {MAX_TOML_DEPTH} "
+                             f"levels deep (at {where!r}); a case needs only a few levels")
+        items = node.items() if isinstance(node, dict) else enumerate(node) \
+            if isinstance(node, list) else ()
+        for key, value in items:
+            if isinstance(value, dict | list):
+                stack.append((value, depth + 1, where or str(key)))
+    return data
+
+
+def load_toml(path: str | Path, what: str = "case file") -> dict[str, Any]:
+    """Read a TOML file (:func:`sealsim.files.read_input_text`: a regular file of limited
+    size); a missing file, a syntax error or too deep a nesting becomes an
+    :class:`InputError` naming the file (``what`` says what it is, e.g. ``"friction file"``).
+
+    A compound file named by a relative path (``material = "my_nbr.toml"``) is taken relative
+    to this file (:func:`resolve_material_files`)."""
+    path = Path(path)
+    text = read_input_text(path, what)
+    return resolve_material_files(parse_toml(text, f"{what} {str(path)!r}"),
+                                  path.parent.absolute())
 
 
 def validate_case(model: type[ModelT], data: Any, source: str = "case",
@@ -450,7 +523,9 @@ def expand_variants(model: type[ModelT], data: dict[str, Any],
     """Validate a case with optional ``[variants.NAME]`` tables that override base fields.
 
     Without variants the case is one variant named ``"base"``.  With variants, each variant is
-    the base deep-merged with its overrides (:func:`apply_overrides`) and validated on its own.
+    the base deep-merged with its overrides (:func:`apply_overrides`) and validated on its own;
+    the base case itself is not a run (add an empty ``[variants.base]`` to run it), which an
+    INFO record on the ``sealsim.cases`` logger says (the CLI prints it).
     A problem shared by every variant (usually one in the base case) is reported once; others
     name their variant (``variant 'wave': seal.lip_style: ...``).  Variant names are checked
     by :func:`check_variant_name` (they become file names), and two names that differ only in
@@ -500,7 +575,17 @@ def expand_variants(model: type[ModelT], data: dict[str, Any],
         lines = shared + [f"variant {name!r}: {p}" for name, found in problems.items()
                           for p in found if p not in shared]
         raise InputError(_message(source, lines))
+    _say_base_not_run(cases, source)
     return cases
+
+
+def _say_base_not_run(cases: dict[str, Any], source: str) -> None:
+    """Announce (INFO on the ``sealsim.cases`` logger, which the CLI prints) that a case with
+    variants runs the variants only, not its base case."""
+    logging.getLogger(__name__).info(
+        "%s: runs the variants %s; the base case only gives their common fields and is not run "
+        "on its own (add an empty [variants.%s] table to run it too)", source, ", ".join(cases),
+        DEFAULT_VARIANT)
 
 
 def dump_variants_toml(cases: dict[str, BaseModel], header: str | None = None) -> str:
@@ -516,3 +601,97 @@ def dump_variants_toml(cases: dict[str, BaseModel], header: str | None = None) -
     if header:
         text = "".join(f"# {line}\n" for line in header.splitlines()) + "\n" + text
     return text
+
+
+# -- JSON Schema of a case file -----------------------------------------------------------------
+#: dialect of the schemas: draft 7 is what editors' TOML and JSON tooling supports most widely
+JSON_SCHEMA_DIALECT = "http://json-schema.org/draft-07/schema#"
+
+
+def case_json_schema(model: type[BaseModel], *, variants: bool = False,
+                     title: str | None = None) -> dict[str, Any]:
+    """JSON Schema (draft 7) of a case file read by ``model``, for editors that check TOML.
+
+    Quantities are texts with a unit (``"80 mm"``; a dimensionless one may be a plain number),
+    as the file needs them.  With ``variants``, a ``[variants.NAME]`` table holds overrides:
+    any part of the case, nothing required (:func:`expand_variants` merges it into the base
+    case).  Checks across fields (one of two fields given, a lower bound below an upper one)
+    are the case model's; the schema checks names, types and the bounds of single fields.
+
+    Examples
+    --------
+    >>> class Lip(CaseModel):
+    ...     width: Q("length", gt=0)
+    >>> schema = case_json_schema(Lip, variants=True)
+    >>> schema["else"], schema["definitions"]["Lip"]["required"]
+    ({'$ref': '#/definitions/Lip'}, ['width'])
+    >>> with_variants = schema["definitions"]["LipWithVariants"]
+    >>> "required" in with_variants, with_variants["properties"]["variants"]["type"]
+    (False, 'object')
+    """
+    schema = model.model_json_schema(ref_template="#/definitions/{model}")
+    definitions = schema.pop("$defs", {})
+    out: dict[str, Any] = {"$schema": JSON_SCHEMA_DIALECT}
+    if title:
+        out["title"] = title
+    if variants:
+        # with [variants], the base case is completed by each variant: nothing is required
+        override = {name: _override(d) for name, d in definitions.items()}
+        definitions.update({f"{name}Override": d for name, d in override.items()})
+        partial = _override(schema)
+        partial["properties"]["variants"] = {
+            "type": "object", "minProperties": 1,
+            "description": "named variants, each run on its own: a table of fields that "
+                           "override the base case, e.g. [variants.wave] seal.lip_style = "
+                           "'wave'",
+            "propertyNames": {"pattern": f"^{VARIANT_NAME.pattern}$"},
+            "additionalProperties": _override(schema),
+        }
+        name = model.__name__
+        definitions[name], definitions[f"{name}WithVariants"] = schema, partial
+        out.update({"description": schema.get("description", ""),
+                    "if": {"required": ["variants"]},
+                    "then": {"$ref": f"#/definitions/{name}WithVariants"},
+                    "else": {"$ref": f"#/definitions/{name}"}})
+    else:
+        out.update(_draft7(schema))
+    if definitions:
+        out["definitions"] = {name: _draft7(d) for name, d in definitions.items()}
+    return out
+
+
+def _override(schema: Any) -> Any:
+    """``schema`` with nothing required (at any depth) and references to the override
+    definitions: what a variant may give."""
+    if isinstance(schema, list):
+        return [_override(item) for item in schema]
+    if not isinstance(schema, dict):
+        return schema
+    out = {}
+    for key, value in schema.items():
+        if key in ("required", "title", "discriminator"):
+            continue
+        if key == "$ref" and isinstance(value, str) and value.startswith("#/definitions/"):
+            out[key] = value + "Override"
+        elif key == "oneOf":       # several partial alternatives may match: any of them
+            out["anyOf"] = _override(value)
+        elif key == "anyOf" and all(set(v) == {"required"} for v in value):
+            continue               # alternatives of what is required (a law's parameter set)
+        elif key == "properties":
+            out[key] = {k: _override(v) for k, v in value.items()}
+        else:
+            out[key] = _override(value)
+    return out
+
+
+def _draft7(schema: Any) -> Any:
+    """A draft-7 schema: a ``$ref`` with siblings (a field's description) goes into ``allOf``
+    (draft 7 ignores the siblings of ``$ref``); pydantic's ``discriminator`` is dropped."""
+    if isinstance(schema, list):
+        return [_draft7(item) for item in schema]
+    if not isinstance(schema, dict):
+        return schema
+    out = {k: _draft7(v) for k, v in schema.items() if k != "discriminator"}
+    if "$ref" in out and len(out) > 1:
+        out["allOf"] = [{"$ref": out.pop("$ref")}]
+    return out

@@ -12,6 +12,10 @@ One type per kind of failure, each with a message that names what to change:
   did not converge, a state out of its physical range).  The message says at which step or
   load it failed (status 1).
 
+:class:`SealsimWarning` carries the notes of a result that is valid but worth a look (a contact
+above the elastomer's service limit, an illustrative parameter set), issued by the one-call API
+(:mod:`sealsim.api`) once per call.
+
 :class:`Terminated` (a :class:`KeyboardInterrupt`) is raised when SIGTERM arrives during a run,
 so the clean-up that runs for Ctrl-C runs for SIGTERM too.
 """
@@ -45,6 +49,11 @@ class OutputError(SealsimError, OSError):
     """Results could not be written (no space left, no permission); names the file."""
 
     exit_code = 1
+
+
+class SealsimWarning(UserWarning):
+    """A note on a valid result that leaves the range of its models or data (a contact above
+    the service limit, a film outside the measured range, an illustrative parameter set)."""
 
 
 class Terminated(KeyboardInterrupt):

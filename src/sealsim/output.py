@@ -48,6 +48,8 @@ from sealsim.files import (
     atomic_write_bytes,
     atomic_write_text,
     json_ready,
+    netcdf_ready,
+    raise_terminated,
 )
 
 __all__ = ["JSON_DIGITS", "ResultFolder", "atomic_write_bytes", "atomic_write_text",
@@ -77,10 +79,6 @@ def _pid_alive(pid: int) -> bool:
 
 def _in_main_thread() -> bool:
     return threading.current_thread() is threading.main_thread()
-
-
-def _raise_terminated(signum, frame):
-    raise Terminated("SIGTERM")
 
 
 class ResultFolder:
@@ -217,7 +215,7 @@ class ResultFolder:
                 raise InputError(f"cannot create output folder {self._shown()!r}: "
                                  f"{exc.strerror or exc}") from exc
             if _in_main_thread() and signal.getsignal(signal.SIGTERM) is signal.SIG_DFL:
-                self._old_sigterm = signal.signal(signal.SIGTERM, _raise_terminated)
+                self._old_sigterm = signal.signal(signal.SIGTERM, raise_terminated)
         except BaseException:
             self._unlock()
             self._remove_created()
@@ -417,8 +415,11 @@ class ResultFolder:
         return target
 
     def write_netcdf(self, name: str, dataset) -> Path:
-        """Write an xarray Dataset to netCDF atomically."""
-        return self._write_via_temporary(name, dataset.to_netcdf)
+        """Write an xarray Dataset to netCDF atomically (CF ``Conventions``, no fill value on
+        coordinates: :func:`sealsim.files.netcdf_ready`)."""
+        dataset, encoding = netcdf_ready(dataset)
+        return self._write_via_temporary(
+            name, lambda tmp: dataset.to_netcdf(tmp, encoding=encoding))
 
     def savefig(self, name: str, figure, dpi: int = 130) -> Path:
         """Save a matplotlib figure as PNG atomically.

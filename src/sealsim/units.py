@@ -4,8 +4,12 @@ parsed with pint and converted to SI floats; everything inside sealsim works in 
 SI units used internally: m, s, kg, K, Pa, N, W, J, rad/s for angular speed, m³ for volume,
 m²/s for kinematic viscosity, Pa·s for dynamic viscosity.
 
-Angular speed accepts ``rpm``, ``rad/s`` or ``rev/s`` (or ``rps``); ``Hz`` is refused for
-angular speed because pint treats 1 Hz as 1 rad/s, whereas engineers mean 1 rev/s.
+Angular speed accepts ``rpm``, ``rad/s`` or ``rev/s`` (or ``rps``).  A reciprocal time given
+for a rotational speed (``1/min``, ``min^-1``, ``1/s``, ``s^-1``) is revolutions per time, as in
+seal and gearbox data sheets (DIN 1301-2: 1/min is the revolutions per minute), and so are
+``U/min`` (German catalogues) and ``r/min`` (ISO); pint alone would read ``1/min`` as radians
+per minute, 2π too low.  ``Hz`` is refused for angular speed because pint treats 1 Hz as
+1 rad/s, whereas engineers mean 1 rev/s.
 
 pint is imported on first use (:func:`unit_registry`, or the module attribute ``ureg``), so
 modules that only need :data:`ZERO_CELSIUS_K` stay quick to import.
@@ -154,7 +158,11 @@ def parse_quantity(value, dimension: str, field: str | None = None) -> float:
     dim = DIMENSIONS[dimension]
     prefix = f"{field}: " if field else ""
     if isinstance(value, unit_registry().Quantity):
-        value = f"{float(value.magnitude)!r} {value.units:~}"
+        try:
+            value = f"{float(value.magnitude)!r} {value.units:~}"
+        except OverflowError:
+            raise InputError(prefix + f"number too large; expected a {dim.name} such as "
+                                      f"{dim.example!r}") from None
     if isinstance(value, bool):
         raise InputError(prefix + f"{value!r} is not a quantity; expected a {dim.name} "
                          f"such as {dim.example!r}")
@@ -205,7 +213,8 @@ def _string_to_si(text: str, dim: Dimension) -> float:
         raise InputError(f"{text!r} -- Hz is ambiguous for a rotational speed; "
                          "use rpm, rev/s or rad/s")
     try:
-        quantity = ureg.Quantity(float(number), unit or "dimensionless")
+        quantity = (rotational_speed(float(number), unit) if dim.name == "angular_speed"
+                    else ureg.Quantity(float(number), unit or "dimensionless"))
     except (pint.errors.UndefinedUnitError, pint.errors.DefinitionSyntaxError,
             AttributeError, TypeError, ValueError, AssertionError) as exc:
         raise InputError(f"unknown unit {unit!r} in {text!r}; expected a {dim.name} "
@@ -221,6 +230,47 @@ def _string_to_si(text: str, dim: Dimension) -> float:
         return float(quantity.to(dim.si_unit).magnitude)
     except pint.errors.PintError as exc:  # pragma: no cover - guarded by the check above
         raise InputError(f"cannot convert {text!r} to {dim.si_unit}") from exc
+
+
+#: "revolution" as catalogues write it where pint knows another unit or none: U (DIN 1301
+#: "U/min"; pint's U is the enzyme unit) and r (ISO 80000 "r/min")
+_REVOLUTION_WORD = re.compile(r"(?<![A-Za-z_])[Ur](?![A-Za-z_])")
+
+
+def revolutions_per_time(quantity):
+    """A rotational speed written as a reciprocal time (``1/min``, ``s^-1``) as revolutions per
+    that time; any other quantity (``rpm``, ``rad/s``, ``deg/s``) unchanged.
+
+    pint reads ``1/min`` as radians per minute (the radian is dimensionless), whereas a speed in
+    1/min on a data sheet is revolutions per minute (DIN 1301-2).
+
+    Examples
+    --------
+    >>> q = revolutions_per_time(unit_registry().Quantity(1500, "1/min"))
+    >>> round(q.to("rpm").magnitude, 9), round(q.to("rad/s").magnitude, 3)
+    (1500.0, 157.08)
+    """
+    ureg = unit_registry()
+    units = quantity.unit_items()
+    if units and all(ureg.Quantity(1, name).dimensionality == {"[time]": 1}
+                     for name, _ in units):
+        return quantity * ureg.revolution
+    return quantity
+
+
+def rotational_speed(magnitude, unit: str):
+    """A pint quantity of a rotational speed written in ``unit`` as data sheets write it.
+
+    ``U`` and ``r`` stand for revolutions (``U/min``, ``r/min``) and a reciprocal time
+    (``1/min``, ``s^-1``) is revolutions per time (:func:`revolutions_per_time`).
+
+    Examples
+    --------
+    >>> round(rotational_speed(1500.0, "U/min").to("rpm").magnitude, 9)
+    1500.0
+    """
+    unit = _REVOLUTION_WORD.sub("rev", unit)
+    return revolutions_per_time(unit_registry().Quantity(magnitude, unit or "dimensionless"))
 
 
 def format_quantity(value: float, dimension: str) -> str:
@@ -239,6 +289,13 @@ def format_quantity(value: float, dimension: str) -> str:
     magnitude = unit_registry().Quantity(value, dim.si_unit).to(dim.output_unit).magnitude
     unit = dim.output_unit.replace("**", "^")
     return f"{magnitude:.12g} {unit}"
+
+
+def _shown(value) -> str:
+    """``repr`` of a value, shortened to 40 characters (an int of 400 digits)."""
+    text = (np.array2string(value, threshold=6, separator=", ") if isinstance(value, np.ndarray)
+            else repr(value))
+    return text if len(text) <= 40 else text[:37] + "..."
 
 
 def to_si(value, dimension: str, field: str | None = None, *, plain_is_si: bool = True):
@@ -285,9 +342,11 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
     prefix = f"{field}: " if field else ""
     quantity_type = unit_registry().Quantity
     if isinstance(value, quantity_type) and np.ndim(value.magnitude) > 0:
-        if dimension == "angular_speed" and "hertz" in str(value.units):
-            raise InputError(prefix + "Hz is ambiguous for a rotational speed; use rpm, rev/s "
-                             "or rad/s")
+        if dimension == "angular_speed":
+            if "hertz" in str(value.units):
+                raise InputError(prefix + "Hz is ambiguous for a rotational speed; use rpm, "
+                                 "rev/s or rad/s")
+            value = revolutions_per_time(value)   # 1/min given for a speed: rpm
         if value.dimensionality != dim.dimensionality:
             raise InputError(prefix + f"unit {value.units:~} has dimension "
                              f"{value.dimensionality}, expected a {dim.name} (e.g. "
@@ -295,16 +354,31 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
         si = np.asarray(value.to(dim.si_unit).magnitude, dtype=float)
     elif isinstance(value, list | tuple | np.ndarray):
         array = np.asarray(value, dtype=object)
-        si = np.array([to_si(v, dimension, field, plain_is_si=plain_is_si)
-                       for v in array.ravel()], dtype=float).reshape(array.shape)
-        return si
+        items = array.ravel()
+        if any(isinstance(v, list | tuple | np.ndarray) or np.ndim(getattr(v, "magnitude", 0))
+               for v in items):
+            raise InputError(prefix + "a ragged list (rows of different lengths, or arrays "
+                             "inside a list) is not an array of values; give a rectangular "
+                             "list or one pint array")
+        if (not plain_is_si and dimension != "dimensionless" and items.size
+                and all(isinstance(v, int | float | np.number) for v in items)):
+            raise InputError(prefix + f"numbers without a unit ({_shown(value)}); write each "
+                             f"with its unit, e.g. [{dim.example!r}, ...], or give a pint "
+                             f"array: numpy array * sealsim.units.ureg("
+                             f"{dim.example.split(' ', 1)[1]!r})")
+        return np.array([to_si(v, dimension, field, plain_is_si=plain_is_si)
+                         for v in items], dtype=float).reshape(array.shape)
     elif isinstance(value, int | float | np.number) and not isinstance(value, bool | np.bool_):
         if not plain_is_si and dimension != "dimensionless":
             why = (" a plain number is ambiguous for an angular speed (rpm or rad/s?):"
                    if dimension == "angular_speed" else "")
-            raise InputError(prefix + f"{value!r} has no unit;{why} write it with its unit, e.g. "
-                             f"'{value!r} {dim.example.split(' ', 1)[1]}'")
-        si = np.asarray(float(value))
+            raise InputError(prefix + f"{_shown(value)} has no unit;{why} write it with its "
+                             f"unit, e.g. {dim.example!r}")
+        try:
+            si = np.asarray(float(value))
+        except OverflowError:
+            raise InputError(prefix + f"{_shown(value)} is too large; expected a {dim.name} "
+                             f"such as {dim.example!r}") from None
     else:
         return parse_quantity(value, dimension, field)
     if not np.all(np.isfinite(si)):

@@ -8,7 +8,7 @@ an earlier build survives):
 * ``api/``: one autodoc page per module (:mod:`.api_reference`);
 * ``gallery_src/``: the gallery's source tree (:mod:`.gallery`), which sphinx-gallery runs
   into ``gallery/``;
-* ``readme_results.md``, ``live_tables.rst`` and ``tests.rst``: material of the validation page
+* ``live_tables.rst`` and ``tests.rst``: material of the validation page
   (:mod:`.validation`);
 * ``one_call.rst``: the functions of the package's top level, for getting started.
 """
@@ -52,10 +52,8 @@ def generate(docs_dir: Path) -> dict[str, float]:
     lap("cli reference")
     api_reference.write(out / "api", modules)
     gallery.build(repo / "examples", docs_dir / "gallery", out / "gallery_src", classified)
-    (out / "readme_results.md").write_text(validation.readme_markdown(repo / "README.md"),
-                                           encoding="utf-8")
     (out / "tests.rst").write_text(validation.tests_table(repo / "tests"), encoding="utf-8")
-    lap("api, gallery sources, README, tests")
+    lap("api, gallery sources, tests")
     (out / "live_tables.rst").write_text(validation.live_tables(repo), encoding="utf-8")
     lap("live validation tables")
     (out / "one_call.rst").write_text(api_reference.one_call_section(

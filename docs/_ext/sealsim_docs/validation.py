@@ -1,8 +1,7 @@
-"""Material of the validation page: the README's measured results and the test catalogue.
+"""Material of the validation page: live comparison tables and the test catalogue.
 
-* The README is where measured numbers are published, each with the command that produced
-  it; its sections whose heading names validation, calibration or benchmarks are copied into
-  the documentation unchanged (Markdown, rendered by MyST), so the two cannot disagree.
+* The measured numbers are published in ``docs/guide/`` (Markdown pages of the validation
+  section), each with the command that produced it.
 * Fast scripts of the repository that print a Markdown table of model against reference
   (:data:`LIVE_TABLES`) are run, and their table shown as computed by today's code.
 * The test catalogue lists every test module with its docstring (what it checks against) and
@@ -14,7 +13,6 @@ from __future__ import annotations
 import ast
 import contextlib
 import io
-import re
 import runpy
 from pathlib import Path
 
@@ -24,33 +22,6 @@ from . import rst
 #: Markdown table and takes seconds
 LIVE_TABLES = [("examples/rotary/iso_comparison.py",
                 "Lip seal power loss: sealsim against ISO/TR 14179-2")]
-
-#: README sections (``## ...`` headings) copied into the validation page
-SECTION_PATTERN = re.compile(r"validation|calibration|benchmark|accuracy", re.IGNORECASE)
-
-
-def readme_sections(readme: Path, pattern: re.Pattern = SECTION_PATTERN) -> list[tuple[str, str]]:
-    """``(heading, body)`` of every level-2 section of the README whose heading matches."""
-    text = readme.read_text(encoding="utf-8")
-    parts = re.split(r"^## +(.+?)\s*$", text, flags=re.MULTILINE)
-    # parts: [preamble, heading1, body1, heading2, body2, ...]
-    return [(parts[i], parts[i + 1].strip("\n")) for i in range(1, len(parts) - 1, 2)
-            if pattern.search(parts[i])]
-
-
-def readme_markdown(readme: Path) -> str:
-    """The matching README sections as one Markdown document under one title."""
-    sections = readme_sections(readme)
-    if not sections:
-        raise ValueError(f"{readme} has no section whose heading matches "
-                         f"{SECTION_PATTERN.pattern!r}; the validation page would be empty")
-    out = ["# Measured results\n",
-           "Copied from the repository's README, where each number is published with the "
-           "command that measured it.\n"]
-    for heading, body in sections:
-        out.append(f"## {heading}\n\n{body}\n")
-    return "\n".join(out)
-
 
 def test_files(tests_dir: Path) -> list[tuple[str, str, int]]:
     """``(file name, docstring, number of test functions)`` of every ``test_*.py``."""

@@ -30,6 +30,17 @@ measurements (see ``examples/calibration/tudelft_oring.toml``)::
     bore = "25 mm"
     role = "fit"                      # or "validate": predicted, never fitted
 
+Every condition the model needs comes from the file or the case, never from a default: the
+pressure (a ``pressure`` column, or ``pressure = "2 bar"`` of the measurement) when a contact
+map or a pressure-scaled law uses it, the seal temperature (``temperature`` of the measurement
+or of ``[contact]``) when a contact map uses it; without them the fit is refused, naming the
+measurement and the missing quantity.
+
+Sign convention: the friction force is the force the seal resists the motion with, positive
+while the velocity is positive.  A measured friction level that comes out negative means the
+file counts it the other way: ``scale = -1`` on the friction column flips it (on the position
+or velocity column when the friction is computed from the rod force and the pressure).
+
 Stages: ``steady`` parameters are fitted first to the friction level of every sliding phase
 (the steady sweep); ``dynamic`` parameters then to the whole friction time series with the
 steady ones fixed (the literature's staged identification, e.g. Canudas de Wit et al. 1995,
@@ -40,9 +51,9 @@ from __future__ import annotations
 
 from typing import Any, Literal
 
-from pydantic import Field, TypeAdapter, model_validator
+from pydantic import Field, TypeAdapter, ValidationError, model_validator
 
-from sealsim.cases import CaseModel, Q
+from sealsim.cases import CaseModel, Q, validation_problems
 from sealsim.errors import InputError
 from sealsim.friction.case import LawParameters
 from sealsim.measurements.readers import QUANTITIES, ColumnSpec
@@ -87,8 +98,14 @@ class ContactModel(CaseModel):
 
     location: Literal["piston", "rod"] = "piston"
     sliding_diameter: Q("length", gt=0)
-    temperature: Q("temperature", gt=0) = 293.15
+    temperature: Q("temperature", gt=0) | None = Field(None, description=(
+        "seal temperature of every measurement that gives none; a contact map needs one"))
     map: MapModel | None = None
+    positive_velocity: Literal["away_from_pressure", "towards_pressure"] = Field(
+        "away_from_pressure", description=(
+            "how the counter surface slides relative to the seal when the measured velocity "
+            "is positive: away from the pressurised side (a rod seal's outstroke) or towards "
+            "it; sets the stroke direction of a friction table from the seal's contact"))
 
 
 class ColumnModel(CaseModel):
@@ -100,15 +117,31 @@ class ColumnModel(CaseModel):
 
 
 class MeasurementModel(CaseModel):
-    """A measured run: a file, how to read it, its role and the conditions not measured."""
+    """A measured run: a file, how to read it, its role and the conditions not measured.
+
+    Sign convention: the friction is the force the seal resists the motion with, positive
+    while the velocity is positive.  A file that counts it the other way gives a negative
+    friction level, which is refused with a hint: flip it with ``scale = -1`` on the friction
+    column, or on the position (or velocity) column when the friction is computed from the
+    rod force and the pressure (columns ``force`` and ``pressure`` with ``bore``: friction =
+    p·π·D²/4 − F_rod, the force balance of a piston the pressure drives against its rod).
+
+    Conditions: the pressure (a ``pressure`` column or ``pressure``) is needed when a contact
+    map or a pressure-scaled law uses it, the seal temperature (``temperature`` here or in
+    ``[contact]``) when a contact map does; a fit without them is refused, never run at a
+    default.  German rigs' files: ``delimiter = ";"`` with ``decimal = ","``.
+    """
 
     name: str = Field(min_length=1)
     file: str
     role: Literal["fit", "validate"]
     format: Literal["tudelft"] | None = None
-    bore: Q("length", gt=0) | None = None
+    bore: Q("length", gt=0) | None = Field(None, description=(
+        "bore diameter D: friction = p*pi*D^2/4 - F_rod from pressure and rod force columns "
+        "(format 'tudelft', or columns force and pressure without friction)"))
     columns: dict[str, ColumnModel] | None = None
     delimiter: str | None = None
+    decimal: Literal[".", ","] = "."
     header: bool = False
     skip_rows: int | None = Field(None, ge=0)
     pressure: Q("pressure") | None = None
@@ -125,9 +158,14 @@ class MeasurementModel(CaseModel):
             if unknown:
                 raise ValueError(f"unknown column quantities {unknown}; choose from "
                                  f"{sorted(QUANTITIES)}")
-            missing = {"time", "friction"} - set(self.columns)
-            if missing:
-                raise ValueError(f"columns must include {sorted(missing)}")
+            if "time" not in self.columns:
+                raise ValueError("columns must include ['time']")
+            if "friction" not in self.columns and not {"force", "pressure"} <= set(self.columns):
+                raise ValueError("columns must include friction, or force (the rod force) and "
+                                 "pressure with bore, to compute friction = p*A - F_rod")
+            if "friction" not in self.columns and self.bore is None:
+                raise ValueError("friction from the force and pressure columns needs bore "
+                                 "(e.g. bore = '25 mm'), the diameter the pressure acts on")
             if "position" not in self.columns and "velocity" not in self.columns:
                 raise ValueError("columns must include position or velocity")
         return self
@@ -150,12 +188,20 @@ class FrictionFitCase(CaseModel):
     def _check(self):
         check_measurements(self.measurements)
         fields = type(self.friction).model_fields
+        unused = getattr(self.friction, "unused_fields", tuple)()
         pnames = [p.name for p in self.fit.parameters]
         for p in self.fit.parameters:
             if p.name in ("law", "parameter_set") or p.name not in fields:
                 allowed = sorted(f for f in fields if f not in ("law", "parameter_set"))
                 raise ValueError(f"fit parameter {p.name!r} is not a parameter of the "
                                  f"{self.friction.law} law; choose from {allowed}")
+            if p.name in unused:
+                allowed = sorted(f for f in fields if f not in (
+                    "law", "parameter_set", "steady", *unused))
+                raise ValueError(
+                    f"fit parameter {p.name!r} is not used by the {self.friction.law} law with "
+                    f"steady = {self.friction.steady!r} (unused: {', '.join(unused)}), so the "
+                    f"fit could not determine it; fit one of {allowed}")
             if pnames.count(p.name) > 1:
                 raise ValueError(f"fit parameter {p.name!r} is listed twice")
         for target, source in self.fit.tied.items():
@@ -188,9 +234,8 @@ def parse_field_value(field, label: str, value, where: str) -> float:
     try:
         parsed = TypeAdapter(field.rebuild_annotation()).validate_python(
             value, context={"require_units": True})
-    except Exception as exc:  # pydantic.ValidationError: one readable line
-        text = str(exc).splitlines()
-        detail = text[-1].strip() if text else str(exc)
+    except ValidationError as exc:  # one readable line per problem, without pydantic's URL
+        detail = "; ".join(validation_problems(exc))
         raise InputError(f"{where}: {value!r} is not a valid {label}: {detail}") from None
     if parsed is None or isinstance(parsed, bool) or not isinstance(parsed, int | float):
         raise InputError(f"{where}: {value!r} is not a number for {label}")

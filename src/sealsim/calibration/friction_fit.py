@@ -22,8 +22,10 @@ Jacobian (:func:`sealsim.calibration.statistics.parameter_statistics`).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import warnings
+from collections import OrderedDict
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -43,10 +45,18 @@ from sealsim.measurements import (
     sliding_phases,
     smooth_derivative,
 )
+from sealsim.pneumatic.friction_tables import (
+    LAW_TABLE_FIELDS,
+    ContactTribology,
+    build_friction_table,
+)
 from sealsim.units import ZERO_CELSIUS_K
 
-__all__ = ["FitResult", "PreparedRun", "fit_friction", "predict_run", "prepare_run",
-           "run_metrics"]
+__all__ = ["FitResult", "PreparedRun", "fit_friction", "friction_from_rod_force", "predict_run",
+           "prepare_run", "run_metrics", "with_law_table"]
+
+#: friction tables of the tribology values a fit tried last, kept per contact map (in memory)
+_FIT_TABLES = 16
 
 
 @dataclass
@@ -64,10 +74,16 @@ class PreparedRun:
     phases: list
     pressure: np.ndarray           # gauge pressure on the pressurised side [Pa]
     pressure_difference: np.ndarray
-    temperature: float
+    temperature: float | None
     normal_force: np.ndarray | None = None
     contact_width: np.ndarray | None = None
     samples: np.ndarray = field(default_factory=lambda: np.zeros(0, dtype=int))
+    contact_table: Any = None          # steady friction table from the seal's contact
+    contact_map: Any = None            # the map the table was built from
+    tribology: Any = None              # ... and its ContactTribology
+    sliding_diameter: float | None = None
+    orientation: float = 1.0
+    pressure_known: bool = True    # False: no pressure given and none needed (zeros)
 
     @property
     def name(self) -> str:
@@ -81,48 +97,72 @@ def _resolve(path: str, base_dir: Path) -> Path:
 
 def prepare_run(case: FrictionFitCase, spec: MeasurementModel, contact_map=None,
                 base_dir: str | Path = ".") -> PreparedRun:
-    """Read a measurement, derive v(t), find the sliding phases, evaluate F_N(t), b(t).
+    """Read a measurement, derive v(t), find the sliding phases, evaluate F_N(t), b(t) and,
+    for a Θ law on the seal's own contact, its friction table.
 
     Raises
     ------
     InputError
-        Bad file (file/row/column named), no sliding phase, a pressure outside the contact
-        map's range.
+        Bad file (file/row/column named), no sliding phase, a condition the model needs that
+        neither the file nor the case gives (pressure, temperature), a negative friction level
+        (a reversed sign convention), a pressure outside the contact map's range.
     """
     path = _resolve(spec.file, Path(base_dir))
     where = f"measurement {spec.name!r} ({path})"
     options = {"bore": spec.bore} if spec.format == "tudelft" else None
-    table = {} if spec.format else {"delimiter": spec.delimiter, "header": spec.header}
+    table = {} if spec.format else {"delimiter": spec.delimiter, "header": spec.header,
+                                    "decimal": spec.decimal}
     if spec.skip_rows is not None:
         table["skip_rows"] = spec.skip_rows
     m = read_measurement(path, format=spec.format,
                          columns=spec.column_specs() if spec.columns else None,
                          options=options, name=spec.name, **table)
+    computed = not m.has("friction")
+    if computed:  # a rig that logs the rod force and the pressure on the piston
+        m.data["friction"] = friction_from_rod_force(m.column("pressure"), m.column("force"),
+                                                     spec.bore)
     t = m.time
     sig = case.signals
-    if m.has("position"):
-        x = m.column("position")
-        v = m.column("velocity") if m.has("velocity") else smooth_derivative(
-            t, x, window=sig.velocity_window)
-    else:
-        v = m.column("velocity")
-        x = np.concatenate([[0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * np.diff(t))])
     try:
+        if m.has("position"):
+            x = m.column("position")
+            v = m.column("velocity") if m.has("velocity") else smooth_derivative(
+                t, x, window=sig.velocity_window)
+        else:
+            v = m.column("velocity")
+            x = np.concatenate([[0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * np.diff(t))])
         phases = sliding_phases(t, v, sig.sliding_threshold, sig.min_phase_duration, sig.settle)
         level, offset = friction_level(m.column("friction"), phases)
     except InputError as exc:
         raise InputError(f"{where}: {exc}") from None
+    if level < 0:
+        flip = ("the position (or velocity) column" if computed else "the friction column")
+        raise InputError(
+            f"{where}: the measured friction level is {level:.4g} N, negative: the friction "
+            "in the file probably counts the other way than sealsim (the force the seal "
+            "resists the motion with, positive while the velocity is positive); flip it with "
+            f"scale = -1 on {flip}")
+    needs = _needed_conditions(case, contact_map)
     if m.has("pressure"):
         p = m.column("pressure")
     elif spec.pressure is not None:
         p = np.full(t.shape, spec.pressure)
+    elif "pressure" in needs:
+        raise InputError(f"{where}: no pressure: {needs['pressure']} needs the pressure of "
+                         "every run; give a pressure column or pressure = '2 bar' (gauge) in "
+                         "this measurement")
     else:
-        p = np.zeros(t.shape)
+        p = None
     temperature = spec.temperature if spec.temperature is not None else (
-        case.contact.temperature if case.contact is not None else 293.15)
+        case.contact.temperature if case.contact is not None else None)
+    if temperature is None and "temperature" in needs:
+        raise InputError(f"{where}: no seal temperature: {needs['temperature']} needs it; give "
+                         "temperature = '20 degC' in this measurement or in [contact]")
+    known = p is not None
+    p = p if known else np.zeros(t.shape)   # the law does not use it (see _needed_conditions)
     dp = np.abs(p)          # piston seal: pressurised side | ambient; rod seal: chamber | ambient
     run = PreparedRun(spec, m, t, x, v, m.column("friction") - offset, offset, level, phases,
-                      p, dp, temperature)
+                      p, dp, temperature, pressure_known=known)
     if contact_map is not None:
         lo, hi = contact_map.ranges["pressure"]
         tol = 0.02 * max(hi - lo, 1.0)
@@ -139,9 +179,92 @@ def prepare_run(case: FrictionFitCase, spec: MeasurementModel, contact_map=None,
         fn, b = contact_map.evaluate(np.clip(dp, lo, hi), temperature)
         run.normal_force = np.asarray(fn, dtype=float)
         run.contact_width = np.asarray(b, dtype=float)
+        from sealsim.pneumatic.case import map_elastomer, seal_friction_table
+
+        law = make_law(case.friction)
+        run.contact_table = seal_friction_table(law, contact_map, "contact.map")
+        if run.contact_table is not None:
+            run.contact_map = contact_map
+            run.tribology = ContactTribology.from_law(law, map_elastomer(contact_map))
+            run.sliding_diameter = case.contact.sliding_diameter
+            run.orientation = (1.0 if case.contact.positive_velocity == "away_from_pressure"
+                               else -1.0)
     stride = max(1, int(math.ceil(t.size / case.fit.max_samples)))
     run.samples = np.arange(0, t.size, stride)
     return run
+
+
+def friction_from_rod_force(pressure, rod_force, bore: float) -> np.ndarray:
+    """Friction of a piston seal from the pressure on the piston and the rod force [N].
+
+    .. math:: F_f = p\\,A - F_{rod}, \\qquad A = \\pi D^2/4
+
+    The force balance of a piston that the gauge pressure p drives against the rod force
+    F_rod (the force the rod passes on to the load cell), with the friction resisting the
+    motion: positive while the piston moves the way the pressure pushes it.  If the rig counts
+    position the other way, the friction level comes out negative: flip the position (or
+    velocity) column with ``scale = -1``.
+
+    Parameters
+    ----------
+    pressure : array_like
+        Gauge pressure on the piston [Pa].
+    rod_force : array_like
+        Rod force [N].
+    bore : float
+        Bore diameter D [m].
+
+    Examples
+    --------
+    >>> round(float(friction_from_rod_force(2e5, 90.0, 0.025)), 3)   # 98.175 N - 90 N
+    8.175
+    """
+    area = math.pi * bore ** 2 / 4.0
+    return np.asarray(pressure, dtype=float) * area - np.asarray(rod_force, dtype=float)
+
+
+def with_law_table(law: FrictionLaw, runs: list[PreparedRun]) -> list[PreparedRun]:
+    """The runs with the friction table of ``law``'s own tribology.
+
+    A run's table from the seal's contact is built with the starting values of the fields
+    :data:`~sealsim.pneumatic.friction_tables.LAW_TABLE_FIELDS` (roughness, film_factor,
+    thickener_factor, asperity_wavelength, the base oil, ...).  A fit that varies one of them
+    needs the table of every value it tries: it is built in memory from the run's contact map
+    (0.05-0.5 s for one map; never written to the map cache) and the last few are kept, so the
+    finite-difference steps and the final evaluation reuse them.  Runs whose table already
+    matches, or that have none, are returned as they are.
+    """
+    out = []
+    for run in runs:
+        if run.contact_map is None or not getattr(law, "contact", False):
+            out.append(run)
+            continue
+        tribology = ContactTribology.from_law(law, run.tribology.elastomer)
+        if tribology == run.tribology:
+            out.append(run)
+            continue
+        memo = run.contact_map.__dict__.setdefault("_fit_friction_tables", OrderedDict())
+        table = memo.pop(tribology, None)
+        if table is None:
+            table = build_friction_table(run.contact_map, tribology)
+        memo[tribology] = table
+        while len(memo) > _FIT_TABLES:
+            memo.popitem(last=False)
+        out.append(dataclasses.replace(run, contact_table=table, tribology=tribology))
+    return out
+
+
+def _needed_conditions(case: FrictionFitCase, contact_map) -> dict[str, str]:
+    """The conditions the model of a fit uses, each with what uses it."""
+    needs = {}
+    if contact_map is not None:
+        needs["pressure"] = needs["temperature"] = "the contact map (F_N and b)"
+    fitted = {p.name for p in case.fit.parameters}
+    if "pressure_coefficient" in type(case.friction).model_fields and (
+            getattr(case.friction, "pressure_coefficient", None) or
+            "pressure_coefficient" in fitted):
+        needs.setdefault("pressure", f"the pressure scaling of the {case.friction.law} law")
+    return needs
 
 
 def _inputs(run: PreparedRun, index=slice(None), column=False) -> ContactInputs:
@@ -153,7 +276,10 @@ def _inputs(run: PreparedRun, index=slice(None), column=False) -> ContactInputs:
     return ContactInputs(normal_force=pick(run.normal_force),
                          contact_width=pick(run.contact_width),
                          pressure_a=pick(run.pressure), pressure_b=0.0,
-                         temperature=run.temperature)
+                         temperature=run.temperature, contact_table=run.contact_table,
+                         sliding_diameter=run.sliding_diameter,
+                         pressure_difference=pick(run.pressure_difference),
+                         table_orientation=run.orientation)
 
 
 def predict_run(law: FrictionLaw, run: PreparedRun) -> np.ndarray:
@@ -196,7 +322,8 @@ def run_metrics(run: PreparedRun, predicted: np.ndarray) -> dict[str, Any]:
     f_pred, _ = friction_level(predicted, run.phases)
     agreement = compare_signals(run.friction, predicted)
     return {"role": run.spec.role,
-            "pressure_bar": float(np.median(run.pressure)) / 1e5,
+            "pressure_bar": (float(np.median(run.pressure)) / 1e5 if run.pressure_known
+                             else None),
             "F_measured_N": run.level, "F_predicted_N": f_pred,
             "rel_error": (f_pred - run.level) / run.level if run.level else None,
             "rmse_N": agreement["rmse"], "r2": agreement["r2"]}
@@ -242,6 +369,7 @@ def fit_friction(case: FrictionFitCase, runs: list[PreparedRun], progress=None) 
     """
     start = case.friction
     names, bounds, initial, stage_of = [], [], [], []
+    start_notes: list[str] = []
     for k, p in enumerate(case.fit.parameters):
         where = f"fit.parameters[{k}] ({p.name!r})"
         lo = parse_law_value(start, p.name, p.bounds[0], f"{where}.bounds[0]")
@@ -254,19 +382,29 @@ def fit_friction(case: FrictionFitCase, runs: list[PreparedRun], progress=None) 
         if x0 is None:
             raise InputError(f"{where}: the law has no value for {p.name}; give initial")
         if not lo <= x0 <= hi:
-            x0 = math.sqrt(lo * hi) if _log_space(lo, hi) else 0.5 * (lo + hi)
+            if p.initial is not None:
+                raise InputError(f"{where}.initial: {p.initial!r} lies outside the bounds "
+                                 f"[{p.bounds[0]!r}, {p.bounds[1]!r}]; give a start value "
+                                 "inside them (or widen the bounds)")
+            middle = math.sqrt(lo * hi) if _log_space(lo, hi) else 0.5 * (lo + hi)
+            start_notes.append(f"{p.name}: the law's value {x0:.6g} (SI) lies outside the "
+                               f"bounds {p.bounds}; the fit started from {middle:.6g} (SI); "
+                               "give initial to choose the start")
+            x0 = middle
         names.append(p.name)
         bounds.append((lo, hi))
         initial.append(float(x0))
         stage_of.append(p.stage)
     fit_runs = [r for r in runs if r.spec.role == "fit"]
     tied = case.fit.tied
+    # a varied field the friction table is built with needs the table of each value it takes
+    retable = bool(set(LAW_TABLE_FIELDS) & (set(names) | set(tied)))
 
     def with_ties(vals):
         return {**vals, **{target: vals[source] for target, source in tied.items()}}
 
     values = dict(zip(names, initial))
-    stages, notes = [], []
+    stages, notes = [], start_notes
     failure: list[str] = []
     all_jac_rows = {}
     for stage in ("steady", "dynamic"):
@@ -291,7 +429,7 @@ def fit_friction(case: FrictionFitCase, runs: list[PreparedRun], progress=None) 
             except InputError:
                 return np.full(n_res, 1e6)
             parts = []
-            for r in fit_runs:
+            for r in (with_law_table(law, fit_runs) if retable else fit_runs):
                 if stage == "steady":
                     parts.append(measured_phase_forces(r) - steady_phase_forces(law, r))
                 else:

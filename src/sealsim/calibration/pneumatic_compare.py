@@ -36,10 +36,10 @@ from sealsim.calibration.statistics import compare_signals
 from sealsim.cases import CaseModel, load_toml, validate_case
 from sealsim.errors import InputError
 from sealsim.measurements import ColumnSpec, read_table
-from sealsim.pneumatic.case import load_pneumatic_case_file
+from sealsim.pneumatic.case import case_input_files, load_pneumatic_case_file
 from sealsim.pneumatic.simulation import simulate
 
-__all__ = ["CompareCase", "PneumaticComparison", "compare_pneumatic_file"]
+__all__ = ["CompareCase", "PneumaticComparison", "compare_inputs", "compare_pneumatic_file"]
 
 SIGNALS = {"position": ("x_m", 1.0, "mm", 1e3),
            "pressure_1": ("p1_bar_abs", 1e5, "bar", 1e-5),
@@ -50,6 +50,7 @@ class CompareMeasurement(CaseModel):
     file: str
     columns: dict[str, ColumnModel]
     delimiter: str | None = None
+    decimal: Literal[".", ","] = "."
     header: bool = False
     skip_rows: int = Field(0, ge=0)
     pressure: Literal["gauge", "absolute"] = "gauge"
@@ -78,6 +79,23 @@ class PneumaticComparison:
     title: str
 
 
+def compare_inputs(path: str | Path) -> list[Path]:
+    """The files a compare file reads: itself, its pneumatic case (and the map files the case
+    names) and the measurement -- refused inside the result folder."""
+    path = Path(path)
+    spec = validate_case(CompareCase, load_toml(path), f"compare file {str(path)!r}")
+    case_path = _resolve(spec.case, path.parent)
+    files = [path, case_path, _resolve(spec.measurement.file, path.parent)]
+    if case_path.is_file():
+        for case in load_pneumatic_case_file(case_path).values():
+            files += case_input_files(case, case_path.parent)
+    return files
+
+
+def _resolve(name: str, base: Path) -> Path:
+    return Path(name) if Path(name).is_absolute() else base / name
+
+
 def compare_pneumatic_file(path: str | Path, progress=None) -> PneumaticComparison:
     """Simulate the case of a compare file and compare it with the measurement.
 
@@ -91,7 +109,7 @@ def compare_pneumatic_file(path: str | Path, progress=None) -> PneumaticComparis
     path = Path(path)
     spec = validate_case(CompareCase, load_toml(path), f"compare file {str(path)!r}")
     base = path.parent
-    case_path = Path(spec.case) if Path(spec.case).is_absolute() else base / spec.case
+    case_path = _resolve(spec.case, base)
     cases = load_pneumatic_case_file(case_path)
     if spec.variant is None and len(cases) > 1:
         raise InputError(f"{path}: variant: the case has variants {sorted(cases)}; name one")
@@ -103,10 +121,11 @@ def compare_pneumatic_file(path: str | Path, progress=None) -> PneumaticComparis
     if "time" not in m.columns or not wanted <= set(SIGNALS) or not wanted:
         raise InputError(f"{path}: measurement.columns needs time and at least one of "
                          f"{sorted(SIGNALS)} (got {sorted(m.columns)})")
-    mfile = Path(m.file) if Path(m.file).is_absolute() else base / m.file
+    mfile = _resolve(m.file, base)
     measured = read_table(mfile, [ColumnSpec(q, c.column, c.unit, c.scale)
                                   for q, c in m.columns.items()],
-                          delimiter=m.delimiter, header=m.header, skip_rows=m.skip_rows)
+                          delimiter=m.delimiter, header=m.header, skip_rows=m.skip_rows,
+                          decimal=m.decimal)
     case = cases[name]
     result = simulate(case, base_dir=case_path.parent,
                       progress=None if progress is None else lambda t, e: progress(name, t, e))

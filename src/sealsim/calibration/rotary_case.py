@@ -203,6 +203,7 @@ class RotaryMeasurementModel(CaseModel):
     role: Literal["fit", "validate"]
     columns: dict[str, ColumnModel]
     delimiter: str | None = None
+    decimal: Literal[".", ","] = "."
     header: bool = False
     skip_rows: int = Field(0, ge=0)
     conditions: dict[str, Any] = Field(default_factory=dict, description=(

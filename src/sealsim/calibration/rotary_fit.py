@@ -234,7 +234,7 @@ def prepare_rotary_run(case: RotaryFitCase, spec: RotaryMeasurementModel,
     m = read_measurement(path, columns=[ColumnSpec(q, c.column, c.unit, c.scale)
                                         for q, c in spec.columns.items()],
                          name=spec.name, delimiter=spec.delimiter, header=spec.header,
-                         skip_rows=spec.skip_rows)
+                         skip_rows=spec.skip_rows, decimal=spec.decimal)
     t_file = m.time
     t = t_file - t_file[0]
     speed = m.column("speed")

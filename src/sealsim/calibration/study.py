@@ -30,11 +30,13 @@ from sealsim.calibration.friction_fit import (
     predict_run,
     prepare_run,
     run_metrics,
+    with_law_table,
 )
 from sealsim.calibration.statistics import parameter_report
 from sealsim.cases import load_toml, validate_case
 from sealsim.errors import InputError
 from sealsim.friction import make_law
+from sealsim.measurements import friction_level
 
 __all__ = ["FrictionFitStudy", "friction_fit_study", "load_fit_case"]
 
@@ -80,7 +82,7 @@ class FrictionFitStudy:
         return pd.concat([pd.DataFrame({
             "measurement": r.name, "role": r.spec.role, "time_s": r.time,
             "position_mm": r.position * 1e3, "velocity_mm_s": r.velocity * 1e3,
-            "pressure_bar": r.pressure / 1e5,
+            "pressure_bar": r.pressure / 1e5 if r.pressure_known else np.nan,
             "normal_force_N": r.normal_force if r.normal_force is not None else np.nan,
             "friction_measured_N": r.friction, "friction_model_N": self.predictions[r.name]})
             for r in self.runs], ignore_index=True)
@@ -114,9 +116,17 @@ def friction_fit_study(case: FrictionFitCase, base_dir: str | Path,
     runs = [prepare_run(case, spec, cmap, base) for spec in case.measurements]
     result = fit_friction(case, runs, progress)
     law = make_law(result.params)
-    predictions = {r.name: predict_run(law, r) for r in runs}
+    # fitted roughness, film factor, ...: the friction table of the fitted values
+    predictions = {r.name: predict_run(law, r) for r in with_law_table(law, runs)}
     report = {"parameters": parameter_report(result, result.params.model_dump(mode="json")),
               "measurements": {r.name: run_metrics(r, predictions[r.name]) for r in runs}}
+    # the starting parameters' prediction: how far the law is off before any fitting
+    start = make_law(case.friction)
+    for r in runs:
+        level, _ = friction_level(predict_run(start, r), r.phases)
+        report["measurements"][r.name]["F_predicted_without_fit_N"] = level
+        report["measurements"][r.name]["ratio_without_fit"] = (level / r.level if r.level
+                                                               else None)
     diagnostics = {
         "status": result.status, "failure": result.failure, "warnings": result.warnings,
         "stages": result.stages, "parameter_names": result.names,

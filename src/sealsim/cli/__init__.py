@@ -12,12 +12,15 @@ import typer
 
 from sealsim import __version__
 from sealsim.cli._common import console
+from sealsim.cli.app import app_command
 from sealsim.cli.cache import cache_app
 from sealsim.cli.fmu import fmu_app
 from sealsim.cli.friction import friction_app
+from sealsim.cli.gland import gland_app
 from sealsim.cli.pneumatic import pneumatic_app
 from sealsim.cli.properties import material_app, oil_app
 from sealsim.cli.rotary import rotary_app
+from sealsim.cli.schema import schema_command
 from sealsim.cli.structure import structure_app
 from sealsim.cli.study import study_app
 
@@ -39,6 +42,9 @@ app.add_typer(pneumatic_app, name="pneumatic")
 app.add_typer(cache_app, name="cache")
 app.add_typer(fmu_app, name="fmu")
 app.add_typer(study_app, name="study")
+app.command("schema")(schema_command)
+app.add_typer(gland_app, name="gland")
+app.command("app")(app_command)
 
 
 def _version(value: bool) -> None:

@@ -16,7 +16,7 @@ from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.text import Text
 
 from sealsim.errors import SealsimError, Terminated
-from sealsim.output import committed_folders, json_ready
+from sealsim.output import JSON_DIGITS, committed_folders, json_ready
 from sealsim.units import ZERO_CELSIUS_K
 
 console = Console(highlight=False)
@@ -37,8 +37,7 @@ def guarded(func):
         try:
             return func(*args, **kwargs)
         except SealsimError as exc:
-            kind = "input error" if exc.exit_code == 2 else "error"
-            _fail(kind, str(exc))
+            _fail(*error_parts(exc))
             raise typer.Exit(exc.exit_code) from None
         except OSError as exc:
             where = f" {exc.filename!r}" if exc.filename else ""
@@ -58,13 +57,21 @@ def guarded(func):
     return wrapper
 
 
+def error_parts(exc: SealsimError) -> tuple[str, str]:
+    """(kind, message) of a sealsim error as the CLI prints it ("input error: ..."); the app
+    shows the same text."""
+    return ("input error" if exc.exit_code == 2 else "error"), str(exc)
+
+
 def _fail(kind: str, message: str) -> None:
     err_console.print(Text(f"{kind}: ", style="bold red") + Text(message))
 
 
 def print_json(data: Any) -> None:
-    """Print JSON to stdout (plain text, no rich markup); NaN is written as null."""
-    typer.echo(json.dumps(json_ready(data), indent=2))
+    """Print JSON to stdout (plain text, no rich markup); NaN is written as null, floats with
+    :data:`~sealsim.files.JSON_DIGITS` significant digits (32.0, not 31.999999999999808), as
+    in the result files."""
+    typer.echo(json.dumps(json_ready(data, JSON_DIGITS), indent=2))
 
 
 def parse_celsius_list(text: str | None, default: list[float], option: str) -> list[float]:

@@ -39,9 +39,14 @@ def fit(
         console.print(f"{name} = {p['value']:.6g} ± {se:.2g} (1 s.e., SI)" if se is not None
                       else f"{name} = {p['value']:.6g} (not determined)")
     for name, m in report["measurements"].items():
+        error = "-" if m["rel_error"] is None else f"{100 * m['rel_error']:+.1f} %"
+        r2 = "-" if m["r2"] is None else f"{m['r2']:.3f}"
         console.print(f"{name} ({m['role']}): friction level measured {m['F_measured_N']:.3f} N,"
-                      f" model {m['F_predicted_N']:.3f} N, error {100 * m['rel_error']:+.1f} %, "
-                      f"RMSE {m['rmse_N']:.3f} N, R² {m['r2']:.3f}")
+                      f" model {m['F_predicted_N']:.3f} N, error {error}, "
+                      f"RMSE {m['rmse_N']:.3f} N, R² {r2}")
+        if m.get("ratio_without_fit") is not None:
+            console.print(f"  without fitting: {m['F_predicted_without_fit_N']:.3f} N, "
+                          f"{m['ratio_without_fit']:.2f} x measured")
     for text in summary["warnings"]:
         console.print(f"[yellow]warning:[/yellow] {text}")
     console.print(f"results written to {out}")

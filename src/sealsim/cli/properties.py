@@ -268,7 +268,7 @@ def oil_plot(
     extra = _extra_oils(oil_file)
     oils = unique_by_name([get_oil(n, extra) for n in names])
     grid = _grid_celsius(t_min, t_max)
-    folder = ResultFolder(out, force=force)  # refuse an existing folder before any work
+    folder = ResultFolder(out, force=force, inputs=[oil_file] if oil_file else [])  # before work
     frame, notes = viscosity_curves(oils, grid, "--t-min/--t-max")
     if frame.drop(columns="temperature_C").isna().all().all():
         raise InputError(f"nothing to plot between {grid[0]:g} and {grid[-1]:g} degC: "
@@ -408,7 +408,8 @@ def material_plot(
     hi = max(celsius(m.service_range[1]) for m in materials) + 20.0 if t_max is None else t_max
     grid = _grid_celsius(math.floor(lo / 10.0) * 10.0 if t_min is None else lo,
                          math.ceil(hi / 10.0) * 10.0 if t_max is None else hi)
-    folder = ResultFolder(out, force=force)  # refuse an existing folder before any work
+    folder = ResultFolder(out, force=force,
+                          inputs=[material_file] if material_file else [])  # before any work
     frame = modulus_curves(materials, grid, freq)
     if frame.drop(columns="temperature_C").isna().all().all():
         ranges = ", ".join(f"{m.name} {celsius(m.allowed_range[0]):.0f} to "
@@ -423,3 +424,55 @@ def material_plot(
         folder.savefig(MODULUS_PNG, fig)
         folder.write_csv(MODULUS_CSV, frame, float_format="%.6g")
     _wrote(folder, [MODULUS_PNG, MODULUS_CSV])
+
+
+@material_app.command("fit")
+@guarded
+def material_fit(
+    data: Path = typer.Argument(..., help="Material fit file (TOML): stress-strain curves, DMA "
+                                "sweeps, dilatometry, e.g. examples/materials/treloar_ogden.toml."),
+    out: Path = typer.Option(..., "--out", "-o", help="Result folder (must not hold results "
+                                                      "unless --force)."),
+    force: bool = typer.Option(False, "--force", help="Replace an existing result folder."),
+) -> None:
+    """Fit hyperelastic (and viscoelastic, thermal) models to a compound's tests.
+
+    Writes NAME.toml (the compound in the catalogue format, usable as
+    material = "NAME.toml" in cases and by 'sealsim material show NAME.toml'),
+    report.json (parameters with standard errors, RMS relative error and R²
+    per mode, Drucker stability), plots per mode and CSV tables.
+    """
+    from sealsim.runs.material import run_material_fit_file
+
+    result = run_material_fit_file(data, out, force)
+    report = result.report
+    if result.hyperelastic is not None:
+        _say(f"{result.hyperelastic.label}:")
+        for name, p in report["hyperelastic"]["parameters"].items():
+            se = p["stderr"]
+            unit = p["unit"]
+            scale, shown = (1e-6, "MPa") if unit == "Pa" else (1.0, unit)
+            value = f"{p['value'] * scale:.6g}"
+            err = f" ± {se * scale:.2g}" if se is not None else " (not determined)"
+            flag = "" if p["identifiable"] else "  NOT IDENTIFIABLE"
+            _say(f"  {name} = {value}{err} {shown}{flag}")
+        for mode, m in report["hyperelastic"]["modes"].items():
+            r2 = "-" if m["r2"] is None else f"{m['r2']:.4f}"
+            _say(f"  {mode} ({m['role']}): RMS relative error {100 * m['rel_rmse']:.1f} %, "
+                 f"R² {r2}")
+        for label, fit in report["comparisons"].items():
+            errs = ", ".join(f"{mode} {100 * m['rel_rmse']:.1f} %"
+                             + ("" if m["role"] == "fit" else " (predicted)")
+                             for mode, m in fit["modes"].items())
+            _say(f"  compare {label}: {errs}")
+        for label, where in report["unstable_models"].items():
+            text = "; ".join(f"{mode} stable only for λ {w['stable_from']:.3g}–"
+                             f"{w['stable_to']:.3g}" for mode, w in where.items())
+            _say(f"  Drucker-unstable: {label}: {text}")
+    if "dma" in report["modes"]:
+        m = report["modes"]["dma"]
+        _say(f"DMA: Prony series {report['viscoelastic']['prony_terms']} terms, RMS relative "
+             f"error E' {100 * m['rel_rmse']:.1f} %, E'' {100 * m['rel_rmse_loss']:.1f} %")
+    _notes(report["notes"])
+    _say(f"compound file: {Path(out) / (result.case.compound.name + '.toml')}")
+    _say(f"results written to {out}")

@@ -16,6 +16,13 @@ sources so that it can be compiled for another platform.  No Python is needed to
 Running FMUs from Python: :class:`LoadedFMU`, and the co-simulation helpers of
 :mod:`sealsim.fmu.cosim`.  Building and running needs FMPy (``pip install 'sealsim[fmu]'``).
 
+Drive a friction FMU from a table or a measured signal through its **co-simulation**
+interface: in model exchange, a host that does not restart its solver where the input changes
+(FMPy's ``simulate_fmu`` with an input table, ``fmusim``) steps over a velocity reversal of the
+stiff bristle state and gives wrong LuGre forces (2.5 N on a 1.1 N force, measured in the
+documentation page "Working with other tools"); model exchange is right in a closed loop,
+where the velocity is a state the host integrates.
+
 >>> from sealsim.fmu import C_LAWS
 >>> C_LAWS
 ('coulomb', 'stribeck', 'lugre', 'theta')

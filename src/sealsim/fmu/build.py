@@ -39,6 +39,7 @@ from sealsim.fmu.friction_export import (
     friction_spec,
     model_identifier,
 )
+from sealsim.fmu.model_description import xml_text_problem
 
 __all__ = ["build_cylinder_fmu", "build_fmu", "build_friction_fmu", "build_rotary_fmu"]
 
@@ -91,6 +92,7 @@ def build_friction_fmu(law, out, *, contact_map=None, normal_force: float | None
     from sealsim.fmu.report import friction_documentation
 
     check_output(out, force, inputs)
+    _check_title(title, source)
     if kind not in FMI_KINDS:
         raise InputError(f"--kind {kind!r} is not allowed; choose me, cs or both")
     table_settings = table or TableSettings()
@@ -129,6 +131,7 @@ def build_cylinder_fmu(case, out, *, name: str | None = None, fmi_version: int =
     from sealsim.fmu.report import cylinder_documentation
 
     check_output(out, force, inputs)
+    _check_title(title or case.title, source)
     if kind not in FMI_KINDS:
         raise InputError(f"--kind {kind!r} is not allowed; choose me, cs or both")
     system = cylinder_system(case, base_dir)
@@ -137,6 +140,13 @@ def build_cylinder_fmu(case, out, *, name: str | None = None, fmi_version: int =
     return build_archive(spec, out, fmi_version=fmi_version, kind=kind, force=force,
                          compile=compile, check=cylinder_check(system, spec, FMI_KINDS[kind]),
                          document=cylinder_documentation)
+
+
+def _check_title(title: str, source: str) -> None:
+    """A title the FMU's modelDescription.xml can hold, else an InputError naming the field."""
+    problem = xml_text_problem(title)
+    if problem:
+        raise InputError(f"title{f' ({source})' if source else ''}: {problem}")
 
 
 def _default_speed_max(case, base_dir) -> float:
@@ -185,6 +195,7 @@ def build_rotary_fmu(case, out, *, settings: RotarySettings | None = None,
     from sealsim.fmu.rotary_export import rotary_check, rotary_maps, rotary_spec
 
     check_output(out, force, inputs)
+    _check_title(title or case.title, source)
     if kind not in FMI_KINDS:
         raise InputError(f"--kind {kind!r} is not allowed; choose me, cs or both")
     s = settings or RotarySettings()
@@ -290,7 +301,7 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
         seal = seal or settings.seal
         if settings.friction_file is not None:
             fitted = path.parent / settings.friction_file
-            law_override = validate_case(FrictionTable, load_toml(fitted),
+            law_override = validate_case(FrictionTable, load_toml(fitted, "friction file"),
                                          f"friction file {str(fitted)!r}").friction
             inputs.append(fitted)
         elif fmu_case.friction is not None:
@@ -301,7 +312,7 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
         source_path = path.parent / settings.source
         inputs.append(source_path)
         source = f"case file {str(source_path)!r}"
-        data = load_toml(source_path)
+        data = load_toml(source_path, "fmu.source case file")
         kind_of = _case_kind(data, source)
         if kind_of == "fmu":
             raise InputError(f"fmu.source: {str(source_path)!r} is an FMU case itself; give a "

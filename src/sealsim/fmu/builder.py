@@ -39,7 +39,7 @@ from pathlib import Path
 
 from sealsim.errors import InputError, ModelError, OutputError, ResultExistsError, SealsimError
 from sealsim.fmu.model_description import ModelSpec, c_variables, model_description_xml
-from sealsim.files import json_ready
+from sealsim.files import json_ready, sigterm_as_interrupt
 
 __all__ = ["FMI_KINDS", "BuildResult", "FMUCompileError", "FMUDependencyError",
            "build_archive", "check_output", "find_compiler", "platform_folder"]
@@ -346,7 +346,8 @@ def build_archive(spec: ModelSpec, out: str | Path, *, fmi_version: int = 2,
     kinds = FMI_KINDS[kind]
     target = check_output(out, force)
     generated = _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
-    with tempfile.TemporaryDirectory(prefix="sealsim-fmu-") as scratch:
+    # SIGTERM raises like Ctrl-C here, so the scratch folder is removed either way
+    with sigterm_as_interrupt(), tempfile.TemporaryDirectory(prefix="sealsim-fmu-") as scratch:
         folder = Path(scratch) / "fmu"
         folder.mkdir()
         token = _write_sources(folder, spec, fmi_version, kinds)

@@ -29,9 +29,10 @@ Without a ``source`` the FMU case gives the law itself (``[friction]``) and its 
 
 from __future__ import annotations
 
-from pydantic import Field, model_validator
+from pydantic import Field, field_validator, model_validator
 
 from sealsim.cases import CaseModel, Q
+from sealsim.fmu.model_description import xml_text_problem
 from sealsim.friction.case import LawParameters
 from sealsim.pneumatic.case import MapModel
 
@@ -125,6 +126,14 @@ class FMUCase(CaseModel):
     seal_contact: ContactSettings | None = None
     table: TableSettings = TableSettings()
     rotary: RotarySettings = RotarySettings()
+
+    @field_validator("title")
+    @classmethod
+    def _xml_title(cls, title: str) -> str:
+        problem = xml_text_problem(title)
+        if problem:
+            raise ValueError(problem)
+        return title
 
     @model_validator(mode="after")
     def _source_or_law(self):

@@ -115,7 +115,7 @@ def cylinder_spec(system, identifier: str, *, title: str = "", source: str = "")
     n = system.n_dynamic
     names = seal_columns(s.name for s in system.seals)
     states = _state_variables(system)
-    c, spool, _, seal_int, law_par, seal_therm, map_int, map_data = system.tables
+    c, spool, _, seal_int, law_par, seal_therm, map_int, map_data = system.tables[:8]
     variables = [
         Variable("time", "TIME", "independent", "simulation time", "s"),
         Variable("valve_command", "VALVE_COMMAND", "input",

@@ -144,6 +144,27 @@ class ContactTable:
     max_relative_error: dict
 
 
+#: half width of the cells around a kink of a contact map's F_N(T), as a fraction of the
+#: temperature range: 5x the finite-difference step of the node derivatives (1e-5 of the range,
+#: :func:`~sealsim.fmu.tables.smooth_table`), so the nodes beside a kink get its one-sided
+#: slopes and the rounded-off kink spans 2e-4 of the range (0.025 K over 125 K)
+KINK_CELL = 1e-4
+
+
+def _with_kinks(axis: np.ndarray, kinks) -> np.ndarray:
+    """``axis`` with nodes at each kink and at ± :data:`KINK_CELL` of the range beside it
+    (kinks closer than that to the ends are left out)."""
+    lo, hi = float(axis[0]), float(axis[-1])
+    half = KINK_CELL * (hi - lo)
+    extra = [k + s * half for k in kinks if lo + 2 * half < k < hi - 2 * half
+             for s in (-1.0, 0.0, 1.0)]
+    if not extra:
+        return axis
+    axis = np.union1d(axis, extra)
+    keep = np.concatenate([[True], np.diff(axis) > 0.5 * half])   # no near-duplicate nodes
+    return axis[keep]
+
+
 def _axis(lo: float, hi: float, points: int) -> tuple[np.ndarray, tuple[float, float]]:
     """Node coordinates over [lo, hi]; a single value gets a second node 1 unit above (the
     table is then constant along the axis and the FMU clips to the single value)."""
@@ -188,6 +209,8 @@ def contact_table(contact_map, temperature_points: int = 13,
         source = contact_map.describe()["source"]
     else:
         t_axis, t_range = _axis(tlo, thi, temperature_points)
+        if thi > tlo:   # F_N(T) of a held seal peaks at its mounting temperature
+            t_axis = _with_kinks(t_axis, getattr(contact_map, "temperature_kinks", ()))
         p_axis, p_range = _axis(plo, phi, pressure_points)
         clip_t, clip_p = t_range, p_range
         table = smooth_table(lambda t, p: sample(np.clip(t, *clip_t), np.clip(p, *clip_p)),
@@ -212,6 +235,11 @@ def _table_error(table, sample, t_range, p_range) -> dict:
 
 
 # -- the model ---------------------------------------------------------------------------------
+#: fields of the Θ law used only when its steady curve comes from the contact table
+_CONTACT_FIELDS = ("boundary_friction", "dwell_drop", "roughness", "film_factor",
+                   "lubricant_density", "thickener_factor", "asperity_wavelength")
+
+
 def c_parameters(law: FrictionLaw) -> tuple[str, dict[str, float], bool]:
     """(law name, parameters for the C code, bristles) of a law; an InputError for a law or a
     parameter the C code does not implement."""
@@ -220,6 +248,14 @@ def c_parameters(law: FrictionLaw) -> tuple[str, dict[str, float], bool]:
         raise InputError(f"friction.law: the {name!r} law has no C implementation in the FMU "
                          f"export; choose one of {', '.join(C_LAWS)}")
     values = {k: getattr(law.params, k) for k in type(law.params).model_fields}
+    if name == "theta":
+        if values.pop("steady") == "contact":
+            raise InputError("friction: the theta law with steady = 'contact' (the seal's own "
+                             "contact friction table) is not in the FMU's C code yet; export "
+                             "the lumped law (steady = 'lumped', e.g. parameter_set = "
+                             "'pneumatic_demo')")
+        for field in _CONTACT_FIELDS:       # only used with steady = 'contact'
+            values.pop(field, None)
     known = _LAW_PARAMETERS[name]
     unknown = sorted(k for k, v in values.items()
                      if k not in known and k not in ("law", "parameter_set") and v is not None)
@@ -233,6 +269,19 @@ def c_parameters(law: FrictionLaw) -> tuple[str, dict[str, float], bool]:
     if name == "theta" and "base_oil_nu40" not in params:
         params.pop("reference_temperature", None)      # gamma without base oil: constant
     return name, params, bristles
+
+
+def _deflection_scale(name: str, params: dict[str, float], normal_force: float | None,
+                      table: ContactTable | None) -> float:
+    """Typical bristle deflection z [m], the FMU's ``nominal`` of the state z: the largest
+    steady deflection F_s/σ0 of LuGre (Canudas de Wit et al. 1995), max(f_a, f_b)·F_N/σ0 of
+    the Θ law with bristles (F_N: the constant normal force, else the table's largest)."""
+    if name == "lugre":
+        return params["static_force"] / params["sigma0"]
+    if normal_force is None and table is not None:
+        normal_force = float(np.max(table.table.values[..., 0]))
+    force = max(params.get("f_a", 0.0), params.get("f_b", 0.0)) * (normal_force or 0.0)
+    return force / params["bristle_stiffness"] if force > 0 else 1e-5
 
 
 def friction_spec(law: FrictionLaw, identifier: str, *, table: ContactTable | None = None,
@@ -292,7 +341,8 @@ def friction_spec(law: FrictionLaw, identifier: str, *, table: ContactTable | No
         Variable("theta", "THETA", "output", "lubrication state Theta (0 dry, 1 full film)",
                  None, 0.0, state=True, exposed=has_theta),
         Variable("z", "Z", "output", "bristle deflection", "m", 0.0, state=True,
-                 exposed=has_z),
+                 nominal=_deflection_scale(name, params, normal_force, table) if has_z
+                 else None, exposed=has_z),
     ]
     states = [v.name for v in variables if v.state and v.exposed]
     variables += [Variable(f"der({s})", f"DER_{s.upper()}", "local", f"time derivative of {s}",

@@ -11,13 +11,36 @@ SI base-unit exponents and a display unit where one helps (``degC``, ``bar``, ``
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass, field
 from xml.sax.saxutils import quoteattr
 
 from sealsim import __version__
 from sealsim.units import ZERO_CELSIUS_K
 
-__all__ = ["UNITS", "ModelSpec", "Variable", "c_variables", "model_description_xml"]
+__all__ = ["UNITS", "ModelSpec", "Variable", "c_variables", "model_description_xml",
+           "xml_text_problem"]
+
+#: characters XML 1.0 cannot hold: C0 controls other than tab, line feed and carriage return
+_NOT_XML = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ufffe\uffff]")
+
+
+def xml_text_problem(text: str) -> str | None:
+    """Why ``text`` cannot go into modelDescription.xml (a title, a description), or None.
+
+    Examples
+    --------
+    >>> xml_text_problem("Piston seal, 32 mm") is None
+    True
+    >>> xml_text_problem("bad" + chr(1) + "title")
+    "'bad\\\\x01title' contains the control character U+0001 at position 3, which an FMU's \
+modelDescription.xml cannot hold; remove it"
+    """
+    found = _NOT_XML.search(text)
+    if found is None:
+        return None
+    return (f"{text!r} contains the control character U+{ord(found.group()):04X} at position "
+            f"{found.start()}, which an FMU's modelDescription.xml cannot hold; remove it")
 
 #: unit name -> (SI base-unit exponents, display units (name, factor, offset))
 UNITS: dict[str, tuple[dict[str, int], tuple[tuple[str, float, float], ...]]] = {
@@ -76,6 +99,10 @@ class Variable:
         ``(">", 0.0)``; inclusive bounds also become the FMI ``min``/``max``.
     relative : bool
         A temperature difference (FMI ``relativeQuantity``: no offset in unit conversion).
+    nominal : float, optional
+        Typical magnitude (FMI ``nominal``): a solver scales the error tolerance of a
+        continuous state with it, so a state of 1e-5 m is not integrated with an absolute
+        tolerance meant for values near 1.
     exposed : bool
         Listed in modelDescription.xml.
     """
@@ -92,6 +119,7 @@ class Variable:
     lower: tuple[str, float] | None = None
     upper: tuple[str, float] | None = None
     relative: bool = False
+    nominal: float | None = None
     exposed: bool = True
 
     @property
@@ -203,6 +231,8 @@ def _type_attributes(v: Variable, spec: ModelSpec, fmi_version: int) -> str:
         attrs.append(f'min="{_number(v.lower[1])}"')
     if v.upper and v.upper[0] == "<=":
         attrs.append(f'max="{_number(v.upper[1])}"')
+    if v.nominal is not None:
+        attrs.append(f'nominal="{_number(v.nominal)}"')
     if v.derivative_of is not None:
         state_vr = spec.value_reference(v.derivative_of)
         if fmi_version == 2:

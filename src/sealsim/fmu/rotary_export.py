@@ -241,6 +241,8 @@ def rotary_spec(case: RotaryCase, maps: RotaryMaps, identifier: str, *, title: s
         else env.ambient_temperature))
     sump0 = float(np.clip(sump0, maps.sump_temperatures[0], maps.sump_temperatures[-1]))
     order = maps.lag.order
+    # nominal values of the states: the largest steady rise (at least 1 K), the sump temperature
+    rise_scale = max(1.0, max(float(np.max(part["rise"])) for part in maps.steady))
     variables = [
         Variable("time", "TIME", "independent", "simulation time", "s"),
         Variable("speed", "SPEED", "input", "shaft speed", "rad/s", 0.0),
@@ -258,10 +260,10 @@ def rotary_spec(case: RotaryCase, maps: RotaryMaps, identifier: str, *, title: s
         variables.append(Variable(f"T_rise_{i + 1}", f"RISE_{i + 1}", "output",
                                   f"component {i + 1} of the contact temperature rise above "
                                   "the lagged sump temperature", "K", 0.0, state=True,
-                                  relative=True, exposed=i < order))
+                                  relative=True, nominal=rise_scale, exposed=i < order))
     variables.append(Variable("T_sump_lagged", "SUMP_LAG", "output",
                               "sump temperature as the contact feels it (slowest lag)", "K",
-                              sump0, state=True))
+                              sump0, state=True, nominal=sump0))
     for i in range(3):
         variables.append(Variable(f"der(T_rise_{i + 1})", f"DER_RISE_{i + 1}", "local",
                                   f"time derivative of T_rise_{i + 1}", "K/s",

@@ -92,8 +92,19 @@ class ContactInputs:
         Chamber pressures p_A, p_B [Pa] for the pressure scaling of Heipl & Murrenhoff Eq. 3
         (Stribeck / Coulomb laws).  Default 0.
     temperature : array_like, optional
-        Temperature T [K]; no law in this module uses it directly (it enters through the FE
-        maps of F_N and b, Heipl & Murrenhoff Fig. 4), it is carried for laws that will.
+        Temperature T [K] (the contact table's lubricant viscosity and rubber modulus, γ(T)
+        of the Θ law; F_N and b through the FE maps, Heipl & Murrenhoff Fig. 4).
+    contact_table : SteadyFrictionTable, optional
+        The seal's steady friction table from its own contact
+        (:mod:`sealsim.friction.contact_table`): the Θ law with ``steady = "contact"`` takes
+        its steady curve from it.
+    sliding_diameter : float, optional
+        Diameter of the sliding surface D [m] (the table is per unit circumference).
+    pressure_difference : array_like, optional
+        Pressure difference across the seal Δp [Pa] for the table; default |p_A − p_B|.
+    table_orientation : array_like
+        +1 if a positive v slides the counter surface from the seal's pressurised side to the
+        other (the table's "+" direction), −1 if the other way round.
     """
 
     normal_force: Any = None
@@ -101,6 +112,10 @@ class ContactInputs:
     pressure_a: Any = 0.0
     pressure_b: Any = 0.0
     temperature: Any = None
+    contact_table: Any = None
+    sliding_diameter: Any = None
+    pressure_difference: Any = None
+    table_orientation: Any = 1.0
 
     def require(self, name: str, law: str, *, positive: bool = False,
                 nonnegative: bool = False) -> np.ndarray:
@@ -133,6 +148,9 @@ class ContactInputs:
         values = {}
         for f in fields(self):
             value = getattr(self, f.name)
+            if f.name == "contact_table":
+                values[f.name] = value
+                continue
             if value is not None and np.ndim(value) >= 1 and np.shape(value)[0] > 1:
                 value = np.asarray(value)[index]
             values[f.name] = value
@@ -375,9 +393,17 @@ def as_state(z, n_states: int, n: int | None = None) -> np.ndarray:
 # --------------------------------------------------------------------------------------------
 # Parameter models
 # --------------------------------------------------------------------------------------------
-from pydantic import model_validator  # noqa: E402
+from pydantic import ConfigDict, model_validator  # noqa: E402
 
 from sealsim.cases import CaseModel  # noqa: E402
+
+
+def _fields_or_parameter_set(schema: dict, model: type) -> None:
+    """JSON Schema of a law's parameters: its fields are required unless a ``parameter_set``
+    gives them."""
+    required = schema.pop("required", None)
+    if required:
+        schema["anyOf"] = [{"required": required}, {"required": ["parameter_set"]}]
 
 
 class LawParameters(CaseModel):
@@ -386,6 +412,8 @@ class LawParameters(CaseModel):
     ``parameter_set`` names a set from :mod:`sealsim.friction.parameters`; its values fill
     every field the user did not give (explicit fields override the set).
     """
+
+    model_config = ConfigDict(json_schema_extra=_fields_or_parameter_set)
 
     parameter_set: str | None = None
 

@@ -40,7 +40,7 @@ from sealsim.friction.bench_results import (  # noqa: F401  (re-exported)
     stick_slip_period,
     summarize,
 )
-from sealsim.friction.compiled import LAW_CODES, law_parameters, law_rates, mass_steps
+from sealsim.friction.compiled import LAW_CODES, contact_rates, mass_steps
 from sealsim.friction.hybrid import compiled_law, contact_values, implicit_mass_step
 from sealsim.friction.profiles import (
     _constant,
@@ -262,15 +262,15 @@ def _mass_stepper(law, mass, stiffness, t, xd, fa, inputs, z0, progress):
 
 # -- the driven mass as one compiled ODE (smooth laws) -------------------------------------
 # args: (law code, parameters, mass, stiffness, drive kind, drive table, force kind, force
-#        table, contact inputs [F_N, b, p_A, p_B, T], state scales for the Jacobian)
+#        table, contact vector (sealsim.friction.compiled.K_*), state scales for the Jacobian,
+#        contact table row and data)
 @njit(cache=True)
 def _mass_fun(t, y, args, dy):
     """d/dt [x, v, z...] of the body: m·dv/dt = F_app + k·(x_d − x) − F."""
-    c = args[8]
     x_drive = profile_integral(args[4], args[5], t)
     f_ext = profile_value(args[6], args[7], t) + args[3] * (x_drive - y[0])
-    force, _ = law_rates(args[0], args[1], y[:, None], 2, y[1], c[0], c[1], c[2], c[3], c[4],
-                         dy[:, None], 0)
+    force, _ = contact_rates(args[0], args[1], y[:, None], 2, y[1], args[8], args[10],
+                             args[11], dy[:, None], 0)
     dy[0] = y[1]
     dy[1] = (f_ext - force) / args[2]
 
@@ -320,12 +320,11 @@ def _mass_run(ws, grid, y0, args, out):
 def _mass_compiled(law, mass, stiffness, t, drive_velocity, applied_force, inputs, z0, rtol,
                    atol, max_step, y0):
     """States (N, n) on the grid t with the compiled BDF of :mod:`sealsim.ode`."""
-    code, par = LAW_CODES[law.name], law_parameters(law)
-    contact = np.array([float(a[0]) for a in contact_values(law, inputs, 1)])
+    par, contact, frow, fdata = contact_values(law, inputs)
     drive_kind, drive_table = drive_velocity.table()
     force_kind, force_table = applied_force.table()
-    args = (code, par, float(mass), float(stiffness), drive_kind, drive_table, force_kind,
-            force_table, contact, atol / rtol)
+    args = (LAW_CODES[law.name], par, float(mass), float(stiffness), drive_kind, drive_table,
+            force_kind, force_table, contact, atol / rtol, frow, fdata)
     ws = bdf.workspace(y0.size, y0.size, rtol, atol, max_step)
     out = np.zeros((t.size, y0.size))
     done = _mass_run(ws, t, y0, args, out)
@@ -342,15 +341,15 @@ def _compiled_steps(law, mass, stiffness, t, xd, fa, inputs, z, states, x, v, fo
     """The steps of :func:`_mass_stepper` with the compiled stepper
     (:func:`sealsim.friction.compiled.mass_steps`), in chunks for the progress callback."""
     n = t.size
-    code, par = LAW_CODES[law.name], law_parameters(law)
-    fn, width, pa, pb, temp = (float(a[0]) for a in contact_values(law, inputs, 1))
+    code = LAW_CODES[law.name]
+    par, contact, frow, fdata = contact_values(law, inputs)
     zk = np.ascontiguousarray(z[:, 0])
     xk = vk = 0.0
     every = max(1, n // 50)
     for k0 in range(1, n, every):
         k1 = min(k0 + every, n)
         reached, xk, vk = mass_steps(code, par, law.has_stiction, zk, xk, vk, t, xd, fa, k0,
-                                     k1, float(mass), float(stiffness), fn, width, pa, pb, temp,
+                                     k1, float(mass), float(stiffness), contact, frow, fdata,
                                      states, x, v, force, stuck, 60)
         if reached < k1:
             raise ConvergenceError(f"friction bench: the velocity of the body did not converge "

@@ -21,6 +21,21 @@ A case file (TOML, quantities with units)::
     [variants.fast]            # optional: each variant overrides fields of the base case
     bench.velocity.angular_frequency = "25 rad/s"
 
+A bench may hold a real seal instead of a normal force and width: ``[seal]`` names it as a
+pneumatic seal names its ``map`` (the analytic O-ring estimate, a ``map.nc`` or a structure
+case), with the diameter it slides on; its contact gives F_N and b at the ``[inputs]``
+pressure difference and temperature and, for the Θ law with ``steady = "contact"`` (parameter
+set ``seal_contact``), the friction table of its own contact::
+
+    [seal]
+    sliding_diameter = "12 mm"
+    map = { analytic = { cord_diameter = "2 mm", squeeze = 0.12 } }
+    positive_velocity = "away_from_pressure"   # v > 0: the rod leaves the pressurised side
+
+    [inputs]
+    pressure_a = "3 bar"       # pressure difference |p_A - p_B| across the seal
+    temperature = "20 degC"
+
 :func:`load_friction_cases` validates it (every problem in one InputError naming the field),
 :func:`run_friction_case` runs one variant, :func:`sealsim.cases.dump_variants_toml` writes the
 resolved case (all defaults filled in) that reproduces the run.
@@ -76,6 +91,21 @@ class InputsModel(CaseModel):
     temperature: Q("temperature", gt=0) | None = None
 
 
+class BenchSealModel(CaseModel):
+    """The seal on the bench: its contact map gives F_N and b (and the friction table of the
+    Θ law on its own contact) at the ``[inputs]`` pressure difference and temperature.  The
+    map is validated and built by :func:`sealsim.pneumatic.bench.bench_inputs`."""
+
+    sliding_diameter: Q("length", gt=0)
+    map: dict[str, Any] = Field(description=(
+        "the seal's contact, as the map of a pneumatic seal: {analytic = {cord_diameter = "
+        "'2 mm', squeeze = 0.12}}, {file = 'map.nc'} or {structure_case = 'seal.toml'}"))
+    positive_velocity: Literal["away_from_pressure", "towards_pressure"] = Field(
+        "away_from_pressure", description=(
+            "how the counter surface slides relative to the seal when the bench velocity is "
+            "positive: away from the pressurised side (a rod seal's outstroke) or towards it"))
+
+
 class _BenchBase(CaseModel):
     duration: Q("time", gt=0)
     time_step: Q("time", gt=0)
@@ -123,6 +153,7 @@ class FrictionCase(CaseModel):
 
     title: str = ""
     friction: LawParameters
+    seal: BenchSealModel | None = None
     inputs: InputsModel = InputsModel()
     bench: Bench
     output: OutputModel = OutputModel()
@@ -137,7 +168,8 @@ def load_friction_cases(data: dict[str, Any], source: str = "case") -> dict[str,
 
 
 def make_inputs(case: FrictionCase) -> ContactInputs:
-    """The law inputs of a case."""
+    """The law inputs of a case's ``[inputs]`` table (a case with a ``[seal]`` gets its
+    contact's from :func:`sealsim.pneumatic.bench.bench_inputs`)."""
     i = case.inputs
     return ContactInputs(normal_force=i.normal_force, contact_width=i.contact_width,
                          pressure_a=i.pressure_a, pressure_b=i.pressure_b,
@@ -150,8 +182,13 @@ def build_law(case: FrictionCase) -> FrictionLaw:
 
 
 def run_friction_case(case: FrictionCase, law: FrictionLaw | None = None,
-                      progress=None) -> tuple[BenchResult, dict[str, Any]]:
+                      progress=None, inputs: ContactInputs | None = None
+                      ) -> tuple[BenchResult, dict[str, Any]]:
     """Run one case: the bench time series and its summary.
+
+    ``inputs``: the law inputs, default those of the ``[inputs]`` table (:func:`make_inputs`);
+    a case with a ``[seal]`` needs its contact's (:func:`sealsim.pneumatic.bench.bench_inputs`,
+    which ``sealsim friction run`` uses).
 
     Returns
     -------
@@ -163,7 +200,12 @@ def run_friction_case(case: FrictionCase, law: FrictionLaw | None = None,
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             law = build_law(case)
-    inputs = make_inputs(case)
+    if inputs is None:
+        if case.seal is not None:
+            raise InputError("seal: a bench with a seal needs the inputs of its contact map "
+                             "(sealsim.pneumatic.bench.bench_inputs; sealsim friction run "
+                             "builds them)")
+        inputs = make_inputs(case)
     _check_inputs(law, inputs)
     bench = case.bench
     z0 = law.initial_state(1)
@@ -198,6 +240,15 @@ def _start_velocity(bench) -> float:
 
 def _check_inputs(law: FrictionLaw, inputs: ContactInputs) -> None:
     """Fail early, naming the case field, if the law lacks an input."""
+    if getattr(law, "contact", False) and inputs.contact_table is None:
+        raise InputError(
+            "seal: the theta law with steady = 'contact' takes its steady friction from the "
+            "seal's own contact, so the bench needs the seal: give [seal] with "
+            "sliding_diameter = '12 mm' and map = {analytic = {cord_diameter = '2 mm', "
+            "squeeze = 0.12}} (or {file = 'map.nc'}, {structure_case = 'seal.toml'}) and the "
+            "[inputs] temperature and pressures; or use the lumped steady curve (steady = "
+            "'lumped', e.g. parameter_set = 'pneumatic_demo') with [inputs] normal_force and "
+            "contact_width")
     try:
         law.force(law.initial_state(1), np.array([1e-3]), inputs)
     except InputError as exc:

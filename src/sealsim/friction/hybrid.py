@@ -44,7 +44,7 @@ import numpy as np
 
 from sealsim.errors import ConvergenceError
 from sealsim.friction.base import ContactInputs, FrictionLaw
-from sealsim.friction.compiled import LAW_CODES
+from sealsim.friction.compiled import LAW_CODES, NO_TABLE, law_parameters
 
 __all__ = ["compiled_law", "contact_values", "implicit_mass_step", "resolve_stick"]
 
@@ -86,23 +86,37 @@ def compiled_law(law: FrictionLaw) -> bool:
         "sealsim.friction.")
 
 
-def contact_values(law: FrictionLaw, inputs: ContactInputs, n: int):
-    """The inputs of ``n`` contacts as the compiled laws take them
-    (:mod:`sealsim.friction.compiled`): arrays F_N [N], b [m], p_A, p_B [Pa] and T [K]
-    (T_ref of the Θ law where γ does not follow the temperature), each of shape (n,)."""
+def contact_values(law: FrictionLaw, inputs: ContactInputs):
+    """One contact's inputs as the compiled laws take them (:mod:`sealsim.friction.compiled`):
+    (parameters, contact vector [F_N, b, p_A, p_B, T, Δp, orientation], frow, fdata).  T is
+    T_ref of the Θ law where nothing follows the temperature; frow, fdata the contact table of
+    a Θ law with ``steady = "contact"`` (``NO_TABLE`` otherwise)."""
+    theta = law.name == "theta"
+    contact_law = getattr(law, "contact", False)
+
     def field(name, default, **check):
-        value = default if law.name != "theta" and name in ("normal_force", "contact_width") \
-            else inputs.require(name, law.name, **check)
-        return np.ascontiguousarray(np.broadcast_to(np.asarray(value, dtype=float), (n,)))
+        if not theta and name in ("normal_force", "contact_width"):
+            return float(default)
+        return float(np.asarray(inputs.require(name, law.name, **check)).reshape(-1)[0])
 
     fn = field("normal_force", 1.0, positive=True)
     width = field("contact_width", 0.0, nonnegative=True)
     pa = field("pressure_a", 0.0)
     pb = field("pressure_b", 0.0)
-    temp = np.full(n, float(getattr(law.params, "reference_temperature", 293.15)))
-    if law.name == "theta" and law.walther[1] != 0.0 and inputs.temperature is not None:
+    temp = float(getattr(law.params, "reference_temperature", 293.15))
+    if contact_law or (theta and law.walther[1] != 0.0 and inputs.temperature is not None):
         temp = field("temperature", 0.0, positive=True)
-    return fn, width, pa, pb, temp
+    dp = abs(pa - pb) if inputs.pressure_difference is None else \
+        float(np.asarray(inputs.pressure_difference, dtype=float).reshape(-1)[0])
+    orient = float(np.asarray(inputs.table_orientation, dtype=float).reshape(-1)[0])
+    frow, fdata = NO_TABLE
+    diameter = 0.0
+    if contact_law:
+        law.contact_steady(np.zeros(1), inputs)      # an InputError names what is missing
+        frow, fdata = inputs.contact_table.tables()
+        diameter = field("sliding_diameter", 0.0, positive=True)
+    contact = np.array([fn, width, pa, pb, temp, dp, orient])
+    return law_parameters(law, diameter), contact, frow, fdata
 
 
 def implicit_mass_step(law: FrictionLaw, z0, x0, v0, dt, mass, stiffness, drive_position,

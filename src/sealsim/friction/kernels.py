@@ -43,6 +43,8 @@ kernel (arguments)                                 returns
 ``theta_affine(v, dt, tau, al, fn, fref, n)``      (a, b): Θ(t+dt) = a·Θ + b, exact for constant v
 ``theta_friction_level(th, fn, fa, fb)``           g_Θ = F_N·[f_a·(1 − Θ) + f_b·Θ]   (H&M Eq. 5)
 ``theta_force(th, v, fn, b, fa, fb, gamma)``       g_Θ·sgn(v) + γ·b·v                (H&M Eq. 5)
+``theta_contact_level(th, v, fss, fb, d, thss)``   level of the Θ law on a contact table:
+                                                   fss + d·fb·(Θ_ss − Θ), at rest fb·(1 − d·Θ)
 ``walther_viscosity_ratio(t, tref, wa, wb)``       ν(T)/ν(T_ref), ASTM D341 (Walther)
 =================================================  ===============================================
 
@@ -304,6 +306,20 @@ def theta_force(th, v, fn, b, fa, fb, gamma):
 
 
 @kernel
+def theta_contact_level(th, v, fss, fb, d, thss):
+    """Friction level [N] of the Θ law whose steady curve is a contact table
+    (:mod:`sealsim.friction.theta`, ``steady = "contact"``): |F_ss(v)| + ΔF·(Θ_ss − Θ) while
+    sliding, F_ss(0⁺) − ΔF·Θ at rest, ΔF = d·F_ss(0⁺); at least 1e-9 N.  fss = |F_ss(v)|,
+    fb = F_ss(0⁺) [N], d = dwell drop [-], thss = Θ_ss(v)."""
+    drop = d * fb
+    if v != 0.0:
+        level = fss + drop * (thss - th)
+    else:
+        level = fb - drop * th
+    return level if level > 1e-9 else 1e-9
+
+
+@kernel
 def walther_viscosity_ratio(t, tref, wa, wb):
     """ν(T)/ν(T_ref) [-] with the ASTM D341 (Walther) equation
     log10 log10(ν + 0.7) = A − B·log10 T (ν in mm²/s, T in K): wa = A, wb = B.
@@ -485,6 +501,13 @@ def _loop_theta_force(th, v, fn, b, fa, fb, gamma, out):
     for i in range(out.shape[0]):
         out[i] = theta_force(_at(th, i), _at(v, i), _at(fn, i), _at(b, i), _at(fa, i),
                              _at(fb, i), _at(gamma, i))
+
+
+@kernel
+def _loop_theta_contact_level(th, v, fss, fb, d, thss, out):
+    for i in range(out.shape[0]):
+        out[i] = theta_contact_level(_at(th, i), _at(v, i), _at(fss, i), _at(fb, i), _at(d, i),
+                                     _at(thss, i))
 
 
 @kernel

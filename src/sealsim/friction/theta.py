@@ -64,6 +64,28 @@ Arrhenius law only within 10-20 % (a test checks this).  No public source gives 
 dependence of f_a, f_b, τ or α of a pneumatic seal (Heipl & Murrenhoff Fig. 3 shows only the net
 effect), so they are constants; the temperature also acts through F_N and b of the contact maps.
 
+**Steady curve from the seal's own contact** (``steady = "contact"``, the parameter set
+``seal_contact``).  The lumped levels f_a, f_b and γ belong to one seal at one condition.  With
+``steady = "contact"`` the steady friction F_ss(v) comes instead from the seal's contact
+pressure profile by inverse hydrodynamics and mixed lubrication, tabulated per seal over
+temperature, pressure difference, speed and stroke direction
+(:mod:`sealsim.friction.contact_table`, passed in ``inputs.contact_table``)::
+
+    F_ss(v) = π·D·[μ_b·L(|v|) + V(|v|)]·sgn(v)
+
+(L the asperity-carried load, V the viscous friction, per unit circumference; μ_b the boundary
+friction coefficient of the lubricated rubber).  The Θ state keeps the dynamics on top of it::
+
+    F = [F_ss(|v|) + ΔF·(Θ_ss(v) − Θ)]·sgn(v),   ΔF = d·μ_b·F_N
+
+with the same state equation: in steady sliding Θ = Θ_ss and F = F_ss exactly; Θ lagging
+behind Θ_ss while the speed rises gives more friction than steady (less while it falls); at
+rest the break-away force F_ss(0⁺) − ΔF·Θ grows with the dwell time to the boundary level
+μ_b·F_N (F_ss(0⁺): the asperities carry the whole load).  d = ``dwell_drop`` is the fraction by
+which the break-away force just after sliding (Θ = 1) lies below the one after a long dwell --
+1 − f_b/f_a of the lumped law.  With bristles the same level g is the LuGre bristles'
+saturation level.
+
 References
 ----------
 .. [1] O. Heipl, H. Murrenhoff, "Rate- and state-dependent friction model for elastomeric
@@ -85,6 +107,7 @@ import numpy as np
 from pydantic import Field, model_validator
 
 from sealsim.cases import Q
+from sealsim.errors import InputError
 from sealsim.friction import kernels as _k
 from sealsim.friction.base import (
     NO_INPUTS,
@@ -414,15 +437,25 @@ def theta_viscous_coefficient(temperature, gamma, reference_temperature, walther
 # --------------------------------------------------------------------------------------------
 # Parameters and law object
 # --------------------------------------------------------------------------------------------
+#: fields only the steady curve from the seal's contact uses (``steady = "contact"``)
+CONTACT_ONLY_FIELDS = ("boundary_friction", "dwell_drop", "roughness", "film_factor",
+                       "lubricant_density", "thickener_factor", "asperity_wavelength")
+#: fields only the lumped steady curve uses (``steady = "lumped"``)
+LUMPED_ONLY_FIELDS = ("f_a", "f_b", "gamma")
+
+
 class ThetaParameters(LawParameters):
     """Parameters of the Θ law (Heipl & Murrenhoff Eq. 4/5 as reconstructed, see module
     docstring)."""
 
     law: Literal["theta"] = "theta"
+    steady: Literal["lumped", "contact"] = Field("lumped", description=(
+        "where the steady curve comes from: 'lumped' f_a, f_b and gamma, or 'contact' the "
+        "seal's own contact pressure profile (mixed lubrication, a friction table per seal)"))
     tau: Q("time", gt=0)
     alpha: Q("length", gt=0)
-    f_a: Q("dimensionless", ge=0)
-    f_b: Q("dimensionless", ge=0)
+    f_a: Q("dimensionless", ge=0) | None = None
+    f_b: Q("dimensionless", ge=0) | None = None
     gamma: Q("dynamic_viscosity", ge=0) = 0.0
     reference_normal_force: Q("force", gt=0)
     load_exponent: Q("dimensionless", ge=0, le=10) = 1.0
@@ -435,16 +468,51 @@ class ThetaParameters(LawParameters):
         "base_oil_nu100 it makes gamma follow the base oil's viscosity (ASTM D341)"))
     base_oil_nu100: Q("kinematic_viscosity", gt=0) | None = Field(None, description=(
         "kinematic viscosity of the grease's base oil at 100 degC (datasheet)"))
+    boundary_friction: Q("dimensionless", ge=0) = Field(0.2, description=(
+        "contact: boundary friction coefficient mu_b of the lubricated rubber on the asperity "
+        "load"))
+    dwell_drop: Q("dimensionless", ge=0, lt=1) = Field(0.5, description=(
+        "contact: break-away force just after sliding (Theta = 1) below the long-dwell one, "
+        "as a fraction of mu_b*F_N"))
+    roughness: Q("length", gt=0) = Field(0.3e-6, description=(
+        "contact: combined RMS roughness of counter surface and seal"))
+    film_factor: Q("dimensionless", gt=0) = Field(1.0, description=(
+        "contact: multiplier of the inverse-hydrodynamic film"))
+    lubricant_density: Q("density", gt=0) = Field(880.0, description=(
+        "contact: density of the (base) oil"))
+    thickener_factor: Q("dimensionless", gt=0) = Field(1.0, description=(
+        "contact: grease film viscosity / base-oil viscosity"))
+    asperity_wavelength: Q("length", gt=0) = Field(50e-6, description=(
+        "contact: roughness wavelength of the counter surface (rubber frequency u/lambda)"))
+
+    def unused_fields(self) -> tuple[str, ...]:
+        """Fields the chosen steady curve does not use: the contact's (μ_b, dwell drop and the
+        friction-table fields) with ``steady = "lumped"``, f_a, f_b and γ with ``"contact"``.
+
+        >>> ThetaParameters(law="theta", parameter_set="seal_contact").unused_fields()
+        ('f_a', 'f_b', 'gamma')
+        """
+        if self.steady == "contact":
+            return LUMPED_ONLY_FIELDS
+        return CONTACT_ONLY_FIELDS
 
     @model_validator(mode="after")
     def _check(self):
+        if self.steady == "lumped" and (self.f_a is None or self.f_b is None):
+            raise ValueError("the lumped steady curve needs f_a and f_b (or steady = "
+                             "'contact': the seal's own contact)")
+        if self.steady == "contact":
+            if self.base_oil_nu40 is None:
+                raise ValueError("steady = 'contact' needs the lubricant: base_oil_nu40 and "
+                                 "base_oil_nu100")
         if (self.base_oil_nu40 is None) != (self.base_oil_nu100 is None):
             raise ValueError("give both base_oil_nu40 and base_oil_nu100 (or neither)")
         if self.base_oil_nu40 is not None and self.base_oil_nu40 <= self.base_oil_nu100:
             raise ValueError(f"base_oil_nu40 ({self.base_oil_nu40 * 1e6:g} mm**2/s) must be "
                              f"larger than base_oil_nu100 ({self.base_oil_nu100 * 1e6:g} "
                              "mm**2/s): an oil thins when it is heated")
-        if self.bristle_stiffness is not None and (self.f_a <= 0 or self.f_b <= 0):
+        if self.bristle_stiffness is not None and self.steady == "lumped" and (
+                self.f_a <= 0 or self.f_b <= 0):
             raise ValueError("with bristle_stiffness the friction coefficients f_a and f_b must "
                              f"be > 0 (the bristles saturate at F_N*f), got f_a = {self.f_a:g}, "
                              f"f_b = {self.f_b:g}")
@@ -511,6 +579,11 @@ class Theta(FrictionLaw):
         return self.params.bristle_stiffness is not None
 
     @property
+    def contact(self) -> bool:
+        """True if the steady curve comes from the seal's contact table."""
+        return self.params.steady == "contact"
+
+    @property
     def state_names(self):  # type: ignore[override]
         return ("theta", "z") if self.bristles else ("theta",)
 
@@ -541,10 +614,45 @@ class Theta(FrictionLaw):
         return theta_viscous_coefficient(temperature, p.gamma, p.reference_temperature,
                                          *self.walther)
 
-    def level(self, theta, inputs: ContactInputs):
-        """Boundary friction level g_Θ [N] (break-away force at rest)."""
+    def contact_steady(self, v, inputs: ContactInputs):
+        """(|F_ss(v)| [N], boundary level F_ss(0⁺) [N]) from the contact table of ``inputs``
+        (``steady = "contact"``): F_ss = π·D·(μ_b·L + V) in the stroke direction of v, and
+        μ_b times the asperity load at the table's slowest speed (both directions' mean)."""
+        table = inputs.contact_table
+        if table is None:
+            raise InputError("inputs.contact_table: the theta law with steady = 'contact' needs "
+                             "the seal's friction table (sealsim.pneumatic.friction_tables), "
+                             "but none was given")
+        diameter = inputs.require("sliding_diameter", "theta (contact)", positive=True)
+        temperature = inputs.require("temperature", "theta (contact)", positive=True)
+        dp = inputs.pressure_difference
+        if dp is None:
+            dp = np.abs(np.asarray(inputs.pressure_a, float) - np.asarray(inputs.pressure_b,
+                                                                           float))
+        orient = np.asarray(inputs.table_orientation, dtype=float)
+        mu = self.params.boundary_friction
+        load, viscous, _ = table.evaluate(orient * np.asarray(v, dtype=float), dp, temperature)
+        slow = table.speed[0]
+        up, _, _ = table.evaluate(slow, dp, temperature)
+        down, _, _ = table.evaluate(-slow, dp, temperature)
+        circumference = np.pi * diameter
+        return (circumference * (mu * load + viscous),
+                circumference * mu * 0.5 * (up + down))
+
+    def level(self, theta, inputs: ContactInputs, v=None):
+        """Friction level [N] without the sign: the break-away force at rest.
+
+        Lumped: g_Θ = F_N·[f_a(1 − Θ) + f_b·Θ] (the viscous γ·b·v comes on top).  Contact:
+        |F_ss(v)| + ΔF·(Θ_ss(v) − Θ), at rest F_ss(0⁺) − ΔF·Θ, ΔF = d·F_ss(0⁺).
+        """
         p = self.params
-        return theta_friction_level(theta, self._fn(inputs), p.f_a, p.f_b)
+        if not self.contact:
+            return theta_friction_level(theta, self._fn(inputs), p.f_a, p.f_b)
+        v = np.zeros(np.shape(theta)) if v is None else np.asarray(v, dtype=float)
+        steady, boundary = self.contact_steady(v, inputs)
+        theta_ss = theta_steady(v, *self._rate_args(inputs))
+        return apply(_k._loop_theta_contact_level, theta, v, steady, boundary, p.dwell_drop,
+                     theta_ss)
 
     def relaxed_storage(self, z):
         z = np.asarray(z, dtype=float)
@@ -556,6 +664,12 @@ class Theta(FrictionLaw):
         """Dry, relaxed contacts (Θ = 0 after a long rest; z = 0)."""
         return np.zeros((self.n_states, n))
 
+    def _viscous(self, v, inputs):
+        """γ·b·v of the lumped law [N]; 0 in contact mode (the table holds the viscous part)."""
+        if self.contact:
+            return 0.0 * np.asarray(v, dtype=float)
+        return self.gamma(inputs) * self._b(inputs) * v
+
     # -- interface -----------------------------------------------------------------------
     def derivatives(self, z, v, inputs: ContactInputs = NO_INPUTS):
         v = as_velocity(v)
@@ -564,7 +678,7 @@ class Theta(FrictionLaw):
         if not self.bristles:
             return dtheta[None, :]
         dz = lugre_bristle_rate(z[1], v, self.params.bristle_stiffness,
-                                self.level(z[0], inputs))
+                                self.level(z[0], inputs, v))
         return np.stack(np.broadcast_arrays(dtheta, dz))
 
     def force(self, z, v, inputs: ContactInputs = NO_INPUTS):
@@ -572,33 +686,46 @@ class Theta(FrictionLaw):
         v = as_velocity(v)
         z = as_state(z, self.n_states)
         if not self.bristles:
+            if self.contact:
+                return self.level(z[0], inputs, v) * np.sign(v)
             return theta_force(z[0], v, self._fn(inputs), self._b(inputs), p.f_a, p.f_b,
                                self.gamma(inputs))
-        zdot = lugre_bristle_rate(z[1], v, p.bristle_stiffness, self.level(z[0], inputs))
+        zdot = lugre_bristle_rate(z[1], v, p.bristle_stiffness, self.level(z[0], inputs, v))
         return (p.bristle_stiffness * z[1] + p.bristle_damping * zdot
-                + self.gamma(inputs) * self._b(inputs) * v)
+                + self._viscous(v, inputs))
 
     def partials(self, z, v, inputs: ContactInputs = NO_INPUTS):
         p = self.params
         v = as_velocity(v)
         z = as_state(z, self.n_states)
         fn = self._fn(inputs)
-        b = self._b(inputs)
         load = _load_factor(fn, p.reference_normal_force, p.load_exponent)
         r = np.abs(v) / (p.alpha * load)
-        shape = np.broadcast_shapes(v.shape, z.shape[1:], np.shape(fn), np.shape(b))
+        shape = np.broadcast_shapes(v.shape, z.shape[1:], np.shape(fn))
         d_tt = np.broadcast_to(-1.0 / p.tau - r, shape)
         d_tv = np.broadcast_to(np.sign(v) / (p.alpha * load) * (1.0 - z[0]), shape)
-        dlevel = fn * (p.f_b - p.f_a)                       # ∂g_Θ/∂Θ
+        if self.contact:
+            # ∂g/∂Θ = −ΔF; ∂g/∂v by central differences of the tabulated curve
+            _, boundary = self.contact_steady(v, inputs)
+            dlevel = -p.dwell_drop * boundary
+            h = 1e-6 * np.maximum(np.abs(v), 1e-6)
+            dg_dv = (self.level(z[0], inputs, v + h) - self.level(z[0], inputs, v - h)) / (2 * h)
+            viscous_dv = np.broadcast_to(np.where(v != 0.0, dg_dv * np.sign(v), 0.0), shape)
+        else:
+            dlevel = fn * (p.f_b - p.f_a)                       # ∂g_Θ/∂Θ
+            viscous_dv = np.broadcast_to(self.gamma(inputs) * self._b(inputs), shape)
         if not self.bristles:
             return Partials(d_tt[None, None], d_tv[None],
                             np.broadcast_to(dlevel * np.sign(v), shape)[None].copy(),
-                            np.broadcast_to(self.gamma(inputs) * b, shape).copy())
+                            np.array(viscous_dv, dtype=float))
         s0, s1 = p.bristle_stiffness, p.bristle_damping
-        g = self.level(z[0], inputs)
+        g = self.level(z[0], inputs, v)
         d_zt = s0 * np.abs(v) * z[1] * dlevel / g ** 2
         d_zz = -s0 * np.abs(v) / g
         d_zv = 1.0 - s0 * np.sign(v) * z[1] / g
+        if self.contact:       # the level moves with v, and with it the bristles' target
+            d_zv = d_zv + s0 * np.abs(v) * z[1] / g ** 2 * viscous_dv * np.sign(v)
+            viscous_dv = np.zeros(shape)
         jac = np.zeros((2, 2) + shape)
         jac[0, 0] = d_tt
         jac[1, 0] = d_zt
@@ -606,8 +733,7 @@ class Theta(FrictionLaw):
         dzdv = np.stack([d_tv, np.broadcast_to(d_zv, shape)])
         dfdz = np.stack([np.broadcast_to(s1 * d_zt, shape),
                          np.broadcast_to(s0 + s1 * d_zz, shape)])
-        return Partials(jac, dzdv, dfdz,
-                        np.broadcast_to(s1 * d_zv + self.gamma(inputs) * b, shape).copy())
+        return Partials(jac, dzdv, dfdz, np.broadcast_to(s1 * d_zv + viscous_dv, shape).copy())
 
     def step(self, z, v, dt, inputs: ContactInputs = NO_INPUTS):
         v = as_velocity(v)
@@ -615,7 +741,7 @@ class Theta(FrictionLaw):
         theta1 = theta_step(z[0], v, dt, *self._rate_args(inputs))
         if not self.bristles:
             return theta1[None, :]
-        g_mid = self.level(0.5 * (z[0] + theta1), inputs)
+        g_mid = self.level(0.5 * (z[0] + theta1), inputs, v)
         a, b = _lugre_affine(v, dt, self.params.bristle_stiffness, g_mid)
         z1 = a * z[1] + b
         return np.stack(np.broadcast_arrays(theta1, z1))
@@ -625,7 +751,7 @@ class Theta(FrictionLaw):
         theta = affine_scan(a, b, z0[0])
         if not self.bristles:
             return theta[:, None, :]
-        g_mid = self.level(0.5 * (theta[:-1] + theta[1:]), inputs)
+        g_mid = self.level(0.5 * (theta[:-1] + theta[1:]), inputs, v)
         a_z, b_z = _lugre_affine(v, dt[:, None], self.params.bristle_stiffness, g_mid)
         zb = affine_scan(a_z, b_z, z0[1])
         return np.stack(np.broadcast_arrays(theta, zb), axis=1)
@@ -635,12 +761,16 @@ class Theta(FrictionLaw):
         theta = theta_steady(v, *self._rate_args(inputs))
         if not self.bristles:
             return np.atleast_2d(theta)
-        z = np.sign(v) * self.level(theta, inputs) / self.params.bristle_stiffness
+        z = np.sign(v) * self.level(theta, inputs, v) / self.params.bristle_stiffness
         return np.stack(np.broadcast_arrays(theta, z))
 
     def steady_force(self, v, inputs: ContactInputs = NO_INPUTS):
         p = self.params
-        return theta_steady_force(as_velocity(v), self._fn(inputs), self._b(inputs), p.tau,
+        v = as_velocity(v)
+        if self.contact:
+            steady, _ = self.contact_steady(v, inputs)
+            return steady * np.sign(v)
+        return theta_steady_force(v, self._fn(inputs), self._b(inputs), p.tau,
                                   p.alpha, p.f_a, p.f_b, self.gamma(inputs),
                                   p.reference_normal_force, p.load_exponent)
 

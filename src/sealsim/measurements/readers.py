@@ -1,7 +1,9 @@
 """Readers of rig measurements: text tables whose columns are mapped to quantities and units.
 
 A measurement file is a table of numbers (comma, semicolon or whitespace separated, optional
-header line).  A *column mapping* says which column holds which quantity and in which unit::
+header line; decimal points, or decimal commas with ``decimal = ","`` and
+``delimiter = ";"`` as German rigs write them).  A *column mapping* says which column holds
+which quantity and in which unit::
 
     columns = { time = { column = 1, unit = "ms" },
                 position = { column = "x", unit = "mm" },      # a header name, or 1-based index
@@ -36,7 +38,8 @@ import pandas as pd
 import pint
 
 from sealsim.errors import InputError
-from sealsim.units import ureg
+from sealsim.files import MAX_DATA_BYTES, read_input_text
+from sealsim.units import rotational_speed, ureg
 
 __all__ = [
     "FORMATS",
@@ -61,6 +64,17 @@ QUANTITIES: dict[str, str] = {
     "temperature": "K",
     "torque": "N*m",
     "speed": "rad/s",
+    # material tests (sealsim material fit): stress-strain curves, DMA, dilatometry
+    "stretch": "dimensionless",
+    "strain": "dimensionless",
+    "stress": "Pa",
+    "frequency": "Hz",
+    "storage_modulus": "Pa",
+    "loss_modulus": "Pa",
+    "complex_modulus": "Pa",
+    "tan_delta": "dimensionless",
+    "linear_strain": "dimensionless",
+    "volume_strain": "dimensionless",
 }
 
 
@@ -131,9 +145,17 @@ def _si_factor(unit: str, quantity: str, where: str):
     target = QUANTITIES[quantity]
     if re.search(r"(\*\*|\^)\s*\d{3,}", unit):
         raise InputError(f"{where}: unit {unit!r} has an exponent that is too large")
+    if quantity == "speed" and re.search(r"hz|hertz", unit, re.IGNORECASE):
+        raise InputError(f"{where}: unit {unit!r} is ambiguous for a rotational speed (pint "
+                         "reads 1 Hz as 1 rad/s); use rpm, 1/min, rev/s or rad/s")
+
+    def as_quantity(values):
+        if quantity == "speed":  # 1/min, U/min are revolutions per minute (DIN 1301)
+            return rotational_speed(values, unit)
+        return ureg.Quantity(values, unit)
+
     try:
-        q = ureg.Quantity(1.0, unit)
-        q.to(target)
+        as_quantity(1.0).to(target)
     except pint.errors.DimensionalityError:
         raise InputError(f"{where}: unit {unit!r} is not a unit of {quantity} "
                          f"(expected something convertible to {target})") from None
@@ -142,7 +164,7 @@ def _si_factor(unit: str, quantity: str, where: str):
                          f"(e.g. {target!r})") from None
 
     def convert(values: np.ndarray) -> np.ndarray:
-        return np.asarray(ureg.Quantity(values, unit).to(target).magnitude, dtype=float)
+        return np.asarray(as_quantity(values).to(target).magnitude, dtype=float)
     return convert
 
 
@@ -152,9 +174,36 @@ def _split(line: str, delimiter: str | None) -> list[str]:
     return [cell.strip() for cell in line.split(delimiter)]
 
 
+_NUMBER = re.compile(r"[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?|[-+]?(nan|inf|infinity)",
+                     re.IGNORECASE)
+
+
+def _number(cell: str, decimal: str) -> float:
+    """A table cell as a float: plain decimal notation only (Python's float would also take
+    ``20_0.1234`` as 200.1234)."""
+    if decimal == ",":
+        if "." in cell:  # a thousands separator, or a decimal point in a decimal-comma file
+            raise ValueError(cell)
+        cell = cell.replace(",", ".")
+    if not _NUMBER.fullmatch(cell):
+        raise ValueError(cell)
+    return float(cell)
+
+
+def _delimiter_hint(line: str, delimiter: str | None, cell: str = "", decimal: str = ".") -> str:
+    """Why a header or a cell may not have split as meant: ';' as delimiter, decimal commas."""
+    if delimiter != ";" and ";" in line:
+        return ("; the line contains ';': set delimiter = ';' (and decimal = ',' if the numbers "
+                "have decimal commas)")
+    if decimal == "." and re.fullmatch(r"[-+]?\d+,\d+", cell):
+        return "; for decimal commas set decimal = ',' (with another delimiter, e.g. ';')"
+    return ""
+
+
 def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | None = None,
                header: bool = False, skip_rows: int = 0, comment: str = "#",
-               name: str | None = None) -> Measurement:
+               name: str | None = None, index: str | None = "time",
+               decimal: str = ".") -> Measurement:
     """Read a text table of numbers with a column mapping (see the module docstring).
 
     Parameters
@@ -173,6 +222,12 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
         Lines starting with this are ignored.
     name : str, optional
         Label of the run (default: the file stem).
+    index : str or None
+        The quantity that must be present and strictly increasing (``"time"``); None for
+        tables without one (a stress-strain curve, a DMA table).
+    decimal : {".", ","}
+        Decimal separator of the numbers (``","``: ``0,25``; then the delimiter must be
+        another character, e.g. ``";"``).
 
     Returns
     -------
@@ -181,8 +236,9 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
     Raises
     ------
     InputError
-        Missing file, a cell that is not a finite number (file, row, column named), a missing
-        column, a time that does not increase, fewer than 3 rows.
+        Missing file, a cell that is not a finite number (file, row, column named; digits
+        grouped with ``_`` are refused, not joined), a missing column, an index (time) that
+        does not increase, fewer than 3 rows.
 
     Examples
     --------
@@ -196,25 +252,25 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
     """
     path = Path(path)
     label = str(path)
-    try:
-        text = path.read_text(encoding="utf-8", errors="strict")
-    except FileNotFoundError:
-        raise InputError(f"measurement file {label!r} does not exist") from None
-    except IsADirectoryError:
-        raise InputError(f"measurement file {label!r} is a directory") from None
-    except UnicodeDecodeError as exc:
-        raise InputError(f"measurement file {label!r} is not UTF-8 text (byte {exc.start})") \
-            from None
-    if "time" not in {c.quantity for c in columns}:
-        raise InputError(f"{label}: the column mapping needs a time column")
+    text = read_input_text(path, "measurement file", MAX_DATA_BYTES)
+    text = text.removeprefix("\ufeff")  # the byte-order mark some spreadsheets write
+    if index is not None and index not in {c.quantity for c in columns}:
+        raise InputError(f"{label}: the column mapping needs a {index} column")
+    if decimal not in (".", ","):
+        raise InputError(f"{label}: decimal must be '.' or ',', got {decimal!r}")
+    if decimal == "," and delimiter in (None, ","):
+        raise InputError(f"{label}: decimal = ',' needs another column delimiter, e.g. "
+                         "delimiter = ';'")
     lines = [(k + 1, line) for k, line in enumerate(text.splitlines())]
     lines = lines[skip_rows:]
     lines = [(n, s) for n, s in lines if s.strip() and not s.lstrip().startswith(comment)]
     names: list[str] = []
+    header_line = ""
     if header:
         if not lines:
             raise InputError(f"{label}: no header line found")
         names = _split(lines[0][1], delimiter)
+        header_line = lines[0][1]
         lines = lines[1:]
     if len(lines) < 3:
         raise InputError(f"{label}: only {len(lines)} data rows; a measurement needs at least 3")
@@ -224,8 +280,9 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
         if isinstance(spec.column, str):
             if spec.column not in names:
                 raise InputError(f"{where}: no column named {spec.column!r}"
-                                 + (f"; the header has {', '.join(names)}" if names
-                                    else "; set header = true or give a 1-based column index"))
+                                 + (f"; the header has {', '.join(map(repr, names))}" if names
+                                    else "; set header = true or give a 1-based column index")
+                                 + _delimiter_hint(header_line, delimiter))
             indices.append(names.index(spec.column))
         else:
             if spec.column < 1:
@@ -237,12 +294,15 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
         for c, (idx, spec) in enumerate(zip(indices, columns)):
             if idx >= len(cells):
                 raise InputError(f"{label}, row {lineno}: has {len(cells)} columns, column "
-                                 f"{idx + 1} ({spec.quantity}) is missing")
+                                 f"{idx + 1} ({spec.quantity}) is missing"
+                                 + _delimiter_hint(line, delimiter))
             try:
-                value = float(cells[idx])
+                value = _number(cells[idx], decimal)
             except ValueError:
                 raise InputError(f"{label}, row {lineno}, column {idx + 1} ({spec.quantity}): "
-                                 f"{cells[idx]!r} is not a number") from None
+                                 f"{cells[idx]!r} is not a number"
+                                 + _delimiter_hint(line, delimiter, cells[idx], decimal)) \
+                    from None
             if not math.isfinite(value):
                 raise InputError(f"{label}, row {lineno}, column {idx + 1} ({spec.quantity}): "
                                  f"{cells[idx]!r} is not a finite number")
@@ -251,13 +311,15 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
     for c, spec in enumerate(columns):
         convert = _si_factor(spec.unit, spec.quantity, f"{label}, column {spec.column!r}")
         data[spec.quantity] = convert(values[:, c] * spec.scale)
-    time = data["time"]
-    bad = np.flatnonzero(np.diff(time) <= 0)
-    if bad.size:
-        r = int(bad[0]) + 1
-        raise InputError(f"{label}, row {lines[r][0]}, column {indices[0] + 1} (time): time "
-                         f"{values[r, 0]:g} does not increase (previous row: "
-                         f"{values[r - 1, 0]:g}); the time column must be strictly increasing")
+    if index is not None:
+        c = [spec.quantity for spec in columns].index(index)
+        bad = np.flatnonzero(np.diff(data[index]) <= 0)
+        if bad.size:
+            r = int(bad[0]) + 1
+            raise InputError(f"{label}, row {lines[r][0]}, column {indices[c] + 1} ({index}): "
+                             f"{index} {values[r, c]:g} does not increase (previous row: "
+                             f"{values[r - 1, c]:g}); the {index} column must be strictly "
+                             "increasing")
     return Measurement(name or path.stem, label, pd.DataFrame(data))
 
 

@@ -66,6 +66,7 @@ from sealsim.errors import InputError
 from sealsim.friction import make_law
 from sealsim.friction.profiles import profile_type
 from sealsim.friction.case import LawParameters
+from sealsim.friction.parameters import parameter_set_note
 from sealsim.pneumatic.chambers import DEFAULT_HEAT_TRANSFER_COEFFICIENT
 from sealsim.pneumatic.contact_maps import (
     AnalyticContactMap,
@@ -83,6 +84,7 @@ __all__ = [
     "ThermalModel",
     "ValveModel",
     "build_seals",
+    "case_input_files",
     "load_pneumatic_case_file",
     "load_pneumatic_cases",
 ]
@@ -271,8 +273,10 @@ Controller = Annotated[CycleController | PositionController, Field(discriminator
 class AnalyticMapModel(CaseModel):
     """Engineering estimate of F_N and b of an O-ring (see AnalyticContactMap).  ``modulus``
     and ``thermal_expansion`` default to the catalogue values of ``elastomer``
-    (E = 6·(C10 + C01)); ``temperature_scaling`` is the modulus law in T, as in a structure
-    case's ``material.temperature_scaling``."""
+    (E = 6·(C10 + C01), the modulus at the catalogue's test frequency); ``temperature_scaling``
+    is the modulus law in T, as in a structure case's ``material.temperature_scaling`` ("held":
+    the relaxed modulus of a seal held for an hour); ``temperature_min`` defaults to 20 K above
+    the elastomer's T_g, the lowest temperature of a rubbery estimate."""
 
     cord_diameter: Q("length", gt=0)
     squeeze: Q("dimensionless", gt=0, lt=0.5)
@@ -282,9 +286,9 @@ class AnalyticMapModel(CaseModel):
     reference_temperature: Q("temperature", gt=0) = 293.15
     sliding_diameter: Q("length", gt=0) | None = None
     pressure_max: Q("pressure", gt=0) = 16e5
-    temperature_min: Q("temperature", gt=0) = 243.15
+    temperature_min: Q("temperature", gt=0) | None = None
     temperature_max: Q("temperature", gt=0) = 393.15
-    temperature_scaling: Literal["entropic", "modulus", "none"] = "entropic"
+    temperature_scaling: Literal["held", "entropic", "modulus", "none"] = "held"
 
 
 class MapModel(CaseModel):
@@ -450,14 +454,35 @@ def _analytic_map(spec: AnalyticMapModel, diameter: float, where: str) -> Analyt
             modulus = 6.0 * (elastomer.c10 + elastomer.c01)
         if expansion is None:
             expansion = elastomer.thermal_expansion
-    if spec.temperature_min >= spec.temperature_max:
+    from sealsim.properties.elastomers import GLASS_TRANSITION_MARGIN, get_elastomer
+
+    try:
+        lowest = get_elastomer(spec.elastomer).glass_transition + GLASS_TRANSITION_MARGIN
+    except Exception as exc:  # unknown name: InputError or KeyError from the catalogue
+        raise InputError(f"{where}.analytic.elastomer: {exc}") from None
+    t_min = lowest if spec.temperature_min is None else spec.temperature_min
+    if t_min >= spec.temperature_max:
         raise InputError(f"{where}.analytic: temperature_min must be below temperature_max")
-    return AnalyticContactMap(
-        sliding_diameter=spec.sliding_diameter or diameter, cord_diameter=spec.cord_diameter,
-        squeeze=spec.squeeze, modulus=modulus, thermal_expansion=expansion,
-        reference_temperature=spec.reference_temperature, pressure_max=spec.pressure_max,
-        temperature_range=(spec.temperature_min, spec.temperature_max),
-        temperature_scaling=spec.temperature_scaling, elastomer=spec.elastomer)
+    try:
+        return AnalyticContactMap(
+            sliding_diameter=spec.sliding_diameter or diameter, cord_diameter=spec.cord_diameter,
+            squeeze=spec.squeeze, modulus=modulus, thermal_expansion=expansion,
+            reference_temperature=spec.reference_temperature, pressure_max=spec.pressure_max,
+            temperature_range=(t_min, spec.temperature_max),
+            temperature_scaling=spec.temperature_scaling, elastomer=spec.elastomer)
+    except InputError as exc:
+        raise InputError(f"{where}.analytic.temperature_min: {exc}") from None
+
+
+def case_input_files(case: PneumaticCase, base_dir: str | Path) -> list[Path]:
+    """The files a pneumatic case reads besides itself: its seals' map files and structure
+    cases (relative to ``base_dir``, the case file's folder)."""
+    files = []
+    for seal in case.seals:
+        if seal.map is not None:
+            files += [Path(base_dir) / f for f in (seal.map.file, seal.map.structure_case)
+                      if f is not None]
+    return files
 
 
 def build_contact_map(spec: MapModel, diameter: float, base_dir: Path, where: str,
@@ -505,7 +530,10 @@ def build_seals(case: PneumaticCase, base_dir: str | Path = ".", progress=None,
         if key not in laws:
             with warnings.catch_warnings(record=True) as caught:
                 warnings.simplefilter("always")     # e.g. LuGre passivity: kept as notes
-                laws[key] = (make_law(spec.friction), [str(w.message) for w in caught])
+                law = make_law(spec.friction)
+            unfitted = parameter_set_note(spec.friction)
+            laws[key] = (law, [str(w.message) for w in caught] + ([unfitted] if unfitted
+                                                                   else []))
         law, notes = laws[key]
         diameter = case.cylinder.bore if spec.location == "piston" else case.cylinder.rod_diameter
         contact_map = None
@@ -521,5 +549,37 @@ def build_seals(case: PneumaticCase, base_dir: str | Path = ".", progress=None,
             temperature = case.cylinder.seal_temperature
         if temperature is None:
             temperature = body_temperature(case)
-        seals.append(Seal(spec.name, spec.location, law, contact_map, temperature, notes))
+        table = seal_friction_table(law, contact_map, f"{where}.map")
+        seals.append(Seal(spec.name, spec.location, law, contact_map, temperature, notes,
+                          table))
     return seals
+
+
+def seal_friction_table(law, contact_map, where: str = "map"):
+    """The steady friction table of a seal whose Θ law takes its steady curve from the
+    contact (``steady = "contact"``), built from its contact map or read from the cache
+    (:func:`sealsim.pneumatic.friction_tables.friction_table_for`); None for other laws."""
+    from sealsim.pneumatic.friction_tables import ContactTribology, friction_table_for
+
+    if getattr(law.params, "steady", "lumped") != "contact":
+        return None
+    if contact_map is None:
+        raise InputError(f"{where}: the theta law with steady = 'contact' needs the seal's "
+                         "contact map (its contact pressure profile)")
+    return friction_table_for(contact_map,
+                              ContactTribology.from_law(law, map_elastomer(contact_map)))
+
+
+def map_elastomer(contact_map) -> str:
+    """Catalogue elastomer of a contact map (FE: the map's ``elastomer`` attribute; analytic:
+    its ``elastomer``); NBR for an FE map of a custom material."""
+    from sealsim.properties.elastomers import get_elastomer
+
+    name = getattr(contact_map, "elastomer", None)
+    if name is None and hasattr(contact_map, "seal_map"):
+        name = contact_map.seal_map.dataset.attrs.get("elastomer")
+    try:
+        get_elastomer(name)
+    except (InputError, TypeError, KeyError):
+        return "NBR"
+    return name

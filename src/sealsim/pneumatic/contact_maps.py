@@ -28,17 +28,21 @@ temperature raises the squeeze through the free thermal expansion of the cord (t
 metal, its expansion is an order of magnitude smaller) and changes the modulus.
 
 Which modulus: an installed seal is held at constant squeeze for hours to years, so its
-viscoelastic stresses relax and the sealing force follows the *equilibrium* modulus of rubber
-elasticity, E ∝ T (entropy elasticity, Treloar 1975) -- it rises with temperature. The
-catalogue's E(T, f) (:meth:`sealsim.properties.elastomers.Elastomer.modulus`) is the *dynamic*
-modulus at a rate f; between T_g and ≈ 100 °C it falls with T because the glass-transition tail
-relaxes faster when warm, which is right for a deformation lasting about 1/f, not for a
-long-held squeeze. Both this estimate and the FE map take the modulus from one law,
+viscoelastic stresses relax and the sealing force follows the *relaxed* modulus at the
+holding time scale, taken from the rubber's viscoelastic master curve
+(:meth:`sealsim.properties.elastomers.Elastomer.held_modulus`, one hour by default,
+:data:`~sealsim.properties.elastomers.HELD_SEAL_TIME`) -- sealsim's one convention for a held
+seal, the same the rotary lip force uses (tested across both models).  It lies well below the
+1 Hz modulus the catalogue's hyperelastic constants hold for (catalogue NBR: 4.1 vs 8.5 MPa at
+20 °C) and is nearly flat from 0 to 100 °C; near T_g it climbs towards the glass.  This estimate
+and the FE map take the modulus from one law,
 :meth:`~sealsim.properties.elastomers.Elastomer.modulus_ratio` (``temperature_scaling``:
-"entropic" by default, "modulus" for the dynamic modulus, "none"), so they agree on the sign
-and size of dF_N/dT for the same gland (tested). With the default both make F_N rise with
-temperature, the trend of Heipl & Murrenhoff (Fig. 8: the sealing force falls on cooling;
-Fig. 10: lower temperature, lower contact force).
+"held" by default; "entropic" for the equilibrium modulus E ∝ T, "modulus" for the dynamic
+modulus at a rate, "none"), so they agree on the sign and size of dF_N/dT for the same gland
+(tested).  The estimate is rubbery: its temperature range starts
+:data:`~sealsim.properties.elastomers.GLASS_TRANSITION_MARGIN` above the rubber's T_g (a lower
+bound is refused with a message); near and below T_g only the viscoelastic FE material with
+its glassy expansion (``material.model = "viscoelastic"``) describes the seal.
 """
 
 from __future__ import annotations
@@ -56,7 +60,13 @@ from numba import njit
 
 from sealsim.errors import InputError
 from sealsim.pneumatic._jit import jit
-from sealsim.properties.elastomers import TEMPERATURE_SCALINGS, entropic_modulus, get_elastomer
+from sealsim.properties.elastomers import (
+    GLASS_TRANSITION_MARGIN,
+    TEMPERATURE_SCALINGS,
+    entropic_modulus,
+    get_elastomer,
+    rubbery_limit_message,
+)
 from sealsim.tribology.contact import hertz_line_half_width
 
 __all__ = [
@@ -277,14 +287,16 @@ class AnalyticContactMap:
 
     with r(T) the stiffness law of ``temperature_scaling``
     (:meth:`sealsim.properties.elastomers.Elastomer.modulus_ratio`, the law the FE map's
-    hyperelastic constants follow): "entropic" r = T (equilibrium modulus of a long-held
-    squeeze, the default), "modulus" the catalogue's dynamic E(T, f) of ``elastomer``, "none".
+    hyperelastic constants follow): "held" the relaxed modulus of ``elastomer`` after an hour
+    at the squeeze relative to E0's test-frequency modulus (the default), "entropic" r = T
+    (equilibrium modulus), "modulus" the catalogue's dynamic E(T, f), "none".
     See :func:`thermal_squeeze`, :func:`lindley_force_per_length`,
     :func:`energised_force_per_length`, :func:`hertz_contact_width`.  F_N rises with Δp and,
-    with the default, with T (the trend of Heipl & Murrenhoff, Fig. 8 and 10).  Typical
-    numbers: d = 2.5 mm, c0 = 12 %, E0 = 8 MPa (NBR of the catalogue, 6·(C10 + C01)) on
-    D = 32 mm give F_N ≈ 105 N and b ≈ 0.8 mm unpressurised, +57 % F_N at 6 bar, +17 % from
-    25 to 55 °C (with "modulus" at 1 Hz: −21 %).
+    with the default, with T from 20 to 100 °C through the thermal expansion of the cord (the
+    trend of Heipl & Murrenhoff, Fig. 8 and 10).  Typical numbers: d = 2.5 mm, c0 = 12 %,
+    E0 = 8 MPa (NBR of the catalogue, 6·(C10 + C01)) on D = 32 mm give F_N ≈ 53 N and
+    b ≈ 0.8 mm unpressurised at 25 °C (held modulus 4.0 MPa), +140 % F_N at 6 bar, +1 % from
+    25 to 55 °C (with "entropic": 108 N, +17 %; with "modulus" at 1 Hz: 96 N, −21 %).
 
     Parameters
     ----------
@@ -302,9 +314,11 @@ class AnalyticContactMap:
         T0 [K] (installation).
     pressure_max : float
         Largest Δp [Pa] the estimate is used for.
-    temperature_range : tuple of float
-        (T_min, T_max) [K] the estimate is used for (rubbery state).
-    temperature_scaling : {"entropic", "modulus", "none"}
+    temperature_range : tuple of float, optional
+        (T_min, T_max) [K] the estimate is used for (rubbery state); default from
+        T_g + :data:`~sealsim.properties.elastomers.GLASS_TRANSITION_MARGIN` of ``elastomer``
+        to 120 °C.  A T_min closer to T_g is refused.
+    temperature_scaling : {"held", "entropic", "modulus", "none"}
         Temperature law of the modulus (see above).
     elastomer : str
         Catalogue elastomer whose E(T, f) the "modulus" scaling uses.
@@ -316,7 +330,7 @@ class AnalyticContactMap:
     >>> m = AnalyticContactMap(0.032, 2.5e-3, 0.12, 8e6, 1.9e-4, 293.15)
     >>> fn, b = m.evaluate([0.0, 6e5], 298.15)
     >>> fn.round(1), (b * 1e3).round(3)
-    (array([107.7, 167.3]), array([0.793, 0.988]))
+    (array([ 52.8, 127. ]), array([0.793, 1.229]))
     """
 
     sliding_diameter: float
@@ -326,8 +340,8 @@ class AnalyticContactMap:
     thermal_expansion: float
     reference_temperature: float = 293.15
     pressure_max: float = 16e5
-    temperature_range: tuple[float, float] = (243.15, 393.15)
-    temperature_scaling: str = "entropic"
+    temperature_range: tuple[float, float] | None = None
+    temperature_scaling: str = "held"
     elastomer: str = "NBR"
     frequency: float | None = None
 
@@ -335,22 +349,34 @@ class AnalyticContactMap:
         if self.temperature_scaling not in TEMPERATURE_SCALINGS:
             raise InputError(f"temperature_scaling = {self.temperature_scaling!r} is not "
                              f"allowed; choose one of {', '.join(TEMPERATURE_SCALINGS)}")
-        if self.temperature_scaling == "modulus":
-            get_elastomer(self.elastomer)  # unknown names fail here, not in a run
+        rubber = get_elastomer(self.elastomer)  # unknown names fail here, not in a run
+        lowest = rubber.glass_transition + GLASS_TRANSITION_MARGIN
+        if self.temperature_range is None:
+            object.__setattr__(self, "temperature_range", (lowest, 393.15))
+        elif self.temperature_range[0] < lowest - 1e-9:
+            raise InputError(rubbery_limit_message(
+                "the analytic O-ring estimate", self.temperature_range[0], rubber))
 
     @property
     def ranges(self) -> dict[str, tuple[float, float]]:
         return {"pressure": (0.0, self.pressure_max), "temperature": self.temperature_range}
 
     def modulus_at(self, temperature):
-        """E(T) [Pa] = E0·r(T)/r(T0) with the law of ``temperature_scaling``."""
+        """E(T) [Pa] = E0·r(T)/r(T0) with the law of ``temperature_scaling`` ("held": E0 times
+        the held modulus of a seal installed at T0 over the test-frequency modulus at the
+        elastomer's reference temperature, where E0 = 6·(C10 + C01) holds)."""
         t0 = self.reference_temperature
         if self.temperature_scaling == "entropic":
             return entropic_modulus(self.modulus, temperature, t0)
         if self.temperature_scaling == "none":
             return self.modulus * np.ones_like(np.asarray(temperature, dtype=float))
-        return self.modulus * get_elastomer(self.elastomer).modulus_ratio(
-            temperature, t0, "modulus", self.frequency)
+        rubber = get_elastomer(self.elastomer)
+        if self.temperature_scaling == "held":  # E0 is the test-frequency modulus at the
+            # catalogue's reference temperature, the one 6·(C10 + C01) holds for
+            return self.modulus * rubber.modulus_ratio(temperature, None, "held",
+                                                       mounting_temperature=t0)
+        return self.modulus * rubber.modulus_ratio(temperature, t0, self.temperature_scaling,
+                                                   self.frequency)
 
     def _preload(self, temperature):
         """(F'_0 [N/m], E [Pa]) at T: the temperature-dependent part."""
@@ -374,6 +400,17 @@ class AnalyticContactMap:
         return _analytic_loads(pressure_difference, preload, modulus, self.cord_diameter,
                                self.sliding_diameter)
 
+    @property
+    def temperature_kinks(self) -> tuple[float, ...]:
+        """Temperatures [K] inside the range where dF_N/dT jumps: with the "held" modulus the
+        installation temperature T0, where F_N(T) peaks (a seal cooled after mounting keeps
+        the stress it relaxed to, one warmed relaxes further, see
+        :meth:`~sealsim.properties.elastomers.Elastomer.held_modulus`); a table of the map
+        puts nodes at them."""
+        lo, hi = self.temperature_range
+        t0 = self.reference_temperature
+        return (t0,) if self.temperature_scaling == "held" and lo < t0 < hi else ()
+
     def loads_function(self, temperature: float):
         """``f(Δp) -> (F_N, b)`` at a fixed temperature T [K] (the fast path of a seal whose
         temperature does not change during a run)."""
@@ -391,7 +428,8 @@ class AnalyticContactMap:
                 "modulus_Pa": self.modulus, "thermal_expansion_per_K": self.thermal_expansion,
                 "reference_temperature_K": self.reference_temperature,
                 "temperature_scaling": self.temperature_scaling,
-                **({"elastomer": self.elastomer, "frequency_Hz": self.frequency}
+                "elastomer": self.elastomer,
+                **({"frequency_Hz": self.frequency}
                    if self.temperature_scaling == "modulus" else {})}
 
 
@@ -534,7 +572,7 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
     FEContactMap
     """
     from sealsim.cases import dump_case_toml
-    from sealsim.files import atomic_write_bytes
+    from sealsim.files import atomic_write_bytes, netcdf_ready
 
     try:
         from sealsim.structure.case import load_structure_cases
@@ -554,8 +592,12 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
     from sealsim.structure.fingerprint import model_fingerprint
 
     # the model's fingerprint too: a map computed by another FE model is not reused
-    digest = hashlib.sha256(f"{text}\n# FE model {model_fingerprint()}".encode("utf-8")) \
-        .hexdigest()[:16]
+    from sealsim.properties.elastomers import compound_file_digest
+
+    # and the content of a compound file the case names, not only its path
+    material = compound_file_digest(case.material.elastomer)
+    digest = hashlib.sha256(f"{text}\n# FE model {model_fingerprint()}{material}"
+                            .encode("utf-8")).hexdigest()[:16]
     folder = Path(cache_dir) if cache_dir is not None else default_cache_dir()
     target = folder / f"{path.stem}-{digest}.nc"
     if not target.is_file():
@@ -566,7 +608,8 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
                 from None
         logger.info(_build_notice(case, path, target, label))
         dataset = compute_map(case, workers=workers, progress=progress, case_text=text)
-        atomic_write_bytes(target, dataset.to_netcdf())
+        dataset, encoding = netcdf_ready(dataset)
+        atomic_write_bytes(target, dataset.to_netcdf(encoding=encoding))
     return FEContactMap.from_file(target, squeeze=squeeze)
 
 

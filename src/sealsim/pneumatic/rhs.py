@@ -21,6 +21,11 @@ Tables
 ``map_data`` (float64), ``map_int`` (int64, one row per seal)
     Contact maps: exact analytic O-ring estimate or a C¹ Hermite grid
     (:func:`sealsim.pneumatic.contact_maps.hermite_grid_point`).
+``fric_data`` (float64), ``fric_int`` (int64, one row per seal: data offset, then the table's
+    layout row)
+    Steady friction tables from the seals' contacts
+    (:func:`sealsim.friction.contact_table.contact_table_point`) for Θ laws with
+    ``steady = "contact"``; a seal without one has a row of zeros.
 ``spool`` (float64, 3 rows) and ``profile`` (float64)
     Valve command arrivals / targets / start positions, and the prescribed position profile.
 
@@ -56,6 +61,7 @@ from sealsim.pneumatic.chambers import (
     wall_heat_flow,
 )
 from sealsim.pneumatic.contact_maps import _analytic_loads, hermite_grid_point
+from sealsim.pneumatic.friction_tables import table_orientation
 from sealsim.pneumatic.cylinder import end_stop_force, load_force
 from sealsim.pneumatic.seal_heating import sliding_contact_coefficient
 from sealsim.pneumatic.seals import pressure_difference, side_pressures, smooth_abs
@@ -123,6 +129,7 @@ _stop = jit(end_stop_force)
 _load = jit(load_force)
 _dp = jit(pressure_difference, smooth_abs=jit(smooth_abs))
 _sides = jit(side_pressures)
+_orient = njit(cache=True)(table_orientation)
 
 
 @njit(cache=True)
@@ -228,11 +235,13 @@ def evaluate_column(t, y, col, mode, tables, dy, diag, level):
     quantity into diag[:, col]; :data:`OUTPUTS` (2): only what the output time series and the
     stick test need (positions, pressures, temperatures, forces, contact loads) into diag --
     no flows, no heat, no derivatives: the cheaper evaluation at the output samples.
-    ``tables`` = (c, spool, profile, seal_int, law_par, seal_therm, map_int, map_data).
+    ``tables`` = (c, spool, profile, seal_int, law_par, seal_therm, map_int, map_data,
+    fric_int, fric_data).
     """
     full = level > 0
     rates = level < 2
-    c, spool, profile, seal_int, law_par, seal_therm, map_int, map_data = tables
+    (c, spool, profile, seal_int, law_par, seal_therm, map_int, map_data, fric_int,
+     fric_data) = tables
     gm1 = AIR_HEAT_CAPACITY_RATIO - 1.0
     prescribed = mode == PRESCRIBED
     if prescribed:
@@ -290,8 +299,11 @@ def evaluate_column(t, y, col, mode, tables, dy, diag, level):
         else:                                     # slip: hold the direction down to v = 0
             d = float(mode)
             vv = d * max(d * v, _TINY_SPEED)
+        frow = fric_int[i, 1:]
+        orient = _orient(seal_int[i, SI_LOC], p1, p2, pa)
         force, brk = _law_rates(law, law_par[i], y, seal_int[i, SI_OFF], vv, fn, b, pside_a,
-                                pside_b, temp, dy, col)
+                                pside_b, temp, dy, col, frow, fric_data[fric_int[i, 0]:], dp,
+                                orient)
         if sticky:
             sticky_any = True
             nsticky += 1

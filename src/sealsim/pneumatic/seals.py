@@ -133,6 +133,9 @@ class Seal:
     notes : list of str
         Warnings raised when the law was built (e.g. LuGre passivity), reported with the
         results.
+    friction_table : SteadyFrictionTable, optional
+        The seal's steady friction from its contact (a Θ law with ``steady = "contact"``,
+        :mod:`sealsim.pneumatic.friction_tables`).
     """
 
     name: str
@@ -141,6 +144,7 @@ class Seal:
     contact_map: Any = None
     temperature: float = 293.15
     notes: list = field(default_factory=list)
+    friction_table: Any = None
 
     @property
     def n_states(self) -> int:

@@ -40,7 +40,7 @@ from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["PneumaticSystem", "law_parameters", "stick_tolerance"]
 
-_LAW_WIDTH = 12          # columns of law_par (GMS needs 7 + 2·N)
+_LAW_WIDTH = 16          # columns of law_par (GMS needs 7 + 2·N)
 
 
 def stick_tolerance(breakaway_force):
@@ -143,12 +143,21 @@ class PneumaticSystem:
         law_par = np.zeros((nseal, _LAW_WIDTH))
         seal_therm = np.zeros((nseal, rhs.ST_NCOLS))
         map_int = np.zeros((nseal, 12), dtype=np.int64)
+        fric_int = np.zeros((nseal, 5), dtype=np.int64)
         map_chunks, used = [], 0
+        fric_chunks, fric_used = [], 0
         for i, seal in enumerate(seals):
-            values = law_parameters(seal.law)
+            diameter = cyl.bore if seal.location == "piston" else cyl.rod_diameter
+            values = law_parameters(seal.law, diameter)
             if values.size > law_par.shape[1]:
                 law_par = np.pad(law_par, ((0, 0), (0, values.size - law_par.shape[1])))
             law_par[i, :values.size] = values
+            if seal.friction_table is not None:
+                frow, fdata = seal.friction_table.tables()
+                fric_int[i, 0] = fric_used
+                fric_int[i, 1:] = frow
+                fric_chunks.append(fdata)
+                fric_used += fdata.size
             seal_int[i, rhs.SI_LAW] = rhs.LAW_CODES[seal.law.name]
             seal_int[i, rhs.SI_LOC] = seal.location_code
             seal_int[i, rhs.SI_OFF] = self.offsets[i]
@@ -174,8 +183,11 @@ class PneumaticSystem:
         self.thermal_notes: list[str] = []
         if self.heating:
             self._thermal_setup()
+        self._fric_int = fric_int
+        self._fric_data = np.concatenate(fric_chunks) if fric_chunks else np.zeros(1)
         self.tables = (self._c, self._spool, self._profile, self._seal_int, self._law_par,
-                       self._seal_therm, self._map_int, self._map_data)
+                       self._seal_therm, self._map_int, self._map_data, self._fric_int,
+                       self._fric_data)
         self.n_diag = rhs.D_NFIXED + rhs.DS_NROWS * nseal
         self._diag1 = np.zeros((self.n_diag, 1))
         self._dy = np.zeros(self.n_states)

@@ -46,15 +46,14 @@ Examples
 
 from __future__ import annotations
 
-import tomllib
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
 import pydantic
-from pydantic import Field, model_validator
+from pydantic import ConfigDict, Field, PrivateAttr, model_validator
 
-from sealsim.cases import CaseModel, Q, validation_problems
+from sealsim.cases import CaseModel, Q, parse_toml, validation_problems
 from sealsim.errors import InputError
 
 __all__ = [
@@ -64,6 +63,7 @@ __all__ = [
     "CatalogueOilEntry",
     "DMATable",
     "ElastomerEntry",
+    "HyperelasticTable",
     "ModulusTable",
     "OilEntry",
     "PronyTable",
@@ -72,7 +72,6 @@ __all__ = [
     "read_elastomer_table",
     "read_elastomer_tables",
     "read_oil_tables",
-    "read_text_file",
 ]
 
 
@@ -167,7 +166,7 @@ def read_oil_tables(text: str, origin: str, catalogue: bool = False
     InputError
         Invalid TOML or an invalid entry; the message names the oil and the field.
     """
-    data = _parse_toml(text, origin)
+    data = parse_toml(text, origin)
     extra = sorted(set(data) - {"oils"})
     if extra or not isinstance(data.get("oils"), dict):
         raise InputError(f"{origin}: expected only [oils.\"NAME\"] tables"
@@ -226,6 +225,50 @@ class PronyTable(CaseModel):
         None, description="default: the material's reference_temperature")
 
 
+class HyperelasticTable(CaseModel):
+    """``[NAME.hyperelastic]``: a strain-energy model other than the Mooney–Rivlin constants
+    ``c10``/``c01`` for the FE model (:mod:`sealsim.properties.hyperelastic`), e.g.::
+
+        [my_nbr.hyperelastic]
+        model = "ogden"
+        mu = ["0.55 MPa", "0.0012 MPa", "-0.008 MPa"]   # stresses with units
+        alpha = [1.3, 5.0, -2.0]                         # shape parameters: plain numbers
+    """
+
+    model_config = ConfigDict(extra="allow", frozen=True)
+
+    model: str
+    _si: tuple = PrivateAttr(default=())
+
+    @model_validator(mode="after")
+    def _parameters(self):
+        from sealsim.properties.hyperelastic import (
+            HYPERELASTIC_MODELS,
+            check_hyperelastic,
+            model_name,
+        )
+        from sealsim.units import parse_quantity
+
+        try:
+            spec = HYPERELASTIC_MODELS[model_name(self.model)]
+            given = dict(self.model_extra or {})
+            values = {}
+            for name, raw in given.items():
+                dimension = "pressure" if name in spec.stresses else "dimensionless"
+                items = raw if isinstance(raw, list) else [raw]
+                si = [parse_quantity(v, dimension, name) for v in items]
+                values[name] = si if isinstance(raw, list) else si[0]
+            self._si = check_hyperelastic(spec.name, values)
+        except InputError as exc:
+            raise ValueError(str(exc)) from None
+        return self
+
+    def hyperelastic(self) -> tuple:
+        """``(model, ((parameter, SI value), ...))`` of
+        :func:`~sealsim.properties.hyperelastic.check_hyperelastic`."""
+        return self._si
+
+
 class ElastomerEntry(CaseModel):
     """One material of an elastomer file: a top-level ``[NAME]`` table with sub-tables.
 
@@ -247,13 +290,42 @@ class ElastomerEntry(CaseModel):
     specific_heat: Q("specific_heat")
     thermal_expansion: Q("thermal_expansion") = Field(
         description="linear thermal expansion coefficient")
-    c10: Q("pressure")
-    c01: Q("pressure")
+    glassy_thermal_expansion: Q("thermal_expansion") | None = Field(None, description=(
+        "linear expansion coefficient of the glass (e.g. from dilatometry); default the "
+        "Simha-Boyer estimate 0.31 x thermal_expansion"))
+    c10: Q("pressure") | None = Field(None, description=(
+        "Mooney-Rivlin C10; with a [NAME.hyperelastic] table default mu0/2 of that model"))
+    c01: Q("pressure") | None = Field(None, description=(
+        "Mooney-Rivlin C01; with a [NAME.hyperelastic] table default 0"))
     bulk_modulus: Q("pressure")
     wlf: WLFTable = WLFTable()
     modulus: ModulusTable
     dma: DMATable | None = None
     prony: PronyTable | None = None
+    hyperelastic: HyperelasticTable | None = None
+
+    @model_validator(mode="after")
+    def _mooney_rivlin_or_model(self):
+        if self.hyperelastic is None:
+            missing = [k for k in ("c10", "c01") if getattr(self, k) is None]
+            if missing:
+                raise ValueError(f"give {' and '.join(missing)} (Mooney-Rivlin constants), or "
+                                 "a [NAME.hyperelastic] table with another strain energy")
+            return self
+        from sealsim.properties.hyperelastic import initial_shear_modulus
+
+        model, params = self.hyperelastic.hyperelastic()
+        mu0 = initial_shear_modulus(model, dict(params))
+        c10 = 0.5 * mu0 if self.c10 is None else self.c10
+        c01 = 0.0 if self.c01 is None else self.c01
+        if abs(2.0 * (c10 + c01) - mu0) > 1e-3 * mu0:
+            raise ValueError(f"c10 and c01 give the shear modulus 2(c10 + c01) = "
+                             f"{2e-6 * (c10 + c01):.6g} MPa, but the [NAME.hyperelastic] "
+                             f"{model} model has {mu0 * 1e-6:.6g} MPa: leave c10/c01 out "
+                             "(they default to its neo-Hookean equivalent) or make them agree")
+        object.__setattr__(self, "c10", c10)
+        object.__setattr__(self, "c01", c01)
+        return self
 
     def elastomer_arguments(self, name: str) -> dict[str, Any]:
         """Keyword arguments of ``Elastomer(...)``; values not given are left out (the
@@ -266,6 +338,7 @@ class ElastomerEntry(CaseModel):
             "service_range": (self.service_min, self.service_max), "density": self.density,
             "thermal_conductivity": self.thermal_conductivity,
             "specific_heat": self.specific_heat, "thermal_expansion": self.thermal_expansion,
+            "glassy_thermal_expansion": self.glassy_thermal_expansion,
             "c10": self.c10, "c01": self.c01, "bulk_modulus": self.bulk_modulus,
             "wlf_c1": wlf.c1, "wlf_c2": wlf.c2,
             "wlf_reference_temperature": (self.glass_transition
@@ -283,6 +356,8 @@ class ElastomerEntry(CaseModel):
             given["prony"] = (self.prony.equilibrium_modulus, tuple(self.prony.moduli),
                               tuple(self.prony.relaxation_times))
             given["prony_reference_temperature"] = self.prony.reference_temperature
+        if self.hyperelastic is not None:
+            given["hyperelastic"] = self.hyperelastic.hyperelastic()
         return {k: v for k, v in given.items() if v is not None}
 
 
@@ -384,7 +459,7 @@ def read_elastomer_tables(text: str, origin: str
     """Every material table of an elastomer file's text, by table key (see
     :func:`read_elastomer_table`)."""
     out = {}
-    for key, table in _parse_toml(text, origin).items():
+    for key, table in parse_toml(text, origin).items():
         if not isinstance(table, Mapping):
             raise InputError(f"{origin}: top-level key {key!r} must be a material table")
         out[key] = read_elastomer_table(table, table.get("name", key), origin)
@@ -394,27 +469,6 @@ def read_elastomer_tables(text: str, origin: str
 
 
 # -- shared -----------------------------------------------------------------------------------
-def read_text_file(path: str | Path, what: str) -> str:
-    """Text of a user file; a missing or unreadable file is an InputError naming it."""
-    p = Path(path)
-    try:
-        return p.read_text(encoding="utf-8")
-    except FileNotFoundError:
-        raise InputError(f"{what} {str(p)!r} cannot be read: it does not exist") from None
-    except IsADirectoryError:
-        raise InputError(f"{what} {str(p)!r} is a folder, expected a TOML file") from None
-    except (OSError, UnicodeDecodeError) as exc:
-        raise InputError(f"{what} {str(p)!r} cannot be read: "
-                         f"{getattr(exc, 'strerror', None) or exc}") from None
-
-
-def _parse_toml(text: str, origin: str) -> dict[str, Any]:
-    try:
-        return tomllib.loads(text)
-    except ValueError as exc:  # TOMLDecodeError and integers tomllib cannot convert
-        raise InputError(f"{origin} is not valid TOML: {exc}") from None
-
-
 def _upgrade_legacy(table: Mapping[str, Any], legacy: Mapping[str, tuple[str, str]],
                     where: str) -> tuple[dict[str, Any], dict[str, str]]:
     """The table with older keys (``nu40_mm2_s = 68.0``) as fields with units

@@ -112,6 +112,8 @@ from sealsim.properties.viscoelasticity import (
 
 __all__ = [
     "CATALOGUE_NAMES",
+    "GLASS_TRANSITION_MARGIN",
+    "HELD_SEAL_TIME",
     "DEFAULT_TRANSITION_ASYMMETRY",
     "DEFAULT_TRANSITION_LOCATION",
     "DEFAULT_TRANSITION_WIDTH",
@@ -125,7 +127,12 @@ __all__ = [
     "ServiceRangeWarning",
     "WLFConstants",
     "get_elastomer",
+    "compound_file_digest",
+    "held_frequency",
+    "rubbery_limit_message",
     "entropic_modulus",
+    "is_compound_file",
+    "load_compound",
     "fictive_temperature",
     "fictive_temperature_step",
     "list_elastomers",
@@ -147,7 +154,37 @@ __all__ = [
 ]
 
 #: Temperature laws of the hyperelastic (sealing) stiffness, see :meth:`Elastomer.modulus_ratio`.
-TEMPERATURE_SCALINGS = ("entropic", "modulus", "none")
+TEMPERATURE_SCALINGS = ("held", "entropic", "modulus", "none")
+
+#: How long an installed seal has been held at its squeeze when it is used [s]: one hour, the
+#: time scale of sealsim's convention for the stiffness of a held seal (the relaxed modulus of
+#: :meth:`Elastomer.held_modulus`, the one law of the rotary lip force, the FE lip, the FE
+#: maps and the analytic O-ring estimate).  One hour is the hold after installation of the
+#: cooling run of Heipl & Murrenhoff's Fig. 8 (examples/structure/oring_cooling.toml) and the
+#: length of a friction test's speed step (Organisciak et al. 2014, Fig. 9); on the catalogue
+#: NBR the modulus keeps falling by about 10 % per decade of holding time at 20 °C.
+HELD_SEAL_TIME = 3600.0
+
+
+def held_frequency(hold_time: float = HELD_SEAL_TIME) -> float:
+    """Frequency [Hz] whose storage modulus approximates the relaxation modulus after
+    ``hold_time`` [s]: f = 1/(2π·t), the first-order interconversion E(t) ≈ E'(ω = 1/t)
+    (J. D. Ferry, *Viscoelastic Properties of Polymers*, 3rd ed., Wiley 1980, ch. 4; within
+    5 % of the catalogue NBR's Prony series at 60 s and 1 h from 0 to 60 °C, tested).
+
+    Examples
+    --------
+    >>> f"{held_frequency(3600.0):.3g}"
+    '4.42e-05'
+    """
+    return 1.0 / (2.0 * math.pi * float(hold_time))
+
+#: Distance above T_g [K] below which a rubbery (hyperelastic) seal model -- an FE map with
+#: the equilibrium material, the analytic O-ring estimate -- is refused: there the modulus at
+#: the holding time scale has left its rubbery plateau (catalogue NBR: 1.5x its 20 °C value
+#: at T_g + 20 K, 4x at T_g + 5 K) and the expansion turns glassy (Simha & Boyer), which only
+#: the viscoelastic FE material with its fictive temperature describes.
+GLASS_TRANSITION_MARGIN = 20.0
 
 #: Names in the shipped catalogue.
 CATALOGUE_NAMES = ("NBR", "HNBR", "FKM", "ACM", "VMQ")
@@ -155,6 +192,18 @@ CATALOGUE_NAMES = ("NBR", "HNBR", "FKM", "ACM", "VMQ")
 #: Physically meaningful range around the material (see :meth:`Elastomer.check_temperature`).
 BELOW_TG_LIMIT = 100.0  # K below T_g
 ABOVE_SERVICE_LIMIT = 50.0  # K above the service maximum
+
+
+def rubbery_limit_message(what: str, temperature: float, elastomer) -> str:
+    """The refusal of a rubbery (hyperelastic) seal model at ``temperature`` [K] within
+    :data:`GLASS_TRANSITION_MARGIN` of the rubber's T_g."""
+    tg = elastomer.glass_transition - 273.15
+    return (f"{what} is rubbery and refuses {temperature - 273.15:.4g} degC: that is "
+            f"within {GLASS_TRANSITION_MARGIN:g} K of the T_g of {elastomer.name} ({tg:g} degC), "
+            f"where the rubber stiffens towards the glass and shrinks with its glassy "
+            f"expansion; start the range at {tg + GLASS_TRANSITION_MARGIN:g} degC or above, or "
+            f"run the cooling path with the viscoelastic FE material (structure case: "
+            f"material.model = 'viscoelastic', sealsim structure run)")
 
 
 class ServiceRangeWarning(UserWarning):
@@ -250,6 +299,15 @@ class Elastomer:
         [K]; default ``reference_temperature``.
     hardness_shore_a : float, optional
         Shore A hardness [-] (information only).
+    glassy_thermal_expansion : float, optional
+        Measured linear CTE of the glass α_g [1/K] (default Simha–Boyer, see
+        :attr:`glassy_expansion`).
+    hyperelastic : tuple, optional
+        ``(model, ((parameter, value), ...))`` of
+        :func:`~sealsim.properties.hyperelastic.check_hyperelastic` (stresses in Pa, at
+        ``reference_temperature``): the strain energy the FE model uses instead of
+        ``c10``/``c01``, which then hold the neo-Hookean equivalent (C10 = μ0/2, C01 = 0) for
+        the analytic estimates.
 
     Examples
     --------
@@ -285,6 +343,8 @@ class Elastomer:
     prony: tuple[float, tuple[float, ...], tuple[float, ...]] | None = None
     prony_reference_temperature: float | None = None
     hardness_shore_a: float | None = None
+    hyperelastic: tuple | None = None
+    glassy_thermal_expansion: float | None = None
 
     # -- validation ---------------------------------------------------------------------------
 
@@ -405,6 +465,19 @@ class Elastomer:
                 "hardness_shore_a",
                 _check_field("hardness_shore_a", self.hardness_shore_a, "Shore A", 0.0, 100.0),
             )
+        if self.glassy_thermal_expansion is not None:
+            set_("glassy_thermal_expansion", _check_field(
+                "glassy_thermal_expansion", self.glassy_thermal_expansion, "1/K", 0.0,
+                self.thermal_expansion, why="between 0 and thermal_expansion"))
+        if self.hyperelastic is not None:
+            from sealsim.properties.hyperelastic import check_hyperelastic
+
+            try:
+                model, params = self.hyperelastic
+                set_("hyperelastic", check_hyperelastic(model, dict(params)))
+            except (TypeError, ValueError, InputError) as exc:
+                raise _field_error("hyperelastic", self.hyperelastic,
+                                   f"(model, ((parameter, value), ...)): {exc}") from None
 
     def _validate_dma(self, set_: Any) -> None:
         try:
@@ -641,6 +714,62 @@ class Elastomer:
         t, f = self._t_f(temperature, frequency, warn=True)
         return _out(self._modulus(t, f))
 
+    def held_modulus(self, temperature: Any, hold_time: float = HELD_SEAL_TIME,
+                     mounting_temperature: Any = None) -> np.ndarray | float:
+        r"""Young's modulus of a seal held at its squeeze: the relaxed modulus after
+        ``hold_time`` from the viscoelastic master curve [Pa].
+
+        sealsim's one convention for the stiffness of an installed seal (rotary lip force, FE
+        lip, FE maps, analytic O-ring estimate): the stress of a held squeeze relaxes, so the
+        sealing force follows the relaxation modulus E(t_h, T) at the holding time t_h, taken
+        from the master curve as E'(T, f = 1/(2π t_h)) (:func:`held_frequency`).  Between T_g
+        and ≈ 100 °C it is nearly flat for the catalogue rubbers (NBR 4.1 MPa at 20 °C,
+        3.8 MPa at 60 °C, 4.0 MPa at 100 °C), far below the 1 Hz modulus the hyperelastic
+        constants hold for (NBR 8.5 MPa at 20 °C), and it climbs towards the glass near T_g.
+
+        With ``mounting_temperature`` T_m it is the modulus of the stress that was *installed*
+        at T_m and then brought to T: that stress relaxes as far as the longer of the two
+        reduced times allows, t_h/a_T(T_m) and t_h/a_T(T) (Morland & Lee 1960), i.e. the
+        reduced frequency min(a_T(T_m), a_T(T))/(2π t_h).  A lip mounted warm and cooled keeps
+        the stress it relaxed to at T_m (only the entropic factor of the plateau follows T);
+        a lip warmed after mounting relaxes further, as if mounted warm.
+
+        Parameters
+        ----------
+        temperature : array_like
+            T [K].
+        hold_time : float
+            t_h [s], > 0 (default :data:`HELD_SEAL_TIME`).
+        mounting_temperature : array_like, optional
+            T_m [K] at which the held stress was installed; default T.
+
+        Returns
+        -------
+        float or numpy.ndarray
+            E [Pa].
+
+        Examples
+        --------
+        >>> nbr = get_elastomer("NBR")
+        >>> round(nbr.held_modulus(293.15) / 1e6, 2), round(nbr.held_modulus(253.15) / 1e6, 1)
+        (4.09, 16.5)
+
+        Mounted at 20 °C and cooled to −20 °C, the installed stress stays at its 20 °C
+        relaxation (the plateau's entropic factor aside):
+
+        >>> round(nbr.held_modulus(253.15, mounting_temperature=293.15) / 1e6, 2)
+        3.57
+        """
+        t_h = _scalar(hold_time, "hold_time", "s", lo=0.0, lo_open=True)
+        t = self._check(temperature, False, stacklevel=3)
+        f = np.full(t.shape, held_frequency(t_h))
+        if mounting_temperature is not None:
+            t_m = self._check(mounting_temperature, False, stacklevel=3)
+            t, t_m = _broadcast(t, t_m, names="temperature and mounting_temperature")
+            f = held_frequency(t_h) * 10.0 ** np.minimum(
+                self._log10_shift(t_m) - self._log10_shift(t), 0.0)
+        return _out(self._modulus(t, f))
+
     def shear_modulus(self, temperature: Any, frequency: Any = None) -> np.ndarray | float:
         """Small-strain shear modulus G = E/3 [Pa] (incompressible).
 
@@ -715,13 +844,21 @@ class Elastomer:
         self,
         temperature: Any,
         reference_temperature: float | None = None,
-        scaling: str = "entropic",
+        scaling: str = "held",
         frequency: Any = None,
+        mounting_temperature: float | None = None,
     ) -> np.ndarray | float:
         r"""Stiffness of the seal at T relative to T_ref, E(T)/E(T_ref), for the hyperelastic
         constants and the analytic contact estimate (one law for both).
 
-        * ``"entropic"`` (default): T/T_ref, the equilibrium modulus of rubber elasticity
+        * ``"held"`` (sealsim's convention for an installed seal): the relaxed modulus of a seal
+          held for :data:`HELD_SEAL_TIME` (:meth:`held_modulus`, installed at
+          ``mounting_temperature``) relative to the modulus at the test frequency at T_ref,
+          E_h(T)/E(T_ref, f_test) -- the modulus the hyperelastic constants and
+          E = 6·(C10 + C01) hold for; so it scales their level too (catalogue NBR: 0.48 at
+          20 °C) and follows the master curve in T (nearly flat from 0 to 100 °C; a seal
+          cooled after installation keeps the stress it relaxed to).
+        * ``"entropic"``: T/T_ref, the equilibrium modulus of rubber elasticity
           (:func:`~sealsim.properties.rubber_modulus.entropic_modulus`). It is the
           stiffness of a seal held at constant squeeze long enough for the viscoelastic
           stresses to relax -- an installed static or slowly moving seal well above T_g -- and
@@ -738,10 +875,12 @@ class Elastomer:
             T [K] (allowed range of the material; no service-range warning).
         reference_temperature : float, optional
             T_ref [K]; default the material's reference temperature.
-        scaling : {"entropic", "modulus", "none"}
+        scaling : {"held", "entropic", "modulus", "none"}
             See above.
         frequency : float, optional
             f [Hz] for ``"modulus"``; default ``test_frequency``.
+        mounting_temperature : float, optional
+            For ``"held"``: temperature [K] at which the seal was installed; default T.
 
         Returns
         -------
@@ -774,6 +913,10 @@ class Elastomer:
             return _out(entropic_modulus(1.0, t, t0))
         if scaling == "none":
             return _out(np.ones_like(t))
+        if scaling == "held":
+            reference = self._modulus(t0, np.asarray(self.test_frequency))
+            held = self.held_modulus(t, mounting_temperature=mounting_temperature)
+            return _out(np.asarray(held) / reference)
         t, f = self._t_f(t, frequency, warn=False)
         return _out(self._modulus(t, f) / self._modulus(t0, f[()] if f.ndim == 0 else f))
 
@@ -871,7 +1014,8 @@ class Elastomer:
 
     @property
     def glassy_expansion(self) -> float:
-        """Linear CTE of the glassy state α_g [1/K]: the Simha–Boyer estimate 0.31·α_r
+        """Linear CTE of the glassy state α_g [1/K]: ``glassy_thermal_expansion`` where given
+        (measured, e.g. by dilatometry), else the Simha–Boyer estimate 0.31·α_r
         (:func:`~sealsim.properties.thermal_expansion.simha_boyer_glassy_expansion`; no
         compound of the catalogue gives a measured glassy value).
 
@@ -880,6 +1024,8 @@ class Elastomer:
         >>> round(get_elastomer("NBR").glassy_expansion * 1e4, 3)
         0.591
         """
+        if self.glassy_thermal_expansion is not None:
+            return self.glassy_thermal_expansion
         return float(simha_boyer_glassy_expansion(self.thermal_expansion))
 
     @property
@@ -1042,9 +1188,10 @@ def load_elastomer_file(path: str | Path) -> dict[str, Elastomer]:
     >>> sorted(load_elastomer_file(_catalogue_path()))
     ['ACM', 'FKM', 'HNBR', 'NBR', 'VMQ']
     """
-    from sealsim.properties.catalogue import read_elastomer_tables, read_text_file
+    from sealsim.files import read_input_text
+    from sealsim.properties.catalogue import read_elastomer_tables
 
-    text = read_text_file(path, "elastomer file")
+    text = read_input_text(path, "elastomer file")
     return {key: _build(*table) for key, table
             in read_elastomer_tables(text, f"elastomer file {str(path)!r}").items()}
 
@@ -1078,13 +1225,62 @@ def list_elastomers() -> list[str]:
     return list(_catalogue())
 
 
+def is_compound_file(name: Any) -> bool:
+    """True if a material reference names a compound file (``"my_nbr.toml"``), not a
+    catalogue name."""
+    return isinstance(name, str) and name.strip().lower().endswith(".toml")
+
+
+def compound_file_digest(name: Any) -> str:
+    """SHA-256 (16 hex digits) of a compound file's bytes, ``""`` for a catalogue name: for
+    cache keys of results that depend on the file's content, not only on its path."""
+    if not is_compound_file(name):
+        return ""
+    import hashlib
+
+    try:
+        return hashlib.sha256(Path(name.strip()).read_bytes()).hexdigest()[:16]
+    except OSError:
+        return ""
+
+
+@functools.lru_cache(maxsize=32)
+def _compound(path: str, mtime_ns: int, size: int) -> Elastomer:
+    materials = load_elastomer_file(path)
+    if len(materials) != 1:
+        raise InputError(f"compound file {path!r} holds {len(materials)} materials "
+                         f"({', '.join(materials)}); a material given by its file must be "
+                         "the only table in it (or use --material-file and its name)")
+    return next(iter(materials.values()))
+
+
+def load_compound(path: str | Path) -> Elastomer:
+    """The one material of a compound file (the catalogue format, e.g. written by
+    ``sealsim material fit``); read again when the file changes.
+
+    Raises
+    ------
+    InputError
+        A missing file, invalid content, or not exactly one material table.
+    """
+    p = Path(str(path).strip())
+    try:
+        stat = p.stat()
+    except OSError:
+        raise InputError(f"compound file {str(p)!r} cannot be read: it does not exist "
+                         "(a relative path is relative to the case file, or to the current "
+                         "folder from Python)") from None
+    return _compound(str(p), stat.st_mtime_ns, stat.st_size)
+
+
 def get_elastomer(name: str) -> Elastomer:
-    """Catalogue elastomer by name (case-insensitive).
+    """Catalogue elastomer by name (case-insensitive), or the compound of a file.
 
     Parameters
     ----------
     name : str
-        "NBR", "HNBR", "FKM", "ACM" or "VMQ".
+        "NBR", "HNBR", "FKM", "ACM" or "VMQ"; or the path of a compound file ending in
+        ``.toml`` (one material table in the catalogue format, :func:`load_compound`).
 
     Returns
     -------
@@ -1103,6 +1299,8 @@ def get_elastomer(name: str) -> Elastomer:
     cat = _catalogue()
     if not isinstance(name, str):
         raise InputError(f"elastomer name must be a string; got {name!r}")
+    if is_compound_file(name):
+        return load_compound(name)
     key = name.strip().upper()
     if key in cat:
         return cat[key]
@@ -1110,5 +1308,6 @@ def get_elastomer(name: str) -> Elastomer:
     hint = f" Did you mean {', '.join(close)}?" if close else ""
     raise InputError(
         f"unknown elastomer {name!r}.{hint} Available: {', '.join(cat)} ('sealsim material "
-        f"list'); define others in a file given with --material-file"
+        f"list'), or the path of a compound file ending in .toml (e.g. written by 'sealsim "
+        f"material fit')"
     )

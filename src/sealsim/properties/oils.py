@@ -1087,9 +1087,9 @@ def load_oil_file(path: str | PathLike[str]) -> dict[str, Oil]:
         If the file cannot be read or an entry is invalid; the message names the file, the oil
         and the field.
     """
-    from sealsim.properties.catalogue import read_text_file
+    from sealsim.files import read_input_text
 
-    return _read_oils(read_text_file(path, "oil file"), str(path), catalogue=False)[0]
+    return _read_oils(read_input_text(path, "oil file"), str(path), catalogue=False)[0]
 
 
 def get_oil(name: str | Oil, extra: Mapping[str, Oil] | None = None) -> Oil:

@@ -19,7 +19,7 @@ The result folder of ``sealsim rotary run`` (tables, summary, figures) is writte
 >>> from sealsim.rotary import RotaryCase, steady_state
 >>> case = RotaryCase(seal={"shaft_diameter": 0.06}, environment={"sump_temperature": 343.15})
 >>> round(steady_state(case, 157.08)["torque_Nm"], 3)
-0.187
+0.2
 """
 
 import importlib

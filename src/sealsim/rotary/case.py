@@ -27,6 +27,7 @@ results lists them all.
 from __future__ import annotations
 
 import csv
+import io
 from dataclasses import dataclass, fields
 from pathlib import Path
 from typing import Literal
@@ -36,7 +37,8 @@ from pydantic import Field, field_validator, model_validator
 
 from sealsim.cases import CaseModel, Q
 from sealsim.errors import InputError
-from sealsim.properties.elastomers import get_elastomer
+from sealsim.files import MAX_DATA_BYTES, read_input_bytes
+from sealsim.properties.elastomers import get_elastomer, is_compound_file
 from sealsim.properties.oils import FAMILIES, Oil, get_oil
 from sealsim.rotary.lip import (
     DEFAULT_HOOP_PRESTRAIN,
@@ -50,10 +52,12 @@ from sealsim.rotary.lip import (
 )
 from sealsim.rotary.lip_fe import LipSpec
 from sealsim.tribology.film import EHL_EXPONENT, FILM_FLOOR, film_coefficient_matching_fit
+from sealsim.tribology.rolling_bearing import DEEP_GROOVE_OIL_BATH_F0
 from sealsim.tribology.rubber_friction import DEFAULT_ASPERITY_WAVELENGTH, DEFAULT_MASTER_CURVE
 from sealsim.units import ZERO_CELSIUS_K
 
-__all__ = ["SETUPS", "DutyCycle", "DutyStep", "Environment", "Friction", "Numerics", "OilSpec",
+__all__ = ["SETUPS", "Bearing", "DutyCycle", "DutyStep", "Environment", "Friction", "Numerics",
+           "OilSpec",
            "RotaryCase", "Seal", "ShaftSetup", "ThermalSpec", "WaveLip"]
 
 
@@ -83,6 +87,11 @@ class Seal(CaseModel):
     radial_force: Q("force", gt=0, le=1000.0) | None = Field(
         None, description="lip force at radial_force_temperature; default 0.15 N/mm x pi d")
     radial_force_temperature: Q("temperature", gt=200.0, lt=450.0) = 293.15
+    mounting_temperature: Q("temperature", gt=200.0, lt=450.0) | None = Field(None, description=(
+        "temperature at which the seal was mounted on the shaft and its lip stress relaxed "
+        "(held for an hour); a lip cooled below it keeps that stress and only the contraction "
+        "increment meets the stiffer cold rubber (rotary/lip.py Eq. 1); default "
+        "radial_force_temperature"))
     spring_share: float = Field(0.45, ge=0.0, le=1.0, description=(
         "share of the garter spring in the radial force (typically 30-60 % for a new "
         "DIN 3760 NBR lip; handbook range, not checked against one measured source)"))
@@ -102,7 +111,8 @@ class Seal(CaseModel):
     @field_validator("material")
     @classmethod
     def _known_material(cls, value: str) -> str:
-        return get_elastomer(value).name
+        name = get_elastomer(value).name
+        return value if is_compound_file(value) else name
 
     @model_validator(mode="after")
     def _defaults(self):
@@ -116,6 +126,8 @@ class Seal(CaseModel):
             values["radial_force"] = float(default_radial_force(d))
         if self.contact_width is None:
             values["contact_width"] = default_contact_width(d)
+        if self.mounting_temperature is None:
+            values["mounting_temperature"] = self.radial_force_temperature
         for key, value in values.items():
             object.__setattr__(self, key, value)
         if self.outer_diameter <= d + 4e-3:
@@ -158,37 +170,78 @@ class OilSpec(CaseModel):
 class ShaftSetup:
     """Defaults of a shaft environment (see :data:`SETUPS`), SI units."""
 
-    shaft_length_oil_side: float
+    shaft_length_oil_side: float | None
     shaft_length_air_side: float
     shaft_oil_end: str
     shaft_air_end: str
     housing_heat_transfer: float
+    bearing: str
 
 
 #: Shaft environments.  Lengths are measured from the contact line.
 #:
 #: * ``gearbox``: the seal sits in a bearing cap of a gear unit.  On the oil side the shaft
-#:   reaches the bearing 30 mm inside and continues into the gear case, where bearings and
-#:   gears bathed in oil hold it at the sump temperature (in gearbox thermal networks shafts
-#:   are nodes at about oil temperature: Bauer et al., Power Transmission Engineering, Dec.
-#:   2018; del Valle, KTH 2014).  On the air side 50 mm of bare shaft lead to the coupling of a
-#:   motor flanged to the housing (an industrial gear motor, the application of Organisciak et
-#:   al. 2014), which holds the shaft end at about the housing temperature.  Housing to ambient
-#:   12 W/(m² K): radiation 7.5 (grey body, ε = 0.9) + free convection 4.8 (Churchill & Chu)
-#:   for a 0.3 m wall 40 K above ambient.
+#:   passes the deep-groove ball bearing beside the seal -- a heat source: Palmgren's friction
+#:   of a 62xx bearing of the shaft's bore in the sump oil, half of it into the shaft through
+#:   the inner ring (:mod:`sealsim.tribology.rolling_bearing`) -- and continues into the gear
+#:   case as a rotating fin in the sump (Kays & Bjorklund's rotating cylinder on the wetted
+#:   fraction of the circumference); the modelled shaft reaches a quarter diameter beyond the
+#:   bearing, the fin continues from there.  No boundary of fixed temperature on the oil side.
+#:   On the air side 50 mm of bare shaft lead to the coupling of a motor flanged to the
+#:   housing (an industrial gear motor, the application of Organisciak et al. 2014), which
+#:   holds the shaft end at about the housing temperature (a lumped node when the housing is
+#:   not held).  Housing to ambient 12 W/(m² K): radiation 7.5 (grey body, ε = 0.9) + free
+#:   convection 4.8 (Churchill & Chu) for a 0.3 m wall 40 K above ambient.
 #: * ``test_rig``: the friction rig of Organisciak et al. (AGMA 14FTM14, 2014): a motor-driven
 #:   shaft, the seal in a compact test head with a small oil bath, the friction measured on an
-#:   air-bearing spindle.  30 mm of shaft on each side; the shaft end in the oil bath and the
-#:   drive coupling take no heat (insulated); bare aluminium test head 6 W/(m² K) (free
-#:   convection ≈ 5 + radiation ≈ 1, a bright metal surface with emissivity ≈ 0.1).
+#:   air-bearing spindle (no rolling bearing beside the seal).  30 mm of shaft on each side;
+#:   the shaft end in the oil bath and the drive coupling take no heat (insulated); bare
+#:   aluminium test head 6 W/(m² K) (free convection ≈ 5 + radiation ≈ 1, a bright metal
+#:   surface with emissivity ≈ 0.1).
 SETUPS: dict[str, ShaftSetup] = {
-    "gearbox": ShaftSetup(shaft_length_oil_side=0.03, shaft_length_air_side=0.05,
-                          shaft_oil_end="sump", shaft_air_end="housing",
-                          housing_heat_transfer=12.0),
+    "gearbox": ShaftSetup(shaft_length_oil_side=None, shaft_length_air_side=0.05,
+                          shaft_oil_end="fin", shaft_air_end="housing",
+                          housing_heat_transfer=12.0, bearing="palmgren"),
     "test_rig": ShaftSetup(shaft_length_oil_side=0.03, shaft_length_air_side=0.03,
                            shaft_oil_end="insulated", shaft_air_end="insulated",
-                           housing_heat_transfer=6.0),
+                           housing_heat_transfer=6.0, bearing="none"),
 }
+
+
+class Bearing(CaseModel):
+    """The rolling bearing beside the seal on the oil side: a heat source in the shaft.
+
+    ``model``: ``"palmgren"`` (Palmgren's load-independent friction of a deep-groove ball
+    bearing in the sump oil, :func:`~sealsim.tribology.rolling_bearing.palmgren_viscous_moment`
+    at the sump temperature), ``"power"`` (the heat ``power`` you give, e.g. from a bearing
+    catalogue's friction model including the load) or ``"none"``; default from the set-up
+    (gearbox: palmgren, test_rig: none).
+    """
+
+    model: Literal["palmgren", "power", "none"] | None = None
+    power: Q("power", ge=0.0, le=1e5) | None = Field(None, description=(
+        "bearing friction heat for model = 'power' [W] (constant)"))
+    pitch_diameter: Q("length", gt=0.0, le=2.0) | None = Field(None, description=(
+        "pitch diameter d_m; default: the 62xx bearing of the shaft's bore (ISO 15)"))
+    width: Q("length", gt=0.0, le=0.5) | None = Field(None, description=(
+        "bearing width B; default: the 62xx bearing of the shaft's bore (ISO 15)"))
+    f0: float = Field(DEEP_GROOVE_OIL_BATH_F0, gt=0.0, le=20.0, description=(
+        "Palmgren's f0 (2: deep-groove ball bearing, oil bath; Harris & Kotzalas 2007)"))
+    shaft_share: float = Field(0.5, ge=0.0, le=1.0, description=(
+        "share of the bearing heat that enters the shaft through the inner ring; the rest "
+        "goes to the housing and the oil (0.5: the heat of the rolling contacts split "
+        "equally between the rings, the usual assumption of bearing thermal networks)"))
+    gap: Q("length", ge=0.0, le=0.5) = Field(5e-3, description=(
+        "axial distance from the seal's oil-side face to the bearing (a shoulder or spacer "
+        "in the bearing cap; estimate 5 mm)"))
+
+    @model_validator(mode="after")
+    def _power_given(self):
+        if self.model == "power" and self.power is None:
+            raise ValueError("bearing.model = 'power' needs bearing.power, e.g. '20 W'")
+        if self.model != "power" and self.power is not None:
+            raise ValueError("bearing.power is used with bearing.model = 'power' only")
+        return self
 
 
 class Environment(CaseModel):
@@ -199,9 +252,10 @@ class Environment(CaseModel):
     """
 
     setup: Literal["gearbox", "test_rig"] = Field("gearbox", description=(
-        "shaft environment: 'gearbox' (seal in a gear unit's bearing cap, shaft held at the "
-        "sump temperature inside, coupling at the housing temperature outside) or 'test_rig' "
-        "(Organisciak et al.'s rig: short shaft, small oil bath, insulated ends)"))
+        "shaft environment: 'gearbox' (seal in a gear unit's bearing cap: the bearing beside "
+        "it heats the shaft, the shaft continues as a rotating fin in the sump, the coupling "
+        "outside sits at the housing temperature) or 'test_rig' (Organisciak et al.'s rig: "
+        "short shaft, small oil bath, insulated ends)"))
     ambient_temperature: Q("temperature", gt=200.0, lt=400.0) = 293.15
     start_temperature: Q("temperature", gt=200.0, lt=450.0) | None = Field(
         None, description="initial temperature of shaft, seal, oil and housing; default: the "
@@ -237,13 +291,15 @@ class Environment(CaseModel):
         100.0, description="oil to the wetted housing wall (splashed walls 1e2-1e3 W/(m2 K))")
     shaft_length_oil_side: Q("length", gt=1e-3, le=2.0) | None = Field(
         None, description="modelled shaft from the contact into the oil side; default from the "
-                          "setup (30 mm)")
+                          "setup (gearbox: through the bearing and a quarter diameter beyond "
+                          "it; test_rig: 30 mm)")
     shaft_length_air_side: Q("length", gt=1e-3, le=2.0) | None = Field(
         None, description="modelled shaft from the contact to the air-side end; default from "
                           "the setup (gearbox 50 mm, test_rig 30 mm)")
     shaft_oil_end: Literal["sump", "fin", "insulated"] | None = Field(None, description=(
-        "beyond shaft_length_oil_side the shaft is held at the sump temperature (sump: gear "
-        "case), continues bare in the oil (fin), or ends (insulated); default from the setup"))
+        "beyond shaft_length_oil_side the shaft continues as a rotating fin in the sump (fin: "
+        "Kays & Bjorklund's rotating cylinder on the wetted circumference), is held at the sump "
+        "temperature (sump), or ends (insulated); default from the setup"))
     shaft_air_end: Literal["housing", "fin", "insulated"] | None = Field(None, description=(
         "beyond shaft_length_air_side the shaft enters a coupling or bearing at the housing "
         "temperature (housing), continues bare in air (fin), or enters a part that takes no "
@@ -254,11 +310,17 @@ class Environment(CaseModel):
     shaft_expansion: Q("thermal_expansion", ge=0, le=1e-4) = Field(
         STEEL_EXPANSION, description="linear thermal expansion of the shaft (steel 11-13e-6 1/K)")
 
+    bearing: Bearing = Field(default_factory=Bearing, description=(
+        "the rolling bearing beside the seal (a heat source in the shaft)"))
+
     @model_validator(mode="after")
     def _setup_defaults(self):
         setup = SETUPS[self.setup]
         for item in fields(ShaftSetup):
-            if getattr(self, item.name) is None:
+            if item.name == "bearing":
+                if self.bearing.model is None:
+                    object.__setattr__(self.bearing, "model", setup.bearing)
+            elif getattr(self, item.name) is None:
                 object.__setattr__(self, item.name, getattr(setup, item.name))
         return self
 
@@ -397,22 +459,17 @@ def _read_duty_csv(path: Path):
     """Break points, speeds and constant-speed steps of a duty-cycle CSV (every problem an
     InputError naming the file and row)."""
     where = f"duty.csv: {str(path)!r}"
+    data = read_input_bytes(path, "duty.csv file", MAX_DATA_BYTES)
     try:
         # utf-8-sig: a byte-order mark (spreadsheet export) is not part of the first header
-        with path.open(newline="", encoding="utf-8-sig") as fh:
-            reader = csv.DictReader(fh)
-            header = reader.fieldnames or []
-            rows = list(reader)
-    except FileNotFoundError:
-        raise InputError(f"{where} does not exist") from None
-    except IsADirectoryError:
-        raise InputError(f"{where} is a folder, expected a CSV file") from None
+        reader = csv.DictReader(io.StringIO(data.decode("utf-8-sig"), newline=""))
+        header = reader.fieldnames or []
+        rows = list(reader)
     except UnicodeDecodeError:
         raise InputError(f"{where} is not a UTF-8 text file (a CSV with columns time_s, "
                          "speed_rpm)") from None
-    except (OSError, csv.Error) as exc:  # no permission, NUL bytes of a binary file
-        raise InputError(f"{where} cannot be read as CSV: "
-                         f"{getattr(exc, 'strerror', None) or exc}") from None
+    except csv.Error as exc:  # NUL bytes of a binary file
+        raise InputError(f"{where} cannot be read as CSV: {exc}") from None
     header = [h.strip() for h in header if h is not None]
     if not {"time_s", "speed_rpm"} <= set(header):
         raise InputError(f"{where} needs the columns time_s, speed_rpm; its header is "

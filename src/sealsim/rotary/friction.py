@@ -32,7 +32,6 @@ import numpy as np
 
 from sealsim.properties.elastomers import Elastomer
 from sealsim.properties.oils import Oil
-from sealsim.rotary.lip import LIP_FORCE_FREQUENCY
 from sealsim.tribology.contact import asperity_load_share
 from sealsim.tribology.film import (
     EHL_EXPONENT,
@@ -119,7 +118,8 @@ class LipSealFriction:
     oil : Oil
         The lubricant.
     elastomer : Elastomer
-        The lip rubber (shift factor of μ_dry, quasi-static modulus of the film law).
+        The lip rubber (shift factor of μ_dry, held modulus of the film law: the lip's contact
+        deformation is held, the lip stands still).
     lip_force : callable
         ``lip_force(temperature [K]) -> F_tip [N]``, vectorised.
 
@@ -158,7 +158,7 @@ class LipSealFriction:
         eta = self.oil.dynamic_viscosity(temp)
         f_tip = np.asarray(self.lip_force(temp), dtype=float)
         scale = soft_ehl_load_modulus_factor(
-            f_tip / (np.pi * p.shaft_diameter), self.elastomer.modulus(temp, LIP_FORCE_FREQUENCY),
+            f_tip / (np.pi * p.shaft_diameter), self.elastomer.held_modulus(temp),
             p.film_reference_load, p.film_reference_modulus)
         h = film_thickness(eta, speed, p.film_coefficient, p.film_exponent,
                            p.film_factor * scale, p.film_floor)

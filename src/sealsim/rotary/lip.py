@@ -3,13 +3,22 @@
 **Lip force.**  The radial lip force F_tip of a garter-spring lip seal has two shares: the
 garter spring (steel: its force does not change with temperature in the service range) and the
 elastomer's own interference.  The rubber share is the lip ring's elastic response to being
-stretched onto the shaft, so it scales with the rubber's quasi-static modulus E and with the
-interference δ.  With the rubber share s_r = 1 − s_spring at the reference temperature T_ref,
+stretched onto the shaft: a stress σ = E·ε with the hoop strain ε = δ/R of the interference δ.
+Its modulus is sealsim's one convention for a held seal, the relaxed modulus after the holding
+time of the rubber's master curve (:meth:`~sealsim.properties.elastomers.Elastomer.held_modulus`,
+E_h; the pneumatic maps use the same), and its history matters: the lip is mounted at T_m
+(``seal.mounting_temperature``), its stress relaxes there, and a later change of temperature
+adds a strain increment that meets the modulus at the new temperature (Boltzmann
+superposition in reduced time, Morland & Lee 1960):
 
-    F_tip(T) = F_ref·[s_spring + (1 − s_spring)·(E(T)/E(T_ref))·(δ(T)/δ(T_ref))].   (1)
+    σ(T) = E_m(T)·ε(T_m) + E_h(T)·[ε(T) − ε(T_m)],                                (1)
 
-E is evaluated at a quasi-static frequency (:data:`LIP_FORCE_FREQUENCY`): the lip's
-interference is held for hours, so the relaxed modulus applies, not the dynamic one.
+E_m(T) = E_h(T, mounted at T_m): a lip cooled after mounting keeps the stress it relaxed to at
+T_m and only the contraction increment meets the stiff cold rubber; a lip warmed after mounting
+relaxes further, as if mounted warm (then Eq. 1 is E_h(T)·ε(T)).  With the rubber share
+s_r = 1 − s_spring of F_ref at T_ref (a lip mounted at T_ref),
+
+    F_tip(T) = F_ref·[s_spring + (1 − s_spring)·σ(T)/σ_ref],  σ_ref = E_h(T_ref)·ε(T_ref). (2)
 
 The interference shrinks as the lip warms: rubber expands about fifteen times more than the
 steel shaft, and the lip head hangs on a flexible membrane, so its ring grows nearly freely
@@ -17,7 +26,11 @@ steel shaft, and the lip head hangs on a flexible membrane, so its ring grows ne
 seals, whose "contact force decreases with the thermal volume increase", with axial ones).
 Written as the lip ring's hoop pre-strain ε₀ = δ/R on a shaft of radius R,
 
-    δ(T)/δ(T_ref) = max(0, 1 − (α_rubber − α_shaft)·(T − T_ref)/ε₀).           (2)
+    ε(T)/ε(T_ref) = max(0, 1 − [ε_th(T) − α_shaft·(T − T_ref)]/ε₀),               (3)
+
+with the rubber's free thermal strain ε_th (rubbery coefficient above T_g, the glassy one of
+Simha & Boyer below, the structure frozen at T_g:
+:func:`~sealsim.properties.thermal_expansion.thermal_strain`).
 
 **Wave lip.**  A wave lip's contact line z(θ) = A·sin(N·θ) (amplitude A, N waves around the
 shaft of radius R) is inclined to the sliding direction by φ(θ), tan φ = (A·N/R)·cos(N·θ).  The
@@ -40,11 +53,11 @@ from dataclasses import dataclass
 import numpy as np
 
 from sealsim.properties.elastomers import Elastomer
+from sealsim.properties.thermal_expansion import thermal_strain
 from sealsim.tribology.film import EHL_EXPONENT
 
 __all__ = [
     "DEFAULT_HOOP_PRESTRAIN",
-    "LIP_FORCE_FREQUENCY",
     "LIP_STYLES",
     "AnalyticLipForce",
     "LipStyle",
@@ -54,15 +67,12 @@ __all__ = [
     "default_width",
     "interference_ratio",
     "lip_force",
+    "lip_mounting_note",
+    "lip_stress_ratio",
     "wave_contact_angle",
     "wave_film_factor",
     "wave_lip_style",
 ]
-
-#: Frequency at which E(T) scales the rubber share of the lip force [Hz].  0.01 Hz (time scale
-#: ≈ 100 s) is the quasi-static end of DMA; for the catalogue NBR it gives a 20 % drop of the
-#: modulus from 20 to 100 °C.
-LIP_FORCE_FREQUENCY = 0.01
 
 #: Radial load per unit circumference of a DIN 3760 lip [N/m]: 0.15 N/mm, the middle of
 #: the 100-200 N/m to which oil-seal radial forces are "generally chosen" (100-150 N/m for
@@ -83,8 +93,9 @@ STEEL_EXPANSION = 12e-6
 
 
 def interference_ratio(temperature, reference_temperature, hoop_prestrain, rubber_expansion,
-                       shaft_expansion=STEEL_EXPANSION):
-    """Lip interference at temperature relative to the reference temperature, Eq. (2).
+                       shaft_expansion=STEEL_EXPANSION, glassy_expansion=None,
+                       glass_transition=None):
+    """Lip interference at temperature relative to the reference temperature, Eq. (3).
 
     Parameters
     ----------
@@ -95,9 +106,13 @@ def interference_ratio(temperature, reference_temperature, hoop_prestrain, rubbe
     hoop_prestrain : float
         Hoop pre-strain of the mounted lip ring at T_ref, ε₀ = δ/R [-], > 0.
     rubber_expansion : float
-        Linear thermal expansion of the lip rubber α_rubber [1/K].
+        Linear thermal expansion of the lip rubber above T_g, α_rubber [1/K].
     shaft_expansion : float
         Linear thermal expansion of the shaft α_shaft [1/K].
+    glassy_expansion : float, optional
+        α of the glassy rubber [1/K], used below ``glass_transition`` (default: α_rubber).
+    glass_transition : float, optional
+        T_g [K] where the structure freezes on cooling (default: never).
 
     Returns
     -------
@@ -109,13 +124,52 @@ def interference_ratio(temperature, reference_temperature, hoop_prestrain, rubbe
     >>> round(float(interference_ratio(373.15, 293.15, 0.08, 1.9e-4)), 3)
     0.822
     """
-    loss = (rubber_expansion - shaft_expansion) * (
-        np.asarray(temperature, dtype=float) - reference_temperature) / hoop_prestrain
+    t = np.asarray(temperature, dtype=float)
+    fictive = None if glass_transition is None else np.maximum(t, glass_transition)
+    strain = np.asarray(thermal_strain(t, reference_temperature, rubber_expansion,
+                                       glassy_expansion, fictive), dtype=float)
+    loss = (strain - shaft_expansion * (t - reference_temperature)) / hoop_prestrain
     return np.maximum(1.0 - loss, 0.0)
 
 
+def lip_stress_ratio(interference, mounted_interference, mounted_modulus, modulus,
+                     reference_modulus):
+    """Stress of the lip ring relative to the reference state, σ(T)/σ_ref of Eq. (1)-(2).
+
+    Parameters
+    ----------
+    interference : array_like
+        ε(T)/ε(T_ref) at the lip temperature [-].
+    mounted_interference : array_like
+        ε(T_m)/ε(T_ref) at the mounting temperature [-].
+    mounted_modulus : array_like
+        E_m(T): modulus of the stress installed at T_m, brought to T [Pa].
+    modulus : array_like
+        E_h(T): held modulus at T, which the increment since mounting meets [Pa].
+    reference_modulus : float
+        E_h(T_ref) [Pa].
+
+    Returns
+    -------
+    numpy.ndarray
+        σ(T)/σ_ref [-], ≥ 0 (a ring that would pull off the shaft carries nothing).
+
+    Examples
+    --------
+    Mounted at T_ref and cooled: the mounting stress stays (3.57 of 4.09 MPa), the 8.9 %
+    extra interference meets the cold 16.5 MPa:
+
+    >>> round(float(lip_stress_ratio(1.089, 1.0, 3.57e6, 16.5e6, 4.09e6)), 3)
+    1.232
+    """
+    stress = np.asarray(mounted_modulus, dtype=float) * mounted_interference + np.asarray(
+        modulus, dtype=float) * (np.asarray(interference, dtype=float) - mounted_interference)
+    return np.maximum(stress / reference_modulus, 0.0)
+
+
 def lip_force(reference_force, spring_share, modulus_ratio, interference=1.0):
-    """Radial lip force at temperature, Eq. (1).
+    """Radial lip force at temperature, Eq. (2), for a stress ratio σ/σ_ref = modulus_ratio ×
+    interference (a lip at its mounting temperature).
 
     Parameters
     ----------
@@ -124,7 +178,7 @@ def lip_force(reference_force, spring_share, modulus_ratio, interference=1.0):
     spring_share : array_like
         Share of the garter spring in F_ref [-], 0...1.
     modulus_ratio : array_like
-        E(T)/E(T_ref) of the lip elastomer at the quasi-static frequency [-].
+        E(T)/E(T_ref) of the lip elastomer [-] (or the whole stress ratio σ/σ_ref).
     interference : array_like
         δ(T)/δ(T_ref), :func:`interference_ratio` [-].
 
@@ -145,7 +199,8 @@ def lip_force(reference_force, spring_share, modulus_ratio, interference=1.0):
 
 @dataclass(frozen=True)
 class AnalyticLipForce:
-    """F_tip(T) from the spring share, the rubber's modulus and its thermal expansion, Eq. (1)-(2).
+    """F_tip(T) from the spring share, the rubber's held modulus, its thermal expansion and the
+    mounting temperature, Eq. (1)-(3).
 
     A lip-force source is any callable ``force(temperature [K]) -> F_tip [N]``; this is the
     analytic one.
@@ -153,24 +208,32 @@ class AnalyticLipForce:
     Parameters
     ----------
     reference_force : float
-        F_ref [N] at ``reference_temperature``.
+        F_ref [N] at ``reference_temperature`` of a lip mounted there.
     reference_temperature : float
         T_ref [K].
     spring_share : float
         Share of the garter spring in F_ref [-].
     elastomer : Elastomer
-        Lip rubber: quasi-static modulus and thermal expansion.
+        Lip rubber: held modulus, thermal expansion (rubbery and glassy), T_g.
     hoop_prestrain : float
-        ε₀ of Eq. (2) [-].
+        ε₀ of Eq. (3) [-].
     shaft_expansion : float
         α of the shaft [1/K].
+    mounting_temperature : float, optional
+        T_m [K] at which the lip was mounted and relaxed; default ``reference_temperature``.
 
     Examples
     --------
     >>> from sealsim.properties.elastomers import get_elastomer
     >>> force = AnalyticLipForce(37.7, 293.15, 0.45, get_elastomer("NBR"), 0.08, 12e-6)
     >>> round(float(force(293.15)), 2), round(float(force(373.15)), 1)
-    (37.7, 30.6)
+    (37.7, 33.5)
+
+    Cooled to −20 °C after mounting at 20 °C, against a lip mounted at −20 °C:
+
+    >>> cold = AnalyticLipForce(37.7, 293.15, 0.45, get_elastomer("NBR"), 0.08, 12e-6, 253.15)
+    >>> round(float(force(253.15)), 1), round(float(cold(253.15)), 1)
+    (42.5, 107.9)
     """
 
     reference_force: float
@@ -179,15 +242,74 @@ class AnalyticLipForce:
     elastomer: Elastomer
     hoop_prestrain: float = DEFAULT_HOOP_PRESTRAIN
     shaft_expansion: float = STEEL_EXPANSION
+    mounting_temperature: float | None = None
+
+    @property
+    def mounted_at(self) -> float:
+        """T_m [K]."""
+        return (self.reference_temperature if self.mounting_temperature is None
+                else self.mounting_temperature)
+
+    def interference(self, temperature):
+        """ε(T)/ε(T_ref), Eq. (3)."""
+        e = self.elastomer
+        return interference_ratio(temperature, self.reference_temperature, self.hoop_prestrain,
+                                  e.thermal_expansion, self.shaft_expansion,
+                                  e.glassy_expansion, e.glass_transition)
+
+    def stress_ratio(self, temperature):
+        """σ(T)/σ_ref of Eq. (1)-(2)."""
+        e = self.elastomer
+        t = np.asarray(temperature, dtype=float)
+        reference = float(e.held_modulus(self.reference_temperature))
+        # lip force on the reference lip of the case (mounted at T_ref): mounted_interference 1
+        # when T_m = T_ref; the held stress at T_m otherwise
+        return lip_stress_ratio(self.interference(t), self.interference(self.mounted_at),
+                                e.held_modulus(t, mounting_temperature=self.mounted_at),
+                                e.held_modulus(t), reference)
 
     def __call__(self, temperature):
-        e = self.elastomer
-        modulus_ratio = np.asarray(e.modulus(temperature, LIP_FORCE_FREQUENCY)) / float(
-            e.modulus(self.reference_temperature, LIP_FORCE_FREQUENCY))
-        interference = interference_ratio(temperature, self.reference_temperature,
-                                          self.hoop_prestrain, e.thermal_expansion,
-                                          self.shaft_expansion)
-        return lip_force(self.reference_force, self.spring_share, modulus_ratio, interference)
+        return lip_force(self.reference_force, self.spring_share, self.stress_ratio(temperature))
+
+
+def lip_mounting_note(lowest_temperature: float, mounting_temperature: float,
+                      history: bool = True) -> str:
+    """Which case the lip force of a run is, when the lip ran colder than it was mounted.
+
+    Parameters
+    ----------
+    lowest_temperature : float
+        Lowest lip (contact) temperature of the run [K].
+    mounting_temperature : float
+        T_m [K].
+    history : bool
+        True: the lip force follows the mounting path (analytic Eq. 1, or the viscoelastic FE
+        load path); False: it is that of a lip mounted at each temperature (the hyperelastic FE
+        of a rubber without a Prony series), an upper bound below T_m.
+
+    Returns
+    -------
+    str
+        The note, or "" when the lip never ran more than 1 K below T_m.
+
+    Examples
+    --------
+    >>> lip_mounting_note(300.0, 293.15)
+    ''
+    >>> lip_mounting_note(253.15, 293.15)[:47]
+    'lip mounted at 20 degC and cooled to -20 degC: '
+    """
+    if lowest_temperature >= mounting_temperature - 1.0:
+        return ""
+    head = (f"lip mounted at {mounting_temperature - 273.15:.0f} degC and cooled to "
+            f"{lowest_temperature - 273.15:.0f} degC: ")
+    if history:
+        return head + ("its stress relaxed at the mounting temperature and only the thermal "
+                       "contraction since meets the stiffer cold rubber (lip force of the "
+                       "mounting path, rotary/lip.py Eq. 1)")
+    return head + ("the FE lip force below the mounting temperature is that of a lip mounted "
+                   "cold (this rubber has no Prony series for the mounting path), an upper "
+                   "bound")
 
 
 def default_radial_force(shaft_diameter):

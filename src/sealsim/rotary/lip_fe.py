@@ -4,21 +4,28 @@ With ``[lip] force = "fe"`` a rotary case takes the lip force F_tip(T) and the c
 b(T) (unless ``contact_width = "constant"``) from an FE model of its seal
 (:func:`sealsim.structure.profiles.radial_lip_profile`, the garter spring as a ring spring,
 the metal case rigid in the steel housing) instead of the
-constant 0.15 N/mm and 0.25 mm with Eq. (1) of :mod:`sealsim.rotary.lip`. One FE load path
-installs the lip at the installation temperature and then moves through the temperature
-grid; at every temperature
+constant 0.15 N/mm and 0.25 mm with Eq. (1) of :mod:`sealsim.rotary.lip`. The FE load paths
+install the lip at its mounting temperature T_m (``seal.mounting_temperature``), hold it for
+:data:`~sealsim.properties.elastomers.HELD_SEAL_TIME` and then move through the temperature
+grid at 1 K/min -- down from T_m through the grid temperatures below it, and (a second path)
+up through those above:
 
-* the rubber's Mooney–Rivlin constants follow the catalogue E(T) at the quasi-static
-  frequency :data:`~sealsim.rotary.lip.LIP_FORCE_FREQUENCY` (the relaxed modulus, the same
-  the constant model scales its rubber share with),
-* the rubber expands thermally (its free volume), the shaft and the housing with steel,
-* the garter spring's tension follows the lip radius (its steel rate does not change).
+* a rubber with a Prony series (the catalogue NBR) is the thermo-viscoelastic FE material
+  (Prony + WLF/Arrhenius shift, glassy expansion through the fictive temperature,
+  :class:`~sealsim.structure.material.ViscoelasticSealMaterial`): its stress relaxes at T_m,
+  the contraction on cooling meets the stiffer cold rubber, the structure freezes near T_g --
+  the lip mounted warm and cooled, by the FE itself;
+* another rubber is hyperelastic with the held modulus of sealsim's convention
+  (``temperature_scaling = "held"``), so its force at each temperature is that of a lip mounted
+  there: below T_m an upper bound, and the run's notes say so;
+* the rubber expands thermally (its free volume), the shaft and the housing with steel, and the
+  garter spring's tension follows the lip radius (its steel rate does not change).
 
 So the lip force falls where the rubber softens and the interference shrinks, and stays up
 through the spring share -- the temperature dependence comes out of the FE instead of
-Eq. (1). Between grid temperatures F_tip and b are interpolated monotonically (PCHIP), outside
+Eq. (2). Between grid temperatures F_tip and b are interpolated monotonically (PCHIP), outside
 the grid they are held at the end values. The table is cached under ``$SEALSIM_CACHE/lip_fe``
-keyed by the resolved structure case, like the FE maps of the pneumatic model.
+keyed by the resolved structure cases, like the FE maps of the pneumatic model.
 """
 
 from __future__ import annotations
@@ -35,8 +42,8 @@ from pydantic import Field, field_validator, model_validator
 
 from sealsim.cases import CaseModel, Q
 
-__all__ = ["COLD_LIP_MARGIN", "LipForceTable", "LipSpec", "cold_lip_note",
-           "lip_force_table", "lip_structure_case"]
+__all__ = ["LipForceTable", "LipSpec", "lip_force_table", "lip_load_paths",
+           "lip_structure_case"]
 
 from sealsim.units import ZERO_CELSIUS_K as CELSIUS_0
 Temperature = Q("temperature", gt=200.0, lt=500.0)
@@ -83,9 +90,12 @@ class LipSpec(CaseModel):
         return v
 
 
-def lip_structure_case(seal, lip: LipSpec, installation_temperature: float = 293.15):
+def lip_structure_case(seal, lip: LipSpec, installation_temperature: float = 293.15,
+                       temperatures=None, viscoelastic: bool = False):
     """The structure case (:class:`~sealsim.structure.case.StructureCase`) of a rotary case's
-    seal: DIN 3760 radial lip on its shaft, the lip table's temperatures as the load path.
+    seal: DIN 3760 radial lip on its shaft, mounted at ``installation_temperature``, held for
+    :data:`~sealsim.properties.elastomers.HELD_SEAL_TIME`, then ``temperatures`` (default the
+    lip table's) in the order given at 1 K/min.
 
     Parameters
     ----------
@@ -94,13 +104,18 @@ def lip_structure_case(seal, lip: LipSpec, installation_temperature: float = 293
     lip : LipSpec
         FE settings.
     installation_temperature : float
-        Temperature at which the seal is installed and its geometry holds [K].
+        Temperature at which the seal is mounted and its geometry holds [K].
+    temperatures : list of float, optional
+        The load path's temperatures [K].
+    viscoelastic : bool
+        Thermo-viscoelastic material (Prony/WLF) instead of the hyperelastic held modulus.
     """
     from sealsim.cases import validate_case
-    from sealsim.rotary.lip import LIP_FORCE_FREQUENCY
+    from sealsim.properties.elastomers import HELD_SEAL_TIME
     from sealsim.structure.case import StructureCase
 
-    temps = [installation_temperature, *lip.temperatures]
+    temperatures = list(lip.temperatures if temperatures is None else temperatures)
+    temps = [installation_temperature, *temperatures]
     # about 10 K per increment (the lip head slides on its face: larger ones need cutbacks)
     increments = max(2, math.ceil(max(abs(b - a) for a, b in zip(temps, temps[1:])) / 10.0))
     section = {"type": "radial_lip", "outer_diameter": seal.outer_diameter,
@@ -108,20 +123,40 @@ def lip_structure_case(seal, lip: LipSpec, installation_temperature: float = 293
     for key in ("interference", "flex_thickness", "spring_rate", "spring_tension"):
         if getattr(lip, key) is not None:
             section[key] = getattr(lip, key)
+    material = ({"elastomer": seal.material, "model": "viscoelastic"} if viscoelastic else
+                {"elastomer": seal.material, "temperature_scaling": "held"})
+    installation_time = 60.0
     data = {
         "title": f"DIN 3760 lip seal {seal.shaft_diameter * 1e3:g} x "
                  f"{seal.outer_diameter * 1e3:g} x {seal.width * 1e3:g}, {seal.material}",
         "seal": section,
         "gland": {"arrangement": "shaft", "sealing_diameter": seal.shaft_diameter},
-        "material": {"elastomer": seal.material, "temperature_scaling": "modulus",
-                     "modulus_frequency": LIP_FORCE_FREQUENCY},
+        "material": material,
         "mesh": {"level": lip.mesh},
         "load": {"installation_temperature": installation_temperature,
-                 "squeeze_increments": 8, "temperature": list(lip.temperatures),
-                 "temperature_increments": increments},
+                 "squeeze_increments": 8, "installation_time": installation_time,
+                 "hold_time": HELD_SEAL_TIME - installation_time if viscoelastic else 0.0,
+                 "temperature": temperatures, "temperature_increments": increments,
+                 "temperature_rate": 1.0 / 60.0},
     }
     return validate_case(StructureCase, data, "the FE lip model of the rotary case",
                          require_units=False)
+
+
+def lip_load_paths(seal, lip: LipSpec, mounting_temperature: float):
+    """The FE load paths of a lip table: (structure case, its temperatures) per path -- down
+    from the mounting temperature through the grid temperatures below it, up through the
+    others; thermo-viscoelastic when the rubber has a Prony series, else hyperelastic with the
+    held modulus (one path in grid order: its forces do not depend on the path)."""
+    from sealsim.properties.elastomers import get_elastomer
+
+    grid = list(lip.temperatures)
+    if get_elastomer(seal.material).prony is None:
+        return [(lip_structure_case(seal, lip, mounting_temperature, grid), grid)]
+    down = sorted((t for t in grid if t < mounting_temperature), reverse=True)
+    up = sorted(t for t in grid if t >= mounting_temperature)
+    return [(lip_structure_case(seal, lip, mounting_temperature, temps, viscoelastic=True),
+             temps) for temps in (down, up) if temps]
 
 
 @dataclass(frozen=True)
@@ -196,47 +231,6 @@ def _cache_dir() -> Path:
     return (Path(xdg) if xdg else Path.home() / ".cache") / "sealsim" / "lip_fe"
 
 
-#: Distance above T_g [K] below which the FE lip force is a mounted-cold upper bound: the
-#: rubber's modulus at the lip-force frequency climbs out of its rubbery plateau there (NBR of
-#: the catalogue: 1.6x its 20 °C value at 0 °C, T_g + 25 K; 11x at -20 °C).
-COLD_LIP_MARGIN = 30.0
-
-
-def cold_lip_note(lowest_temperature: float, glass_transition: float) -> str:
-    """A note for a run whose FE lip force was used within :data:`COLD_LIP_MARGIN` of T_g.
-
-    The FE table scales the whole stress of the installed lip with the rubber's modulus at
-    the lip temperature, i.e. it gives the force of a lip *mounted* at that temperature; a lip
-    mounted warm and then cooled keeps the stress it relaxed to and only its extra
-    interference meets the stiffer rubber, so near T_g the table is an upper bound.
-
-    Parameters
-    ----------
-    lowest_temperature : float
-        Lowest lip (contact) temperature of the run [K].
-    glass_transition : float
-        T_g of the lip's elastomer [K].
-
-    Returns
-    -------
-    str
-        The note, or "" when the run stayed above T_g + COLD_LIP_MARGIN.
-
-    Examples
-    --------
-    >>> cold_lip_note(293.15, 248.15)
-    ''
-    >>> cold_lip_note(263.15, 248.15)[:40]
-    'the lip was at -10 degC, within 30 K of '
-    """
-    if lowest_temperature >= glass_transition + COLD_LIP_MARGIN:
-        return ""
-    return (f"the lip was at {lowest_temperature - CELSIUS_0:.0f} degC, within "
-            f"{COLD_LIP_MARGIN:.0f} K of the rubber's T_g ({glass_transition - CELSIUS_0:.0f} "
-            "degC): the FE lip force there is that of a lip mounted at that temperature, an "
-            "upper bound for a lip mounted warm and then cooled")
-
-
 def lip_force_table(seal, lip: LipSpec, installation_temperature: float = 293.15, *,
                     cache: bool = True) -> LipForceTable:
     """Run (or read from the cache) the FE lip force table of a rotary case's seal.
@@ -248,7 +242,7 @@ def lip_force_table(seal, lip: LipSpec, installation_temperature: float = 293.15
     lip : LipSpec
         FE settings (temperature grid, mesh, optional geometry and spring overrides).
     installation_temperature : float
-        Installation temperature [K].
+        Mounting temperature T_m [K] (``seal.mounting_temperature``).
     cache : bool
         Read and write the cache (``$SEALSIM_CACHE/lip_fe``).
 
@@ -261,28 +255,34 @@ def lip_force_table(seal, lip: LipSpec, installation_temperature: float = 293.15
     from sealsim.cases import dump_case_toml
     from sealsim.files import atomic_write_bytes
 
-    case = lip_structure_case(seal, lip, installation_temperature)
-    text = dump_case_toml(case, header="FE lip model of a rotary case")
+    paths = lip_load_paths(seal, lip, installation_temperature)
+    text = "\n".join(dump_case_toml(case, header="FE lip model of a rotary case")
+                     for case, _ in paths)
     from sealsim.structure.fingerprint import model_fingerprint
 
     # the FE model's fingerprint too: a changed FE model must not read an old table
-    digest = hashlib.sha256((text + model_fingerprint()).encode("utf-8")).hexdigest()[:16]
+    from sealsim.properties.elastomers import compound_file_digest
+
+    # and the content of a compound file the seal is made of, not only its path (every load
+    # path is made of the seal's one material)
+    digest = hashlib.sha256((text + model_fingerprint()
+                             + compound_file_digest(paths[0][0].material.elastomer))
+                            .encode("utf-8")).hexdigest()[:16]
     target = _cache_dir() / f"lip-{digest}.csv"
     if cache and target.is_file():
         frame = pd.read_csv(target)
     else:
         from sealsim.structure.run import run_case
 
-        states = run_case(case).states
-        # the first state is the installation at the installation temperature; the others
-        # are the grid temperatures in order
-        grid = states[1:]
-        frame = pd.DataFrame({
-            "temperature_K": [s.temperature for s in grid],
-            "force_N": [s.F_N for s in grid],
-            "contact_width_m": [s.b for s in grid],
-            "spring_force_N": [s.spring_force for s in grid],
-            "p_max_Pa": [s.p_max for s in grid]})
+        rows = []
+        for case, temps in paths:
+            # the last states are the grid temperatures in the path's order (installation and
+            # hold come first)
+            for state in run_case(case).states[-len(temps):]:
+                rows.append({"temperature_K": state.temperature, "force_N": state.F_N,
+                             "contact_width_m": state.b, "spring_force_N": state.spring_force,
+                             "p_max_Pa": state.p_max})
+        frame = pd.DataFrame(rows).sort_values("temperature_K", ignore_index=True)
         if cache:
             target.parent.mkdir(parents=True, exist_ok=True)
             atomic_write_bytes(target, frame.to_csv(index=False).encode("utf-8"))

@@ -36,7 +36,13 @@ from sealsim.properties.elastomers import ServiceRangeWarning, get_elastomer
 from sealsim.properties.oils import OilRangeWarning
 from sealsim.rotary.case import RotaryCase, start_temperature
 from sealsim.rotary.friction import FrictionState, LipSealFriction, LipSealFrictionParameters
-from sealsim.rotary.lip import LIP_STYLES, AnalyticLipForce, LipStyle, wave_lip_style
+from sealsim.rotary.lip import (
+    LIP_STYLES,
+    AnalyticLipForce,
+    LipStyle,
+    lip_mounting_note,
+    wave_lip_style,
+)
 from sealsim.rotary.thermal_model import SealSection, build_thermal_grid
 from sealsim.thermal.conduction import (
     BackwardEulerStepper,
@@ -52,6 +58,7 @@ from sealsim.thermal.convection import (
     rotating_cylinder_coefficient,
 )
 from sealsim.tribology.film import FilmRangeWarning, film_range_note
+from sealsim.tribology.rolling_bearing import palmgren_viscous_moment, series_62_bearing
 from sealsim.tribology.rubber_friction import (
     GroschMasterCurve,
     hysteresis_peak_speed,
@@ -60,7 +67,7 @@ from sealsim.tribology.rubber_friction import (
 from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["RotaryModel", "RotaryResult", "friction_map", "housing_defaults", "lip_seal_friction",
-           "lip_style", "load_rotary_case", "simulate", "steady_state"]
+           "lip_style", "load_rotary_case", "operating_notes", "simulate", "steady_state"]
 
 STEEL_DENSITY, STEEL_SPECIFIC_HEAT = 7850.0, 460.0
 #: Oil volumetric expansion coefficient for free convection [1/K] (mineral oil ≈ 7e-4).
@@ -127,6 +134,41 @@ def lip_style(case: RotaryCase) -> LipStyle:
                           w.lip_heat_exchange_factor)
 
 
+def bearing_geometry(case: RotaryCase) -> tuple[float, float]:
+    """Pitch diameter and width [m] of the bearing beside the seal: as given, else the 62xx
+    deep-groove ball bearing of the shaft's bore (:func:`series_62_bearing`)."""
+    bearing = case.environment.bearing
+    pitch, width = series_62_bearing(case.seal.shaft_diameter)
+    return (bearing.pitch_diameter or pitch, bearing.width or width)
+
+
+def bearing_span(case: RotaryCase) -> tuple[float, float] | None:
+    """Axial extent (z_far, z_near) [m] of the bearing's inner ring on the oil-side shaft
+    (z = 0 at the contact, oil side negative), or None without a bearing."""
+    bearing = case.environment.bearing
+    if bearing.model == "none":
+        return None
+    seal = case.seal
+    oil_face = SealSection(seal.shaft_diameter, seal.outer_diameter, seal.width,
+                           seal.contact_width).oil_face
+    near = oil_face - bearing.gap
+    return near - bearing_geometry(case)[1], near
+
+
+def bearing_heat(case: RotaryCase, oil, angular_speed, sump_temperature):
+    """Friction heat [W] of the bearing beside the seal at the shaft speed ω [rad/s] and the
+    sump temperature [K]: Palmgren's viscous moment × |ω| (``bearing.model = "palmgren"``),
+    the given power while the shaft turns (``"power"``), or 0."""
+    bearing = case.environment.bearing
+    if bearing.model == "none" or angular_speed == 0:
+        return 0.0
+    if bearing.model == "power":
+        return float(bearing.power)
+    moment = palmgren_viscous_moment(oil.kinematic_viscosity(sump_temperature), angular_speed,
+                                     bearing_geometry(case)[0], bearing.f0)
+    return float(moment) * abs(angular_speed)
+
+
 def lip_force_source(case: RotaryCase):
     """The lip force F_tip(T) of a case: a callable of the lip temperature [K] -> [N].
 
@@ -137,10 +179,17 @@ def lip_force_source(case: RotaryCase):
     if case.lip.force == "fe":
         from sealsim.rotary.lip_fe import lip_force_table
 
-        return lip_force_table(seal, case.lip, seal.radial_force_temperature).force_at
+        return lip_force_table(seal, case.lip, seal.mounting_temperature).force_at
     return AnalyticLipForce(seal.radial_force, seal.radial_force_temperature, seal.spring_share,
                             get_elastomer(seal.material), seal.hoop_prestrain,
-                            case.environment.shaft_expansion)
+                            case.environment.shaft_expansion, seal.mounting_temperature)
+
+
+def lip_note(case: RotaryCase, lowest_temperature: float) -> str:
+    """The run's note on the lip's mounting path (:func:`~sealsim.rotary.lip.lip_mounting_note`)
+    for its lowest contact temperature [K]."""
+    history = case.lip.force != "fe" or get_elastomer(case.seal.material).prony is not None
+    return lip_mounting_note(lowest_temperature, case.seal.mounting_temperature, history)
 
 
 def contact_width_source(case: RotaryCase):
@@ -151,7 +200,7 @@ def contact_width_source(case: RotaryCase):
     from sealsim.rotary.lip_fe import lip_force_table
 
     seal = case.seal
-    return lip_force_table(seal, case.lip, seal.radial_force_temperature).contact_width_at
+    return lip_force_table(seal, case.lip, seal.mounting_temperature).contact_width_at
 
 
 def lip_seal_friction(case: RotaryCase) -> LipSealFriction:
@@ -191,10 +240,20 @@ class RotaryModel:
         rubber = Solid(self.elastomer.name, self.elastomer.thermal_conductivity,
                        self.elastomer.density, self.elastomer.specific_heat)
         case_steel = Solid("case", 45.0, STEEL_DENSITY, STEEL_SPECIFIC_HEAT)
+        band = seal.contact_width + 2 * self.style.track_amplitude
+        self.bearing_span = bearing_span(c)
+        length_oil = env.shaft_length_oil_side
+        if length_oil is None:  # through the bearing and a quarter diameter beyond it
+            length_oil = (-self.bearing_span[0] if self.bearing_span else 0.0) + \
+                seal.shaft_diameter / 4.0
+        if self.bearing_span is not None and -self.bearing_span[0] >= length_oil:
+            raise InputError(f"environment.shaft_length_oil_side "
+                             f"{length_oil * 1e3:g} mm ends before the bearing beside the seal "
+                             f"(it reaches {-self.bearing_span[0] * 1e3:.1f} mm from the "
+                             f"contact): model a longer shaft or set bearing.model = 'none'")
         self.section = SealSection(
-            seal.shaft_diameter, seal.outer_diameter, seal.width,
-            seal.contact_width + 2 * self.style.track_amplitude,
-            env.shaft_length_oil_side, env.shaft_length_air_side, seal.spring_offset)
+            seal.shaft_diameter, seal.outer_diameter, seal.width, band, length_oil,
+            env.shaft_length_air_side, seal.spring_offset, self.bearing_span)
         self.grid = build_thermal_grid(self.section, shaft, rubber, case_steel,
                                        c.numerics.mesh_refinement)
         self.start_temperature = start_temperature(env)
@@ -225,25 +284,29 @@ class RotaryModel:
         self.network = ThermalNetwork(self.grid.conduction, lumped, fixed,
                                       {g: (faces, nodes[g]) for g, faces in
                                        self.grid.face_groups.items()})
+        faces = self.grid.face_groups["shaft_oil"]
+        self.shaft_oil_z = self.grid.conduction.boundary.z[faces]
         self.links = [
             Link("sump", "housing", env.oil_housing_heat_transfer * wetted),
             Link("housing", "ambient", env.housing_heat_transfer * housing_area),
         ]
 
     # -- convection ------------------------------------------------------------------------
-    def coefficients(self, angular_speed: float, sump_temperature: float) -> dict[str, float]:
-        """Heat transfer coefficients [W/(m² K)] of every face group.
+    def coefficients(self, angular_speed: float, sump_temperature: float) -> dict:
+        """Heat transfer coefficients [W/(m² K)] of every face group (scalar or per face).
 
-        Shaft in oil, on the wetted fraction of the circumference: Taylor–Couette flow in the
-        annulus between shaft and housing bore (``environment.shaft_oil_convection =
-        "annulus"``, gap ``oil_gap``) or a cylinder in a quiescent bath (``"open"``, Kays &
-        Bjorklund), oil at the sump temperature; on the rest gearbox air at sump temperature;
-        shaft in air: rotating cylinder (Kays & Bjorklund) in ambient air; all never below free
-        convection (Churchill & Chu, ΔT = 10 K).  Shaft ends (``environment.shaft_oil_end`` /
-        ``shaft_air_end``): held at the sump or housing temperature (:data:`END_CONTACT`), a
-        semi-infinite fin √(4·h·k/d) in oil or air, or insulated.  Seal surfaces: a fraction of
-        the shaft's coefficient (``[thermal]``), the lip's oil side times the lip style's heat
-        exchange factor.
+        Shaft in oil, on the wetted fraction of the circumference: between the seal and the
+        bearing, Taylor–Couette flow in the annulus between shaft and housing bore
+        (``environment.shaft_oil_convection = "annulus"``, gap ``oil_gap``) or a cylinder in a
+        quiescent bath (``"open"``, Kays & Bjorklund); from the bearing on, in the gear case,
+        always the open bath; oil at the sump temperature; on the rest of the circumference
+        gearbox air at sump temperature.  Shaft in air: rotating cylinder (Kays & Bjorklund) in
+        ambient air; all never below free convection (Churchill & Chu, ΔT = 10 K).  Shaft ends
+        (``environment.shaft_oil_end`` / ``shaft_air_end``): held at the sump or housing
+        temperature (:data:`END_CONTACT`), a semi-infinite rotating fin √(4·h·k/d) (in the
+        sump: the open-bath coefficient; in air: ambient), or insulated.  Seal surfaces: a
+        fraction of the shaft's coefficient (``[thermal]``), the lip's oil side times the lip
+        style's heat exchange factor.
         """
         env, th = self.case.environment, self.case.thermal
         d = self.case.seal.shaft_diameter
@@ -253,14 +316,15 @@ class RotaryModel:
         k_o = float(self.oil.thermal_conductivity(ts))
         rho_c = float(self.oil.density(ts) * self.oil.specific_heat(ts))
         alpha_o = k_o / rho_c
+        free = float(free_convection_horizontal_cylinder(d, FREE_CONVECTION_DELTA_T, nu_o,
+                                                         alpha_o, k_o, OIL_EXPANSION))
+        h_open = max(float(rotating_cylinder_coefficient(omega, d, nu_o, k_o, nu_o / alpha_o)),
+                     free)
         if env.shaft_oil_convection == "annulus":
-            h_forced = rotating_annulus_coefficient(omega, d, self.oil_gap, nu_o, k_o,
-                                                    nu_o / alpha_o)
+            h_near = max(float(rotating_annulus_coefficient(omega, d, self.oil_gap, nu_o, k_o,
+                                                            nu_o / alpha_o)), free)
         else:
-            h_forced = rotating_cylinder_coefficient(omega, d, nu_o, k_o, nu_o / alpha_o)
-        h_oil = max(float(h_forced),
-                    float(free_convection_horizontal_cylinder(d, FREE_CONVECTION_DELTA_T, nu_o,
-                                                              alpha_o, k_o, OIL_EXPANSION)))
+            h_near = h_open
 
         def h_air_at(temperature):
             nu_a, alpha_a, k_a, pr_a = (float(x) for x in air_properties(temperature))
@@ -269,7 +333,13 @@ class RotaryModel:
                            d, FREE_CONVECTION_DELTA_T, nu_a, alpha_a, k_a, 1.0 / temperature)))
 
         phi = env.oil_level_wetting
-        h_shaft_oil = phi * h_oil + (1.0 - phi) * h_air_at(ts)
+        h_gearbox_air = (1.0 - phi) * h_air_at(ts)
+        h_shaft_near = phi * h_near + h_gearbox_air
+        h_shaft_case = phi * h_open + h_gearbox_air
+        h_shaft_oil = h_shaft_near
+        if self.bearing_span is not None:  # in the gear case from the bearing on
+            h_shaft_oil = np.where(self.shaft_oil_z < self.bearing_span[1], h_shaft_case,
+                                   h_shaft_near)
         h_air = h_air_at(env.ambient_temperature)
         k_shaft = env.shaft_conductivity
         ends = {"sump": END_CONTACT, "housing": END_CONTACT, "insulated": 0.0}
@@ -277,10 +347,10 @@ class RotaryModel:
             "shaft_oil": h_shaft_oil,
             "shaft_air": h_air,
             "shaft_end_oil": ends.get(env.shaft_oil_end,
-                                      math.sqrt(4.0 * h_shaft_oil * k_shaft / d)),
+                                      math.sqrt(4.0 * h_shaft_case * k_shaft / d)),
             "shaft_end_air": ends.get(env.shaft_air_end, math.sqrt(4.0 * h_air * k_shaft / d)),
-            "lip_oil": th.seal_oil_factor * h_shaft_oil * self.style.lip_heat_exchange_factor,
-            "seal_oil": th.seal_oil_factor * h_shaft_oil,
+            "lip_oil": th.seal_oil_factor * h_shaft_near * self.style.lip_heat_exchange_factor,
+            "seal_oil": th.seal_oil_factor * h_shaft_near,
             "seal_air": th.seal_air_factor * h_air,
             "seal_housing": th.seal_housing_contact,
             "shaft_pocket": h_air,
@@ -307,6 +377,26 @@ class RotaryModel:
         """Heat source vector: ``power`` [W] spread over the contact band of the shaft."""
         s = np.zeros(self.network.n)
         s[self.grid.contact_cells] = power * self.grid.contact_weights
+        return s
+
+    def bearing_heat(self, angular_speed: float, sump_temperature: float) -> float:
+        """Friction heat of the bearing beside the seal [W] (:func:`bearing_heat`)."""
+        return bearing_heat(self.case, self.oil, angular_speed, sump_temperature)
+
+    def bearing_source(self, angular_speed: float, sump_temperature: float) -> np.ndarray:
+        """Heat source vector of the bearing: its shaft share spread over the shaft under the
+        inner ring, the rest into the housing (a lumped node) or, with a held housing, into
+        the sump node when that is lumped (else it leaves with the held nodes)."""
+        s = np.zeros(self.network.n)
+        heat = self.bearing_heat(angular_speed, sump_temperature)
+        if heat == 0.0:
+            return s
+        share = self.case.environment.bearing.shaft_share
+        s[self.grid.bearing_cells] = heat * share * self.grid.bearing_weights
+        for node in ("housing", "sump"):
+            if node in self.network.node_index:
+                s[self.network.node_index[node]] += heat * (1.0 - share)
+                break
         return s
 
     def contact_temperature(self, temperatures: np.ndarray) -> float:
@@ -395,9 +485,8 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
     t = 0.0
     t_contact = model.contact_temperature(temps)
     dt = num.min_time_step
-    generated = dissipated = 0.0
+    generated = generated_bearing = dissipated = 0.0
     notes: list[str] = []
-    service_max = model.elastomer.service_range[1]
     k_break = 1
     last_report = -1.0
     calm_since, steady = None, False
@@ -424,11 +513,13 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
         power = float(state.power)
         key = (round(math.log1p(abs(omega)) / 0.02), round(t_sump / 2.0))
         before = watched(temps)
-        temps, heat_out = stepper.step(temps, h, model.source(power), fixed, key,
+        bearing = model.bearing_source(omega, t_sump)
+        temps, heat_out = stepper.step(temps, h, model.source(power) + bearing, fixed, key,
                                        lambda o=omega, s=t_sump: model.assemble(o, s))
         if not np.all(np.isfinite(temps)):
             raise ModelError(f"rotary simulation: temperatures became non-finite at t = {t1:.1f} s")
         generated += power * h
+        generated_bearing += float(bearing.sum()) * h
         dissipated += heat_out
         t_contact = model.contact_temperature(temps)
         rows.append(_row(model, state, t1, omega, temps, t_contact))
@@ -461,29 +552,54 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
         columns=TIMESERIES_COLUMNS), frame], ignore_index=True)
 
     stored = float(capacity @ temps - stored0)
-    energy = {"generated": generated, "stored": stored, "dissipated": dissipated,
-              "rel_error": abs(generated - stored - dissipated) / max(abs(generated), 1e-12)}
-    if frame["T_contact_C"].max() > service_max - ZERO_CELSIUS_K:
-        notes.append(f"contact temperature reached {frame['T_contact_C'].max():.0f} degC, above "
-                     f"the service limit of {model.elastomer.name} "
-                     f"({service_max - ZERO_CELSIUS_K:.0f} degC)")
+    heat_in = generated + generated_bearing
+    energy = {"generated": generated, "generated_bearing": generated_bearing, "stored": stored,
+              "dissipated": dissipated,
+              "rel_error": abs(heat_in - stored - dissipated) / max(abs(heat_in), 1e-12)}
     sliding = frame.loc[frame["speed_rpm"] != 0, "film_um"]
-    if len(sliding):
-        film = film_range_note(sliding.min() * 1e-6, sliding.max() * 1e-6)
-        if film:
-            notes.append(film)
-            warnings.warn(film, FilmRangeWarning, stacklevel=2)
-    if model.case.lip.force == "fe":
-        from sealsim.rotary.lip_fe import cold_lip_note
-
-        cold = cold_lip_note(frame["T_contact_C"].min() + ZERO_CELSIUS_K,
-                             model.elastomer.glass_transition)
-        if cold:
-            notes.append(cold)
+    found = operating_notes(case, model.elastomer, frame["T_contact_C"], sliding)
+    notes += found
+    for film in (n for n in found if n.startswith("film ")):
+        warnings.warn(film, FilmRangeWarning, stacklevel=2)
+    mounting = lip_note(model.case, frame["T_contact_C"].min() + ZERO_CELSIUS_K)
+    if mounting:
+        notes.append(mounting)
     result = RotaryResult(case, frame, _step_summary(frame, steps, speeds, times), energy, notes,
                           {"time_steps": len(rows), "factorisations": stepper.factorisations,
                            "thermal_nodes": model.network.n_cells})
     return result
+
+
+def operating_notes(case: RotaryCase, elastomer, contact_temperatures_c, sliding_films_um
+                    ) -> list[str]:
+    """Where a run left the range of its models: a contact above the elastomer's service
+    limit, films outside the measured range of lip seal films
+    (:func:`~sealsim.tribology.film.film_range_note`).  The notes of ``sealsim rotary run`` and
+    of :func:`sealsim.lip_seal_torque` (one set per call, over all its points); the lip's
+    mounting path has its own note (:func:`lip_note`).
+
+    Parameters
+    ----------
+    case : RotaryCase
+    elastomer : Elastomer
+        The lip's elastomer (``RotaryModel.elastomer``).
+    contact_temperatures_c : array_like
+        Contact temperatures of the run [°C].
+    sliding_films_um : array_like
+        Films of the samples with the shaft turning [µm] (may be empty).
+    """
+    contact = np.asarray(contact_temperatures_c, dtype=float)
+    films = np.asarray(sliding_films_um, dtype=float)
+    notes = []
+    service_max = elastomer.service_range[1] - ZERO_CELSIUS_K
+    if contact.max() > service_max:
+        notes.append(f"contact temperature reached {contact.max():.0f} degC, above the service "
+                     f"limit of {elastomer.name} ({service_max:.0f} degC)")
+    if films.size:
+        film = film_range_note(films.min() * 1e-6, films.max() * 1e-6)
+        if film:
+            notes.append(film)
+    return notes
 
 
 def _row(model: RotaryModel, state: FrictionState, t, omega, temps, t_contact) -> tuple:
@@ -528,7 +644,7 @@ def _time_average(t: np.ndarray, y: np.ndarray, lo: float, hi: float) -> float:
 
 
 def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
-                 max_iter: int = 100) -> dict[str, float]:
+                 max_iter: int = 100) -> dict:
     """Steady operating point at constant speed: friction and temperatures in equilibrium.
 
     Solves K(T_sump)·T = F·T_fixed + e·P(ω, T_contact) for the temperatures T (e spreads the
@@ -558,7 +674,9 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
     -------
     dict
         torque_Nm, power_W, T_contact_C, T_groove_C, T_sump_C, T_housing_C, film_um, F_lub_N,
-        F_material_N, lip_force_N, mu_dry, asperity_share, iterations.  A film outside the
+        F_material_N, lip_force_N, mu_dry, asperity_share, bearing_power_W (friction heat of
+        the bearing beside the seal), iterations, lip_note (which mounting case the lip
+        force is when the lip runs colder than it was mounted, else "").  A film outside the
         measured range of lip seal films gives a
         :class:`~sealsim.tribology.film.FilmRangeWarning`.
     """
@@ -598,7 +716,8 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
                 lu, factorised_at = factorise(k), temps[sump]
                 unit_response = lu.solve(unit_source)
                 unit_contact = model.contact_temperature(unit_response)
-        step = lu.solve(f @ fixed + unit_source * power - k @ temps)
+        bearing = model.bearing_source(angular_speed, model.sump_temperature(temps))
+        step = lu.solve(f @ fixed + unit_source * power + bearing - k @ temps)
         denominator = 1.0 - slope * unit_contact
         if denominator > 0.1:  # else the friction heats faster than the network cools: no help
             step += unit_response * (slope * model.contact_temperature(step) / denominator)
@@ -626,7 +745,9 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
             "T_housing_C": model.housing_temperature(temps) - ZERO_CELSIUS_K, "film_um": film * 1e6,
             "F_lub_N": float(state.force_lubricant), "F_material_N": float(state.force_material),
             "lip_force_N": float(state.lip_force), "mu_dry": float(state.mu_dry),
-            "asperity_share": float(state.asperity_share), "iterations": iteration}
+            "asperity_share": float(state.asperity_share),
+            "bearing_power_W": model.bearing_heat(angular_speed, model.sump_temperature(temps)),
+            "iterations": iteration, "lip_note": lip_note(case, t_contact)}
 
 
 def friction_map(case: RotaryCase, speeds_rpm, temperatures_c) -> pd.DataFrame:

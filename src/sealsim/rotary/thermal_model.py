@@ -62,6 +62,9 @@ class SealSection:
         Modelled shaft length on each side of the contact [m].
     spring_offset : float
         Axial position of the garter spring plane ("R value", air side positive).
+    bearing_span : tuple of float, optional
+        Axial extent (z_far, z_near) of the bearing's inner ring on the oil-side shaft [m]
+        (negative z); its cells receive the bearing's heat.
     """
 
     shaft_diameter: float
@@ -71,6 +74,7 @@ class SealSection:
     shaft_length_oil: float = 0.06
     shaft_length_air: float = 0.08
     spring_offset: float = 0.5e-3
+    bearing_span: tuple[float, float] | None = None
 
     @property
     def radius(self) -> float:
@@ -127,6 +131,8 @@ class LipSealThermalGrid:
     groove_cell: int
     pocket_volume: float
     pocket_opening_area: float
+    bearing_cells: np.ndarray
+    bearing_weights: np.ndarray
 
 
 def _tan(deg: float) -> float:
@@ -180,6 +186,8 @@ def build_thermal_grid(section: SealSection, shaft: Solid, rubber: Solid, case: 
                 (band / 2, fine_contact), (s.lip_air_limit - s.flex_thickness, feature),
                 (s.lip_air_limit, feature), (z_case_leg, feature), (s.air_face, feature),
                 (s.shaft_length_air, coarse), (s.oil_face + 0.05 * s.width, feature)}
+    if s.bearing_span is not None:
+        z_points |= {(z, feature) for z in s.bearing_span}
     z_points = sorted(z_points)
     z_edges = graded_edges([p for p, _ in z_points], [f for _, f in z_points], growth, coarse)
 
@@ -245,9 +253,15 @@ def build_thermal_grid(section: SealSection, shaft: Solid, rubber: Solid, case: 
     in_band = (zc1 > -band / 2) & (zc1 < band / 2)
     contact_cells = conduction.index[i_surface, in_band]
     weights = np.diff(z_edges)[in_band]
+    bearing_cells, bearing_weights = np.zeros(0, dtype=int), np.zeros(0)
+    if s.bearing_span is not None:
+        under = (zc1 > s.bearing_span[0]) & (zc1 < s.bearing_span[1])
+        bearing_cells = conduction.index[i_surface, under]
+        bearing_weights = np.diff(z_edges)[under] / np.diff(z_edges)[under].sum()
     groove_cell = conduction.cell_at(*s.groove_probe())
     ring = np.pi * (r_edges[1:] ** 2 - r_edges[:-1] ** 2)
     pocket_volume = float(np.sum(ring[:, None] * np.diff(z_edges)[None, :] * pocket_cells))
     opening = np.pi * (s.body_inner_radius**2 - r_**2)
     return LipSealThermalGrid(s, conduction, face_groups, contact_cells,
-                              weights / weights.sum(), groove_cell, pocket_volume, opening)
+                              weights / weights.sum(), groove_cell, pocket_volume, opening,
+                              bearing_cells, bearing_weights)

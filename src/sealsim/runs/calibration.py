@@ -42,7 +42,7 @@ from pathlib import Path
 import pandas as pd
 import tomli_w
 
-from sealsim.calibration.pneumatic_compare import compare_pneumatic_file
+from sealsim.calibration.pneumatic_compare import compare_inputs, compare_pneumatic_file
 from sealsim.calibration.rotary_study import load_rotary_fit_case, rotary_fit_study
 from sealsim.calibration.study import friction_fit_study, load_fit_case
 from sealsim.cases import dump_case_toml
@@ -86,13 +86,13 @@ def run_friction_fit_file(path: str | Path, out: str | Path, force: bool = False
         at a bound or the optimiser stopped (results are still written, with the reasons).
     """
     path = Path(path)
-    folder = ResultFolder(out, force)           # refuse an existing folder before computing
     case = load_fit_case(path)
+    folder = ResultFolder(out, force, inputs=fit_case_inputs(case, path))  # before computing
     study = friction_fit_study(case, path.parent, progress, cache_dir)
     result = study.result
-    fitted_text = (f"# Friction parameters fitted by 'sealsim friction fit {path.name}'\n"
-                   f"# on {', '.join(r.name for r in study.runs if r.spec.role == 'fit')}; "
-                   f"status {result.status}.\n"
+    fit_names = ", ".join(r.name for r in study.runs if r.spec.role == "fit")
+    fitted_text = (f"# Friction parameters fitted by 'sealsim friction fit {_comment(path.name)}'"
+                   f"\n# on {_comment(fit_names)}; status {result.status}.\n"
                    "# Use the [friction] table in a friction case, or as friction = {...} of a "
                    "pneumatic seal.\n\n" + tomli_w.dumps(study.fitted))
     title = case.title or path.stem
@@ -101,8 +101,8 @@ def run_friction_fit_file(path: str | Path, out: str | Path, force: bool = False
         folder.write_json("report.json", study.report)
         folder.write_json("fit.json", study.diagnostics)
         folder.write_csv("predictions.csv", study.predictions_frame(), float_format="%.8g")
-        for r in study.runs:
-            folder.savefig(f"overlay_{_slug(r.name)}.png",
+        for r, slug in zip(study.runs, _unique_slugs([r.name for r in study.runs])):
+            folder.savefig(f"overlay_{slug}.png",
                            plot_overlay(r.name, r.spec.role, r.time, r.position, r.friction,
                                         study.predictions[r.name], title))
         points = [(name, m["role"], m["F_measured_N"], m["F_predicted_N"])
@@ -145,8 +145,8 @@ def run_rotary_fit_file(path: str | Path, out: str | Path, force: bool = False,
     study = rotary_fit_study(case, base, progress)
     result, runs, measurements = study.result, study.runs, study.report["measurements"]
     fit_names = ", ".join(r.name for r in runs if r.role == "fit")
-    fitted_text = (f"# Rotary parameters fitted by 'sealsim rotary fit {path.name}' on "
-                   f"{fit_names}; status {result.status}.\n"
+    fitted_text = (f"# Rotary parameters fitted by 'sealsim rotary fit {_comment(path.name)}' "
+                   f"on {_comment(fit_names)}; status {result.status}.\n"
                    "# Merge these tables into a rotary case (or put them under "
                    "[variants.fitted]).\n\n" + tomli_w.dumps(study.overlay))
     title = case.title or path.stem
@@ -209,7 +209,7 @@ def run_pneumatic_compare_file(path: str | Path, out: str | Path, force: bool = 
     dict
         The report written to ``report.json``.
     """
-    folder = ResultFolder(out, force)           # refuse an existing folder before computing
+    folder = ResultFolder(out, force, inputs=compare_inputs(path))  # before computing
     comparison = compare_pneumatic_file(path, progress)
     with folder:
         folder.write_json("report.json", comparison.report)
@@ -219,13 +219,26 @@ def run_pneumatic_compare_file(path: str | Path, out: str | Path, force: bool = 
     return comparison.report
 
 
-def _slug(name: str) -> str:
-    """File-name part of a run name (``cycle A, 0.2 L`` -> ``cycle_A_0.2_L``)."""
-    return re.sub(r"[^A-Za-z0-9_.-]+", "_", name).strip("_") or "run"
+def _comment(text: str) -> str:
+    """Text for a TOML comment line: control characters (a newline in a run name) escaped, so
+    nothing a name holds can start a table of the file."""
+    return "".join(repr(c)[1:-1] if not c.isprintable() else c for c in text)
+
+
+def fit_case_inputs(case, path: Path) -> list[Path]:
+    """The files a friction-fit case reads: itself, its measurements, its contact map file or
+    structure case (refused inside the result folder, where committing would delete them)."""
+    base = path.parent
+    files = [path] + [base / m.file for m in case.measurements]
+    spec = case.contact.map if case.contact is not None else None
+    if spec is not None:
+        files += [base / f for f in (spec.file, spec.structure_case) if f is not None]
+    return files
 
 
 def _unique_slugs(names: list[str]) -> list[str]:
-    """File-name parts of the rotary run names, unique ignoring case (a number appended)."""
+    """File-name parts of run names (``cycle A, 0.2 L`` -> ``cycle_A_0.2_L``), unique ignoring
+    case (a number appended: ``run 1`` and ``run_1`` become ``run_1`` and ``run_1_2``)."""
     out: list[str] = []
     for name in names:
         slug = re.sub(r"[^A-Za-z0-9_.-]+", "_", name).strip("_.") or "run"

@@ -5,7 +5,9 @@ result folder.
 (all variants, one ``variant`` column), ``summary.json`` (break-away forces, loop areas,
 dissipated energy per variant, warnings), plots (``force_velocity.png``, ``theta_velocity.png``
 for the Θ law, ``force_displacement.png``, ``timeseries.png``) and ``case_resolved.toml`` (the
-case with every default filled in).
+case with every default filled in).  A case with a ``[seal]`` runs the law on that seal's
+contact (:func:`sealsim.pneumatic.bench.bench_inputs`); its F_N, b and map are in the summary
+(``variants.NAME.seal``).
 """
 
 from __future__ import annotations
@@ -27,7 +29,9 @@ from sealsim.friction.case import (
     make_inputs,
     run_friction_case,
 )
+from sealsim.friction.parameters import parameter_set_note
 from sealsim.output import ResultFolder, run_variants
+from sealsim.pneumatic.bench import bench_inputs
 from sealsim.plotting.friction import (
     last_cycles,
     plot_force_displacement,
@@ -63,7 +67,7 @@ def run_case_file(path: str | Path, out: str | Path, force: bool = False,
     """
     case = Path(path)
     cases = load_friction_cases(load_toml(case), source=f"case file {case.name!r}")
-    laws, alarms, notes = {}, [], []
+    laws, inputs, seals, alarms, notes = {}, {}, {}, [], []
     for name, c in cases.items():
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
@@ -74,19 +78,28 @@ def run_case_file(path: str | Path, out: str | Path, force: bool = False,
             text = known or str(w.message)
             if text not in target:
                 target.append(text)
+        unfitted = parameter_set_note(c.friction)
+        if unfitted and unfitted not in notes:
+            notes.append(unfitted)
+        if c.seal is not None:    # before any run: a bad map fails the whole case at once
+            inputs[name], seals[name] = bench_inputs(c, laws[name], case.parent)
+        else:
+            inputs[name] = make_inputs(c)
     title = next(iter(cases.values())).title or case.stem
     summary = {"title": title, "source": str(case), "sealsim_version": __version__,
                "warnings": alarms, "notes": notes, "variants": {}}
 
     def simulate(name, c, report):
         result, summary["variants"][name] = run_friction_case(c, laws[name], progress=(
-            None if report is None else lambda f: report(f, 1.0)))
+            None if report is None else lambda f: report(f, 1.0)), inputs=inputs[name])
+        if name in seals:
+            summary["variants"][name]["seal"] = seals[name]
         if report is not None:
             report(1.0, 1.0)
         return result
 
     def write(folder: ResultFolder, results: dict) -> None:
-        _write_results(folder, cases, laws, results, summary)
+        _write_results(folder, cases, laws, inputs, results, summary)
 
     run_variants(cases, out, simulate, write, force=force, inputs=[case], progress=progress)
     return summary
@@ -114,8 +127,8 @@ LAW_LABELS = {"coulomb": "Coulomb", "stribeck": "Stribeck", "lugre": "LuGre", "d
               "gms": "GMS", "theta": "Θ"}
 
 
-def _write_results(folder: ResultFolder, cases: dict, laws: dict, results: dict,
-                   summary: dict) -> None:
+def _write_results(folder: ResultFolder, cases: dict, laws: dict, inputs: dict,
+                   results: dict, summary: dict) -> None:
     """Table, summary, figures and resolved case of the variants of a friction case."""
     steady_f, steady_theta = {}, {}
     for name, c in cases.items():
@@ -125,10 +138,9 @@ def _write_results(folder: ResultFolder, cases: dict, laws: dict, results: dict,
         vmax = float(np.max(np.abs(res.velocity))) or 1e-3
         v = np.linspace(-vmax, vmax, 801) if np.min(res.velocity) < 0 else np.linspace(
             0, vmax, 401)[1:]
-        inputs = make_inputs(c)
-        steady_f[name] = (v, law.steady_force(v, inputs))
+        steady_f[name] = (v, law.steady_force(v, inputs[name]))
         if "theta" in law.state_names:
-            steady_theta[name] = (v, law.steady_state(v, inputs)[0])
+            steady_theta[name] = (v, law.steady_state(v, inputs[name])[0])
 
     title = summary["title"]
     max_rows = min(c.output.max_rows for c in cases.values())

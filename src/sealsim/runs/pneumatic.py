@@ -18,7 +18,7 @@ import pandas as pd
 from sealsim import __version__
 from sealsim.cases import dump_variants_toml
 from sealsim.output import ResultFolder, run_variants
-from sealsim.pneumatic.case import load_pneumatic_case_file
+from sealsim.pneumatic.case import case_input_files, load_pneumatic_case_file
 from sealsim.pneumatic.results import TIMESERIES_COLUMNS, PneumaticResult
 from sealsim.pneumatic.simulation import simulate_variant
 from sealsim.pneumatic.summary import DEFINITIONS, per_stroke
@@ -51,10 +51,11 @@ def run_case_file(path: str | Path, out: str | Path, force: bool = False,
     """
     path = Path(path)
     cases = load_pneumatic_case_file(path)
+    inputs = [path] + [f for case in cases.values() for f in case_input_files(case, path.parent)]
     return run_variants(
         cases, out, lambda name, case, _: simulate_variant(name, case, path.parent, progress),
         lambda folder, results: write_results(folder, results, source=str(path)),
-        force=force, inputs=[path])
+        force=force, inputs=inputs)
 
 
 def write_results(folder: ResultFolder, results: dict[str, PneumaticResult],
@@ -82,6 +83,7 @@ def write_results(folder: ResultFolder, results: dict[str, PneumaticResult],
     folder.savefig("friction_stroke.png", friction_stroke_figure(frames, strokes, title,
                                                                  periods))
     folder.savefig("friction_velocity.png", friction_velocity_figure(frames, title, periods))
+    _contact_friction_figures(folder, first, Path(source).parent if source else Path("."))
     for name, r in results.items():
         heated = r.case.thermal is not None and r.case.thermal.seal_heating
         if heated and r.case.controller.mode == "cycle":
@@ -93,3 +95,24 @@ def write_results(folder: ResultFolder, results: dict[str, PneumaticResult],
         folder.savefig(f"timeseries_{name}.png",
                        timeseries_figure(r.timeseries, r.seal_columns,
                                          f"{title} -- {name}" if title else name))
+
+
+def _contact_friction_figures(folder: ResultFolder, case, base_dir: Path) -> None:
+    """``contact_friction_<seal>.png`` for every seal whose steady friction comes from its
+    contact: p_c(z), h(z) and the Stribeck curve per pressure (maps and tables are cached)."""
+    from sealsim.pneumatic.case import build_seals
+    from sealsim.pneumatic.friction_tables import ContactTribology, film_profiles
+    from sealsim.plotting.contact_friction import contact_friction_figure
+
+    for seal in build_seals(case, base_dir):
+        if seal.friction_table is None:
+            continue
+        cyl = case.cylinder
+        diameter = cyl.bore if seal.location == "piston" else cyl.rod_diameter
+        tribology = ContactTribology(**seal.friction_table.attrs["tribology"])
+        profiles = film_profiles(seal.contact_map, tribology, seal.temperature, 0.1)
+        folder.savefig(f"contact_friction_{seal.name}.png", contact_friction_figure(
+            profiles, seal.friction_table, diameter, seal.temperature,
+            seal.law.params.boundary_friction, 0.1,
+            f"seal {seal.name!r}: friction from its contact at "
+            f"{seal.temperature - 273.15:.0f} degC"))

@@ -13,6 +13,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 
 from sealsim.cases import dump_variants_toml
@@ -65,7 +66,35 @@ def run_case_file(path: str | Path, out: str | Path, force: bool = False,
     return run_variants(
         cases, out, lambda name, case, report: run_case(case, progress=report),
         lambda folder, runs: folder.write_text("case_resolved.toml", _resolved_text(cases)),
-        force=force, inputs=[path], progress=progress, write_each=write_variant)
+        force=force, inputs=_inputs(path, cases), progress=progress, write_each=write_variant)
+
+
+def _inputs(path, cases: dict[str, StructureCase]) -> list[Path]:
+    """The case file and the DXF drawings it read (refused inside the result folder)."""
+    path = Path(path)
+    return [path] + [path.parent / c.seal.drawing for c in cases.values()
+                     if getattr(c.seal, "drawing", None)]
+
+
+def material_description(case: StructureCase, material) -> str:
+    """What the run's rubber was: the FE material's name, its model and, for a hyperelastic
+    one, its temperature law (results are reported with it, e.g. where a cooled seal loses
+    its groove contact)."""
+    spec = case.material
+    if spec.model == "viscoelastic":
+        return f"{material.name}: thermo-viscoelastic (Prony series, WLF/Arrhenius shift, " \
+               "glassy expansion below T_g)"
+    return f"{material.name}: hyperelastic, temperature_scaling = {spec.temperature_scaling!r}"
+
+
+def groove_contact_lost_at(frame: pd.DataFrame) -> float | None:
+    """Temperature [°C] of the first recorded state without groove-bottom contact after one
+    with it (a seal shrinking off its groove on cooling), or None."""
+    if "F_groove_bottom_N" not in frame:
+        return None
+    touching = frame["F_groove_bottom_N"].to_numpy() > 0.0
+    lost = np.nonzero(~touching[1:] & touching[:-1])[0]
+    return None if not len(lost) else float(frame["temperature_C"].iloc[lost[0] + 1])
 
 
 def _write_variant(folder: ResultFolder, prefix: str, name: str, case: StructureCase,
@@ -88,6 +117,8 @@ def _write_variant(folder: ResultFolder, prefix: str, name: str, case: Structure
     last = frame.iloc[-1]
     folder.write_json(prefix + "summary.json", {
         "variant": name,
+        "material": material_description(case, result.model.material),
+        "groove_contact_lost_at_C": groove_contact_lost_at(frame),
         "dofs": result.ndofs,
         "wall_time_s": round(result.wall_time, 3),
         "load_states": len(frame),
@@ -163,4 +194,5 @@ def map_case_file(path: str | Path, out: str | Path, force: bool = False,
             folder.savefig(name, plot_map_profiles(ds, i, title=title))
         folder.write_text("case_resolved.toml", text)
 
-    return run_variants({"map": case}, out, compute, write, force=force, inputs=[path])["map"]
+    return run_variants({"map": case}, out, compute, write, force=force,
+                        inputs=_inputs(path, cases))["map"]

@@ -28,6 +28,7 @@ __all__ = [
     "build_material",
     "build_model",
     "build_section",
+    "check_rubbery",
     "check_temperatures",
     "describe_seal",
     "garter_spring",
@@ -180,6 +181,10 @@ def describe_seal(case: StructureCase) -> str:
              "user": "seal profile"}
     size = s.cord_diameter or s.height or s.width
     material = case.material.elastomer or "custom rubber"
+    if material.lower().endswith(".toml"):
+        from sealsim.properties.elastomers import get_elastomer
+
+        material = get_elastomer(material).name
     where = "shaft seal" if case.gland.arrangement == "shaft" else \
         f"{case.gland.arrangement} seal"
     lead = f"{size * 1e3:g} mm {names[s.type]}" if size else names[s.type]
@@ -200,6 +205,24 @@ def check_temperatures(case: StructureCase, temperatures) -> None:
             raise InputError(
                 f"temperature {t - ZERO_CELSIUS_K:g} degC is outside the range of {name}: "
                 f"{lo - ZERO_CELSIUS_K:g} ... {hi - ZERO_CELSIUS_K:g} degC")
+
+
+def check_rubbery(case: StructureCase, temperatures) -> None:
+    """InputError for temperatures within GLASS_TRANSITION_MARGIN of the catalogue rubber's
+    T_g, where a rubbery (hyperelastic or relaxed) material does not describe the seal."""
+    from sealsim.properties.elastomers import (
+        GLASS_TRANSITION_MARGIN,
+        get_elastomer,
+        rubbery_limit_message,
+    )
+
+    if case.material.custom:
+        return
+    e = get_elastomer(case.material.elastomer)
+    cold = [t for t in temperatures if t < e.glass_transition + GLASS_TRANSITION_MARGIN - 1e-9]
+    if cold:
+        raise InputError("map.temperature: " + rubbery_limit_message(
+            "a characteristic map (relaxed material)", min(cold), e))
 
 
 def garter_spring(case: StructureCase, assembly: SealAssembly) -> GarterSpringSpec | None:

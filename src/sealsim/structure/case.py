@@ -30,7 +30,9 @@ gland), ``"radial_lip"`` (a DIN 3760 shaft seal: outer_diameter, width, garter s
 ``gland.arrangement = "shaft"``) and ``"user"`` (a closed polyline ``points`` in
 ``points_unit``, optional ``bulges`` and ``tags``, or a ``dxf`` drawing; a relative path is
 relative to the case file). A material needs no catalogue name: ``c10``, ``c01`` and
-``bulk_modulus`` alone define a custom Mooney–Rivlin rubber.
+``bulk_modulus`` alone define a custom Mooney–Rivlin rubber; ``material = "my_nbr.toml"``
+(or ``[material] elastomer = "my_nbr.toml"``) takes a compound file, e.g. one written by
+``sealsim material fit``, relative to the case file.
 """
 
 from __future__ import annotations
@@ -204,12 +206,15 @@ class MaterialSpec(CaseModel):
 
     elastomer: str | None = None
     model: Literal["hyperelastic", "viscoelastic"] = "hyperelastic"
-    temperature_scaling: Literal["entropic", "modulus", "none"] = Field(
-        "entropic", description=(
-            "hyperelastic constants vs temperature: 'entropic' C(T) = C(T_ref)·T/T_ref "
-            "(rubber elasticity, equilibrium state; above about Tg + 30 K), 'modulus' with "
-            "the catalogue's E(T) at its test frequency (includes viscoelastic softening), "
-            "'none' constant"))
+    temperature_scaling: Literal["held", "entropic", "modulus", "none"] | None = Field(
+        None, description=(
+            "hyperelastic constants vs temperature: 'held' (default for a catalogue rubber) "
+            "C(T) = C_ref·E_h(T)/E(T_ref, f_test), the relaxed modulus of a seal held for an "
+            "hour from the catalogue's master curve (sealsim's convention for an installed "
+            "seal, also of the rotary lip force); 'entropic' C(T) = C(T_ref)·T/T_ref (rubber "
+            "elasticity, equilibrium state; default for a custom rubber); 'modulus' with the "
+            "catalogue's E(T) at a frequency (the dynamic modulus at that rate); 'none' "
+            "constant"))
     modulus_frequency: Q("frequency", gt=0.0) | None = Field(None, description=(
         "frequency of E(T) for temperature_scaling = 'modulus' (default: the catalogue's)"))
     c10: Q("pressure", gt=0.0) | None = None
@@ -229,12 +234,16 @@ class MaterialSpec(CaseModel):
     def _catalogue_or_custom(self):
         if self.elastomer is None:
             if self.custom:
-                if self.model != "hyperelastic" or self.temperature_scaling == "modulus":
+                if self.model != "hyperelastic" or self.temperature_scaling in ("modulus",
+                                                                                 "held"):
                     raise ValueError("a custom material (no elastomer name) is hyperelastic "
                                      "with temperature_scaling 'entropic' or 'none': the "
                                      "catalogue supplies the viscoelastic data")
             else:
                 object.__setattr__(self, "elastomer", "NBR")
+        if self.temperature_scaling is None:
+            object.__setattr__(self, "temperature_scaling",
+                               "entropic" if self.custom else "held")
         elif self.constants_temperature is not None:
             raise ValueError("material.constants_temperature is for a custom material only "
                              "(no elastomer name)")
@@ -327,6 +336,12 @@ class StructureCase(CaseModel):
     load: LoadSpec
     map: MapSpec | None = None
     solver: SolverSpec = SolverSpec()
+
+    @field_validator("material", mode="before")
+    @classmethod
+    def _material_name(cls, value):
+        # material = "NBR" or "my_nbr.toml": shorthand for [material] elastomer = ...
+        return {"elastomer": value} if isinstance(value, str) else value
 
     @model_validator(mode="after")
     def _consistent(self):

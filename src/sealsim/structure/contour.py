@@ -29,6 +29,7 @@ from pathlib import Path
 import numpy as np
 
 from sealsim.errors import InputError
+from sealsim.files import check_input_file
 
 __all__ = [
     "TAGS",
@@ -449,8 +450,7 @@ def contour_from_dxf(path, *, layer: str | None = None, unit: float = 1e-3,
 
     p = Path(path)
     label = name or f"DXF file {str(p)!r}"
-    if not p.is_file():
-        raise InputError(f"{label} does not exist")
+    check_input_file(p, "DXF file", label=label)
     try:
         doc = ezdxf.readfile(str(p))
     except (OSError, ezdxf.DXFError) as exc:

@@ -7,8 +7,12 @@ the pressure sweep over the grid, recording every grid pressure -- in a process 
 installation is the same for every temperature of a squeeze: each process solves it once and
 starts each of its paths from a copy of the installed model (the same state, so the same
 results as a path solved from the start; tested). The
-material of a map is the *equilibrium* (fully relaxed) one: a thermo-viscoelastic case is
-mapped with its long-time hyperelastic constants. The dataset layout is described in
+material of a map is the held (relaxed) one: a hyperelastic case with its
+``temperature_scaling`` ("held" by default), a thermo-viscoelastic case with its long-time
+hyperelastic constants.  Both are rubbery, so a map refuses temperatures within
+:data:`~sealsim.properties.elastomers.GLASS_TRANSITION_MARGIN` of the rubber's T_g (where only
+a viscoelastic load path, ``sealsim structure run``, with its glassy expansion holds).
+The dataset layout is described in
 :mod:`.maps` (which reads maps without importing the FE).
 """
 
@@ -28,6 +32,7 @@ from sealsim.structure.build import (
     build_assembly,
     build_material,
     build_model,
+    check_rubbery,
     check_temperatures,
     installation_squeeze,
 )
@@ -147,6 +152,7 @@ def compute_map(case: StructureCase, *, workers: int | None = None,
     for s in squeezes:
         assembly.check_squeeze(s, "map.squeeze")
     check_temperatures(case, spec.temperature)
+    check_rubbery(case, spec.temperature)
     positions = profile_positions(case, assembly)
     tasks = [(s, t) for s in squeezes for t in spec.temperature]
     data = case.model_dump(mode="json")

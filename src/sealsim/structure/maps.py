@@ -29,6 +29,7 @@ import xarray as xr
 from scipy.interpolate import PchipInterpolator
 
 from sealsim.errors import InputError
+from sealsim.files import check_input_file
 from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["MAP_COORDS", "MAP_VARIABLES", "PROFILE_VARIABLES", "HermiteGrid", "SealMap",
@@ -310,11 +311,7 @@ class SealMap:
 
 def load_map(path, extrapolate: str = "error") -> SealMap:
     """Read a ``map.nc`` written by ``sealsim structure map`` into a :class:`SealMap`."""
-    from pathlib import Path
-
-    p = Path(path)
-    if not p.is_file():
-        raise InputError(f"map file {str(p)!r} does not exist")
+    p = check_input_file(path, "map file")
     try:
         with xr.open_dataset(p) as ds:
             ds = ds.load()

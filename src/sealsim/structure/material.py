@@ -65,6 +65,7 @@ from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = [
     "HyperelasticSealMaterial",
+    "ModelHyperelasticSealMaterial",
     "MooneyRivlinIsochoric",
     "ViscoelasticMooneyRivlin",
     "ViscoelasticSealMaterial",
@@ -541,6 +542,59 @@ class HyperelasticSealMaterial:
 
 
 @dataclass
+class ModelHyperelasticSealMaterial(HyperelasticSealMaterial):
+    r"""Nearly incompressible seal material with any isochoric strain energy of FElupe
+    (:mod:`sealsim.structure.hyperelastic`: Yeoh, Ogden, Arruda–Boyce, ...) and thermal
+    expansion; the stress parameters scale with temperature by ``stiffness(T)``.
+
+    ``c10``/``c01`` hold the neo-Hookean equivalent μ0/2 and 0 (for :meth:`shear_modulus`
+    and the constant checks); the FE stress comes from ``model`` and ``parameters``.
+
+    Parameters
+    ----------
+    model : str
+        A name of :data:`sealsim.properties.hyperelastic.HYPERELASTIC_MODELS`.
+    parameters : tuple
+        ``((parameter, value), ...)`` at the reference temperature, stresses in Pa.
+    stiffness : callable, optional
+        r(T) [-], the factor on the stress parameters at T [K] (default 1).
+
+    Examples
+    --------
+    >>> m = ModelHyperelasticSealMaterial(0.5e6, 0.0, 2e9, 2e-4, 293.15, model="ogden",
+    ...                                   parameters=(("mu", (1e6,)), ("alpha", (2.0,))))
+    >>> m.set_state(303.15, 0.0)
+    >>> m.umat.scale
+    1.0
+    """
+
+    model: str = "neo_hooke"
+    parameters: tuple = ()
+    stiffness: object = None
+
+    def __post_init__(self):
+        from sealsim.structure.hyperelastic import ScaledIsochoric, felupe_umat
+
+        self.temperature = self.reference_temperature
+        c10, c01, k = self.constants(self.reference_temperature)
+        _check_constants(c10, c01, k, self.reference_temperature)
+        self.umat = ScaledIsochoric(felupe_umat(self.model, dict(self.parameters)),
+                                    self._scale(self.reference_temperature))
+
+    def _scale(self, temperature: float) -> float:
+        return 1.0 if self.stiffness is None else float(self.stiffness(temperature))
+
+    def set_state(self, temperature: float, time_increment: float) -> None:
+        """Set the temperature [K] of the next increment (time increment [s] unused)."""
+        c10, c01, k = self.constants(temperature)
+        _check_constants(c10, c01, k, temperature)
+        self.umat.scale = self._scale(temperature)
+        self.temperature = float(temperature)
+        self.volume_ratio = thermal_volume_ratio(temperature, self.reference_temperature,
+                                                 self.thermal_expansion)
+
+
+@dataclass
 class ViscoelasticSealMaterial:
     r"""Thermo-viscoelastic seal material: Mooney–Rivlin equilibrium branch + Prony series in
     reduced time with a shift factor a_T(T) (WLF above T_g).
@@ -697,7 +751,7 @@ def _check_constants(c10, c01, k, temperature):
 
 def material_from_elastomer(elastomer, model: str = "hyperelastic", *,
                             reference_temperature: float,
-                            temperature_scaling: str = "entropic",
+                            temperature_scaling: str = "held",
                             frequency: float | None = None):
     """Build a seal material from a catalogue :class:`~sealsim.properties.elastomers.Elastomer`.
 
@@ -712,11 +766,16 @@ def material_from_elastomer(elastomer, model: str = "hyperelastic", *,
         as the catalogue), the catalogue Prony series and its WLF/Arrhenius shift.
     reference_temperature : float
         T_0 [K] at which the geometry is stress-free (installation temperature).
-    temperature_scaling : {"entropic", "modulus", "none"}
+    temperature_scaling : {"held", "entropic", "modulus", "none"}
         Hyperelastic only: C(T) = C(T_ref)·r(T) with r from
         :meth:`~sealsim.properties.elastomers.Elastomer.modulus_ratio` (the same law as the
         analytic contact estimate of :mod:`sealsim.pneumatic.contact_maps`).
-        ``"entropic"`` (default): r = T/T_ref, the equilibrium modulus of rubber elasticity,
+        ``"held"`` (default): r = E_h(T)/E(T_ref, f_test), the relaxed modulus of a seal held
+        for :data:`~sealsim.properties.elastomers.HELD_SEAL_TIME` from the master curve,
+        installed at ``reference_temperature``, relative to the test-frequency modulus the
+        constants hold for (sealsim's convention for an installed seal; the rotary lip force
+        uses the same modulus for its mounted stress).
+        ``"entropic"``: r = T/T_ref, the equilibrium modulus of rubber elasticity,
         G = n·k·T (Treloar, *The Physics of Rubber Elasticity*, 1975, ch. 4). A seal held at
         constant squeeze relaxes to it, which is also what Heipl & Murrenhoff assume for slow
         cooling above Tg; valid above ≈ T_g + 30 K, below that use ``model = "viscoelastic"``.
@@ -732,8 +791,11 @@ def material_from_elastomer(elastomer, model: str = "hyperelastic", *,
             raise InputError(f"material.temperature_scaling: {temperature_scaling!r} is not "
                              "allowed; choose 'entropic', 'modulus' or 'none'")
 
+        mounted = reference_temperature if temperature_scaling == "held" else None
+
         def stiffness(T):
-            return e.modulus_ratio(T, scaling=temperature_scaling, frequency=frequency)
+            return e.modulus_ratio(T, scaling=temperature_scaling, frequency=frequency,
+                                   mounting_temperature=mounted)
 
         def c10(T):
             return e.c10 * stiffness(T)
@@ -741,12 +803,22 @@ def material_from_elastomer(elastomer, model: str = "hyperelastic", *,
         def c01(T):
             return e.c01 * stiffness(T)
 
+        if e.hyperelastic is not None:
+            model, parameters = e.hyperelastic
+            return ModelHyperelasticSealMaterial(
+                c10, c01, e.bulk_modulus, e.thermal_expansion, reference_temperature,
+                name=f"{e.name} ({model})", model=model, parameters=parameters,
+                stiffness=stiffness)
         return HyperelasticSealMaterial(c10, c01, e.bulk_modulus, e.thermal_expansion,
                                         reference_temperature, name=e.name)
     if model == "viscoelastic":
         if e.prony is None:
             raise InputError(f"material.model = 'viscoelastic' needs a Prony series, but "
                              f"{e.name} has none; use model = 'hyperelastic' or another material")
+        if e.hyperelastic is not None:
+            raise InputError(f"material.model = 'viscoelastic' is a Prony series on "
+                             f"Mooney-Rivlin; {e.name} has the {e.hyperelastic[0]} strain "
+                             "energy: use model = 'hyperelastic', or fit Mooney-Rivlin")
         e_inf, e_i, tau_i = e.prony
         tp = float(e.prony_reference_temperature or e.reference_temperature)
         ratio = e.c01 / e.c10

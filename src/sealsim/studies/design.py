@@ -87,6 +87,18 @@ def ppf(u, distribution: str, **params: float) -> np.ndarray:
     raise ValueError(f"unknown distribution {distribution!r}")
 
 
+def sample_count(design: str, samples: int, dimensions: int) -> int:
+    """Points :func:`unit_samples` gives (``N·(dimensions + 2)`` for ``"sobol"``), known before
+    any is generated.
+
+    Examples
+    --------
+    >>> sample_count("sobol", 8, 3), sample_count("latin_hypercube", 8, 3)
+    (40, 8)
+    """
+    return samples * (dimensions + 2) if design == "sobol" else samples
+
+
 def unit_samples(design: str, samples: int, dimensions: int, seed: int) -> np.ndarray:
     """Points in the unit hypercube for a sampled design, shape ``(runs, dimensions)``.
 

@@ -5,8 +5,8 @@
   the usable cores) with one thread each.  Processes, not threads: the models hold the GIL
   (scipy integrators, numba-compiled right-hand sides called from Python, FElupe assembly).
 * ``scheduler = "tcp://host:8786"``: an existing cluster -- ``dask scheduler`` and ``dask
-  worker`` started by hand, or a batch system through dask-jobqueue (see the README, section
-  Studies).  Its workers must import the same sealsim and read the same case files.
+  worker`` started by hand, or a batch system through dask-jobqueue (see the documentation,
+  page Studies).  Its workers must import the same sealsim and read the same case files.
 
 Runs are sent in batches: one Dask task runs several runs one after the other, so that
 thousands of millisecond runs do not drown in scheduling overhead (every task costs a few

@@ -10,6 +10,14 @@ An expression (after ``=``) may use the factor names, numbers, ``+ - * / **``, p
 ``[...]`` lists and the functions ``min``, ``max``, ``abs``, ``sqrt``.  Factors with units are
 pint quantities, so ``groove_depth / cord_diameter`` is a pure number even when one is in mm
 and the other in µm.  Nothing else is evaluated: no attributes, no other names, no calls.
+
+The work an expression can cause is bounded, so a slip or a hostile study file is refused in
+microseconds instead of hanging or exhausting the memory: at most :data:`MAX_LENGTH`
+characters and :data:`MAX_DEPTH` levels of nesting; numbers are floats, so a power overflows
+instead of computing a huge integer, and an exponent is at most :data:`MAX_EXPONENT` in
+magnitude; a list (``[x] * 3``) holds at most :data:`MAX_ITEMS` values.  (A general evaluator
+such as simpleeval bounds powers and sizes too, but allows attribute access and string
+operations that a case value never needs, and does not bound the nesting.)
 """
 
 from __future__ import annotations
@@ -22,10 +30,46 @@ from typing import Any
 from sealsim.errors import InputError
 from sealsim.units import ureg
 
-__all__ = ["case_value", "check_expression", "evaluate"]
+__all__ = ["MAX_DEPTH", "MAX_EXPONENT", "MAX_ITEMS", "MAX_LENGTH", "case_value",
+           "check_expression", "evaluate"]
 
-_BINARY = {ast.Add: operator.add, ast.Sub: operator.sub, ast.Mult: operator.mul,
-           ast.Div: operator.truediv, ast.Pow: operator.pow}
+#: longest expression [characters]
+MAX_LENGTH = 1000
+#: deepest nesting of operations, calls and lists (``a + b + c`` is 2 levels)
+MAX_DEPTH = 50
+#: largest magnitude of an exponent (``x ** 2``, ``x ** (1/3)``)
+MAX_EXPONENT = 64.0
+#: most values in a list an expression gives
+MAX_ITEMS = 10_000
+
+
+def _power(base, exponent):
+    x = exponent.to("dimensionless").magnitude if isinstance(exponent, ureg.Quantity) \
+        else exponent
+    if isinstance(x, list) or not abs(x) <= MAX_EXPONENT:
+        raise InputError(f"the exponent {exponent!r} is out of range: at most {MAX_EXPONENT:g} "
+                         "in magnitude")
+    return operator.pow(base, x)
+
+
+def _times(a, b):
+    if isinstance(a, list) or isinstance(b, list):
+        items, n = (a, b) if isinstance(a, list) else (b, a)
+        if isinstance(n, list) or float(n) != int(n) or not 0 <= n * len(items) <= MAX_ITEMS:
+            raise InputError(f"a list can be repeated by a whole number, giving at most "
+                             f"{MAX_ITEMS} values (got {len(items)} values x {n!r})")
+        return items * int(n)
+    return operator.mul(a, b)
+
+
+def _plus(a, b):
+    if isinstance(a, list) and isinstance(b, list) and len(a) + len(b) > MAX_ITEMS:
+        raise InputError(f"a list may hold at most {MAX_ITEMS} values")
+    return operator.add(a, b)
+
+
+_BINARY = {ast.Add: _plus, ast.Sub: operator.sub, ast.Mult: _times,
+           ast.Div: operator.truediv, ast.Pow: _power}
 _UNARY = {ast.UAdd: operator.pos, ast.USub: operator.neg}
 
 
@@ -37,11 +81,29 @@ _FUNCTIONS = {"min": min, "max": max, "abs": abs, "sqrt": _sqrt}
 
 
 def check_expression(text: str, names: set[str], where: str) -> ast.Expression:
-    """Parse an expression and check that it uses only allowed syntax and known names."""
+    """Parse an expression and check that it uses only allowed syntax and known names, and
+    is at most :data:`MAX_LENGTH` characters long and :data:`MAX_DEPTH` levels deep.
+
+    Examples
+    --------
+    >>> check_expression(" + ".join(["h"] * 60), {"h"}, "[set] x")
+    Traceback (most recent call last):
+    ...
+    sealsim.errors.InputError: [set] x: the expression nests more than 50 operations, calls or \
+lists; split it or simplify it
+    """
+    if len(text) > MAX_LENGTH:
+        raise InputError(f"{where}: the expression is {len(text)} characters long; at most "
+                         f"{MAX_LENGTH} are allowed")
     try:
         tree = ast.parse(text.strip(), mode="eval")
     except SyntaxError as exc:
         raise InputError(f"{where}: {text!r} is not a valid expression ({exc.msg})") from None
+    except (RecursionError, MemoryError):
+        tree = None
+    if tree is None or _depth(tree) > MAX_DEPTH:
+        raise InputError(f"{where}: the expression nests more than {MAX_DEPTH} operations, "
+                         "calls or lists; split it or simplify it")
     for node in ast.walk(tree):
         if isinstance(node, ast.Name):
             if node.id not in names and node.id not in _FUNCTIONS:
@@ -56,6 +118,9 @@ def check_expression(text: str, names: set[str], where: str) -> ast.Expression:
             if not isinstance(node.value, int | float) or isinstance(node.value, bool):
                 raise InputError(f"{where}: {node.value!r} in {text!r}: only numbers are "
                                  "allowed as constants")
+            if not _finite(node.value):  # 1e999, or an integer beyond floats
+                raise InputError(f"{where}: a number in the expression is not finite (larger "
+                                 "than 1.8e308)")
         elif not isinstance(node, ast.Expression | ast.BinOp | ast.UnaryOp | ast.List
                             | ast.Tuple | ast.Load | ast.operator | ast.unaryop):
             raise InputError(f"{where}: {type(node).__name__} is not allowed in {text!r}")
@@ -66,6 +131,25 @@ def check_expression(text: str, names: set[str], where: str) -> ast.Expression:
             raise InputError(f"{where}: operator {type(node.op).__name__} is not allowed in "
                              f"{text!r}")
     return tree
+
+
+def _finite(number: int | float) -> bool:
+    try:
+        return math.isfinite(float(number))
+    except OverflowError:
+        return False
+
+
+def _depth(tree: ast.AST) -> int:
+    """Levels of operations, calls and lists (iterative: a deep tree cannot overflow)."""
+    deepest, stack = 0, [(tree, 0)]
+    while stack:
+        node, depth = stack.pop()
+        if isinstance(node, ast.BinOp | ast.UnaryOp | ast.Call | ast.List | ast.Tuple):
+            depth += 1
+            deepest = max(deepest, depth)
+        stack.extend((child, depth) for child in ast.iter_child_nodes(node))
+    return deepest
 
 
 def evaluate(tree: ast.Expression, values: dict[str, Any]) -> Any:
@@ -82,7 +166,7 @@ def evaluate(tree: ast.Expression, values: dict[str, Any]) -> Any:
         if isinstance(node, ast.Expression):
             return ev(node.body)
         if isinstance(node, ast.Constant):
-            return node.value
+            return float(node.value)   # floats: a power overflows instead of growing forever
         if isinstance(node, ast.Name):
             return values[node.id] if node.id in values else _FUNCTIONS[node.id]
         if isinstance(node, ast.BinOp):

@@ -35,6 +35,7 @@ from __future__ import annotations
 
 import importlib
 import math
+import warnings
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
@@ -127,15 +128,24 @@ def _rotary_steady(case, base_dir: Path) -> RunOutput:
 
     _one_duty_step(case)
     speed = float(case.duty.steps[0].speed)
-    return RunOutput({"speed_rpm": speed * 30.0 / math.pi, **steady_state(case, speed)})
+    result = steady_state(case, speed)
+    note = result.pop("lip_note")
+    return RunOutput({"speed_rpm": speed * 30.0 / math.pi, **result}, notes=(note,) if note else ())
 
 
 def _friction(case, base_dir: Path) -> RunOutput:
     import pandas as pd
 
-    from sealsim.friction.case import run_friction_case
+    from sealsim.friction.case import build_law, run_friction_case
+    from sealsim.pneumatic.bench import bench_inputs
 
-    result, summary = run_friction_case(case)
+    law = inputs = None
+    if case.seal is not None:          # a real seal on the bench: its contact's inputs
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            law = build_law(case)
+        inputs = bench_inputs(case, law, base_dir)[0]
+    result, summary = run_friction_case(case, law, inputs=inputs)
     return RunOutput(summary, pd.DataFrame(result.columns()).set_index("time_s"))
 
 

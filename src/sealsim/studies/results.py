@@ -63,26 +63,37 @@ def _describe(factor) -> str:
     return f"{factor.distribution}({params}) {factor.unit}".strip()
 
 
+def _factor_name(factor) -> str:
+    """A readable ``long_name``: the factor's description, else what it changes."""
+    if factor.description:
+        return factor.description
+    if factor.path:
+        return f"{factor.name}: the case field {factor.path}"
+    return f"{factor.name}: a free variable of the [set] expressions"
+
+
 def assemble(study, records: list[dict]) -> tuple[xr.Dataset, pd.DataFrame]:
     """Dataset and tidy table of a complete study (``records[i]`` is run ``i``)."""
     shape, dims = study.shape, study.dims
     coords: dict = {}
     for f in study.grid_factors:
         coords[f.name] = (f.name, np.asarray(f.coords),
-                          {"units": f.unit or "1", "long_name": f.path or "free variable",
+                          {"units": f.unit or "1", "long_name": _factor_name(f),
                            "description": f.description, "factor": _describe(f)})
     if study.sampled:
-        coords["sample"] = ("sample", np.arange(study.n_samples))
+        coords["sample"] = ("sample", np.arange(study.n_samples),
+                            {"long_name": "number of the sample (from 0)"})
         for j, f in enumerate(study.sampled_factors):
             coords[f.name] = ("sample", study.sample_values[:, j],
-                              {"units": f.unit or "1", "long_name": f.path or "free variable",
+                              {"units": f.unit or "1", "long_name": _factor_name(f),
                                "description": f.description, "factor": _describe(f)})
     ok = np.array([r["status"] == "ok" for r in records])
     data_vars: dict = {}
     for out in study.outputs:
         values = np.array([_number(r["summary"].get(out.path)) for r in records], dtype=float)
-        data_vars[out.name] = (dims, values.reshape(shape),
-                               {"units": out.unit, "long_name": out.path})
+        data_vars[out.name] = (dims, values.reshape(shape), {
+            "units": out.unit, "long_name": f"{out.name}: {out.path} of the {study.model} "
+                                            "model's summary"})
     data_vars["status"] = (dims, ok.astype(np.int8).reshape(shape),
                            {"long_name": "1: run finished, 0: run failed (see error)"})
     data_vars["error"] = (dims, np.array([r["error"] for r in records], dtype=object
@@ -96,8 +107,8 @@ def assemble(study, records: list[dict]) -> tuple[xr.Dataset, pd.DataFrame]:
         "sealsim_version": __version__, "source": str(study.source),
         "study": study.text, **{f"resolved_{k}".replace(".", "_"): v
                                 for k, v in study.resolved_cases().items()},
-        "conventions": "one dimension per grid factor, 'sample' for sampled factors; units "
-                       "in the 'units' attributes; NaN where a run failed",
+        "comment": "one dimension per grid factor, 'sample' for sampled factors; units in "
+                   "the 'units' attributes; NaN where a run failed",
     })
     series = _series(study, records)
     if series is not None:
@@ -146,7 +157,8 @@ def _series(study, records: list[dict]) -> xr.Dataset | None:
         if not name.startswith("coord:"):
             arrays = [(r["index"], r["series"][name][1]) for r in finished]
             variables[name] = (study.dims + tuple(dims), stack(dims, arrays),
-                               {"long_name": f"series {name}"})
+                               {"long_name": f"{name} over {', '.join(dims)} in each run "
+                                             f"(series of the {study.model} model)"})
     for dim, items in varying.items():
         variables[f"{dim}_values"] = (study.dims + (dim,), stack((dim,), items),
                                       {**_SERIES_UNITS.get(dim.removeprefix("series_"), {}),

@@ -62,7 +62,9 @@ import copy
 import hashlib
 import json
 import math
+import os
 import re
+import stat
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Literal
@@ -76,9 +78,11 @@ from sealsim.cases import (
     dump_case_toml,
     format_validation_error,
     load_toml,
+    parse_toml,
     validate_case,
 )
 from sealsim.errors import InputError
+from sealsim.files import MAX_DATA_BYTES, read_input_bytes, read_input_text
 from sealsim.studies import design as doe
 from sealsim.studies import expressions
 from sealsim.studies.models import MODELS
@@ -100,6 +104,10 @@ NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]{0,63}")
 RESERVED = {"sample", "run", "status", "error", "wall_time_s", "time", "state", "worker"}
 #: most runs of a study without asking (a guard against a slip such as samples = 1e6)
 MAX_RUNS = 100_000
+#: most runs of any study (study.max_runs): each run is a record in the work folder and a row
+#: of runs.csv, all held in memory for the analysis; a million runs of the fastest model
+#: (about 10 ms each) take about three hours on one core
+MAX_RUNS_LIMIT = 1_000_000
 #: a distribution is unbounded if the case refuses a value this many standard deviations away
 _PROBE_SIGMAS = 1e6
 _NUMBER_START = re.compile(r"^\s*[-+]?(\d|\.\d)")
@@ -159,7 +167,7 @@ class StudyTable(CaseModel):
     seed: int = Field(0, ge=0)
     batch_size: int | None = Field(None, ge=1, le=MAX_RUNS, description=(
         "runs per Dask task; default: as many as take about one second"))
-    max_runs: int = Field(MAX_RUNS, ge=1, description=(
+    max_runs: int = Field(MAX_RUNS, ge=1, le=MAX_RUNS_LIMIT, description=(
         "most runs of the study (a guard against a slip); raise it for bigger studies"))
 
 
@@ -349,11 +357,43 @@ class Study:
         return documents
 
     # -- identity --------------------------------------------------------------------------
-    def fingerprint(self) -> str:
-        """Hash of everything that decides the runs' results (for ``--resume``)."""
+    def referenced_files(self) -> list[Path]:
+        """Files the base case, its linked cases and the grid values name: a duty-cycle CSV, a
+        ``map.nc``, a DXF drawing (not the linked cases, whose content is in
+        :attr:`documents`).  Every text value of a case that is the path of a regular file
+        counts (relative to the folder of the case it is in), so a field added to a case model
+        later is covered without a list to keep up."""
+        found: dict[Path, None] = {}
+        linked = {path.resolve() for path in self.link_files.values()}
+
+        def folder(document: tuple) -> Path:
+            return self.base_dir if document == MAIN else self.link_files[document].parent
+
+        named = [(key, doc) for key, doc in self.documents.items()]
+        named += [(f.location.document, value) for f in self.grid_factors
+                  if f.location is not None for value in f.values]
+        for document, data in named:
+            for text in _texts(data):
+                path = _regular_file(folder(document), text)
+                if path is not None and path not in linked:
+                    found[path] = None
+        return list(found)
+
+    def file_digests(self) -> dict[str, str]:
+        """``{path: sha256 of its content}`` of every file the case references
+        (:meth:`referenced_files`)."""
+        return {str(p): hashlib.sha256(read_input_bytes(p, "file", MAX_DATA_BYTES)).hexdigest()
+                for p in self.referenced_files()}
+
+    def fingerprint(self, digests: dict[str, str] | None = None) -> str:
+        """Hash of everything that decides the runs' results (for ``--resume``): the case
+        documents, the runs' values and the content of every file the case reads
+        (:meth:`file_digests`, computed unless given)."""
+        digests = self.file_digests() if digests is None else digests
         text = json.dumps({
             "sealsim": __version__, "model": self.model,
             "documents": {".".join(map(str, k)): v for k, v in self.documents.items()},
+            "files": digests,
             "series": None if self.series is None else self.series.model_dump(),
             "runs": [[(loc.text(), value) for loc, value in self.assignments(i)]
                      for i in range(self.n_runs)],
@@ -375,7 +415,8 @@ class Study:
 def load_study(path: str | Path) -> Study:
     """Read and validate a study file (see the module docstring)."""
     path = Path(path)
-    return parse_study(load_toml(path), path, path.read_text(encoding="utf-8"))
+    text = read_input_text(path, "study file")
+    return parse_study(parse_toml(text, f"study file {str(path)!r}"), path, text)
 
 
 def parse_study(data: dict, source: Path, text: str = "") -> Study:
@@ -420,7 +461,34 @@ def parse_study(data: dict, source: Path, text: str = "") -> Study:
                   text=text)
     _design(study, st, where)
     _check_factor_values(study, where)
+    known = {Path(p).resolve() for p in study.inputs}
+    study.inputs += [p for p in study.referenced_files() if p not in known]
     return study
+
+
+def _texts(data: Any):
+    """Every text value in nested case data."""
+    stack = [data]
+    while stack:
+        node = stack.pop()
+        if isinstance(node, str):
+            yield node
+        elif isinstance(node, dict):
+            stack.extend(node.values())
+        elif isinstance(node, list):
+            stack.extend(node)
+
+
+def _regular_file(folder: Path, text: str) -> Path | None:
+    """The regular file ``text`` names (relative to ``folder``), if it is one."""
+    if not text.strip() or len(text) > 4096 or "\0" in text:
+        return None
+    path = Path(text)
+    path = (path if path.is_absolute() else folder / path).resolve()
+    try:
+        return path if stat.S_ISREG(os.stat(path).st_mode) else None
+    except (OSError, ValueError):
+        return None
 
 
 def _strip(exc: Exception) -> str:
@@ -721,12 +789,20 @@ def _design(study: Study, st: StudyTable, where: str) -> None:
         if study.design == "sobol" and (st.samples & (st.samples - 1)):
             raise InputError(f"{where}: study.samples = {st.samples} for design 'sobol' must "
                              "be a power of 2 (Sobol' sequence), e.g. 64")
+    # the size is checked before anything is generated (samples = 1e10 is a slip, not a job)
+    grid = math.prod(len(f.values) for f in study.grid_factors)
+    n_runs = grid * (doe.sample_count(study.design, st.samples, len(sampled))
+                     if study.sampled else 1)
+    if n_runs > st.max_runs:
+        shape = " x ".join([*(f"{len(f.values)} {f.name}" for f in study.grid_factors),
+                            *([f"{n_runs // grid} samples"] if study.sampled else [])])
+        raise InputError(f"{where}: the study has {n_runs} runs ({shape}), more than "
+                         f"study.max_runs = {st.max_runs}; raise max_runs (at most "
+                         f"{MAX_RUNS_LIMIT}) to run it")
+    if study.sampled:
         u = doe.unit_samples(study.design, st.samples, len(sampled), st.seed)
         study.sample_values = np.column_stack([
             doe.ppf(u[:, j], f.distribution, **f.params) for j, f in enumerate(sampled)])
-    if study.n_runs > st.max_runs:
-        raise InputError(f"{where}: the study has {study.n_runs} runs, more than "
-                         f"study.max_runs = {st.max_runs}; raise max_runs to run it")
 
 
 def _check_factor_values(study: Study, where: str) -> None:

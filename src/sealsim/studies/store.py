@@ -55,7 +55,7 @@ class WorkFolder:
         self.runs = self.path / "runs"
 
     def start(self, fingerprint: str, source: str, n_runs: int, *, resume: bool,
-              discard: bool) -> set[int]:
+              discard: bool, files: dict[str, str] | None = None) -> set[int]:
         """Open the work folder for a study; returns the indices of runs already finished.
 
         Parameters
@@ -66,6 +66,9 @@ class WorkFolder:
             Reuse the runs of an interrupted run of the same study.
         discard : bool
             (without ``resume``) drop the runs of an interrupted study (``--force``).
+        files : dict, optional
+            ``{path: content hash}`` of the files the study's case references (part of the
+            fingerprint); a resume refused because one changed names it.
 
         Raises
         ------
@@ -85,11 +88,15 @@ class WorkFolder:
             if resume:
                 self._drop_unreadable()
                 if old.get("fingerprint") != fingerprint:
+                    before, now = old.get("files") or {}, files or {}
+                    changed = sorted(p for p in {*before, *now} if before.get(p) != now.get(p))
+                    why = (f"; changed since: {', '.join(map(repr, changed))}" if changed
+                           else "")
                     raise InputError(
                         f"cannot resume: the {finished} finished runs in {str(self.path)!r} "
                         f"belong to another study or to an earlier version of this one "
-                        f"({old.get('source', 'unknown source')}); run it without --resume "
-                        "and with --force to start over")
+                        f"({old.get('source', 'unknown source')}){why}; run it without "
+                        "--resume and with --force to start over")
                 return self.indices()
             if not discard and finished:
                 raise ResultExistsError(
@@ -99,7 +106,7 @@ class WorkFolder:
             shutil.rmtree(self.path)
         self.runs.mkdir(parents=True)
         atomic_write_bytes(meta, json.dumps({
-            "fingerprint": fingerprint, "source": source, "runs": n_runs,
+            "fingerprint": fingerprint, "source": source, "runs": n_runs, "files": files or {},
             "sealsim_version": __version__, "started": time.strftime("%Y-%m-%dT%H:%M:%S%z"),
         }, indent=2).encode("utf-8"))
         return set()

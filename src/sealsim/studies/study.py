@@ -114,38 +114,54 @@ def compute_runs(study: Study, work: WorkFolder, *, workers: int | None = None,
         ``engine`` (its description), ``computed`` and ``reused`` run counts.
     """
     counts = {"computed": 0, "failed": 0}
-    finished = work.start(study.fingerprint(), str(study.source), study.n_runs, resume=resume,
-                          discard=discard)
-    reused = len(finished)
+    files = study.file_digests()
+    fingerprint = study.fingerprint(files)
+    # the engine first: a bad --scheduler or --workers is refused before the work folder exists
     with open_engine(workers, scheduler, client) as engine:
+        finished = work.start(fingerprint, str(study.source), study.n_runs, resume=resume,
+                              discard=discard, files=files)
+        reused = len(finished)
         engine_info = engine.describe()
-        template = RunTemplate(
-            model=study.model, documents=study.documents,
-            link_names={key: path.name for key, path in study.link_files.items()},
-            base_dir=str(study.base_dir),
-            series_variables=tuple(study.series.variables) if study.series else (),
-            series_interval=study.series_interval,
-            map_workers=None if engine.client is None else 1)
         check = _OutputCheck(study)
-        counts["failed"] = sum(1 for i in finished if work.load(i)["status"] != "ok")
-
-        def store(record: dict) -> None:
-            work.save(record)
-            counts["computed"] += 1
-            counts["failed"] += record["status"] != "ok"
-            if progress:
-                progress("runs", reused + counts["computed"], study.n_runs, counts["failed"])
-            check(record)
-
-        jobs = [(i, study.assignments(i)) for i in range(study.n_runs) if i not in finished]
-        if progress:
-            progress("runs", reused, study.n_runs, counts["failed"])
-        jobs = _prepare(study, template, engine, jobs, store, progress)
-        engine.run(template, jobs, store, batch_size=study.batch_size)
+        try:
+            _compute(study, work, engine, finished, counts, check, progress)
+        except BaseException:
+            if not work.indices():      # nothing finished: leave no empty work folder behind
+                work.remove()
+            raise
     records = [work.load(i) for i in range(study.n_runs)]
     for record in records:
         check(record)
     return records, {"engine": engine_info, "computed": counts["computed"], "reused": reused}
+
+
+def _compute(study: Study, work: WorkFolder, engine, finished: set[int], counts: dict,
+             check: _OutputCheck, progress) -> None:
+    """Compute the runs not in ``finished`` on ``engine``, each stored in ``work`` (and
+    checked) when it finishes."""
+    reused = len(finished)
+    template = RunTemplate(
+        model=study.model, documents=study.documents,
+        link_names={key: path.name for key, path in study.link_files.items()},
+        base_dir=str(study.base_dir),
+        series_variables=tuple(study.series.variables) if study.series else (),
+        series_interval=study.series_interval,
+        map_workers=None if engine.client is None else 1)
+    counts["failed"] = sum(1 for i in finished if work.load(i)["status"] != "ok")
+
+    def store(record: dict) -> None:
+        work.save(record)
+        counts["computed"] += 1
+        counts["failed"] += record["status"] != "ok"
+        if progress:
+            progress("runs", reused + counts["computed"], study.n_runs, counts["failed"])
+        check(record)
+
+    jobs = [(i, study.assignments(i)) for i in range(study.n_runs) if i not in finished]
+    if progress:
+        progress("runs", reused, study.n_runs, counts["failed"])
+    jobs = _prepare(study, template, engine, jobs, store, progress)
+    engine.run(template, jobs, store, batch_size=study.batch_size)
 
 
 def _prepare(study, template, engine, jobs, store, progress) -> list:

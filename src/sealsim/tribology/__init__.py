@@ -8,9 +8,14 @@
 * :mod:`.contact` -- share of the lip load carried by the shaft's asperities across the film
   (Greenwood & Williamson 1966), Hertz line contact;
 * :mod:`.rubber_friction` -- Grosch's master curve of rubber friction over the WLF-shifted
-  sliding speed (:class:`GroschMasterCurve`).
+  sliding speed (:class:`GroschMasterCurve`);
+* :mod:`.inverse_hydrodynamics` -- the film of a reciprocating seal from its contact pressure
+  profile (Blok; Müller & Nau 1998; Kanters 1990), the flow and fluid transport per stroke;
+* :mod:`.mixed_lubrication` -- asperity load share (Greenwood–Williamson with the rubber's
+  modulus) and the friction of a reciprocating seal from its contact pressure profile.
 
-The rotary lip seal model (:mod:`sealsim.rotary.friction`) composes them.
+The rotary lip seal model (:mod:`sealsim.rotary.friction`) and the friction tables of
+reciprocating seals (:mod:`sealsim.pneumatic.friction_tables`) compose them.
 
 >>> from sealsim.tribology import film_ratio
 >>> float(film_ratio(0.5e-6, 0.25e-6))
@@ -19,8 +24,10 @@ The rotary lip seal model (:mod:`sealsim.rotary.friction`) composes them.
 
 from sealsim.tribology.contact import (
     asperity_load_share,
+    asperity_pressure,
     greenwood_williamson_integral,
     hertz_line_half_width,
+    separation_at_asperity_pressure,
 )
 from sealsim.tribology.film import (
     EHL_EXPONENT,
@@ -35,6 +42,19 @@ from sealsim.tribology.film import (
     film_ratio,
     film_thickness,
     soft_ehl_load_modulus_factor,
+)
+from sealsim.tribology.inverse_hydrodynamics import (
+    film_at_pressure_maximum,
+    film_left_on_surface,
+    flow_per_circumference,
+    ihl_film_profile,
+    max_inlet_gradient,
+    stroke_transport,
+)
+from sealsim.tribology.mixed_lubrication import (
+    ContactFriction,
+    ihl_load_share,
+    reciprocating_friction,
 )
 from sealsim.tribology.rubber_friction import (
     DEFAULT_MASTER_CURVE,
@@ -53,9 +73,20 @@ __all__ = [
     "SKF_FIT_COEFFICIENT",
     "SKF_FIT_EXPONENT",
     "SKF_FIT_RANGE",
+    "ContactFriction",
     "FilmRangeWarning",
     "GroschMasterCurve",
     "asperity_load_share",
+    "asperity_pressure",
+    "film_at_pressure_maximum",
+    "film_left_on_surface",
+    "flow_per_circumference",
+    "ihl_film_profile",
+    "ihl_load_share",
+    "max_inlet_gradient",
+    "reciprocating_friction",
+    "separation_at_asperity_pressure",
+    "stroke_transport",
     "film_coefficient_matching_fit",
     "film_range_note",
     "film_ratio",

@@ -67,10 +67,11 @@ SOFT_EHL_MODULUS_EXPONENT = -0.42
 #: Lip load per unit circumference of the seal the film law was measured on [N/m]: the paper
 #: does not give it; sealsim takes its default lip, 0.15 N/mm (an assumption).
 FILM_REFERENCE_LOAD = 150.0
-#: Quasi-static Young's modulus of that seal's lip [Pa]: 5 MPa, a 75 Shore A NBR lip between
-#: 20 and 80 °C (the catalogue NBR at 0.01 Hz: 5.6 MPa at 20 °C, 4.4 MPa at 80 °C); an
+#: Held (relaxed, one hour) Young's modulus of that seal's lip [Pa]: 4 MPa, a 75 Shore A NBR
+#: lip between 20 and 80 °C (the catalogue NBR's held modulus: 4.1 MPa at 20 °C, 3.8 MPa at
+#: 80 °C; sealsim's convention for a held seal, properties.elastomers.HELD_SEAL_TIME); an
 #: assumption like the load.
-FILM_REFERENCE_MODULUS = 5.0e6
+FILM_REFERENCE_MODULUS = 4.0e6
 
 
 class FilmRangeWarning(UserWarning):
@@ -158,7 +159,7 @@ def soft_ehl_load_modulus_factor(load_per_length, modulus, reference_load=FILM_R
     load_per_length : array_like
         Radial lip load per unit circumference W′ = F_tip/(π·D) [N/m].
     modulus : array_like
-        Quasi-static Young's modulus of the lip rubber E [Pa].
+        Held (relaxed) Young's modulus of the lip rubber E [Pa].
     reference_load : float
         W′ of the seal the film law was measured on [N/m].
     reference_modulus : float
@@ -171,7 +172,7 @@ def soft_ehl_load_modulus_factor(load_per_length, modulus, reference_load=FILM_R
 
     Examples
     --------
-    >>> round(float(soft_ehl_load_modulus_factor(300.0, 5e6)), 3)  # twice the load
+    >>> round(float(soft_ehl_load_modulus_factor(300.0, 4e6)), 3)  # twice the load
     0.859
     """
     load = np.asarray(load_per_length, dtype=float) / reference_load

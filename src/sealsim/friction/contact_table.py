@@ -1,0 +1,239 @@
+r"""The steady friction of a seal from its own contact, tabulated: the plain-array table the
+friction laws take their steady curve from.
+
+A seal's steady friction per unit circumference comes from its contact pressure profile
+p_c(z) by inverse hydrodynamics and mixed lubrication
+(:func:`sealsim.tribology.mixed_lubrication.reciprocating_friction`) at every temperature,
+pressure difference and speed; :mod:`sealsim.pneumatic.friction_tables` builds the table from
+a seal's contact map and caches it.  The table stores, per stroke direction (+: the counter
+surface slides towards +z of the seal's profile, −: back):
+
+==================  ======  ==========================================================
+variable            unit    meaning
+==================  ======  ==========================================================
+asperity_load_pos   N/m     load carried by the asperities, α·F'_N (boundary friction
+                            μ_b·α·F'_N: μ_b is applied when the table is read, so a
+                            calibration can fit it without rebuilding the table)
+viscous_pos         N/m     viscous friction ∫ η·u/h + h/2·(1 − α)·dp/dz dz
+asperity_load_neg   N/m     the same for the other direction
+viscous_neg         N/m
+film_pos, film_neg  m       film at the pressure maximum h*
+==================  ======  ==========================================================
+
+over the axes temperature [K], pressure difference [Pa] and log10 of the speed [m/s].  The
+friction of a seal of sliding diameter D at speed v > 0 is
+
+    F(v) = π·D·[μ_b·asperity_load_pos + viscous_pos](T, Δp, log10 v)
+
+(and with the ``_neg`` columns for v < 0, with the sign of v).  Between the nodes the table is
+the C¹ tensor-product cubic Hermite interpolant with monotone PCHIP node slopes (Fritsch &
+Carlson 1980), the interpolant of the FE maps (:class:`sealsim.structure.maps.HermiteGrid`);
+outside its axes it is clamped (below the slowest speed the contact is boundary lubricated and
+its values hardly change).  The table is plain arrays -- an int64 layout row and one float64
+array (:meth:`SteadyFrictionTable.tables`) -- read by the compiled kernel
+:func:`contact_table_point`, by numba code and by C alike.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+from numba import njit
+
+from sealsim.errors import InputError
+
+__all__ = ["TABLE_VARIABLES", "SteadyFrictionTable", "contact_table_point"]
+
+#: variables of the table, in the order of its last axis (see the module docstring)
+TABLE_VARIABLES = ("asperity_load_pos", "viscous_pos", "asperity_load_neg", "viscous_neg",
+                   "film_pos", "film_neg")
+#: layout row: n_T, n_p, n_u, n_vars (the data array holds the three axes, then the cell
+#: coefficients, shape (n_T - 1, n_p - 1, n_u - 1, 4, 4, 4, n_vars), C order)
+_ROW = 4
+
+
+@njit(cache=True)
+def _hermite(t, q):
+    """Cubic Hermite basis function q (h00, h10, h01, h11) at t in [0, 1]."""
+    t2 = t * t
+    t3 = t2 * t
+    if q == 0:
+        return 2 * t3 - 3 * t2 + 1
+    if q == 1:
+        return t3 - 2 * t2 + t
+    if q == 2:
+        return -2 * t3 + 3 * t2
+    return t3 - t2
+
+
+@njit(cache=True)
+def _locate(data, pos, n, x):
+    """(cell index, local coordinate in [0, 1]) of x on the axis data[pos:pos + n], clamped."""
+    lo, hi = data[pos], data[pos + n - 1]
+    x = min(max(x, lo), hi)
+    i = np.searchsorted(data[pos:pos + n], x, side="right") - 1
+    if i < 0:
+        i = 0
+    elif i > n - 2:
+        i = n - 2
+    return i, (x - data[pos + i]) / (data[pos + i + 1] - data[pos + i])
+
+
+@njit(cache=True)
+def contact_table_point(row, data, temperature, pressure, speed):
+    """(asperity load [N/m], viscous friction [N/m], film [m]) of the stroke direction of
+    ``speed`` at (T [K], Δp [Pa], |speed| [m/s]), the table clamped to its axes; all zero at
+    speed = 0.  ``row``/``data``: :meth:`SteadyFrictionTable.tables`."""
+    if speed == 0.0:
+        return 0.0, 0.0, 0.0
+    nt, npr, nu, nv = row[0], row[1], row[2], row[3]
+    i, a = _locate(data, 0, nt, temperature)
+    j, b = _locate(data, nt, npr, pressure)
+    k, c = _locate(data, nt + npr, nu, math.log10(abs(speed)))
+    off = 0 if speed > 0.0 else 2
+    base = nt + npr + nu + (((i * (npr - 1) + j) * (nu - 1) + k) * 64) * nv
+    load = 0.0
+    visc = 0.0
+    film = 0.0
+    for q0 in range(4):
+        w0 = _hermite(a, q0)
+        for q1 in range(4):
+            w01 = w0 * _hermite(b, q1)
+            for q2 in range(4):
+                w = w01 * _hermite(c, q2)
+                cell = base + ((q0 * 4 + q1) * 4 + q2) * nv
+                load += w * data[cell + off]
+                visc += w * data[cell + off + 1]
+                film += w * data[cell + 4 + off // 2]
+    return load, visc, film
+
+
+@njit(cache=True)
+def _table_many(row, data, temperature, pressure, speed, load, visc, film):
+    for n in range(speed.shape[0]):
+        load[n], visc[n], film[n] = contact_table_point(row, data, temperature[n], pressure[n],
+                                                        speed[n])
+
+
+@dataclass
+class SteadyFrictionTable:
+    """A seal's steady friction per unit circumference over (T, Δp, log10 u) and direction.
+
+    Parameters
+    ----------
+    temperature : array_like
+        Temperature axis [K], ascending (>= 2 values).
+    pressure : array_like
+        Pressure-difference axis [Pa], ascending (>= 2 values).
+    speed : array_like
+        Speed axis [m/s], > 0, ascending (>= 2 values; interpolated in log10 u).
+    values : numpy.ndarray
+        Shape (n_T, n_p, n_u, 6): :data:`TABLE_VARIABLES` per unit circumference.
+    attrs : dict
+        Where the table came from (JSON-friendly), stored with it.
+
+    Examples
+    --------
+    >>> t, p, u = [290.0, 300.0], [0.0, 1e5], [1e-3, 1e-2, 1e-1]
+    >>> values = np.zeros((2, 2, 3, 6))
+    >>> values[..., 0] = values[..., 2] = 100.0        # asperities carry 100 N/m
+    >>> values[..., 1] = values[..., 3] = np.array(u) * 50.0
+    >>> table = SteadyFrictionTable(t, p, u, values)
+    >>> load, viscous, film = table.evaluate([0.01, -0.1], 1e5, 295.0)
+    >>> load.tolist(), viscous.round(3).tolist()
+    ([100.0, 100.0], [0.5, 5.0])
+    """
+
+    temperature: np.ndarray
+    pressure: np.ndarray
+    speed: np.ndarray
+    values: np.ndarray
+    attrs: dict = field(default_factory=dict)
+
+    def __post_init__(self):
+        self.temperature = np.asarray(self.temperature, dtype=float)
+        self.pressure = np.asarray(self.pressure, dtype=float)
+        self.speed = np.asarray(self.speed, dtype=float)
+        self.values = np.asarray(self.values, dtype=float)
+        shape = (self.temperature.size, self.pressure.size, self.speed.size,
+                 len(TABLE_VARIABLES))
+        if self.values.shape != shape:
+            raise InputError(f"friction table values have shape {self.values.shape}, "
+                             f"expected {shape}")
+        if np.any(self.speed <= 0):
+            raise InputError("friction table speeds must be > 0")
+        if not np.all(np.isfinite(self.values)):
+            raise InputError("friction table values contain NaN or inf")
+
+    @property
+    def ranges(self) -> dict[str, tuple[float, float]]:
+        """(min, max) of each axis in SI units."""
+        return {"temperature": (float(self.temperature[0]), float(self.temperature[-1])),
+                "pressure": (float(self.pressure[0]), float(self.pressure[-1])),
+                "speed": (float(self.speed[0]), float(self.speed[-1]))}
+
+    def tables(self):
+        """(int64 row, float64 data) of :func:`contact_table_point` (built once)."""
+        cached = self.__dict__.get("_tables")
+        if cached is None:
+            from sealsim.structure.maps import HermiteGrid
+
+            axes = [self.temperature, self.pressure, np.log10(self.speed)]
+            grid = HermiteGrid(axes, self.values)
+            row = np.array([a.size for a in axes] + [len(TABLE_VARIABLES)], dtype=np.int64)
+            data = np.concatenate(axes + [np.ascontiguousarray(grid.coeff).reshape(-1)])
+            cached = self.__dict__["_tables"] = (row, data)
+        return cached
+
+    def evaluate(self, speed, pressure, temperature):
+        """(asperity load [N/m], viscous friction [N/m], film [m]) at signed speeds [m/s],
+        pressure differences [Pa] and temperatures [K] (broadcast; clamped to the axes)."""
+        row, data = self.tables()
+        u, p, t = (np.array(a, dtype=float) for a in np.broadcast_arrays(
+            np.asarray(speed, dtype=float), np.asarray(pressure, dtype=float),
+            np.asarray(temperature, dtype=float)))
+        out = [np.empty(u.shape) for _ in range(3)]
+        _table_many(row, data, t.reshape(-1), p.reshape(-1), u.reshape(-1),
+                    *(o.reshape(-1) for o in out))
+        return tuple(out)
+
+    def steady_force(self, speed, pressure, temperature, diameter, boundary_friction):
+        """Steady friction force F = π·D·(μ_b·load + viscous)·sgn(v) [N]."""
+        load, viscous, _ = self.evaluate(speed, pressure, temperature)
+        return np.pi * diameter * (boundary_friction * load + viscous) * np.sign(speed)
+
+    # -- storage ---------------------------------------------------------------------------
+    def to_dataset(self):
+        """The table as an :class:`xarray.Dataset` (netCDF-ready)."""
+        import json
+
+        import xarray as xr
+
+        dims = ("temperature", "pressure", "speed")
+        units = {"asperity_load": "N/m", "viscous": "N/m", "film": "m"}
+        variables = {name: (dims, self.values[..., k],
+                            {"units": units[name.rsplit("_", 1)[0]]})
+                     for k, name in enumerate(TABLE_VARIABLES)}
+        coords = {"temperature": ("temperature", self.temperature, {"units": "K"}),
+                  "pressure": ("pressure", self.pressure, {"units": "Pa"}),
+                  "speed": ("speed", self.speed, {"units": "m/s"})}
+        return xr.Dataset(variables, coords=coords,
+                          attrs={"title": "sealsim steady friction table of a seal (per unit "
+                                          "circumference, from its contact pressure profile)",
+                                 "parameters": json.dumps(self.attrs, sort_keys=True)})
+
+    @classmethod
+    def from_dataset(cls, dataset) -> SteadyFrictionTable:
+        """Read a table written by :meth:`to_dataset`."""
+        import json
+
+        missing = [v for v in TABLE_VARIABLES if v not in dataset.data_vars]
+        if missing:
+            raise InputError(f"friction table lacks the variable(s) {missing}")
+        values = np.stack([dataset[v].transpose("temperature", "pressure", "speed").values
+                           for v in TABLE_VARIABLES], axis=-1)
+        return cls(dataset["temperature"].values, dataset["pressure"].values,
+                   dataset["speed"].values, values,
+                   json.loads(dataset.attrs.get("parameters", "{}")))

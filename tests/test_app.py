@@ -1,0 +1,228 @@
+"""``sealsim app`` driven in a real headless Chromium (Debian's ``chromium`` and
+``chromium-driver``, through Selenium): every number on a page is the API's number, the gland
+page names the failed check, a broken upload shows the command line's error, two tabs keep
+their runs apart.  One server and one browser per test session (the tests share the xdist
+group "browser"); the screenshots go to docs/_static/app/ for the documentation's app page.
+"""
+
+from __future__ import annotations
+
+import io
+import json
+import os
+import shutil
+import urllib.request
+import zipfile
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+import sealsim
+from sealsim.cli import app as cli
+
+ROOT = Path(__file__).resolve().parents[1]
+EXAMPLES = ROOT / "examples"
+SHOTS = ROOT / "docs" / "_static" / "app"
+CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
+DRIVER = shutil.which("chromedriver")
+WAIT = 90  # s: a case run starts a fresh Python process on a busy 2-core machine
+
+pytestmark = pytest.mark.xdist_group("browser")
+
+
+@pytest.fixture(scope="session")
+def server(tmp_path_factory):
+    from sealsim.app import start_server
+
+    server, url = start_server(run_timeout=300,
+                               work_dir=tmp_path_factory.mktemp("app") / "jobs")
+    yield url
+    server.shutdown()
+    server.app.extensions["sealsim_jobs"].close()
+
+
+@pytest.fixture(scope="session")
+def browser():
+    if not (CHROMIUM and DRIVER):
+        message = ("the browser tests need Debian's chromium and chromium-driver "
+                   "(apt-get install chromium chromium-driver; .ci/run installs them)")
+        if os.environ.get("CI"):
+            pytest.fail(message)      # CI must run them, never skip
+        pytest.skip(message)
+    from selenium import webdriver
+    from selenium.webdriver.chrome.service import Service
+
+    options = webdriver.ChromeOptions()
+    options.binary_location = CHROMIUM
+    for arg in ("--headless=new", "--no-sandbox", "--disable-dev-shm-usage",
+                "--window-size=1300,1500", "--disable-gpu"):
+        options.add_argument(arg)
+    driver = webdriver.Chrome(service=Service(DRIVER), options=options)
+    yield driver
+    driver.quit()
+
+
+def _wait(driver, condition, timeout=WAIT):
+    from selenium.webdriver.support.ui import WebDriverWait
+
+    return WebDriverWait(driver, timeout, poll_frequency=0.2).until(condition)
+
+
+def _visible(element_id):
+    return lambda d: (d.find_element("id", element_id).is_displayed()
+                      and d.find_element("id", element_id))
+
+
+def _shot(driver, name):
+    SHOTS.mkdir(parents=True, exist_ok=True)
+    driver.save_screenshot(str(SHOTS / f"{name}.png"))
+
+
+def _open(driver, url, tab):
+    driver.get(url)
+    _wait(driver, lambda d: d.find_elements("css selector", "#lip-oil option"))
+    driver.find_element("id", f"tab-{tab}").click()
+
+
+def _set(driver, element_id, value):
+    from selenium.webdriver.support.ui import Select
+
+    element = driver.find_element("id", element_id)
+    if element.tag_name == "select":
+        Select(element).select_by_value(value)
+    else:
+        element.clear()
+        element.send_keys(value)
+
+
+def test_lip_seal_page_shows_the_api_torque(server, browser):
+    _open(browser, server, "lip")
+    for element_id, value in (("lip-diameter", "60"), ("lip-speed", "2000"),
+                              ("lip-oil", "VG220-mineral"), ("lip-sump-mode", "held"),
+                              ("lip-sump", "70"), ("lip-ambient", "25"),
+                              ("lip-material", "FKM"), ("lip-style", "wave")):
+        _set(browser, element_id, value)
+    browser.find_element("id", "lip-run").click()
+    torque = _wait(browser, _visible("lip-torque"))
+    expected = sealsim.lip_seal_torque("60 mm", "2000 rpm", "VG220-mineral", "70 degC",
+                                       material="FKM", lip_style="wave",
+                                       ambient_temperature="25 degC")
+    # the page keeps the API's number (data-value, JSON round trip: exact) and shows it
+    # to 4 significant digits
+    assert float(torque.get_attribute("data-value")) == expected["torque_Nm"]
+    assert float(torque.text) == pytest.approx(expected["torque_Nm"], rel=5e-4)
+    contact = browser.find_element("id", "lip-tcontact")
+    assert float(contact.get_attribute("data-value")) == expected["T_contact_C"]
+    assert browser.find_element("id", "lip-notes").find_elements("tag name", "li")
+    _wait(browser, _visible("lip-curve"))
+    # the download is a rotary case that validates and names the same operating point
+    text = browser.execute_async_script(
+        "const done = arguments[0];"
+        "fetch(document.getElementById('lip-download').href).then(r => r.text()).then(done);")
+    import tomllib
+
+    from sealsim.cases import validate_case
+    from sealsim.rotary.case import RotaryCase
+
+    case = validate_case(RotaryCase, tomllib.loads(text), "downloaded case")
+    assert case.seal.lip_style == "wave" and case.duty.steps[0].speed * 30 / 3.141592653589793 \
+        == pytest.approx(2000.0)
+    _shot(browser, "lip_seal")
+
+
+def test_gland_page_names_the_failed_check_of_an_example(server, browser):
+    _open(browser, server, "gland")
+    _set(browser, "gland-example", "rod_extrusion_fails")
+    browser.find_element("id", "gland-load").click()
+    _wait(browser, lambda d: "H11" in d.find_element("id", "gland-toml").get_attribute("value"))
+    browser.find_element("id", "gland-check").click()
+    _wait(browser, _visible("gland-result"))
+    assert browser.find_element("id", "gland-failed").text == "extrusion_gap"
+    row = browser.find_element("css selector", "#gland-checks tr[data-name='extrusion_gap']")
+    assert row.get_attribute("class") == "fail"
+    expected = sealsim.oring_gland(EXAMPLES / "gland" / "rod_extrusion_fails.toml")
+    cell = browser.find_element("id", "gland-squeeze_percent-min")
+    assert float(cell.get_attribute("data-value")) == expected["squeeze_percent"]["min"]
+    notes = browser.find_element("id", "gland-notes").text
+    assert "extrusion_gap fails" in notes
+    _wait(browser, _visible("gland-figure"))
+    _shot(browser, "gland")
+
+
+def test_broken_upload_shows_the_command_lines_error(server, browser, tmp_path,
+                                                     monkeypatch):
+    broken = (EXAMPLES / "rotary" / "speed_cycle.toml").read_text().replace(
+        'shaft_diameter = "80 mm"', 'shaft_diameter = "80 kg"')
+    (tmp_path / "case.toml").write_text(broken)
+    monkeypatch.chdir(tmp_path)
+    result = CliRunner().invoke(cli, ["rotary", "run", "case.toml", "--out", "out"])
+    assert result.exit_code == 2
+    cli_message = " ".join(result.output.split())
+    upload = tmp_path / "my broken case (copy).toml"   # the name never becomes a path
+    upload.write_text(broken)
+    _open(browser, server, "run")
+    browser.find_element("id", "run-file").send_keys(str(upload))
+    browser.find_element("id", "run-start").click()
+    error = _wait(browser, _visible("run-error"))
+    assert " ".join(error.text.split()) == cli_message
+    assert "80 kg" in cli_message
+    _shot(browser, "run_error")
+
+
+def test_two_tabs_run_cases_and_see_only_their_own_results(server, browser, tmp_path):
+    cases = {"gland": EXAMPLES / "gland" / "piston_static.toml",
+             "friction": EXAMPLES / "friction" / "lugre_presliding.toml"}
+    first = browser.current_window_handle
+    browser.switch_to.new_window("tab")
+    second = browser.current_window_handle
+    for handle, path in zip((first, second), cases.values()):
+        browser.switch_to.window(handle)
+        _open(browser, server, "run")
+        browser.find_element("id", "run-file").send_keys(str(path))
+        browser.find_element("id", "run-start").click()
+    files, zips = {}, {}
+    for handle, kind in zip((first, second), cases):
+        browser.switch_to.window(handle)
+        _wait(browser, _visible("run-zip"))
+        files[kind] = [a.text for a in browser.find_elements("css selector", "#run-files a")]
+        zips[kind] = browser.find_element("id", "run-zip").get_attribute("href")
+        if kind == "gland":
+            _shot(browser, "run_case")
+    assert "section.png" in files["gland"] and "force_velocity.png" not in files["gland"]
+    assert "force_velocity.png" in files["friction"] and "section.png" not in files["friction"]
+    assert zips["gland"] != zips["friction"]
+    with urllib.request.urlopen(zips["gland"]) as response:
+        archive = zipfile.ZipFile(io.BytesIO(response.read()))
+    report = json.loads(archive.read("result/report.json"))
+    assert report["title"].startswith("Static piston gland")
+    # the plots are the run's own files, shown on the page
+    images = browser.find_elements("css selector", "#run-plots img")
+    assert images and all(img.get_attribute("naturalWidth") != "0" for img in images)
+    browser.close()
+    browser.switch_to.window(first)
+
+
+def test_friction_page_shows_the_api_numbers(server, browser):
+    _open(browser, server, "friction")
+    browser.find_element("id", "fr-run").click()
+    force = _wait(browser, _visible("fr-fn"))
+    expected = sealsim.seal_friction({"cord_diameter": "2 mm", "squeeze": 0.12,
+                                      "elastomer": "NBR"}, "0.001 m/s", "6 bar", "20 degC",
+                                     law={"law": "lugre", "parameter_set": "canudas1995"},
+                                     diameter="12 mm")
+    assert float(force.get_attribute("data-value")) == expected["normal_force_N"]
+    _wait(browser, lambda d: d.find_element("id", "fr-figure").get_attribute("naturalWidth")
+          not in (None, "0"))
+    _shot(browser, "friction")
+
+
+@pytest.mark.slow
+def test_gland_fe_runs_with_progress(server, browser):
+    _open(browser, server, "gland")
+    _set(browser, "gland-example", "rod_reciprocating")
+    browser.find_element("id", "gland-load").click()
+    _wait(browser, lambda d: "[fe]" in d.find_element("id", "gland-toml").get_attribute("value"))
+    browser.find_element("id", "gland-fe").click()
+    cell = _wait(browser, _visible("fe-fn0"), timeout=300)
+    assert float(cell.get_attribute("data-value")) > 0

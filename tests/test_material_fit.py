@@ -1,0 +1,422 @@
+"""Material fits (sealsim material fit): hyperelastic, viscoelastic, thermal; compound files.
+
+References: FElupe's own evaluation of the strain energies, closed-form Drucker matrices,
+synthetic data from known parameters (recovered within two standard errors), Treloar's 1944
+data (Ogden 1972's result), pyvisco's own shift factors of its example data, the FE force of
+the same constants entered by hand.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from sealsim.calibration.hyperelastic_fit import Curve, fit_hyperelastic
+from sealsim.calibration.material_fit import fit_expansion, fit_material_file
+from sealsim.calibration.viscoelastic_fit import (
+    DMAData,
+    fit_prony,
+    fit_shift_law,
+    isotherm_shifts,
+    master_curve,
+)
+from sealsim.errors import InputError
+from sealsim.properties.elastomers import get_elastomer
+from sealsim.properties.hyperelastic import MODES, nominal_stress
+from sealsim.properties.viscoelasticity import prony_loss_modulus, prony_storage_modulus
+from sealsim.structure.hyperelastic import drucker_stable, felupe_nominal_stress
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+
+PARAMS = {
+    "neo_hooke": {"mu": 0.5e6},
+    "mooney_rivlin": {"C10": 0.3e6, "C01": 0.08e6},
+    "yeoh": {"C10": 0.25e6, "C20": -3e3, "C30": 80.0},
+    "ogden": {"mu": [0.4e6, 2e4], "alpha": [1.5, 4.5]},
+    "arruda_boyce": {"C1": 0.4e6, "limit": 4.0},
+    "third_order_deformation": {"C10": 0.2e6, "C01": 0.02e6, "C11": -200.0, "C20": -2e3,
+                                "C30": 60.0},
+}
+
+
+@pytest.mark.parametrize("model", sorted(PARAMS))
+def test_closed_form_stresses_are_felupes(model):
+    # the fit uses closed forms; the FE uses FElupe's energies: they must be the same law.
+    # 1e-9 for invariant models; Ogden through FElupe's eigenvalues, whose automatic
+    # derivative at equal stretches (the lateral pair of uniaxial, the equibiaxial pair) is
+    # perturbed by tensortrax: 1e-3 there (1e-8 in planar, equal only at λ = 1)
+    lam = np.linspace(0.4, 4.0, 25)
+    for mode in MODES:
+        l = lam if mode == "uniaxial" else lam[lam >= 1.0]
+        a = nominal_stress(model, PARAMS[model], mode, l)
+        b = felupe_nominal_stress(model, PARAMS[model], mode, l)
+        tol = 1e-9 if model != "ogden" else 1e-8 if mode == "planar" else 1e-3
+        assert np.max(np.abs(a - b)) <= tol * np.max(np.abs(b)), (model, mode)
+
+
+def test_drucker_check_against_closed_form_ogden():
+    # for Ogden the Drucker matrix in log strains is diagonal, D_ii = sum_k 2 mu_k lam_i^a_k
+    # (Ogden 1972): stable where its projection on sum(d eps) = 0 is positive definite
+    mu, alpha = [0.5e6, -0.2e6], [2.0, 4.0]
+    params = {"mu": mu, "alpha": alpha}
+    basis = np.array([[1, -1, 0], [1, 1, -2]]) / np.array([[2 ** 0.5], [6 ** 0.5]])
+    from sealsim.properties.hyperelastic import principal_stretches
+    for mode in MODES:
+        lam = np.linspace(1.0, 2.5, 40)
+        got = drucker_stable("ogden", params, mode, lam)
+        p = principal_stretches(mode, lam)
+        want = []
+        for k in range(lam.size):
+            d = np.diag([sum(2 * m * p[i, k] ** a for m, a in zip(mu, alpha)) for i in range(3)])
+            want.append(np.linalg.eigvalsh(basis @ d @ basis.T).min() > 0)
+        assert got.tolist() == want, mode
+    assert not all(drucker_stable("ogden", params, "equibiaxial", [2.5]))
+
+
+def _synthetic(model, params, modes, rng, noise=0.01, points=14):
+    curves = []
+    for mode in modes:
+        lam = np.linspace(1.1, 3.5 if mode == "uniaxial" else 2.5, points)
+        p = nominal_stress(model, params, mode, lam)
+        curves.append(Curve(mode, mode, lam, p * (1 + noise * rng.standard_normal(lam.size))))
+    return curves
+
+
+@pytest.mark.parametrize("model", ["neo_hooke", "mooney_rivlin", "yeoh", "ogden",
+                                   "arruda_boyce"])
+def test_synthetic_truth_is_recovered_within_two_standard_errors(model):
+    # 1 % relative noise, 12 seeds: a correct standard error puts 95 % of the estimates within
+    # 2 s.e.; at least 80 % required (binomial: fewer than 1e-3 false alarms), none beyond 5
+    # (Gauss-Newton errors of the nonlinear, correlated Ogden exponents reach 4.2 s.e.)
+    rng = np.random.default_rng(20250)
+    truth = PARAMS[model]
+    flat = np.concatenate([np.ravel(truth[k]) for k in truth])
+    inside, total = 0, 0
+    for _ in range(12):
+        fit = fit_hyperelastic(_synthetic(model, truth, MODES, rng), model,
+                               terms=2 if model == "ogden" else None)
+        assert fit.identifiable.all(), fit.reasons
+        z = np.abs(fit.values - flat) / fit.standard_errors
+        assert np.all(z < 5.0), (model, fit.values, fit.standard_errors)
+        inside += int(np.sum(z <= 2.0))
+        total += z.size
+    assert inside / total >= 0.8, (model, inside, total)
+
+
+def test_a_second_ogden_term_from_uniaxial_data_alone_is_reported_unidentifiable():
+    rng = np.random.default_rng(7)
+    curves = _synthetic("ogden", {"mu": [0.4e6], "alpha": [2.0]}, ["uniaxial"], rng,
+                        noise=0.005)
+    fit = fit_hyperelastic(curves, "ogden2")
+    assert not fit.identifiable.all()
+    assert any("not identifiable" in n for n in fit.notes)
+    report = fit.report()["parameters"]
+    assert any(not p["identifiable"] for p in report.values())
+    # while one term on the same data is determined
+    assert fit_hyperelastic(curves, "ogden1").identifiable.all()
+
+
+def test_bad_curves_are_refused():
+    with pytest.raises(InputError, match="tension test"):
+        Curve("x", "equibiaxial", np.array([0.9, 1.1]), np.array([-1.0, 1.0]))
+    with pytest.raises(InputError, match="mode"):
+        Curve("x", "shear", np.array([1.1, 1.2]), np.array([1.0, 2.0]))
+
+
+@pytest.fixture(scope="module")
+def treloar():
+    return fit_material_file(EXAMPLES / "materials" / "treloar_ogden.toml")
+
+
+def test_treloar_ogden3_follows_all_three_modes(treloar):
+    # Ogden (1972): three terms follow Treloar's three modes. Target 5 % RMS relative error:
+    # met beyond 5 % strain on all three; with the first point of each curve (λ <= 1.03,
+    # where a stretch reading error of 0.005 is 17 % of λ − 1) equibiaxial and planar give
+    # 7.0 % and 9.0 % (the three modes' smallest-strain points imply initial moduli 30 %
+    # apart; no smooth energy meets them all) -- pinned here so a worse fit fails
+    modes = treloar.report["modes"]
+    for mode in MODES:
+        assert modes[mode]["role"] == "fit"
+        assert modes[mode]["rel_rmse_beyond_small_strain"] <= 0.05, mode
+    assert modes["uniaxial"]["rel_rmse"] <= 0.051
+    assert modes["equibiaxial"]["rel_rmse"] <= 0.071
+    assert modes["planar"]["rel_rmse"] <= 0.091
+    assert treloar.hyperelastic.label == "ogden3"
+    # Ogden's classic exponents: one near 1.3, one near 5, one negative near -2
+    alpha = sorted(treloar.hyperelastic.parameters["alpha"])
+    assert alpha[0] < -1.0 and 1.0 < alpha[1] < 1.6 and 4.0 < alpha[2] < 6.0
+
+
+def test_treloar_mooney_rivlin_from_uniaxial_misses_equibiaxial(treloar):
+    cmp = treloar.report["comparisons"]["mooney_rivlin (uniaxial)"]
+    assert cmp["modes"]["uniaxial"]["role"] == "fit"
+    assert cmp["modes"]["equibiaxial"]["role"] == "validate"
+    assert cmp["modes"]["equibiaxial"]["rel_rmse"] > 1.0   # predicted, off by > 100 %
+    # and the report says where it is unstable (C01 < 0 from uniaxial data)
+    unstable = treloar.report["unstable_models"]["mooney_rivlin (uniaxial)"]
+    assert unstable["equibiaxial"]["stable_to"] < 1.5
+    assert "ogden3" not in treloar.report["unstable_models"]
+
+
+def test_report_has_the_shape_of_the_issue(treloar):
+    r = treloar.report
+    assert set(r) >= {"model", "parameters", "modes"}
+    for p in r["parameters"].values():
+        assert {"value", "stderr"} <= set(p)
+    for m in r["modes"].values():
+        assert {"rel_rmse", "r2"} <= set(m)
+
+
+def test_compound_file_round_trips_and_names_its_sources(treloar, tmp_path):
+    path = tmp_path / "treloar_nr.toml"
+    path.write_text(treloar.compound_text)
+    e = get_elastomer(str(path))
+    assert e.hyperelastic[0] == "ogden"
+    mu = dict(e.hyperelastic[1])["mu"]
+    assert mu == pytest.approx(treloar.hyperelastic.parameters["mu"], rel=1e-7)
+    assert 2 * (e.c10 + e.c01) == pytest.approx(sum(mu), rel=1e-7)
+    assert "catalogue NBR [L]" in treloar.compound_text
+    assert "fitted by sealsim material fit" in treloar.compound_text
+
+
+# -- viscoelastic ------------------------------------------------------------------------------
+
+def _dma_truth(rng, noise=0.005):
+    t_ref, c1, c2 = 296.15, 8.86, 101.6
+    tau = 10.0 ** np.arange(-9.0, 4.01, 0.5)
+    e_i = 40e6 * np.exp(-0.5 * ((np.log10(tau) + 3.0) / 2.0) ** 2)
+    e_inf = 3e6
+    temps = np.arange(253.15, 354.0, 10.0)
+    f = np.logspace(-1, 2, 10)
+    T, F = np.repeat(temps, f.size), np.tile(f, temps.size)
+    log_a = -c1 * (T - t_ref) / (c2 + T - t_ref)
+    w = 2 * np.pi * F * 10 ** log_a
+    e1 = prony_storage_modulus(w, e_inf, e_i, tau) * (1 + noise * rng.standard_normal(T.size))
+    e2 = prony_loss_modulus(w, e_inf, e_i, tau) * (1 + noise * rng.standard_normal(T.size))
+    return DMAData(T, F, e1, e2), (c1, c2, t_ref)
+
+
+def test_wlf_fit_recovers_c1_c2_within_two_standard_errors():
+    # shift factors with stated standard errors (0.05 decades) around the true WLF law
+    t_ref, c1, c2 = 296.15, 8.86, 101.6
+    temps = np.arange(253.15, 354.0, 10.0)
+    hits, total = 0, 0
+    for seed in range(20):
+        rng = np.random.default_rng(seed)
+        log_a = -c1 * (temps - t_ref) / (c2 + temps - t_ref) + 0.05 * rng.standard_normal(
+            temps.size) + 0.7
+        fit = fit_shift_law(temps, log_a, np.full(temps.size, 0.05), t_ref, "wlf")
+        for name, true in (("c1", c1), ("c2", c2)):
+            z = abs(fit.parameters[name] - true) / fit.standard_errors[name]
+            assert z < 4.0, (seed, name)
+            hits += z <= 2.0
+            total += 1
+    assert hits / total >= 0.8
+
+
+def test_superposition_of_synthetic_dma_finds_the_wlf_law():
+    # the whole path (shift factors found from the data, then WLF): C1 and C2 within 3 %.
+    # Not within 2 s.e.: the pairwise shifts carry a systematic error of the interpolated
+    # neighbour (about 1.3 % in C1 and C2 here) that their scatter-based errors do not hold
+    for seed in range(3):
+        data, (c1, c2, t_ref) = _dma_truth(np.random.default_rng(seed))
+        temps, log_a, se = isotherm_shifts(data)
+        fit = fit_shift_law(temps, log_a, se, t_ref, "wlf")
+        assert fit.parameters["c1"] == pytest.approx(c1, rel=0.03)
+        assert fit.parameters["c2"] == pytest.approx(c2, rel=0.03)
+
+
+def test_prony_from_synthetic_master_curve():
+    # the Prony series of the superposed synthetic data: E_inf within 2 s.e., E' within 2 %
+    # and E'' within 4 % (noise 0.5 %; the rest is the shift factors' systematic error),
+    # smooth, no ripple
+    data, (c1, c2, t_ref) = _dma_truth(np.random.default_rng(3))
+    temps, log_a, se = isotherm_shifts(data)
+    shift = fit_shift_law(temps, log_a, se, t_ref, "wlf")
+    f_r, e1, e2 = master_curve(data, shift)
+    prony = fit_prony(f_r, e1, e2, terms_per_decade=2)
+    assert prony.smooth and prony.ripple <= 0.01
+    assert prony.rel_rmse["storage"] < 0.02 and prony.rel_rmse["loss"] < 0.04
+    assert abs(prony.equilibrium_modulus - 3e6) <= 2 * prony.standard_errors[0]
+
+
+def test_bilinear_dilatometry_is_recovered_within_two_standard_errors():
+    rng = np.random.default_rng(11)
+    T = np.linspace(180.0, 300.0, 49)
+    eps = np.where(T < 228.0, 7e-5 * (T - 228.0), 2.1e-4 * (T - 228.0))
+    fit = fit_expansion(T, eps + 2e-5 * rng.standard_normal(T.size))
+    for name, true in (("glass_transition", 228.0), ("rubbery", 2.1e-4), ("glassy", 7e-5)):
+        assert abs(getattr(fit, name) - true) <= 2.5 * fit.standard_errors[name], name
+
+
+# pyvisco 2.1.3, pyvisco.master.get_aT on examples/freq_user_raw.csv with RefT = -5 degC
+# (run once outside CI with pyvisco installed; its power-law pairwise shifts)
+PYVISCO_LOG_AT = {-50: 10.236, -42: 9.363, -35: 7.840, -27: 6.095, -20: 4.264, -12: 1.990,
+                  -5: 0.0, 3: -1.911, 10: -3.409, 18: -5.033, 25: -6.689, 32: -8.445,
+                  40: -10.305, 47: -12.101, 55: -13.425, 62: -14.511, 70: -15.457,
+                  77: -16.306, 85: -17.067, 92: -17.750, 100: -18.345}
+
+
+@pytest.fixture(scope="module")
+def pyvisco_fit():
+    return fit_material_file(EXAMPLES / "materials" / "pyvisco_dma.toml")
+
+
+def test_pyvisco_dma_shift_factors_match_pyvisco(pyvisco_fit):
+    # an independent implementation of the same pairwise shifting: within 0.25 decades from
+    # -5 degC up (measured: 0.12 at most); in the glass below -5 degC the storage modulus is
+    # nearly flat and each shift is an extrapolation (measured difference up to 1.6 decades
+    # at -50 degC, within the combined standard errors there)
+    data = pyvisco_fit.dma
+    temps, log_a, se = isotherm_shifts(data)
+    ref = np.interp(273.15 - 5.0, temps, log_a)
+    for (t_c, theirs), ours, s in zip(PYVISCO_LOG_AT.items(), log_a - ref, se):
+        if t_c >= -5:
+            assert abs(ours - theirs) <= 0.25, (t_c, ours, theirs)
+        else:
+            assert abs(ours - theirs) <= 2.0, (t_c, ours, theirs)
+
+
+def test_pyvisco_dma_fit_report(pyvisco_fit):
+    r = pyvisco_fit.report
+    assert r["modes"]["dma"]["rel_rmse"] < 0.08      # E' (measured 6.8 %)
+    assert r["viscoelastic"]["prony_smooth"]
+    # tan delta peak at 1 Hz from the isotherms: the raw data peak lies between the 70 and
+    # 77.5 degC isotherms (0.335 and 0.342)
+    assert 70.0 < r["viscoelastic"]["tan_delta_peak_temperature_K"] - 273.15 < 80.0
+    assert "wlf_c1" in r["parameters"] and "prony_E_inf" in r["parameters"]
+
+
+def test_hardness_alone_is_the_gent_fallback_and_says_so(tmp_path):
+    (tmp_path / "h.toml").write_text(
+        'title = "hardness only"\n[compound]\nname = "h70"\nbase = "NBR"\n'
+        'reference_temperature = "23 degC"\nhardness_shore_a = 70\n')
+    r = fit_material_file(tmp_path / "h.toml")
+    assert "FALLBACK: Gent's Shore A relation" in r.compound_text
+    assert any("weakest" in n for n in r.notes)
+    from sealsim.properties.rubber_modulus import shore_a_young_modulus
+    e = r.compound_table
+    assert e["c10"].endswith("MPa")
+    c10 = float(e["c10"].split()[0]) * 1e6
+    assert 6 * c10 * 1.25 == pytest.approx(float(shore_a_young_modulus(70)), rel=1e-6)
+
+
+# -- end to end: FE of a fitted compound ------------------------------------------------------
+
+STRUCTURE = """
+[seal]
+cord_diameter = "4 mm"
+inner_diameter = "20 mm"
+[gland]
+arrangement = "rod"
+sealing_diameter = "20 mm"
+groove_width = "5.4 mm"
+[mesh]
+level = "coarse"
+[load]
+installation_temperature = "23 degC"
+squeeze = [0.10]
+squeeze_increments = 4
+"""
+
+
+def test_fitted_compound_gives_the_fe_force_of_the_same_constants_by_hand(tmp_path):
+    from sealsim.structure.case import load_structure_cases
+    from sealsim.structure.run import run_case
+
+    rng = np.random.default_rng(5)
+    curves = _synthetic("mooney_rivlin", {"C10": 0.9e6, "C01": 0.2e6}, ["uniaxial"], rng)
+    rows = "\n".join(f"{l:.17g},{p:.17g}" for l, p in zip(curves[0].stretch, curves[0].stress))
+    (tmp_path / "ut.csv").write_text("stretch,stress_Pa\n" + rows + "\n")
+    (tmp_path / "fit.toml").write_text(
+        '[compound]\nname = "my_nbr"\nbase = "NBR"\nreference_temperature = "23 degC"\n'
+        'bulk_modulus = "2000 MPa"\nthermal_expansion = "2e-4 1/K"\n'
+        '[hyperelastic]\nmodel = "mooney_rivlin"\n[[hyperelastic.curves]]\nname = "ut"\n'
+        'mode = "uniaxial"\nfile = "ut.csv"\ndelimiter = ","\nheader = true\n'
+        'columns = { stretch = { column = "stretch", unit = "1" }, '
+        'stress = { column = "stress_Pa", unit = "Pa" } }\n')
+    result = fit_material_file(tmp_path / "fit.toml")
+    (tmp_path / "my_nbr.toml").write_text(result.compound_text)
+    c10, c01 = (result.hyperelastic.parameters[k] for k in ("C10", "C01"))
+    # the same temperature law on both sides: a named compound defaults to the held-seal
+    # modulus (its master curve's relaxation after an hour, about half the test-frequency
+    # constants), which a rubber given only by its constants cannot have
+    (tmp_path / "fitted.toml").write_text(STRUCTURE + '[material]\nelastomer = "my_nbr.toml"\n'
+                                          'temperature_scaling = "entropic"\n')
+    (tmp_path / "by_hand.toml").write_text(
+        STRUCTURE + f'[material]\nc10 = "{c10!r} Pa"\nc01 = "{c01!r} Pa"\n'
+        'bulk_modulus = "2000 MPa"\nthermal_expansion = "2e-4 1/K"\n'
+        'temperature_scaling = "entropic"\n')
+    forces = []
+    for name in ("fitted.toml", "by_hand.toml"):
+        case = next(iter(load_structure_cases(tmp_path / name).values()))
+        forces.append(np.array([s.F_N for s in run_case(case).states]))
+    assert forces[0] == pytest.approx(forces[1], rel=1e-9, abs=0.0)
+
+
+def test_ogden_compound_runs_in_the_fe(treloar, tmp_path):
+    # FElupe's Ogden energy in the seal FE; at 10 % squeeze the force is that of a
+    # neo-Hookean ring of the same initial shear modulus within 15 % (Ogden-3 of Treloar is
+    # nearly neo-Hookean at these strains)
+    from sealsim.structure.case import load_structure_cases
+    from sealsim.structure.run import run_case
+
+    (tmp_path / "nr.toml").write_text(treloar.compound_text)
+    mu0 = treloar.hyperelastic.initial_shear_modulus
+    # (the same temperature law on both sides, as above)
+    (tmp_path / "ogden.toml").write_text(
+        STRUCTURE.replace("23 degC", "20 degC") + '[material]\nelastomer = "nr.toml"\n'
+        'temperature_scaling = "entropic"\n')
+    (tmp_path / "neo.toml").write_text(
+        STRUCTURE.replace("23 degC", "20 degC")
+        + f'[material]\nc10 = "{mu0 / 2!r} Pa"\nc01 = "0 Pa"\nbulk_modulus = "2000 MPa"\n'
+        'thermal_expansion = "1.9e-4 1/K"\n')
+    f = [run_case(next(iter(load_structure_cases(tmp_path / n).values()))).states[-1].F_N
+         for n in ("ogden.toml", "neo.toml")]
+    assert f[0] == pytest.approx(f[1], rel=0.15)
+
+
+# -- command line -----------------------------------------------------------------------------
+
+def test_cli_material_fit_writes_the_folder_and_show_reads_the_compound(tmp_path):
+    from typer.testing import CliRunner
+
+    from sealsim.cli import app
+
+    out = tmp_path / "treloar"
+    runner = CliRunner()
+    res = runner.invoke(app, ["material", "fit",
+                              str(EXAMPLES / "materials" / "treloar_ogden.toml"),
+                              "--out", str(out)])
+    assert res.exit_code == 0, res.output
+    names = {p.name for p in out.iterdir()}
+    assert {"treloar_nr.toml", "report.json", "curves.csv", "hyperelastic_uniaxial.png",
+            "hyperelastic_equibiaxial.png", "hyperelastic_planar.png"} <= names
+    report = json.loads((out / "report.json").read_text())
+    assert report["model"] == "ogden3"
+    again = runner.invoke(app, ["material", "fit",
+                                str(EXAMPLES / "materials" / "treloar_ogden.toml"),
+                                "--out", str(out)])
+    assert again.exit_code == 2 and "--force" in again.output
+    show = runner.invoke(app, ["material", "show", str(out / "treloar_nr.toml"), "--json"])
+    assert show.exit_code == 0, show.output
+    assert json.loads(show.output)["name"] == "treloar_nr"
+    assert not math.isnan(json.loads(show.output)["c10_Pa"])
+
+
+def test_fit_file_inside_the_result_folder_is_refused(tmp_path):
+    from typer.testing import CliRunner
+
+    from sealsim.cli import app
+
+    (tmp_path / "h.toml").write_text(
+        '[compound]\nname = "h70"\nbase = "NBR"\nreference_temperature = "23 degC"\n'
+        'hardness_shore_a = 70\n')
+    res = CliRunner().invoke(app, ["material", "fit", str(tmp_path / "h.toml"), "--out",
+                                   str(tmp_path), "--force"])
+    assert res.exit_code == 2
+    assert (tmp_path / "h.toml").exists()
