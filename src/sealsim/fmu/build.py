@@ -38,6 +38,7 @@ from sealsim.fmu.friction_export import (
     friction_check,
     friction_spec,
     model_identifier,
+    steady_table,
 )
 from sealsim.fmu.model_description import xml_text_problem
 
@@ -53,6 +54,7 @@ def _identifier(name: str | None, out) -> str:
 def build_friction_fmu(law, out, *, contact_map=None, normal_force: float | None = None,
                        contact_width: float | None = None,
                        seal_temperature: float | None = None,
+                       sliding_diameter: float | None = None, velocity_direction: float = 1.0,
                        name: str | None = None, fmi_version: int = 2, kind: str = "both",
                        force: bool = False, compile: bool = True,
                        table: TableSettings | None = None, title: str = "", source: str = "",
@@ -74,6 +76,13 @@ def build_friction_fmu(law, out, *, contact_map=None, normal_force: float | None
     seal_temperature : float, optional
         Start value of the input T_seal [K] (default: the law's reference temperature, where
         the Θ law's γ is γ_ref; else 293.15 K).
+    sliding_diameter : float, optional
+        Diameter of the sliding surface [m] of a Θ law with ``steady = "contact"`` (its
+        friction table is per unit circumference); default the contact map's.
+    velocity_direction : {1, -1}
+        Θ law with ``steady = "contact"``: +1 if a positive v slides the counter surface from
+        side A to side B of the seal (a rod seal, A the chamber), −1 the other way (a piston
+        seal, A the cap-end chamber); the FMU's start value of ``velocity_direction``.
     name : str, optional
         Model identifier (default: from the file name).
     fmi_version : {2, 3}
@@ -97,17 +106,19 @@ def build_friction_fmu(law, out, *, contact_map=None, normal_force: float | None
         raise InputError(f"--kind {kind!r} is not allowed; choose me, cs or both")
     table_settings = table or TableSettings()
     c_parameters(law)                         # a law without C code: refused before work
+    steady = steady_table(law, contact_map, sliding_diameter, velocity_direction)
     tab = None
     if contact_map is not None:
         tab = contact_table(contact_map, table_settings.temperature_points,
                             table_settings.pressure_points)
     spec = friction_spec(law, _identifier(name, out), table=tab, normal_force=normal_force,
                          contact_width=contact_width, seal_temperature=seal_temperature,
-                         title=title, source=source)
+                         steady=steady, title=title, source=source)
     return build_archive(spec, out, fmi_version=fmi_version, kind=kind, force=force,
                          compile=compile,
-                         check=friction_check(law, spec, contact_map, tab, FMI_KINDS[kind]),
-                         document=lambda s: friction_documentation(s, law, tab))
+                         check=friction_check(law, spec, contact_map, tab, FMI_KINDS[kind],
+                                              steady),
+                         document=lambda s: friction_documentation(s, law, tab, steady))
 
 
 def build_cylinder_fmu(case, out, *, name: str | None = None, fmi_version: int = 2,
@@ -343,6 +354,16 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
                                   same=lambda c: repr((c.friction, c.inputs)))
         params = law_override or case.friction
         i = case.inputs
+        if case.seal is not None:                      # a real seal: its contact map
+            from sealsim.pneumatic.bench import bench_contact_map
+
+            side = 1.0 if i.pressure_a >= i.pressure_b else -1.0
+            away = case.seal.positive_velocity == "away_from_pressure"
+            return build_friction_fmu(
+                _law(params), out, contact_map=bench_contact_map(case, base, progress),
+                seal_temperature=i.temperature, sliding_diameter=case.seal.sliding_diameter,
+                velocity_direction=side if away else -side, table=table,
+                title=title or case.title, source=f"{source}, variant {name!r}", **common)
         return build_friction_fmu(
             _law(params), out, normal_force=i.normal_force, contact_width=i.contact_width,
             seal_temperature=i.temperature,
@@ -381,7 +402,11 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
     if contact_map is None and law.name == "theta":
         raise InputError(f"{where}: the theta law needs the seal's normal force and contact "
                          "width; give the seal a map")
+    # the friction FMU's v is the piston velocity: it slides the rod from the rod-end chamber
+    # (side A) out, the bore past a piston seal from the rod-end chamber (side B) to the cap end
     return build_friction_fmu(law, out, contact_map=contact_map, seal_temperature=temperature,
+                              sliding_diameter=diameter if contact_map is not None else None,
+                              velocity_direction=-1.0 if spec.location == "piston" else 1.0,
                               table=table, title=title or f"{case.title}: {seal} seal",
                               source=f"{source}, variant {name!r}, seal {seal!r}", **common)
 
@@ -399,6 +424,7 @@ def _inline_friction(fmu_case: FMUCase, params, path: Path, out, fmi_version, ki
     return build_friction_fmu(
         _law(params), out, contact_map=contact_map, normal_force=contact.normal_force,
         contact_width=contact.contact_width, seal_temperature=contact.temperature,
+        sliding_diameter=contact.sliding_diameter,
         name=fmu_case.fmu.name, fmi_version=fmi_version, kind=kind, force=force,
         compile=compile, table=fmu_case.table, title=fmu_case.title,
         source=f"FMU case {str(path)!r}", inputs=inputs)

@@ -47,7 +47,7 @@ __all__ = ["FMI_KINDS", "BuildResult", "FMUCompileError", "FMUDependencyError",
 #: --kind option -> interfaces
 FMI_KINDS = {"me": ("me",), "cs": ("cs",), "both": ("me", "cs")}
 
-_C_FILES = ("sealsim_fmu.h", "fmu_runtime.c", "hermite.c")
+_C_FILES = ("sealsim_fmu.h", "fmu_runtime.c", "hermite.c", "contact_table.c")
 _GLUE = {2: "fmi2_glue.c", 3: "fmi3_glue.c"}
 _HEADERS = {2: ("fmi2Functions.h", "fmi2FunctionTypes.h", "fmi2TypesPlatform.h"),
             3: ("fmi3Functions.h", "fmi3FunctionTypes.h", "fmi3PlatformTypes.h")}
@@ -220,7 +220,7 @@ def _write_sources(folder: Path, spec: ModelSpec, fmi_version: int, kinds) -> st
         "/* Compile this one file into the FMU's shared library, e.g.\n"
         f" *   cc -shared -fPIC -O2 -std=c99 all.c -o {spec.identifier}.so -lm */\n"
         f"#define FMI_VERSION {fmi_version}\n"
-        f'#include "fmu_runtime.c"\n#include "hermite.c"\n'
+        f'#include "fmu_runtime.c"\n#include "hermite.c"\n#include "contact_table.c"\n'
         + "".join(f'#include "{name}"\n' for name in spec.extra_sources
                   if name.endswith(".c"))
         + f'#include "{spec.model_source}"\n#include "{_GLUE[fmi_version]}"\n', "utf-8")

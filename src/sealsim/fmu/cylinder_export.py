@@ -1,10 +1,12 @@
 """The whole-cylinder FMU: the pneumatic model of :mod:`sealsim.pneumatic` in C.
 
 Chambers, valve (ISO 6358 flows, meter-out throttles, end cushions), seals with their contact
-maps (the analytic estimate exactly, an FE map with its own Hermite grid) and friction laws,
-end stops and load -- the right-hand side of :mod:`sealsim.pneumatic.rhs`, ported line by line
-to ``c/cylinder_model.c`` and fed with the very tables of
-:class:`sealsim.pneumatic.system.PneumaticSystem` (written into ``config.h``).  Co-simulation
+maps (the analytic estimate exactly, an FE map with its own Hermite grid), friction laws and
+friction tables (a Θ law with ``steady = "contact"``: the seal's steady friction from its
+contact, read by ``c/contact_table.c``), end stops and load -- the right-hand side of
+:mod:`sealsim.pneumatic.rhs`, ported line by line to ``c/cylinder_model.c`` and fed with the
+very tables of :class:`sealsim.pneumatic.system.PneumaticSystem` (written into ``config.h``;
+the friction tables in their node layout).  Co-simulation
 integrates with ``c/bdf.c``, the C port of the BDF method of :mod:`sealsim.ode.bdf` that
 ``sealsim pneumatic run`` uses, and locates the stick/slip events inside the communication
 step; model exchange offers one event indicator and switches the stick/slip mode in event
@@ -44,7 +46,6 @@ Not in the FMU yet (refused with an :class:`~sealsim.errors.InputError`): seal h
 from __future__ import annotations
 
 import ctypes
-import os
 import subprocess
 import tempfile
 from pathlib import Path
@@ -116,6 +117,7 @@ def cylinder_spec(system, identifier: str, *, title: str = "", source: str = "")
     names = seal_columns(s.name for s in system.seals)
     states = _state_variables(system)
     c, spool, _, seal_int, law_par, seal_therm, map_int, map_data = system.tables[:8]
+    fric_int, fric_data = _friction_tables(system)
     variables = [
         Variable("time", "TIME", "independent", "simulation time", "s"),
         Variable("valve_command", "VALVE_COMMAND", "input",
@@ -205,6 +207,8 @@ def cylinder_spec(system, identifier: str, *, title: str = "", source: str = "")
         _c_matrix("SEAL_THERM", seal_therm),
         _c_matrix("MAP_INT", map_int, "long"),
         _c_array("MAP_DATA", map_data),
+        _c_matrix("FRIC_INT", fric_int, "long"),
+        _c_array("FRIC_DATA", fric_data),
         _c_array("ATOL", atol),
         _c_array("JAC_SCALE", system.tolerances(1.0)[:n]),
         "static const int SEAL_VR[][4] = {" + ", ".join(
@@ -212,7 +216,8 @@ def cylinder_spec(system, identifier: str, *, title: str = "", source: str = "")
     ])
     report = {"model": "pneumatic cylinder", "seals": [
         {"name": s.name, "location": s.location, "law": s.law.name,
-         "contact_map": None if s.contact_map is None else type(s.contact_map).__name__}
+         "contact_map": None if s.contact_map is None else type(s.contact_map).__name__,
+         "friction_table": s.friction_table is not None}
         for s in system.seals], "states": n, "event_indicators": len(indicators),
         "integrator": f"BDF (port of sealsim.ode.bdf), rtol {rtol:g}"}
     description = (f"sealsim pneumatic cylinder ({len(system.seals)} seals"
@@ -222,6 +227,21 @@ def cylinder_spec(system, identifier: str, *, title: str = "", source: str = "")
                      variables, defines, tables, default_experiment=(0.0, duration, 1e-3),
                      report=report | {"source": source}, event_indicators=indicators,
                      extra_sources=["bdf.h", "bdf.c"])
+
+
+def _friction_tables(system):
+    """(FRIC_INT, FRIC_DATA): the seals' friction tables in the node layout of
+    ``c/contact_table.c`` (:meth:`~sealsim.friction.contact_table.SteadyFrictionTable.
+    node_tables`; a row per seal: data offset, then the layout row; zeros without a table)."""
+    rows = np.zeros((len(system.seals), 5), dtype=np.int64)
+    chunks, used = [], 0
+    for i, seal in enumerate(system.seals):
+        if seal.friction_table is not None:
+            row, data = seal.friction_table.node_tables()
+            rows[i, 0], rows[i, 1:] = used, row
+            chunks.append(data)
+            used += data.size
+    return rows, np.concatenate(chunks) if chunks else np.zeros(1)
 
 
 def _c_number(x: float) -> str:

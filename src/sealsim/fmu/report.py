@@ -79,8 +79,9 @@ def _page(spec: ModelSpec, sections: list[tuple[str, str]], figures: list[str]) 
 
 
 # -- seal friction ------------------------------------------------------------------------------
-def friction_documentation(spec: ModelSpec, law, table=None) -> None:
-    """index.html, the steady friction curve and the contact table of a friction FMU."""
+def friction_documentation(spec: ModelSpec, law, table=None, steady=None) -> None:
+    """index.html, the steady friction curve and the contact table of a friction FMU
+    (``steady``: the seal's friction table of a Θ law on its contact)."""
     from sealsim.friction.base import ContactInputs
 
     docs = {}
@@ -94,7 +95,11 @@ def friction_documentation(spec: ModelSpec, law, table=None) -> None:
             i = np.argmin(np.abs(table.table.axes[0] - t_mid))
             j = np.argmin(np.abs(table.table.axes[1] - dp))
             fn, b = table.table.values[i, j]
-            inputs = ContactInputs(normal_force=fn, contact_width=b, pressure_a=dp)
+            if steady is not None:
+                inputs = steady.inputs(fn, b, table.table.axes[1][j], 0.0,
+                                       table.table.axes[0][i])
+            else:
+                inputs = ContactInputs(normal_force=fn, contact_width=b, pressure_a=dp)
             ax.plot(v, law.steady_force(v, inputs),
                     label=f"dp = {table.table.axes[1][j] / 1e5:.3g} bar, "
                           f"T = {table.table.axes[0][i] - ZERO_CELSIUS_K:.0f} degC")

@@ -31,7 +31,8 @@ Carlson 1980), the interpolant of the FE maps (:class:`sealsim.structure.maps.He
 outside its axes it is clamped (below the slowest speed the contact is boundary lubricated and
 its values hardly change).  The table is plain arrays -- an int64 layout row and one float64
 array (:meth:`SteadyFrictionTable.tables`) -- read by the compiled kernel
-:func:`contact_table_point`, by numba code and by C alike.
+:func:`contact_table_point` in numba code; the FMUs' C code reads the same interpolant from
+its node values and derivatives (:meth:`SteadyFrictionTable.node_tables`, 8× smaller).
 """
 
 from __future__ import annotations
@@ -174,18 +175,36 @@ class SteadyFrictionTable:
                 "pressure": (float(self.pressure[0]), float(self.pressure[-1])),
                 "speed": (float(self.speed[0]), float(self.speed[-1]))}
 
+    def _hermite(self):
+        """The interpolant (:class:`sealsim.structure.maps.HermiteGrid`, built once)."""
+        grid = self.__dict__.get("_grid")
+        if grid is None:
+            from sealsim.structure.maps import HermiteGrid
+
+            axes = [self.temperature, self.pressure, np.log10(self.speed)]
+            grid = self.__dict__["_grid"] = HermiteGrid(axes, self.values)
+        return grid
+
     def tables(self):
         """(int64 row, float64 data) of :func:`contact_table_point` (built once)."""
         cached = self.__dict__.get("_tables")
         if cached is None:
-            from sealsim.structure.maps import HermiteGrid
-
-            axes = [self.temperature, self.pressure, np.log10(self.speed)]
-            grid = HermiteGrid(axes, self.values)
-            row = np.array([a.size for a in axes] + [len(TABLE_VARIABLES)], dtype=np.int64)
-            data = np.concatenate(axes + [np.ascontiguousarray(grid.coeff).reshape(-1)])
+            grid = self._hermite()
+            row = np.array([a.size for a in grid.axes] + [len(TABLE_VARIABLES)],
+                           dtype=np.int64)
+            data = np.concatenate(grid.axes + [np.ascontiguousarray(grid.coeff).reshape(-1)])
             cached = self.__dict__["_tables"] = (row, data)
         return cached
+
+    def node_tables(self):
+        """(int64 row, float64 data) of the same interpolant with node values and derivatives
+        instead of cell coefficients -- the three axes, then shape (n_T, n_p, n_u, 8, n_vars)
+        (:attr:`~sealsim.structure.maps.HermiteGrid.node_derivatives`), 8× smaller: the layout
+        of the FMUs' C code (``sealsim/fmu/c/contact_table.c``), which forms each cell's
+        coefficients from it exactly as :class:`~sealsim.structure.maps.HermiteGrid` does."""
+        grid = self._hermite()
+        row = np.array([a.size for a in grid.axes] + [len(TABLE_VARIABLES)], dtype=np.int64)
+        return row, np.concatenate(grid.axes + [grid.node_derivatives.reshape(-1)])
 
     def evaluate(self, speed, pressure, temperature):
         """(asperity load [N/m], viscous friction [N/m], film [m]) at signed speeds [m/s],

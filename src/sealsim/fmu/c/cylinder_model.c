@@ -2,7 +2,8 @@
  * end stops -- the right-hand side of sealsim.pneumatic.rhs in C, with its stick/slip modes.
  *
  * Every function below is a line-by-line port of the compiled (numba) function named next to
- * it; the tables (constants CYL_C[], seal tables, contact maps) are those of
+ * it (a seal's contact friction table: contact_table.c); the tables (constants CYL_C[], seal
+ * tables, contact maps, friction tables) are those of
  * sealsim.pneumatic.system.PneumaticSystem, written into config.h by
  * sealsim.fmu.cylinder_export with the index macros of sealsim.pneumatic.rhs.  The build
  * check compares this right-hand side with the numba one at random states.
@@ -52,6 +53,13 @@ static double theta_rate(double th, double v, double tau, double al, double fn, 
     return -th / tau + fabs(v) / (al * p) * (1.0 - th);
 }
 
+static double theta_steady(double v, double tau, double al, double fn, double fref,
+                           double n) {
+    double speed = fabs(v);
+    if (speed > 0.0) return speed / (speed + al / tau * power(fn / fref, n));
+    return 0.0;
+}
+
 static double walther_viscosity_ratio(double t, double tref, double wa, double wb) {
     double nu = pow(10.0, pow(10.0, wa - wb * log10(t))) - 0.7;
     double nu_ref = pow(10.0, pow(10.0, wa - wb * log10(tref))) - 0.7;
@@ -65,9 +73,11 @@ static double gms_element_rate(double z, double v, double k, double frac, double
     return cc / k * (frac * sv - force / s);
 }
 
-/* sealsim.friction.compiled.law_rates: (force, break-away); the state rates into dz */
+/* sealsim.friction.compiled.law_rates: (force, break-away); the state rates into dz; frow,
+ * fdata, dp, orient: the contact friction table of a Theta law with steady = "contact" */
 static double law_rates(long law, const double *par, const double *z, double vv, double fn,
-                        double b, double pa, double pb, double temp, double *dz, double *brk) {
+                        double b, double pa, double pb, double temp, double *dz, double *brk,
+                        const long *frow, const double *fdata, double dp, double orient) {
     double force = 0.0;
     *brk = 0.0;
     if (law == LAW_COULOMB) {
@@ -98,16 +108,28 @@ static double law_rates(long law, const double *par, const double *z, double vv,
         }
         force = total + par[2] * vv;
     } else if (law == LAW_THETA) {
+        int contact = par[12] > 0.0;
         double gamma = par[4];
-        if (par[11] != 0.0) gamma *= walther_viscosity_ratio(temp, par[9], par[10], par[11]);
-        double th = z[0];
+        if (contact) gamma = 0.0;           /* the table holds the viscous part */
+        else if (par[11] != 0.0) gamma *= walther_viscosity_ratio(temp, par[9], par[10], par[11]);
+        double th = z[0], level;
         fn = fmax(fn, 1e-9);
-        double level = theta_friction_level(th, fn, par[2], par[3]);
+        if (contact) {                      /* compiled._theta_level on the contact table */
+            double fss, fb;
+            contact_steady(frow, fdata, temp, dp, orient * vv, par[15], par[13], &fss, &fb);
+            level = theta_contact_level(th, vv, fss, fb, par[14],
+                                        theta_steady(vv, par[0], par[1], fn, par[5], par[6]));
+        } else {
+            level = theta_friction_level(th, fn, par[2], par[3]);
+        }
         dz[0] = theta_rate(th, vv, par[0], par[1], fn, par[5], par[6]);
         if (par[7] > 0.0) {
             double zdot = lugre_bristle_rate(z[1], vv, par[7], level);
             dz[1] = zdot;
             force = par[7] * z[1] + par[8] * zdot + gamma * b * vv;
+        } else if (contact) {
+            force = level * sgn(vv);
+            *brk = level;
         } else {
             force = level * sgn(vv) + gamma * b * vv;
             *brk = level;
@@ -251,6 +273,14 @@ static double end_stop_force(double x, double v, double stroke, double k, double
 
 static double smooth_abs(double x, double eps) { return x * tanh(x / eps); }
 
+/* friction_tables.table_orientation: the sign that turns the piston velocity into the
+ * direction of a seal's friction table */
+static double table_orientation(long code, double p1, double p2, double pa) {
+    if (code == 0) return p2 > p1 ? 1.0 : -1.0;
+    if (code == 1) return p2 >= pa ? 1.0 : -1.0;
+    return 1.0;
+}
+
 /* -- the right-hand side (rhs.evaluate_column, levels RATES and OUTPUTS) --------------------- */
 typedef struct {
     double x, v, p1, p2, t1, t2, spool, f_press, f_load, f_stop, f_fric, hold, brk;
@@ -370,7 +400,8 @@ static void evaluate(const CylinderData *m, double t, const double *y, int mode,
             vv = d * fmax(d * v, TINY_SPEED);
         }
         double force = law_rates(law, LAW_PAR[i], y + off, vv, fn, b, side_a, side_b, temp, dz,
-                                 &brk);
+                                 &brk, FRIC_INT[i] + 1, FRIC_DATA + FRIC_INT[i][0], dp,
+                                 table_orientation(loc, p1, p2, pa));
         if (rates) {
             int ns = SEAL_NSTATES[i];
             for (int j = 0; j < ns; j++) dy[off + j] = dz[j];

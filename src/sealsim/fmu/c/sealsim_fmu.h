@@ -63,6 +63,19 @@ typedef struct {
 
 void hermite_evaluate(const HermiteTable *t, double a, double b, double *out);
 
+/* a seal's steady friction table from its contact (contact_table.c): the interpolant of
+ * sealsim.friction.contact_table (asperity load [N/m], viscous friction [N/m], film [m] of the
+ * stroke direction of speed), the Theta law's steady curve |F_ss(v)| and boundary level
+ * F_ss(0+) [N] on it, and its friction level */
+void contact_table_point(const long *row, const double *data, double temperature,
+                         double pressure, double speed, double *load, double *visc,
+                         double *film);
+void contact_steady(const long *row, const double *data, double temperature, double pressure,
+                    double oriented_speed, double circumference, double boundary_friction,
+                    double *steady, double *boundary);
+double theta_contact_level(double th, double v, double fss, double fb, double d,
+                           double thss);
+
 #include "config.h"
 
 #if NSTATES > 0
