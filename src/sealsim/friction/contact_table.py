@@ -45,7 +45,8 @@ from numba import njit
 
 from sealsim.errors import InputError
 
-__all__ = ["TABLE_VARIABLES", "SteadyFrictionTable", "contact_table_point"]
+__all__ = ["TABLE_VARIABLES", "SteadyFrictionTable", "cell_sums", "contact_table_point",
+           "speed_cell", "table_cell"]
 
 #: variables of the table, in the order of its last axis (see the module docstring)
 TABLE_VARIABLES = ("asperity_load_pos", "viscous_pos", "asperity_load_neg", "viscous_neg",
@@ -56,30 +57,81 @@ _ROW = 4
 
 
 @njit(cache=True)
-def _hermite(t, q):
-    """Cubic Hermite basis function q (h00, h10, h01, h11) at t in [0, 1]."""
+def _basis(t):
+    """The cubic Hermite basis functions (h00, h10, h01, h11) at t in [0, 1]."""
     t2 = t * t
     t3 = t2 * t
-    if q == 0:
-        return 2 * t3 - 3 * t2 + 1
-    if q == 1:
-        return t3 - 2 * t2 + t
-    if q == 2:
-        return -2 * t3 + 3 * t2
-    return t3 - t2
+    return (2 * t3 - 3 * t2 + 1, t3 - 2 * t2 + t, -2 * t3 + 3 * t2, t3 - t2)
 
 
 @njit(cache=True)
 def _locate(data, pos, n, x):
-    """(cell index, local coordinate in [0, 1]) of x on the axis data[pos:pos + n], clamped."""
+    """(cell index, local coordinate in [0, 1]) of x on the axis data[pos:pos + n], clamped:
+    the last node <= x (numpy.searchsorted side="right", minus 1), at most the last cell."""
     lo, hi = data[pos], data[pos + n - 1]
     x = min(max(x, lo), hi)
-    i = np.searchsorted(data[pos:pos + n], x, side="right") - 1
-    if i < 0:
-        i = 0
-    elif i > n - 2:
-        i = n - 2
+    a, b = 0, n
+    while a < b:
+        mid = (a + b) >> 1
+        if x < data[pos + mid]:
+            b = mid
+        else:
+            a = mid + 1
+    i = min(max(a - 1, 0), n - 2)
     return i, (x - data[pos + i]) / (data[pos + i + 1] - data[pos + i])
+
+
+#: basis weights of a coordinate on the cell's first node (t = 0)
+_ON_NODE = (1.0, 0.0, 0.0, 0.0)
+
+
+@njit(cache=True)
+def table_cell(row, data, temperature, pressure):
+    """(i, weights, j, weights) of the temperature and pressure cell of (T [K], Δp [Pa]), the
+    table clamped to its axes: the part of a lookup that :func:`contact_steady
+    <sealsim.friction.compiled.contact_steady>` shares between its speeds."""
+    nt = row[0]
+    i, a = _locate(data, 0, nt, temperature)
+    j, b = _locate(data, nt, row[1], pressure)
+    return i, _basis(a), j, _basis(b)
+
+
+@njit(cache=True)
+def cell_sums(row, data, i, wa, j, wb, k, wc, off, film):
+    """Σ w·coefficient over the 64 basis terms of cell (i, j, k) with the axis weights wa,
+    wb, wc: (asperity load, viscous friction, film -- with ``film``, else 0) of the stroke
+    direction ``off`` (0: "+", 2: "−").  Terms of weight 0 (a coordinate on a node, e.g.
+    clamped below the slowest speed) add exactly 0 and are skipped."""
+    npr, nu, nv = row[1], row[2], row[3]
+    base = row[0] + npr + nu + (((i * (npr - 1) + j) * (nu - 1) + k) * 64) * nv
+    load = 0.0
+    visc = 0.0
+    thick = 0.0
+    for q0 in range(4):
+        w0 = wa[q0]
+        if w0 == 0.0:
+            continue
+        for q1 in range(4):
+            w01 = w0 * wb[q1]
+            if w01 == 0.0:
+                continue
+            for q2 in range(4):
+                w = w01 * wc[q2]
+                if w == 0.0:
+                    continue
+                cell = base + ((q0 * 4 + q1) * 4 + q2) * nv
+                load += w * data[cell + off]
+                visc += w * data[cell + off + 1]
+                if film:
+                    thick += w * data[cell + 4 + off // 2]
+    return load, visc, thick
+
+
+@njit(cache=True)
+def speed_cell(row, data, speed):
+    """(k, weights) of the speed cell of |speed| [m/s] (log10 axis, clamped)."""
+    k, c = _locate(data, row[0] + row[1], row[2], math.log10(abs(speed)))
+    return k, _basis(c)
 
 
 @njit(cache=True)
@@ -89,26 +141,9 @@ def contact_table_point(row, data, temperature, pressure, speed):
     speed = 0.  ``row``/``data``: :meth:`SteadyFrictionTable.tables`."""
     if speed == 0.0:
         return 0.0, 0.0, 0.0
-    nt, npr, nu, nv = row[0], row[1], row[2], row[3]
-    i, a = _locate(data, 0, nt, temperature)
-    j, b = _locate(data, nt, npr, pressure)
-    k, c = _locate(data, nt + npr, nu, math.log10(abs(speed)))
-    off = 0 if speed > 0.0 else 2
-    base = nt + npr + nu + (((i * (npr - 1) + j) * (nu - 1) + k) * 64) * nv
-    load = 0.0
-    visc = 0.0
-    film = 0.0
-    for q0 in range(4):
-        w0 = _hermite(a, q0)
-        for q1 in range(4):
-            w01 = w0 * _hermite(b, q1)
-            for q2 in range(4):
-                w = w01 * _hermite(c, q2)
-                cell = base + ((q0 * 4 + q1) * 4 + q2) * nv
-                load += w * data[cell + off]
-                visc += w * data[cell + off + 1]
-                film += w * data[cell + 4 + off // 2]
-    return load, visc, film
+    i, wa, j, wb = table_cell(row, data, temperature, pressure)
+    k, wc = speed_cell(row, data, speed)
+    return cell_sums(row, data, i, wa, j, wb, k, wc, 0 if speed > 0.0 else 2, True)
 
 
 @njit(cache=True)
