@@ -12,7 +12,22 @@ the same run and on the same signal (sliding at 0.2 m/s, 3 bar on side A, 25 °C
    evaluation at (Δp, T), ``Theta.step`` and ``Theta.force`` -- best of 5 runs of 2 000 steps;
 4. ``ratio`` = python_step_us / fmu_step_us.
 
-Targets: fmu_step_us <= 2 µs and ratio >= 20.  The last line printed is one JSON object.
+Targets: fmu_step_us <= 2 µs and ratio >= 20.
+
+Then the whole-cylinder FMU of the same case (variant T25C, FMI 2.0 co-simulation) over 10 s
+of its command cycle (1 s extend, 1 s retract), in the same run:
+
+5. ``cylinder_fmpy_realtime_factor``: ``fmpy.simulate_fmu`` (FMPy's own co-simulation loop,
+   a host that knows nothing of sealsim) with 20 ms communication steps, best of 7; and the
+   largest difference of the position at the communication points from ``sealsim pneumatic
+   run`` (relative to the stroke);
+6. ``cylinder_core_realtime_factor``: the same 10 s as ten 1 s ``doStep`` calls through FMPy's
+   low-level API (the C integrator and right-hand side alone);
+7. ``cylinder_python_realtime_factor``: ``sealsim pneumatic run`` of the same case (simulate,
+   with its 1 ms output table), best of 7.
+
+Target (issue 27): >= 500x real time as co-simulation in FMPy.  The last line printed is one
+JSON object; the load average of the machine is printed with it.
 """
 
 from __future__ import annotations
@@ -130,5 +145,58 @@ def main() -> dict:
     return result
 
 
+def cylinder() -> dict:
+    """The whole-cylinder FMU against sealsim pneumatic run (items 5-7 above)."""
+    import fmpy
+
+    from sealsim.fmu.cylinder_export import cylinder_system, run_fmu
+    from sealsim.pneumatic.case import load_pneumatic_case_file
+    from sealsim.pneumatic.simulation import run
+
+    case = load_pneumatic_case_file(CASE)["T25C"]
+    case = case.model_copy(update={"controller": case.controller.model_copy(
+        update={"duration": 10.0})})
+    system = cylinder_system(case, CASE.parent)
+    with tempfile.TemporaryDirectory() as folder:
+        path = Path(folder) / "cylinder.fmu"
+        build_fmu(CASE, path, variant="T25C", kind="cs")
+        unpacked = Path(folder) / "unpacked"
+        fmpy.extract(str(path), str(unpacked))
+        run_fmu(system, unpacked, "cs", output_interval=0.02)         # warm-up
+        host_wall = best_of(lambda: run_fmu(system, unpacked, "cs", output_interval=0.02), 7)
+        res = run_fmu(system, unpacked, "cs", output_interval=0.02)
+
+        def core():
+            with LoadedFMU(unpacked) as fmu:
+                fmu.set(valve_command=1.0)
+                fmu.initialize()
+                for k in range(10):
+                    fmu.set(valve_command=1.0 if k % 2 == 0 else -1.0)
+                    fmu.do_step(float(k), 1.0)
+
+        core_wall = best_of(core, 7)
+    python_wall = best_of(lambda: run(system), 7)
+    ref = run(system).timeseries
+    x_ref = np.interp(res["time"], ref["time_s"].to_numpy(), ref["x_m"].to_numpy())
+    x_diff = float(np.max(np.abs(res["x"] - x_ref)) / system.stroke)
+    out = {"cylinder_fmpy_realtime_factor": 10.0 / host_wall,
+           "cylinder_core_realtime_factor": 10.0 / core_wall,
+           "cylinder_python_realtime_factor": 10.0 / python_wall,
+           "cylinder_x_difference_of_stroke": x_diff}
+    print("whole-cylinder FMU (cylinder_32.toml, T25C), 10 s of the command cycle:")
+    print(f"  FMPy simulate_fmu, co-simulation, 20 ms steps: {host_wall * 1e3:.1f} ms, "
+          f"{out['cylinder_fmpy_realtime_factor']:.0f}x real time (target >= 500); position "
+          f"at the communication points within {x_diff:.1e} of the stroke of sealsim")
+    print(f"  ten 1 s doSteps (C integrator and right-hand side): {core_wall * 1e3:.2f} ms, "
+          f"{out['cylinder_core_realtime_factor']:.0f}x real time")
+    print(f"  sealsim pneumatic run (simulate, 1 ms output): {python_wall * 1e3:.1f} ms, "
+          f"{out['cylinder_python_realtime_factor']:.0f}x real time")
+    return out
+
+
 if __name__ == "__main__":
-    print(json.dumps(main()))
+    import os
+
+    load = os.getloadavg()[0]
+    results = main() | cylinder()
+    print(json.dumps({**results, "load_average": round(load, 2)}))

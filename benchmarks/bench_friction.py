@@ -7,15 +7,19 @@
 2. One vectorised evaluation of 1e6 contacts: derivatives + force (+ an exact step) of the Θ
    law with per-contact normal forces, and of LuGre; the slower of the two is reported.
 
-Targets: real-time factor >= 200 on one core, error <= 1 %, 1e6 contacts <= 0.1 s.  The laws
-run through their compiled scalar kernels (sealsim.friction.kernels); the 1e6-contact figures are
-also measured for the frozen numpy implementation of before (tests/reference_v0) in the same run.
-The last line printed is one JSON object.
+3. The stick-slip examples (see :func:`mass_cases`) against the integrators of before.
+
+Targets: real-time factor >= 200 on one core, error <= 1 %, 1e6 contacts <= 0.1 s and (issue
+27) <= the numpy implementation they replaced, the stick-slip examples >= 100x real time.  The
+laws run through their compiled scalar kernels (sealsim.friction.kernels); the 1e6-contact
+figures are also measured for the frozen numpy implementation of before (tests/reference_v0) in
+the same run.  The last line printed is one JSON object.
 """
 
 from __future__ import annotations
 
 import json
+import os
 import sys
 import time
 import warnings
@@ -135,28 +139,67 @@ def vectorised_case(n=1_000_000):
     return times, baseline
 
 
+class _NumpyTheta(Theta):
+    """The Θ law as an object of its own class: simulate_mass runs it through the vectorised
+    stepper of sealsim.friction.hybrid (the stepper of before issue 27)."""
+
+
 def mass_cases():
-    """For information: the driven-mass benches (solve_ivp Radau; stick/slip stepper)."""
-    from sealsim.friction.bench import simulate_mass
+    """The stick-slip examples: examples/friction/lugre_stick_slip.toml (25 s, compiled BDF, with
+    solve_ivp Radau -- the integrator before issue 27 -- as the baseline in the same run) and
+    the dwell_5s variant of theta_dwell.toml (9 s, the compiled stick/slip stepper at 1 ms,
+    against the vectorised stepper of sealsim.friction.hybrid -- the stepper of before issue
+    27, numpy calls per step -- in the same run)."""
+    from sealsim.friction.bench import simulate_mass, summarize
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         lugre = LuGre.from_parameter_set("canudas1995")
     drive = V.validate_python({"kind": "constant", "level": 0.1})
-    t_ss, _ = best_of(lambda: simulate_mass(lugre, 1.0, 25.0, 1e-3, stiffness=2.0,
-                                            drive_velocity=drive), repeat=2)
+
+    def lugre_run(integrator):
+        return simulate_mass(lugre, 1.0, 25.0, 1e-3, stiffness=2.0, drive_velocity=drive,
+                             integrator=integrator)
+
+    lugre_run("auto")                                   # load the compiled code
+    t_ss, new = best_of(lambda: lugre_run("auto"), repeat=3)
+    t_ss_old, old = best_of(lambda: lugre_run("radau"), repeat=1)
+    period_diff = abs(summarize(new)["stick_slip_period_s"] / summarize(old)[
+        "stick_slip_period_s"] - 1.0)
+    force_diff = abs(new.force.max() / old.force.max() - 1.0)
     theta = Theta.from_parameter_set("pneumatic_demo")
     inputs = ContactInputs(normal_force=100.0, contact_width=1e-3)
     drive = V.validate_python({"kind": "piecewise", "times": [0, 2, 2.001, 7, 7.001],
                                "values": [0.02, 0.02, 0.0, 0.0, 0.02]})
-    t_dw, _ = best_of(lambda: simulate_mass(theta, 1.0, 9.0, 1e-3, stiffness=2000.0,
-                                            drive_velocity=drive, inputs=inputs), repeat=2)
-    print(f"LuGre stick-slip, 25 s (Radau, rtol 1e-7): real-time factor {25.0 / t_ss:.0f}x")
-    print(f"Theta dwell, 9 s (stick/slip stepper, 1 ms): real-time factor {9.0 / t_dw:.0f}x")
+
+    def dwell_run():
+        return simulate_mass(theta, 1.0, 9.0, 1e-3, stiffness=2000.0, drive_velocity=drive,
+                             inputs=inputs)
+
+    dwell_run()
+    t_dw, dwell = best_of(dwell_run, repeat=3)
+    old_theta = _NumpyTheta(theta.params)
+    t_dw_old, dwell_old = best_of(lambda: simulate_mass(old_theta, 1.0, 9.0, 1e-3,
+                                                        stiffness=2000.0, drive_velocity=drive,
+                                                        inputs=inputs), repeat=1)
+    dwell_diff = float(np.max(np.abs(dwell.force - dwell_old.force)))
+    print(f"LuGre stick-slip, 25 s (compiled BDF, rtol 1e-7): real-time factor "
+          f"{25.0 / t_ss:.0f}x (solve_ivp Radau before: {25.0 / t_ss_old:.1f}x); period and "
+          f"largest force differ by {period_diff:.1e} and {force_diff:.1e} (relative)")
+    print(f"Theta dwell, 9 s (compiled stick/slip stepper, 1 ms): real-time factor "
+          f"{9.0 / t_dw:.0f}x (stepper before: {9.0 / t_dw_old:.1f}x); largest force "
+          f"difference {dwell_diff:.1e} N")
+    return {"lugre_stick_slip_realtime_factor": round(25.0 / t_ss, 1),
+            "lugre_stick_slip_baseline_realtime_factor": round(25.0 / t_ss_old, 2),
+            "lugre_stick_slip_period_rel_difference": float(f"{period_diff:.2e}"),
+            "theta_dwell_realtime_factor": round(9.0 / t_dw, 1),
+            "theta_dwell_baseline_realtime_factor": round(9.0 / t_dw_old, 2),
+            "theta_dwell_force_difference_N": float(f"{dwell_diff:.2e}")}
 
 
 def main():
-    mass_cases()
+    print(f"load average (1 min) {os.getloadavg()[0]:.2f}")
+    mass = mass_cases()
     lugre_rt, lugre_err, lugre_steps = lugre_case()
     theta_rt, theta_err, theta_steps = theta_case()
     vec, vec_old = vectorised_case()
@@ -174,6 +217,10 @@ def main():
         "theta_max_rel_error": float(f"{theta_err:.3e}"),
         "vectorised_1e6_s": float(f"{max(vec.values()):.4f}"),
         "vectorised_1e6_baseline_s": float(f"{max(vec_old.values()):.4f}"),
+        **{f"{name}_1e6_s": float(f"{t:.4f}") for name, t in vec.items()},
+        **{f"{name}_1e6_baseline_s": float(f"{t:.4f}") for name, t in vec_old.items()},
+        **mass,
+        "load_average": round(os.getloadavg()[0], 2),
     }
     print(json.dumps(result))
 

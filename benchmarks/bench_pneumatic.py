@@ -2,25 +2,35 @@
 
 10 s of the Ø32 example (examples/pneumatic/cylinder_32.toml, variant T25C: Θ-law piston and
 rod seals with analytic contact maps, Coulomb wiper, rectangular command with 1 s steps) on one
-core, with the compiled right-hand side and the baseline -- the former implementation
-(numpy glue around a partly compiled core, friction laws as numpy objects, solve_ivp), kept in
-tests/reference_v0 -- measured in the same run on the same case.  Both are timed as the best of
-three runs after a warm-up run that loads (or compiles) the numba code.  Targets: >= 150x real
-time (stretch >= 500x).  The compiled run must reproduce the baseline's states (printed: the
-largest relative difference; < 1e-9 where numpy's and the C library's exp agree, see
-tests/test_pneumatic_compiled.py).
+core, end to end (``simulate``: integration, sampling of the 1 ms output grid, the result
+table), with the default integrator -- the compiled BDF of sealsim.ode driven by a compiled
+loop (``solver.method = "compiled"``) -- and two baselines measured in the same run on the same
+case: the LSODA driver (scipy's LSODA routine called from Python with the compiled right-hand
+side, the default before issue 27) and the former implementation of before issue 13 (numpy
+glue, friction laws as numpy objects, solve_ivp; tests/reference_v0).  All are timed as the
+best of 7 runs (FE map and seal heating: 5; before issue 13: 3) after a warm-up run that loads
+(or compiles) the numba code: on a shared machine the best run is the one least disturbed.  Targets
+(issue 27): >= 1000x real time with the analytic map, >= 700x with the FE map of the rod seal
+and with seal heating.
 
-For information it also runs 10 s of cylinder_32_fe.toml (the rod seal reads an FE
-characteristic map, built once with FElupe and cached in ``$SEALSIM_CACHE`` or
-~/.cache/sealsim/maps) and 10 s of the example with seal heating.
+Also printed: the largest difference of the states between the compiled run and LSODA, both at
+rtol = 1e-11 (both converged: < 1e-6 relative to each state's range is the target; at the
+default rtol = 1e-5 each method is only as accurate as its tolerance), and the extend and
+retract times of both at the default tolerance.
+
+The FE map of cylinder_32_fe.toml is built once with FElupe and cached in ``$SEALSIM_CACHE`` or
+~/.cache/sealsim/maps.  The load average of the machine is printed: other processes on the
+cores slow every number.
 
     .venv/bin/python benchmarks/bench_pneumatic.py
 
 The last line is one JSON object: ``wall_s``, ``cpu_s``, ``simulated_s``, ``realtime_factor``
-(wall), ``realtime_factor_cpu``, ``baseline_wall_s``, ``baseline_realtime_factor``, ``speedup``
-(wall, same run), ``max_rel_difference``.
+(wall), ``realtime_factor_cpu``, ``lsoda_wall_s``, ``lsoda_realtime_factor``,
+``speedup_vs_lsoda``, ``baseline_wall_s`` (before issue 13), ``baseline_realtime_factor``,
+``speedup``, ``fe_realtime_factor``, ``fe_lsoda_realtime_factor``, ``heating_realtime_factor``,
+``heating_lsoda_realtime_factor``, ``max_rel_difference_tight`` (compiled vs LSODA at rtol
+1e-11), ``load_average``.
 """
-
 from __future__ import annotations
 
 import json
@@ -68,56 +78,92 @@ def _best(fn, repeat=3):
     return best, best_cpu, out
 
 
+def _with(case, **solver):
+    return case.model_copy(update={"solver": case.solver.model_copy(update=solver)})
+
+
+def _states_difference(a, b) -> float:
+    return max(float(np.max(np.abs(a.timeseries[c].to_numpy() - b.timeseries[c].to_numpy()))
+                     / np.max(np.abs(b.timeseries[c].to_numpy()))) for c, _ in STATES)
+
+
 def main() -> None:
+    load = os.getloadavg()[0]
     case = _case(SIMULATED)
     seals = build_seals(case, EXAMPLE.parent)
+    lsoda = _with(case, method="LSODA")
     t0 = time.perf_counter()
-    simulate(_case(0.2), build_seals(_case(0.2), EXAMPLE.parent))
+    short = _case(0.2)
+    simulate(short, build_seals(short, EXAMPLE.parent))
     warm = time.perf_counter() - t0
-    simulate_reference(_case(0.2), build_seals(_case(0.2), EXAMPLE.parent))
-    wall, cpu, result = _best(lambda: simulate(case, seals))
-    base_wall, base_cpu, base = _best(lambda: simulate_reference(case, seals))
-    diff = max(float(np.max(np.abs(result.timeseries[a].to_numpy() - base.timeseries[b].to_numpy()))
-                     / np.max(np.abs(base.timeseries[b].to_numpy()))) for a, b in STATES)
+    simulate(_with(short, method="LSODA"), build_seals(short, EXAMPLE.parent))
+    simulate_reference(_with(short, method="LSODA"), build_seals(short, EXAMPLE.parent))
+    wall, cpu, result = _best(lambda: simulate(case, seals), repeat=7)
+    ls_wall, _, ls = _best(lambda: simulate(lsoda, seals), repeat=7)
+    base_wall, _, _ = _best(lambda: simulate_reference(lsoda, seals))
     stats = result.stats
-    summary = result.summary()
+    summary, ls_summary = result.summary(), ls.summary()
+    print(f"load average (1 min) {load:.2f} on {os.cpu_count()} cores")
     print(f"first call, numba code loaded or compiled (0.2 s simulated): {warm:.2f} s")
-    print(f"10 s of {EXAMPLE.name} [T25C], {stats['steps']} steps, {stats['rhs_evaluations']} "
-          f"RHS evaluations, {stats['jacobian_evaluations']} Jacobians, {stats['segments']} "
-          f"segments, {stats['method']}")
-    print(f"  compiled : best of 3 = {wall:.4f} s wall, {cpu:.4f} s CPU (integration "
-          f"{stats['wall_time_s']:.4f} s), real-time factor {SIMULATED / wall:.0f}x "
+    print(f"10 s of {EXAMPLE.name} [T25C], end to end (simulate):")
+    print(f"  compiled BDF : best of 7 = {wall * 1e3:.2f} ms wall, {cpu * 1e3:.2f} ms CPU "
+          f"(integration {stats['wall_time_s'] * 1e3:.2f} ms; {stats['steps']} steps, "
+          f"{stats['rhs_evaluations']} RHS, {stats['jacobian_evaluations']} Jacobians, "
+          f"{stats['segments']} segments), real-time factor {SIMULATED / wall:.0f}x "
           f"(CPU: {SIMULATED / cpu:.0f}x)")
-    print(f"  baseline : best of 3 = {base_wall:.4f} s wall, {base_cpu:.4f} s CPU (former "
-          f"code), real-time factor {SIMULATED / base_wall:.1f}x (CPU: "
-          f"{SIMULATED / base_cpu:.1f}x)")
-    print(f"  speed-up {base_wall / wall:.1f}x; largest relative difference of the states "
-          f"{diff:.1e}")
-    print(f"extend {summary['extend_time_s']:.4f} s, retract {summary['retract_time_s']:.4f} s, "
-          f"energy balance error {summary['energy_balance_rel_error']:.1e}")
+    print(f"  LSODA        : best of 7 = {ls_wall * 1e3:.2f} ms wall (integration "
+          f"{ls.stats['wall_time_s'] * 1e3:.2f} ms; {ls.stats['steps']} steps), real-time "
+          f"factor {SIMULATED / ls_wall:.0f}x; compiled/LSODA speed-up {ls_wall / wall:.1f}x")
+    print(f"  before issue 13: best of 3 = {base_wall * 1e3:.1f} ms wall, real-time factor "
+          f"{SIMULATED / base_wall:.1f}x; speed-up {base_wall / wall:.1f}x")
+    print(f"  extend {summary['extend_time_s']:.5f} s (LSODA {ls_summary['extend_time_s']:.5f} s)"
+          f", retract {summary['retract_time_s']:.5f} s (LSODA "
+          f"{ls_summary['retract_time_s']:.5f} s), energy balance error "
+          f"{summary['energy_balance_rel_error']:.1e}")
+    tight = _case(2.5)
+    tight_c = simulate(_with(tight, rtol=1e-11), seals)
+    tight_l = simulate(_with(tight, rtol=1e-11, method="LSODA"), seals)
+    diff = _states_difference(tight_c, tight_l)
+    print(f"  states, compiled vs LSODA, both at rtol 1e-11 (2.5 s): largest difference "
+          f"{diff:.1e} of each state's range (default rtol: "
+          f"{_states_difference(result, ls):.1e})")
     fe_case = _case(SIMULATED, FE_EXAMPLE)
     t0 = time.perf_counter()
     fe_seals = build_seals(fe_case, FE_EXAMPLE.parent)    # FE map: built once, then cached
     built = time.perf_counter() - t0
-    fe_wall, _, _ = _best(lambda: simulate(fe_case, fe_seals), repeat=2)
+    simulate(_case(0.2, FE_EXAMPLE), fe_seals)
+    fe_wall, _, _ = _best(lambda: simulate(fe_case, fe_seals), repeat=5)
+    fe_ls_wall, _, _ = _best(lambda: simulate(_with(fe_case, method="LSODA"), fe_seals),
+                             repeat=5)
     print(f"with the FE map of the rod seal ({FE_EXAMPLE.name}): map ready in {built:.1f} s, "
-          f"10 s simulated in {fe_wall:.4f} s, real-time factor {SIMULATED / fe_wall:.0f}x")
+          f"10 s simulated in {fe_wall * 1e3:.2f} ms, real-time factor "
+          f"{SIMULATED / fe_wall:.0f}x (LSODA {SIMULATED / fe_ls_wall:.0f}x)")
     from sealsim.pneumatic.case import ThermalModel
 
     hot_case = _case(SIMULATED, thermal=ThermalModel())
     hot_seals = build_seals(hot_case, EXAMPLE.parent)
     simulate(_case(0.2, thermal=ThermalModel()), build_seals(_case(0.2), EXAMPLE.parent))
-    hot_wall, _, hot = _best(lambda: simulate(hot_case, hot_seals), repeat=2)
-    print(f"with seal heating: 10 s simulated in {hot_wall:.4f} s, real-time factor "
-          f"{SIMULATED / hot_wall:.0f}x (heat balance error "
-          f"{hot.balances['heat_balance_rel_error']:.1e})")
-    print(json.dumps({"wall_s": round(wall, 4), "cpu_s": round(cpu, 4), "simulated_s": SIMULATED,
+    hot_wall, _, hot = _best(lambda: simulate(hot_case, hot_seals), repeat=5)
+    hot_ls_wall, _, _ = _best(lambda: simulate(_with(hot_case, method="LSODA"), hot_seals),
+                              repeat=5)
+    print(f"with seal heating: 10 s simulated in {hot_wall * 1e3:.2f} ms, real-time factor "
+          f"{SIMULATED / hot_wall:.0f}x (LSODA {SIMULATED / hot_ls_wall:.0f}x; heat balance "
+          f"error {hot.balances['heat_balance_rel_error']:.1e})")
+    print(json.dumps({"wall_s": round(wall, 5), "cpu_s": round(cpu, 5), "simulated_s": SIMULATED,
                       "realtime_factor": round(SIMULATED / wall, 1),
                       "realtime_factor_cpu": round(SIMULATED / cpu, 1),
+                      "lsoda_wall_s": round(ls_wall, 5),
+                      "lsoda_realtime_factor": round(SIMULATED / ls_wall, 1),
+                      "speedup_vs_lsoda": round(ls_wall / wall, 2),
                       "baseline_wall_s": round(base_wall, 4),
                       "baseline_realtime_factor": round(SIMULATED / base_wall, 1),
                       "speedup": round(base_wall / wall, 1),
-                      "max_rel_difference": float(f"{diff:.2e}")}))
+                      "fe_realtime_factor": round(SIMULATED / fe_wall, 1),
+                      "fe_lsoda_realtime_factor": round(SIMULATED / fe_ls_wall, 1),
+                      "heating_realtime_factor": round(SIMULATED / hot_wall, 1),
+                      "heating_lsoda_realtime_factor": round(SIMULATED / hot_ls_wall, 1),
+                      "max_rel_difference_tight": float(f"{diff:.2e}"),
+                      "load_average": round(load, 2)}))
 
 
 if __name__ == "__main__":

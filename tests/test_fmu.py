@@ -316,8 +316,8 @@ def test_cli_writes_atomically_and_refuses_an_existing_file(tmp_path, monkeypatc
     kind = runner.invoke(app, args[:4] + [str(tmp_path / "k.fmu"), "--kind", "all"])
     assert kind.exit_code == 2 and "--kind 'all' is not allowed" in kind.output
     bad = runner.invoke(app, ["fmu", "build", str(PNEUMATIC / "cylinder_32.toml"), "--out",
-                              str(tmp_path / "c.fmu")])
-    assert bad.exit_code == 2 and "choose one with --seal" in bad.output
+                              str(tmp_path / "c.fmu")])       # the cylinder: which variant?
+    assert bad.exit_code == 2 and "choose one with --variant" in bad.output
     assert not (tmp_path / "c.fmu").exists()
     failed = runner.invoke(app, ["fmu", "build", str(FRICTION / "theta_dwell.toml"), "--out",
                                  str(tmp_path / "nc.fmu"), "--kind", "cs"],

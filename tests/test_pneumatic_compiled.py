@@ -57,6 +57,7 @@ SCRIPT = textwrap.dedent(r'''
                 s["friction"] = laws[k]
         data = apply_overrides(data, overrides or {})
         data["controller"]["duration"] = f"{duration} s"
+        data["solver"] = {"method": "LSODA"}      # the LSODA driver against the reference
         return load_pneumatic_cases(data)["base"]
 
     def fe_map(path):
@@ -95,6 +96,7 @@ SCRIPT = textwrap.dedent(r'''
     data["seals"][1]["friction"] = dict(THETA)
     data["seals"][1]["map"] = {"file": str(fe_map(sys.argv[3]))}
     data["controller"]["duration"] = "0.5 s"
+    data["solver"] = {"method": "LSODA"}
     runs["fe_map"] = load_pneumatic_cases(data)["base"]
     out = {}
     for label, c in runs.items():

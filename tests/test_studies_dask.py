@@ -39,6 +39,7 @@ stiffness = "2 N/m"
 duration = "3 s"
 time_step = "1 ms"
 drive_velocity = { kind = "constant", level = "0.1 m/s" }
+integrator = "radau"    # scipy's Radau: runs long enough to kill a study half way
 [[factors]]
 name = "mass"
 path = "bench.mass"

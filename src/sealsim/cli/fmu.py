@@ -14,8 +14,8 @@ import typer
 from sealsim.cli._common import console, guarded, variant_progress
 
 fmu_app = typer.Typer(
-    help="FMU export: seal friction and rotary lip seals as FMI 2.0 / 3.0 units for "
-         "system-simulation tools.",
+    help="FMU export: seal friction, whole pneumatic cylinders and rotary lip seals as "
+         "FMI 2.0 / 3.0 units for system-simulation tools.",
     no_args_is_help=True,
     add_completion=False,
     pretty_exceptions_enable=False,
@@ -24,14 +24,16 @@ fmu_app = typer.Typer(
 
 @fmu_app.callback()
 def _fmu() -> None:
-    """FMU export: seal friction and rotary lip seals as FMI 2.0 / 3.0 units."""
+    """FMU export: seal friction, pneumatic cylinders and rotary lip seals as FMI 2.0 / 3.0
+    units."""
 
 
 @fmu_app.command("build")
 @guarded
 def build(
-    case: Path = typer.Argument(..., help="A friction case, a pneumatic case (one seal), a "
-                                          "rotary case, or an FMU case (examples/fmu/)."),
+    case: Path = typer.Argument(..., help="A friction case, a pneumatic case (the whole "
+                                          "cylinder, or one seal with --seal), a rotary case, "
+                                          "or an FMU case (examples/fmu/)."),
     out: Path = typer.Option(..., "--out", "-o", help="The FMU file to write (NAME.fmu; must "
                                                       "not exist unless --force)."),
     fmi: int = typer.Option(2, "--fmi", help="FMI version: 2 or 3."),
@@ -39,7 +41,8 @@ def build(
                                                     "(co-simulation) or both."),
     force: bool = typer.Option(False, "--force", help="Replace an existing FMU file."),
     variant: str = typer.Option(None, "--variant", help="The variant of the case to export."),
-    seal: str = typer.Option(None, "--seal", help="The seal of a pneumatic case to export."),
+    seal: str = typer.Option(None, "--seal", help="The seal of a pneumatic case to export "
+                                                  "(without it: the whole cylinder)."),
     no_compile: bool = typer.Option(False, "--no-compile", help="Write a source-only FMU "
                                                                 "(no binary)."),
     quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress bar."),
@@ -79,6 +82,17 @@ def build(
         if v:
             console.print(f"{label}: torque error max {100 * v['max_torque_rel_error']:.2f} %, "
                           f"contact temperature error max {v['max_T_contact_error_K']:.2f} K")
+    rhs_check = report.get("rhs_check")
+    if rhs_check:
+        worst = max(rhs_check["max_relative_difference"].values())
+        console.print(f"C right-hand side checked against sealsim's compiled one: largest "
+                      f"relative difference {worst:.1e}")
+    cycle = report.get("cycle_check")
+    if cycle:
+        rel = cycle["relative_difference"]
+        console.print(f"co-simulation over the case's cycle against sealsim pneumatic run: "
+                      f"extend time {100 * rel['extend_time_s']:.3f} %, retract time "
+                      f"{100 * rel['retract_time_s']:.3f} %")
     for note in report.get("notes", []):
         console.print(f"[yellow]note:[/yellow] {note}")
     console.print(f"FMU written to {result.path} (documentation/index.html inside)")

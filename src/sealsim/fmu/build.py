@@ -2,9 +2,11 @@
 
 * :func:`build_friction_fmu` -- a friction law object (any of :data:`C_LAWS`) with a contact
   map or a constant contact;
+* :func:`build_cylinder_fmu` -- a whole pneumatic cylinder (chambers, valve, seals, end
+  stops) from its case;
 * :func:`build_rotary_fmu` -- a rotary lip-seal case;
-* :func:`build_fmu` -- a case file: a friction case, a pneumatic case (one seal), a rotary
-  case, or an FMU case (:mod:`sealsim.fmu.case`).
+* :func:`build_fmu` -- a case file: a friction case, a pneumatic case (the whole cylinder, or
+  one seal with ``seal``), a rotary case, or an FMU case (:mod:`sealsim.fmu.case`).
 
 Each checks the output file first, builds in a temporary folder, checks the compiled FMU
 against sealsim's own model, writes the ``.fmu`` atomically and returns a
@@ -36,10 +38,11 @@ from sealsim.fmu.friction_export import (
     friction_check,
     friction_spec,
     model_identifier,
+    steady_table,
 )
 from sealsim.fmu.model_description import xml_text_problem
 
-__all__ = ["build_fmu", "build_friction_fmu", "build_rotary_fmu"]
+__all__ = ["build_cylinder_fmu", "build_fmu", "build_friction_fmu", "build_rotary_fmu"]
 
 RPM = math.pi / 30.0
 
@@ -51,6 +54,7 @@ def _identifier(name: str | None, out) -> str:
 def build_friction_fmu(law, out, *, contact_map=None, normal_force: float | None = None,
                        contact_width: float | None = None,
                        seal_temperature: float | None = None,
+                       sliding_diameter: float | None = None, velocity_direction: float = 1.0,
                        name: str | None = None, fmi_version: int = 2, kind: str = "both",
                        force: bool = False, compile: bool = True,
                        table: TableSettings | None = None, title: str = "", source: str = "",
@@ -72,6 +76,13 @@ def build_friction_fmu(law, out, *, contact_map=None, normal_force: float | None
     seal_temperature : float, optional
         Start value of the input T_seal [K] (default: the law's reference temperature, where
         the Θ law's γ is γ_ref; else 293.15 K).
+    sliding_diameter : float, optional
+        Diameter of the sliding surface [m] of a Θ law with ``steady = "contact"`` (its
+        friction table is per unit circumference); default the contact map's.
+    velocity_direction : {1, -1}
+        Θ law with ``steady = "contact"``: +1 if a positive v slides the counter surface from
+        side A to side B of the seal (a rod seal, A the chamber), −1 the other way (a piston
+        seal, A the cap-end chamber); the FMU's start value of ``velocity_direction``.
     name : str, optional
         Model identifier (default: from the file name).
     fmi_version : {2, 3}
@@ -95,17 +106,51 @@ def build_friction_fmu(law, out, *, contact_map=None, normal_force: float | None
         raise InputError(f"--kind {kind!r} is not allowed; choose me, cs or both")
     table_settings = table or TableSettings()
     c_parameters(law)                         # a law without C code: refused before work
+    steady = steady_table(law, contact_map, sliding_diameter, velocity_direction)
     tab = None
     if contact_map is not None:
         tab = contact_table(contact_map, table_settings.temperature_points,
                             table_settings.pressure_points)
     spec = friction_spec(law, _identifier(name, out), table=tab, normal_force=normal_force,
                          contact_width=contact_width, seal_temperature=seal_temperature,
-                         title=title, source=source)
+                         steady=steady, title=title, source=source)
     return build_archive(spec, out, fmi_version=fmi_version, kind=kind, force=force,
                          compile=compile,
-                         check=friction_check(law, spec, contact_map, tab, FMI_KINDS[kind]),
-                         document=lambda s: friction_documentation(s, law, tab))
+                         check=friction_check(law, spec, contact_map, tab, FMI_KINDS[kind],
+                                              steady),
+                         document=lambda s: friction_documentation(s, law, tab, steady))
+
+
+def build_cylinder_fmu(case, out, *, name: str | None = None, fmi_version: int = 2,
+                       kind: str = "both", force: bool = False, compile: bool = True,
+                       base_dir: str | Path = ".", title: str = "", source: str = "",
+                       inputs=()) -> BuildResult:
+    """Build the FMU of a whole pneumatic cylinder (:mod:`sealsim.fmu.cylinder_export`).
+
+    Parameters
+    ----------
+    case : PneumaticCase
+        The case (one variant); its seals' contact maps are built or read first.
+    out : path
+        The ``.fmu`` file.
+    base_dir : path
+        Folder that relative map paths of the case refer to.
+    name, fmi_version, kind, force, compile, title, source, inputs
+        As for :func:`build_friction_fmu`.
+    """
+    from sealsim.fmu.cylinder_export import cylinder_check, cylinder_spec, cylinder_system
+    from sealsim.fmu.report import cylinder_documentation
+
+    check_output(out, force, inputs)
+    _check_title(title or case.title, source)
+    if kind not in FMI_KINDS:
+        raise InputError(f"--kind {kind!r} is not allowed; choose me, cs or both")
+    system = cylinder_system(case, base_dir)
+    spec = cylinder_spec(system, _identifier(name, out), title=title or case.title,
+                         source=source)
+    return build_archive(spec, out, fmi_version=fmi_version, kind=kind, force=force,
+                         compile=compile, check=cylinder_check(system, spec, FMI_KINDS[kind]),
+                         document=cylinder_documentation)
 
 
 def _check_title(title: str, source: str) -> None:
@@ -237,7 +282,8 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
     ----------
     path : path
         A friction case (``[friction]`` + ``[bench]``: the law with the constant contact of
-        its ``[inputs]``), a pneumatic case (the law and contact map of one seal), a rotary
+        its ``[inputs]``), a pneumatic case (the whole cylinder, or with ``seal`` the law and
+        contact map of that seal), a rotary
         case (the lip-seal FMU), or an FMU case (``[fmu]``, see :mod:`sealsim.fmu.case`).
     out : path
         The ``.fmu`` file; refused if it exists, unless ``force``.
@@ -245,7 +291,7 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
     kind : {"me", "cs", "both"}
     variant, seal : str, optional
         Which variant of the case, which seal of a pneumatic case (also ``fmu.variant``,
-        ``fmu.seal`` of an FMU case).
+        ``fmu.seal`` of an FMU case; without a seal: the whole cylinder).
     compile : bool
         False: a source-only FMU.
     progress : callable, optional
@@ -308,6 +354,16 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
                                   same=lambda c: repr((c.friction, c.inputs)))
         params = law_override or case.friction
         i = case.inputs
+        if case.seal is not None:                      # a real seal: its contact map
+            from sealsim.pneumatic.bench import bench_contact_map
+
+            side = 1.0 if i.pressure_a >= i.pressure_b else -1.0
+            away = case.seal.positive_velocity == "away_from_pressure"
+            return build_friction_fmu(
+                _law(params), out, contact_map=bench_contact_map(case, base, progress),
+                seal_temperature=i.temperature, sliding_diameter=case.seal.sliding_diameter,
+                velocity_direction=side if away else -side, table=table,
+                title=title or case.title, source=f"{source}, variant {name!r}", **common)
         return build_friction_fmu(
             _law(params), out, normal_force=i.normal_force, contact_width=i.contact_width,
             seal_temperature=i.temperature,
@@ -316,15 +372,15 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
     from sealsim.pneumatic.case import body_temperature, build_contact_map, load_pneumatic_cases
 
     cases = load_pneumatic_cases(data, source)
+    if seal is None:                                   # the whole cylinder
+        if law_override is not None:
+            raise InputError("[friction] and fmu.friction_file replace the law of one seal: "
+                             "give fmu.seal (or --seal) to export that seal")
+        name, case = _one_variant(cases, variant, source, same=lambda c: repr(c))
+        return build_cylinder_fmu(case, out, base_dir=base, title=title or case.title,
+                                  source=f"{source}, variant {name!r}", **common)
     name, case = _one_variant(cases, variant, source, same=lambda c: repr(c.seals))
     seals = {s.name: s for s in case.seals}
-    if not seals:
-        raise InputError(f"{source} has no [[seals]] to export")
-    if seal is None:
-        if len(seals) > 1:
-            raise InputError(f"{source} has the seals {', '.join(seals)}; choose one with "
-                             "--seal (or fmu.seal)")
-        seal = next(iter(seals))
     if seal not in seals:
         raise InputError(f"{source}: there is no seal {seal!r}; choose one of "
                          f"{', '.join(seals)}")
@@ -346,7 +402,11 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
     if contact_map is None and law.name == "theta":
         raise InputError(f"{where}: the theta law needs the seal's normal force and contact "
                          "width; give the seal a map")
+    # the friction FMU's v is the piston velocity: it slides the rod from the rod-end chamber
+    # (side A) out, the bore past a piston seal from the rod-end chamber (side B) to the cap end
     return build_friction_fmu(law, out, contact_map=contact_map, seal_temperature=temperature,
+                              sliding_diameter=diameter if contact_map is not None else None,
+                              velocity_direction=-1.0 if spec.location == "piston" else 1.0,
                               table=table, title=title or f"{case.title}: {seal} seal",
                               source=f"{source}, variant {name!r}, seal {seal!r}", **common)
 
@@ -364,6 +424,7 @@ def _inline_friction(fmu_case: FMUCase, params, path: Path, out, fmi_version, ki
     return build_friction_fmu(
         _law(params), out, contact_map=contact_map, normal_force=contact.normal_force,
         contact_width=contact.contact_width, seal_temperature=contact.temperature,
+        sliding_diameter=contact.sliding_diameter,
         name=fmu_case.fmu.name, fmi_version=fmi_version, kind=kind, force=force,
         compile=compile, table=fmu_case.table, title=fmu_case.title,
         source=f"FMU case {str(path)!r}", inputs=inputs)

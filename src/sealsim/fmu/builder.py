@@ -47,7 +47,7 @@ __all__ = ["FMI_KINDS", "BuildResult", "FMUCompileError", "FMUDependencyError",
 #: --kind option -> interfaces
 FMI_KINDS = {"me": ("me",), "cs": ("cs",), "both": ("me", "cs")}
 
-_C_FILES = ("sealsim_fmu.h", "fmu_runtime.c", "hermite.c")
+_C_FILES = ("sealsim_fmu.h", "fmu_runtime.c", "hermite.c", "contact_table.c")
 _GLUE = {2: "fmi2_glue.c", 3: "fmi3_glue.c"}
 _HEADERS = {2: ("fmi2Functions.h", "fmi2FunctionTypes.h", "fmi2TypesPlatform.h"),
             3: ("fmi3Functions.h", "fmi3FunctionTypes.h", "fmi3PlatformTypes.h")}
@@ -206,7 +206,7 @@ def _write_sources(folder: Path, spec: ModelSpec, fmi_version: int, kinds) -> st
     sources = folder / "sources"
     sources.mkdir(parents=True)
     package = resources.files("sealsim.fmu").joinpath("c")
-    for name in (*_C_FILES, _GLUE[fmi_version], spec.model_source):
+    for name in (*_C_FILES, _GLUE[fmi_version], *spec.extra_sources, spec.model_source):
         (sources / name).write_text(package.joinpath(name).read_text("utf-8"), "utf-8")
     headers = _fmi_header_folder()
     for name in _HEADERS[fmi_version]:
@@ -220,8 +220,10 @@ def _write_sources(folder: Path, spec: ModelSpec, fmi_version: int, kinds) -> st
         "/* Compile this one file into the FMU's shared library, e.g.\n"
         f" *   cc -shared -fPIC -O2 -std=c99 all.c -o {spec.identifier}.so -lm */\n"
         f"#define FMI_VERSION {fmi_version}\n"
-        f'#include "fmu_runtime.c"\n#include "hermite.c"\n'
-        f'#include "{spec.model_source}"\n#include "{_GLUE[fmi_version]}"\n', "utf-8")
+        f'#include "fmu_runtime.c"\n#include "hermite.c"\n#include "contact_table.c"\n'
+        + "".join(f'#include "{name}"\n' for name in spec.extra_sources
+                  if name.endswith(".c"))
+        + f'#include "{spec.model_source}"\n#include "{_GLUE[fmi_version]}"\n', "utf-8")
     (sources / "buildDescription.xml").write_text(_build_description(spec.identifier), "utf-8")
     return token
 

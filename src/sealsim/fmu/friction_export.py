@@ -25,11 +25,25 @@ derivatives on a grid of ``temperature_points`` × ``pressure_points``.
 
 The C code implements the laws ``coulomb``, ``stribeck``, ``lugre`` and ``theta`` (with or
 without bristles, with a constant γ or γ(T) = γ·ν(T)/ν(T_ref) from the base oil's ASTM D341
-viscosity) -- the equations of the compiled kernels of :mod:`sealsim.friction.kernels`, in
-their argument order; any other law, or a parameter the C code does not know, is refused with
-an :class:`~sealsim.errors.InputError`.  A new law parameter needs its entry (unit,
-description, bounds) in ``_PARAMETERS`` and ``_LAW_PARAMETERS`` below, which makes it an FMU
-parameter ``VR_<NAME>``, and its use in ``c/friction_model.c``.  After compiling,
+viscosity, or with ``steady = "contact"``: the steady curve from the seal's own contact) -- the
+equations of the compiled kernels of :mod:`sealsim.friction.kernels`, in their argument order;
+any other law, or a parameter the C code does not know, is refused with an
+:class:`~sealsim.errors.InputError`.
+
+**The Θ law on the seal's contact** (``steady = "contact"``) needs the contact map (F_N, b) and
+carries the seal's steady friction table (:mod:`sealsim.friction.contact_table`, its node
+layout in ``config.h``, read by ``c/contact_table.c``: the numba interpolant in C) at
+the pressure difference dp and ``T_seal``.  Its parameters are ``boundary_friction`` μ_b and
+``dwell_drop`` (applied when the table is read), ``sliding_diameter`` D (the table is per unit
+circumference) and ``velocity_direction``: +1 if a positive v slides the counter surface from
+side A to side B of the seal (a rod seal with A the chamber), −1 the other way (a piston seal
+with A the cap-end chamber); with it the table's stroke direction is
+``velocity_direction·(p_A >= p_B ? 1 : −1)·sgn(v)`` ("+": from the pressurised side to the
+other, :func:`sealsim.pneumatic.friction_tables.table_orientation`).
+
+A new law parameter needs its entry (unit, description, bounds) in ``_PARAMETERS`` and
+``_LAW_PARAMETERS`` below, which makes it an FMU parameter ``VR_<NAME>``, and its use in
+``c/friction_model.c``.  After compiling,
 :func:`friction_check` runs the binary against sealsim's own law object (``step``,
 ``force``, ``breakaway_force``, ``derivatives``) and refuses an FMU that does not reproduce
 it.
@@ -45,11 +59,13 @@ import numpy as np
 
 from sealsim.errors import InputError, ModelError
 from sealsim.friction.base import ContactInputs, FrictionLaw
+from sealsim.friction.contact_table import SteadyFrictionTable
 from sealsim.fmu.model_description import ModelSpec, Variable
 from sealsim.fmu.tables import HermiteTable, pchip_table, smooth_table
 
-__all__ = ["C_LAWS", "PRESSURE_ROUNDING", "ContactTable", "c_parameters", "contact_table",
-           "friction_check", "friction_spec", "model_identifier"]
+__all__ = ["C_LAWS", "PRESSURE_ROUNDING", "ContactTable", "SteadyTable", "c_parameters",
+           "contact_table", "friction_check", "friction_spec", "model_identifier",
+           "steady_table"]
 
 #: laws with a C implementation (friction_model.c)
 C_LAWS = ("coulomb", "stribeck", "lugre", "theta")
@@ -83,6 +99,10 @@ _PARAMETERS = {
     "base_oil_nu40": ("m2/s", "kinematic viscosity of the grease's base oil at 40 degC: "
                       "gamma(T) = gamma nu(T)/nu(T_ref), ASTM D341 (Walther)"),
     "base_oil_nu100": ("m2/s", "kinematic viscosity of the grease's base oil at 100 degC"),
+    "boundary_friction": (None, "boundary friction coefficient mu_b on the asperity load of "
+                          "the contact table"),
+    "dwell_drop": (None, "break-away force just after sliding (Theta = 1) below the long-dwell "
+                   "one, as a fraction of it"),
 }
 _EXPONENT = ((">", 0.0), ("<=", 10.0))
 _LAW_PARAMETERS = {
@@ -99,7 +119,8 @@ _LAW_PARAMETERS = {
               "reference_normal_force": (_GT0, None),
               "load_exponent": (_GE0, ("<=", 10.0)), "bristle_stiffness": (_GT0, None),
               "bristle_damping": (_GE0, None), "reference_temperature": (_GT0, None),
-              "base_oil_nu40": (_GT0, None), "base_oil_nu100": (_GT0, None)},
+              "base_oil_nu40": (_GT0, None), "base_oil_nu100": (_GT0, None),
+              "boundary_friction": (_GE0, None), "dwell_drop": (_GE0, ("<", 1.0))},
 }
 _STICTION = {"coulomb", "stribeck"}
 
@@ -234,10 +255,63 @@ def _table_error(table, sample, t_range, p_range) -> dict:
     return {"F_N": float(rel[:, 0].max()), "b": float(rel[:, 1].max())}
 
 
+# -- the seal's friction table (Θ law with steady = "contact") ---------------------------------
+@dataclass(frozen=True)
+class SteadyTable:
+    """The steady friction table a Θ law with ``steady = "contact"`` reads in the FMU.
+
+    Attributes
+    ----------
+    table : SteadyFrictionTable
+        The seal's table (:mod:`sealsim.friction.contact_table`).
+    sliding_diameter : float
+        Diameter of the sliding surface D [m].
+    velocity_direction : float
+        +1: a positive v slides the counter surface from side A to side B; −1: from B to A.
+    """
+
+    table: SteadyFrictionTable
+    sliding_diameter: float
+    velocity_direction: float = 1.0
+
+    def inputs(self, normal_force, contact_width, pressure_a, pressure_b, temperature,
+               pressure_difference=None) -> ContactInputs:
+        """The law inputs of the FMU's contact (the table's orientation from the pressures)."""
+        side = 1.0 if pressure_a >= pressure_b else -1.0
+        return ContactInputs(normal_force=normal_force, contact_width=contact_width,
+                             pressure_a=pressure_a, pressure_b=pressure_b,
+                             temperature=temperature, contact_table=self.table,
+                             sliding_diameter=self.sliding_diameter,
+                             pressure_difference=pressure_difference,
+                             table_orientation=self.velocity_direction * side)
+
+
+def steady_table(law: FrictionLaw, contact_map, sliding_diameter: float | None = None,
+                 velocity_direction: float = 1.0) -> SteadyTable | None:
+    """The :class:`SteadyTable` of a Θ law with ``steady = "contact"`` on its contact map
+    (built or read from the cache, :func:`sealsim.pneumatic.case.seal_friction_table`); None
+    for other laws.  ``sliding_diameter`` default: the map's
+    (:func:`sealsim.pneumatic.friction_tables.sliding_diameter`)."""
+    from sealsim.pneumatic.case import seal_friction_table
+    from sealsim.pneumatic.friction_tables import sliding_diameter as map_diameter
+
+    if not getattr(law, "contact", False):
+        return None
+    if contact_map is None:
+        raise InputError("friction: the theta law with steady = 'contact' takes its steady "
+                         "friction from the seal's own contact: the FMU needs the seal's "
+                         "contact map (map = {...} of the seal, [seal] of a friction case or "
+                         "[seal_contact] map of an FMU case)")
+    table = seal_friction_table(law, contact_map, "map")
+    diameter = map_diameter(contact_map) if sliding_diameter is None else sliding_diameter
+    return SteadyTable(table, float(diameter), float(velocity_direction))
+
+
 # -- the model ---------------------------------------------------------------------------------
-#: fields of the Θ law used only when its steady curve comes from the contact table
-_CONTACT_FIELDS = ("boundary_friction", "dwell_drop", "roughness", "film_factor",
-                   "lubricant_density", "thickener_factor", "asperity_wavelength")
+#: fields of the Θ law that only build the friction table (steady = "contact"): they are in
+#: the table, not FMU parameters
+_TABLE_FIELDS = ("roughness", "film_factor", "lubricant_density", "thickener_factor",
+                 "asperity_wavelength")
 
 
 def c_parameters(law: FrictionLaw) -> tuple[str, dict[str, float], bool]:
@@ -249,12 +323,14 @@ def c_parameters(law: FrictionLaw) -> tuple[str, dict[str, float], bool]:
                          f"export; choose one of {', '.join(C_LAWS)}")
     values = {k: getattr(law.params, k) for k in type(law.params).model_fields}
     if name == "theta":
-        if values.pop("steady") == "contact":
-            raise InputError("friction: the theta law with steady = 'contact' (the seal's own "
-                             "contact friction table) is not in the FMU's C code yet; export "
-                             "the lumped law (steady = 'lumped', e.g. parameter_set = "
-                             "'pneumatic_demo')")
-        for field in _CONTACT_FIELDS:       # only used with steady = 'contact'
+        from sealsim.friction.theta import CONTACT_ONLY_FIELDS, LUMPED_ONLY_FIELDS
+
+        contact = values.pop("steady") == "contact"
+        unused = LUMPED_ONLY_FIELDS if contact else CONTACT_ONLY_FIELDS
+        if contact:            # the base oil is in the table; γ(T) is not used
+            unused += _TABLE_FIELDS + ("base_oil_nu40", "base_oil_nu100",
+                                       "reference_temperature")
+        for field in unused:
             values.pop(field, None)
     known = _LAW_PARAMETERS[name]
     unknown = sorted(k for k, v in values.items()
@@ -275,19 +351,21 @@ def _deflection_scale(name: str, params: dict[str, float], normal_force: float |
                       table: ContactTable | None) -> float:
     """Typical bristle deflection z [m], the FMU's ``nominal`` of the state z: the largest
     steady deflection F_s/σ0 of LuGre (Canudas de Wit et al. 1995), max(f_a, f_b)·F_N/σ0 of
-    the Θ law with bristles (F_N: the constant normal force, else the table's largest)."""
+    the Θ law with bristles, μ_b·F_N on a contact table (F_N: the constant normal force, else
+    the table's largest)."""
     if name == "lugre":
         return params["static_force"] / params["sigma0"]
     if normal_force is None and table is not None:
         normal_force = float(np.max(table.table.values[..., 0]))
-    force = max(params.get("f_a", 0.0), params.get("f_b", 0.0)) * (normal_force or 0.0)
+    force = max(params.get("f_a", 0.0), params.get("f_b", 0.0),
+                params.get("boundary_friction", 0.0)) * (normal_force or 0.0)
     return force / params["bristle_stiffness"] if force > 0 else 1e-5
 
 
 def friction_spec(law: FrictionLaw, identifier: str, *, table: ContactTable | None = None,
                   normal_force: float | None = None, contact_width: float | None = None,
-                  seal_temperature: float | None = None, title: str = "",
-                  source: str = "") -> ModelSpec:
+                  seal_temperature: float | None = None, steady: SteadyTable | None = None,
+                  title: str = "", source: str = "") -> ModelSpec:
     """The model of a seal friction FMU.
 
     Parameters
@@ -303,11 +381,18 @@ def friction_spec(law: FrictionLaw, identifier: str, *, table: ContactTable | No
     seal_temperature : float, optional
         Start value of the input T_seal [K]; default the law's ``reference_temperature`` (where
         the Θ law's γ is γ_ref, as sealsim's law without a temperature), else 293.15 K.
+    steady : SteadyTable, optional
+        The seal's friction table (required by the Θ law with ``steady = "contact"``,
+        :func:`steady_table`).
     title, source : str
         Text for the description and documentation (the case it came from).
     """
     name, params, bristles = c_parameters(law)
     viscosity = "base_oil_nu40" in params
+    contact = getattr(law, "contact", False)
+    if contact and (steady is None or table is None):
+        raise InputError("friction: the theta law with steady = 'contact' needs the seal's "
+                         "contact map and its friction table (steady_table)")
     if seal_temperature is None:
         seal_temperature = float(getattr(law.params, "reference_temperature", 293.15))
     uses_load = name == "theta"
@@ -366,11 +451,20 @@ def friction_spec(law: FrictionLaw, identifier: str, *, table: ContactTable | No
         Variable("pressure_rounding", "PRESSURE_ROUNDING", "parameter",
                  "rounding width eps of dp = x tanh(x/eps) (no kink when the pressures "
                  "cross)", "Pa", PRESSURE_ROUNDING, lower=_GT0),
+        Variable("sliding_diameter", "SLIDING_DIAMETER", "parameter",
+                 "diameter D of the sliding surface (the friction table is per unit "
+                 "circumference)", "m", steady.sliding_diameter if contact else 0.0,
+                 lower=_GT0, exposed=contact),
+        Variable("velocity_direction", "VELOCITY_DIRECTION", "parameter",
+                 "+1: a positive v slides the counter surface from side A to side B of the "
+                 "seal, -1: from B to A (the friction table's direction)", None,
+                 steady.velocity_direction if contact else 1.0, lower=(">=", -1.0),
+                 upper=("<=", 1.0), exposed=contact),
     ]
     variables = [v if not (v.derivative_of and v.derivative_of not in states) else
                  _hidden(v) for v in variables]
     defines = {"FRICTION_LAW": _LAW_CODE[name], "THETA_BRISTLES": int(bristles),
-               "THETA_VISCOSITY": int(viscosity),
+               "THETA_VISCOSITY": int(viscosity), "THETA_CONTACT": int(contact),
                "CONTACT_TABLE": int(table is not None)}
     tables = ""
     report = {"law": law.describe(), "c_law": name, "bristles": bristles,
@@ -388,9 +482,20 @@ def friction_spec(law: FrictionLaw, identifier: str, *, table: ContactTable | No
             "max_relative_error": table.max_relative_error}
     elif constant:
         report["contact"] = {"normal_force_N": normal_force, "contact_width_m": contact_width}
+    if contact:
+        row, data = steady.table.node_tables()
+        tables += "\n" + "\n".join([
+            f"static const long FRIC_ROW[] = {{{', '.join(str(int(n)) for n in row)}}};",
+            "static const double FRIC_DATA[] = {" + ", ".join(repr(float(x)) for x in data)
+            + "};"])
+        report["friction_table"] = {
+            "source": steady.table.attrs, "nodes": [int(n) for n in row[:3]],
+            "ranges": steady.table.ranges, "sliding_diameter_m": steady.sliding_diameter,
+            "velocity_direction": steady.velocity_direction}
     description = (f"sealsim seal friction, {name} law"
                    + (" with bristles" if bristles else "")
                    + (", contact table F_N, b (dp, T)" if table is not None else "")
+                   + (", steady friction from the seal's contact" if contact else "")
                    + (f": {title}" if title else ""))
     return ModelSpec(identifier, title or identifier, description, "friction_model.c",
                      variables, defines, tables, report=report | {"source": source})
@@ -423,7 +528,8 @@ def _test_signal(table: ContactTable | None):
 
 
 def friction_check(law: FrictionLaw, spec: ModelSpec, contact_map=None,
-                   table: ContactTable | None = None, kinds=("me", "cs")):
+                   table: ContactTable | None = None, kinds=("me", "cs"),
+                   steady: SteadyTable | None = None):
     """A build check: the compiled FMU against sealsim's law object.
 
     Returns ``check(folder, token)`` for :func:`sealsim.fmu.builder.build_archive`.  It
@@ -433,13 +539,14 @@ def friction_check(law: FrictionLaw, spec: ModelSpec, contact_map=None,
     ``law.breakaway_force`` fed with the FMU's F_N and b; model exchange derivatives with
     ``law.derivatives``.  Tolerance 1e-9 relative (the C code evaluates the same formulas;
     differences are rounding).  The FMU's F_N, b are compared with the contact map itself.
+    A Θ law on its contact reads its friction table at the FMU's dp (``steady``).
     """
     from sealsim.fmu.instance import LoadedFMU
 
     def check(folder: Path, token: str) -> None:
         worst = {"force": 0.0, "states": 0.0, "derivatives": 0.0, "contact": 0.0}
         v, dt, pa, pb, temp = _test_signal(table)
-        names_out = ["F"] + [n for n in ("F_breakaway", "F_N", "b", "theta", "z")
+        names_out = ["F"] + [n for n in ("F_breakaway", "F_N", "b", "dp", "theta", "z")
                              if _exposed(spec, n)]
         if "cs" in kinds:
             with LoadedFMU(folder, "cs", "build_check") as fmu:
@@ -452,7 +559,7 @@ def friction_check(law: FrictionLaw, spec: ModelSpec, contact_map=None,
                     fmu.do_step(t, dt[k])
                     t += dt[k]
                     out = dict(zip(names_out, fmu.get(*names_out)))
-                    inputs = _inputs(out, pa[k], pb[k], temp[k])
+                    inputs = _inputs(out, pa[k], pb[k], temp[k], steady)
                     z = law.step(z, np.array([v[k]]), dt[k], inputs)
                     force = float(law.force(z, np.array([v[k]]), inputs)[0])
                     worst["force"] = max(worst["force"], _rel(out["F"], force))
@@ -475,7 +582,7 @@ def friction_check(law: FrictionLaw, spec: ModelSpec, contact_map=None,
                 for k in range(v.size):
                     fmu.set(v=v[k], p_A=pa[k], p_B=pb[k], T_seal=temp[k])
                     inputs = _inputs(dict(zip(names_out, fmu.get(*names_out))), pa[k], pb[k],
-                                     temp[k])
+                                     temp[k], steady)
                     z = law.steady_state(np.array([v[(k + 5) % v.size]]), inputs)
                     z = z * (0.5 + rng.random(z.shape))
                     fmu.set_continuous_states(z[:, 0])
@@ -502,12 +609,15 @@ def _exposed(spec: ModelSpec, name: str) -> bool:
     return any(v.name == name and v.exposed for v in spec.variables)
 
 
-def _inputs(out: dict, pa: float, pb: float, temperature: float):
-    """The law inputs the FMU used at this step (F_N, b from the FMU's own outputs)."""
+def _inputs(out: dict, pa: float, pb: float, temperature: float,
+            steady: SteadyTable | None = None):
+    """The law inputs the FMU used at this step (F_N, b and dp from the FMU's own outputs)."""
     if "F_N" in out:
         fn, b = out["F_N"], out["b"]
     else:
         fn = b = None
+    if steady is not None:
+        return steady.inputs(fn, b, pa, pb, temperature, out["dp"])
     return ContactInputs(normal_force=fn, contact_width=b, pressure_a=pa, pressure_b=pb,
                          temperature=temperature)
 

@@ -59,6 +59,12 @@ UNITS: dict[str, tuple[dict[str, int], tuple[tuple[str, float, float], ...]]] = 
     "rad/s": ({"rad": 1, "s": -1}, (("rpm", 30.0 / math.pi, 0.0),)),
     "N.m": ({"kg": 1, "m": 2, "s": -2}, ()),
     "W": ({"kg": 1, "m": 2, "s": -3}, ()),
+    "kg": ({"kg": 1}, (("g", 1e3, 0.0),)),
+    "kg/s": ({"kg": 1, "s": -1}, (("g/s", 1e3, 0.0),)),
+    "J": ({"kg": 1, "m": 2, "s": -2}, ()),
+    "m/s2": ({"m": 1, "s": -2}, ()),
+    "m3/(s.Pa)": ({"kg": -1, "m": 4, "s": 1}, (("dm3/(s.bar)", 1e8, 0.0),)),
+    "W/(m2.K)": ({"kg": 1, "s": -3, "K": -1}, ()),
 }
 
 _BOUND = {">=": "BOUND_INCLUSIVE", "<=": "BOUND_INCLUSIVE", ">": "BOUND_EXCLUSIVE",
@@ -155,6 +161,12 @@ class ModelSpec:
         JSON-friendly facts about the build (sources, table errors, validation).
     data : dict
         Larger results for the documentation only (arrays of a validation run).
+    event_indicators : list of str
+        Names of the (local, continuous) variables that are the model's event indicators
+        (model exchange: the model switches a discrete state when one crosses zero).
+    extra_sources : list of str
+        Further files of ``sealsim/fmu/c`` the model needs (headers, and C files that
+        ``all.c`` includes before the model).
     """
 
     identifier: str
@@ -168,6 +180,8 @@ class ModelSpec:
     documentation: dict[str, bytes] = field(default_factory=dict)
     report: dict = field(default_factory=dict)
     data: dict = field(default_factory=dict)
+    event_indicators: list[str] = field(default_factory=list)
+    extra_sources: list[str] = field(default_factory=list)
 
     def value_reference(self, name: str) -> int:
         """Value reference of a variable by FMI name."""
@@ -266,7 +280,8 @@ def model_description_xml(spec: ModelSpec, fmi_version: int, kinds: tuple[str, .
         '  variableNamingConvention="flat"',
     ]
     if fmi_version == 2:
-        head += [f'  guid="{token}"', '  numberOfEventIndicators="0">']
+        head += [f'  guid="{token}"',
+                 f'  numberOfEventIndicators="{len(spec.event_indicators)}">']
     else:
         head += [f'  instantiationToken="{token}">']
     body = []
@@ -344,6 +359,8 @@ def model_description_xml(spec: ModelSpec, fmi_version: int, kinds: tuple[str, .
         body += [f'    <Output valueReference="{vr}"/>' for vr in outputs]
         body += [f'    <ContinuousStateDerivative valueReference="{vr}"/>' for vr in derivatives]
         body += [f'    <InitialUnknown valueReference="{vr}"/>' for vr in initial]
+        body += [f'    <EventIndicator valueReference="{spec.value_reference(name)}"/>'
+                 for name in spec.event_indicators]
     body.append("  </ModelStructure>")
     return "\n".join(head + body + ["</fmiModelDescription>", ""])
 
@@ -360,6 +377,7 @@ def c_variables(spec: ModelSpec) -> str:
         lines.append(f"#define VR_{v.macro} {vr}")
     states = spec.states
     lines.append(f"#define NSTATES {len(states)}")
+    lines.append(f"#define NEVENT_INDICATORS {len(spec.event_indicators)}")
     state_vrs = [str(vr) for vr, _ in states] or ["0"]
     deriv_vrs = []
     for _, s in states:

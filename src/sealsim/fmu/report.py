@@ -79,8 +79,9 @@ def _page(spec: ModelSpec, sections: list[tuple[str, str]], figures: list[str]) 
 
 
 # -- seal friction ------------------------------------------------------------------------------
-def friction_documentation(spec: ModelSpec, law, table=None) -> None:
-    """index.html, the steady friction curve and the contact table of a friction FMU."""
+def friction_documentation(spec: ModelSpec, law, table=None, steady=None) -> None:
+    """index.html, the steady friction curve and the contact table of a friction FMU
+    (``steady``: the seal's friction table of a Θ law on its contact)."""
     from sealsim.friction.base import ContactInputs
 
     docs = {}
@@ -94,7 +95,11 @@ def friction_documentation(spec: ModelSpec, law, table=None) -> None:
             i = np.argmin(np.abs(table.table.axes[0] - t_mid))
             j = np.argmin(np.abs(table.table.axes[1] - dp))
             fn, b = table.table.values[i, j]
-            inputs = ContactInputs(normal_force=fn, contact_width=b, pressure_a=dp)
+            if steady is not None:
+                inputs = steady.inputs(fn, b, table.table.axes[1][j], 0.0,
+                                       table.table.axes[0][i])
+            else:
+                inputs = ContactInputs(normal_force=fn, contact_width=b, pressure_a=dp)
             ax.plot(v, law.steady_force(v, inputs),
                     label=f"dp = {table.table.axes[1][j] / 1e5:.3g} bar, "
                           f"T = {table.table.axes[0][i] - ZERO_CELSIUS_K:.0f} degC")
@@ -263,3 +268,54 @@ def rotary_documentation(spec: ModelSpec, maps) -> None:
                                                    for n in maps.notes) + "</ul>"))
     docs = {"index.html": _page(spec, sections, figures), **docs}
     spec.documentation.update(docs)
+
+
+# -- pneumatic cylinder ----------------------------------------------------------------------------
+def cylinder_documentation(spec: ModelSpec) -> None:
+    """index.html of a cylinder FMU: the interface, how it was checked, and (when the check ran
+    the co-simulation) the position and pressures of the FMU over the case's cycle against
+    ``sealsim pneumatic run``."""
+    figures, docs = [], {}
+    run = spec.data.get("cycle")
+    if run is not None:
+        fig, axes = _subplots(2, 1, figsize=(7.0, 5.2), sharex=True)
+        axes[0].plot(run["python_t"], np.asarray(run["python_x"]) * 1e3, lw=2.5, alpha=0.5,
+                     label="sealsim pneumatic run")
+        axes[0].plot(run["fmu_t"], np.asarray(run["fmu_x"]) * 1e3, lw=1.0,
+                     label="FMU, co-simulation")
+        axes[0].set_ylabel("position x [mm]")
+        for key, label in (("p1", "cap end"), ("p2", "rod end")):
+            axes[1].plot(run["python_t"], np.asarray(run[f"python_{key}"]) / 1e5, lw=2.5,
+                         alpha=0.5, label=f"{label}, sealsim")
+            axes[1].plot(run["fmu_t"], np.asarray(run[f"fmu_{key}"]) / 1e5, lw=1.0,
+                         label=f"{label}, FMU")
+        axes[1].set_ylabel("pressure [bar abs]")
+        axes[1].set_xlabel("time [s]")
+        for a in axes:
+            a.grid(True, alpha=0.3)
+            a.legend(fontsize=8)
+        fig.suptitle(f"{spec.model_name}: the FMU over the case's command cycle", fontsize=10)
+        docs["cycle.png"] = _png(fig)
+        figures.append("cycle.png")
+    sections = [("Model", "<p>The pneumatic model of sealsim (chambers, valve after ISO 6358, "
+                 "seals with their contact maps and friction laws, end stops) with the tables "
+                 "of the case. Co-simulation integrates with the variable-order BDF method "
+                 "of sealsim (its C port) and locates the stick/slip transitions inside the "
+                 "communication step; model exchange switches the stick/slip mode at its event "
+                 "indicator. A valve command reaches the spool after the valve's dead time "
+                 "(<code>valve_delay</code>).</p>")]
+    rhs_check = spec.report.get("rhs_check")
+    cycle = spec.report.get("cycle_check")
+    if rhs_check or cycle:
+        text = ""
+        if rhs_check:
+            text += ("<p>The C right-hand side against sealsim's compiled one at random states "
+                     "in every mode: largest differences relative to each quantity's range "
+                     + html.escape(json.dumps(json_ready(
+                         rhs_check["max_relative_difference"], 3))) + ".</p>")
+        if cycle:
+            text += ("<p>The co-simulation over the case's command cycle against "
+                     "<code>sealsim pneumatic run</code>: extend and retract times "
+                     + html.escape(json.dumps(json_ready(cycle, 6))) + ".</p>")
+        sections.append(("Checks against sealsim", text))
+    spec.documentation.update({"index.html": _page(spec, sections, figures), **docs})

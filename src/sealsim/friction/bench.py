@@ -12,10 +12,12 @@ Prescribed motion uses the law's exact step with the mean velocity of every step
 v_k = (x(t_{k+1}) − x(t_k))/dt, so the displacement is exact and the states are second-order
 accurate; laws whose step is affine in the state run as a vectorised scan (no Python loop).
 
-The driven mass is integrated either with scipy's implicit ``solve_ivp`` (Radau or BDF, analytic
-Jacobian from the law's ``partials``) for smooth laws, or with the implicit stick/slip stepper of
-:mod:`sealsim.friction.hybrid` for laws with true sticking (Coulomb, Stribeck, Θ) and for GMS,
-whose element switching does not suit an error-controlled integrator.
+The driven mass is integrated, for smooth laws, as one compiled ODE with the variable-order BDF
+method of :mod:`sealsim.ode` (the default) or with scipy's implicit ``solve_ivp`` (Radau or BDF,
+analytic Jacobian from the law's ``partials``); laws with true sticking (Coulomb, Stribeck, Θ)
+and GMS, whose element switching does not suit an error-controlled integrator, run with the
+implicit stick/slip stepper of :mod:`sealsim.friction.hybrid` (compiled:
+:func:`sealsim.friction.compiled.mass_steps`).
 
 The profiles (constant, harmonic, piecewise linear) are in :mod:`.profiles`, the result record
 and the numbers read off a run (:func:`summarize`: break-away forces, loop areas, dissipated
@@ -25,6 +27,7 @@ energy) in :mod:`.bench_results`; both are re-exported here.
 from __future__ import annotations
 
 import numpy as np
+from numba import njit
 
 from sealsim.errors import ConvergenceError, InputError
 from sealsim.friction.base import NO_INPUTS, ContactInputs, FrictionLaw
@@ -37,8 +40,15 @@ from sealsim.friction.bench_results import (  # noqa: F401  (re-exported)
     stick_slip_period,
     summarize,
 )
-from sealsim.friction.hybrid import implicit_mass_step
-from sealsim.friction.profiles import _constant, profile_type
+from sealsim.friction.compiled import LAW_CODES, contact_rates, mass_steps
+from sealsim.friction.hybrid import compiled_law, contact_values, implicit_mass_step
+from sealsim.friction.profiles import (
+    _constant,
+    profile_integral,
+    profile_type,
+    profile_value,
+)
+from sealsim.ode import bdf, compile_bdf
 
 __all__ = [
     "BenchResult",
@@ -162,13 +172,14 @@ def simulate_mass(law: FrictionLaw, mass: float, duration: float, time_step: flo
         Constant law inputs.
     initial_state : array_like, optional
         Friction states at t = 0 (body at rest at x = 0, spring relaxed).
-    integrator : {"auto", "radau", "bdf", "stepper"}
-        "auto": solve_ivp Radau for smooth laws, the stick/slip stepper for laws with true
-        sticking and GMS.
+    integrator : {"auto", "compiled", "radau", "bdf", "stepper"}
+        "auto": the compiled BDF integrator ("compiled") for smooth laws, the stick/slip
+        stepper for laws with true sticking and GMS; "radau", "bdf": scipy's solve_ivp.
     rtol : float
-        Relative tolerance of solve_ivp.
+        Relative tolerance of the ODE integrator.
     max_step : float, optional
-        Largest solve_ivp step [s] (default: a quarter of the shortest profile segment).
+        Largest step of the ODE integrator [s] (default: a quarter of the shortest profile
+        segment).
     progress : callable, optional
         Called with the fraction done (0..1) now and then.
 
@@ -180,9 +191,9 @@ def simulate_mass(law: FrictionLaw, mass: float, duration: float, time_step: flo
         raise InputError(f"bench.mass: must be > 0, got {mass!r}")
     if not (np.isfinite(stiffness) and stiffness >= 0):
         raise InputError(f"bench.stiffness: must be >= 0, got {stiffness!r}")
-    if integrator not in ("auto", "radau", "bdf", "stepper"):
+    if integrator not in ("auto", "compiled", "radau", "bdf", "stepper"):
         raise InputError(f"bench.integrator: {integrator!r} is not allowed; choose one of "
-                         "'auto', 'radau', 'bdf', 'stepper'")
+                         "'auto', 'compiled', 'radau', 'bdf', 'stepper'")
     if drive_velocity is None:
         drive_velocity = _constant(0.0)
     if applied_force is None:
@@ -200,7 +211,8 @@ def simulate_mass(law: FrictionLaw, mass: float, duration: float, time_step: flo
         res = _mass_stepper(law, mass, stiffness, t, xd, fa, inputs, z0, progress)
     else:
         res = _mass_ivp(law, mass, stiffness, t, drive_velocity, applied_force, inputs, z0,
-                        "Radau" if integrator in ("auto", "radau") else "BDF", rtol, max_step)
+                        {"auto": "compiled", "compiled": "compiled", "radau": "Radau",
+                         "bdf": "BDF"}[integrator], rtol, max_step)
     period = drive_velocity.period() or applied_force.period()
     res.period = period
     return res
@@ -223,25 +235,128 @@ def _mass_stepper(law, mass, stiffness, t, xd, fa, inputs, z0, progress):
         stuck[0] = abs(f_ext0) <= brk
     else:
         force[0] = law.force(z, np.zeros(1), inputs)[0]
-    xi = np.zeros(1)
-    vi = np.zeros(1)
-    every = max(1, n // 50)
-    for k in range(1, n):
-        dt = t[k] - t[k - 1]
-        z, xi, vi, fk, st = implicit_mass_step(
-            law, z, xi, vi, dt, mass, stiffness, np.array([xd[k]]), np.array([fa[k]]), inputs,
-            where=f" at t = {t[k]:.6g} s")
-        states[k] = z[:, 0]
-        x[k] = xi[0]
-        v[k] = vi[0]
-        force[k] = fk[0]
-        stuck[k] = st[0]
-        if progress is not None and k % every == 0:
-            progress(k / (n - 1))
+    if compiled_law(law):
+        _compiled_steps(law, mass, stiffness, t, xd, fa, inputs, z, states, x, v, force, stuck,
+                        progress)
+    else:                               # any other law object: the vectorised stepper
+        xi = np.zeros(1)
+        vi = np.zeros(1)
+        every = max(1, n // 50)
+        for k in range(1, n):
+            dt = t[k] - t[k - 1]
+            z, xi, vi, fk, st = implicit_mass_step(
+                law, z, xi, vi, dt, mass, stiffness, np.array([xd[k]]), np.array([fa[k]]),
+                inputs, where=f" at t = {t[k]:.6g} s")
+            states[k] = z[:, 0]
+            x[k] = xi[0]
+            v[k] = vi[0]
+            force[k] = fk[0]
+            stuck[k] = st[0]
+            if progress is not None and k % every == 0:
+                progress(k / (n - 1))
     return BenchResult(t, x, v, force, states, tuple(law.state_names), "mass",
                        drive_position=xd, applied_force=fa + stiffness * (xd - x),
                        stuck=stuck if law.has_stiction else None,
                        stored_energy=law.relaxed_storage(states.T))
+
+
+# -- the driven mass as one compiled ODE (smooth laws) -------------------------------------
+# args: (law code, parameters, mass, stiffness, drive kind, drive table, force kind, force
+#        table, contact vector (sealsim.friction.compiled.K_*), state scales for the Jacobian,
+#        contact table row and data)
+@njit(cache=True)
+def _mass_fun(t, y, args, dy):
+    """d/dt [x, v, z...] of the body: m·dv/dt = F_app + k·(x_d − x) − F."""
+    x_drive = profile_integral(args[4], args[5], t)
+    f_ext = profile_value(args[6], args[7], t) + args[3] * (x_drive - y[0])
+    force, _ = contact_rates(args[0], args[1], y[:, None], 2, y[1], args[8], args[10],
+                             args[11], dy[:, None], 0)
+    dy[0] = y[1]
+    dy[1] = (f_ext - force) / args[2]
+
+
+@njit(cache=True)
+def _mass_jac(t, y, args, jac):
+    """Forward differences, h_j = 1.5e-8·max(|y_j|, scale_j)."""
+    n = y.shape[0]
+    f0, f1, shifted = np.empty(n), np.empty(n), y.copy()
+    _mass_fun(t, y, args, f0)
+    for j in range(n):
+        h = 1.5e-8 * max(abs(y[j]), args[9][j])
+        shifted[j] = y[j] + h
+        _mass_fun(t, shifted, args, f1)
+        shifted[j] = y[j]
+        for i in range(n):
+            jac[i, j] = (f1[i] - f0[i]) / h
+
+
+@njit(cache=True)
+def _no_event(t, y, args):
+    return 1.0
+
+
+_MASS = compile_bdf("friction_mass", _mass_fun, _mass_jac, _no_event)
+_mass_start, _mass_step = _MASS.start, _MASS.step
+
+
+@njit(cache=True)
+def _mass_run(ws, grid, y0, args, out):
+    """Integrate over the grid, the states at every grid time into out (rows); returns the
+    number of rows filled (< grid size: the step size became too small)."""
+    _mass_start(ws, grid[0], y0, grid[-1], args)
+    for i in range(y0.shape[0]):
+        out[0, i] = y0[i]
+    k = 1
+    s = ws[0]
+    while s[bdf.S_T] < grid[-1]:
+        if _mass_step(ws, args) != bdf.OK:
+            return k
+        while k < grid.shape[0] and grid[k] <= s[bdf.S_T]:
+            bdf.dense(ws, grid[k], out[k])
+            k += 1
+    return k
+
+
+def _mass_compiled(law, mass, stiffness, t, drive_velocity, applied_force, inputs, z0, rtol,
+                   atol, max_step, y0):
+    """States (N, n) on the grid t with the compiled BDF of :mod:`sealsim.ode`."""
+    par, contact, frow, fdata = contact_values(law, inputs)
+    drive_kind, drive_table = drive_velocity.table()
+    force_kind, force_table = applied_force.table()
+    args = (LAW_CODES[law.name], par, float(mass), float(stiffness), drive_kind, drive_table,
+            force_kind, force_table, contact, atol / rtol, frow, fdata)
+    ws = bdf.workspace(y0.size, y0.size, rtol, atol, max_step)
+    out = np.zeros((t.size, y0.size))
+    done = _mass_run(ws, t, y0, args, out)
+    if done < t.size:
+        raise ConvergenceError(f"friction bench: the compiled BDF integrator failed at "
+                               f"t = {t[done - 1]:.6g} s (step size too small)")
+    stats = {"solver_rhs_evaluations": int(ws[1][bdf.I_NFEV]),
+             "solver_jacobians": int(ws[1][bdf.I_NJEV])}
+    return out.T, stats
+
+
+def _compiled_steps(law, mass, stiffness, t, xd, fa, inputs, z, states, x, v, force, stuck,
+                    progress):
+    """The steps of :func:`_mass_stepper` with the compiled stepper
+    (:func:`sealsim.friction.compiled.mass_steps`), in chunks for the progress callback."""
+    n = t.size
+    code = LAW_CODES[law.name]
+    par, contact, frow, fdata = contact_values(law, inputs)
+    zk = np.ascontiguousarray(z[:, 0])
+    xk = vk = 0.0
+    every = max(1, n // 50)
+    for k0 in range(1, n, every):
+        k1 = min(k0 + every, n)
+        reached, xk, vk = mass_steps(code, par, law.has_stiction, zk, xk, vk, t, xd, fa, k0,
+                                     k1, float(mass), float(stiffness), contact, frow, fdata,
+                                     states, x, v, force, stuck, 60)
+        if reached < k1:
+            raise ConvergenceError(f"friction bench: the velocity of the body did not converge "
+                                   f"in 60 iterations at t = {t[reached]:.6g} s; try a "
+                                   "smaller time_step")
+        if progress is not None:
+            progress((k1 - 1) / (n - 1))
 
 
 def _mass_ivp(law, mass, stiffness, t, drive_velocity, applied_force, inputs, z0, method, rtol,
@@ -285,20 +400,26 @@ def _mass_ivp(law, mass, stiffness, t, drive_velocity, applied_force, inputs, z0
     y0 = np.concatenate([[0.0, 0.0], np.asarray(z0, dtype=float)[:, 0]])
     zscale = np.abs(law.steady_state(np.array([1.0]), inputs)[:, 0])
     atol = np.concatenate([[1e-12, 1e-12], np.maximum(zscale, 1e-12) * 1e-9])
-    sol = solve_ivp(rhs, (t[0], t[-1]), y0, method=method, jac=jac, t_eval=t, rtol=rtol,
-                    atol=atol, max_step=max_step)
-    if not sol.success:
-        raise ConvergenceError(f"friction bench: solve_ivp ({method}) failed at "
-                               f"t = {sol.t[-1] if sol.t.size else t[0]:.6g} s: {sol.message}")
-    x, v = sol.y[0], sol.y[1]
-    states = sol.y[2:].T
+    if method == "compiled" and not compiled_law(law):
+        method = "Radau"                 # a law object without a compiled form: scipy
+    if method == "compiled":
+        ys, extra = _mass_compiled(law, mass, stiffness, t, drive_velocity, applied_force,
+                                   inputs, z0, rtol, atol, max_step, y0)
+    else:
+        sol = solve_ivp(rhs, (t[0], t[-1]), y0, method=method, jac=jac, t_eval=t, rtol=rtol,
+                        atol=atol, max_step=max_step)
+        if not sol.success:
+            raise ConvergenceError(f"friction bench: solve_ivp ({method}) failed at t = "
+                                   f"{sol.t[-1] if sol.t.size else t[0]:.6g} s: {sol.message}")
+        ys = sol.y
+        extra = {"solver_rhs_evaluations": int(sol.nfev), "solver_jacobians": int(sol.njev)}
+    x, v = ys[0], ys[1]
+    states = ys[2:].T
     force = law.force(states.T, v, inputs)
     xd = drive_velocity.integral(t)
     return BenchResult(t, x, v, force, states, tuple(law.state_names), "mass",
                        drive_position=xd,
                        applied_force=applied_force.value(t) + stiffness * (xd - x),
-                       stored_energy=law.relaxed_storage(states.T),
-                       extra={"solver_rhs_evaluations": int(sol.nfev),
-                              "solver_jacobians": int(sol.njev)})
+                       stored_energy=law.relaxed_storage(states.T), extra=extra)
 
 

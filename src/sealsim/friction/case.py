@@ -134,7 +134,7 @@ class MassBench(_BenchBase):
     stiffness: Q("stiffness", ge=0) = 0.0
     drive_velocity: profile_type("velocity") | None = None
     applied_force: profile_type("force") | None = None
-    integrator: Literal["auto", "radau", "bdf", "stepper"] = "auto"
+    integrator: Literal["auto", "compiled", "radau", "bdf", "stepper"] = "auto"
     rtol: float = Field(1e-7, gt=0, lt=1)
 
 

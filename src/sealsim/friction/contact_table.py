@@ -31,7 +31,8 @@ Carlson 1980), the interpolant of the FE maps (:class:`sealsim.structure.maps.He
 outside its axes it is clamped (below the slowest speed the contact is boundary lubricated and
 its values hardly change).  The table is plain arrays -- an int64 layout row and one float64
 array (:meth:`SteadyFrictionTable.tables`) -- read by the compiled kernel
-:func:`contact_table_point`, by numba code and by C alike.
+:func:`contact_table_point` in numba code; the FMUs' C code reads the same interpolant from
+its node values and derivatives (:meth:`SteadyFrictionTable.node_tables`, 8× smaller).
 """
 
 from __future__ import annotations
@@ -44,7 +45,8 @@ from numba import njit
 
 from sealsim.errors import InputError
 
-__all__ = ["TABLE_VARIABLES", "SteadyFrictionTable", "contact_table_point"]
+__all__ = ["TABLE_VARIABLES", "SteadyFrictionTable", "cell_sums", "contact_table_point",
+           "speed_cell", "table_cell"]
 
 #: variables of the table, in the order of its last axis (see the module docstring)
 TABLE_VARIABLES = ("asperity_load_pos", "viscous_pos", "asperity_load_neg", "viscous_neg",
@@ -55,30 +57,81 @@ _ROW = 4
 
 
 @njit(cache=True)
-def _hermite(t, q):
-    """Cubic Hermite basis function q (h00, h10, h01, h11) at t in [0, 1]."""
+def _basis(t):
+    """The cubic Hermite basis functions (h00, h10, h01, h11) at t in [0, 1]."""
     t2 = t * t
     t3 = t2 * t
-    if q == 0:
-        return 2 * t3 - 3 * t2 + 1
-    if q == 1:
-        return t3 - 2 * t2 + t
-    if q == 2:
-        return -2 * t3 + 3 * t2
-    return t3 - t2
+    return (2 * t3 - 3 * t2 + 1, t3 - 2 * t2 + t, -2 * t3 + 3 * t2, t3 - t2)
 
 
 @njit(cache=True)
 def _locate(data, pos, n, x):
-    """(cell index, local coordinate in [0, 1]) of x on the axis data[pos:pos + n], clamped."""
+    """(cell index, local coordinate in [0, 1]) of x on the axis data[pos:pos + n], clamped:
+    the last node <= x (numpy.searchsorted side="right", minus 1), at most the last cell."""
     lo, hi = data[pos], data[pos + n - 1]
     x = min(max(x, lo), hi)
-    i = np.searchsorted(data[pos:pos + n], x, side="right") - 1
-    if i < 0:
-        i = 0
-    elif i > n - 2:
-        i = n - 2
+    a, b = 0, n
+    while a < b:
+        mid = (a + b) >> 1
+        if x < data[pos + mid]:
+            b = mid
+        else:
+            a = mid + 1
+    i = min(max(a - 1, 0), n - 2)
     return i, (x - data[pos + i]) / (data[pos + i + 1] - data[pos + i])
+
+
+#: basis weights of a coordinate on the cell's first node (t = 0)
+_ON_NODE = (1.0, 0.0, 0.0, 0.0)
+
+
+@njit(cache=True)
+def table_cell(row, data, temperature, pressure):
+    """(i, weights, j, weights) of the temperature and pressure cell of (T [K], Δp [Pa]), the
+    table clamped to its axes: the part of a lookup that :func:`contact_steady
+    <sealsim.friction.compiled.contact_steady>` shares between its speeds."""
+    nt = row[0]
+    i, a = _locate(data, 0, nt, temperature)
+    j, b = _locate(data, nt, row[1], pressure)
+    return i, _basis(a), j, _basis(b)
+
+
+@njit(cache=True)
+def cell_sums(row, data, i, wa, j, wb, k, wc, off, film):
+    """Σ w·coefficient over the 64 basis terms of cell (i, j, k) with the axis weights wa,
+    wb, wc: (asperity load, viscous friction, film -- with ``film``, else 0) of the stroke
+    direction ``off`` (0: "+", 2: "−").  Terms of weight 0 (a coordinate on a node, e.g.
+    clamped below the slowest speed) add exactly 0 and are skipped."""
+    npr, nu, nv = row[1], row[2], row[3]
+    base = row[0] + npr + nu + (((i * (npr - 1) + j) * (nu - 1) + k) * 64) * nv
+    load = 0.0
+    visc = 0.0
+    thick = 0.0
+    for q0 in range(4):
+        w0 = wa[q0]
+        if w0 == 0.0:
+            continue
+        for q1 in range(4):
+            w01 = w0 * wb[q1]
+            if w01 == 0.0:
+                continue
+            for q2 in range(4):
+                w = w01 * wc[q2]
+                if w == 0.0:
+                    continue
+                cell = base + ((q0 * 4 + q1) * 4 + q2) * nv
+                load += w * data[cell + off]
+                visc += w * data[cell + off + 1]
+                if film:
+                    thick += w * data[cell + 4 + off // 2]
+    return load, visc, thick
+
+
+@njit(cache=True)
+def speed_cell(row, data, speed):
+    """(k, weights) of the speed cell of |speed| [m/s] (log10 axis, clamped)."""
+    k, c = _locate(data, row[0] + row[1], row[2], math.log10(abs(speed)))
+    return k, _basis(c)
 
 
 @njit(cache=True)
@@ -88,26 +141,9 @@ def contact_table_point(row, data, temperature, pressure, speed):
     speed = 0.  ``row``/``data``: :meth:`SteadyFrictionTable.tables`."""
     if speed == 0.0:
         return 0.0, 0.0, 0.0
-    nt, npr, nu, nv = row[0], row[1], row[2], row[3]
-    i, a = _locate(data, 0, nt, temperature)
-    j, b = _locate(data, nt, npr, pressure)
-    k, c = _locate(data, nt + npr, nu, math.log10(abs(speed)))
-    off = 0 if speed > 0.0 else 2
-    base = nt + npr + nu + (((i * (npr - 1) + j) * (nu - 1) + k) * 64) * nv
-    load = 0.0
-    visc = 0.0
-    film = 0.0
-    for q0 in range(4):
-        w0 = _hermite(a, q0)
-        for q1 in range(4):
-            w01 = w0 * _hermite(b, q1)
-            for q2 in range(4):
-                w = w01 * _hermite(c, q2)
-                cell = base + ((q0 * 4 + q1) * 4 + q2) * nv
-                load += w * data[cell + off]
-                visc += w * data[cell + off + 1]
-                film += w * data[cell + 4 + off // 2]
-    return load, visc, film
+    i, wa, j, wb = table_cell(row, data, temperature, pressure)
+    k, wc = speed_cell(row, data, speed)
+    return cell_sums(row, data, i, wa, j, wb, k, wc, 0 if speed > 0.0 else 2, True)
 
 
 @njit(cache=True)
@@ -174,18 +210,36 @@ class SteadyFrictionTable:
                 "pressure": (float(self.pressure[0]), float(self.pressure[-1])),
                 "speed": (float(self.speed[0]), float(self.speed[-1]))}
 
+    def _hermite(self):
+        """The interpolant (:class:`sealsim.structure.maps.HermiteGrid`, built once)."""
+        grid = self.__dict__.get("_grid")
+        if grid is None:
+            from sealsim.structure.maps import HermiteGrid
+
+            axes = [self.temperature, self.pressure, np.log10(self.speed)]
+            grid = self.__dict__["_grid"] = HermiteGrid(axes, self.values)
+        return grid
+
     def tables(self):
         """(int64 row, float64 data) of :func:`contact_table_point` (built once)."""
         cached = self.__dict__.get("_tables")
         if cached is None:
-            from sealsim.structure.maps import HermiteGrid
-
-            axes = [self.temperature, self.pressure, np.log10(self.speed)]
-            grid = HermiteGrid(axes, self.values)
-            row = np.array([a.size for a in axes] + [len(TABLE_VARIABLES)], dtype=np.int64)
-            data = np.concatenate(axes + [np.ascontiguousarray(grid.coeff).reshape(-1)])
+            grid = self._hermite()
+            row = np.array([a.size for a in grid.axes] + [len(TABLE_VARIABLES)],
+                           dtype=np.int64)
+            data = np.concatenate(grid.axes + [np.ascontiguousarray(grid.coeff).reshape(-1)])
             cached = self.__dict__["_tables"] = (row, data)
         return cached
+
+    def node_tables(self):
+        """(int64 row, float64 data) of the same interpolant with node values and derivatives
+        instead of cell coefficients -- the three axes, then shape (n_T, n_p, n_u, 8, n_vars)
+        (:attr:`~sealsim.structure.maps.HermiteGrid.node_derivatives`), 8× smaller: the layout
+        of the FMUs' C code (``sealsim/fmu/c/contact_table.c``), which forms each cell's
+        coefficients from it exactly as :class:`~sealsim.structure.maps.HermiteGrid` does."""
+        grid = self._hermite()
+        row = np.array([a.size for a in grid.axes] + [len(TABLE_VARIABLES)], dtype=np.int64)
+        return row, np.concatenate(grid.axes + [grid.node_derivatives.reshape(-1)])
 
     def evaluate(self, speed, pressure, temperature):
         """(asperity load [N/m], viscous friction [N/m], film [m]) at signed speeds [m/s],

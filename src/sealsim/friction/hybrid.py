@@ -25,6 +25,11 @@ of Heipl & Murrenhoff Eq. 2 (friction balances the applied force up to F_S).
 directly (bracket found by expansion from the previous velocity).  The bristle state makes the
 body rest elastically in pre-sliding.
 
+**Compiled.**  For the laws of :mod:`sealsim.friction` the same algorithm runs compiled,
+one contact at a time (:func:`sealsim.friction.compiled.mass_step`; a test finds the same
+bits); :func:`implicit_mass_step` is the vectorised form for any :class:`FrictionLaw` (e.g. a
+law run through an FMU).
+
 References
 ----------
 .. [1] J. J. Moreau, "Unilateral contact and dry friction in finite freedom dynamics", in
@@ -39,8 +44,9 @@ import numpy as np
 
 from sealsim.errors import ConvergenceError
 from sealsim.friction.base import ContactInputs, FrictionLaw
+from sealsim.friction.compiled import LAW_CODES, NO_TABLE, law_parameters
 
-__all__ = ["resolve_stick", "implicit_mass_step"]
+__all__ = ["compiled_law", "contact_values", "implicit_mass_step", "resolve_stick"]
 
 
 def resolve_stick(required_force, breakaway_force):
@@ -70,6 +76,47 @@ def resolve_stick(required_force, breakaway_force):
     brk = np.asarray(breakaway_force, dtype=float)
     stick = np.abs(required) <= brk
     return stick, np.where(stick, required, np.sign(required) * brk)
+
+
+def compiled_law(law: FrictionLaw) -> bool:
+    """True for the laws of :mod:`sealsim.friction` (their compiled form in
+    :mod:`sealsim.friction.compiled` runs the stepper); other :class:`FrictionLaw` objects
+    (e.g. an FMU) run through :func:`implicit_mass_step`."""
+    return LAW_CODES.get(law.name) is not None and type(law).__module__.startswith(
+        "sealsim.friction.")
+
+
+def contact_values(law: FrictionLaw, inputs: ContactInputs):
+    """One contact's inputs as the compiled laws take them (:mod:`sealsim.friction.compiled`):
+    (parameters, contact vector [F_N, b, p_A, p_B, T, Δp, orientation], frow, fdata).  T is
+    T_ref of the Θ law where nothing follows the temperature; frow, fdata the contact table of
+    a Θ law with ``steady = "contact"`` (``NO_TABLE`` otherwise)."""
+    theta = law.name == "theta"
+    contact_law = getattr(law, "contact", False)
+
+    def field(name, default, **check):
+        if not theta and name in ("normal_force", "contact_width"):
+            return float(default)
+        return float(np.asarray(inputs.require(name, law.name, **check)).reshape(-1)[0])
+
+    fn = field("normal_force", 1.0, positive=True)
+    width = field("contact_width", 0.0, nonnegative=True)
+    pa = field("pressure_a", 0.0)
+    pb = field("pressure_b", 0.0)
+    temp = float(getattr(law.params, "reference_temperature", 293.15))
+    if contact_law or (theta and law.walther[1] != 0.0 and inputs.temperature is not None):
+        temp = field("temperature", 0.0, positive=True)
+    dp = abs(pa - pb) if inputs.pressure_difference is None else \
+        float(np.asarray(inputs.pressure_difference, dtype=float).reshape(-1)[0])
+    orient = float(np.asarray(inputs.table_orientation, dtype=float).reshape(-1)[0])
+    frow, fdata = NO_TABLE
+    diameter = 0.0
+    if contact_law:
+        law.contact_steady(np.zeros(1), inputs)      # an InputError names what is missing
+        frow, fdata = inputs.contact_table.tables()
+        diameter = field("sliding_diameter", 0.0, positive=True)
+    contact = np.array([fn, width, pa, pb, temp, dp, orient])
+    return law_parameters(law, diameter), contact, frow, fdata
 
 
 def implicit_mass_step(law: FrictionLaw, z0, x0, v0, dt, mass, stiffness, drive_position,

@@ -22,6 +22,7 @@ Kernels and their equations (H&M: Heipl & Murrenhoff [1]_)
 kernel (arguments)                                 returns
 =================================================  ===============================================
 ``sgn(x)``                                         +1, −1 or 0
+``power(x, e)``                                    x^e (exact products for e = 2, 1, 0)
 ``pressure_scaled_force(f0, f, pa, pb)``           F_pr + f·(p_A + p_B)              (H&M Eq. 3)
 ``stribeck_scaled_levels(fc, fs, f, pa, pb)``      (F_C(p), F_S(p)), F_S(p) = F_S·F_C(p)/F_C
 ``stribeck_level(v, fc, fs, vs, d)``               g = F_C + (F_S − F_C)·exp(−|v/v_S|^δ)
@@ -63,7 +64,8 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
+from numba import njit, types
+from numba.extending import overload
 
 __all__ = ["apply"]
 
@@ -83,6 +85,19 @@ def sgn(x):
     if x < 0.0:
         return -1.0
     return 0.0 * x          # 0.0 (nan stays nan)
+
+
+@kernel
+def power(x, e):
+    """x**e [-] with the exact products for e = 2, 1 and 0 (what numpy's ``array ** 2.0``
+    computes): no call to the C library's ``pow`` for the exponents the laws use by default."""
+    if e == 2.0:
+        return x * x
+    if e == 1.0:
+        return x
+    if e == 0.0:
+        return 1.0
+    return x ** e
 
 
 # --------------------------------------------------------------------------------------------
@@ -112,7 +127,7 @@ def stribeck_scaled_levels(fc, fs, f, pa, pb):
 def stribeck_level(v, fc, fs, vs, d):
     """g(v) = F_C + (F_S − F_C)·exp(−|v/v_S|^δ) [N]: v [m/s], fc, fs [N], vs [m/s], d = δ."""
     ratio = abs(v / vs)
-    return fc + (fs - fc) * math.exp(-ratio ** d)
+    return fc + (fs - fc) * math.exp(-power(ratio, d))
 
 
 @kernel
@@ -122,12 +137,12 @@ def stribeck_level_derivative(v, fc, fs, vs, d):
     At v = 0 the power |v/v_S|^(δ−1) is taken as 1 for δ = 1 and 0 otherwise."""
     ratio = abs(v / vs)
     if ratio > 0.0:
-        power = ratio ** (d - 1.0)
+        slope = power(ratio, d - 1.0)
     elif d == 1.0:
-        power = 1.0
+        slope = 1.0
     else:
-        power = 0.0
-    return -(fs - fc) * d * power * math.exp(-ratio ** d) * sgn(v) / vs
+        slope = 0.0
+    return -(fs - fc) * d * slope * math.exp(-power(ratio, d)) * sgn(v) / vs
 
 
 @kernel
@@ -175,7 +190,7 @@ def dahl_bristle_rate(z, v, s0, fc, a):
     u = 1.0 - s0 * z * sgn(v) / fc
     if u < 0.0:
         u = 0.0
-    return v * u ** a
+    return v * power(u, a)
 
 
 @kernel
@@ -238,7 +253,7 @@ def gms_element_step(z, v, dt, k, frac, c, s):
 @kernel
 def theta_load_factor(fn, fref, n):
     """(F_N/F_ref)^n [-]: fn, fref [N], n [-]."""
-    return (fn / fref) ** n
+    return power(fn / fref, n)
 
 
 @kernel
@@ -318,11 +333,22 @@ def walther_viscosity_ratio(t, tref, wa, wb):
 
 # --------------------------------------------------------------------------------------------
 # Array loops: the vectorised numpy API of the law modules runs the kernels through these.
-# Every argument is a 1-D float array of length n or 1 (broadcast by :func:`apply`).
+# Every argument is a contiguous 1-D float array of length n or a float (a broadcast scalar,
+# see :func:`apply`): numba compiles a loop once per combination, so the loop body indexes
+# only the arrays, has no branch on the argument shapes and vectorises (SIMD) where the kernel
+# has no call into the C library.  The loops are serial on purpose: on the shared 2-core
+# machine a ``prange`` version was 2x slower than the serial one whenever another process
+# held a core (the slower thread sets the pace).
 # --------------------------------------------------------------------------------------------
-@njit(inline="always")
-def _at(a, i):
-    return a[0] if a.shape[0] == 1 else a[i]
+def _at(a, i):  # pragma: no cover - compiled through the overload below
+    return a[i]
+
+
+@overload(_at, inline="always")
+def _overload_at(a, i):
+    if isinstance(a, types.Array):
+        return lambda a, i: a[i]
+    return lambda a, i: a
 
 
 @kernel
@@ -375,6 +401,26 @@ def _loop_lugre_force(z, zdot, v, s0, s1, s2, out):
     for i in range(out.shape[0]):
         out[i] = lugre_force(_at(z, i), _at(zdot, i), _at(v, i), _at(s0, i), _at(s1, i),
                              _at(s2, i))
+
+
+@kernel
+def _loop_lugre_rate(z, v, s0, fc, fs, vs, d, out):
+    """dz/dt of LuGre with g(v) of its Stribeck curve (one pass: LuGre.derivatives)."""
+    for i in range(out.shape[0]):
+        vi = _at(v, i)
+        g = stribeck_level(vi, _at(fc, i), _at(fs, i), _at(vs, i), _at(d, i))
+        out[i] = lugre_bristle_rate(_at(z, i), vi, _at(s0, i), g)
+
+
+@kernel
+def _loop_lugre_state_force(z, v, s0, s1, s2, fc, fs, vs, d, out):
+    """F of LuGre from the state and v (one pass: LuGre.force)."""
+    for i in range(out.shape[0]):
+        vi = _at(v, i)
+        zi = _at(z, i)
+        g = stribeck_level(vi, _at(fc, i), _at(fs, i), _at(vs, i), _at(d, i))
+        zdot = lugre_bristle_rate(zi, vi, _at(s0, i), g)
+        out[i] = lugre_force(zi, zdot, vi, _at(s0, i), _at(s1, i), _at(s2, i))
 
 
 @kernel
@@ -471,14 +517,14 @@ def _loop_walther_viscosity_ratio(t, tref, wa, wb, out):
 
 
 def _flat(value, shape):
-    """``value`` as a contiguous 1-D float array of length 1 or prod(shape).
+    """``value`` as a float (a scalar, broadcast by the loop) or a contiguous 1-D float array
+    of length prod(shape).
 
-    Small arrays are made writable copies (one compiled variant of each loop); large read-only
-    arrays (e.g. checked contact inputs) are passed as they are -- a second compiled variant
-    instead of copying megabytes on every call."""
+    Large read-only arrays (e.g. checked contact inputs) are passed as they are -- a second
+    compiled variant instead of copying megabytes on every call."""
     a = np.asarray(value, dtype=float)
     if a.size == 1:
-        return np.array(a.reshape(1), dtype=float)
+        return float(a.reshape(-1)[0])
     if a.shape != shape:
         a = np.broadcast_to(a, shape)
     a = np.ascontiguousarray(a).reshape(-1)

@@ -340,16 +340,20 @@ class LuGre(FrictionLaw):
 
     # -- interface -----------------------------------------------------------------------
     def derivatives(self, z, v, inputs: ContactInputs = NO_INPUTS):
+        p = self.params
         v = as_velocity(v)
         z = as_state(z, 1)
-        return lugre_bristle_rate(z, v, self.params.sigma0, self.g(v))
+        # lugre_bristle_rate with g(v), in one compiled pass
+        return apply(_k._loop_lugre_rate, z, v, p.sigma0, p.coulomb_force, p.static_force,
+                     p.stribeck_velocity, p.exponent)
 
     def force(self, z, v, inputs: ContactInputs = NO_INPUTS):
         p = self.params
         v = as_velocity(v)
         z = as_state(z, 1)
-        zdot = lugre_bristle_rate(z[0], v, p.sigma0, self.g(v))
-        return lugre_force(z[0], zdot, v, p.sigma0, p.sigma1, p.sigma2)
+        # lugre_force of lugre_bristle_rate with g(v), in one compiled pass
+        return apply(_k._loop_lugre_state_force, z[0], v, p.sigma0, p.sigma1, p.sigma2,
+                     p.coulomb_force, p.static_force, p.stribeck_velocity, p.exponent)
 
     def partials(self, z, v, inputs: ContactInputs = NO_INPUTS):
         p = self.params

@@ -8,14 +8,20 @@ prescribes the piston position with them.
 
 from __future__ import annotations
 
+import math
 from typing import Annotated, Any, Literal
 
 import numpy as np
 from pydantic import Field, create_model, model_validator
 
+from numba import njit
+
 from sealsim.cases import CaseModel, Q
 
-__all__ = ["profile_type"]
+__all__ = ["profile_integral", "profile_type", "profile_value"]
+
+#: profile kinds of :meth:`table` (:func:`profile_value`, :func:`profile_integral`)
+CONSTANT, HARMONIC, PIECEWISE = 1, 2, 3
 
 
 class _ConstantBase(CaseModel):
@@ -39,6 +45,11 @@ class _ConstantBase(CaseModel):
 
     def period(self):
         return None
+
+    def table(self):
+        """(kind, parameters) for the compiled :func:`profile_value` and
+        :func:`profile_integral`."""
+        return CONSTANT, np.array([self.value_], dtype=float)
 
 
 class _HarmonicBase(CaseModel):
@@ -64,6 +75,12 @@ class _HarmonicBase(CaseModel):
 
     def period(self):
         return 2.0 * np.pi / self.angular_frequency
+
+    def table(self):
+        """(kind, parameters) for the compiled :func:`profile_value` and
+        :func:`profile_integral`."""
+        return HARMONIC, np.array([self.mean, self.amplitude, self.angular_frequency,
+                                   self.phase], dtype=float)
 
 
 class _PiecewiseBase(CaseModel):
@@ -114,6 +131,47 @@ class _PiecewiseBase(CaseModel):
 
     def period(self):
         return None
+
+    def table(self):
+        """(kind, parameters) for the compiled :func:`profile_value` and
+        :func:`profile_integral`: n, times, values, the integral at the times."""
+        tp = np.asarray(self.times, dtype=float)
+        vp = np.asarray(self.values, dtype=float)
+        cum = np.concatenate([[0.0], np.cumsum(0.5 * (vp[1:] + vp[:-1]) * np.diff(tp))])
+        return PIECEWISE, np.concatenate([[tp.size], tp, vp, cum])
+
+
+@njit(cache=True)
+def profile_value(kind, table, t):
+    """The value of a profile at time t [s] from its :meth:`table` (compiled ``value``)."""
+    if kind == CONSTANT:
+        return table[0]
+    if kind == HARMONIC:
+        return table[0] + table[1] * math.cos(table[2] * t + table[3])
+    n = int(table[0])
+    return np.interp(t, table[1:1 + n], table[1 + n:1 + 2 * n])
+
+
+@njit(cache=True)
+def profile_integral(kind, table, t):
+    """The integral of a profile from 0 to t [s] from its :meth:`table` (compiled
+    ``integral``: the same formulas)."""
+    if kind == CONSTANT:
+        return table[0] * t
+    if kind == HARMONIC:
+        mean, amp, w, phase = table[0], table[1], table[2], table[3]
+        return mean * t + amp / w * (math.sin(w * t + phase) - math.sin(phase))
+    n = int(table[0])
+    tp = table[1:1 + n]
+    vp = table[1 + n:1 + 2 * n]
+    cum = table[1 + 2 * n:1 + 3 * n]
+    before = vp[0] * min(t, tp[0])
+    inside_t = min(max(t, tp[0]), tp[n - 1])
+    idx = min(max(np.searchsorted(tp, inside_t, side="right") - 1, 0), n - 1)
+    v_at = np.interp(inside_t, tp, vp)
+    inside = cum[idx] + 0.5 * (vp[idx] + v_at) * (inside_t - tp[idx])
+    after = vp[n - 1] * max(t - tp[n - 1], 0.0)
+    return before + inside + after
 
 
 _PROFILE_CACHE: dict[str, Any] = {}

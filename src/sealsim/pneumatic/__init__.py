@@ -16,7 +16,7 @@ law) and characteristic diagrams F_N, b of each seal from FE.  This package is t
 * :mod:`.simulation` -- the coupled stiff ODE (:func:`simulate`, every variant of a case file:
   :func:`~sealsim.pneumatic.simulation.run_cases`), built from :mod:`.system` (the model of a
   case), :mod:`.rhs` (the compiled right-hand side), :mod:`.integrate` (segments, events,
-  LSODA) and :mod:`.results`;
+  the compiled BDF driver, LSODA) and :mod:`.results`;
 * :mod:`.case`, :mod:`.summary` -- case files with variants, the summary numbers.
 
 The result folder of ``sealsim pneumatic run`` (tables, summary, figures) is written by

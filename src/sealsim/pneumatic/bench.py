@@ -29,7 +29,28 @@ from sealsim.pneumatic.case import (
 )
 from sealsim.units import ZERO_CELSIUS_K
 
-__all__ = ["bench_inputs"]
+__all__ = ["bench_contact_map", "bench_inputs"]
+
+
+def bench_contact_map(case, base_dir: str | Path = ".", progress=None):
+    """The contact map of a friction bench case's ``[seal]`` (built on demand, cached), after
+    checking that ``[inputs]`` gives the seal temperature and no normal force or width (the
+    map gives them); see :func:`bench_inputs`."""
+    seal, i = case.seal, case.inputs
+    try:
+        spec = TypeAdapter(MapModel).validate_python(seal.map, context={"require_units": True})
+    except ValidationError as exc:
+        raise InputError("seal.map: " + "; ".join(validation_problems(exc))) from None
+    given = [k for k in ("normal_force", "contact_width") if getattr(i, k) is not None]
+    if given:
+        raise InputError(f"inputs.{given[0]}: the bench has a [seal], whose contact gives the "
+                         "normal force and contact width; remove "
+                         f"{' and '.join(given)} from [inputs] (or the [seal])")
+    if i.temperature is None:
+        raise InputError("inputs.temperature: the seal's contact map needs the seal "
+                         "temperature; give temperature = '20 degC' in [inputs]")
+    return build_contact_map(spec, seal.sliding_diameter, Path(base_dir), "seal.map",
+                             progress, label="bench seal")
 
 
 def bench_inputs(case, law, base_dir: str | Path = ".", progress=None
@@ -65,20 +86,7 @@ def bench_inputs(case, law, base_dir: str | Path = ".", progress=None
         difference or temperature outside the map.
     """
     seal, i = case.seal, case.inputs
-    try:
-        spec = TypeAdapter(MapModel).validate_python(seal.map, context={"require_units": True})
-    except ValidationError as exc:
-        raise InputError("seal.map: " + "; ".join(validation_problems(exc))) from None
-    given = [k for k in ("normal_force", "contact_width") if getattr(i, k) is not None]
-    if given:
-        raise InputError(f"inputs.{given[0]}: the bench has a [seal], whose contact gives the "
-                         "normal force and contact width; remove "
-                         f"{' and '.join(given)} from [inputs] (or the [seal])")
-    if i.temperature is None:
-        raise InputError("inputs.temperature: the seal's contact map needs the seal "
-                         "temperature; give temperature = '20 degC' in [inputs]")
-    contact_map = build_contact_map(spec, seal.sliding_diameter, Path(base_dir), "seal.map",
-                                    progress, label="bench seal")
+    contact_map = bench_contact_map(case, base_dir, progress)
     dp = abs(float(i.pressure_a) - float(i.pressure_b))
     lo, hi = contact_map.ranges["pressure"]
     if not lo - 1e-6 <= dp <= hi + 1e-6:

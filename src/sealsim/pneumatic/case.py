@@ -352,9 +352,10 @@ class ThermalModel(CaseModel):
 
 # -- numerics and output ----------------------------------------------------------------------
 class SolverModel(CaseModel):
-    """Time integration (scipy solve_ivp, implicit/stiff methods)."""
+    """Time integration (implicit/stiff methods): "compiled" (variable-order BDF compiled with
+    numba, :mod:`sealsim.ode.bdf`), or scipy's LSODA, BDF or Radau."""
 
-    method: Literal["LSODA", "BDF", "Radau"] = "LSODA"
+    method: Literal["compiled", "LSODA", "BDF", "Radau"] = "compiled"
     rtol: float = Field(1e-5, gt=0, le=1e-2)
     max_step: Q("time", gt=0) = 0.05
     max_duration: Q("time", gt=0) = Field(MAX_DURATION, description=(

@@ -1,13 +1,20 @@
 """Time integration of the pneumatic model, segment by segment.
 
 The ODE is integrated between valve switches (the spool motion has a kink there) and
-stick/slip transitions (events).  The default method, LSODA, is driven here step by step
-through scipy's own LSODA routine with exactly the settings, events and dense output of
-``scipy.integrate.solve_ivp(method="LSODA", dense_output=True, events=...)`` -- the same steps
-and the same results -- without solve_ivp's per-step Python objects; the right-hand side and the
-Jacobian are compiled (:mod:`.rhs`).  BDF and Radau run through ``solve_ivp`` itself.  If scipy's
-low-level LSODA routine is not available (a scipy version that moved it), LSODA also runs
-through ``solve_ivp``.
+stick/slip transitions (events).
+
+* ``solver.method = "compiled"`` (the default): the variable-order BDF method of
+  :mod:`sealsim.ode.bdf` (scipy's BDF algorithm, compiled), driven by one compiled function
+  per valve interval (:func:`run_interval`) that also locates the stick/slip events, switches
+  the mode and samples the output grid -- no Python between steps.  The bookkeeping integrals
+  are its quadrature states (outside the Newton matrix and the error control).
+* ``"LSODA"`` (the reference in the tests): driven step by step through scipy's own LSODA
+  routine with exactly the settings, events and dense output of
+  ``scipy.integrate.solve_ivp(method="LSODA", dense_output=True, events=...)`` -- the same
+  steps and the same results -- without solve_ivp's per-step Python objects; the right-hand
+  side and the Jacobian are compiled (:mod:`.rhs`).  If scipy's low-level LSODA routine is not
+  available (a scipy version that moved it), LSODA runs through ``solve_ivp``.
+* ``"BDF"`` and ``"Radau"`` run through ``solve_ivp`` itself.
 """
 
 from __future__ import annotations
@@ -15,10 +22,14 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+from numba import njit
 from scipy.integrate import solve_ivp
 
 from sealsim.errors import ConvergenceError
+from sealsim.ode import bdf
 from sealsim.pneumatic import rhs
+from sealsim.pneumatic._jit import jit
+from sealsim.pneumatic.system import stick_tolerance
 from sealsim.units import ZERO_CELSIUS_K
 
 try:  # scipy's LSODA step routine (what solve_ivp's LSODA class calls)
@@ -27,7 +38,7 @@ try:  # scipy's LSODA step routine (what solve_ivp's LSODA class calls)
 except ImportError:  # pragma: no cover - depends on the scipy version
     _lsoda_step = None
 
-__all__ = ["Segment", "integrate", "segment_states"]
+__all__ = ["Segment", "integrate", "run_interval", "segment_states"]
 
 _MAX_SWITCHES_PER_MS = 200    # stick/slip chattering guard
 _EPS = np.finfo(float).eps
@@ -217,25 +228,266 @@ def _solve_scipy(system, t0, t1, y0, mode, method, rtol, atol, max_step):
     return seg, float(sol.t[-1]), sol.y[:, -1].copy(), None
 
 
-def integrate(system, progress=None, on_segment=None) -> list[Segment]:
-    """Integrate a :class:`.system.PneumaticSystem` segment by segment (valve switches,
-    stick/slip transitions); ``on_segment(segment)`` and ``progress(t, end)`` after every
-    segment."""
+# -- the compiled driver ---------------------------------------------------------------------
+# args of the problem functions: (mode, tables, work), work = (diag, jacobian scale, three
+# work vectors, the full Jacobian, [speed resolution], scratch state)
+@njit(cache=True)
+def _fun(t, y, args, dy):
+    """:func:`.rhs.derivatives`, calling the column evaluation directly (one call less per
+    evaluation: it is called ten thousand times per second simulated)."""
+    zero = args[0] * 0
+    rhs.evaluate_column(t, y[:, None], zero, args[0], args[1], dy[:, None], args[2][0],
+                        zero + rhs.RATES)
+
+
+@njit(cache=True)
+def _jac(t, y, args, jac):
+    """The columns of the dynamic states of :func:`.rhs.jacobian` (forward differences)."""
+    work = args[2]
+    full = work[5]
+    rhs.jacobian(t, y, args[0], args[1], work[1], work[2], work[3], work[4], work[0], full)
+    for i in range(jac.shape[0]):
+        for j in range(jac.shape[1]):
+            jac[i, j] = full[i, j]
+
+
+_tolerance = jit(stick_tolerance)
+
+
+@njit(cache=True)
+def _margin(t, y, args):
+    """(F_req, F_brk + tolerance) at rest (:meth:`.system.PneumaticSystem.stick_margin`)."""
+    work = args[2]
+    hold, brk = rhs.stick_margin(t, y, args[1], work[2], work[3], work[0])
+    return hold, brk + _tolerance(brk)
+
+
+@njit(cache=True)
+def _event(t, y, args):
+    """The event function of the mode (see :func:`_event_function`): slip ends when the
+    motion has reversed by the speed resolution, sticking at the break-away."""
+    mode = args[0]
+    if mode == rhs.FORWARD or mode == rhs.BACKWARD:
+        return mode * y[1] + args[2][6][0]
+    if mode == rhs.STICK:
+        hold, brk = _margin(t, y, args)
+        return abs(hold) - brk
+    return 1.0
+
+
+_SOLVER = bdf.compile_bdf("pneumatic", _fun, _jac, _event)
+_bdf_start, _bdf_step, _bdf_locate = _SOLVER.start, _SOLVER.step, _SOLVER.locate
+
+#: results of :func:`run_interval`
+DONE, SEGMENTS_FULL, STEP_FAILED, CHATTERING = 0, 1, 2, 3
+
+
+@njit(cache=True)
+def _next_mode_at_rest(t, y, args):
+    hold, brk = _margin(t, y, args)
+    if abs(hold) <= brk:                 # resolve_stick of sealsim.friction.hybrid
+        return rhs.STICK
+    return rhs.FORWARD if hold > 0 else rhs.BACKWARD
+
+
+@njit(cache=True)
+def run_interval(t, t_end, y, mode, tables, work, ws, grid, k, samples, sample_modes, seg_t,
+                 seg_i, seg_y, recent):
+    """Integrate from t to t_end (no valve switch inside) with the compiled BDF method.
+
+    Segments end at stick/slip events (located on the dense output, as solve_ivp's events);
+    the mode then switches as in :func:`integrate`.  ``y`` (in/out) is the state;
+    ``samples[k:]`` (grid points × states) and ``sample_modes`` are filled for the grid points
+    passed; per segment ``seg_t`` (start, end), ``seg_i`` (mode, steps, RHS evaluations,
+    Jacobians, ended by an event) and ``seg_y`` (state at its end).  ``recent`` holds the times
+    of the last transitions (chattering guard; recent[-1] is the ring index).  Returns
+    (result, t, mode, k, segments): :data:`DONE`, :data:`SEGMENTS_FULL` (call again),
+    :data:`STEP_FAILED` or :data:`CHATTERING`."""
+    s, iv, y_new = ws[0], ws[1], ws[2]
+    y_tmp = work[7]
+    cap = seg_t.shape[0]
+    nseg = 0
+    ring = recent.shape[0] - 1
+    while t < t_end:
+        if nseg == cap:
+            return SEGMENTS_FULL, t, mode, k, nseg
+        args = (mode, tables, work)
+        steps0, nfev0, njev0 = iv[bdf.I_NSTEPS], iv[bdf.I_NFEV], iv[bdf.I_NJEV]
+        _bdf_start(ws, t, y, t_end, args)
+        direction = 0.0
+        if mode == rhs.FORWARD or mode == rhs.BACKWARD:
+            direction = -1.0
+        elif mode == rhs.STICK:
+            direction = 1.0
+        g_old = _event(t, y, args) if direction != 0.0 else 1.0
+        seg_t[nseg, 0] = t
+        event = False
+        t_stop = t
+        while True:
+            if _bdf_step(ws, args) != bdf.OK:
+                for i in range(y.shape[0]):
+                    y[i] = y_new[i]
+                return STEP_FAILED, s[bdf.S_T], mode, k, nseg
+            t_new = s[bdf.S_T]
+            t_stop = t_new
+            if direction != 0.0:
+                g_new = _event(t_new, y_new, args)
+                if (direction > 0.0 and g_old <= 0.0 <= g_new) or (
+                        direction < 0.0 and g_old >= 0.0 >= g_new):
+                    t_stop = _bdf_locate(ws, args, g_old, g_new, y_tmp)
+                    event = True
+                g_old = g_new
+            while k < grid.shape[0] and grid[k] < t_stop:     # the output grid
+                bdf.dense(ws, grid[k], samples[k])
+                if mode == rhs.STICK:
+                    samples[k, 1] = 0.0
+                sample_modes[k] = mode
+                k += 1
+            if event:
+                bdf.dense(ws, t_stop, y)
+                break
+            if t_new >= t_end:
+                for i in range(y.shape[0]):
+                    y[i] = y_new[i]
+                break
+        seg_t[nseg, 1] = t_stop
+        seg_i[nseg, 0] = mode
+        seg_i[nseg, 1] = iv[bdf.I_NSTEPS] - steps0
+        seg_i[nseg, 2] = iv[bdf.I_NFEV] - nfev0
+        seg_i[nseg, 3] = iv[bdf.I_NJEV] - njev0
+        seg_i[nseg, 4] = 1 if event else 0
+        for i in range(y.shape[0]):
+            seg_y[nseg, i] = y[i]
+        nseg += 1
+        t = t_stop
+        if event:
+            if mode == rhs.FORWARD or mode == rhs.BACKWARD:
+                y[1] = 0.0
+                mode = _next_mode_at_rest(t, y, (mode, tables, work))
+            else:
+                hold, _ = _margin(t, y, args)
+                mode = rhs.FORWARD if hold > 0 else rhs.BACKWARD
+            # chattering guard: more than _MAX_SWITCHES_PER_MS transitions within 1 ms
+            j = int(recent[ring])
+            oldest = recent[j]
+            recent[j] = t
+            recent[ring] = (j + 1) % ring
+            if oldest > t - 1e-3:
+                return CHATTERING, t, mode, k, nseg
+    return DONE, t, mode, k, nseg
+
+
+def _integrate_compiled(system, progress, sampler) -> list[Segment]:
+    """All valve intervals with :func:`run_interval`; fills ``sampler`` (a
+    :class:`.results.Sampler`) with the samples on its grid; any other ``on_segment`` callable
+    is called with every segment (they carry no dense output)."""
+    if not hasattr(sampler, "store"):
+        segments = _integrate_compiled(system, progress, _EndOnly(system.duration))
+        if sampler is not None:
+            for seg in segments:
+                sampler(seg)
+        return segments
     case = system.case
     end = system.duration
     rtol = case.solver.rtol
     atol = system.tolerances(rtol)
+    n, ndyn = system.n_states, system.n_dynamic
+    ws = bdf.workspace(n, ndyn, rtol, atol, case.solver.max_step)
+    work = (np.zeros((system.n_diag, 1)), system.tolerances(1.0)[:ndyn].copy(), np.zeros(n),
+            np.zeros(n), np.zeros(n), np.zeros((n, n)), np.array([0.1 * atol[1]]), np.zeros(n))
+    grid = sampler.grid
+    samples = np.zeros((grid.size, n))
+    sample_modes = np.zeros(grid.size, dtype=np.int64)
+    cap = 256
+    seg_t, seg_i, seg_y = np.zeros((cap, 2)), np.zeros((cap, 5), dtype=np.int64), \
+        np.zeros((cap, n))
+    recent = np.full(_MAX_SWITCHES_PER_MS + 2, -np.inf)
+    recent[-1] = 0.0
+    y = system.initial_state()
+    t = 0.0
+    mode = _initial_mode(system, t, y)
+    breaks = sorted({float(a) for a in system.spool.arrivals if 0.0 < a < end} | {end})
+    segments: list[Segment] = []
+    k = 0
+    y_start = y.copy()
+    for t_next in breaks:
+        if t_next <= t + 1e-12 * max(end, 1.0):
+            continue
+        while True:
+            result, t, mode, k, nseg = run_interval(t, t_next, y, mode, system.tables, work, ws,
+                                                    grid, k, samples, sample_modes, seg_t,
+                                                    seg_i, seg_y, recent)
+            for j in range(nseg):
+                y1 = seg_y[j].copy()
+                segments.append(Segment(float(seg_t[j, 0]), float(seg_t[j, 1]),
+                                        int(seg_i[j, 0]), y_start, y1, int(seg_i[j, 1]),
+                                        int(seg_i[j, 2]), int(seg_i[j, 3]), int(seg_i[j, 4])))
+                y_start = y1.copy()
+                if seg_i[j, 4]:                     # the next segment starts after the switch
+                    if seg_i[j, 0] in (rhs.FORWARD, rhs.BACKWARD):
+                        y_start[1] = 0.0
+            if result == DONE:
+                break
+            if result == STEP_FAILED or not np.all(np.isfinite(y)):
+                y_fail = y if np.all(np.isfinite(y)) else y_start
+                raise ConvergenceError(
+                    f"pneumatic simulation: the integrator (compiled BDF) failed at "
+                    f"{_where(system, float(t), y_fail, mode)}: the step size became too "
+                    "small; try a smaller solver.max_step or solver.method = \"LSODA\"")
+            if result == CHATTERING:
+                raise ConvergenceError(
+                    f"pneumatic simulation: stick/slip chattering (more than "
+                    f"{_MAX_SWITCHES_PER_MS} transitions within 1 ms) at "
+                    f"{_where(system, t, y, mode)}; the contact cannot decide between sticking "
+                    "and sliding -- check the friction parameters")
+        if progress is not None:
+            progress(t, end)
+    # the last grid point (the end) from the final state
+    while k < grid.size:
+        samples[k] = y
+        if mode == rhs.STICK:
+            samples[k, 1] = 0.0
+        sample_modes[k] = mode
+        k += 1
+    sampler.store(grid, samples.T, sample_modes)
+    return segments
+
+
+class _EndOnly:
+    """A sample grid of one point, the end (a run without an output table)."""
+
+    def __init__(self, end: float):
+        self.grid = np.array([float(end)])
+
+    def store(self, times, states, modes) -> None:
+        pass
+
+
+def _initial_mode(system, t, y) -> int:
+    if system.position is not None:
+        return rhs.PRESCRIBED
+    if system.sticky:
+        return system.next_mode_at_rest(t, y)
+    return rhs.FREE
+
+
+def integrate(system, progress=None, on_segment=None) -> list[Segment]:
+    """Integrate a :class:`.system.PneumaticSystem` segment by segment (valve switches,
+    stick/slip transitions); ``on_segment(segment)`` and ``progress(t, end)`` after every
+    segment (the compiled method: ``progress`` after every valve interval; a
+    :class:`.results.Sampler` as ``on_segment`` receives the samples)."""
+    case = system.case
     method = case.solver.method
+    if method == "compiled":
+        return _integrate_compiled(system, progress, on_segment)
+    end = system.duration
+    rtol = case.solver.rtol
+    atol = system.tolerances(rtol)
     max_step = case.solver.max_step
     y = system.initial_state()
     t = 0.0
     breaks = sorted({float(a) for a in system.spool.arrivals if 0.0 < a < end} | {end})
-    if system.position is not None:
-        mode = rhs.PRESCRIBED
-    elif system.sticky:
-        mode = system.next_mode_at_rest(t, y)
-    else:
-        mode = rhs.FREE
+    mode = _initial_mode(system, t, y)
     segments: list[Segment] = []
     recent: list[float] = []
     while t < end * (1 - 1e-12):

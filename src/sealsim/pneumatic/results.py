@@ -129,6 +129,10 @@ class Sampler:
         self.states.append(ys)
         self.modes.append(np.full(ts.shape, seg.mode, dtype=np.int64))
 
+    def store(self, times, states, modes) -> None:
+        """All samples at once (the compiled integrator samples the grid itself)."""
+        self.times, self.states, self.modes = [times], [states], [modes]
+
     def finish(self):
         """(times, states, modes) of all samples."""
         if self.pending is not None:
@@ -146,7 +150,7 @@ def sample(system, sampler: Sampler):
 
 
 def _diagnostics(system, ts, ys, modes) -> dict[str, np.ndarray]:
-    d = system.evaluate(ts, ys, modes, full=True)
+    d = system.evaluate(ts, ys, modes, full=True, outputs_only=True)
     out = {"time": ts, "x": d["x"], "v": d["v"], "p1": d["p1"], "p2": d["p2"], "T1": d["T1"],
            "T2": d["T2"], "spool": np.asarray(d["spool"], dtype=float),
            "command": system.schedule.command_at(ts), "mode": modes,

@@ -16,7 +16,8 @@ Tables
     Constants, indexed by the ``C_*`` names below.
 ``seal_int`` (int64, one row per seal), ``law_par`` (float64, one row per seal)
     Law code and location, state offsets, map and thermal set-up (``SI_*`` columns), the law's
-    parameters (layout per law in :func:`law_parameters`) and thermal constants (``ST_*``).
+    parameters (layout per law in :func:`sealsim.friction.compiled.law_parameters`) and
+    thermal constants (``ST_*``).
 ``map_data`` (float64), ``map_int`` (int64, one row per seal)
     Contact maps: exact analytic O-ring estimate or a C¹ Hermite grid
     (:func:`sealsim.pneumatic.contact_maps.hermite_grid_point`).
@@ -24,7 +25,7 @@ Tables
     layout row)
     Steady friction tables from the seals' contacts
     (:func:`sealsim.friction.contact_table.contact_table_point`) for Θ laws with
-    ``steady = "contact"``; a seal without one has an empty row.
+    ``steady = "contact"``; a seal without one has a row of zeros.
 ``spool`` (float64, 3 rows) and ``profile`` (float64)
     Valve command arrivals / targets / start positions, and the prescribed position profile.
 
@@ -40,7 +41,16 @@ import math
 import numpy as np
 from numba import njit
 
-from sealsim.friction import kernels as fk
+from sealsim.friction.compiled import (  # noqa: F401  (law codes re-exported)
+    COULOMB,
+    DAHL,
+    GMS,
+    LAW_CODES,
+    LUGRE,
+    STRIBECK,
+    THETA,
+)
+from sealsim.friction.compiled import law_rates as _law_rates
 from sealsim.pneumatic._jit import jit
 from sealsim.pneumatic.chambers import (
     AIR_CP,
@@ -50,7 +60,6 @@ from sealsim.pneumatic.chambers import (
     free_convection_coefficient,
     wall_heat_flow,
 )
-from sealsim.friction.contact_table import contact_table_point
 from sealsim.pneumatic.contact_maps import _analytic_loads, hermite_grid_point
 from sealsim.pneumatic.friction_tables import table_orientation
 from sealsim.pneumatic.cylinder import end_stop_force, load_force
@@ -63,6 +72,9 @@ __all__ = ["BOOKKEEPING", "MODES", "STICK", "FORWARD", "BACKWARD", "FREE", "PRES
 
 #: integration modes
 STICK, FORWARD, BACKWARD, FREE, PRESCRIBED = 0, 1, -1, 2, 3
+#: what :func:`evaluate_column` computes: derivatives; derivatives and every intermediate
+#: quantity; the output quantities only
+RATES, FULL, OUTPUTS = 0, 1, 2
 MODES = {STICK: "stick", FORWARD: "slip+", BACKWARD: "slip-", FREE: "free",
          PRESCRIBED: "prescribed"}
 #: bookkeeping states appended to y: time integrals of the boundary flows (kg, J); the last
@@ -80,10 +92,7 @@ THERMAL_BOOKKEEPING = ("friction_heat", "heat_to_air", "heat_to_ambient")
  C_SPOOL_TAU, C_SPOOL_INIT, C_PROFILE_KIND, C_HFREE, C_NCONST) = range(48)
 
 # -- seal tables ----------------------------------------------------------------------------
-#: law codes
-COULOMB, STRIBECK, LUGRE, DAHL, GMS, THETA = range(6)
-LAW_CODES = {"coulomb": COULOMB, "stribeck": STRIBECK, "lugre": LUGRE, "dahl": DAHL,
-             "gms": GMS, "theta": THETA}
+#: law codes: those of :mod:`sealsim.friction.compiled` (imported above)
 #: columns of seal_int
 (SI_LAW, SI_LOC, SI_OFF, SI_STICKY, SI_HEATED, SI_COUNTER, SI_GROOVE, SI_NCOLS) = range(8)
 #: columns of seal_therm: constant temperature [K], heat capacity [J/K], circumference π·D [m],
@@ -186,105 +195,10 @@ def _seal_loads(i, dp, temp, map_int, map_data):
 
 
 @njit(cache=True)
-def _contact_steady(par, frow, fdata, temp, dp, orient, vv):
-    """(|F_ss(v)| [N], F_ss(0⁺) [N]) of a Θ law on its seal's contact table
-    (:meth:`sealsim.friction.theta.Theta.contact_steady`): par[13] = μ_b, par[15] = π·D."""
-    load, visc, _ = contact_table_point(frow, fdata, temp, dp, orient * vv)
-    slow = 10.0 ** fdata[frow[0] + frow[1]]
-    up, _, _ = contact_table_point(frow, fdata, temp, dp, slow)
-    down, _, _ = contact_table_point(frow, fdata, temp, dp, -slow)
-    return par[15] * (par[13] * load + visc), par[15] * par[13] * 0.5 * (up + down)
-
-
-@njit(cache=True)
-def _law_rates(law, par, z, off, vv, fn, b, pa, pb, temp, dy, col, frow, fdata, dp, orient):
-    """Friction force and break-away force of one seal; writes its state rates into dy.
-
-    The laws are the kernels of :mod:`sealsim.friction.kernels`; the parameter layout of each
-    law is :func:`sealsim.pneumatic.system.law_parameters`.  ``frow``/``fdata``: the seal's
-    contact friction table (Θ law with a steady curve from its contact), read at the pressure
-    difference ``dp`` [Pa] and the velocity times the table ``orient``-ation."""
-    force = 0.0
-    brk = 0.0
-    if law == COULOMB:
-        fc = fk.pressure_scaled_force(par[0], par[2], pa, pb)
-        force = fk.coulomb_viscous_force(vv, fc, par[1])
-        brk = fc
-    elif law == STRIBECK:
-        fc, fs = fk.stribeck_scaled_levels(par[0], par[1], par[5], pa, pb)
-        force = fk.stribeck_force(vv, fc, fs, par[2], par[4], par[3])
-        brk = fs
-    elif law == LUGRE:
-        g = fk.stribeck_level(vv, par[3], par[4], par[5], par[6])
-        zdot = fk.lugre_bristle_rate(z[off, col], vv, par[0], g)
-        force = fk.lugre_force(z[off, col], zdot, vv, par[0], par[1], par[2])
-        dy[off, col] = zdot
-    elif law == DAHL:
-        force = par[0] * z[off, col]
-        dy[off, col] = fk.dahl_bristle_rate(z[off, col], vv, par[0], par[1], par[2])
-    elif law == GMS:
-        n = int(par[0])
-        s = fk.stribeck_level(vv, par[3], par[4], par[5], par[6])
-        total = 0.0
-        for j in range(n):
-            zj = z[off + j, col]
-            total += par[7 + j] * zj
-            dy[off + j, col] = fk.gms_element_rate(zj, vv, par[7 + j], par[7 + n + j],
-                                                   par[1], s)
-        force = total + par[2] * vv
-    elif law == THETA:
-        gamma = par[4]
-        if par[11] != 0.0:                      # γ(T) from the base oil (ASTM D341)
-            gamma = gamma * fk.walther_viscosity_ratio(temp, par[9], par[10], par[11])
-        th = z[off, col]
-        fn = max(fn, 1e-9)
-        if par[12] > 0.0:                       # steady curve from the contact table
-            fss, fb = _contact_steady(par, frow, fdata, temp, dp, orient, vv)
-            level = fk.theta_contact_level(th, vv, fss, fb, par[14],
-                                           fk.theta_steady(vv, par[0], par[1], fn, par[5],
-                                                           par[6]))
-            gamma = 0.0
-        else:
-            level = fk.theta_friction_level(th, fn, par[2], par[3])
-        dy[off, col] = fk.theta_rate(th, vv, par[0], par[1], fn, par[5], par[6])
-        if par[7] > 0.0:                        # bristles
-            zdot = fk.lugre_bristle_rate(z[off + 1, col], vv, par[7], level)
-            dy[off + 1, col] = zdot
-            force = par[7] * z[off + 1, col] + par[8] * zdot + gamma * b * vv
-        elif par[12] > 0.0:
-            force = level * fk.sgn(vv)
-            brk = level
-        else:
-            force = fk.theta_force(th, vv, fn, b, par[2], par[3], gamma)
-            brk = level
-    return force, brk
-
-
-@njit(cache=True)
-def evaluate_column(t, y, col, mode, tables, dy, diag, full):
-    """dy/dt of column ``col`` of ``y`` (shape (n, k)) in integration mode ``mode``.
-
-    Writes dy[:, col] (and, with ``full``, every intermediate quantity into diag[:, col]).
-    ``tables`` = (c, spool, profile, seal_int, law_par, seal_therm, map_int, map_data,
-    fric_int, fric_data).
-    """
-    (c, spool, profile, seal_int, law_par, seal_therm, map_int, map_data, fric_int,
-     fric_data) = tables
-    gm1 = AIR_HEAT_CAPACITY_RATIO - 1.0
-    prescribed = mode == PRESCRIBED
-    if prescribed:
-        x, v = profile_point(t, int(c[C_PROFILE_KIND]), profile)
-    else:
-        x, v = y[0, col], y[1, col]
-    m1, m2, u1, u2 = y[2, col], y[3, col], y[4, col], y[5, col]
-    vol1 = c[C_DEAD1] + c[C_A1] * x
-    vol2 = c[C_DEAD2] + c[C_A2] * (c[C_STROKE] - x)
-    p1 = gm1 * u1 / vol1
-    p2 = gm1 * u2 / vol2
-    # Newton iterates of the solver may visit m <= 0: keep T finite there
-    t1 = min(max(u1 / (max(m1, 1e-12) * AIR_CV), 20.0), 3000.0)
-    t2 = min(max(u2 / (max(m2, 1e-12) * AIR_CV), 20.0), 3000.0)
-    s = spool_position(t, spool, c[C_SPOOL_TAU], c[C_SPOOL_INIT])
+def _flows_and_heat(x, p1, p2, t1, t2, s, t_wall, c):
+    """Mass flows g0..g3 [kg/s] of the paths P→A, A→R, P→B, B→R (meter-out throttles and end
+    cushions in series), their enthalpy flows h0..h3 [W] and the wall heat q1, q2 [W] into the
+    chambers, at spool position s."""
     pa_, ar_, pb_, br_ = _openings(s, c[C_CENTRE])
     ps, pa, ts, ta = c[C_PS], c[C_PA], c[C_TS], c[C_TA]
     # restrictions on the way out of a chamber: meter-out throttle and end cushion
@@ -303,6 +217,47 @@ def evaluate_column(t, y, col, mode, tables, dy, diag, full):
     h1 = AIR_CP * (t1 if p1 >= pa else ta) * g1
     h2 = AIR_CP * (ts if ps >= p2 else t2) * g2
     h3 = AIR_CP * (t2 if p2 >= pa else ta) * g3
+    hw1 = hw2 = c[C_H]                            # wall heat-transfer coefficients
+    if c[C_HFREE] > 0.0:                          # free convection at the chamber's state
+        hw1 = _free_h(p1, t1, t_wall, c[C_BORE])
+        hw2 = _free_h(p2, t2, t_wall, c[C_BORE])
+    q1 = _heat(hw1, _wall_area(x + c[C_DEAD1] / c[C_A1], c[C_BORE], c[C_A1]), t_wall, t1)
+    q2 = _heat(hw2, _wall_area(c[C_STROKE] - x + c[C_DEAD2] / c[C_A2], c[C_BORE], c[C_A1]),
+               t_wall, t2)
+    return g0, g1, g2, g3, h0, h1, h2, h3, q1, q2
+
+
+@njit(cache=True)
+def evaluate_column(t, y, col, mode, tables, dy, diag, level):
+    """dy/dt of column ``col`` of ``y`` (shape (n, k)) in integration mode ``mode``.
+
+    ``level`` :data:`RATES` (0): writes dy[:, col]; :data:`FULL` (1): also every intermediate
+    quantity into diag[:, col]; :data:`OUTPUTS` (2): only what the output time series and the
+    stick test need (positions, pressures, temperatures, forces, contact loads) into diag --
+    no flows, no heat, no derivatives: the cheaper evaluation at the output samples.
+    ``tables`` = (c, spool, profile, seal_int, law_par, seal_therm, map_int, map_data,
+    fric_int, fric_data).
+    """
+    full = level > 0
+    rates = level < 2
+    (c, spool, profile, seal_int, law_par, seal_therm, map_int, map_data, fric_int,
+     fric_data) = tables
+    gm1 = AIR_HEAT_CAPACITY_RATIO - 1.0
+    prescribed = mode == PRESCRIBED
+    if prescribed:
+        x, v = profile_point(t, int(c[C_PROFILE_KIND]), profile)
+    else:
+        x, v = y[0, col], y[1, col]
+    m1, m2, u1, u2 = y[2, col], y[3, col], y[4, col], y[5, col]
+    vol1 = c[C_DEAD1] + c[C_A1] * x
+    vol2 = c[C_DEAD2] + c[C_A2] * (c[C_STROKE] - x)
+    p1 = gm1 * u1 / vol1
+    p2 = gm1 * u2 / vol2
+    # Newton iterates of the solver may visit m <= 0: keep T finite there
+    t1 = min(max(u1 / (max(m1, 1e-12) * AIR_CV), 20.0), 3000.0)
+    t2 = min(max(u2 / (max(m2, 1e-12) * AIR_CV), 20.0), 3000.0)
+    s = spool_position(t, spool, c[C_SPOOL_TAU], c[C_SPOOL_INIT])
+    ps, pa = c[C_PS], c[C_PA]
     heating = c[C_HEAT] > 0.0
     toff = int(c[C_TOFF])
     nseal = seal_int.shape[0]
@@ -312,13 +267,10 @@ def evaluate_column(t, y, col, mode, tables, dy, diag, full):
         t_wall = t_tube
     else:
         t_tube = t_rod = t_wall = c[C_TW]
-    hw1 = hw2 = c[C_H]                            # wall heat-transfer coefficients
-    if c[C_HFREE] > 0.0:                          # free convection at the chamber's state
-        hw1 = _free_h(p1, t1, t_wall, c[C_BORE])
-        hw2 = _free_h(p2, t2, t_wall, c[C_BORE])
-    q1 = _heat(hw1, _wall_area(x + c[C_DEAD1] / c[C_A1], c[C_BORE], c[C_A1]), t_wall, t1)
-    q2 = _heat(hw2, _wall_area(c[C_STROKE] - x + c[C_DEAD2] / c[C_A2], c[C_BORE], c[C_A1]),
-               t_wall, t2)
+    g0 = g1 = g2 = g3 = h0 = h1 = h2 = h3 = q1 = q2 = 0.0
+    if rates:
+        g0, g1, g2, g3, h0, h1, h2, h3, q1, q2 = _flows_and_heat(x, p1, p2, t1, t2, s, t_wall,
+                                                                 c)
     f_press = p1 * c[C_A1] - p2 * c[C_A2] - pa * c[C_AROD]
     f_load = _load(x, v, c[C_F0], c[C_KL], c[C_X0L], c[C_MASS], c[C_INCL], c[C_CL])
     f_stop = _stop(x, v, c[C_STROKE], c[C_KS], c[C_CS], c[C_DS])
@@ -384,83 +336,84 @@ def evaluate_column(t, y, col, mode, tables, dy, diag, full):
         f_fric += diag[base + i * DS_NROWS + DS_F, col]
 
     # -- derivatives ---------------------------------------------------------------------------
-    dvol1 = c[C_A1] * v
-    dvol2 = -c[C_A2] * v
-    dy[0, col] = 0.0 if prescribed else v
-    if mode == FORWARD or mode == BACKWARD or mode == FREE:
-        dy[1, col] = (f_drive - f_fric) / c[C_MASS]
-    else:
-        dy[1, col] = 0.0
     q_air1 = q1
     q_air2 = q2
-    book = int(c[C_BOOK])
-    if heating:
-        # seal nodes: friction heat in, heat to the counterface, groove, air and ambient
-        cap_t = c[C_TUBE_CAP]
-        q_tube = -(q1 + q2)                    # the tube gives the chamber wall heat
-        q_rod = 0.0
-        q_amb = 0.0
-        q_heat = 0.0
-        for i in range(nseal):
-            r = base + i * DS_NROWS
-            power = diag[r + DS_F, col] * v
-            if seal_int[i, SI_HEATED] == 0:       # no node: its heat goes to the counterface
+    if rates:
+        dvol1 = c[C_A1] * v
+        dvol2 = -c[C_A2] * v
+        dy[0, col] = 0.0 if prescribed else v
+        if mode == FORWARD or mode == BACKWARD or mode == FREE:
+            dy[1, col] = (f_drive - f_fric) / c[C_MASS]
+        else:
+            dy[1, col] = 0.0
+        book = int(c[C_BOOK])
+        if heating:
+            # seal nodes: friction heat in, heat to the counterface, groove, air and ambient
+            cap_t = c[C_TUBE_CAP]
+            q_tube = -(q1 + q2)                    # the tube gives the chamber wall heat
+            q_rod = 0.0
+            q_amb = 0.0
+            q_heat = 0.0
+            for i in range(nseal):
+                r = base + i * DS_NROWS
+                power = diag[r + DS_F, col] * v
+                if seal_int[i, SI_HEATED] == 0:       # no node: its heat goes to the counterface
+                    if seal_int[i, SI_COUNTER] == NODE_TUBE:
+                        q_tube += power
+                    else:
+                        q_rod += power
+                    q_heat += power
+                    dy[toff + i, col] = 0.0
+                    continue
+                ts_i = y[toff + i, col]
+                t_cf = t_tube if seal_int[i, SI_COUNTER] == NODE_TUBE else t_rod
+                t_gr = t_tube if seal_int[i, SI_GROOVE] == NODE_TUBE else t_rod
+                par = seal_therm[i]
+                width = diag[r + DS_B, col] if map_int[i, 0] != MAP_NONE else par[ST_WIDTH]
+                g_cf = sliding_contact_coefficient(v, width, par[ST_EFF], par[ST_HSTAT]) * (
+                    par[ST_AC] * width)
+                q_cf = g_cf * (ts_i - t_cf)
+                q_gr = par[ST_GGROOVE] * (ts_i - t_gr)
+                qa1 = par[ST_AIR1] * (ts_i - t1)
+                qa2 = par[ST_AIR2] * (ts_i - t2)
+                qam = par[ST_AMB] * (ts_i - c[C_TAMB])
+                dy[toff + i, col] = (power - q_cf - q_gr - qa1 - qa2 - qam) / par[ST_CAP]
                 if seal_int[i, SI_COUNTER] == NODE_TUBE:
-                    q_tube += power
+                    q_tube += q_cf
                 else:
-                    q_rod += power
+                    q_rod += q_cf
+                if seal_int[i, SI_GROOVE] == NODE_TUBE:
+                    q_tube += q_gr
+                else:
+                    q_rod += q_gr
+                q_air1 += qa1
+                q_air2 += qa2
+                q_amb += qam
                 q_heat += power
-                dy[toff + i, col] = 0.0
-                continue
-            ts_i = y[toff + i, col]
-            t_cf = t_tube if seal_int[i, SI_COUNTER] == NODE_TUBE else t_rod
-            t_gr = t_tube if seal_int[i, SI_GROOVE] == NODE_TUBE else t_rod
-            par = seal_therm[i]
-            width = diag[r + DS_B, col] if map_int[i, 0] != MAP_NONE else par[ST_WIDTH]
-            g_cf = sliding_contact_coefficient(v, width, par[ST_EFF], par[ST_HSTAT]) * (
-                par[ST_AC] * width)
-            q_cf = g_cf * (ts_i - t_cf)
-            q_gr = par[ST_GGROOVE] * (ts_i - t_gr)
-            qa1 = par[ST_AIR1] * (ts_i - t1)
-            qa2 = par[ST_AIR2] * (ts_i - t2)
-            qam = par[ST_AMB] * (ts_i - c[C_TAMB])
-            dy[toff + i, col] = (power - q_cf - q_gr - qa1 - qa2 - qam) / par[ST_CAP]
-            if seal_int[i, SI_COUNTER] == NODE_TUBE:
-                q_tube += q_cf
-            else:
-                q_rod += q_cf
-            if seal_int[i, SI_GROOVE] == NODE_TUBE:
-                q_tube += q_gr
-            else:
-                q_rod += q_gr
-            q_air1 += qa1
-            q_air2 += qa2
-            q_amb += qam
-            q_heat += power
-            if full:
-                diag[r + DS_POWER, col] = power
-        q_tube_amb = c[C_TUBE_G] * (t_tube - c[C_TAMB])
-        q_rod_amb = c[C_ROD_G] * (t_rod - c[C_TAMB])
-        dy[toff + nseal, col] = (q_tube - q_tube_amb) / cap_t
-        dy[toff + nseal + 1, col] = (q_rod - q_rod_amb) / c[C_ROD_CAP]
-        nb = book + 10
-        dy[nb, col] = q_heat
-        dy[nb + 1, col] = q_air1 + q_air2          # walls (tube node) and seals into the air
-        dy[nb + 2, col] = q_amb + q_tube_amb + q_rod_amb
-    dy[2, col] = g0 - g1
-    dy[3, col] = g2 - g3
-    dy[4, col] = h0 - h1 - p1 * dvol1 + q_air1
-    dy[5, col] = h2 - h3 - p2 * dvol2 + q_air2
-    dy[book, col] = g0 + g2
-    dy[book + 1, col] = g1 + g3
-    dy[book + 2, col] = abs(g0) + abs(g1) + abs(g2) + abs(g3)
-    dy[book + 3, col] = h0 - h1 + h2 - h3
-    dy[book + 4, col] = abs(h0) + abs(h1) + abs(h2) + abs(h3)
-    dy[book + 5, col] = q_air1 + q_air2
-    dy[book + 6, col] = p1 * dvol1 + p2 * dvol2
-    dy[book + 7, col] = -(f_load + pa * c[C_AROD]) * v
-    dy[book + 8, col] = f_stop * v
-    dy[book + 9, col] = f_fric * v
+                if full:
+                    diag[r + DS_POWER, col] = power
+            q_tube_amb = c[C_TUBE_G] * (t_tube - c[C_TAMB])
+            q_rod_amb = c[C_ROD_G] * (t_rod - c[C_TAMB])
+            dy[toff + nseal, col] = (q_tube - q_tube_amb) / cap_t
+            dy[toff + nseal + 1, col] = (q_rod - q_rod_amb) / c[C_ROD_CAP]
+            nb = book + 10
+            dy[nb, col] = q_heat
+            dy[nb + 1, col] = q_air1 + q_air2          # walls (tube node) and seals into the air
+            dy[nb + 2, col] = q_amb + q_tube_amb + q_rod_amb
+        dy[2, col] = g0 - g1
+        dy[3, col] = g2 - g3
+        dy[4, col] = h0 - h1 - p1 * dvol1 + q_air1
+        dy[5, col] = h2 - h3 - p2 * dvol2 + q_air2
+        dy[book, col] = g0 + g2
+        dy[book + 1, col] = g1 + g3
+        dy[book + 2, col] = abs(g0) + abs(g1) + abs(g2) + abs(g3)
+        dy[book + 3, col] = h0 - h1 + h2 - h3
+        dy[book + 4, col] = abs(h0) + abs(h1) + abs(h2) + abs(h3)
+        dy[book + 5, col] = q_air1 + q_air2
+        dy[book + 6, col] = p1 * dvol1 + p2 * dvol2
+        dy[book + 7, col] = -(f_load + pa * c[C_AROD]) * v
+        dy[book + 8, col] = f_stop * v
+        dy[book + 9, col] = f_fric * v
     if full:
         diag[D_X, col] = x
         diag[D_V, col] = v
@@ -491,18 +444,19 @@ def evaluate_column(t, y, col, mode, tables, dy, diag, full):
 
 @njit(cache=True)
 def _plain(y):
-    """(0, True) as run-time values: numba compiles a function once per argument *type*, and a
-    literal 0 or True is a type of its own; calling :func:`evaluate_column` everywhere with
-    plain int64 and bool arguments compiles it once instead of four times."""
-    return y.shape[0] * 0, y.shape[0] >= 0
+    """0 as a run-time value: numba compiles a function once per argument *type*, and a literal
+    0 is a type of its own; calling :func:`evaluate_column` everywhere with plain int64
+    arguments compiles it once instead of several times."""
+    return y.shape[0] * 0
 
 
 @njit(cache=True)
 def derivatives(t, y, mode, tables, dy, diag):
     """dy/dt at (t, y) for a state vector y of shape (n,) into dy (shape (n,))."""
-    zero, full = _plain(y)
-    evaluate_column(t, y.reshape(y.shape[0], 1), zero, mode + zero, tables,
-                    dy.reshape(dy.shape[0], 1), diag, not full)
+    zero = _plain(y)
+    # y[:, None]: a column view without numba's general reshape (which costs a third of the
+    # whole evaluation)
+    evaluate_column(t, y[:, None], zero, mode + zero, tables, dy[:, None], diag, zero + RATES)
 
 
 @njit(cache=True)
@@ -512,25 +466,27 @@ def jacobian(t, y, mode, tables, scale, work_y, work_dy, f0, diag, jac):
     state plus one at y."""
     n = y.shape[0]
     ndyn = scale.shape[0]
+    zero = _plain(y)
     derivatives(t, y, mode, tables, f0, diag)
     jac[:, :] = 0.0
+    shifted, rates = work_y[:, None], work_dy[:, None]      # column views, made once
     for j in range(ndyn):
         h = 1.5e-8 * max(abs(y[j]), scale[j])
         for i in range(n):
             work_y[i] = y[i]
         work_y[j] = y[j] + h
-        derivatives(t, work_y, mode, tables, work_dy, diag)
+        evaluate_column(t, shifted, zero, mode + zero, tables, rates, diag, zero + RATES)
         for i in range(n):
             jac[i, j] = (work_dy[i] - f0[i]) / h
 
 
 @njit(cache=True)
-def evaluate_many(ts, ys, modes, tables, dys, diag):
-    """dy/dt and all diagnostics for every column of ys (shape (n, k)) at the times ts (k,) in
+def evaluate_many(ts, ys, modes, tables, dys, diag, level):
+    """dy/dt and the diagnostics of ``level`` (:data:`FULL` or :data:`OUTPUTS`, see
+    :func:`evaluate_column`) for every column of ys (shape (n, k)) at the times ts (k,) in
     the modes ``modes`` (k,)."""
-    full = ys.shape[0] >= 0           # True, as a run-time value (see _plain)
     for col in range(ys.shape[1]):
-        evaluate_column(ts[col], ys, col, modes[col], tables, dys, diag, full)
+        evaluate_column(ts[col], ys, col, modes[col], tables, dys, diag, level)
 
 
 @njit(cache=True)
@@ -541,9 +497,9 @@ def stick_margin(t, y, tables, work_y, dy, diag):
     for i in range(y.shape[0]):
         work_y[i] = y[i]
     work_y[1] = 0.0
-    zero, full = _plain(y)
-    evaluate_column(t, work_y.reshape(work_y.shape[0], 1), zero, STICK + zero, tables,
-                    dy.reshape(dy.shape[0], 1), diag, full)
+    zero = _plain(y)
+    evaluate_column(t, work_y[:, None], zero, STICK + zero, tables, dy[:, None], diag,
+                    zero + OUTPUTS)
     return diag[D_HOLD, 0], diag[D_BRK, 0]
 
 

@@ -12,9 +12,10 @@ order: chamber volumes, pressures and temperatures; the spool position of the va
 throttles and end cushioning in series; wall heat; the pressure difference across every seal and
 F_N, b from its contact map; the friction laws; the piston force balance.
 
-**Integration.**  A stiff method (LSODA by default, BDF or Radau through scipy),
-restarted at every valve switch (the spool motion has a kink there) and at every stick/slip
-transition.  End stops are stiff spring–damper contacts (no velocity resets).
+**Integration.**  A stiff method -- by default the compiled variable-order BDF of
+:mod:`sealsim.ode.bdf`, or scipy's LSODA, BDF or Radau (``solver.method``) -- restarted at
+every valve switch (the spool motion has a kink there) and at every stick/slip transition.
+End stops are stiff spring–damper contacts (no velocity resets).
 
 **Sticking.**  Laws without true stiction (LuGre, Dahl, GMS, Θ with bristles) are smooth ODEs
 and run in the mode ``free``.  Seals whose law has true sticking (Coulomb, Stribeck, Θ without
@@ -58,13 +59,15 @@ compiled (:func:`.rhs.jacobian`).
 
 **Speed.**  The whole right-hand side is one compiled function (:mod:`.rhs`) of the states and
 a few preallocated tables (:class:`.system.PneumaticSystem`), composed of the physics functions
-of the modules and the friction-law kernels of :mod:`sealsim.friction.kernels`; LSODA is driven
-step by step through scipy's own routine with solve_ivp's settings (:mod:`.integrate`), so the
-results are those of ``solve_ivp(method="LSODA")``.  The modules:
+of the modules and the friction-law kernels of :mod:`sealsim.friction.kernels`; the default
+integrator is compiled too and runs a whole valve interval -- steps, stick/slip events, mode
+switches, output samples -- in one call (:func:`.integrate.run_interval`); LSODA is driven step
+by step through scipy's own routine with solve_ivp's settings, so its results are those of
+``solve_ivp(method="LSODA")``.  The modules:
 
 * :mod:`.system` -- the model of a case: constants, state layout, compiled tables;
 * :mod:`.rhs` -- the compiled right-hand side, Jacobian and dense output;
-* :mod:`.integrate` -- segments, events, the LSODA driver;
+* :mod:`.integrate` -- segments, events, the compiled driver and the LSODA driver;
 * :mod:`.results` -- sampling, time series, balances, notes;
 * :mod:`.summary` -- the numbers of ``summary.json``.
 

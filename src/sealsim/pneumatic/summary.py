@@ -83,6 +83,19 @@ def end_position_times(time, position, stroke, windows, target):
     return out
 
 
+def stroke_times(time, position, case) -> dict[str, Any]:
+    """Extend and retract times of a run of a ``cycle`` case (:data:`DEFINITIONS`): their
+    means ``extend_time_s``, ``retract_time_s`` (None without a complete stroke) and the
+    single strokes ``extend_times_s``, ``retract_times_s``."""
+    schedule = command_schedule(case)
+    stroke = case.cylinder.stroke
+    ext = end_position_times(time, position, stroke, schedule.windows(1.0), "extend")
+    ret = end_position_times(time, position, stroke, schedule.windows(-1.0), "retract")
+    return {"extend_time_s": float(np.mean(ext)) if ext else None,
+            "retract_time_s": float(np.mean(ret)) if ret else None,
+            "extend_times_s": ext, "retract_times_s": ret}
+
+
 def summarize(result) -> dict[str, Any]:
     """The numbers of ``summary.json`` for one variant (see :data:`DEFINITIONS`)."""
     frame = result.timeseries
@@ -94,13 +107,7 @@ def summarize(result) -> dict[str, Any]:
     moving = np.abs(v) > MOVING_SPEED
     summary: dict[str, Any] = {}
     if case.controller.mode == "cycle":
-        schedule = command_schedule(case)
-        ext = end_position_times(t, x, case.cylinder.stroke, schedule.windows(1.0), "extend")
-        ret = end_position_times(t, x, case.cylinder.stroke, schedule.windows(-1.0), "retract")
-        summary["extend_time_s"] = float(np.mean(ext)) if ext else None
-        summary["retract_time_s"] = float(np.mean(ret)) if ret else None
-        summary["extend_times_s"] = ext
-        summary["retract_times_s"] = ret
+        summary.update(stroke_times(t, x, case))
     else:
         summary["extend_time_s"] = summary["retract_time_s"] = None
     summary["mean_friction_N"] = float(np.mean(np.abs(friction[moving]))) if moving.any() \

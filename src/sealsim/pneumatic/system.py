@@ -12,6 +12,8 @@ import math
 import numpy as np
 
 from sealsim.errors import InputError
+from sealsim.friction.compiled import law_parameters
+from sealsim.friction.kernels import walther_viscosity_ratio
 from sealsim.friction.hybrid import resolve_stick
 from sealsim.pneumatic import rhs
 from sealsim.pneumatic.case import body_temperature
@@ -50,46 +52,6 @@ def stick_tolerance(breakaway_force):
     would alternate between stick and slip at every step of the integrator; with it, such a
     creep advances in steps of the tolerance (a break-away force 0.01 % high)."""
     return 1e-4 * abs(breakaway_force) + 1e-3
-
-
-def law_parameters(law) -> np.ndarray:
-    """The parameters of a friction-law object in the layout of the compiled right-hand side
-    (:func:`sealsim.pneumatic.rhs._law_rates`), SI units:
-
-    * coulomb: F_C, F_v, f;
-    * stribeck: F_C, F_S, v_S, δ, F_v, f;
-    * lugre: σ0, σ1, σ2, F_C, F_S, v_S, δ;
-    * dahl: σ0, F_C, α;
-    * gms: N, C, σ2, F_C, F_S, v_S, δ, k_1..k_N, α_1..α_N;
-    * theta: τ, α, f_a, f_b, γ, F_ref, n, σ0 (0 without bristles), σ1, T_ref, A, B (ASTM D341
-      constants of the base oil, B = 0: γ constant), then 1 if the steady curve comes from the
-      seal's contact table (else 0), μ_b, the dwell drop d and the circumference π·D (set by
-      :class:`PneumaticSystem`; 0 here).
-    """
-    p = law.params
-    name = law.name
-    if name == "coulomb":
-        values = [p.coulomb_force, p.viscous_coefficient, p.pressure_coefficient]
-    elif name == "stribeck":
-        values = [p.coulomb_force, p.static_force, p.stribeck_velocity, p.exponent,
-                  p.viscous_coefficient, p.pressure_coefficient]
-    elif name == "lugre":
-        values = [p.sigma0, p.sigma1, p.sigma2, p.coulomb_force, p.static_force,
-                  p.stribeck_velocity, p.exponent]
-    elif name == "dahl":
-        values = [p.sigma0, p.coulomb_force, p.exponent]
-    elif name == "gms":
-        values = [p.n_elements, p.attraction, p.sigma2, p.coulomb_force, p.static_force,
-                  p.stribeck_velocity, p.exponent, *law.k[:, 0], *law.alpha[:, 0]]
-    elif name == "theta":
-        a, b = law.walther
-        values = [p.tau, p.alpha, p.f_a or 0.0, p.f_b or 0.0, p.gamma,
-                  p.reference_normal_force, p.load_exponent, p.bristle_stiffness or 0.0,
-                  p.bristle_damping, p.reference_temperature, a, b,
-                  1.0 if p.steady == "contact" else 0.0, p.boundary_friction, p.dwell_drop, 0.0]
-    else:  # pragma: no cover - every law of sealsim.friction is listed
-        raise InputError(f"the pneumatic model does not know the {name!r} law")
-    return np.asarray(values, dtype=float)
 
 
 class PneumaticSystem:
@@ -185,13 +147,12 @@ class PneumaticSystem:
         map_chunks, used = [], 0
         fric_chunks, fric_used = [], 0
         for i, seal in enumerate(seals):
-            values = law_parameters(seal.law)
+            diameter = cyl.bore if seal.location == "piston" else cyl.rod_diameter
+            values = law_parameters(seal.law, diameter)
             if values.size > law_par.shape[1]:
                 law_par = np.pad(law_par, ((0, 0), (0, values.size - law_par.shape[1])))
             law_par[i, :values.size] = values
             if seal.friction_table is not None:
-                diameter = cyl.bore if seal.location == "piston" else cyl.rod_diameter
-                law_par[i, 15] = math.pi * diameter
                 frow, fdata = seal.friction_table.tables()
                 fric_int[i, 0] = fric_used
                 fric_int[i, 1:] = frow
@@ -214,6 +175,8 @@ class PneumaticSystem:
                 map_int[i, :row.size] = row
                 map_chunks.append(data)
                 used += data.size
+        if not self.heating:
+            _constant_viscosity(seal_int, law_par, seals)
         self._map_data = np.concatenate(map_chunks) if map_chunks else np.zeros(1)
         self._seal_int, self._law_par, self._seal_therm = seal_int, law_par, seal_therm
         self._map_int = map_int
@@ -385,8 +348,9 @@ class PneumaticSystem:
         """Absolute tolerances per state: ``rtol`` times a scale of each quantity -- 0.1 m for
         the position, 30 m/s for the speed (1 µm and 0.3 mm/s at rtol = 1e-5: the speed
         resolution limits the steps most; with it the position stays within 0.05 % of the
-        stroke and the energy balance within 0.02 % even for a piston that only settles into its
-        stop), the chamber mass and energy at supply pressure, 10 for Θ, 1 mm for bristle
+        stroke and the energy balance within 0.02 % (LSODA) and 0.12 % (the compiled BDF) even
+        for a piston that only settles into its stop: its deflection δ is resolved to 1 µm),
+        the chamber mass and energy at supply pressure, 10 for Θ, 1 mm for bristle
         deflections, 100 K for temperatures."""
         case = self.case
         volume = case.cylinder.dead_volume_cap + self.a1 * self.stroke
@@ -429,10 +393,12 @@ class PneumaticSystem:
             return jac
         return j
 
-    def evaluate(self, t, y, mode, full: bool = False):
+    def evaluate(self, t, y, mode, full: bool = False, outputs_only: bool = False):
         """Derivatives dy/dt (and, with ``full``, every intermediate quantity) at (t, y).
 
-        ``y`` has shape (n,) or (n, k) (k columns, ``t`` scalar or (k,)).
+        ``y`` has shape (n,) or (n, k) (k columns, ``t`` scalar or (k,)).  With
+        ``outputs_only`` (and ``full``) only the quantities of the output time series are
+        computed (no flows, heat or derivatives: their entries are 0), at about half the cost.
         """
         y = np.asarray(y, dtype=float)
         column = y.ndim == 1
@@ -442,7 +408,8 @@ class PneumaticSystem:
         modes = np.ascontiguousarray(np.broadcast_to(np.asarray(mode, dtype=np.int64), (k,)))
         dy = np.zeros_like(ys)
         diag = np.zeros((self.n_diag, k))
-        rhs.evaluate_many(ts, ys, modes, self.tables, dy, diag)
+        rhs.evaluate_many(ts, ys, modes, self.tables, dy, diag,
+                          rhs.OUTPUTS if outputs_only and full else rhs.FULL)
         if not full:
             return dy[:, 0] if column else dy
         return self.unpack(dy, diag)
@@ -497,6 +464,19 @@ class PneumaticSystem:
         if bool(stuck):
             return rhs.STICK
         return rhs.FORWARD if hold > 0 else rhs.BACKWARD
+
+
+def _constant_viscosity(seal_int, law_par, seals) -> None:
+    """γ(T) of the Θ law at each seal's constant temperature, once: the same product the
+    compiled law would form at every evaluation (:func:`sealsim.friction.compiled.law_rates`:
+    γ·ν(T)/ν(T_ref), ASTM D341), so the results do not change -- the four powers and two
+    logarithms per seal and evaluation are saved."""
+    for i, seal in enumerate(seals):
+        par = law_par[i]
+        if seal_int[i, rhs.SI_LAW] == rhs.THETA and par[11] != 0.0:
+            par[4] = par[4] * walther_viscosity_ratio(float(seal.temperature), par[9], par[10],
+                                                      par[11])
+            par[11] = 0.0
 
 
 def _profile_table(position):

@@ -135,6 +135,11 @@ class HermiteGrid:
             idx = (Ellipsis,) + tuple(combo) + (slice(None),)
             coeff[idx] = block
         self.coeff = coeff
+        #: node values and derivatives, shape (n_0, ..., n_{d-1}, 2**d, nvars): entry m holds
+        #: the derivative along the axes k with bit k of m set (m = 0: the values); a cell's
+        #: coefficient of basis (a, m) per axis is the corner node's entry m times the cell
+        #: widths h_k of those axes, multiplied in axis order (what C code rebuilds from it)
+        self.node_derivatives = np.stack([derivs[m] for m in range(2**d)], axis=d)
         # basis order in combo: b = 2 a + m -> [h00 (a0,m0), h10 (a0,m1), h01 (a1,m0), h11]
         self._axes_list = [a.tolist() for a in self.axes]
         self._flat = coeff.reshape(-1, 4**d, self.nvars)

@@ -249,12 +249,16 @@ fmi2Status fmi2EnterEventMode(fmi2Component c) {
 
 fmi2Status fmi2NewDiscreteStates(fmi2Component c, fmi2EventInfo *info) {
     if (c == NULL || info == NULL) return fmi2Error;
+    int changed = 0;
+    FmuStatus status = fmu_new_discrete_states(INSTANCE, &changed);
+    if (status > FMU_WARNING) return (fmi2Status)status;
     info->newDiscreteStatesNeeded = fmi2False;
     info->terminateSimulation = fmi2False;
     info->nominalsOfContinuousStatesChanged = fmi2False;
-    info->valuesOfContinuousStatesChanged = fmi2False;
-    info->nextEventTimeDefined = fmi2False;
-    info->nextEventTime = 0.0;
+    info->valuesOfContinuousStatesChanged = changed ? fmi2True : fmi2False;
+    double next = fmu_next_event_time(INSTANCE);
+    info->nextEventTimeDefined = isfinite(next) ? fmi2True : fmi2False;
+    info->nextEventTime = isfinite(next) ? next : 0.0;
     return fmi2OK;
 }
 
@@ -290,9 +294,8 @@ fmi2Status fmi2GetDerivatives(fmi2Component c, fmi2Real derivatives[], size_t nx
 }
 
 fmi2Status fmi2GetEventIndicators(fmi2Component c, fmi2Real eventIndicators[], size_t ni) {
-    (void)eventIndicators;
     if (c == NULL) return fmi2Error;
-    return ni == 0 ? fmi2OK : unsupported(c, "event indicators");
+    return (fmi2Status)fmu_get_event_indicators(INSTANCE, eventIndicators, ni);
 }
 
 fmi2Status fmi2GetContinuousStates(fmi2Component c, fmi2Real x[], size_t nx) {

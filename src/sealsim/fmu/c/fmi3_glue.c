@@ -470,12 +470,17 @@ fmi3Status fmi3UpdateDiscreteStates(fmi3Instance instance, fmi3Boolean *discrete
                                     fmi3Boolean *nextEventTimeDefined,
                                     fmi3Float64 *nextEventTime) {
     if (instance == NULL) return fmi3Error;
+    int changed = 0;
+    FmuStatus status = fmu_new_discrete_states(INSTANCE, &changed);
+    if (status > FMU_WARNING) return (fmi3Status)status;
     if (discreteStatesNeedUpdate) *discreteStatesNeedUpdate = fmi3False;
     if (terminateSimulation) *terminateSimulation = fmi3False;
     if (nominalsOfContinuousStatesChanged) *nominalsOfContinuousStatesChanged = fmi3False;
-    if (valuesOfContinuousStatesChanged) *valuesOfContinuousStatesChanged = fmi3False;
-    if (nextEventTimeDefined) *nextEventTimeDefined = fmi3False;
-    if (nextEventTime) *nextEventTime = 0.0;
+    if (valuesOfContinuousStatesChanged)
+        *valuesOfContinuousStatesChanged = changed ? fmi3True : fmi3False;
+    double next = fmu_next_event_time(INSTANCE);
+    if (nextEventTimeDefined) *nextEventTimeDefined = isfinite(next) ? fmi3True : fmi3False;
+    if (nextEventTime) *nextEventTime = isfinite(next) ? next : 0.0;
     return fmi3OK;
 }
 
@@ -515,9 +520,8 @@ fmi3Status fmi3GetContinuousStateDerivatives(fmi3Instance instance, fmi3Float64 
 
 fmi3Status fmi3GetEventIndicators(fmi3Instance instance, fmi3Float64 eventIndicators[],
                                   size_t nEventIndicators) {
-    (void)eventIndicators;
     if (instance == NULL) return fmi3Error;
-    return nEventIndicators == 0 ? fmi3OK : unsupported(instance, "event indicators");
+    return (fmi3Status)fmu_get_event_indicators(INSTANCE, eventIndicators, nEventIndicators);
 }
 
 fmi3Status fmi3GetContinuousStates(fmi3Instance instance, fmi3Float64 continuousStates[],
@@ -534,7 +538,7 @@ fmi3Status fmi3GetNominalsOfContinuousStates(fmi3Instance instance, fmi3Float64 
 
 fmi3Status fmi3GetNumberOfEventIndicators(fmi3Instance instance, size_t *nEventIndicators) {
     if (instance == NULL || nEventIndicators == NULL) return fmi3Error;
-    *nEventIndicators = 0;
+    *nEventIndicators = NEVENT_INDICATORS;
     return fmi3OK;
 }
 

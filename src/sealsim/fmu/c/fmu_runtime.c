@@ -277,8 +277,45 @@ FmuStatus fmu_get_nominals(Instance *c, double *x, size_t n) {
     return FMU_OK;
 }
 
+FmuStatus fmu_get_event_indicators(Instance *c, double *z, size_t n) {
+    if (n != NEVENT_INDICATORS) {
+        fmu_log(c, FMU_ERROR, "logStatusError", "expected %d event indicators, got %u",
+                NEVENT_INDICATORS, (unsigned)n);
+        return FMU_ERROR;
+    }
+#if NEVENT_INDICATORS > 0
+    if (update_outputs(c) > FMU_WARNING) return fail(c);
+    model_event_indicators(c, z);
+#else
+    (void)z;
+#endif
+    return FMU_OK;
+}
+
+FmuStatus fmu_new_discrete_states(Instance *c, int *states_changed) {
+    *states_changed = 0;
+    c->outputs_valid = 0;
+#if NEVENT_INDICATORS > 0
+    FmuStatus status = model_event_update(c, states_changed);
+    if (status > FMU_WARNING) return fail(c);
+    return status;
+#else
+    return update_outputs(c) > FMU_WARNING ? fail(c) : FMU_OK;
+#endif
+}
+
+double fmu_next_event_time(Instance *c) {
+#if MODEL_TIME_EVENTS
+    return model_next_event_time(c);
+#else
+    (void)c;
+    return INFINITY;
+#endif
+}
+
 void fmu_set_time(Instance *c, double t) {
     c->time = t;
+    c->outputs_valid = 0;     /* outputs may depend on time (the cylinder's spool) */
 }
 
 double fmu_clip(Instance *c, unsigned bit, const char *what, const char *unit, double value,

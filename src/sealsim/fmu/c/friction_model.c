@@ -9,7 +9,15 @@
  *
  * Contact: F_N and b from the contact table (CONTACT_TABLE) at the pressure difference
  * across the seal dp = x tanh(x/eps), x = p_A - p_B (sealsim.pneumatic.seals.smooth_abs),
- * and the seal temperature; or the constant parameters normal_force, contact_width. */
+ * and the seal temperature; or the constant parameters normal_force, contact_width.
+ *
+ * The Theta law with steady = "contact" (THETA_CONTACT) takes its steady curve from the
+ * seal's friction table FRIC_ROW/FRIC_DATA (contact_table.c) at dp and T_seal: F_ss(v) =
+ * pi D [mu_b L + V] in the table direction of v times the orientation
+ * velocity_direction * (p_A >= p_B ? 1 : -1) (velocity_direction +1: a positive v slides the
+ * counter surface from side A to side B of the seal; the table's "+" is from the pressurised
+ * side to the other), and the level F_ss(|v|) + dF (theta_ss(v) - theta), at rest
+ * F_ss(0+) - dF theta, dF = d F_ss(0+) (sealsim.friction.theta, Theta.level). */
 #include "sealsim_fmu.h"
 
 #define LAW_COULOMB 1
@@ -28,6 +36,7 @@ static double sgn(double x) {
 typedef struct {
     double v, normal_force, contact_width, dp;
     double gamma;      /* viscous coefficient of the Theta law at T_seal [N s/m^2] */
+    double steady, boundary;   /* THETA_CONTACT: |F_ss(v)| and F_ss(0+) [N] */
 } Contact;
 
 static double viscous_coefficient(Instance *c);
@@ -41,6 +50,8 @@ static Contact contact(Instance *c) {
         k.contact_width = c->cache[2];
         k.dp = c->cache[3];
         k.gamma = c->cache[4];
+        k.steady = c->cache[5];
+        k.boundary = c->cache[6];
         return k;
     }
     double x = P(P_A) - P(P_B);
@@ -65,6 +76,17 @@ static Contact contact(Instance *c) {
     k.gamma = viscous_coefficient(c);
     c->cache[3] = k.dp;
     c->cache[4] = k.gamma;
+    k.steady = k.boundary = 0.0;
+#if FRICTION_LAW == LAW_THETA && THETA_CONTACT
+    {
+        double orient = P(VELOCITY_DIRECTION) * (P(P_A) >= P(P_B) ? 1.0 : -1.0);
+        contact_steady(FRIC_ROW, FRIC_DATA, P(T_SEAL), k.dp, orient * k.v,
+                       3.141592653589793 * P(SLIDING_DIAMETER), P(BOUNDARY_FRICTION),
+                       &k.steady, &k.boundary);
+    }
+#endif
+    c->cache[5] = k.steady;
+    c->cache[6] = k.boundary;
     c->cache_valid = 1;
     return k;
 }
@@ -115,9 +137,32 @@ static double load_factor(Instance *c, double normal_force) {
     return pow(normal_force / P(REFERENCE_NORMAL_FORCE), P(LOAD_EXPONENT));
 }
 
-/* theta_friction_level: g = F_N [f_a (1 - theta) + f_b theta] */
-static double theta_level(Instance *c, double theta, double normal_force) {
-    return normal_force * (P(F_A) * (1.0 - theta) + P(F_B) * theta);
+#if THETA_CONTACT
+/* theta_steady: theta_ss = |v|/(|v| + v*), v* = alpha/tau (F_N/F_ref)^n */
+static double theta_steady(Instance *c, const Contact *k) {
+    double speed = fabs(k->v);
+    if (speed > 0.0)
+        return speed / (speed + P(ALPHA) / P(TAU) * load_factor(c, k->normal_force));
+    return 0.0;
+}
+#endif
+
+/* the friction level at theta: theta_friction_level g = F_N [f_a (1 - theta) + f_b theta],
+ * or on the contact table theta_contact_level (compiled._theta_level) at the contact's v */
+static double theta_level(Instance *c, double theta, const Contact *k) {
+#if THETA_CONTACT
+    return theta_contact_level(theta, k->v, k->steady, k->boundary, P(DWELL_DROP),
+                               theta_steady(c, k));
+#else
+    return k->normal_force * (P(F_A) * (1.0 - theta) + P(F_B) * theta);
+#endif
+}
+
+/* the level at rest (the break-away force) */
+static double theta_rest_level(Instance *c, double theta, const Contact *k) {
+    Contact rest = *k;
+    rest.v = 0.0;
+    return theta_level(c, theta, &rest);
 }
 
 
@@ -162,7 +207,10 @@ static double walther_viscosity_ratio(double t, double tref, double wa, double w
 #endif
 
 static double viscous_coefficient(Instance *c) {
-#if FRICTION_LAW == LAW_THETA && THETA_VISCOSITY
+#if FRICTION_LAW == LAW_THETA && THETA_CONTACT
+    (void)c;
+    return 0.0;                 /* the table holds the viscous friction */
+#elif FRICTION_LAW == LAW_THETA && THETA_VISCOSITY
     double w40 = walther_w(P(BASE_OIL_NU40)), w100 = walther_w(P(BASE_OIL_NU100));
     double wb = (w40 - w100) / (log10(WALTHER_T100) - log10(WALTHER_T40));
     double wa = w40 + wb * log10(WALTHER_T40);
@@ -200,7 +248,7 @@ FmuStatus model_check_parameters(Instance *c) {
         return FMU_ERROR;
     }
 #endif
-#if FRICTION_LAW == LAW_THETA && THETA_BRISTLES
+#if FRICTION_LAW == LAW_THETA && THETA_BRISTLES && !THETA_CONTACT
     if (P(F_A) <= 0.0 || P(F_B) <= 0.0) {
         fmu_log(c, FMU_ERROR, "logStatusError",
                 "with bristle_stiffness the friction coefficients f_a and f_b must be > 0 "
@@ -227,7 +275,7 @@ FmuStatus model_initialize(Instance *c) {
 #if FRICTION_LAW == LAW_THETA && THETA_BRISTLES
     {
         Contact k = contact(c);
-        double z_scale = theta_level(c, 0.0, k.normal_force) / P(BRISTLE_STIFFNESS);
+        double z_scale = theta_rest_level(c, 0.0, &k) / P(BRISTLE_STIFFNESS);
         c->nominals[STATE_Z] = z_scale > 0.0 ? z_scale : 1e-6;
     }
 #endif
@@ -263,7 +311,7 @@ FmuStatus model_outputs(Instance *c) {
     double zdot = bristle_rate(P(Z), k.v, P(SIGMA0), g);
     force = P(SIGMA0) * P(Z) + P(SIGMA1) * zdot + P(SIGMA2) * k.v;   /* lugre_force */
 #elif FRICTION_LAW == LAW_THETA
-    double level = theta_level(c, P(THETA), k.normal_force);
+    double level = theta_level(c, P(THETA), &k);
     double gamma = k.gamma;
 #if THETA_VISCOSITY
     if (!(P(T_SEAL) > 0.0)) {
@@ -277,6 +325,9 @@ FmuStatus model_outputs(Instance *c) {
     double zdot = bristle_rate(P(Z), k.v, P(BRISTLE_STIFFNESS), level);
     force = P(BRISTLE_STIFFNESS) * P(Z) + P(BRISTLE_DAMPING) * zdot +
             gamma * k.contact_width * k.v;
+#elif THETA_CONTACT
+    force = level * sgn(k.v);                                      /* Theta.force */
+    breakaway = theta_rest_level(c, P(THETA), &k);
 #else
     force = level * sgn(k.v) + gamma * k.contact_width * k.v;      /* theta_force */
     breakaway = level;
@@ -307,8 +358,7 @@ void model_derivatives(Instance *c, double *dx) {
 #elif FRICTION_LAW == LAW_THETA
     dx[STATE_THETA] = theta_rate(c, P(THETA), &k);
 #if THETA_BRISTLES
-    dx[STATE_Z] = bristle_rate(P(Z), k.v, P(BRISTLE_STIFFNESS),
-                               theta_level(c, P(THETA), k.normal_force));
+    dx[STATE_Z] = bristle_rate(P(Z), k.v, P(BRISTLE_STIFFNESS), theta_level(c, P(THETA), &k));
 #endif
 #endif
 #else
@@ -329,7 +379,7 @@ FmuStatus model_step(Instance *c, double h) {
     double theta1 = theta_step(c, theta0, &k, h);
 #if THETA_BRISTLES
     /* the bristle step with the friction level of the step's mid-state (Theta.step) */
-    double g_mid = theta_level(c, 0.5 * (theta0 + theta1), k.normal_force);
+    double g_mid = theta_level(c, 0.5 * (theta0 + theta1), &k);
     P(Z) = bristle_step(P(Z), k.v, h, P(BRISTLE_STIFFNESS), g_mid);
 #endif
     P(THETA) = theta1;

@@ -63,12 +63,36 @@ typedef struct {
 
 void hermite_evaluate(const HermiteTable *t, double a, double b, double *out);
 
+/* a seal's steady friction table from its contact (contact_table.c): the interpolant of
+ * sealsim.friction.contact_table (asperity load [N/m], viscous friction [N/m], film [m] of the
+ * stroke direction of speed), the Theta law's steady curve |F_ss(v)| and boundary level
+ * F_ss(0+) [N] on it, and its friction level */
+void contact_table_point(const long *row, const double *data, double temperature,
+                         double pressure, double speed, double *load, double *visc,
+                         double *film);
+void contact_steady(const long *row, const double *data, double temperature, double pressure,
+                    double oriented_speed, double circumference, double boundary_friction,
+                    double *steady, double *boundary);
+double theta_contact_level(double th, double v, double fss, double fb, double d,
+                           double thss);
+
 #include "config.h"
 
 #if NSTATES > 0
 #define STATE_ARRAY_SIZE NSTATES
 #else
 #define STATE_ARRAY_SIZE 1
+#endif
+#ifndef NEVENT_INDICATORS
+#define NEVENT_INDICATORS 0
+#endif
+/* memory of the model beyond the variables (the cylinder's mode and integrator state), as
+ * doubles so that it is aligned for any member; copied with the FMU state */
+#ifndef MODEL_WORK_DOUBLES
+#define MODEL_WORK_DOUBLES 1
+#endif
+#ifndef MODEL_TIME_EVENTS
+#define MODEL_TIME_EVENTS 0
 #endif
 
 typedef struct {
@@ -85,6 +109,7 @@ typedef struct {
     char instance_name[128];
     void *environment;        /* the host's environment pointer, handed back to the logger */
     void (*logger)(void);     /* the host's logger; cast by the glue of its FMI version */
+    double work[MODEL_WORK_DOUBLES];
 } Instance;
 
 /* -- provided by the glue of the FMI version -------------------------------------------- */
@@ -101,6 +126,16 @@ FmuStatus model_outputs(Instance *c);
 void model_derivatives(Instance *c, double *dx);
 /* Advance the states by h with the inputs held constant (co-simulation): exact or implicit. */
 FmuStatus model_step(Instance *c, double h);
+#if MODEL_TIME_EVENTS
+/* The next time event (model exchange), INFINITY for none. */
+double model_next_event_time(Instance *c);
+#endif
+#if NEVENT_INDICATORS > 0
+/* The event indicators (model exchange); a discrete state switches where one crosses 0. */
+void model_event_indicators(Instance *c, double *z);
+/* Event mode: switch the discrete states; *states_changed when continuous states were set. */
+FmuStatus model_event_update(Instance *c, int *states_changed);
+#endif
 
 /* -- the runtime (fmu_runtime.c) ---------------------------------------------------------- */
 void fmu_log(Instance *c, FmuStatus status, const char *category, const char *format, ...);
@@ -119,6 +154,10 @@ FmuStatus fmu_get_states(Instance *c, double *x, size_t n);
 FmuStatus fmu_set_states(Instance *c, const double *x, size_t n);
 FmuStatus fmu_get_derivatives(Instance *c, double *dx, size_t n);
 FmuStatus fmu_get_nominals(Instance *c, double *x, size_t n);
+FmuStatus fmu_get_event_indicators(Instance *c, double *z, size_t n);
+FmuStatus fmu_new_discrete_states(Instance *c, int *states_changed);
+/* the next time event of the model (model exchange); INFINITY for none */
+double fmu_next_event_time(Instance *c);
 void fmu_set_time(Instance *c, double t);
 /* Clip value to [lo, hi]; warn once when it leaves the range (bit: a CLIP_... flag). */
 double fmu_clip(Instance *c, unsigned bit, const char *what, const char *unit, double value,

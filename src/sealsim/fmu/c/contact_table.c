@@ -1,0 +1,126 @@
+/* A seal's steady friction table from its own contact, and the Theta law's level on it.
+ *
+ * contact_table_point evaluates the interpolant of the numba kernel of the same name in
+ * sealsim.friction.contact_table: the C1 tensor-product cubic Hermite interpolant over
+ * (temperature [K], pressure difference [Pa], log10 speed [m/s]) of
+ * sealsim.structure.maps.HermiteGrid, clamped to its axes.  The numba kernel reads each
+ * cell's 64 coefficients (SteadyFrictionTable.tables()); this code reads the 8x smaller node
+ * layout (SteadyFrictionTable.node_tables(): an int64 row (n_T, n_p, n_u, n_vars) and one
+ * double array: the three axes, then the node values and derivatives, shape
+ * (n_T, n_p, n_u, 8, n_vars), entry m the derivative along the axes whose bit is set in m)
+ * and forms each coefficient as HermiteGrid does -- the corner node's entry times the cell
+ * widths of the differentiated axes, in axis order -- then sums in the kernel's order
+ * (contact_table.cell_sums, terms of weight 0 skipped): the same operations, the same bits.
+ * contact_steady (one cell search for the sliding speed and the boundary level at the slowest
+ * speed) and theta_contact_level are the ports of sealsim.friction.compiled.contact_steady
+ * and the kernel theta_contact_level of sealsim.friction.kernels.  A test compares all three
+ * with the numba functions. */
+#include <math.h>
+
+/* the cubic Hermite basis functions (h00, h10, h01, h11) at t in [0, 1] (contact_table._basis) */
+static void table_basis(double t, double *w) {
+    double t2 = t * t, t3 = t2 * t;
+    w[0] = 2 * t3 - 3 * t2 + 1;
+    w[1] = t3 - 2 * t2 + t;
+    w[2] = -2 * t3 + 3 * t2;
+    w[3] = t3 - t2;
+}
+
+/* (cell index, local coordinate in [0, 1]) of x on the axis data[pos:pos + n], clamped
+ * (contact_table._locate) */
+static long table_locate(const double *data, long pos, long n, double x, double *u) {
+    double lo = data[pos], hi = data[pos + n - 1];
+    x = fmin(fmax(x, lo), hi);
+    long a = 0, b = n;                   /* numpy.searchsorted(axis, x, side="right") */
+    while (a < b) {
+        long mid = (a + b) >> 1;
+        if (x < data[pos + mid]) b = mid;
+        else a = mid + 1;
+    }
+    long i = a - 1;
+    if (i < 0) i = 0;
+    if (i > n - 2) i = n - 2;
+    *u = (x - data[pos + i]) / (data[pos + i + 1] - data[pos + i]);
+    return i;
+}
+
+/* contact_table.cell_sums on the node layout: each basis term's coefficient is the corner
+ * node's derivative entry times the widths of the differentiated axes (HermiteGrid) */
+static void table_cell_sums(const long *row, const double *data, long i, const double *wa,
+                            long j, const double *wb, long k, const double *wc, long off,
+                            int film, double *load, double *visc, double *thick) {
+    long nt = row[0], npr = row[1], nu = row[2], nv = row[3];
+    double h0 = data[i + 1] - data[i];
+    double h1 = data[nt + j + 1] - data[nt + j];
+    double h2 = data[nt + npr + k + 1] - data[nt + npr + k];
+    const double *nodes = data + nt + npr + nu;
+    long fv = 4 + off / 2;
+    *load = *visc = *thick = 0.0;
+    for (int q0 = 0; q0 < 4; q0++) {
+        double w0 = wa[q0];
+        if (w0 == 0.0) continue;
+        for (int q1 = 0; q1 < 4; q1++) {
+            double w01 = w0 * wb[q1];
+            if (w01 == 0.0) continue;
+            for (int q2 = 0; q2 < 4; q2++) {
+                double w = w01 * wc[q2];
+                if (w == 0.0) continue;
+                /* basis q = 2 corner + derivative order per axis */
+                int mask = (q0 & 1) | (q1 & 1) << 1 | (q2 & 1) << 2;
+                const double *node = nodes + ((((i + (q0 >> 1)) * npr + j + (q1 >> 1)) * nu +
+                                               k + (q2 >> 1)) * 8 + mask) * nv;
+                double cl = node[off], cv = node[off + 1], cf = node[fv];
+                if (q0 & 1) { cl *= h0; cv *= h0; cf *= h0; }
+                if (q1 & 1) { cl *= h1; cv *= h1; cf *= h1; }
+                if (q2 & 1) { cl *= h2; cv *= h2; cf *= h2; }
+                *load += w * cl;
+                *visc += w * cv;
+                if (film) *thick += w * cf;
+            }
+        }
+    }
+}
+
+void contact_table_point(const long *row, const double *data, double temperature,
+                         double pressure, double speed, double *load, double *visc,
+                         double *film) {
+    double a, b, c, wa[4], wb[4], wc[4];
+    *load = *visc = *film = 0.0;
+    if (speed == 0.0) return;
+    long i = table_locate(data, 0, row[0], temperature, &a);
+    long j = table_locate(data, row[0], row[1], pressure, &b);
+    long k = table_locate(data, row[0] + row[1], row[2], log10(fabs(speed)), &c);
+    table_basis(a, wa);
+    table_basis(b, wb);
+    table_basis(c, wc);
+    table_cell_sums(row, data, i, wa, j, wb, k, wc, speed > 0.0 ? 0 : 2, 1, load, visc, film);
+}
+
+void contact_steady(const long *row, const double *data, double temperature, double pressure,
+                    double oriented_speed, double circumference, double boundary_friction,
+                    double *steady, double *boundary) {
+    static const double on_node[4] = {1.0, 0.0, 0.0, 0.0};
+    double a, b, wa[4], wb[4], load = 0.0, visc = 0.0, up, down, unused0, unused1;
+    long i = table_locate(data, 0, row[0], temperature, &a);       /* one cell search */
+    long j = table_locate(data, row[0], row[1], pressure, &b);
+    table_basis(a, wa);
+    table_basis(b, wb);
+    if (oriented_speed != 0.0) {
+        double c, wc[4];
+        long k = table_locate(data, row[0] + row[1], row[2], log10(fabs(oriented_speed)), &c);
+        table_basis(c, wc);
+        table_cell_sums(row, data, i, wa, j, wb, k, wc, oriented_speed > 0.0 ? 0 : 2, 0, &load,
+                        &visc, &unused0);
+    }
+    table_cell_sums(row, data, i, wa, j, wb, 0, on_node, 0, 0, &up, &unused0, &unused1);
+    table_cell_sums(row, data, i, wa, j, wb, 0, on_node, 2, 0, &down, &unused0, &unused1);
+    *steady = circumference * (boundary_friction * load + visc);
+    *boundary = circumference * boundary_friction * 0.5 * (up + down);
+}
+
+double theta_contact_level(double th, double v, double fss, double fb, double d,
+                           double thss) {
+    double drop = d * fb;
+    double level = v != 0.0 ? fss + drop * (thss - th) : fb - drop * th;
+    return level > 1e-9 ? level : 1e-9;
+}

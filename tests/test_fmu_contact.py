@@ -1,0 +1,225 @@
+"""A seal's friction from its own contact (issue 23) in both FMUs (issue 27): the C port of the
+friction table's interpolant (fmu/c/contact_table.c) against the numba kernel, the friction
+FMU of a Θ law with ``steady = "contact"`` (build check, FMPy validation, the bench against
+sealsim's law, a wrong table caught), and the whole-cylinder FMU of a case whose seal takes its
+steady friction from its contact (right-hand-side check, FMPy validation, the cycle against
+``sealsim pneumatic run``)."""
+
+from __future__ import annotations
+
+import ctypes
+import subprocess
+import zipfile
+from pathlib import Path
+
+import numpy as np
+import pytest
+from fmpy.validation import validate_fmu
+
+from fmu_build_once import build_once
+from sealsim.cases import load_toml
+from sealsim.errors import ModelError
+from sealsim.fmu import LoadedFMU, build_fmu
+from sealsim.fmu.builder import find_compiler, platform_folder
+from sealsim.fmu.cosim import run_velocity
+from sealsim.fmu.cylinder_export import cylinder_system, run_fmu
+from sealsim.fmu.friction_export import friction_check
+from sealsim.friction.bench import simulate_velocity
+from sealsim.friction.case import build_law, load_friction_cases
+from sealsim.friction.compiled import contact_steady
+from sealsim.friction.contact_table import SteadyFrictionTable, contact_table_point
+from sealsim.friction.kernels import theta_contact_level
+from sealsim.pneumatic.bench import bench_inputs
+from sealsim.pneumatic.case import load_pneumatic_cases
+from sealsim.pneumatic.simulation import run
+from sealsim.pneumatic.summary import stroke_times
+
+ROOT = Path(__file__).resolve().parents[1]
+BENCH = ROOT / "examples" / "friction" / "theta_contact_stribeck.toml"
+CYLINDER = ROOT / "examples" / "pneumatic" / "heipl_rod_seal.toml"
+SOURCES = ROOT / "src" / "sealsim" / "fmu" / "c"
+
+
+@pytest.fixture(scope="module")
+def c_table(tmp_path_factory):
+    """contact_table.c compiled alone into a shared library (the FMU's compiler flags)."""
+    compiler = find_compiler()
+    if compiler is None:
+        pytest.skip("no C compiler")
+    lib = tmp_path_factory.mktemp("contact_table") / "contact_table.so"
+    subprocess.run([compiler, "-shared", "-fPIC", "-O2", "-std=c99", "-ffp-contract=off",
+                    str(SOURCES / "contact_table.c"), "-o", str(lib), "-lm"], check=True)
+    so = ctypes.CDLL(str(lib))
+    dbl, lng = ctypes.POINTER(ctypes.c_double), ctypes.POINTER(ctypes.c_long)
+    so.contact_table_point.argtypes = [lng, dbl] + [ctypes.c_double] * 3 + [dbl] * 3
+    so.contact_steady.argtypes = [lng, dbl] + [ctypes.c_double] * 5 + [dbl] * 2
+    so.theta_contact_level.argtypes = [ctypes.c_double] * 6
+    so.theta_contact_level.restype = ctypes.c_double
+    return so
+
+
+def test_c_table_lookup_is_the_numba_kernel(c_table):
+    # an asymmetric random table (both stroke directions differ) on uneven axes: the C code
+    # reads the node layout and forms each cell coefficient as HermiteGrid does, then sums in
+    # the kernel's order (no FMA contraction), so the values agree to rounding -- 1e-14 of
+    # the table's largest value is asserted (measured: equal)
+    rng = np.random.default_rng(23)
+    t = np.sort(rng.uniform(250.0, 380.0, 5))
+    p = np.concatenate([[0.0], np.sort(rng.uniform(1e4, 8e5, 4))])
+    u = np.logspace(-7.0, 1.0, 9)
+    values = rng.uniform(0.0, 500.0, (t.size, p.size, u.size, 6))
+    values[..., 4:] *= 1e-8                                  # films [m]
+    table = SteadyFrictionTable(t, p, u, values)
+    row, data = table.tables()                       # numba: cell coefficients
+    nodes_row, nodes = table.node_tables()           # C: node values and derivatives
+    assert nodes.size < data.size / 4           # (8x on a large grid)
+    row_c = np.ascontiguousarray(nodes_row, dtype=np.int64).ctypes.data_as(ctypes.POINTER(
+        ctypes.c_long))
+    data_c = nodes.ctypes.data_as(ctypes.POINTER(ctypes.c_double))
+    out = [ctypes.c_double() for _ in range(3)]
+    worst = 0.0
+    scale = np.max(np.abs(values[..., :4]))
+    # inside, outside the axes (clamped), at nodes, both directions, speed 0
+    temps = np.concatenate([rng.uniform(230.0, 400.0, 300), t])
+    for k, temp in enumerate(temps):
+        pressure = p[k % p.size] if k % 7 == 0 else rng.uniform(-1e5, 9e5)
+        speed = 0.0 if k % 50 == 0 else rng.choice([-1.0, 1.0]) * 10.0 ** rng.uniform(-9, 2)
+        want = contact_table_point(row, data, temp, pressure, speed)
+        c_table.contact_table_point(row_c, data_c, temp, pressure, speed,
+                                    *(ctypes.byref(o) for o in out))
+        worst = max(worst, max(abs(o.value - w) for o, w in zip(out[:2], want[:2])) / scale,
+                    abs(out[2].value - want[2]) / np.max(values[..., 4:]))
+        par = np.zeros(16)
+        par[13], par[15] = 0.3, np.pi * 0.02                 # mu_b, pi D
+        steady, boundary = contact_steady(par, row, data, temp, pressure, -1.0, speed)
+        fss, fb = ctypes.c_double(), ctypes.c_double()
+        c_table.contact_steady(row_c, data_c, temp, pressure, -speed, par[15], par[13],
+                               ctypes.byref(fss), ctypes.byref(fb))
+        worst = max(worst, abs(fss.value - steady) / (scale * par[15]),
+                    abs(fb.value - boundary) / (scale * par[15]))
+        args = (rng.uniform(0, 1), speed, steady, boundary, 0.5, rng.uniform(0, 1))
+        level = c_table.theta_contact_level(*args)
+        worst = max(worst, abs(level - theta_contact_level(*args)) / (scale * par[15]))
+    assert worst <= 1e-14
+
+
+# -- the friction FMU on the seal's contact -------------------------------------------------
+@pytest.fixture(scope="module")
+def bench_case():
+    case = load_friction_cases(load_toml(BENCH))["fast_sweep_4s"]
+    law = build_law(case)
+    inputs, _ = bench_inputs(case, law, BENCH.parent)
+    return case, law, inputs
+
+
+@pytest.fixture(scope="module")
+def contact_fmus(tmp_path_factory, worker_id):
+    """The friction FMU of theta_contact_stribeck.toml (FMI 2) and the whole-cylinder FMU of
+    heipl_rod_seal.toml, T25C (FMI 3), both with the build checks."""
+    def build(folder):
+        friction = build_fmu(BENCH, folder / "contact.fmu", variant="fast_sweep_4s")
+        cylinder = build_fmu(CYLINDER, folder / "heipl.fmu", variant="T25C", fmi_version=3)
+        return {"friction": {"path": friction.path, "report": friction.report},
+                "cylinder": {"path": cylinder.path, "report": cylinder.report}}
+
+    return build_once(tmp_path_factory, worker_id, "contact_fmus", build)
+
+
+def test_friction_fmu_carries_the_friction_table(contact_fmus):
+    fmu = contact_fmus["friction"]
+    assert validate_fmu(fmu["path"]) == []
+    report = fmu["report"]
+    # the build check drove the FMU through rest, sliding, reversal and dwells against
+    # sealsim's Θ law reading the same table: 1e-9 relative is its limit (measured: equal)
+    assert max(report["build_check"]["max_relative_difference"][k]
+               for k in ("force", "states", "derivatives")) <= 1e-9
+    assert report["friction_table"]["sliding_diameter_m"] == pytest.approx(0.012)
+    assert report["friction_table"]["velocity_direction"] == 1.0
+    with zipfile.ZipFile(fmu["path"]) as zf:
+        assert "sources/contact_table.c" in zf.namelist()
+        names = zf.read("modelDescription.xml").decode()
+    for name in ("boundary_friction", "dwell_drop", "sliding_diameter", "velocity_direction"):
+        assert f'name="{name}"' in names
+    assert 'name="f_a"' not in names and 'name="gamma"' not in names
+
+
+def test_friction_fmu_runs_the_bench_of_sealsim(contact_fmus, bench_case):
+    # the fast Stribeck sweep (-1 ... 1 ... -1 m/s in 4 s, 0.1 ms steps): the FMU's Θ state
+    # and force against sealsim's bench with the same exact step, 1e-9 relative (the same
+    # formulas on the same table)
+    case, law, inputs = bench_case
+    b = case.bench
+    native = simulate_velocity(law, b.velocity, b.duration, b.time_step, inputs=inputs,
+                               initial_state=law.steady_state(
+                                   np.array([b.velocity.value(0.0)]), inputs))
+    t = native.time
+    v_step = np.diff(b.velocity.integral(t)) / np.diff(t)
+    with LoadedFMU(contact_fmus["friction"]["path"]) as fmu:
+        fmu.set(theta=float(native.states[0, 0]))
+        out = run_velocity(fmu, t, v_step, native.velocity, inputs)
+    scale = np.max(np.abs(native.force))
+    assert np.max(np.abs(out["F"] - native.force)) <= 1e-9 * scale
+    assert np.max(np.abs(out["theta"] - native.states[:, 0])) <= 1e-9
+
+
+def test_friction_check_finds_a_wrong_table(tmp_path, bench_case):
+    # the check can fail: the friction table's data scaled by 1 % in the sources
+    from sealsim.fmu.friction_export import contact_table, friction_spec, steady_table
+    from sealsim.pneumatic.bench import bench_contact_map
+
+    case, law, inputs = bench_case
+    out = build_fmu(BENCH, tmp_path / "c.fmu", variant="fast_sweep_4s", kind="cs",
+                    compile=False).path
+    folder = tmp_path / "unpacked"
+    zipfile.ZipFile(out).extractall(folder)
+    config = folder / "sources" / "config.h"
+    text = config.read_text()
+    start = text.index("static const double FRIC_DATA[] = {") + len(
+        "static const double FRIC_DATA[] = {")
+    end = text.index("}", start)
+    values = np.array([float(x) for x in text[start:end].split(", ")])
+    row = inputs.contact_table.tables()[0]
+    axes = int(row[0] + row[1] + row[2])
+    values[axes:] *= 1.01                    # the node values and derivatives
+    config.write_text(text[:start] + ", ".join(repr(float(x)) for x in values) + text[end:])
+    sub, suffix = platform_folder(2)
+    binary = folder / "binaries" / sub / f"c{suffix}"
+    binary.parent.mkdir(parents=True)
+    subprocess.run([find_compiler(), "-shared", "-fPIC", "-O2", "-std=c99", "-I",
+                    str(folder / "sources"), str(folder / "sources" / "all.c"), "-o",
+                    str(binary), "-lm"], check=True)
+    cmap = bench_contact_map(case, BENCH.parent)
+    steady = steady_table(law, cmap, 0.012, 1.0)
+    tab = contact_table(cmap)
+    spec = friction_spec(law, "c", table=tab, steady=steady)
+    with pytest.raises(ModelError, match="does not reproduce"):
+        friction_check(law, spec, cmap, tab, ("cs",), steady)(folder, "")
+
+
+# -- the whole-cylinder FMU with a contact-law seal ------------------------------------------
+def test_cylinder_fmu_with_contact_friction(contact_fmus):
+    fmu = contact_fmus["cylinder"]
+    assert validate_fmu(fmu["path"]) == []
+    report = fmu["report"]
+    # the C right-hand side (contact_table.c inside) against the numba one at 400 random
+    # states per stick/slip mode: 1e-9 of each quantity's range (measured: equal)
+    assert max(report["rhs_check"]["max_relative_difference"].values()) <= 1e-9
+    assert report["seals"][0]["friction_table"] is True
+    # the build's co-simulation over the case's cycle: stroke times within 0.5 % (issue 27)
+    assert max(report["cycle_check"]["relative_difference"].values()) < 5e-3
+
+
+@pytest.mark.parametrize("kind", ["cs", "me"])
+def test_cylinder_fmu_reproduces_sealsim_pneumatic_run(contact_fmus, kind):
+    # FMPy (a host that does not know sealsim) over the 2 s cycle of heipl_rod_seal.toml at
+    # 25 degC: extend and retract times within 0.5 % of sealsim pneumatic run (issue 27);
+    # co-simulation integrates with the same BDF method (~1e-4), model exchange with FMPy's
+    # CVode (~1e-3)
+    case = load_pneumatic_cases(load_toml(CYLINDER))["T25C"]
+    system = cylinder_system(case, CYLINDER.parent)
+    frame = run(system).timeseries
+    ref = stroke_times(frame["time_s"].to_numpy(), frame["x_m"].to_numpy(), case)
+    res = run_fmu(system, contact_fmus["cylinder"]["path"], kind)
+    got = stroke_times(res["time"], res["x"], case)
+    for name in ("extend_time_s", "retract_time_s"):
+        assert got[name] == pytest.approx(ref[name], rel=5e-3 if kind == "me" else 5e-4)

@@ -1,0 +1,199 @@
+"""The whole-cylinder FMU (sealsim.fmu.cylinder_export): valid FMI 2 and 3, its C right-hand
+side against the compiled (numba) one, co-simulation and model exchange in FMPy -- a host
+that knows nothing of sealsim -- against ``sealsim pneumatic run`` over the example cycle,
+the valve's dead time, FMU states, and the refusals."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import fmpy
+import numpy as np
+import pytest
+import tomli_w
+from fmpy.validation import validate_fmu
+
+from fmu_build_once import build_once
+from sealsim.cases import load_toml
+from sealsim.errors import InputError, ModelError
+from sealsim.fmu import build_fmu
+from sealsim.fmu.cylinder_export import cylinder_system, rhs_check, run_fmu
+from sealsim.fmu.instance import LoadedFMU
+from sealsim.pneumatic.case import load_pneumatic_cases
+from sealsim.pneumatic.simulation import run
+from sealsim.pneumatic.summary import stroke_times
+
+ROOT = Path(__file__).resolve().parents[1]
+PNEUMATIC = ROOT / "examples" / "pneumatic"
+
+
+def example_case(variant="T25C", **updates):
+    case = load_pneumatic_cases(load_toml(PNEUMATIC / "cylinder_32.toml"))[variant]
+    return case.model_copy(update=updates)
+
+
+@pytest.fixture(scope="module")
+def cylinders(tmp_path_factory, worker_id):
+    """The Ø32 cylinder (T25C) as FMI 2 and FMI 3 FMUs, model exchange and co-simulation;
+    every build runs the build check (C right-hand side, co-simulation over the cycle)."""
+    def build(folder):
+        out = {}
+        for version in (2, 3):
+            result = build_fmu(PNEUMATIC / "cylinder_32.toml", folder / f"cyl{version}.fmu",
+                               variant="T25C", fmi_version=version)
+            out[f"fmi{version}"] = {"path": result.path, "report": result.report}
+        return out
+
+    return build_once(tmp_path_factory, worker_id, "cylinders", build)
+
+
+@pytest.fixture(scope="module")
+def reference():
+    system = cylinder_system(example_case(), PNEUMATIC)
+    result = run(system)
+    frame = result.timeseries
+    return system, stroke_times(frame["time_s"].to_numpy(), frame["x_m"].to_numpy(),
+                                system.case), frame
+
+
+def test_cylinder_fmus_are_valid_fmi_2_and_3(cylinders):
+    for key, version in (("fmi2", "2.0"), ("fmi3", "3.0")):
+        path = cylinders[key]["path"]
+        assert validate_fmu(path) == []
+        md = fmpy.read_model_description(path)
+        assert md.fmiVersion == version and md.modelExchange and md.coSimulation
+        names = {v.name for v in md.modelVariables}
+        assert {"valve_command", "F_load", "x", "v", "p_cap", "p_rod", "T_cap", "T_rod",
+                "F_friction", "F_piston", "F_rod", "F_wiper", "F_N_piston", "theta_piston",
+                "valve_delay"} <= names
+        # Θ seals without bristles and a Coulomb wiper stick truly: one event indicator
+        assert md.numberOfEventIndicators == 1
+        if version == "3.0":
+            assert [v.variable.name for v in md.eventIndicators] == ["stick_slip_indicator"]
+
+
+def test_c_right_hand_side_is_the_compiled_one(cylinders):
+    # the build check compared the C right-hand side with sealsim.pneumatic.rhs at 400
+    # random states per mode (stick, slip+, slip-): the same formulas on the same tables,
+    # so the difference is rounding at most -- 1e-9 of each quantity's range is the limit
+    # (gcc and numba both without FMA contraction give identical bits on this machine)
+    for key in ("fmi2", "fmi3"):
+        worst = cylinders[key]["report"]["rhs_check"]["max_relative_difference"]
+        assert set(worst) == {"dy", "outputs", "seals"}
+        assert max(worst.values()) <= 1e-9
+
+
+def test_rhs_check_finds_a_wrong_c_model(tmp_path):
+    # the check can fail: sources with a changed constant (the end-stop stiffness) differ
+    import zipfile
+
+    system = cylinder_system(example_case(), PNEUMATIC)
+    out = build_fmu(PNEUMATIC / "cylinder_32.toml", tmp_path / "c.fmu", variant="T25C",
+                    kind="cs", compile=False).path
+    folder = tmp_path / "unpacked"
+    zipfile.ZipFile(out).extractall(folder)
+    config = folder / "sources" / "config.h"
+    text = config.read_text()
+    c0 = text.index("static const double CYL_C[] = {")
+    values = text[c0:text.index("}", c0)].split("{")[1].split(", ")
+    from sealsim.pneumatic import rhs
+
+    values[rhs.C_KS] = repr(float(values[rhs.C_KS]) * 1.01)
+    config.write_text(text[:c0] + "static const double CYL_C[] = {" + ", ".join(values)
+                      + text[text.index("}", c0):])
+    worst = rhs_check(system, folder, samples=200)
+    assert worst["dy"] > 1e-4
+
+
+@pytest.mark.parametrize("key, kind", [("fmi2", "cs"), ("fmi3", "cs"), ("fmi2", "me"),
+                                       ("fmi3", "me")])
+def test_fmu_reproduces_sealsim_pneumatic_run(cylinders, reference, key, kind):
+    # the 4 s cycle of examples/pneumatic/cylinder_32.toml (T25C) driven from FMPy with the
+    # case's commands; extend and retract times within 0.5 % of sealsim pneumatic run (the
+    # issue's acceptance limit).  Co-simulation integrates with the same BDF method and
+    # tolerance and restarts at the same points: ~1e-4; model exchange runs FMPy's CVode
+    # with its own error control: ~1e-3.
+    system, times, _ = reference
+    res = run_fmu(system, cylinders[key]["path"], kind, output_interval=1e-3)
+    got = stroke_times(res["time"], res["x"], system.case)
+    for name in ("extend_time_s", "retract_time_s"):
+        assert got[name] == pytest.approx(times[name], rel=5e-3 if kind == "me" else 5e-4)
+
+
+def test_cosimulation_states_at_coarse_communication_steps(cylinders, reference):
+    # 20 ms communication steps (the speed setting of the benchmark): the FMU keeps its
+    # integrator's history between steps, so the states at the communication points match
+    # sealsim pneumatic run sampled there -- position within 0.1 % of the stroke, pressures
+    # within 0.5 % of the supply pressure
+    system, _, frame = reference
+    res = run_fmu(system, cylinders["fmi2"]["path"], "cs", output_interval=0.02)
+    t_ref = frame["time_s"].to_numpy()
+    x_ref = np.interp(res["time"], t_ref, frame["x_m"].to_numpy())
+    p_ref = np.interp(res["time"], t_ref, frame["p1_bar_abs"].to_numpy() * 1e5)
+    assert np.max(np.abs(res["x"] - x_ref)) < 1e-3 * system.stroke
+    assert np.max(np.abs(res["p_cap"] - p_ref)) < 5e-3 * system.p_supply
+
+
+def test_valve_dead_time_and_fmu_state(cylinders):
+    # a command reaches the spool valve_delay later; get/set FMU state restores the
+    # integrator's history: the same result again
+    path = cylinders["fmi2"]["path"]
+    with LoadedFMU(path, "cs") as fmu:
+        fmu.set(valve_command=-1.0)
+        fmu.initialize()
+        fmu.set(valve_command=1.0)
+        fmu.do_step(0.0, 0.005)                    # 5 ms < 6 ms dead time: no motion yet
+        spool, = fmu.get("spool")
+        assert spool == -1.0
+        fmu.do_step(0.005, 0.005)
+        assert fmu.get("spool")[0] > -1.0
+        state = fmu.get_state()
+        fmu.do_step(0.01, 0.2)
+        first = fmu.get("x", "p_cap")
+        fmu.set_state(state)
+        fmu.do_step(0.01, 0.2)
+        assert fmu.get("x", "p_cap") == first
+        assert first[0] > 0.01                     # it extends
+        fmu.free_state(state)
+
+
+def test_bad_command_is_refused(cylinders):
+    with LoadedFMU(cylinders["fmi2"]["path"], "cs") as fmu:
+        fmu.initialize()
+        fmu.set(valve_command=2.0)
+        with pytest.raises(ModelError, match="valve_command = 2 is not allowed"):
+            fmu.do_step(0.0, 0.01)
+
+
+def test_unsupported_cases_are_refused(tmp_path):
+    from sealsim.pneumatic.case import ThermalModel
+
+    with pytest.raises(InputError, match="seal_heating is not in the cylinder FMU"):
+        cylinder_system(example_case(thermal=ThermalModel()), PNEUMATIC)
+    rig = load_pneumatic_cases(load_toml(PNEUMATIC / "friction_rig.toml"))
+    with pytest.raises(InputError, match="test rig"):
+        cylinder_system(next(iter(rig.values())), PNEUMATIC)
+
+
+def test_fe_map_in_c_is_the_compiled_interpolant(tmp_path):
+    # a seal with a gridded (FE) contact map: the C port of the Hermite grid interpolant
+    # gives the numba one's values (the build's right-hand-side check, 1e-9 of the range)
+    import xarray as xr
+
+    p = np.linspace(0.0, 8e5, 9)
+    t = np.array([283.15, 303.15, 333.15])
+    pp, tt = np.meshgrid(p, t, indexing="ij")
+    fn = 30.0 + 6e-5 * pp + 0.2 * (tt - 293.15) + 5e-12 * pp ** 2
+    b = 5e-4 + 4e-10 * pp + 1e-6 * (tt - 293.15)
+    dims = ("squeeze", "temperature", "pressure")
+    xr.Dataset({"F_N": (dims, fn.T[None]), "b": (dims, b.T[None])},
+               coords={"squeeze": [0.12], "temperature": t, "pressure": p}).to_netcdf(
+        tmp_path / "map.nc")
+    data = load_toml(PNEUMATIC / "cylinder_32.toml")
+    data.pop("variants")
+    data["seals"][1]["map"] = {"file": str(tmp_path / "map.nc")}
+    case_file = tmp_path / "fe.toml"
+    case_file.write_text(tomli_w.dumps(data))
+    result = build_fmu(case_file, tmp_path / "fe.fmu", kind="me")
+    assert result.report["seals"][1]["contact_map"] == "FEContactMap"
+    assert max(result.report["rhs_check"]["max_relative_difference"].values()) <= 1e-9
