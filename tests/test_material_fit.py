@@ -151,6 +151,31 @@ def test_treloar_ogden3_follows_all_three_modes(treloar):
     assert alpha[0] < -1.0 and 1.0 < alpha[1] < 1.6 and 4.0 < alpha[2] < 6.0
 
 
+def test_treloar_ogden3_is_as_close_as_ogdens_own_1972_constants(treloar):
+    # the published fit (Ogden 1972, Proc. R. Soc. A 326, 565: mu = 0.63, 0.0012, -0.01 MPa,
+    # alpha = 1.3, 5.0, -2.0 in W = sum mu_p/alpha_p (l1^a + l2^a + l3^a - 3)) evaluated here
+    # in closed form, independent of FElupe: on all points it gives 7.2 / 7.5 / 8.9 % RMS
+    # relative error, so the 5 % on every point of every mode is not met by Ogden's own
+    # constants either; sealsim's fit must be at least as close in every mode (+0.2 points:
+    # the optimiser's tolerance)
+    mu = np.array([0.63e6, 0.0012e6, -0.01e6])
+    alpha = np.array([1.3, 5.0, -2.0])
+    lateral = {"uniaxial": -alpha / 2, "equibiaxial": -2 * alpha, "planar": -alpha}
+    files = {"uniaxial": "uniaxial.csv", "equibiaxial": "equibiaxial.csv",
+             "planar": "pure_shear.csv"}
+    kgf_cm2 = 98066.5
+    for mode in MODES:
+        data = np.loadtxt(EXAMPLES / "materials" / "data" / "treloar_1944" / files[mode],
+                          delimiter=",", skiprows=2)
+        lam, measured = data[data[:, 0] > 1.0].T
+        ogden = (mu * (lam[:, None] ** (alpha - 1)
+                       - lam[:, None] ** (lateral[mode] - 1))).sum(axis=1)
+        rel = ogden / (measured * kgf_cm2) - 1.0
+        published = float(np.sqrt(np.mean(rel ** 2)))
+        assert 0.07 < published < 0.09, (mode, published)     # the reference reproduced
+        assert treloar.report["modes"][mode]["rel_rmse"] <= published + 0.002, mode
+
+
 def test_treloar_mooney_rivlin_from_uniaxial_misses_equibiaxial(treloar):
     cmp = treloar.report["comparisons"]["mooney_rivlin (uniaxial)"]
     assert cmp["modes"]["uniaxial"]["role"] == "fit"
