@@ -100,10 +100,7 @@ def build_friction_fmu(law, out, *, contact_map=None, normal_force: float | None
     """
     from sealsim.fmu.report import friction_documentation
 
-    check_output(out, force, inputs)
-    _check_title(title, source)
-    if kind not in FMI_KINDS:
-        raise InputError(f"--kind {kind!r} is not allowed; choose me, cs or both")
+    _check_request(out, force, inputs, title, source, kind)
     table_settings = table or TableSettings()
     c_parameters(law)                         # a law without C code: refused before work
     steady = steady_table(law, contact_map, sliding_diameter, velocity_direction)
@@ -141,10 +138,7 @@ def build_cylinder_fmu(case, out, *, name: str | None = None, fmi_version: int =
     from sealsim.fmu.cylinder_export import cylinder_check, cylinder_spec, cylinder_system
     from sealsim.fmu.report import cylinder_documentation
 
-    check_output(out, force, inputs)
-    _check_title(title or case.title, source)
-    if kind not in FMI_KINDS:
-        raise InputError(f"--kind {kind!r} is not allowed; choose me, cs or both")
+    _check_request(out, force, inputs, title or case.title, source, kind)
     system = cylinder_system(case, base_dir)
     spec = cylinder_spec(system, _identifier(name, out), title=title or case.title,
                          source=source)
@@ -153,11 +147,15 @@ def build_cylinder_fmu(case, out, *, name: str | None = None, fmi_version: int =
                          document=cylinder_documentation)
 
 
-def _check_title(title: str, source: str) -> None:
-    """A title the FMU's modelDescription.xml can hold, else an InputError naming the field."""
+def _check_request(out, force, inputs, title: str, source: str, kind: str) -> None:
+    """Before any computing: the target may be written, the title fits the FMU's
+    modelDescription.xml and ``kind`` is one of FMI_KINDS; else an InputError naming the field."""
+    check_output(out, force, inputs)
     problem = xml_text_problem(title)
     if problem:
         raise InputError(f"title{f' ({source})' if source else ''}: {problem}")
+    if kind not in FMI_KINDS:
+        raise InputError(f"--kind {kind!r} is not allowed; choose me, cs or both")
 
 
 def _default_speed_max(case, base_dir) -> float:
@@ -205,10 +203,7 @@ def build_rotary_fmu(case, out, *, settings: RotarySettings | None = None,
     from sealsim.fmu.report import rotary_documentation
     from sealsim.fmu.rotary_export import rotary_check, rotary_maps, rotary_spec
 
-    check_output(out, force, inputs)
-    _check_title(title or case.title, source)
-    if kind not in FMI_KINDS:
-        raise InputError(f"--kind {kind!r} is not allowed; choose me, cs or both")
+    _check_request(out, force, inputs, title or case.title, source, kind)
     s = settings or RotarySettings()
     speed_max = s.max_speed if s.max_speed is not None else _default_speed_max(case, base_dir)
     sumps = (np.asarray(s.sump_temperatures, float) if s.sump_temperatures is not None
