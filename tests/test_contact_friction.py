@@ -10,6 +10,7 @@ import pytest
 from sealsim.friction import Theta
 from sealsim.friction.base import ContactInputs
 from sealsim.friction.contact_table import SteadyFrictionTable
+from sealsim.pneumatic import friction_tables
 from sealsim.pneumatic.contact_maps import AnalyticContactMap
 from sealsim.pneumatic.friction_tables import (
     ContactTribology,
@@ -60,8 +61,11 @@ def test_table_is_cached_and_read_back(tmp_path, table):
     first = friction_table_for(ROD, TRIBOLOGY, cache_dir=tmp_path)
     files = list(tmp_path.glob("friction-*.nc"))
     assert len(files) == 1
-    fresh = AnalyticContactMap(0.012, 2e-3, 0.12, 8e6, 1.9e-4, 293.15)   # no memo
+    fresh = AnalyticContactMap(0.012, 2e-3, 0.12, 8e6, 1.9e-4, 293.15)
+    assert friction_table_for(fresh, TRIBOLOGY, cache_dir=tmp_path) is first   # process memo
+    friction_tables._TABLES.clear()                                             # from the file
     again = friction_table_for(fresh, TRIBOLOGY, cache_dir=tmp_path)
+    assert again is not first
     assert np.array_equal(first.values, again.values)
     assert again.attrs["tribology"]["roughness"] == TRIBOLOGY.roughness
     # another roughness is another table

@@ -526,7 +526,7 @@ def build_seals(case: PneumaticCase, base_dir: str | Path = ".", progress=None,
     seals = []
     for k, spec in enumerate(case.seals):
         where = f"seals[{k}] ({spec.name!r})"
-        key = repr(spec.friction.model_dump())
+        key = repr(spec.friction)      # SI field values (model_dump formats every quantity)
         if key not in laws:
             with warnings.catch_warnings(record=True) as caught:
                 warnings.simplefilter("always")     # e.g. LuGre passivity: kept as notes

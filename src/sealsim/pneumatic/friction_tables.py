@@ -298,14 +298,20 @@ def _map_identity(contact_map) -> str:
     return json.dumps(contact_map.describe(), sort_keys=True, default=str)
 
 
+#: tables of this process by (cache folder, cache key); the key covers the map's file bytes, so
+#: a changed map is a new key: a study or a repeated ``simulate(case)`` reads each table once
+_TABLES: dict[tuple[str, str], SteadyFrictionTable] = {}
+_TABLES_KEPT = 32
+
+
 def friction_table_for(contact_map, tribology: ContactTribology,
                        cache_dir: str | Path | None = None) -> SteadyFrictionTable:
     """The friction table of a seal, read from the cache or built and cached.
 
     The cache file ``friction-<stem>-<hash16>.nc`` sits in the map cache folder; the hash
     covers the map (its file's bytes, or the analytic parameters), the tribology, the speed
-    axis and :data:`TABLE_VERSION`.  The table is also kept on the map object for this
-    process.
+    axis and :data:`TABLE_VERSION`.  The table is also kept for this process (the last
+    ``_TABLES_KEPT`` keys).
     """
     from sealsim.files import atomic_write_bytes
 
@@ -313,11 +319,10 @@ def friction_table_for(contact_map, tribology: ContactTribology,
                            "speeds": TABLE_SPEEDS.tolist(), "version": TABLE_VERSION,
                            "temperature_step": TEMPERATURE_STEP}, sort_keys=True)
     digest = hashlib.sha256(key_text.encode("utf-8")).hexdigest()[:16]
-    memo = contact_map.__dict__.setdefault("_friction_tables", {}) \
-        if hasattr(contact_map, "__dict__") else {}
-    if digest in memo:
-        return memo[digest]
     folder = Path(cache_dir) if cache_dir is not None else default_cache_dir()
+    memo_key = (str(folder), digest)
+    if memo_key in _TABLES:
+        return _TABLES[memo_key]
     stem = Path(getattr(contact_map, "source", "") or "analytic").stem or "analytic"
     target = folder / f"friction-{stem}-{digest}.nc"
     table = None
@@ -336,7 +341,9 @@ def friction_table_for(contact_map, tribology: ContactTribology,
             atomic_write_bytes(target, table.to_dataset().to_netcdf())
         except OSError:           # a read-only cache only costs the rebuild next time
             pass
-    memo[digest] = table
+    if len(_TABLES) >= _TABLES_KEPT:
+        _TABLES.pop(next(iter(_TABLES)))
+    _TABLES[memo_key] = table
     return table
 
 

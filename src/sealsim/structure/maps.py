@@ -143,8 +143,17 @@ class HermiteGrid:
         # basis order in combo: b = 2 a + m -> [h00 (a0,m0), h10 (a0,m1), h01 (a1,m0), h11]
         self._axes_list = [a.tolist() for a in self.axes]
         self._flat = coeff.reshape(-1, 4**d, self.nvars)
-        self._rows = self._flat.tolist()  # nested lists: fast scalar evaluation
+        self._row_lists = None
         self._cells = cells
+
+    @property
+    def _rows(self):
+        """The cell coefficients as nested lists (fast scalar evaluation), made on first use:
+        for a friction table (T, Δp, u, two directions) that takes 0.5 s, and the compiled
+        paths never need it."""
+        if self._row_lists is None:
+            self._row_lists = self._flat.tolist()
+        return self._row_lists
 
     # scalar fast path ----------------------------------------------------------------------
     def evaluate_scalar(self, point):
