@@ -244,15 +244,24 @@ def test_wlf_fit_recovers_c1_c2_within_two_standard_errors():
 
 
 def test_superposition_of_synthetic_dma_finds_the_wlf_law():
-    # the whole path (shift factors found from the data, then WLF): C1 and C2 within 3 %.
-    # Not within 2 s.e.: the pairwise shifts carry a systematic error of the interpolated
-    # neighbour (about 1.3 % in C1 and C2 here) that their scatter-based errors do not hold
-    for seed in range(3):
+    # the whole path (shift factors found from the data, then WLF) recovers C1 and C2 within
+    # two standard errors: 20 noisy data sets, at least 80 % of the estimates within 2 s.e.
+    # (measured 100 %; 98 % over 30 seeds), none beyond 3, and within 3 % of the truth.  The
+    # law is fitted to the pairwise increments (independent); fitted to the cumulative shifts
+    # as if they were independent, the same data gave 22 % within 2 s.e., |z| up to 11 and a
+    # bias of -1 to -2 s.e. (the random-walk correlation of sums of pairwise shifts)
+    hits, total = 0, 0
+    for seed in range(20):
         data, (c1, c2, t_ref) = _dma_truth(np.random.default_rng(seed))
         temps, log_a, se = isotherm_shifts(data)
-        fit = fit_shift_law(temps, log_a, se, t_ref, "wlf")
-        assert fit.parameters["c1"] == pytest.approx(c1, rel=0.03)
-        assert fit.parameters["c2"] == pytest.approx(c2, rel=0.03)
+        fit = fit_shift_law(temps, log_a, se, t_ref, "wlf", cumulative=True)
+        for name, true in (("c1", c1), ("c2", c2)):
+            assert fit.parameters[name] == pytest.approx(true, rel=0.03), (seed, name)
+            z = abs(fit.parameters[name] - true) / fit.standard_errors[name]
+            assert z < 3.0, (seed, name, z)
+            hits += z <= 2.0
+            total += 1
+    assert hits / total >= 0.8, (hits, total)
 
 
 def test_prony_from_synthetic_master_curve():

@@ -350,9 +350,10 @@ def fit_material(case: MaterialFitCase, base_dir: str | Path = ".", origin: str 
         dma = _read_dma(v, base_dir)
         temps, log_a, se = isotherm_shifts(dma)
         t_master = v.reference_temperature or t_ref
-        shift = fit_shift_law(temps, log_a, se, t_master, "wlf")
+        shift = fit_shift_law(temps, log_a, se, t_master, "wlf", cumulative=True)
         try:
-            arrhenius = fit_shift_law(temps, log_a, se, t_master, "arrhenius")
+            arrhenius = fit_shift_law(temps, log_a, se, t_master, "arrhenius",
+                                      cumulative=True)
         except InputError as exc:
             notes.append(f"Arrhenius shift not fitted: {exc}")
         f_r, e1, e2 = master_curve(dma, shift)

@@ -18,7 +18,9 @@ several temperatures (isotherms).
    fitted to the measured shift factors (with a free offset: the measured ones are relative
    to an isotherm, the law to T_r), by least squares, weighted with the shift factors'
    standard errors; C1, C2 (or E_a) with standard errors
-   (:func:`sealsim.calibration.statistics.parameter_statistics`).
+   (:func:`sealsim.calibration.statistics.parameter_statistics`).  Shift factors found by
+   pairwise shifting are sums of the pairs' shifts, with correlated errors: the law is fitted
+   to the pairwise increments instead (``cumulative=True``), which are independent.
 3. **Prony series** :math:`E(t) = E_\infty + \sum_i E_i e^{-t/\tau_i}` on the master curve at
    T_r: relaxation times fixed, ``terms_per_decade`` per decade over the reduced-frequency
    range of the data (the usual collocation choice), the moduli E∞, E_i ≥ 0 from the
@@ -251,11 +253,20 @@ def isotherm_shifts(data: DMAData) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 
 def fit_shift_law(temperatures, log_shift, stderr, reference_temperature: float,
-                  law: str = "wlf") -> ShiftFit:
+                  law: str = "wlf", cumulative: bool = False) -> ShiftFit:
     """WLF or Arrhenius fitted to measured shift factors (see the module docstring).
 
     The measured log a_T may have any offset (relative to one isotherm); the result's
     ``log_shift`` is re-referenced to ``reference_temperature`` with the fitted offset.
+
+    ``cumulative=True`` for the shift factors of :func:`isotherm_shifts`: each is the sum of
+    the pairwise shifts below it, so their errors are correlated (a random walk) and weighting
+    them as independent biases the law and understates its errors.  The law is then fitted to
+    the independent pairwise increments log a_T(T_k) − log a_T(T_k−1), each weighted with its
+    own standard error (generalised least squares of the sums), and the parameters' standard
+    errors are scaled by the Birge ratio when the increments scatter more than their stated
+    errors (R. T. Birge, Phys. Rev. 40 (1932) 207): the pair errors come from the scatter of
+    interpolated points, which are themselves correlated.
 
     Examples
     --------
@@ -264,6 +275,9 @@ def fit_shift_law(temperatures, log_shift, stderr, reference_temperature: float,
     >>> fit = fit_shift_law(T, log_a, np.full(11, 0.01), 300.0)
     >>> round(fit.parameters["c1"], 4), round(fit.parameters["c2"], 3)
     (8.86, 101.6)
+    >>> cum = fit_shift_law(T, log_a, 0.01 * np.sqrt(np.arange(11)), 300.0, cumulative=True)
+    >>> round(cum.parameters["c1"], 4), round(cum.parameters["c2"], 3)
+    (8.86, 101.6)
     """
     t = np.asarray(temperatures, dtype=float)
     y = np.asarray(log_shift, dtype=float)
@@ -271,34 +285,55 @@ def fit_shift_law(temperatures, log_shift, stderr, reference_temperature: float,
     # the isotherm the shifts are relative to has no error of its own: weight by the median
     w = 1.0 / np.where(se > 0, se, np.median(se[se > 0]) if np.any(se > 0) else 1.0)
     tr = float(reference_temperature)
+    if cumulative:
+        steps = np.sqrt(np.maximum(np.diff(se ** 2), 0.0))
+        if t.size < 2 or np.any(np.diff(t) <= 0) or not np.all(steps > 0):
+            raise InputError("cumulative shift factors need ascending temperatures and "
+                             "standard errors that grow from one isotherm to the next")
     if law == "wlf":
         if t.size < 4:
             raise InputError("a WLF fit needs shift factors at 4 or more temperatures "
                              f"(found {t.size}); use law = 'arrhenius' or measure more")
 
-        def model(x):
-            return -x[0] * (t - tr) / (x[1] + t - tr) + x[2]
+        def shape(x):
+            return -x[0] * (t - tr) / (x[1] + t - tr)
         lo_c2 = max(1.0, tr - float(t.min()) + 1.0)   # WLF finite over the data
-        start = [10.0, max(100.0, lo_c2 + 20.0), float(np.interp(tr, t, y))]
-        res = least_squares(lambda x: (model(x) - y) * w, start,
-                            bounds=([0.0, lo_c2, -np.inf], [200.0, 5000.0, np.inf]))
-        names = ["c1", "c2", "offset"]
+        start = [10.0, max(100.0, lo_c2 + 20.0)]
+        lower, upper = [0.0, lo_c2], [200.0, 5000.0]
+        names = ["c1", "c2"]
+        factor = 1.0
     elif law == "arrhenius":
         if t.size < 3:
             raise InputError("an Arrhenius fit needs shift factors at 3 or more temperatures")
-        scale = 1e5
+        factor = 1e5                                  # E_a fitted in 100 kJ/mol
 
-        def model(x):
-            return x[0] * scale / (GAS_CONSTANT * math.log(10.0)) * (1 / t - 1 / tr) + x[1]
-        res = least_squares(lambda x: (model(x) - y) * w, [1.0, float(np.interp(tr, t, y))])
-        names = ["activation_energy", "offset"]
+        def shape(x):
+            return x[0] * factor / (GAS_CONSTANT * math.log(10.0)) * (1 / t - 1 / tr)
+        start, lower, upper = [1.0], [-np.inf], [np.inf]
+        names = ["activation_energy"]
     else:
         raise InputError(f"shift law {law!r} is not known; choose 'wlf' or 'arrhenius'")
-    stats = parameter_statistics(res.jac, res.fun, values=res.x, names=names)
-    x, sx = res.x.copy(), stats["standard_errors"].copy()
-    if law == "arrhenius":
-        x[0] *= scale
-        sx[0] *= scale
+    if cumulative:
+        res = least_squares(lambda x: (np.diff(shape(x)) - np.diff(y)) / steps, start,
+                            bounds=(lower, upper))
+        stats = parameter_statistics(res.jac, res.fun, values=res.x, names=names,
+                                     min_residual_variance=1.0)
+        weight = w ** 2
+        offset = float(np.sum(weight * (y - shape(res.x))) / np.sum(weight))
+        x = np.r_[res.x, offset]
+        sx = np.r_[stats["standard_errors"], np.nan]
+        names = names + ["offset"]
+        stats["identifiable"] = np.r_[stats["identifiable"], True]
+        stats["reasons"] = list(stats["reasons"]) + [[]]
+    else:
+        start = start + [float(np.interp(tr, t, y))]
+        res = least_squares(lambda x: (shape(x[:-1]) + x[-1] - y) * w, start,
+                            bounds=(lower + [-np.inf], upper + [np.inf]))
+        names = names + ["offset"]
+        stats = parameter_statistics(res.jac, res.fun, values=res.x, names=names)
+        x, sx = res.x.copy(), stats["standard_errors"].copy()
+    x[0] *= factor if law == "arrhenius" else 1.0
+    sx[0] *= factor if law == "arrhenius" else 1.0
     params = {n: float(v) for n, v in zip(names[:-1], x[:-1])}
     errors = {n: (float(v) if math.isfinite(v) else None) for n, v in zip(names[:-1], sx[:-1])}
     ident = {n: bool(v) for n, v in zip(names[:-1], stats["identifiable"][:-1])}
