@@ -47,7 +47,6 @@ Examples
 from __future__ import annotations
 
 from collections.abc import Mapping
-from pathlib import Path
 from typing import Any
 
 import pydantic
