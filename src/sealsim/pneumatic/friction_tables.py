@@ -301,7 +301,7 @@ def _map_identity(contact_map) -> str:
 #: tables of this process by (cache folder, cache key); the key covers the map's file bytes, so
 #: a changed map is a new key: a study or a repeated ``simulate(case)`` reads each table once
 _TABLES: dict[tuple[str, str], SteadyFrictionTable] = {}
-_TABLES_KEPT = 32
+_TABLES_KEPT = 8         # a large FE table holds ~16 MB of cell coefficients
 
 
 def friction_table_for(contact_map, tribology: ContactTribology,
