@@ -402,12 +402,15 @@ class PneumaticSystem:
         """
         y = np.asarray(y, dtype=float)
         column = y.ndim == 1
-        ys = np.ascontiguousarray(y[:, None] if column else y)
+        # column-major: each evaluation reads and writes one contiguous column (row-major
+        # columns of many samples are strided by the sample count: 20 % slower); a
+        # sampler's (k, n) samples transposed are column-major already (no copy)
+        ys = np.asfortranarray(y[:, None] if column else y)
         k = ys.shape[1]
         ts = np.ascontiguousarray(np.broadcast_to(np.asarray(t, dtype=float), (k,)))
         modes = np.ascontiguousarray(np.broadcast_to(np.asarray(mode, dtype=np.int64), (k,)))
-        dy = np.zeros_like(ys)
-        diag = np.zeros((self.n_diag, k))
+        dy = np.zeros_like(ys, order="F")
+        diag = np.zeros((self.n_diag, k), order="F")
         rhs.evaluate_many(ts, ys, modes, self.tables, dy, diag,
                           rhs.OUTPUTS if outputs_only and full else rhs.FULL)
         if not full:
