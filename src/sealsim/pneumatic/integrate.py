@@ -417,15 +417,24 @@ def _integrate_compiled(system, progress, sampler) -> list[Segment]:
             result, t, mode, k, nseg = run_interval(t, t_next, y, mode, system.tables, work, ws,
                                                     grid, k, samples, sample_modes, seg_t,
                                                     seg_i, seg_y, recent)
-            for j in range(nseg):
-                y1 = seg_y[j].copy()
-                segments.append(Segment(float(seg_t[j, 0]), float(seg_t[j, 1]),
-                                        int(seg_i[j, 0]), y_start, y1, int(seg_i[j, 1]),
-                                        int(seg_i[j, 2]), int(seg_i[j, 3]), int(seg_i[j, 4])))
-                y_start = y1.copy()
-                if seg_i[j, 4]:                     # the next segment starts after the switch
-                    if seg_i[j, 0] in (rhs.FORWARD, rhs.BACKWARD):
-                        y_start[1] = 0.0
+            if nseg:
+                # the states at the ends and the starts (a segment starts where the one before
+                # ended, at rest after a slip that ended by an event), one copy for all
+                ends = seg_y[:nseg].copy()
+                starts = np.empty_like(ends)
+                starts[0] = y_start
+                starts[1:] = ends[:-1]
+                info = seg_i[:nseg]
+                slip_end = (info[:, 4] != 0) & ((info[:, 0] == rhs.FORWARD)
+                                                | (info[:, 0] == rhs.BACKWARD))
+                starts[1:, 1][slip_end[:-1]] = 0.0
+                times, info = seg_t[:nseg].tolist(), info.tolist()
+                segments.extend(Segment(times[j][0], times[j][1], info[j][0], starts[j],
+                                        ends[j], info[j][1], info[j][2], info[j][3],
+                                        info[j][4]) for j in range(nseg))
+                y_start = ends[-1].copy()
+                if slip_end[-1]:                    # the next segment starts after the switch
+                    y_start[1] = 0.0
             if result == DONE:
                 break
             if result == STEP_FAILED or not np.all(np.isfinite(y)):
