@@ -37,6 +37,7 @@ integrals (:data:`BOOKKEEPING`).
 from __future__ import annotations
 
 import math
+import types
 
 import numpy as np
 from numba import njit
@@ -50,6 +51,7 @@ from sealsim.friction.compiled import (  # noqa: F401  (law codes re-exported)
     STRIBECK,
     THETA,
 )
+from sealsim.friction import compiled as _compiled_laws
 from sealsim.friction.compiled import law_rates
 from sealsim.pneumatic._jit import jit
 from sealsim.pneumatic.chambers import (
@@ -130,9 +132,25 @@ _load = jit(load_force)
 _dp = jit(pressure_difference, smooth_abs=jit(smooth_abs))
 _sides = jit(side_pressures)
 _orient = njit(cache=True)(table_orientation)
-#: the friction laws inlined into the right-hand side (a call takes and releases a reference
-#: to each of its arrays: 10 % of an evaluation with three seals)
-_law_rates = njit(inline="always")(law_rates.py_func)
+
+
+def _inline(func, **callees):
+    """``func`` (a plain function) compiled to be inlined into its callers, with the compiled
+    functions ``callees`` in place of its globals of those names (as :func:`._jit.jit`): a
+    call of its own takes and releases a reference to every array it is passed (atomic counts,
+    a tenth of an evaluation of the right-hand side with three seals)."""
+    if callees:
+        env = dict(func.__globals__)
+        env.update(callees)
+        func = types.FunctionType(func.__code__, env, func.__name__, func.__defaults__,
+                                  func.__closure__)
+    return njit(inline="always")(func)
+
+
+#: the friction laws, inlined into the right-hand side
+_law_rates = _inline(law_rates.py_func, _theta_level=_inline(
+    _compiled_laws._theta_level.py_func,
+    contact_steady=_inline(_compiled_laws.contact_steady.py_func)))
 
 
 @njit(cache=True)
@@ -183,7 +201,7 @@ def profile_point(t, kind, profile):
     return x, (values[i + 1] - values[i]) / (times[i + 1] - times[i])
 
 
-@njit(cache=True)
+@njit(inline="always")
 def _seal_loads(i, dp, temp, map_int, map_data):
     """(F_N [N], b [m], clipped) of seal i at Δp [Pa] and its temperature [K]."""
     kind = map_int[i, 0]
@@ -197,7 +215,7 @@ def _seal_loads(i, dp, temp, map_int, map_data):
     return math.nan, math.nan, 0.0
 
 
-@njit(cache=True)
+@njit(inline="always")
 def _flows_and_heat(x, p1, p2, t1, t2, s, t_wall, c):
     """Mass flows g0..g3 [kg/s] of the paths P→A, A→R, P→B, B→R (meter-out throttles and end
     cushions in series), their enthalpy flows h0..h3 [W] and the wall heat q1, q2 [W] into the
