@@ -147,10 +147,15 @@ def _inline(func, **callees):
     return njit(inline="always")(func)
 
 
-#: the friction laws, inlined into the right-hand side
+#: the friction laws and the contact friction tables, inlined into the right-hand side
 _law_rates = _inline(law_rates.py_func, _theta_level=_inline(
     _compiled_laws._theta_level.py_func,
-    contact_steady=_inline(_compiled_laws.contact_steady.py_func)))
+    contact_steady=_inline(_compiled_laws.contact_steady.py_func,
+                           table_cell=_inline(_compiled_laws.table_cell.py_func),
+                           speed_cell=_inline(_compiled_laws.speed_cell.py_func),
+                           cell_sums=_inline(_compiled_laws.cell_sums.py_func))))
+#: gridded contact maps, inlined into :func:`_seal_loads`
+_grid_point = _inline(hermite_grid_point.py_func)
 
 
 @njit(cache=True)
@@ -165,7 +170,7 @@ def cushion_conductance(distance, length, conductance, entry):
     return np.inf if closed <= 0.0 else conductance / closed
 
 
-@njit(cache=True)
+@njit(inline="always")
 def spool_position(t, spool, tau, initial):
     """Spool position s(t) [-] after the commands (see :class:`.valve.SpoolMotion`):
     ``spool`` rows are arrival times, targets and the positions at arrival."""
@@ -211,7 +216,7 @@ def _seal_loads(i, dp, temp, map_int, map_data):
                                 map_data[off + 3])
         return fn, b, 0.0
     if kind == MAP_GRID:
-        return hermite_grid_point(map_int[i], map_data, dp, temp)
+        return _grid_point(map_int[i], map_data, dp, temp)
     return math.nan, math.nan, 0.0
 
 
