@@ -37,7 +37,6 @@ integrals (:data:`BOOKKEEPING`).
 from __future__ import annotations
 
 import math
-import types
 
 import numpy as np
 from numba import njit
@@ -134,28 +133,17 @@ _sides = jit(side_pressures)
 _orient = njit(cache=True)(table_orientation)
 
 
-def _inline(func, **callees):
-    """``func`` (a plain function) compiled to be inlined into its callers, with the compiled
-    functions ``callees`` in place of its globals of those names (as :func:`._jit.jit`): a
-    call of its own takes and releases a reference to every array it is passed (atomic counts,
-    a tenth of an evaluation of the right-hand side with three seals)."""
-    if callees:
-        env = dict(func.__globals__)
-        env.update(callees)
-        func = types.FunctionType(func.__code__, env, func.__name__, func.__defaults__,
-                                  func.__closure__)
-    return njit(inline="always")(func)
-
-
-#: the friction laws and the contact friction tables, inlined into the right-hand side
-_law_rates = _inline(law_rates.py_func, _theta_level=_inline(
-    _compiled_laws._theta_level.py_func,
-    contact_steady=_inline(_compiled_laws.contact_steady.py_func,
-                           table_cell=_inline(_compiled_laws.table_cell.py_func),
-                           speed_cell=_inline(_compiled_laws.speed_cell.py_func),
-                           cell_sums=_inline(_compiled_laws.cell_sums.py_func))))
+#: the friction laws and the contact friction tables, inlined into the right-hand side (a
+#: call takes and releases a reference to every array it is passed: with three seals a
+#: tenth of an evaluation)
+_law_rates = jit(law_rates.py_func, inline=True, _theta_level=jit(
+    _compiled_laws._theta_level.py_func, inline=True,
+    contact_steady=jit(_compiled_laws.contact_steady.py_func, inline=True,
+                       table_cell=jit(_compiled_laws.table_cell.py_func, inline=True),
+                       speed_cell=jit(_compiled_laws.speed_cell.py_func, inline=True),
+                       cell_sums=jit(_compiled_laws.cell_sums.py_func, inline=True))))
 #: gridded contact maps, inlined into :func:`_seal_loads`
-_grid_point = _inline(hermite_grid_point.py_func)
+_grid_point = jit(hermite_grid_point.py_func, inline=True)
 
 
 @njit(cache=True)
@@ -471,7 +459,7 @@ def evaluate_column(t, y, col, mode, tables, dy, diag, level):
 #: :func:`evaluate_column` inlined into the loops that call it thousands of times (the
 #: Jacobian's columns, the output samples): as a call of its own, every evaluation takes and
 #: releases a reference to each of the ten table arrays (atomic counts, 15 % of an evaluation)
-_evaluate_column_inlined = njit(inline="always")(evaluate_column.py_func)
+_evaluate_column_inlined = jit(evaluate_column.py_func, inline=True)
 
 
 @njit(cache=True)

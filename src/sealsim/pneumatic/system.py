@@ -486,7 +486,9 @@ def _joined(chunks: list) -> np.ndarray:
     if hit is not None and all(ref() is c for ref, c in zip(hit[0], chunks)):
         return hit[1]
     joined = np.concatenate(chunks)
-    if len(_JOINED) >= 8:
+    for stale in [k for k, (refs, _) in _JOINED.items() if any(r() is None for r in refs)]:
+        del _JOINED[stale]                          # parts gone: their join is never asked for
+    if len(_JOINED) >= 4:
         _JOINED.pop(next(iter(_JOINED)))
     _JOINED[key] = ([weakref.ref(c) for c in chunks], joined)
     return joined
