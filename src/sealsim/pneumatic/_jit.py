@@ -18,16 +18,22 @@ import numba
 __all__ = ["jit"]
 
 
-def jit(func, **compiled):
+def jit(func, inline: bool = False, **compiled):
     """``numba.njit(cache=True)`` of ``func``.
 
     ``compiled`` names global functions that ``func`` calls and gives their compiled versions
     (numba cannot call plain Python functions): ``jit(iso6358_flow,
     iso6358_mass_flow=jit(iso6358_mass_flow))``.  The public function stays plain numpy code.
+    ``inline=True`` compiles it to be inlined into its compiled callers instead of called (for
+    the right-hand side's parts: a call of its own takes and releases a reference to every
+    array it is passed -- atomic counts that cost more than the arithmetic of a small
+    function); an inlined function is part of its callers' cached code.
     """
     if compiled:
         env = dict(func.__globals__)
         env.update(compiled)
         func = types.FunctionType(func.__code__, env, func.__name__, func.__defaults__,
                                   func.__closure__)
+    if inline:
+        return numba.njit(inline="always")(func)
     return numba.njit(cache=True)(func)

@@ -385,16 +385,20 @@ class AnalyticContactMap:
         modulus = self.modulus_at(temperature)
         return lindley_force_per_length(squeeze, self.cord_diameter, modulus), modulus
 
+    def preload_at(self, temperature: float):
+        """:meth:`_preload` at one temperature, computed once per map and temperature (the
+        modulus law costs half a millisecond; every simulation of the seal asks for it)."""
+        cache = self.__dict__.setdefault("_cache", {})
+        if temperature not in cache:
+            cache[temperature] = self._preload(temperature)
+        return cache[temperature]
+
     def evaluate(self, pressure_difference, temperature):
         """(F_N [N], b [m]) at Δp [Pa] and T [K] (vectorised)."""
         if np.ndim(pressure_difference) > 0:
             pressure_difference = np.asarray(pressure_difference, dtype=float)
         if np.ndim(temperature) == 0:     # a seal's temperature is constant during a run
-            cache = self.__dict__.setdefault("_cache", {})
-            key = float(temperature)
-            if key not in cache:
-                cache[key] = self._preload(key)
-            preload, modulus = cache[key]
+            preload, modulus = self.preload_at(float(temperature))
         else:
             preload, modulus = self._preload(np.asarray(temperature, dtype=float))
         return _analytic_loads(pressure_difference, preload, modulus, self.cord_diameter,
@@ -414,7 +418,7 @@ class AnalyticContactMap:
     def loads_function(self, temperature: float):
         """``f(Δp) -> (F_N, b)`` at a fixed temperature T [K] (the fast path of a seal whose
         temperature does not change during a run)."""
-        preload, modulus = self._preload(float(temperature))
+        preload, modulus = self.preload_at(float(temperature))
         d, diameter = self.cord_diameter, self.sliding_diameter
 
         def loads(pressure_difference):

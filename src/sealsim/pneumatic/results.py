@@ -138,6 +138,8 @@ class Sampler:
         if self.pending is not None:
             self._take(self.pending, last=True)
             self.pending = None
+        if len(self.states) == 1:       # stored at once: no copy (keeps the column-major
+            return self.times[0], self.states[0], self.modes[0]     # layout of the samples)
         return np.concatenate(self.times), np.hstack(self.states), np.concatenate(self.modes)
 
 
@@ -168,7 +170,9 @@ def _diagnostics(system, ts, ys, modes) -> dict[str, np.ndarray]:
 
 
 _MODE_CODES = np.array(sorted(rhs.MODES))
-_MODE_NAMES = np.array([rhs.MODES[k] for k in _MODE_CODES])
+# an object array: indexing it hands pandas the five str objects themselves (half the time of
+# converting a numpy unicode array to the str column)
+_MODE_NAMES = np.array([rhs.MODES[k] for k in _MODE_CODES], dtype=object)
 
 
 def _frame(system, diag) -> pd.DataFrame:

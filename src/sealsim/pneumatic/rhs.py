@@ -50,7 +50,8 @@ from sealsim.friction.compiled import (  # noqa: F401  (law codes re-exported)
     STRIBECK,
     THETA,
 )
-from sealsim.friction.compiled import law_rates as _law_rates
+from sealsim.friction import compiled as _compiled_laws
+from sealsim.friction.compiled import law_rates
 from sealsim.pneumatic._jit import jit
 from sealsim.pneumatic.chambers import (
     AIR_CP,
@@ -132,6 +133,19 @@ _sides = jit(side_pressures)
 _orient = njit(cache=True)(table_orientation)
 
 
+#: the friction laws and the contact friction tables, inlined into the right-hand side (a
+#: call takes and releases a reference to every array it is passed: with three seals a
+#: tenth of an evaluation)
+_law_rates = jit(law_rates.py_func, inline=True, _theta_level=jit(
+    _compiled_laws._theta_level.py_func, inline=True,
+    contact_steady=jit(_compiled_laws.contact_steady.py_func, inline=True,
+                       table_cell=jit(_compiled_laws.table_cell.py_func, inline=True),
+                       speed_cell=jit(_compiled_laws.speed_cell.py_func, inline=True),
+                       cell_sums=jit(_compiled_laws.cell_sums.py_func, inline=True))))
+#: gridded contact maps, inlined into :func:`_seal_loads`
+_grid_point = jit(hermite_grid_point.py_func, inline=True)
+
+
 @njit(cache=True)
 def cushion_conductance(distance, length, conductance, entry):
     """Conductance of an end cushion [m³/(s·Pa)] at ``distance`` from the end (inf: open, or
@@ -144,7 +158,7 @@ def cushion_conductance(distance, length, conductance, entry):
     return np.inf if closed <= 0.0 else conductance / closed
 
 
-@njit(cache=True)
+@njit(inline="always")
 def spool_position(t, spool, tau, initial):
     """Spool position s(t) [-] after the commands (see :class:`.valve.SpoolMotion`):
     ``spool`` rows are arrival times, targets and the positions at arrival."""
@@ -180,7 +194,7 @@ def profile_point(t, kind, profile):
     return x, (values[i + 1] - values[i]) / (times[i + 1] - times[i])
 
 
-@njit(cache=True)
+@njit(inline="always")
 def _seal_loads(i, dp, temp, map_int, map_data):
     """(F_N [N], b [m], clipped) of seal i at Δp [Pa] and its temperature [K]."""
     kind = map_int[i, 0]
@@ -190,11 +204,11 @@ def _seal_loads(i, dp, temp, map_int, map_data):
                                 map_data[off + 3])
         return fn, b, 0.0
     if kind == MAP_GRID:
-        return hermite_grid_point(map_int[i], map_data, dp, temp)
+        return _grid_point(map_int[i], map_data, dp, temp)
     return math.nan, math.nan, 0.0
 
 
-@njit(cache=True)
+@njit(inline="always")
 def _flows_and_heat(x, p1, p2, t1, t2, s, t_wall, c):
     """Mass flows g0..g3 [kg/s] of the paths P→A, A→R, P→B, B→R (meter-out throttles and end
     cushions in series), their enthalpy flows h0..h3 [W] and the wall heat q1, q2 [W] into the
@@ -442,6 +456,12 @@ def evaluate_column(t, y, col, mode, tables, dy, diag, level):
         diag[D_TROD, col] = t_rod
 
 
+#: :func:`evaluate_column` inlined into the loops that call it thousands of times (the
+#: Jacobian's columns, the output samples): as a call of its own, every evaluation takes and
+#: releases a reference to each of the ten table arrays (atomic counts, 15 % of an evaluation)
+_evaluate_column_inlined = jit(evaluate_column.py_func, inline=True)
+
+
 @njit(cache=True)
 def _plain(y):
     """0 as a run-time value: numba compiles a function once per argument *type*, and a literal
@@ -475,7 +495,8 @@ def jacobian(t, y, mode, tables, scale, work_y, work_dy, f0, diag, jac):
         for i in range(n):
             work_y[i] = y[i]
         work_y[j] = y[j] + h
-        evaluate_column(t, shifted, zero, mode + zero, tables, rates, diag, zero + RATES)
+        _evaluate_column_inlined(t, shifted, zero, mode + zero, tables, rates, diag,
+                                 zero + RATES)
         for i in range(n):
             jac[i, j] = (work_dy[i] - f0[i]) / h
 
@@ -486,7 +507,7 @@ def evaluate_many(ts, ys, modes, tables, dys, diag, level):
     :func:`evaluate_column`) for every column of ys (shape (n, k)) at the times ts (k,) in
     the modes ``modes`` (k,)."""
     for col in range(ys.shape[1]):
-        evaluate_column(ts[col], ys, col, modes[col], tables, dys, diag, level)
+        _evaluate_column_inlined(ts[col], ys, col, modes[col], tables, dys, diag, level)
 
 
 @njit(cache=True)

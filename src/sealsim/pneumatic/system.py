@@ -8,6 +8,7 @@ stick/slip quantities as Python callables for the integrator (:mod:`.integrate`)
 from __future__ import annotations
 
 import math
+import weakref
 
 import numpy as np
 
@@ -184,7 +185,7 @@ class PneumaticSystem:
         if self.heating:
             self._thermal_setup()
         self._fric_int = fric_int
-        self._fric_data = np.concatenate(fric_chunks) if fric_chunks else np.zeros(1)
+        self._fric_data = _joined(fric_chunks) if fric_chunks else np.zeros(1)
         self.tables = (self._c, self._spool, self._profile, self._seal_int, self._law_par,
                        self._seal_therm, self._map_int, self._map_data, self._fric_int,
                        self._fric_data)
@@ -208,7 +209,7 @@ class PneumaticSystem:
             return None, None
         if isinstance(cm, FEContactMap):
             return cm.tables()
-        preload = getattr(cm, "_preload", None)
+        preload = getattr(cm, "preload_at", None)
         if preload is not None and not self.heating:
             # the analytic estimate at the seal's constant temperature: exact, compiled
             f0, modulus = preload(float(seal.temperature))
@@ -402,12 +403,15 @@ class PneumaticSystem:
         """
         y = np.asarray(y, dtype=float)
         column = y.ndim == 1
-        ys = np.ascontiguousarray(y[:, None] if column else y)
+        # column-major: each evaluation reads and writes one contiguous column (row-major
+        # columns of many samples are strided by the sample count: 20 % slower); a
+        # sampler's (k, n) samples transposed are column-major already (no copy)
+        ys = np.asfortranarray(y[:, None] if column else y)
         k = ys.shape[1]
         ts = np.ascontiguousarray(np.broadcast_to(np.asarray(t, dtype=float), (k,)))
         modes = np.ascontiguousarray(np.broadcast_to(np.asarray(mode, dtype=np.int64), (k,)))
-        dy = np.zeros_like(ys)
-        diag = np.zeros((self.n_diag, k))
+        dy = np.zeros_like(ys, order="F")
+        diag = np.zeros((self.n_diag, k), order="F")
         rhs.evaluate_many(ts, ys, modes, self.tables, dy, diag,
                           rhs.OUTPUTS if outputs_only and full else rhs.FULL)
         if not full:
@@ -464,6 +468,30 @@ class PneumaticSystem:
         if bool(stuck):
             return rhs.STICK
         return rhs.FORWARD if hold > 0 else rhs.BACKWARD
+
+
+#: the joined friction tables of recent systems: {ids of the parts: (weak references to the
+#: parts, joined array)} -- contact friction tables are megabytes, kept per process
+#: (:mod:`.friction_tables`), and every run of the same seals would copy them again
+_JOINED: dict = {}
+
+
+def _joined(chunks: list) -> np.ndarray:
+    """The arrays ``chunks`` one after the other, as ``np.concatenate`` (read only by the
+    compiled right-hand side); the same parts give the same array without a new copy."""
+    if len(chunks) == 1:
+        return chunks[0]
+    key = tuple(id(c) for c in chunks)
+    hit = _JOINED.get(key)
+    if hit is not None and all(ref() is c for ref, c in zip(hit[0], chunks)):
+        return hit[1]
+    joined = np.concatenate(chunks)
+    for stale in [k for k, (refs, _) in _JOINED.items() if any(r() is None for r in refs)]:
+        del _JOINED[stale]                          # parts gone: their join is never asked for
+    if len(_JOINED) >= 4:
+        _JOINED.pop(next(iter(_JOINED)))
+    _JOINED[key] = ([weakref.ref(c) for c in chunks], joined)
+    return joined
 
 
 def _constant_viscosity(seal_int, law_par, seals) -> None:
