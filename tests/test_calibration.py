@@ -13,6 +13,8 @@ import pytest
 import tomli_w
 from typer.testing import CliRunner
 
+from rig_strokes import stroke_velocity
+
 from sealsim.calibration import fit_friction, parameter_statistics, prepare_run
 from sealsim.calibration.case import FrictionFitCase
 from sealsim.calibration.study import _contact_map, load_fit_case
@@ -54,15 +56,7 @@ def synthetic_run(path: Path, speeds, seed: int, segment=6.0, ramp=0.2, noise=0.
     with a load-cell offset and seeded white noise (σ = ``noise`` N); columns t [ms],
     x [mm], v [mm/s], p [bar], F [N]."""
     dt = 0.01
-    knots_t, knots_v = [0.0], [0.0]
-    for s in speeds:
-        for sign in (1, -1):
-            knots_t += [knots_t[-1] + ramp, knots_t[-1] + ramp + segment]
-            knots_v += [sign * s, sign * s]
-    knots_t.append(knots_t[-1] + ramp)
-    knots_v.append(0.0)
-    t = np.arange(0.0, knots_t[-1], dt)
-    v = np.interp(t, knots_t, knots_v)
+    t, v = stroke_velocity(speeds, segment, ramp, dt)
     x = np.concatenate([[0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * dt)])
     fn, b = synthetic_contact()
     law = Theta(**TRUTH)

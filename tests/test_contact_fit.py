@@ -11,6 +11,8 @@ import numpy as np
 import pytest
 from pydantic import ValidationError
 
+from rig_strokes import stroke_velocity
+
 import sealsim
 from sealsim.calibration.case import FrictionFitCase
 from sealsim.calibration.friction_fit import predict_run, with_law_table
@@ -32,16 +34,7 @@ def contact_run(path: Path, speeds, law: dict, segment=2.0, ramp=0.2) -> Path:
     """Strokes back and forth at each speed [m/s], the friction the law gives in steady
     sliding at every sample (:func:`sealsim.seal_friction`); columns t [ms], v [mm/s],
     p [bar], F [N]."""
-    dt = 0.01
-    knots_t, knots_v = [0.0], [0.0]
-    for s in speeds:
-        for sign in (1, -1):
-            knots_t += [knots_t[-1] + ramp, knots_t[-1] + ramp + segment]
-            knots_v += [sign * s, sign * s]
-    knots_t.append(knots_t[-1] + ramp)
-    knots_v.append(0.0)
-    t = np.arange(0.0, knots_t[-1], dt)
-    v = np.interp(t, knots_t, knots_v)
+    t, v = stroke_velocity(speeds, segment, ramp)
     ureg = sealsim.units.unit_registry()
     with warnings.catch_warnings():     # the note on seal_contact's generic values
         warnings.simplefilter("ignore", SealsimWarning)
