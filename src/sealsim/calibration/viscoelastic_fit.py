@@ -332,8 +332,8 @@ def fit_shift_law(temperatures, log_shift, stderr, reference_temperature: float,
         names = names + ["offset"]
         stats = parameter_statistics(res.jac, res.fun, values=res.x, names=names)
         x, sx = res.x.copy(), stats["standard_errors"].copy()
-    x[0] *= factor if law == "arrhenius" else 1.0
-    sx[0] *= factor if law == "arrhenius" else 1.0
+    x[0] *= factor                                    # E_a back to J/mol (1 for WLF)
+    sx[0] *= factor
     params = {n: float(v) for n, v in zip(names[:-1], x[:-1])}
     errors = {n: (float(v) if math.isfinite(v) else None) for n, v in zip(names[:-1], sx[:-1])}
     ident = {n: bool(v) for n, v in zip(names[:-1], stats["identifiable"][:-1])}
