@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import json
 import math
+import warnings
 from pathlib import Path
 
 import numpy as np
@@ -25,7 +26,7 @@ from sealsim.calibration.viscoelastic_fit import (
     master_curve,
 )
 from sealsim.errors import InputError
-from sealsim.properties.elastomers import get_elastomer
+from sealsim.properties.elastomers import CompoundConsistencyWarning, get_elastomer
 from sealsim.properties.hyperelastic import MODES, nominal_stress
 from sealsim.properties.viscoelasticity import prony_loss_modulus, prony_storage_modulus
 from sealsim.structure.hyperelastic import drucker_stable, felupe_nominal_stress
@@ -323,6 +324,29 @@ def test_pyvisco_dma_fit_report(pyvisco_fit):
     # 77.5 degC isotherms (0.335 and 0.342)
     assert 70.0 < r["viscoelastic"]["tan_delta_peak_temperature_K"] - 273.15 < 80.0
     assert "wlf_c1" in r["parameters"] and "prony_E_inf" in r["parameters"]
+
+
+def _written_compound(fit, tmp_path):
+    path = tmp_path / "compound.toml"
+    path.write_text(fit.compound_text)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", CompoundConsistencyWarning)   # loads without the note
+        return get_elastomer(str(path))
+
+
+def test_written_compounds_constants_and_curve_agree(treloar, pyvisco_fit, tmp_path):
+    # A held seal's stiffness is the constants times E_h(T)/E(T_ref, f_test) of the curve.
+    # DMA only: the constants are the fitted curve at (T_ref, f_test), 408 MPa for pyvisco's
+    # polymer at 100 degC (they were E_inf = 212 MPa, counting the relaxation twice).
+    # Tensile curves on a catalogue base: the base's curve moved with T_g gets the rubbery
+    # plateau that passes through the constants' modulus (the plateau ratio alone left the
+    # Treloar compound's curve 33 % off).  Both to the root finder's precision.
+    dma_only = _written_compound(pyvisco_fit, tmp_path)
+    assert abs(dma_only.constants_modulus_mismatch()) < 1e-6
+    assert 6 * (dma_only.c10 + dma_only.c01) == pytest.approx(408e6, rel=0.01)
+    tensile = _written_compound(treloar, tmp_path)
+    assert abs(tensile.constants_modulus_mismatch()) < 1e-6
+    assert tensile.glassy_modulus == pytest.approx(2e9)       # the base's glass, unchanged
 
 
 def test_hardness_alone_is_the_gent_fallback_and_says_so(tmp_path):

@@ -48,13 +48,14 @@ constants by Gent's relation (:func:`sealsim.properties.rubber_modulus.shore_a_y
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Annotated, Any, Literal
 
 import numpy as np
 from pydantic import Field, model_validator
-from scipy.optimize import least_squares
+from scipy.optimize import brentq, least_squares
 
 from sealsim.calibration.case import ColumnModel
 from sealsim.calibration.hyperelastic_fit import Curve, HyperelasticFit, fit_hyperelastic
@@ -499,11 +500,7 @@ def _compound(case, hyper, shift, prony, tg_dma, expansion, notes, origin):
                                                f"{hyper.label} (mu0/2, 0) [D]")
         e_small = 3.0 * hyper.initial_shear_modulus
     elif prony is not None:
-        e_small = prony.equilibrium_modulus
-        c10 = e_small / 6.0 / (1.0 + MR_RATIO)
-        take("c10", _q(c10, "MPa"), f"E_inf of the DMA Prony series / 6, C01/C10 = "
-             f"{MR_RATIO} [D]")
-        take("c01", _q(c10 * MR_RATIO, "MPa"), sources["c10"])
+        e_small = None      # from the fitted curve at (T_ref, f_test), below
     elif c.hardness_shore_a is not None:
         e_small = float(shore_a_young_modulus(c.hardness_shore_a))
         c10 = e_small / 6.0 / (1.0 + MR_RATIO)
@@ -538,7 +535,6 @@ def _compound(case, hyper, shift, prony, tg_dma, expansion, notes, origin):
         table["modulus"] = _master_table(prony, shift)
         sources["modulus"] = f"master-curve sigmoid fitted to the Prony series [D], {fitted_by}"
     elif base is not None:
-        ratio = e_small / (6.0 * (base.c10 + base.c01))
         table["wlf"] = {"c1": base.wlf_c1, "c2": _q(base.wlf_c2, "K"),
                         "reference_temperature": _q(base.wlf_reference_temperature
                                                     - base.glass_transition
@@ -547,19 +543,55 @@ def _compound(case, hyper, shift, prony, tg_dma, expansion, notes, origin):
         sources["wlf"] = (f"catalogue {base.name}'s constants, referred to this compound's "
                           "T_g [L]")
         table["modulus"] = {"glassy": _q(base.glassy_modulus, "MPa"),
-                            "rubbery": _q(base.rubbery_modulus * ratio, "MPa"),
+                            "rubbery": _q(base.rubbery_modulus, "MPa"),
                             "test_frequency": _q(base.test_frequency, "Hz"),
                             "transition_log10_frequency": base.transition_location,
                             "transition_width_decades": base.transition_width,
                             "transition_asymmetry": base.transition_asymmetry}
-        sources["modulus"] = (f"catalogue {base.name}'s master curve, rubbery modulus scaled "
-                              f"by the fitted small-strain modulus ({ratio:.3f}) [D]")
+        # the rubbery plateau that puts the curve through the constants' modulus at (T_ref,
+        # f_test) (the glassy modulus stays: 1-3 GPa for any rubber); the plateau ratio alone
+        # misses that point once T_g has moved or the transition's tail reaches T_ref
+        def miss(log_rubbery):
+            table["modulus"]["rubbery"] = _q(10.0 ** log_rubbery, "MPa")
+            return math.log(_curve_modulus_at_reference(table, c.name) / e_small)
+
+        guess = math.log10(base.rubbery_modulus * e_small / (6.0 * (base.c10 + base.c01)))
+        rubbery = 10.0 ** brentq(miss, max(guess - 2.0, 4.5),       # 32 kPa
+                                 min(guess + 2.0, math.log10(0.5 * base.glassy_modulus)),
+                                 xtol=1e-10)
+        table["modulus"]["rubbery"] = _q(rubbery, "MPa")
+        sources["modulus"] = (f"catalogue {base.name}'s master curve moved with T_g, its rubbery "
+                              f"modulus ({rubbery / 1e6:.4g} MPa) chosen so that the curve gives "
+                              "the constants' small-strain modulus at the reference temperature "
+                              "and test frequency [D]")
     else:
         raise InputError("the compound's modulus-temperature curve needs [viscoelastic] DMA "
                          "data or compound.base")
+    if e_small is None:
+        # the constants of a held seal's stiffness ratio are the test-frequency modulus at the
+        # reference temperature (Elastomer.modulus_ratio), not the equilibrium E_inf
+        c10 = _curve_modulus_at_reference(table, c.name) / 6.0 / (1.0 + MR_RATIO)
+        why = ("the fitted modulus curve at the reference temperature and test frequency / 6, "
+               f"C01/C10 = {MR_RATIO} [D]")
+        take("c10", _q(c10, "MPa"), why)
+        take("c01", _q(c10 * MR_RATIO, "MPa"), why)
     source = "; ".join(f"{k}: {v}" for k, v in sources.items())
     table["source"] = (c.source + "; " if c.source else "") + source
     return table, _toml(c.name, table, sources, case.title, origin), sources
+
+
+def _curve_modulus_at_reference(table: dict, name: str) -> float:
+    """E [Pa] of a compound table's modulus curve at its reference temperature and test
+    frequency (the constants a placeholder stands for are not used)."""
+    from sealsim.properties.elastomers import Elastomer
+
+    trial = {k: v for k, v in table.items() if k != "hyperelastic"}
+    trial.setdefault("c10", "1 MPa")
+    trial.setdefault("c01", "0.25 MPa")
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        material = Elastomer.from_dict(trial, name)
+        return float(material.modulus(material.reference_temperature))
 
 
 def _si_value(text: str) -> float:
