@@ -127,6 +127,7 @@ def friction_fit_study(case: FrictionFitCase, base_dir: str | Path,
         report["measurements"][r.name]["F_predicted_without_fit_N"] = level
         report["measurements"][r.name]["ratio_without_fit"] = (level / r.level if r.level
                                                                else None)
+    proportional_baseline(runs, report["measurements"])
     diagnostics = {
         "status": result.status, "failure": result.failure, "warnings": result.warnings,
         "stages": result.stages, "parameter_names": result.names,
@@ -137,6 +138,40 @@ def friction_fit_study(case: FrictionFitCase, base_dir: str | Path,
     fitted = {"friction": _drop_none(result.params.model_dump(
         mode="json", exclude={"parameter_set"}))}
     return FrictionFitStudy(case, runs, result, predictions, report, diagnostics, fitted)
+
+
+def proportional_baseline(runs: list[PreparedRun], measurements: dict) -> float | None:
+    """The simplest contact model as a reference for the fitted law: friction proportional
+    to the seal's normal force, F = μ̄·F_N (Amontons), with F_N from the same contact map and
+    μ̄ = ΣF_measured/ΣF_N over the fit runs.
+
+    Adds to each run's entry of ``measurements`` (report.json): ``F_normal_N`` (median
+    contact force of the run, from the map at the measured pressure), ``mu_measured``
+    (F_measured/F_N), ``F_proportional_N`` (μ̄·F_N) and ``proportional_rel_error``.  A
+    law derived from the contact earns its detail where it predicts the held-out runs better
+    than this line.  Runs without a normal force (no contact map) get nothing.
+
+    Returns
+    -------
+    float or None
+        μ̄ [-], or None without a contact map or without fit runs.
+    """
+    forces = {r.name: float(np.median(r.normal_force)) for r in runs
+              if r.normal_force is not None and np.size(r.normal_force)}
+    fit = [r for r in runs if r.name in forces and r.spec.role == "fit" and r.level]
+    if not fit:
+        return None
+    mu = sum(r.level for r in fit) / sum(forces[r.name] for r in fit)
+    for r in runs:
+        if r.name not in forces or not forces[r.name]:
+            continue
+        entry = measurements[r.name]
+        entry["F_normal_N"] = forces[r.name]
+        entry["mu_measured"] = r.level / forces[r.name] if r.level else None
+        entry["F_proportional_N"] = mu * forces[r.name]
+        entry["proportional_rel_error"] = ((mu * forces[r.name] - r.level) / r.level
+                                           if r.level else None)
+    return mu
 
 
 def _drop_none(data: dict) -> dict:

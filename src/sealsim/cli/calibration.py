@@ -47,6 +47,10 @@ def fit(
         if m.get("ratio_without_fit") is not None:
             console.print(f"  without fitting: {m['F_predicted_without_fit_N']:.3f} N, "
                           f"{m['ratio_without_fit']:.2f} x measured")
+        if m.get("proportional_rel_error") is not None:
+            console.print(f"  friction ∝ F_N (F_N {m['F_normal_N']:.1f} N, μ = F/F_N "
+                          f"{m['mu_measured']:.4f} measured): {m['F_proportional_N']:.3f} N, "
+                          f"error {100 * m['proportional_rel_error']:+.1f} %")
     for text in summary["warnings"]:
         console.print(f"[yellow]warning:[/yellow] {text}")
     console.print(f"results written to {out}")
