@@ -44,7 +44,8 @@ def plot_overlay(name: str, role: str, time, position, measured, predicted, titl
 
 def plot_parity(points, title: str = "", quantity: str = "friction level", unit: str = "N",
                 band: float = 0.2, absolute_band: float | None = None,
-                band_unit: str | None = None, annotate: bool = True):
+                band_unit: str | None = None, annotate: bool = True,
+                reference=None, reference_label: str = "reference"):
     """Predicted vs measured with the ±``band`` relative band and R².
 
     Parameters
@@ -58,13 +59,18 @@ def plot_parity(points, title: str = "", quantity: str = "friction level", unit:
         Unit shown for the absolute band (default ``unit``; "K" for a band in °C).
     annotate : bool
         Write each point's label next to it.
+    reference : list of (measured, predicted), optional
+        A simpler model's predictions of the same measurements, drawn as hollow diamonds
+        (``reference_label`` in the legend; R² stays that of ``points``).
     """
     fig, ax = new_figure(1, 1, width=5.5, height=5.0)
     meas = np.array([p[2] for p in points], dtype=float)
     pred = np.array([p[3] for p in points], dtype=float)
+    ref = np.array(reference if reference else np.zeros((0, 2)), dtype=float).reshape(-1, 2)
     if absolute_band is None:
         bottom = 0.0
-        top = 1.15 * max(float(np.max(meas)), float(np.max(pred)), 1e-12)
+        top = 1.15 * max(float(np.max(meas)), float(np.max(pred)),
+                         float(np.max(ref)) if ref.size else 0.0, 1e-12)
     else:
         low = min(float(np.min(meas)), float(np.min(pred)))
         high = max(float(np.max(meas)), float(np.max(pred)))
@@ -83,6 +89,9 @@ def plot_parity(points, title: str = "", quantity: str = "friction level", unit:
         if sel:
             ax.scatter(meas[sel], pred[sel], marker=marker, color=color, zorder=3,
                        label="fitted" if role == "fit" else "validation (not fitted)")
+    if ref.size:
+        ax.scatter(ref[:, 0], ref[:, 1], marker="D", facecolors="none", edgecolors="0.35",
+                   zorder=2, label=reference_label)
     for label, _, m, p in points if annotate else ():
         ax.annotate(str(label), (m, p), textcoords="offset points", xytext=(5, -10),
                     fontsize=8)

@@ -107,7 +107,12 @@ def run_friction_fit_file(path: str | Path, out: str | Path, force: bool = False
                                         study.predictions[r.name], title))
         points = [(name, m["role"], m["F_measured_N"], m["F_predicted_N"])
                   for name, m in study.report["measurements"].items()]
-        folder.savefig("parity.png", plot_parity(points, title))
+        proportional = [(m["F_measured_N"], m["F_proportional_N"])
+                        for m in study.report["measurements"].values()
+                        if m.get("F_proportional_N") is not None]
+        folder.savefig("parity.png", plot_parity(
+            points, title, reference=proportional,
+            reference_label="friction ∝ F_N (μ from the fitted runs)"))
         folder.write_text("case_resolved.toml", dump_case_toml(
             case, header=f"Resolved fit case of {path.name} (all defaults filled in); paths "
                          f"relative to {str(path.parent.resolve())}"))
