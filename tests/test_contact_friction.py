@@ -447,3 +447,31 @@ def test_analytic_estimate_has_no_transport_per_stroke():
     assert (frame["transport_mm3_per_m"] == 0.0).all()
     assert frame["film_um"].iloc[0] == frame["film_um"].iloc[2] > 0.0
     assert "exactly 0 for the analytic" in " ".join(sealsim.seal_friction.__doc__.split())
+
+
+def test_a_supply_layer_of_the_law_starves_its_friction_table():
+    # The Θ law's supply_layer reaches the table (and its cache key): a starved 2 mm O-ring
+    # on a 12 mm rod at 6 bar runs with a thinner film and more friction in the mixed regime
+    # than the flooded one, the same at the lowest speed (boundary, both) and the same
+    # wherever the flooded film is thinner than twice the layer.
+    from dataclasses import replace
+
+    from sealsim.cases import validate_case
+    from sealsim.friction import ThetaParameters, make_law
+
+    def law(**fields):
+        return make_law(validate_case(ThetaParameters, {"law": "theta",
+                                                        "parameter_set": "seal_contact",
+                                                        **fields}))
+
+    assert ContactTribology.from_law(law(supply_layer="0.1 um")).supply_layer == \
+        pytest.approx(1e-7)
+    assert ContactTribology.from_law(law()).supply_layer == np.inf
+    rod = AnalyticContactMap(0.012, 2e-3, 0.12, 8e6, 1.9e-4, 293.15)
+    flooded_table = build_friction_table(rod, TRIBOLOGY)
+    starved_table = build_friction_table(rod, replace(TRIBOLOGY, supply_layer=1e-7))
+    speeds = [1e-7, 0.01, 0.1]
+    flooded = flooded_table.steady_force(speeds, 6e5, 293.15, 0.012, 0.2)
+    thin = starved_table.steady_force(speeds, 6e5, 293.15, 0.012, 0.2)
+    assert thin[0] == pytest.approx(flooded[0], rel=1e-3)
+    assert np.all(thin[1:] > 1.05 * flooded[1:])

@@ -15,6 +15,7 @@ from sealsim.tribology.inverse_hydrodynamics import (
     film_shape_factor,
     ihl_film_profile,
     max_inlet_gradient,
+    starved_film,
     stroke_transport,
 )
 from sealsim.tribology.mixed_lubrication import (
@@ -147,6 +148,32 @@ def test_load_share_solves_its_two_conditions():
     # a stiffer rubber needs a thinner film to lift off its asperities
     stiff, _ = ihl_load_share(h0, pmax, SIGMA, 10 * MODULUS)
     assert np.all(stiff < share)
+
+
+def test_a_starved_inlet_passes_what_arrives_and_no_more():
+    # Mass conservation: a layer h_s on the counter surface brings u·h_s; the contact passes
+    # u·h*/2.  Where the flooded film would pass more, the starved contact passes exactly the
+    # supply (the flow of the main zone within 1e-12), its film is 2·h_s at most, and the
+    # asperities take the load the thinner film leaves them.  A supply thicker than the
+    # flooded film at every speed changes nothing (bitwise).
+    z, p = parabola(1e6, 0.5e-3, 2001)
+    u = np.logspace(-6, 0, 25)
+    flooded = reciprocating_friction(z, p, u, ETA, SIGMA, MODULUS, MU_B)
+    h_s = 0.1e-6
+    starved = reciprocating_friction(z, p, u, ETA, SIGMA, MODULUS, MU_B, supply_layer=h_s)
+    short = flooded.film > 2 * h_s
+    assert short.any() and (~short).any()            # both regimes on this speed range
+    np.testing.assert_allclose(starved.flow[short], u[short] * h_s, rtol=1e-12)
+    assert np.all(starved.film <= 2 * h_s * (1 + 1e-12))
+    np.testing.assert_array_equal(starved.friction[~short], flooded.friction[~short])
+    assert np.all(starved.share[short] > flooded.share[short])
+    # less supply, more asperity load and more friction at every speed
+    thinner = reciprocating_friction(z, p, u, ETA, SIGMA, MODULUS, MU_B, supply_layer=h_s / 4)
+    assert np.all(thinner.friction >= starved.friction * (1 - 1e-12))
+    assert np.all(thinner.share >= starved.share - 1e-12)
+    wide = reciprocating_friction(z, p, u, ETA, SIGMA, MODULUS, MU_B, supply_layer=1.0)
+    np.testing.assert_array_equal(wide.friction, flooded.friction)
+    assert starved_film(flooded.full_film, h_s) == pytest.approx(starved.full_film)
 
 
 def test_asperity_pressure_is_greenwood_williamson():

@@ -308,10 +308,6 @@ def steady_table(law: FrictionLaw, contact_map, sliding_diameter: float | None =
 
 
 # -- the model ---------------------------------------------------------------------------------
-#: fields of the Θ law that only build the friction table (steady = "contact"): they are in
-#: the table, not FMU parameters
-_TABLE_FIELDS = ("roughness", "film_factor", "lubricant_density", "thickener_factor",
-                 "asperity_wavelength")
 
 
 def c_parameters(law: FrictionLaw) -> tuple[str, dict[str, float], bool]:
@@ -324,12 +320,12 @@ def c_parameters(law: FrictionLaw) -> tuple[str, dict[str, float], bool]:
     values = {k: getattr(law.params, k) for k in type(law.params).model_fields}
     if name == "theta":
         from sealsim.friction.theta import CONTACT_ONLY_FIELDS, LUMPED_ONLY_FIELDS
+        from sealsim.pneumatic.friction_tables import LAW_TABLE_FIELDS
 
         contact = values.pop("steady") == "contact"
         unused = LUMPED_ONLY_FIELDS if contact else CONTACT_ONLY_FIELDS
-        if contact:            # the base oil is in the table; γ(T) is not used
-            unused += _TABLE_FIELDS + ("base_oil_nu40", "base_oil_nu100",
-                                       "reference_temperature")
+        if contact:   # what builds the table (base oil included) is in it; γ(T) is not used
+            unused += LAW_TABLE_FIELDS + ("reference_temperature",)
         for field in unused:
             values.pop(field, None)
     known = _LAW_PARAMETERS[name]

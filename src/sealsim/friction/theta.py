@@ -439,7 +439,8 @@ def theta_viscous_coefficient(temperature, gamma, reference_temperature, walther
 # --------------------------------------------------------------------------------------------
 #: fields only the steady curve from the seal's contact uses (``steady = "contact"``)
 CONTACT_ONLY_FIELDS = ("boundary_friction", "dwell_drop", "roughness", "film_factor",
-                       "lubricant_density", "thickener_factor", "asperity_wavelength")
+                       "lubricant_density", "thickener_factor", "asperity_wavelength",
+                       "supply_layer")
 #: fields only the lumped steady curve uses (``steady = "lumped"``)
 LUMPED_ONLY_FIELDS = ("f_a", "f_b", "gamma")
 
@@ -484,6 +485,9 @@ class ThetaParameters(LawParameters):
         "contact: grease film viscosity / base-oil viscosity"))
     asperity_wavelength: Q("length", gt=0) = Field(50e-6, description=(
         "contact: roughness wavelength of the counter surface (rubber frequency u/lambda)"))
+    supply_layer: Q("length", gt=0) | None = Field(None, description=(
+        "contact: lubricant layer on the counter surface ahead of the seal, the inlet's only "
+        "supply (starved: film at most twice this); not given: fully flooded"))
 
     def unused_fields(self) -> tuple[str, ...]:
         """Fields the chosen steady curve does not use: the contact's (μ_b, dwell drop and the

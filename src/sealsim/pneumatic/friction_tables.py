@@ -65,7 +65,8 @@ _HERTZ_POINTS = 257
 #: Fields of the Θ law (``steady = "contact"``) a friction table is built with: another value of
 #: one of them is another table (μ_b, the dwell drop and the Θ dynamics apply when it is read)
 LAW_TABLE_FIELDS = ("roughness", "film_factor", "base_oil_nu40", "base_oil_nu100",
-                    "lubricant_density", "thickener_factor", "asperity_wavelength")
+                    "lubricant_density", "thickener_factor", "asperity_wavelength",
+                    "supply_layer")
 
 
 @dataclass(frozen=True)
@@ -91,6 +92,9 @@ class ContactTribology:
         Catalogue elastomer of the seal (its modulus at the asperity frequency).
     roughness_density, roughness_slope : float
         Greenwood–Williamson η_s·β·σ and σ/β [-].
+    supply_layer : float
+        Lubricant layer on the counter surface ahead of the seal h_s [m] (a starved inlet:
+        the film is at most 2·h_s); ``inf``: fully flooded.
     """
 
     roughness: float = 0.3e-6
@@ -103,12 +107,16 @@ class ContactTribology:
     elastomer: str = "NBR"
     roughness_density: float = DEFAULT_ROUGHNESS_DENSITY
     roughness_slope: float = DEFAULT_ROUGHNESS_SLOPE
+    supply_layer: float = math.inf
 
     @classmethod
     def from_law(cls, law, elastomer: str = "NBR") -> ContactTribology:
         """The tribology fields (:data:`LAW_TABLE_FIELDS`) of a Θ law in ``steady =
-        "contact"`` mode."""
-        return cls(**{f: getattr(law.params, f) for f in LAW_TABLE_FIELDS}, elastomer=elastomer)
+        "contact"`` mode (a law without a supply layer: flooded)."""
+        values = {f: getattr(law.params, f) for f in LAW_TABLE_FIELDS}
+        if values["supply_layer"] is None:
+            values["supply_layer"] = math.inf
+        return cls(**values, elastomer=elastomer)
 
 
 def lubricant_viscosity(temperature, tribology: ContactTribology):
@@ -259,7 +267,7 @@ def build_friction_table(contact_map, tribology: ContactTribology,
     rubber = get_elastomer(tribology.elastomer)
     values = np.zeros((temps.size, pressures.size, speeds.size, len(TABLE_VARIABLES)))
     symmetric = isinstance(contact_map, AnalyticContactMap)
-    kwargs = {"film_factor": tribology.film_factor,
+    kwargs = {"film_factor": tribology.film_factor, "supply_layer": tribology.supply_layer,
               "roughness_density": tribology.roughness_density,
               "roughness_slope": tribology.roughness_slope}
     import warnings
@@ -369,6 +377,7 @@ def film_profiles(contact_map, tribology: ContactTribology, temperature: float,
         z, p = profile(i, j)
         films = [reciprocating_friction(z, p, [speed], eta, tribology.roughness, modulus, 1.0,
                                         direction, film_factor=tribology.film_factor,
+                                        supply_layer=tribology.supply_layer,
                                         sealed_pressure=dp).film_profile[0]
                  for direction in (1, -1)]
         out.append((float(dp), z, p, films[0], films[1]))

@@ -49,6 +49,7 @@ from sealsim.tribology.inverse_hydrodynamics import (
     flow_per_circumference,
     ihl_film_profile,
     max_inlet_gradient,
+    starved_film,
     stroke_transport,
 )
 from sealsim.tribology.mixed_lubrication import (
@@ -80,6 +81,7 @@ __all__ = [
     "asperity_pressure",
     "film_at_pressure_maximum",
     "film_left_on_surface",
+    "starved_film",
     "flow_per_circumference",
     "ihl_film_profile",
     "ihl_load_share",

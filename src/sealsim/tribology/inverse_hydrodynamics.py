@@ -91,6 +91,7 @@ __all__ = [
     "MIN_GRADIENT_INTERVALS",
     "film_at_pressure_maximum",
     "film_left_on_surface",
+    "starved_film",
     "film_shape_along",
     "film_shape_factor",
     "flow_per_circumference",
@@ -235,6 +236,39 @@ def flow_per_circumference(speed, film):
     1e-07
     """
     return 0.5 * np.abs(np.asarray(speed, dtype=float)) * np.asarray(film, dtype=float)
+
+
+def starved_film(full_film, supply_layer):
+    """Film at the pressure maximum of an inlet fed by a limited layer of lubricant.
+
+    A layer h_s that the counter surface carries towards the seal brings the flow |u|·h_s per
+    unit circumference; the contact passes |u|·h*/2 at its pressure maximum (Eq. 1).  When the
+    fully flooded film h*₀ would pass more than arrives, the inlet is starved and mass
+    conservation sets the film: ``h* = min(h*₀, 2·h_s)`` (the same balance that makes the
+    layer left behind a seal h*/2, :func:`film_left_on_surface`; Müller & Nau, *Fluid Sealing
+    Technology*, 1998, ch. 10, for the rod seal's outstroke and instroke films).  A greased
+    seal with no other supply runs on what the strokes leave on the surface.
+
+    Parameters
+    ----------
+    full_film : array_like
+        Fully flooded film h*₀ [m] (:func:`film_at_pressure_maximum`).
+    supply_layer : array_like
+        Lubricant layer on the counter surface ahead of the seal h_s [m], > 0; ``inf`` for a
+        flooded inlet.
+
+    Returns
+    -------
+    numpy.ndarray
+        h* [m].
+
+    Examples
+    --------
+    >>> starved_film([0.9e-6, 0.1e-6], 0.2e-6) * 1e6
+    array([0.4, 0.1])
+    """
+    return np.minimum(np.asarray(full_film, dtype=float),
+                      2.0 * np.asarray(supply_layer, dtype=float))
 
 
 def film_left_on_surface(film):

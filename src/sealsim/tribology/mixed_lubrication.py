@@ -4,7 +4,8 @@ The static contact pressure p(z) of the seal (FE, or Hertz for an O-ring) sets e
 
 1. **Full film** -- inverse hydrodynamics (:mod:`.inverse_hydrodynamics`): the film at the
    pressure maximum h*₀ = √(8·η·u/(9·w_max)), w_max the steepest rise of the inlet flank of the
-   stroke direction (Blok 1963; Müller & Nau 1998; Kanters 1990).
+   stroke direction (Blok 1963; Müller & Nau 1998; Kanters 1990); at most 2·h_s when a layer
+   h_s on the counter surface is all the inlet gets (starved).
 2. **Load sharing** -- when h*₀ is not large against the combined roughness σ, the counter
    surface's asperities carry a share α of the contact pressure and the fluid the rest
    (Johnson, Greenwood & Poon, Wear 19 (1972) 91: each carries its share, the film follows the
@@ -48,7 +49,9 @@ The static contact pressure p(z) of the seal (FE, or Hertz for an O-ring) sets e
 The result is a Stribeck curve per stroke direction with boundary (f → μ_b·F'_N as u → 0),
 mixed and hydrodynamic (f → ∫η·u/h dz + ...) branches, scaling with the circumference, and with
 the lubricant's viscosity at the contact temperature.  Several contact zones (an X-ring's two
-lobes) are treated as separate contacts, each fully flooded.
+lobes) are treated as separate contacts, each fully flooded -- or, with a lubricant layer h_s on
+the counter surface as the only supply, each starved to h*₀ ≤ 2·h_s (mass conservation,
+:func:`~sealsim.tribology.inverse_hydrodynamics.starved_film`).
 
 References
 ----------
@@ -81,6 +84,7 @@ from sealsim.tribology.inverse_hydrodynamics import (
     film_at_pressure_maximum,
     film_shape_along,
     max_inlet_gradient,
+    starved_film,
 )
 
 __all__ = ["ContactFriction", "contact_zone_slices", "ihl_load_share", "reciprocating_friction"]
@@ -90,7 +94,7 @@ _BISECTIONS = 60
 
 def ihl_load_share(full_film, peak_pressure, roughness, asperity_modulus, poisson=0.5,
                    roughness_density=DEFAULT_ROUGHNESS_DENSITY,
-                   roughness_slope=DEFAULT_ROUGHNESS_SLOPE):
+                   roughness_slope=DEFAULT_ROUGHNESS_SLOPE, film_limit=np.inf):
     """Asperity share α of the contact load and the film h* at the pressure maximum, Eq. (1).
 
     Solves h(λ) = h*₀/√(1 − α), p_asp(λ) = α·p_max for the separation λ by bisection (both
@@ -110,13 +114,17 @@ def ihl_load_share(full_film, peak_pressure, roughness, asperity_modulus, poisso
         Young's modulus of the rubber at the asperity frequency [Pa].
     poisson, roughness_density, roughness_slope : float
         See :func:`~sealsim.tribology.contact.asperity_pressure`.
+    film_limit : array_like
+        Largest film the inlet's supply allows [m] (2·h_s of a starved inlet,
+        :func:`~.inverse_hydrodynamics.starved_film`; ``full_film`` must not exceed it): the
+        lift stops there and the asperities carry what the film at that separation cannot.
 
     Returns
     -------
     share : numpy.ndarray
         α in [0, 1] [-].
     film : numpy.ndarray
-        h* [m], >= h*₀.
+        h* [m], h*₀ <= h* <= ``film_limit``.
 
     Examples
     --------
@@ -147,7 +155,7 @@ def ihl_load_share(full_film, peak_pressure, roughness, asperity_modulus, poisso
         above = excess(mid) > 0.0
         lo = np.where(above, mid, lo)
         hi = np.where(above, hi, mid)
-    lam = 0.5 * (lo + hi)
+    lam = np.minimum(0.5 * (lo + hi), dry + np.asarray(film_limit, dtype=float) / sigma)
     share = np.clip(asperity_pressure(lam * sigma, sigma, modulus, *args) / pmax, 0.0, 1.0)
     return share, np.maximum((lam - dry) * sigma, h0)
 
@@ -208,7 +216,8 @@ class ContactFriction(NamedTuple):
 
 def reciprocating_friction(position, pressure, speed, viscosity, roughness, asperity_modulus,
                            boundary_friction, direction=1, *, film_factor=1.0,
-                           sealed_pressure=0.0, resolution=None, poisson=0.5,
+                           supply_layer=np.inf, sealed_pressure=0.0, resolution=None,
+                           poisson=0.5,
                            roughness_density=DEFAULT_ROUGHNESS_DENSITY,
                            roughness_slope=DEFAULT_ROUGHNESS_SLOPE) -> ContactFriction:
     """Steady friction of a lubricated seal contact per unit circumference, Eq. (2).
@@ -233,6 +242,10 @@ def reciprocating_friction(position, pressure, speed, viscosity, roughness, aspe
         Sliding direction of the counter surface relative to the seal (+1 towards +z).
     film_factor : float
         Multiplier of the full film h*₀ [-] (1: the IHL film; a calibration may fit it).
+    supply_layer : float
+        Lubricant layer on the counter surface ahead of each contact zone h_s [m]; the full
+        film is at most 2·h_s (a starved inlet,
+        :func:`~.inverse_hydrodynamics.starved_film`); ``inf``: fully flooded.
     sealed_pressure : float
         Fluid pressure on the −z side of the profile Δp [Pa] (the pressurised side of an FE
         map's profile).  The film's pressure there starts at Δp, not at 0: Reynolds' equation
@@ -286,9 +299,11 @@ def reciprocating_friction(position, pressure, speed, viscosity, roughness, aspe
             pz = np.concatenate([np.maximum(pz[:peak], min(sealed_pressure, pmax)),
                                  pz[peak:]])
         w_max = max_inlet_gradient(zz, pz, direction, resolution)
-        h0 = film_factor * film_at_pressure_maximum(eta, u, w_max) if w_max > 0 else \
+        flooded = film_factor * film_at_pressure_maximum(eta, u, w_max) if w_max > 0 else \
             np.full(n, np.inf)
-        alpha, film = ihl_load_share(h0, pmax, roughness, modulus, *args)
+        h0 = starved_film(flooded, supply_layer)
+        alpha, film = ihl_load_share(h0, pmax, roughness, modulus, *args,
+                                     film_limit=2.0 * supply_layer)
         shape, grad = film_shape_along(zz, pz, direction, w_max)
         h = film[:, None] * shape[None, :]
         with np.errstate(divide="ignore", invalid="ignore"):
