@@ -99,4 +99,6 @@ __all__ = [
     "hysteresis_peak_speed",
     "loss_peak_frequency",
     "soft_ehl_load_modulus_factor",
+    "duty_parameter",
+    "viscous_friction_force",
 ]
