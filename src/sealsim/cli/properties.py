@@ -367,7 +367,10 @@ def material_show(
          f"k = {m.thermal_conductivity:g} W/(m K), c_p = {m.specific_heat:.0f} J/(kg K), "
          f"α = {m.thermal_expansion:.3g} 1/K")
     _say(f"  Mooney-Rivlin at {info['reference_temperature_C']:g} °C: C10 = {m.c10 / 1e6:.4g} "
-         f"MPa, C01 = {m.c01 / 1e6:.4g} MPa, K = {m.bulk_modulus / 1e6:.0f} MPa")
+         f"MPa, C01 = {m.c01 / 1e6:.4g} MPa, K = {m.bulk_modulus / 1e6:.0f} MPa; "
+         f"6(C10 + C01) = {6e-6 * (m.c10 + m.c01):.3g} MPa, "
+         f"{100 * m.constants_modulus_mismatch():+.1f} % from the curve at "
+         f"{m.test_frequency:g} Hz")
     _say(f"  WLF: C1 = {m.wlf_c1:g}, C2 = {m.wlf_c2:g} K, T_ref = "
          f"{info['wlf_reference_temperature_C']:g} °C; E(T) from the {info['modulus_model']}")
     _say(f"  source: {m.source}")
