@@ -487,7 +487,9 @@ class ThetaParameters(LawParameters):
         "contact: roughness wavelength of the counter surface (rubber frequency u/lambda)"))
     supply_layer: Q("length", gt=0) | None = Field(None, description=(
         "contact: lubricant layer on the counter surface ahead of the seal, the inlet's only "
-        "supply (starved: film at most twice this); not given: fully flooded"))
+        "supply (starved: film at most twice this); not given: fully flooded. With a thick "
+        "(cold) oil the viscous shear of the capped film can exceed the contact pressure: the "
+        "model has no limiting shear stress"))
 
     def unused_fields(self) -> tuple[str, ...]:
         """Fields the chosen steady curve does not use: the contact's (μ_b, dwell drop and the
