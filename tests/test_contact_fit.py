@@ -102,3 +102,44 @@ def test_fitting_a_field_the_steady_curve_does_not_use_is_refused():
     text = str(err.value)
     assert "'roughness' is not used by the theta law with steady = 'lumped'" in text
     assert "f_a" in text and "boundary_friction" not in text.split("fit one of")[1]
+
+
+def test_two_seals_at_one_speed_identify_what_one_cannot(tmp_path):
+    # Synthetic truth: seal_contact with μ_b = 0.08 and a starved inlet fed by a 0.15 µm layer,
+    # two O-rings of different section and squeeze (analytic maps: different contact widths
+    # and inlet gradients), each run at one speed (10 mm/s both ways) and one pressure.  One
+    # seal's run gives one friction level: μ_b and the layer trade off (the fit says so);
+    # both seals in one fit (the second as [contacts.small], contact = "small") recover both
+    # within 2 % (noise-free data; the rest is the optimiser's and the phases' median).
+    truth = {"law": "theta", "parameter_set": "seal_contact", "boundary_friction": 0.08,
+             "supply_layer": "0.15 um"}
+    small = {"cord_diameter": "2 mm", "squeeze": 0.2}
+    contact_run(tmp_path / "big.csv", [0.01], truth)
+    t, v = stroke_velocity([0.01], 2.0, 0.2)
+    ureg = sealsim.units.unit_registry()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", SealsimWarning)
+        frame = sealsim.seal_friction(small, v * ureg("m/s"), f"{P_BAR} bar", "20 degC",
+                                      law=truth, diameter="25 mm")
+    np.savetxt(tmp_path / "small.csv", np.column_stack([
+        t * 1e3, v * 1e3, np.full(t.size, P_BAR), frame["friction_N"].to_numpy()]),
+        delimiter=",", header="t,v,p,F", comments="")
+    start = {"law": "theta", "parameter_set": "seal_contact", "supply_layer": "0.4 um"}
+    parameters = [{"name": "boundary_friction", "bounds": [0.001, 2.0]},
+                  {"name": "supply_layer", "bounds": ["0.02 um", "3 um"]}]
+    one = validate_case(FrictionFitCase, fit_case("big.csv", parameters, start), "one seal")
+    alone = friction_fit_study(one, tmp_path)
+    assert not alone.result.identifiable.any()
+    data = fit_case("big.csv", parameters, start)
+    data["contacts"] = {"small": {**CONTACT, "map": {"analytic": small}}}
+    data["measurements"].append({**data["measurements"][0], "name": "small",
+                                 "file": "small.csv", "contact": "small"})
+    both = friction_fit_study(validate_case(FrictionFitCase, data, "two seals"), tmp_path)
+    assert both.result.status == "ok", both.result.failure
+    assert both.result.identifiable.all()
+    assert both.result.values == pytest.approx([0.08, 0.15e-6], rel=0.02)
+    # a measurement naming a contact the case does not have is refused, with the names
+    data["measurements"][1]["contact"] = "smal"
+    with pytest.raises((InputError, ValidationError), match=r"'smal' names no "
+                       r"\[contacts.NAME\] table \(given: \['small'\]\)"):
+        validate_case(FrictionFitCase, data, "two seals")

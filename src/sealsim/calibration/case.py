@@ -30,6 +30,11 @@ measurements (see ``examples/calibration/tudelft_oring.toml``)::
     bore = "25 mm"
     role = "fit"                      # or "validate": predicted, never fitted
 
+Several seals with one law (the same rubber, lubricant and counter surface, e.g. two rings on
+one rig): each further seal is a ``[contacts.NAME]`` table like ``[contact]``, and its
+measurements say ``contact = "NAME"``; the law's parameters are fitted to all runs with role
+``fit`` together, each run with its own seal's contact map.
+
 Every condition the model needs comes from the file or the case, never from a default: the
 pressure (a ``pressure`` column, or ``pressure = "2 bar"`` of the measurement) when a contact
 map or a pressure-scaled law uses it, the seal temperature (``temperature`` of the measurement
@@ -60,7 +65,7 @@ from sealsim.measurements.readers import QUANTITIES, ColumnSpec
 from sealsim.pneumatic.case import MapModel
 
 __all__ = ["ContactModel", "FitParameter", "FrictionFitCase", "MeasurementModel",
-           "check_measurements", "parse_field_value", "parse_law_value"]
+           "check_measurements", "contact_of", "parse_field_value", "parse_law_value"]
 
 
 class FitParameter(CaseModel):
@@ -146,6 +151,10 @@ class MeasurementModel(CaseModel):
     skip_rows: int | None = Field(None, ge=0)
     pressure: Q("pressure") | None = None
     temperature: Q("temperature", gt=0) | None = None
+    contact: str | None = Field(None, description=(
+        "the seal of this run when one fit spans several seals with the same law parameters "
+        "(the same rubber, lubricant and counter surface): the name of a [contacts.NAME] "
+        "table; default [contact]"))
 
     @model_validator(mode="after")
     def _check(self):
@@ -180,6 +189,9 @@ class FrictionFitCase(CaseModel):
     title: str = ""
     friction: LawParameters
     contact: ContactModel | None = None
+    contacts: dict[str, ContactModel] = Field(default_factory=dict, description=(
+        "further seals by name, each the contact of the measurements that name it "
+        "(contact = NAME); one law, fitted to all of them"))
     signals: SignalSettings = SignalSettings()
     fit: FitSettings
     measurements: list[MeasurementModel] = Field(min_length=1)
@@ -187,6 +199,10 @@ class FrictionFitCase(CaseModel):
     @model_validator(mode="after")
     def _check(self):
         check_measurements(self.measurements)
+        for m in self.measurements:
+            if m.contact is not None and m.contact not in self.contacts:
+                raise ValueError(f"measurement {m.name!r}: contact = {m.contact!r} names no "
+                                 f"[contacts.NAME] table (given: {sorted(self.contacts)})")
         fields = type(self.friction).model_fields
         unused = getattr(self.friction, "unused_fields", tuple)()
         pnames = [p.name for p in self.fit.parameters]
@@ -214,6 +230,11 @@ class FrictionFitCase(CaseModel):
             if target in pnames:
                 raise ValueError(f"fit.tied.{target}: it is fitted itself; remove one of the two")
         return self
+
+
+def contact_of(case: FrictionFitCase, spec: MeasurementModel) -> ContactModel | None:
+    """The contact of a measurement: its ``[contacts.NAME]``, else the case's ``[contact]``."""
+    return case.contacts[spec.contact] if spec.contact is not None else case.contact
 
 
 def check_measurements(measurements) -> None:

@@ -33,7 +33,12 @@ from typing import Any
 import numpy as np
 from scipy.optimize import least_squares
 
-from sealsim.calibration.case import FrictionFitCase, MeasurementModel, parse_law_value
+from sealsim.calibration.case import (
+    FrictionFitCase,
+    MeasurementModel,
+    contact_of,
+    parse_law_value,
+)
 from sealsim.calibration.statistics import compare_signals, parameter_statistics
 from sealsim.errors import InputError
 from sealsim.friction import make_law
@@ -153,11 +158,13 @@ def prepare_run(case: FrictionFitCase, spec: MeasurementModel, contact_map=None,
                          "this measurement")
     else:
         p = None
+    contact = contact_of(case, spec)
     temperature = spec.temperature if spec.temperature is not None else (
-        case.contact.temperature if case.contact is not None else None)
+        contact.temperature if contact is not None else None)
     if temperature is None and "temperature" in needs:
+        table = f"[contacts.{spec.contact}]" if spec.contact is not None else "[contact]"
         raise InputError(f"{where}: no seal temperature: {needs['temperature']} needs it; give "
-                         "temperature = '20 degC' in this measurement or in [contact]")
+                         f"temperature = '20 degC' in this measurement or in {table}")
     known = p is not None
     p = p if known else np.zeros(t.shape)   # the law does not use it (see _needed_conditions)
     dp = np.abs(p)          # piston seal: pressurised side | ambient; rod seal: chamber | ambient
@@ -182,12 +189,14 @@ def prepare_run(case: FrictionFitCase, spec: MeasurementModel, contact_map=None,
         from sealsim.pneumatic.case import map_elastomer, seal_friction_table
 
         law = make_law(case.friction)
-        run.contact_table = seal_friction_table(law, contact_map, "contact.map")
+        where_map = (f"contacts.{spec.contact}.map" if spec.contact is not None
+                     else "contact.map")
+        run.contact_table = seal_friction_table(law, contact_map, where_map)
         if run.contact_table is not None:
             run.contact_map = contact_map
             run.tribology = ContactTribology.from_law(law, map_elastomer(contact_map))
-            run.sliding_diameter = case.contact.sliding_diameter
-            run.orientation = (1.0 if case.contact.positive_velocity == "away_from_pressure"
+            run.sliding_diameter = contact.sliding_diameter
+            run.orientation = (1.0 if contact.positive_velocity == "away_from_pressure"
                                else -1.0)
     stride = max(1, int(math.ceil(t.size / case.fit.max_samples)))
     run.samples = np.arange(0, t.size, stride)

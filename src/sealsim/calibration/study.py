@@ -49,19 +49,27 @@ def load_fit_case(path: str | Path) -> FrictionFitCase:
     return validate_case(FrictionFitCase, load_toml(path), f"fit case {str(path)!r}")
 
 
-def _contact_map(case: FrictionFitCase, base_dir: Path, cache_dir, progress):
+def _contact_map(case: FrictionFitCase, base_dir: Path, cache_dir, progress, name=None):
+    """The contact map of the case's ``[contact]`` (or of ``[contacts.NAME]``), or None."""
+    where, contact = (("contact", case.contact) if name is None
+                      else (f"contacts.{name}", case.contacts[name]))
+    return _seal_map(contact, where, case.friction.law, base_dir, cache_dir, progress)
+
+
+def _seal_map(contact, where: str, law: str, base_dir: Path, cache_dir, progress):
+    """The contact map of one ``[contact]`` (or ``[contacts.NAME]``) table, or None."""
     from sealsim.pneumatic.case import build_contact_map
 
-    if case.contact is None or case.contact.map is None:
-        if case.friction.law in _LOADS:
-            raise InputError(f"contact.map: the {case.friction.law} law needs F_N and b; give "
-                             "[contact] with map = {structure_case = 'seal.toml'}, "
-                             "{file = 'map.nc'} or {analytic = {...}}")
+    if contact is None or contact.map is None:
+        if law in _LOADS:
+            raise InputError(f"{where}.map: the {law} law needs F_N and b; give [{where}] "
+                             "with map = {structure_case = 'seal.toml'}, {file = 'map.nc'} or "
+                             "{analytic = {...}}")
         return None
-    spec = case.contact.map
+    spec = contact.map
     if cache_dir is not None and spec.structure_case is not None and spec.cache_dir is None:
         spec = spec.model_copy(update={"cache_dir": str(cache_dir)})
-    return build_contact_map(spec, case.contact.sliding_diameter, base_dir, "contact.map",
+    return build_contact_map(spec, contact.sliding_diameter, base_dir, f"{where}.map",
                              progress)
 
 
@@ -111,9 +119,11 @@ def friction_fit_study(case: FrictionFitCase, base_dir: str | Path,
         stopped (the other parts are still complete, with the reasons).
     """
     base = Path(base_dir)
-    cmap = _contact_map(case, base, cache_dir,
-                        None if progress is None else lambda d, n: progress("FE map", d, n))
-    runs = [prepare_run(case, spec, cmap, base) for spec in case.measurements]
+    report_map = None if progress is None else lambda d, n: progress("FE map", d, n)
+    maps = {None: None}
+    for name in dict.fromkeys(m.contact for m in case.measurements):
+        maps[name] = _contact_map(case, base, cache_dir, report_map, name)
+    runs = [prepare_run(case, spec, maps[spec.contact], base) for spec in case.measurements]
     result = fit_friction(case, runs, progress)
     law = make_law(result.params)
     # fitted roughness, film factor, ...: the friction table of the fitted values
@@ -132,7 +142,9 @@ def friction_fit_study(case: FrictionFitCase, base_dir: str | Path,
         "status": result.status, "failure": result.failure, "warnings": result.warnings,
         "stages": result.stages, "parameter_names": result.names,
         "correlation": result.correlation.tolist(), "tied": dict(case.fit.tied),
-        "contact_map": cmap.describe() if cmap is not None else None,
+        "contact_map": maps[None].describe() if maps[None] is not None else None,
+        **({"contact_maps": {name: m.describe() for name, m in maps.items()
+                             if name is not None and m is not None}} if case.contacts else {}),
         "offsets_N": {r.name: r.offset for r in runs},
         "sliding_phases": {r.name: len(r.phases) for r in runs}}
     fitted = {"friction": _drop_none(result.params.model_dump(

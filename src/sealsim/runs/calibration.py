@@ -235,9 +235,10 @@ def fit_case_inputs(case, path: Path) -> list[Path]:
     structure case (refused inside the result folder, where committing would delete them)."""
     base = path.parent
     files = [path] + [base / m.file for m in case.measurements]
-    spec = case.contact.map if case.contact is not None else None
-    if spec is not None:
-        files += [base / f for f in (spec.file, spec.structure_case) if f is not None]
+    for contact in (case.contact, *case.contacts.values()):
+        spec = contact.map if contact is not None else None
+        if spec is not None:
+            files += [base / f for f in (spec.file, spec.structure_case) if f is not None]
     return files
 
 
