@@ -58,7 +58,8 @@ def plot_parity(points, title: str = "", quantity: str = "friction level", unit:
     band_unit : str, optional
         Unit shown for the absolute band (default ``unit``; "K" for a band in °C).
     annotate : bool
-        Write each point's label next to it.
+        Write the points' labels next to them: every label up to six points, beyond that only
+        those outside the band (the others would cover each other).
     reference : list of (measured, predicted), optional
         A simpler model's predictions of the same measurements, drawn as hollow diamonds
         (``reference_label`` in the legend; R² stays that of ``points``).
@@ -93,6 +94,10 @@ def plot_parity(points, title: str = "", quantity: str = "friction level", unit:
         ax.scatter(ref[:, 0], ref[:, 1], marker="D", facecolors="none", edgecolors="0.35",
                    zorder=2, label=reference_label)
     for label, _, m, p in points if annotate else ():
+        if len(points) > 6:
+            half = band * abs(m) if absolute_band is None else absolute_band
+            if abs(p - m) <= half:
+                continue
         ax.annotate(str(label), (m, p), textcoords="offset points", xytext=(5, -10),
                     fontsize=8)
     r2 = compare_signals(meas, pred)["r2"]
