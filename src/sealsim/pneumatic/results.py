@@ -199,7 +199,7 @@ def _frame(system, diag) -> pd.DataFrame:
         cols["T_tube_metal_C"] = diag["T_tube"] - ZERO_CELSIUS_K
         cols["T_rod_metal_C"] = diag["T_rod"] - ZERO_CELSIUS_K
     # the float columns as one block that the frame keeps without a copy (a frame built from a
-    # dict copies every column into a new block: more than a third of the output time)
+    # dict of columns copies them all into a new block once more)
     floats = [name for name in cols if name != "mode"]
     block = np.empty((len(floats), diag["time"].size))
     for row, name in zip(block, floats):
