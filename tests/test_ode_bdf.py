@@ -25,7 +25,7 @@ def vdp(t, y, args, dy):
 
 
 @njit(cache=True)
-def vdp_jac(t, y, args, J):
+def vdp_jac(t, y, f, args, J):
     mu = args[0]
     J[0, 0] = 0.0
     J[0, 1] = 1.0

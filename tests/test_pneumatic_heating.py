@@ -116,3 +116,8 @@ def test_contact_map_and_grease_follow_the_seal_temperature():
     assert temp[0] == pytest.approx(328.15) and temp[-1] < temp[0] - 5.0
     fn, _ = seals[0].contact_map.evaluate(f["dp_test_seal_bar"].to_numpy() * 1e5, temp)
     np.testing.assert_allclose(f["F_N_test_seal_N"], fn, rtol=1e-3)
+    # the tabulated map is kept on the map object: a second run of the same seals uses it
+    # and gives the same time series to the last bit
+    assert vars(seals[0].contact_map)["_tabulated_tables"]
+    np.testing.assert_array_equal(simulate(case, seals).timeseries["F_N_test_seal_N"],
+                                  f["F_N_test_seal_N"])

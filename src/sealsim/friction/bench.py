@@ -276,11 +276,10 @@ def _mass_fun(t, y, args, dy):
 
 
 @njit(cache=True)
-def _mass_jac(t, y, args, jac):
-    """Forward differences, h_j = 1.5e-8·max(|y_j|, scale_j)."""
+def _mass_jac(t, y, f0, args, jac):
+    """Forward differences from f0 = f(t, y), h_j = 1.5e-8·max(|y_j|, scale_j)."""
     n = y.shape[0]
-    f0, f1, shifted = np.empty(n), np.empty(n), y.copy()
-    _mass_fun(t, y, args, f0)
+    f1, shifted = np.empty(n), y.copy()
     for j in range(n):
         h = 1.5e-8 * max(abs(y[j]), args[9][j])
         shifted[j] = y[j] + h

@@ -21,7 +21,8 @@ Two additions for the models here:
 names ``FUN``, ``JAC`` and ``EVENT``::
 
     FUN(t, y, args, dy)        # dy/dt into dy (shape (n,))
-    JAC(t, y, args, J)         # ∂f/∂y_j of all states by the dynamic ones j (n × ndyn)
+    JAC(t, y, f, args, J)      # ∂f/∂y_j of all states by the dynamic ones j (n × ndyn);
+                               # f = FUN(t, y), which the solver has evaluated already
     EVENT(t, y, args) -> g     # the event function (any float; unused problems return 1)
 
 ``args`` is any tuple the problem needs (its tables, its mode); the integrator passes it
@@ -91,7 +92,7 @@ def workspace(n: int, ndyn: int, rtol: float, atol, max_step: float = np.inf) ->
 @njit(cache=True)
 def _offsets(n, ndyn):
     """Offsets in ``w`` of atol, D, J (n × ndyn), LU (ndyn × ndyn), y_pred, psi, d, scale,
-    err, the scratch of :func:`change_differences` (3 × 6 × 6), and the size."""
+    err, f(y_pred), the scratch of :func:`change_differences` (3 × 6 × 6), and the size."""
     o_atol = S_NS
     o_d = o_atol + n
     o_j = o_d + (MAX_ORDER + 3) * n
@@ -101,8 +102,10 @@ def _offsets(n, ndyn):
     o_dd = o_psi + n
     o_scale = o_dd + n
     o_err = o_scale + n
-    o_r = o_err + n
-    return o_atol, o_d, o_j, o_lu, o_pred, o_psi, o_dd, o_scale, o_err, o_r, o_r + 108
+    o_fpred = o_err + n
+    o_r = o_fpred + n
+    return (o_atol, o_d, o_j, o_lu, o_pred, o_psi, o_dd, o_scale, o_err, o_fpred, o_r,
+            o_r + 108)
 
 
 # -- small dense linear algebra -------------------------------------------------------------
@@ -222,10 +225,10 @@ def change_differences(w, od, n, order, factor, o_r):
             w[od + i * n + c] = acc
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def dense(ws, t, out):
     """The solution at ``t`` (within the last step) from the BDF interpolant (scipy's
-    ``BdfDenseOutput``)."""
+    ``BdfDenseOutput``); inlined into compiled callers (it runs at every output sample)."""
     w, iv = ws[0], ws[1]
     n = out.shape[0]
     od = S_NS + n
@@ -245,7 +248,7 @@ def dense(ws, t, out):
 # -- the problem-dependent functions (copied per problem by compile_bdf) --------------------
 def _newton(w, iv, y, f, dy, args, t_new, c, n, ndyn):
     """Simplified Newton iteration of the BDF system; (converged, iterations)."""
-    o_atol, od, oj, olu, opred, opsi, odd, oscale, oerr, o_r, _ = _offsets(n, ndyn)
+    o_atol, od, oj, olu, opred, opsi, odd, oscale, oerr, ofp, o_r, _ = _offsets(n, ndyn)
     tol = w[S_NEWTON_TOL]
     for i in range(n):
         y[i] = w[opred + i]
@@ -257,6 +260,9 @@ def _newton(w, iv, y, f, dy, args, t_new, c, n, ndyn):
         iterations = k + 1
         FUN(t_new, y, args, f)  # noqa: F821 - set by compile_bdf
         iv[I_NFEV] += 1
+        if k == 0:                  # f(y_pred): what a new Jacobian at y_pred starts from
+            for i in range(n):
+                w[ofp + i] = f[i]
         finite = True
         for i in range(n):
             if not math.isfinite(f[i]):
@@ -289,11 +295,10 @@ def _newton(w, iv, y, f, dy, args, t_new, c, n, ndyn):
     return converged, iterations
 
 
-def _jacobian(w, iv, t, y, args, n, ndyn):
-    """JAC into the J block of w (through the scratch rows of f and dy is not possible: J is
-    n × ndyn), counted."""
+def _jacobian(w, iv, t, y, f, args, n, ndyn):
+    """JAC at (t, y) with f = FUN(t, y) into the J block of w, counted."""
     oj = _offsets(n, ndyn)[2]
-    JAC(t, y, args, w[oj:oj + n * ndyn].reshape(n, ndyn))  # noqa: F821
+    JAC(t, y, f, args, w[oj:oj + n * ndyn].reshape(n, ndyn))  # noqa: F821
     iv[I_NJEV] += 1
 
 
@@ -303,7 +308,7 @@ def start(ws, t0, y0, t_bound, args):
     w, iv, y1, f0, f1 = ws[0], ws[1], ws[2], ws[3], ws[4]
     n = y0.shape[0]
     ndyn = iv[I_NDYN]
-    o_atol, od, oj, olu, opred, opsi, odd, oscale, oerr, o_r, _ = _offsets(n, ndyn)
+    o_atol, od, oj, olu, opred, opsi, odd, oscale, oerr, ofp, o_r, _ = _offsets(n, ndyn)
     rtol = w[S_RTOL]
     w[S_T] = t0
     w[S_T_OLD] = t0
@@ -337,7 +342,7 @@ def start(ws, t0, y0, t_bound, args):
         w[od + i] = y0[i]
         w[od + n + i] = f0[i] * h_abs
         y1[i] = y0[i]
-    _jacobian(w, iv, t0, y0, args, n, ndyn)
+    _jacobian(w, iv, t0, y0, f0, args, n, ndyn)
     iv[I_ORDER] = 1
     iv[I_NEQ] = 0
     iv[I_LU_OK] = 0
@@ -350,7 +355,7 @@ def step(ws, args):
     w, iv, y, f, dy = ws[0], ws[1], ws[2], ws[3], ws[4]
     n = y.shape[0]
     ndyn = iv[I_NDYN]
-    o_atol, od, oj, olu, opred, opsi, odd, oscale, oerr, o_r, _ = _offsets(n, ndyn)
+    o_atol, od, oj, olu, opred, opsi, odd, oscale, oerr, ofp, o_r, _ = _offsets(n, ndyn)
     rtol = w[S_RTOL]
     t = w[S_T]
     t_bound = w[S_T_BOUND]
@@ -408,8 +413,9 @@ def step(ws, args):
                 if current_jac:
                     break
                 for i in range(n):
-                    f[i] = w[opred + i]
-                _jacobian(w, iv, t_new, f, args, n, ndyn)
+                    dy[i] = w[opred + i]
+                    f[i] = w[ofp + i]
+                _jacobian(w, iv, t_new, dy, f, args, n, ndyn)
                 iv[I_LU_OK] = 0
                 current_jac = True
         if not converged:
@@ -564,5 +570,9 @@ def compile_bdf(name: str, fun, jac, event) -> BdfSolver:
         copy = types.FunctionType(func.__code__, env, func.__name__, func.__defaults__,
                                   func.__closure__)
         copy.__qualname__ = f"{func.__qualname__}__{name}"
-        env[func.__name__] = njit(cache=True)(copy)
+        # the Newton iteration inlined into the step and the step into the caller's loop: as
+        # calls of their own they would take and release a reference to every array of
+        # ``args`` on each call (atomic counts, which cost more than a small system's algebra)
+        env[func.__name__] = (njit(inline="always")(copy) if func in (_newton, step)
+                              else njit(cache=True)(copy))
     return BdfSolver(env["start"], env["step"], env["locate"])

@@ -676,6 +676,13 @@ def _basis(t, q):
     return t3 - t2
 
 
+@njit(cache=True, inline="always")
+def _basis4(t):
+    """The four cubic Hermite basis functions (h00, h10, h01, h11) at t in [0, 1]
+    (:func:`_basis` for q = 0 ... 3)."""
+    return _basis(t, 0), _basis(t, 1), _basis(t, 2), _basis(t, 3)
+
+
 @njit(cache=True)
 def hermite_grid_point(row, data, pressure, temperature):
     """(F_N [N], b [m], clipped) of a gridded contact map at Δp [Pa] and T [K].
@@ -698,14 +705,22 @@ def hermite_grid_point(row, data, pressure, temperature):
     for k in range(d):
         role = row[3 + k]
         n = row[6 + k]
-        axis = data[pos:pos + n]
         x = data[o] if role == 0 else (t if role == 1 else p)
-        i = np.searchsorted(axis, x, side="right") - 1
+        # the cell: searchsorted(axis, x, side="right") - 1 on data[pos:pos + n], searched in
+        # place (a slice is an array view, whose reference count costs more than the search)
+        lo, hi = 0, n
+        while lo < hi:
+            mid = (lo + hi) // 2
+            if data[pos + mid] > x:
+                hi = mid
+            else:
+                lo = mid + 1
+        i = lo - 1
         if i < 0:
             i = 0
         elif i >= n - 1:
             i = n - 2
-        u = (x - axis[i]) / (axis[i + 1] - axis[i])
+        u = (x - data[pos + i]) / (data[pos + i + 1] - data[pos + i])
         cell = cell * (n - 1) + i
         if k == 0:
             u0 = u
@@ -715,19 +730,31 @@ def hermite_grid_point(row, data, pressure, temperature):
             u2 = u
         pos += n
     nvars = row[9]
-    nb = 4 ** d
     fn = 0.0
     b = 0.0
-    base = pos + cell * nb * nvars
-    for j in range(nb):
+    base = pos + cell * 4 ** d * nvars
+    c0, c1 = base + row[10], base + row[11]
+    h0, h1, h2 = _basis4(u0), _basis4(u1), _basis4(u2)   # the basis of each axis, once
+    j = 0                                   # node j = q0·4^(d-1) + ... of the cell's 4^d
+    for q0 in range(4):
         if d == 1:
-            w = _basis(u0, j)
-        elif d == 2:
-            w = _basis(u0, j // 4) * _basis(u1, j % 4)
-        else:
-            w = _basis(u0, j // 16) * _basis(u1, (j // 4) % 4) * _basis(u2, j % 4)
-        fn += w * data[base + j * nvars + row[10]]
-        b += w * data[base + j * nvars + row[11]]
+            w = h0[q0]
+            fn += w * data[c0 + j * nvars]
+            b += w * data[c1 + j * nvars]
+            j += 1
+            continue
+        for q1 in range(4):
+            if d == 2:
+                w = h0[q0] * h1[q1]
+                fn += w * data[c0 + j * nvars]
+                b += w * data[c1 + j * nvars]
+                j += 1
+                continue
+            for q2 in range(4):
+                w = h0[q0] * h1[q1] * h2[q2]
+                fn += w * data[c0 + j * nvars]
+                b += w * data[c1 + j * nvars]
+                j += 1
     return fn, b, clipped
 
 
@@ -743,10 +770,16 @@ def tabulated_map_tables(contact_map, temperature_range, pressures=33, temperatu
     estimate at a varying temperature).  Returns the (row, data) of :func:`grid_tables`.
 
     The Δp points are denser at low pressure (quadratic spacing), where the O-ring's
-    energisation bends the curve most.
+    energisation bends the curve most.  The tables are kept on the map object (a simulation of
+    the same seals again, as in a study, does not build them again: milliseconds per run);
+    callers copy them, never modify them.
     """
     from sealsim.structure.maps import HermiteGrid
 
+    memo = getattr(contact_map, "__dict__", {}).setdefault("_tabulated_tables", {})
+    key = (float(temperature_range[0]), float(temperature_range[1]), pressures, temperatures)
+    if key in memo:
+        return memo[key]
     (plo, phi) = contact_map.ranges["pressure"]
     tlo, thi = temperature_range
     p = plo + (phi - plo) * np.linspace(0.0, 1.0, pressures) ** 2
@@ -754,4 +787,6 @@ def tabulated_map_tables(contact_map, temperature_range, pressures=33, temperatu
     tt, pp = np.meshgrid(t, p, indexing="ij")
     fn, b = contact_map.evaluate(pp, tt)
     grid = HermiteGrid([t, p], np.stack([np.asarray(fn, float), np.asarray(b, float)], axis=-1))
-    return grid_tables(grid, [1, 2], float("nan"), (plo, phi), (tlo, thi), 0, 1)
+    row, data = grid_tables(grid, [1, 2], float("nan"), (plo, phi), (tlo, thi), 0, 1)
+    memo[key] = row, data
+    return row, data

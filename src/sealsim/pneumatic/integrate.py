@@ -229,28 +229,23 @@ def _solve_scipy(system, t0, t1, y0, mode, method, rtol, atol, max_step):
 
 
 # -- the compiled driver ---------------------------------------------------------------------
-# args of the problem functions: (mode, tables, work), work = (diag, jacobian scale, three
-# work vectors, the full Jacobian, [speed resolution], scratch state)
+# args of the problem functions: (mode, tables, work), work = (diag, jacobian scale, two work
+# vectors, [speed resolution], scratch state)
 @njit(cache=True, inline="always")
 def _fun(t, y, args, dy):
-    """:func:`.rhs.derivatives`, calling the column evaluation directly (one call less per
-    evaluation: it is called ten thousand times per second simulated).  Inlined into the
-    solver's Newton iteration: as a call of its own it takes and releases a reference to every
-    array of ``args`` each time (atomic counts, 3 % of the integration)."""
+    """:func:`.rhs.derivatives`, the column evaluation inlined (it is called ten thousand
+    times per second simulated) into the solver's Newton iteration: as a call of its own it
+    takes and releases a reference to every array of ``args`` each time."""
     zero = args[0] * 0
-    rhs.evaluate_column(t, y[:, None], zero, args[0], args[1], dy[:, None], args[2][0],
-                        zero + rhs.RATES)
+    rhs._evaluate_column_inlined(t, y[:, None], zero, args[0], args[1], dy[:, None],
+                                 args[2][0], zero + rhs.RATES)
 
 
 @njit(cache=True)
-def _jac(t, y, args, jac):
-    """The columns of the dynamic states of :func:`.rhs.jacobian` (forward differences)."""
+def _jac(t, y, f, args, jac):
+    """The columns of the dynamic states (forward differences, :func:`.rhs.jacobian_at`)."""
     work = args[2]
-    full = work[5]
-    rhs.jacobian(t, y, args[0], args[1], work[1], work[2], work[3], work[4], work[0], full)
-    for i in range(jac.shape[0]):
-        for j in range(jac.shape[1]):
-            jac[i, j] = full[i, j]
+    rhs.jacobian_at(t, y, f, args[0], args[1], work[1], work[2], work[3], work[0], jac)
 
 
 _tolerance = jit(stick_tolerance)
@@ -264,13 +259,13 @@ def _margin(t, y, args):
     return hold, brk + _tolerance(brk)
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _event(t, y, args):
     """The event function of the mode (see :func:`_event_function`): slip ends when the
     motion has reversed by the speed resolution, sticking at the break-away."""
     mode = args[0]
     if mode == rhs.FORWARD or mode == rhs.BACKWARD:
-        return mode * y[1] + args[2][6][0]
+        return mode * y[1] + args[2][4][0]
     if mode == rhs.STICK:
         hold, brk = _margin(t, y, args)
         return abs(hold) - brk
@@ -306,7 +301,7 @@ def run_interval(t, t_end, y, mode, tables, work, ws, grid, k, samples, sample_m
     (result, t, mode, k, segments): :data:`DONE`, :data:`SEGMENTS_FULL` (call again),
     :data:`STEP_FAILED` or :data:`CHATTERING`."""
     s, iv, y_new = ws[0], ws[1], ws[2]
-    y_tmp = work[7]
+    y_tmp = work[5]
     cap = seg_t.shape[0]
     nseg = 0
     ring = recent.shape[0] - 1
@@ -396,7 +391,7 @@ def _integrate_compiled(system, progress, sampler) -> list[Segment]:
     n, ndyn = system.n_states, system.n_dynamic
     ws = bdf.workspace(n, ndyn, rtol, atol, case.solver.max_step)
     work = (np.zeros((system.n_diag, 1)), system.tolerances(1.0)[:ndyn].copy(), np.zeros(n),
-            np.zeros(n), np.zeros(n), np.zeros((n, n)), np.array([0.1 * atol[1]]), np.zeros(n))
+            np.zeros(n), np.array([0.1 * atol[1]]), np.zeros(n))
     grid = sampler.grid
     samples = np.zeros((grid.size, n))
     sample_modes = np.zeros(grid.size, dtype=np.int64)

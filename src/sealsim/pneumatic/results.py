@@ -198,7 +198,15 @@ def _frame(system, diag) -> pd.DataFrame:
     if system.heating:
         cols["T_tube_metal_C"] = diag["T_tube"] - ZERO_CELSIUS_K
         cols["T_rod_metal_C"] = diag["T_rod"] - ZERO_CELSIUS_K
-    return pd.DataFrame(cols)
+    # the float columns as one block that the frame keeps without a copy (a frame built from a
+    # dict of columns copies them all into a new block once more)
+    floats = [name for name in cols if name != "mode"]
+    block = np.empty((len(floats), diag["time"].size))
+    for row, name in zip(block, floats):
+        row[:] = cols[name]
+    frame = pd.DataFrame(block.T, columns=floats, copy=False)
+    frame.insert(list(cols).index("mode"), "mode", cols["mode"])
+    return frame
 
 
 def balances(system, segments) -> dict[str, float]:

@@ -483,12 +483,19 @@ def derivatives(t, y, mode, tables, dy, diag):
 def jacobian(t, y, mode, tables, scale, work_y, work_dy, f0, diag, jac):
     """∂f/∂y by forward differences of the dynamic states (the bookkeeping states do not feed
     back: their columns stay zero): h_j = 1.5e-8·max(|y_j|, scale_j), one evaluation per
-    state plus one at y."""
+    state plus one at y (:func:`jacobian_at` after f0 = f(t, y))."""
+    derivatives(t, y, mode, tables, f0, diag)
+    jac[:, :] = 0.0
+    jacobian_at(t, y, f0, mode, tables, scale, work_y, work_dy, diag, jac)
+
+
+@njit(cache=True)
+def jacobian_at(t, y, f0, mode, tables, scale, work_y, work_dy, diag, jac):
+    """The columns j < ndyn of ∂f/∂y by forward differences from f0 = f(t, y), one evaluation
+    per dynamic state (see :func:`jacobian`); the other columns of ``jac`` are not touched."""
     n = y.shape[0]
     ndyn = scale.shape[0]
     zero = _plain(y)
-    derivatives(t, y, mode, tables, f0, diag)
-    jac[:, :] = 0.0
     shifted, rates = work_y[:, None], work_dy[:, None]      # column views, made once
     for j in range(ndyn):
         h = 1.5e-8 * max(abs(y[j]), scale[j])
