@@ -46,7 +46,7 @@ from numba import njit
 from sealsim.errors import InputError
 
 __all__ = ["TABLE_VARIABLES", "SteadyFrictionTable", "cell_sums", "contact_table_point",
-           "speed_cell", "table_cell"]
+           "hermite_basis", "locate_on_axis", "speed_cell", "table_cell"]
 
 #: variables of the table, in the order of its last axis (see the module docstring)
 TABLE_VARIABLES = ("asperity_load_pos", "viscous_pos", "asperity_load_neg", "viscous_neg",
@@ -57,7 +57,7 @@ _ROW = 4
 
 
 @njit(cache=True)
-def _basis(t):
+def hermite_basis(t):
     """The cubic Hermite basis functions (h00, h10, h01, h11) at t in [0, 1]."""
     t2 = t * t
     t3 = t2 * t
@@ -65,7 +65,7 @@ def _basis(t):
 
 
 @njit(cache=True)
-def _locate(data, pos, n, x):
+def locate_on_axis(data, pos, n, x):
     """(cell index, local coordinate in [0, 1]) of x on the axis data[pos:pos + n], clamped:
     the last node <= x (numpy.searchsorted side="right", minus 1), at most the last cell."""
     lo, hi = data[pos], data[pos + n - 1]
@@ -91,9 +91,9 @@ def table_cell(row, data, temperature, pressure):
     table clamped to its axes: the part of a lookup that :func:`contact_steady
     <sealsim.friction.compiled.contact_steady>` shares between its speeds."""
     nt = row[0]
-    i, a = _locate(data, 0, nt, temperature)
-    j, b = _locate(data, nt, row[1], pressure)
-    return i, _basis(a), j, _basis(b)
+    i, a = locate_on_axis(data, 0, nt, temperature)
+    j, b = locate_on_axis(data, nt, row[1], pressure)
+    return i, hermite_basis(a), j, hermite_basis(b)
 
 
 @njit(cache=True)
@@ -130,8 +130,8 @@ def cell_sums(row, data, i, wa, j, wb, k, wc, off, film):
 @njit(cache=True)
 def speed_cell(row, data, speed):
     """(k, weights) of the speed cell of |speed| [m/s] (log10 axis, clamped)."""
-    k, c = _locate(data, row[0] + row[1], row[2], math.log10(abs(speed)))
-    return k, _basis(c)
+    k, c = locate_on_axis(data, row[0] + row[1], row[2], math.log10(abs(speed)))
+    return k, hermite_basis(c)
 
 
 @njit(cache=True)

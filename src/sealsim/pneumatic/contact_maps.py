@@ -59,6 +59,7 @@ import numpy as np
 from numba import njit
 
 from sealsim.errors import InputError
+from sealsim.friction.contact_table import hermite_basis, locate_on_axis
 from sealsim.pneumatic._jit import jit
 from sealsim.properties.elastomers import (
     GLASS_TRANSITION_MARGIN,
@@ -663,27 +664,6 @@ def grid_tables(grid, roles, squeeze, pressure_range, temperature_range, fn_inde
 
 
 @njit(cache=True)
-def _basis(t, q):
-    """Cubic Hermite basis function q (h00, h10, h01, h11) at t in [0, 1]."""
-    t2 = t * t
-    t3 = t2 * t
-    if q == 0:
-        return 2 * t3 - 3 * t2 + 1
-    if q == 1:
-        return t3 - 2 * t2 + t
-    if q == 2:
-        return -2 * t3 + 3 * t2
-    return t3 - t2
-
-
-@njit(cache=True, inline="always")
-def _basis4(t):
-    """The four cubic Hermite basis functions (h00, h10, h01, h11) at t in [0, 1]
-    (:func:`_basis` for q = 0 ... 3)."""
-    return _basis(t, 0), _basis(t, 1), _basis(t, 2), _basis(t, 3)
-
-
-@njit(cache=True)
 def hermite_grid_point(row, data, pressure, temperature):
     """(F_N [N], b [m], clipped) of a gridded contact map at Δp [Pa] and T [K].
 
@@ -706,21 +686,10 @@ def hermite_grid_point(row, data, pressure, temperature):
         role = row[3 + k]
         n = row[6 + k]
         x = data[o] if role == 0 else (t if role == 1 else p)
-        # the cell: searchsorted(axis, x, side="right") - 1 on data[pos:pos + n], searched in
-        # place (a slice is an array view, whose reference count costs more than the search)
-        lo, hi = 0, n
-        while lo < hi:
-            mid = (lo + hi) // 2
-            if data[pos + mid] > x:
-                hi = mid
-            else:
-                lo = mid + 1
-        i = lo - 1
-        if i < 0:
-            i = 0
-        elif i >= n - 1:
-            i = n - 2
-        u = (x - data[pos + i]) / (data[pos + i + 1] - data[pos + i])
+        # the cell, searched in place (a slice is an array view, whose reference count costs
+        # more than the search); x is inside the axis (Δp, T clamped, a squeeze outside the
+        # map refused), so the search's own clamping changes nothing
+        i, u = locate_on_axis(data, pos, n, x)
         cell = cell * (n - 1) + i
         if k == 0:
             u0 = u
@@ -734,7 +703,7 @@ def hermite_grid_point(row, data, pressure, temperature):
     b = 0.0
     base = pos + cell * 4 ** d * nvars
     c0, c1 = base + row[10], base + row[11]
-    h0, h1, h2 = _basis4(u0), _basis4(u1), _basis4(u2)   # the basis of each axis, once
+    h0, h1, h2 = hermite_basis(u0), hermite_basis(u1), hermite_basis(u2)   # once per axis
     j = 0                                   # node j = q0·4^(d-1) + ... of the cell's 4^d
     for q0 in range(4):
         if d == 1:

@@ -17,7 +17,7 @@
  * with the numba functions. */
 #include <math.h>
 
-/* the cubic Hermite basis functions (h00, h10, h01, h11) at t in [0, 1] (contact_table._basis) */
+/* the cubic Hermite basis functions (h00, h10, h01, h11) at t in [0, 1] (contact_table.hermite_basis) */
 static void table_basis(double t, double *w) {
     double t2 = t * t, t3 = t2 * t;
     w[0] = 2 * t3 - 3 * t2 + 1;
@@ -27,7 +27,7 @@ static void table_basis(double t, double *w) {
 }
 
 /* (cell index, local coordinate in [0, 1]) of x on the axis data[pos:pos + n], clamped
- * (contact_table._locate) */
+ * (contact_table.locate_on_axis) */
 static long table_locate(const double *data, long pos, long n, double x, double *u) {
     double lo = data[pos], hi = data[pos + n - 1];
     x = fmin(fmax(x, lo), hi);
