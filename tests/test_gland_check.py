@@ -77,6 +77,26 @@ def test_piston_gland_of_a_seal_makers_housing_table_by_hand():
     assert r["ok"]
 
 
+def test_flange_gland_of_a_seal_suppliers_worked_example():
+    # NH O-Ring's O-ring lexicon, "Sealing effect" (nh-oring.de/en/sealing-effect-o-ring-lexicon,
+    # read 2026-11-27), worked example of a standard flange seal: cord 3 mm in a groove 2.3 mm
+    # deep, "the O-ring is therefore 0.7 mm larger" -> squeeze 0.7 / 3 = 23.33 %.  The source
+    # gives only cord and depth; the ring sits unstretched on the groove's inner diameter and
+    # the flanges touch (gap 0), so nothing else enters the squeeze.  The fill is not in the
+    # source: by hand, pi/4 * 3^2 / (2.3 * 4.0) = 7.0686 / 9.2 = 76.83 % in a 4.0 mm groove.
+    case = _case("face_static.toml", {
+        "ring": {"cord_diameter": "3 mm", "inner_diameter": "30 mm"},
+        "housing": {"groove_depth": {"nominal": "2.3 mm", "upper": "0 mm", "lower": "0 mm"},
+                    "groove_width": {"nominal": "4 mm", "upper": "0 mm", "lower": "0 mm"},
+                    "groove_inner_diameter": {"nominal": "30 mm", "upper": "0 mm",
+                                              "lower": "0 mm"}},
+        "service": {"temperature": ["20 degC"], "fluid_swell": 0.0}})
+    r = sealsim.oring_gland(case)
+    assert r["squeeze_percent"]["nominal"] == pytest.approx(100 * 0.7 / 3.0, abs=PP)
+    assert r["stretch_percent"]["nominal"] == pytest.approx(0.0, abs=1e-9)
+    assert r["gland_fill_percent"]["nominal"] == pytest.approx(76.83, abs=PP)
+
+
 def test_rod_gland_with_thermal_contraction_by_hand():
     # rod_reciprocating.toml at its lowest temperature, 0 degC (20 K below assembly):
     #   rubber 1 + 1.9e-4 * (-20) = 0.9962; steel 1 - 11.5e-6 * 20 = 0.99977
