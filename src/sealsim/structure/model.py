@@ -3,7 +3,8 @@ fluid pressure -- set up once, then driven through load states by :mod:`.solver`
 
 Pipeline (FElupe style): geometry (:class:`~.geometry.SealAssembly`) → mesh
 (:func:`~.profile_mesh.mesh_section`) → :class:`SealModel` (``RegionQuad`` → ``FieldAxisymmetric``
-→ ``SolidBodyNearlyIncompressible`` + one ``ContactRigidPlane`` per rigid line +
+→ ``SolidBodyNearlyIncompressible`` + one ``ContactRigidPlane`` per rigid line (a
+:class:`~.land_contact.ContactRigidLand` for a wall ending at a clearance gap) +
 :class:`~.loads.FluidPressure`) → :func:`~.solver.solve` → :mod:`.results`.
 
 Thermal expansion enters the mixed formulation through the reference volume of every cell:
