@@ -130,3 +130,19 @@ def test_clearance_must_leave_a_wall():
     with pytest.raises(InputError, match="land_edge_radius needs gland.clearance"):
         validate_case(StructureCase, {**data, "gland": {**BASE["gland"],
                                                         "land_edge_radius": "0.1 mm"}})
+
+
+def test_map_profile_covers_the_clearance_gaps():
+    """With a clearance the stored contact pressure profile reaches one clearance beyond each
+    wall (the rubber in the gap can touch the sealing surface there); without, the groove."""
+    from sealsim.structure.mapping import profile_positions
+
+    data = {**BASE, "seal": {"type": "xring", **RING},
+            "load": {**BASE["load"], "pressure": ["0 bar"]},
+            "map": {"pressure": ["0 bar", "1 bar"], "temperature": ["20 degC", "30 degC"],
+                    "profile_points": 51}}
+    plain = profile_positions(validate_case(StructureCase, data))
+    gap = profile_positions(validate_case(StructureCase, {
+        **data, "gland": {**BASE["gland"], "clearance": "0.5 mm"}}))
+    assert plain[-1] == pytest.approx(0.5 * 4.53e-3) and plain[0] == pytest.approx(-plain[-1])
+    assert gap[-1] == pytest.approx(0.5 * 4.53e-3 + 0.5e-3) and len(gap) == 51
