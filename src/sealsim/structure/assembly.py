@@ -39,7 +39,8 @@ import felupe as fem
 import numpy as np
 from scipy.sparse import csr_matrix
 
-__all__ = ["CompiledSolidBody", "ContactRigidPlaneOnce", "SystemAssembly", "csr_pattern"]
+__all__ = ["CompiledSolidBody", "ContactRigidPlaneOnce", "SystemAssembly", "TrialOnce",
+           "csr_pattern"]
 
 try:  # pragma: no cover - depends on the environment
     import numba
@@ -374,8 +375,9 @@ class CompiledSolidBody(fem.SolidBodyNearlyIncompressible):
         return K
 
 
-class ContactRigidPlaneOnce(fem.ContactRigidPlane):
-    """FElupe's rigid-plane contact that evaluates its trial state once per configuration.
+class TrialOnce:
+    """Mixin for FElupe's rigid contacts (:class:`felupe.mechanics.ContactRigidBase`): the
+    trial state is evaluated once per configuration.
 
     FElupe evaluates the contact (gaps, penalty and friction return mapping) for the
     residual and again for the tangent; here the tangent reuses the trial of the residual
@@ -414,6 +416,11 @@ class ContactRigidPlaneOnce(fem.ContactRigidPlane):
             cols.append(np.broadcast_to(col[:, None, :], blocks.shape).ravel())
             data.append(sign * blocks.ravel())
         return np.concatenate(rows), np.concatenate(cols), np.concatenate(data)
+
+
+class ContactRigidPlaneOnce(TrialOnce, fem.ContactRigidPlane):
+    """FElupe's rigid-plane contact, its trial state evaluated once per configuration
+    (:class:`TrialOnce`)."""
 
 
 class SystemAssembly:

@@ -78,7 +78,8 @@ def build_assembly(case: StructureCase) -> SealAssembly:
     section = build_section(case)
     g = case.gland
     width = g.groove_width if g.groove_width is not None else section.axial_extent
-    gland = Gland(g.arrangement, g.sealing_diameter, width)
+    edge = {} if g.land_edge_radius is None else {"land_edge_radius": g.land_edge_radius}
+    gland = Gland(g.arrangement, g.sealing_diameter, width, clearance=g.clearance, **edge)
     assembly = SealAssembly(section, gland, g.inner_expansion, g.outer_expansion,
                             case.load.installation_temperature, walls=g.walls)
     _check_placement(assembly)
@@ -99,6 +100,12 @@ def _check_placement(a: SealAssembly) -> None:
             f"the sealing diameter {2 * rs * 1e3:g} mm; allowed is up to 15 %")
     if a.gland.side > 0 and rs - h <= 0:
         raise InputError("gland.sealing_diameter: the bore is too small for the seal section")
+    g = a.gland
+    if g.clearance is not None and g.clearance + g.land_edge_radius >= 0.5 * h:
+        raise InputError(
+            f"gland.clearance: {g.clearance * 1e3:g} mm (plus the land edge radius "
+            f"{g.land_edge_radius * 1e3:g} mm) must be less than half the seal's radial height "
+            f"{h * 1e3:g} mm: the groove walls would be too short to hold it")
 
 
 def installation_squeeze(case: StructureCase, assembly: SealAssembly | None = None) -> float:

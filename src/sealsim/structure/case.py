@@ -183,6 +183,12 @@ class GlandSpec(CaseModel):
         "Coulomb coefficient on the sealing surface (rod, bore, shaft)"))
     wall_friction: Annotated[float, Field(ge=0.0, le=2.0)] | None = Field(None, description=(
         "Coulomb coefficient on the groove walls (default: friction)"))
+    clearance: Q("length", gt=0.0) | None = Field(None, description=(
+        "radial gap between the sealing surface and the groove's lands, e.g. '0.5 mm' (piston: "
+        "(bore - piston diameter)/2): the walls end at the lands' edges and the seal can bulge "
+        "into the gap; not given: the walls reach the sealing surface"))
+    land_edge_radius: Q("length", gt=0.0) | None = Field(None, description=(
+        "radius of the lands' edges next to the clearance gap (default 0.1 mm)"))
     inner_expansion: Q("thermal_expansion", ge=-1e-4, lt=1e-3) = 11.5e-6
     outer_expansion: Q("thermal_expansion", ge=-1e-4, lt=1e-3) = 11.5e-6
 
@@ -191,6 +197,12 @@ class GlandSpec(CaseModel):
         if self.groove_width is None and self.arrangement != "shaft":
             raise ValueError(f"gland.groove_width is needed for arrangement = "
                              f"{self.arrangement!r}")
+        if self.arrangement == "shaft" and self.clearance is not None:
+            raise ValueError("gland.clearance is for rod and piston grooves, not for "
+                             "arrangement = 'shaft'")
+        if self.land_edge_radius is not None and self.clearance is None:
+            raise ValueError("gland.land_edge_radius needs gland.clearance (without a "
+                             "clearance the walls reach the sealing surface)")
         return self
 
 

@@ -52,6 +52,12 @@ INITIAL_WALL_CONTACT = 1e-3
 """Initial overlap of the O-ring with the downstream wall, as a fraction of the cord [-]:
 makes the wall contact active from the first iteration (axial support)."""
 
+DEFAULT_LAND_EDGE_RADIUS = 0.1e-3
+"""Radius of a groove land's edge next to a clearance gap [m]: a machined edge broken by
+about 0.1 mm (the usual "break sharp edges" of gland drawings).  The model needs a radius
+(a sharp rigid corner has no unique normal); how much it matters is reported where a
+clearance is used (docs/guide/calibration.md)."""
+
 
 @dataclass(frozen=True)
 class ORing:
@@ -125,6 +131,14 @@ class Gland:
         Rod, bore or shaft diameter [m].
     groove_width : float
         Axial groove width [m] (for a shaft seal: the seal width, not used by the model).
+    clearance : float, optional
+        Radial gap between the sealing surface and the groove's lands [m] (piston: half the
+        bore minus the piston diameter; rod: half the housing bore next to the groove minus
+        the rod diameter).  Then the groove walls end at the lands' edges, rounded with
+        ``land_edge_radius``, and the seal can bulge into the gap; None: the walls reach the
+        sealing surface (no gap).
+    land_edge_radius : float
+        Radius of the lands' edges [m] (used with a clearance).
 
     Examples
     --------
@@ -136,6 +150,8 @@ class Gland:
     arrangement: Literal["rod", "piston", "shaft"]
     sealing_diameter: float
     groove_width: float
+    clearance: float | None = None
+    land_edge_radius: float = DEFAULT_LAND_EDGE_RADIUS
 
     def __post_init__(self):
         if self.arrangement not in ("rod", "piston", "shaft"):
@@ -143,6 +159,9 @@ class Gland:
                              "choose 'rod', 'piston' or 'shaft'")
         _positive("gland.sealing_diameter", self.sealing_diameter, "m")
         _positive("gland.groove_width", self.groove_width, "m")
+        if self.clearance is not None:
+            _positive("gland.clearance", self.clearance, "m")
+            _positive("gland.land_edge_radius", self.land_edge_radius, "m")
 
     @property
     def side(self) -> float:
@@ -161,11 +180,15 @@ class Gland:
 @dataclass(frozen=True)
 class RigidLine:
     """A rigid line of the gland: a point on it (x, y) [m] and the unit normal pointing into
-    the seal."""
+    the seal.  A groove wall next to a clearance gap ends at its point: the land's edge,
+    rounded with ``edge_radius`` [m], beyond which (along the unit vector ``edge_direction``,
+    towards the sealing surface) the land's surface faces the gap (None: an infinite line)."""
 
     name: str
     point: tuple[float, float]
     normal: tuple[float, float]
+    edge_radius: float | None = None
+    edge_direction: tuple[float, float] | None = None
 
 
 def gland_fill(ring, gland: Gland, squeeze: float, volume_ratio: float = 1.0) -> float:
@@ -330,9 +353,18 @@ class SealAssembly:
         if not self.walls:
             return radial
         half = 0.5 * g.groove_width * (1.0 + exp_groove * dT)
+        if g.clearance is None:
+            return radial + [
+                RigidLine("wall_upstream", (-half, 0.5 * (rs + rg)), (1.0, 0.0)),
+                RigidLine("wall_downstream", (half, 0.5 * (rs + rg)), (-1.0, 0.0)),
+            ]
+        # the walls end at the lands' edges (part of the groove's metal part), the clearance
+        # gap between them and the sealing surface
+        r_land = (g.sealing_radius - side * g.clearance) * (1.0 + exp_groove * dT)
+        edge = {"edge_radius": g.land_edge_radius, "edge_direction": (0.0, side)}
         return radial + [
-            RigidLine("wall_upstream", (-half, 0.5 * (rs + rg)), (1.0, 0.0)),
-            RigidLine("wall_downstream", (half, 0.5 * (rs + rg)), (-1.0, 0.0)),
+            RigidLine("wall_upstream", (-half, r_land), (1.0, 0.0), **edge),
+            RigidLine("wall_downstream", (half, r_land), (-1.0, 0.0), **edge),
         ]
 
     def spring_factor(self, squeeze: float, installation_squeeze: float) -> float:

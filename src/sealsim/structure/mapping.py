@@ -27,7 +27,7 @@ from collections.abc import Callable
 import numpy as np
 import xarray as xr
 
-from sealsim.errors import InputError
+from sealsim.errors import InputError, SealsimWarning
 from sealsim.structure.build import (
     build_assembly,
     build_material,
@@ -46,14 +46,16 @@ __all__ = ["compute_map", "profile_positions"]
 
 def profile_positions(case: StructureCase, assembly=None) -> np.ndarray:
     """Axial positions [m] where a map stores the contact pressure profile: evenly across the
-    groove (a shaft seal: across its width around the lip edge)."""
+    groove, and with a clearance gap one clearance beyond each wall, where the rubber bulging
+    into the gap can touch the sealing surface (a shaft seal: across its width around the lip
+    edge)."""
     assembly = assembly or build_assembly(case)
     n = case.map.profile_points if case.map is not None else 41
     if case.gland.arrangement == "shaft":
         lo, hi = assembly.seal.axial_range
         half = 0.5 * (hi - lo)
         return np.linspace(-0.5 * half, 0.5 * half, n)
-    half = 0.5 * assembly.gland.groove_width
+    half = 0.5 * assembly.gland.groove_width + (assembly.gland.clearance or 0.0)
     return np.linspace(-half, half, n)
 
 
@@ -193,6 +195,11 @@ def compute_map(case: StructureCase, *, workers: int | None = None,
                 for f in futures:
                     f.cancel()
                 raise
+    if np.any(profile[..., [0, -1]] > 0.0):
+        warnings.warn(SealsimWarning(
+            f"map: the contact reaches the end of the stored pressure profile (±"
+            f"{positions[-1] * 1e3:.3g} mm around the groove's centre): the profile misses "
+            "the part beyond it (the seal extrudes far into the clearance gap)"), stacklevel=2)
     coords = {"squeeze": np.asarray(squeezes, float),
               "temperature": np.asarray(spec.temperature, float),
               "pressure": np.asarray(spec.pressure, float)}

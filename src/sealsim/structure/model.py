@@ -3,7 +3,8 @@ fluid pressure -- set up once, then driven through load states by :mod:`.solver`
 
 Pipeline (FElupe style): geometry (:class:`~.geometry.SealAssembly`) → mesh
 (:func:`~.profile_mesh.mesh_section`) → :class:`SealModel` (``RegionQuad`` → ``FieldAxisymmetric``
-→ ``SolidBodyNearlyIncompressible`` + one ``ContactRigidPlane`` per rigid line +
+→ ``SolidBodyNearlyIncompressible`` + one ``ContactRigidPlane`` per rigid line (a
+:class:`~.land_contact.ContactRigidLand` for a wall ending at a clearance gap) +
 :class:`~.loads.FluidPressure`) → :func:`~.solver.solve` → :mod:`.results`.
 
 Thermal expansion enters the mixed formulation through the reference volume of every cell:
@@ -34,6 +35,7 @@ from sealsim.structure.constraints import (
     ring_samples,
 )
 from sealsim.structure.geometry import ORing, SealAssembly
+from sealsim.structure.land_contact import ContactRigidLand
 from sealsim.structure.loads import FluidPressure
 from sealsim.structure.mesh import SealMesh
 
@@ -175,15 +177,21 @@ class SealModel:
         if elastic_slip is None:
             seal = assembly.seal
             elastic_slip = 1e-3 * getattr(seal, "contact_scale", seal.radial_extent)
-        contact = ContactRigidPlaneOnce if self.compiled else fem.ContactRigidPlane
-        self.contacts = {
-            line.name: contact(
-                self.field, points=candidates, centerpoint=self.centerpoints[line.name],
-                normal=line.normal, multiplier=penalty, items=[self.solid],
-                friction=self.friction[line.name],
-                elastic_slip=elastic_slip if self.friction[line.name] > 0 else None)
-            for line in lines
-        }
+        plane = ContactRigidPlaneOnce if self.compiled else fem.ContactRigidPlane
+
+        def contact(line):
+            options = {"multiplier": penalty, "items": [self.solid],
+                       "friction": self.friction[line.name],
+                       "elastic_slip": elastic_slip if self.friction[line.name] > 0 else None}
+            if line.edge_radius is not None:   # a wall ending at a land's edge (clearance)
+                return ContactRigidLand(self.field, candidates, self.centerpoints[line.name],
+                                        line.normal, line.edge_direction, line.edge_radius,
+                                        **options)
+            return plane(self.field, points=candidates,
+                         centerpoint=self.centerpoints[line.name], normal=line.normal,
+                         **options)
+
+        self.contacts = {line.name: contact(line) for line in lines}
         self._candidates = candidates
         self.pressure = FluidPressure(self.field, self.loop, axisymmetric=axisymmetric)
         self.items = [self.solid, *self.contacts.values(), self.pressure]
