@@ -115,7 +115,8 @@ def profile(case, base_dir) -> dict:
     _rhs_loop(1, t, y, args, dy)
     _jacobian_loop(1, t, y, dy, args, jac)
     rhs_us = _best(lambda: _rhs_loop(count, t, y, args, dy), 5) / count * 1e6
-    jac_us = _best(lambda: _jacobian_loop(count // 10, t, y, dy, args, jac), 5) / (count // 10) * 1e6
+    jac_count = count // 10
+    jac_us = _best(lambda: _jacobian_loop(jac_count, t, y, dy, args, jac), 5) / jac_count * 1e6
     matrix = (np.eye(ndyn) - 1e-3 * jac[:ndyn]).ravel()
     lu_work, pivots = matrix.copy(), np.zeros(ndyn, dtype=np.int64)
     _lu_loop(1, matrix, lu_work, ndyn, pivots)
