@@ -315,6 +315,10 @@ def run_interval(t, t_end, y, mode, tables, work, ws, grid, k, samples, sample_m
     (result, t, mode, k, segments): :data:`DONE`, :data:`SEGMENTS_FULL` (call again),
     :data:`STEP_FAILED` or :data:`CHATTERING`."""
     tables, work, ws = _borrowed_arrays(tables, work, ws)     # all held by the caller
+    y, grid, samples, sample_modes = borrowed(y), borrowed(grid), borrowed(samples), \
+        borrowed(sample_modes)                              # a sample row: no count either
+    seg_t, seg_i, seg_y, recent = borrowed(seg_t), borrowed(seg_i), borrowed(seg_y), \
+        borrowed(recent)
     s, iv, y_new = ws[0], ws[1], ws[2]
     y_tmp = work[5]
     cap = seg_t.shape[0]
