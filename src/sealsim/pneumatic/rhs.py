@@ -52,7 +52,7 @@ from sealsim.friction.compiled import (  # noqa: F401  (law codes re-exported)
 )
 from sealsim.friction import compiled as _compiled_laws
 from sealsim.friction.compiled import law_rates
-from sealsim.pneumatic._jit import jit
+from sealsim.pneumatic._jit import borrowed, jit
 from sealsim.pneumatic.chambers import (
     AIR_CP,
     AIR_CV,
@@ -508,11 +508,24 @@ def jacobian_at(t, y, f0, mode, tables, scale, work_y, work_dy, diag, jac):
             jac[i, j] = (work_dy[i] - f0[i]) / h
 
 
+@njit(inline="always")
+def borrowed_tables(tables):
+    """The tables as :func:`._jit.borrowed` arrays (not reference counted: the rows and slices
+    that every evaluation takes of them, and every call they are passed to, cost no atomic
+    counts) -- for a compiled function whose caller holds ``tables``."""
+    c, spool, profile, seal_int, law_par, seal_therm, map_int, map_data, fric_int, \
+        fric_data = tables
+    return (borrowed(c), borrowed(spool), borrowed(profile), borrowed(seal_int),
+            borrowed(law_par), borrowed(seal_therm), borrowed(map_int), borrowed(map_data),
+            borrowed(fric_int), borrowed(fric_data))
+
+
 @njit(cache=True)
 def evaluate_many(ts, ys, modes, tables, dys, diag, level):
     """dy/dt and the diagnostics of ``level`` (:data:`FULL` or :data:`OUTPUTS`, see
     :func:`evaluate_column`) for every column of ys (shape (n, k)) at the times ts (k,) in
     the modes ``modes`` (k,)."""
+    tables = borrowed_tables(tables)
     for col in range(ys.shape[1]):
         _evaluate_column_inlined(ts[col], ys, col, modes[col], tables, dys, diag, level)
 

@@ -1,0 +1,175 @@
+"""Where the time of the Ø32 cylinder's 10 s cycle goes (the cases of bench_pneumatic.py).
+
+For the analytic contact maps, the FE map of the rod seal and seal heating: ``simulate`` end to
+end and its stages measured one by one (set-up of the system, integration with the output
+grid, the diagnostics at the output samples, the result table), the solver's counts (steps,
+right-hand sides in the Newton iteration, Jacobians and the right-hand sides of their
+forward-difference columns, LU factorisations, segments and steps at rest) and the cost of one
+compiled call of each part, timed in a compiled loop: the right-hand side, the Jacobian, an LU
+factorisation of the Newton matrix, the diagnostics of one output sample.  From those, the
+integration's estimated split (evaluations × cost; the remainder is the BDF bookkeeping,
+events and the dense output).  Every time is the best of several runs in this process (7 for
+the stages, 5 for the loops): on a shared machine the best run is the least disturbed one.
+The per-call costs in a loop at one fixed state are lower bounds (warm caches and branch
+predictors).
+
+    .venv/bin/python benchmarks/profile_pneumatic.py
+
+The last line is one JSON object: per case (``analytic``, ``fe_map``, ``heating``) the stage
+times [ms], the counts and the per-call costs [µs].
+"""
+from __future__ import annotations
+
+import json
+import os
+import sys
+import time
+from pathlib import Path
+from unittest import mock
+
+os.environ.setdefault("OMP_NUM_THREADS", "1")
+os.environ.setdefault("NUMBA_NUM_THREADS", "1")
+
+import numpy as np  # noqa: E402
+from numba import njit  # noqa: E402
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from bench_pneumatic import EXAMPLE, FE_EXAMPLE, SIMULATED, _case  # noqa: E402
+
+from sealsim.ode import bdf  # noqa: E402
+from sealsim.pneumatic import build_seals, integrate, rhs, simulate  # noqa: E402
+from sealsim.pneumatic import results as _results  # noqa: E402
+from sealsim.pneumatic.case import ThermalModel  # noqa: E402
+from sealsim.pneumatic.simulation import PneumaticSystem  # noqa: E402
+
+
+@njit
+def _rhs_loop(count, t, y, args, dy):
+    for k in range(count):
+        integrate._fun(t + k * 1e-12, y, args, dy)
+
+
+@njit
+def _jacobian_loop(count, t, y, f, args, jac):
+    for k in range(count):
+        integrate._jac(t + k * 1e-12, y, f, args, jac)
+
+
+@njit
+def _lu_loop(count, matrix, work, m, pivots):
+    for _ in range(count):
+        for i in range(matrix.shape[0]):
+            work[i] = matrix[i]
+        bdf.lu_factor_at(work, 0, m, pivots, 0)
+
+
+def _best(fn, repeat=7):
+    best = float("inf")
+    for _ in range(repeat):
+        t0 = time.perf_counter()
+        fn()
+        best = min(best, time.perf_counter() - t0)
+    return best
+
+
+def _integrate_counting(system):
+    """Integration with the output grid; also the solver's counters (its workspace)."""
+    made, original = [], bdf.workspace
+
+    def workspace(*a, **k):
+        made.append(original(*a, **k))
+        return made[-1]
+
+    sampler = _results.Sampler(system)
+    with mock.patch.object(integrate.bdf, "workspace", workspace):
+        segments = integrate.integrate(system, None, sampler)
+    return sampler, segments, made[-1][1]
+
+
+def profile(case, base_dir) -> dict:
+    seals = build_seals(case, base_dir)
+    simulate(case, seals)                             # compiled code loaded
+    system = PneumaticSystem(case, seals)
+    total = _best(lambda: simulate(case, seals))
+    setup = _best(lambda: PneumaticSystem(case, seals))
+    integration = _best(lambda: integrate.integrate(system, None, _results.Sampler(system)))
+    sampler, segments, counters = _integrate_counting(system)
+    ts, ys, modes = sampler.finish()
+    outputs = _best(lambda: system.evaluate(ts, ys, modes, full=True, outputs_only=True))
+    diag = _results._diagnostics(system, ts, ys, modes)
+    table = _best(lambda: _results._frame(system, diag))
+    n, ndyn = system.n_states, system.n_dynamic
+    # per-call costs at a state in the middle of a slip segment
+    slip = [s for s in segments if s.mode in (rhs.FORWARD, rhs.BACKWARD)]
+    seg = slip[len(slip) // 2]
+    y = seg.y0.copy()
+    y[1] = 0.05 * seg.mode
+    t = 0.5 * (seg.t0 + seg.t1)
+    atol = system.tolerances(case.solver.rtol)
+    work = (np.zeros((system.n_diag, 1)), system.tolerances(1.0)[:ndyn].copy(), np.zeros(n),
+            np.zeros(n), np.array([0.1 * atol[1]]), np.zeros(n))
+    args = (seg.mode, system.tables, work)
+    dy, jac = np.zeros(n), np.zeros((n, ndyn))
+    count = 20000
+    _rhs_loop(1, t, y, args, dy)
+    _jacobian_loop(1, t, y, dy, args, jac)
+    rhs_us = _best(lambda: _rhs_loop(count, t, y, args, dy), 5) / count * 1e6
+    jac_count = count // 10
+    jac_us = _best(lambda: _jacobian_loop(jac_count, t, y, dy, args, jac), 5) / jac_count * 1e6
+    matrix = (np.eye(ndyn) - 1e-3 * jac[:ndyn]).ravel()
+    lu_work, pivots = matrix.copy(), np.zeros(ndyn, dtype=np.int64)
+    _lu_loop(1, matrix, lu_work, ndyn, pivots)
+    lu_us = _best(lambda: _lu_loop(count, matrix, lu_work, ndyn, pivots), 5) / count * 1e6
+    steps, nfev = int(counters[bdf.I_NSTEPS]), int(counters[bdf.I_NFEV])
+    njev, nlu = int(counters[bdf.I_NJEV]), int(counters[bdf.I_NLU])
+    return {
+        "total_ms": total * 1e3, "realtime_factor": SIMULATED / total,
+        "setup_ms": setup * 1e3, "integration_ms": integration * 1e3,
+        "outputs_ms": outputs * 1e3, "table_ms": table * 1e3,
+        "steps": steps, "rhs_newton": nfev, "jacobians": njev,
+        "rhs_jacobian_columns": njev * ndyn, "lu_factorisations": nlu,
+        "segments": len(segments),
+        "segments_at_rest": sum(1 for s in segments if s.mode == rhs.STICK),
+        "steps_at_rest": sum(s.steps for s in segments if s.mode == rhs.STICK),
+        "n_dynamic": ndyn, "output_samples": int(ts.size),
+        "rhs_us": rhs_us, "jacobian_us": jac_us, "lu_us": lu_us,
+        "output_sample_us": outputs / ts.size * 1e6,
+    }
+
+
+def main() -> None:
+    print(f"load average (1 min) {os.getloadavg()[0]:.2f} on {os.cpu_count()} cores")
+    cases = {"analytic": _case(SIMULATED),
+             "fe_map": _case(SIMULATED, FE_EXAMPLE),
+             "heating": _case(SIMULATED, thermal=ThermalModel())}
+    out = {}
+    for label, case in cases.items():
+        p = profile(case, EXAMPLE.parent)
+        out[label] = {k: round(v, 3) if isinstance(v, float) else v for k, v in p.items()}
+        rest = p["total_ms"] - p["setup_ms"] - p["integration_ms"] - p["outputs_ms"] \
+            - p["table_ms"]
+        est = {"RHS (Newton)": p["rhs_newton"] * p["rhs_us"] / 1e3,
+               "Jacobians": p["jacobians"] * p["jacobian_us"] / 1e3,
+               "LU": p["lu_factorisations"] * p["lu_us"] / 1e3}
+        driver = p["integration_ms"] - sum(est.values())
+        print(f"{label}: simulate {p['total_ms']:.2f} ms ({p['realtime_factor']:.0f}x real "
+              f"time) = set-up {p['setup_ms']:.2f} + integration {p['integration_ms']:.2f} "
+              f"+ output diagnostics {p['outputs_ms']:.2f} ({p['output_samples']} samples, "
+              f"{p['output_sample_us']:.3f} us each) + table {p['table_ms']:.2f} + rest "
+              f"{rest:.2f} ms")
+        print(f"  {p['steps']} steps, {p['rhs_newton']} RHS in the Newton iteration, "
+              f"{p['jacobians']} Jacobians ({p['rhs_jacobian_columns']} RHS, {p['n_dynamic']}"
+              f" columns), {p['lu_factorisations']} LU, {p['segments']} segments "
+              f"({p['segments_at_rest']} at rest, {p['steps_at_rest']} steps at rest)")
+        print(f"  per call: RHS {p['rhs_us']:.3f} us, Jacobian {p['jacobian_us']:.3f} us, LU "
+              f"{p['lu_us']:.3f} us; integration estimated as "
+              + ", ".join(f"{k} {v:.2f} ms ({v / p['integration_ms'] * 100:.0f} %)"
+                          for k, v in est.items())
+              + f", steps/events/dense output {driver:.2f} ms "
+              f"({driver / p['integration_ms'] * 100:.0f} %)")
+    print(json.dumps(out))
+
+
+if __name__ == "__main__":
+    main()
