@@ -29,9 +29,6 @@ from sealsim.fmu.rotary_maps import fixed_sump_case, flow_regime_boundaries
 from sealsim.rotary.case import RotaryCase
 from sealsim.rotary.simulation import simulate, steady_state
 
-# the module fixture is built once, on one worker, instead of on both
-pytestmark = pytest.mark.xdist_group("rotary_fmu")
-
 RPM = math.pi / 30.0
 CYCLE = Path(__file__).resolve().parents[1] / "examples" / "rotary" / "speed_cycle.toml"
 SUMPS = np.array([20.0, 45.0, 70.0, 95.0, 120.0]) + 273.15

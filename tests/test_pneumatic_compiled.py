@@ -25,9 +25,6 @@ import pytest
 
 from sealsim.pneumatic.contact_maps import FEContactMap, hermite_grid_point
 
-# the module fixture is built once, on one worker, instead of on both
-pytestmark = pytest.mark.xdist_group("compiled_reference")
-
 ROOT = Path(__file__).resolve().parents[1]
 
 SCRIPT = textwrap.dedent(r'''

@@ -10,9 +10,6 @@ from sealsim.structure.case import StructureCase
 from sealsim.structure.mapping import compute_map
 from sealsim.structure.maps import SealMap, load_map
 
-# the module fixture is built once, on one worker, instead of on both
-pytestmark = pytest.mark.xdist_group("structure_map_dataset")
-
 CASE = {
     "seal": {"cord_diameter": "4 mm", "inner_diameter": "20 mm"},
     "gland": {"arrangement": "rod", "sealing_diameter": "20 mm", "groove_width": "5.4 mm"},

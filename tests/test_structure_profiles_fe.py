@@ -152,7 +152,6 @@ def lip_fe(tmp_path_factory):
     return path, cases, table, cache
 
 
-@pytest.mark.xdist_group("lip_fe")  # one worker builds the lip map (64 s), not both
 def test_lip_force_from_fe_and_the_speed_cycle(lip_fe, monkeypatch):
     """DIN 3760 80 x 101 x 9 NBR lip on an 80 mm shaft at 20 and 100 °C (coarse mesh), mounted
     at 20 °C, held an hour, warmed at 1 K/min (thermo-viscoelastic catalogue NBR).
@@ -200,7 +199,6 @@ def test_lip_force_from_fe_and_the_speed_cycle(lip_fe, monkeypatch):
     assert np.allclose(fe["lip_force_N"].to_numpy()[1:], expected, rtol=2e-3)
 
 
-@pytest.mark.xdist_group("lip_fe")  # one worker builds the lip map (64 s), not both
 def test_fe_lip_rubber_share(lip_fe):
     """The rubber of the new lip, mounted at 20 °C and held an hour, carries a positive share
     of its force, F_without/F (the lip on the same path without its spring, as a split-shaft
@@ -266,7 +264,6 @@ def test_fe_lip_force_is_affine_in_the_rubber_modulus():
     assert share_old[0.5] < 0.1 < share_old[1.0]
 
 
-@pytest.mark.xdist_group("lip_fe")  # one worker builds the lip map (64 s), not both
 @pytest.mark.xfail(strict=True, reason=(
     "the generic 80 mm lip held an hour (held modulus, 0.51 of the constants' 1 Hz level) "
     "presses with 23.4 N = 0.093 N/mm at 20 degC, 7 % below the 100-200 N/m design range "
