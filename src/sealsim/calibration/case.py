@@ -65,7 +65,8 @@ from sealsim.measurements.readers import QUANTITIES, ColumnSpec
 from sealsim.pneumatic.case import MapModel
 
 __all__ = ["ContactModel", "FitParameter", "FrictionFitCase", "MeasurementModel",
-           "check_measurements", "contact_of", "parse_field_value", "parse_law_value"]
+           "check_measurements", "contact_of", "contact_table", "parse_field_value",
+           "parse_law_value"]
 
 
 class FitParameter(CaseModel):
@@ -235,6 +236,11 @@ class FrictionFitCase(CaseModel):
 def contact_of(case: FrictionFitCase, spec: MeasurementModel) -> ContactModel | None:
     """The contact of a measurement: its ``[contacts.NAME]``, else the case's ``[contact]``."""
     return case.contacts[spec.contact] if spec.contact is not None else case.contact
+
+
+def contact_table(name: str | None) -> str:
+    """The case's table of a contact, for messages: ``contacts.NAME``, or ``contact`` (None)."""
+    return "contact" if name is None else f"contacts.{name}"
 
 
 def check_measurements(measurements) -> None:

@@ -37,6 +37,7 @@ from sealsim.calibration.case import (
     FrictionFitCase,
     MeasurementModel,
     contact_of,
+    contact_table,
     parse_law_value,
 )
 from sealsim.calibration.statistics import compare_signals, parameter_statistics
@@ -162,9 +163,9 @@ def prepare_run(case: FrictionFitCase, spec: MeasurementModel, contact_map=None,
     temperature = spec.temperature if spec.temperature is not None else (
         contact.temperature if contact is not None else None)
     if temperature is None and "temperature" in needs:
-        table = f"[contacts.{spec.contact}]" if spec.contact is not None else "[contact]"
         raise InputError(f"{where}: no seal temperature: {needs['temperature']} needs it; give "
-                         f"temperature = '20 degC' in this measurement or in {table}")
+                         f"temperature = '20 degC' in this measurement or in "
+                         f"[{contact_table(spec.contact)}]")
     known = p is not None
     p = p if known else np.zeros(t.shape)   # the law does not use it (see _needed_conditions)
     dp = np.abs(p)          # piston seal: pressurised side | ambient; rod seal: chamber | ambient
@@ -189,9 +190,8 @@ def prepare_run(case: FrictionFitCase, spec: MeasurementModel, contact_map=None,
         from sealsim.pneumatic.case import map_elastomer, seal_friction_table
 
         law = make_law(case.friction)
-        where_map = (f"contacts.{spec.contact}.map" if spec.contact is not None
-                     else "contact.map")
-        run.contact_table = seal_friction_table(law, contact_map, where_map)
+        run.contact_table = seal_friction_table(law, contact_map,
+                                                f"{contact_table(spec.contact)}.map")
         if run.contact_table is not None:
             run.contact_map = contact_map
             run.tribology = ContactTribology.from_law(law, map_elastomer(contact_map))

@@ -22,7 +22,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from sealsim.calibration.case import FrictionFitCase
+from sealsim.calibration.case import FrictionFitCase, contact_table
 from sealsim.calibration.friction_fit import (
     FitResult,
     PreparedRun,
@@ -51,9 +51,9 @@ def load_fit_case(path: str | Path) -> FrictionFitCase:
 
 def _contact_map(case: FrictionFitCase, base_dir: Path, cache_dir, progress, name=None):
     """The contact map of the case's ``[contact]`` (or of ``[contacts.NAME]``), or None."""
-    where, contact = (("contact", case.contact) if name is None
-                      else (f"contacts.{name}", case.contacts[name]))
-    return _seal_map(contact, where, case.friction.law, base_dir, cache_dir, progress)
+    contact = case.contact if name is None else case.contacts[name]
+    return _seal_map(contact, contact_table(name), case.friction.law, base_dir, cache_dir,
+                     progress)
 
 
 def _seal_map(contact, where: str, law: str, base_dir: Path, cache_dir, progress):
