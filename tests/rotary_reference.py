@@ -29,9 +29,11 @@ def reference_steady_state(case, angular_speed, tol=1e-4, max_iter=100):
         new_contact = model.contact_temperature(temps)
         new_sump = model.sump_temperature(temps)
         converged = abs(new_contact - t_contact) < tol and abs(new_sump - t_sump) < tol
-        # under-relaxation keeps the iteration monotone when the sump is free
-        t_contact = 0.5 * (t_contact + new_contact) if iteration > 20 else new_contact
-        t_sump = new_sump
+        # under-relaxation keeps the iteration monotone when the sump is free: a cold first
+        # guess gives a thick oil and a large friction heat that would overshoot the sump
+        relax = 0.5 if iteration > 20 or not model.sump_fixed else 1.0
+        t_contact = t_contact + relax * (new_contact - t_contact)
+        t_sump = t_sump + relax * (new_sump - t_sump)
         if converged:
             break
     else:

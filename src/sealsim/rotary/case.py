@@ -174,6 +174,7 @@ class ShaftSetup:
     shaft_length_air_side: float
     shaft_oil_end: str
     shaft_air_end: str
+    air_side: str
     housing_heat_transfer: float
     bearing: str
 
@@ -187,24 +188,33 @@ class ShaftSetup:
 #:   case as a rotating fin in the sump (Kays & Bjorklund's rotating cylinder on the wetted
 #:   fraction of the circumference); the modelled shaft reaches a quarter diameter beyond the
 #:   bearing, the fin continues from there.  No boundary of fixed temperature on the oil side.
-#:   On the air side 50 mm of bare shaft lead to the coupling of a motor flanged to the
-#:   housing (an industrial gear motor, the application of Organisciak et al. 2014), which
-#:   holds the shaft end at about the housing temperature (a lumped node when the housing is
-#:   not held).  Housing to ambient 12 W/(m² K): radiation 7.5 (grey body, ε = 0.9) + free
-#:   convection 4.8 (Churchill & Chu) for a 0.3 m wall 40 K above ambient.
+#:   On the air side the shaft leads to the coupling of a motor flanged to the housing (an
+#:   industrial gear motor, the application of Organisciak et al. 2014).  Shaft and coupling
+#:   turn inside the motor adapter, the closed bell housing (IEC adapter or lantern) bolted
+#:   between gear case and motor flange: the air-side shaft, the seal's air face and the air
+#:   pocket under the seal exchange heat with the adapter's air, taken at the housing
+#:   temperature (the adapter is metal bolted to the housing and shields the shaft from the
+#:   room; ``air_side = "ambient"`` for a free input shaft in the room).  50 mm from the
+#:   contact the shaft continues through the coupling into the motor as a rotating fin in
+#:   that air: the motor's own heat, which warms its shaft, is not known here, so no
+#:   temperature is imposed there (``shaft_air_end = "housing"`` holds it at the housing
+#:   temperature, ``"insulated"`` makes the motor shaft as warm as the seal's end; the two
+#:   bracket the default).
+#:   Housing to ambient 12 W/(m² K): radiation 7.5 (grey body, ε = 0.9) + free convection 4.8
+#:   (Churchill & Chu) for a 0.3 m wall 40 K above ambient.
 #: * ``test_rig``: the friction rig of Organisciak et al. (AGMA 14FTM14, 2014): a motor-driven
 #:   shaft, the seal in a compact test head with a small oil bath, the friction measured on an
 #:   air-bearing spindle (no rolling bearing beside the seal).  30 mm of shaft on each side;
-#:   the shaft end in the oil bath and the drive coupling take no heat (insulated); bare
-#:   aluminium test head 6 W/(m² K) (free convection ≈ 5 + radiation ≈ 1, a bright metal
+#:   the shaft end in the oil bath and the drive coupling take no heat (insulated); the
+#:   air-side shaft in the room's air; bare aluminium test head 6 W/(m² K) (free convection ≈ 5 + radiation ≈ 1, a bright metal
 #:   surface with emissivity ≈ 0.1).
 SETUPS: dict[str, ShaftSetup] = {
     "gearbox": ShaftSetup(shaft_length_oil_side=None, shaft_length_air_side=0.05,
-                          shaft_oil_end="fin", shaft_air_end="housing",
+                          shaft_oil_end="fin", shaft_air_end="fin", air_side="adapter",
                           housing_heat_transfer=12.0, bearing="palmgren"),
     "test_rig": ShaftSetup(shaft_length_oil_side=0.03, shaft_length_air_side=0.03,
                            shaft_oil_end="insulated", shaft_air_end="insulated",
-                           housing_heat_transfer=6.0, bearing="none"),
+                           air_side="ambient", housing_heat_transfer=6.0, bearing="none"),
 }
 
 
@@ -253,9 +263,10 @@ class Environment(CaseModel):
 
     setup: Literal["gearbox", "test_rig"] = Field("gearbox", description=(
         "shaft environment: 'gearbox' (seal in a gear unit's bearing cap: the bearing beside "
-        "it heats the shaft, the shaft continues as a rotating fin in the sump, the coupling "
-        "outside sits at the housing temperature) or 'test_rig' (Organisciak et al.'s rig: "
-        "short shaft, small oil bath, insulated ends)"))
+        "it heats the shaft, the shaft continues as a rotating fin in the sump, shaft and "
+        "coupling turn in a motor adapter at the housing temperature, the motor shaft a fin "
+        "in it) or 'test_rig' "
+        "(Organisciak et al.'s rig: short shaft, small oil bath, insulated ends)"))
     ambient_temperature: Q("temperature", gt=200.0, lt=400.0) = 293.15
     start_temperature: Q("temperature", gt=200.0, lt=450.0) | None = Field(
         None, description="initial temperature of shaft, seal, oil and housing; default: the "
@@ -302,8 +313,16 @@ class Environment(CaseModel):
         "temperature (sump), or ends (insulated); default from the setup"))
     shaft_air_end: Literal["housing", "fin", "insulated"] | None = Field(None, description=(
         "beyond shaft_length_air_side the shaft enters a coupling or bearing at the housing "
-        "temperature (housing), continues bare in air (fin), or enters a part that takes no "
-        "heat, e.g. a test-rig spindle (insulated); default from the setup"))
+        "temperature (housing), continues as a rotating fin in the air side's air (fin: "
+        "through a coupling into a motor whose temperature is not known), or enters a part "
+        "that takes no heat, e.g. a test-rig spindle (insulated); default from the setup "
+        "(gearbox: fin, test_rig: insulated)"))
+    air_side: Literal["ambient", "adapter"] | None = Field(None, description=(
+        "what the air-side shaft, the seal's air face and the air pocket under the seal give "
+        "their heat to: the room's air at the ambient temperature (ambient: a free input "
+        "shaft, a test rig) or the air inside a closed motor adapter bolted to the housing, "
+        "taken at the housing temperature (adapter: a gear motor); default from the setup "
+        "(gearbox: adapter, test_rig: ambient)"))
     shaft_conductivity: Q("thermal_conductivity", gt=0) = 45.0
     shaft_density: Q("density", gt=0) = 7850.0
     shaft_specific_heat: Q("specific_heat", gt=0) = 460.0

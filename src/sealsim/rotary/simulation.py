@@ -276,10 +276,11 @@ class RotaryModel:
             fixed.append("sump")
         else:
             lumped = {"sump": sump_capacity, **lumped}
-        air_end_node = "housing" if env.shaft_air_end == "housing" else "ambient"
-        nodes = {"shaft_oil": "sump", "shaft_air": "ambient", "shaft_end_oil": "sump",
+        self.air_node = "housing" if env.air_side == "adapter" else "ambient"
+        air_end_node = "housing" if env.shaft_air_end == "housing" else self.air_node
+        nodes = {"shaft_oil": "sump", "shaft_air": self.air_node, "shaft_end_oil": "sump",
                  "shaft_end_air": air_end_node, "lip_oil": "sump", "seal_oil": "sump",
-                 "seal_air": "ambient", "seal_housing": "housing",
+                 "seal_air": self.air_node, "seal_housing": "housing",
                  "shaft_pocket": "air_pocket", "seal_pocket": "air_pocket"}
         self.network = ThermalNetwork(self.grid.conduction, lumped, fixed,
                                       {g: (faces, nodes[g]) for g, faces in
@@ -301,10 +302,13 @@ class RotaryModel:
         quiescent bath (``"open"``, Kays & Bjorklund); from the bearing on, in the gear case,
         always the open bath; oil at the sump temperature; on the rest of the circumference
         gearbox air at sump temperature.  Shaft in air: rotating cylinder (Kays & Bjorklund) in
-        ambient air; all never below free convection (Churchill & Chu, ΔT = 10 K).  Shaft ends
+        the air of the air side (``environment.air_side``: the room's air at the ambient
+        temperature, or a motor adapter's air at the housing temperature, its properties taken
+        at the sump temperature, which a held or lumped housing follows within a few kelvin);
+        all never below free convection (Churchill & Chu, ΔT = 10 K).  Shaft ends
         (``environment.shaft_oil_end`` / ``shaft_air_end``): held at the sump or housing
         temperature (:data:`END_CONTACT`), a semi-infinite rotating fin √(4·h·k/d) (in the
-        sump: the open-bath coefficient; in air: ambient), or insulated.  Seal surfaces: a
+        sump: the open-bath coefficient; in air: the air side's), or insulated.  Seal surfaces: a
         fraction of the shaft's coefficient (``[thermal]``), the lip's oil side times the lip
         style's heat exchange factor.
         """
@@ -340,7 +344,7 @@ class RotaryModel:
         if self.bearing_span is not None:  # in the gear case from the bearing on
             h_shaft_oil = np.where(self.shaft_oil_z < self.bearing_span[1], h_shaft_case,
                                    h_shaft_near)
-        h_air = h_air_at(env.ambient_temperature)
+        h_air = h_air_at(ts if env.air_side == "adapter" else env.ambient_temperature)
         k_shaft = env.shaft_conductivity
         ends = {"sump": END_CONTACT, "housing": END_CONTACT, "insulated": 0.0}
         return {
@@ -360,11 +364,12 @@ class RotaryModel:
     def assemble(self, angular_speed: float, sump_temperature: float):
         """Network matrices at this speed and sump temperature.
 
-        The air pocket exchanges with the ambient through its annular opening with the shaft's
-        air-side coefficient.
+        The air pocket exchanges with the air side's air (:attr:`air_node`) through its
+        annular opening with the shaft's air-side coefficient.
         """
         h = self.coefficients(angular_speed, sump_temperature)
-        pocket = Link("air_pocket", "ambient", h["shaft_air"] * self.grid.pocket_opening_area)
+        pocket = Link("air_pocket", self.air_node,
+                      h["shaft_air"] * self.grid.pocket_opening_area)
         return self.network.assemble(h, [*self.links, pocket])
 
     def fixed_temperatures(self) -> np.ndarray:
