@@ -206,8 +206,8 @@ class ShaftSetup:
 #:   shaft, the seal in a compact test head with a small oil bath, the friction measured on an
 #:   air-bearing spindle (no rolling bearing beside the seal).  30 mm of shaft on each side;
 #:   the shaft end in the oil bath and the drive coupling take no heat (insulated); the
-#:   air-side shaft in the room's air; bare aluminium test head 6 W/(m² K) (free convection ≈ 5 + radiation ≈ 1, a bright metal
-#:   surface with emissivity ≈ 0.1).
+#:   air-side shaft in the room's air; bare aluminium test head 6 W/(m² K) (free convection
+#:   ≈ 5 + radiation ≈ 1, a bright metal surface with emissivity ≈ 0.1).
 SETUPS: dict[str, ShaftSetup] = {
     "gearbox": ShaftSetup(shaft_length_oil_side=None, shaft_length_air_side=0.05,
                           shaft_oil_end="fin", shaft_air_end="fin", air_side="adapter",
