@@ -121,6 +121,11 @@ def test_lip_seal_page_shows_the_api_torque(server, browser):
     assert float(torque.text) == pytest.approx(expected["torque_Nm"], rel=5e-4)
     contact = browser.find_element("id", "lip-tcontact")
     assert float(contact.get_attribute("data-value")) == expected["T_contact_C"]
+    for element_id, key in (("lip-heat-oil", "heat_oil_side_W"),
+                            ("lip-heat-housing", "heat_housing_W"),
+                            ("lip-heat-air", "heat_air_side_W")):
+        assert float(browser.find_element("id", element_id).get_attribute("data-value")) \
+            == expected[key], key
     assert browser.find_element("id", "lip-notes").find_elements("tag name", "li")
     _wait(browser, _visible("lip-curve"))
     # the download is a rotary case that validates and names the same operating point

@@ -407,6 +407,36 @@ def test_gearbox_contact_never_below_the_sump_with_cold_ambient():
     assert min(_rise_over_sump({}, rpm) for rpm in GEARBOX_RPM) >= 0.0
 
 
+@pytest.mark.parametrize("environment", [
+    {"sump_temperature": "80 degC"},                          # gearbox, held sump
+    {"setup": "test_rig", "sump_volume": "3 L"},              # rig, free sump
+    {"sump_temperature": "80 degC", "air_side": "ambient", "shaft_air_end": "housing"},
+])
+@pytest.mark.parametrize("rpm", [10, 1000, 3000])
+def test_heat_paths_carry_away_what_the_seal_and_bearing_put_in(environment, rpm):
+    # Energy conservation of the steady state: the heat leaving shaft and seal through the
+    # oil side, the housing and the air side is the seal's friction heat plus the bearing's
+    # shaft share (bearing.shaft_share of its heat enters under the inner ring); both sides
+    # are computed independently (network flows vs friction and bearing laws); the steady
+    # state converges to 1e-8 K, so 1e-6 relative.
+    case = _case(environment=environment)
+    r = steady_state(case, rpm * RPM)
+    heat_in = r["power_W"] + case.environment.bearing.shaft_share * r["bearing_power_W"]
+    heat_out = r["heat_oil_side_W"] + r["heat_housing_W"] + r["heat_air_side_W"]
+    assert heat_out == pytest.approx(heat_in, rel=1e-6)
+
+
+def test_heat_paths_all_leave_when_nothing_is_colder_than_the_sump():
+    # Housing and room held at the sump temperature: by the maximum principle no temperature
+    # of shaft, seal or air pocket is below 80 °C, so no path can bring heat in (to round-off).
+    case = _case(environment={"sump_temperature": "80 degC", "housing_temperature": "80 degC",
+                              "ambient_temperature": "80 degC"})
+    r = steady_state(case, 1000 * RPM)
+    # nothing is colder than the sump: no path can bring heat in (maximum principle)
+    for path in ("heat_oil_side_W", "heat_housing_W", "heat_air_side_W"):
+        assert r[path] >= -1e-9, path
+
+
 def test_motor_adapter_shields_the_air_side_from_the_room():
     # In a gear motor the air-side shaft turns in the closed adapter bolted to the housing:
     # with the housing held, the room's temperature cannot reach the seal (to round-off),

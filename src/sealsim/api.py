@@ -48,7 +48,9 @@ MAX_POINTS = {"lip_seal_torque": 10_000, "seal_friction": 1_000_000}
 
 #: Columns of :func:`lip_seal_torque` (units in the names).
 LIP_SEAL_COLUMNS = ["shaft_diameter_mm", "speed_rpm", "torque_Nm", "power_W", "T_contact_C",
-                    "T_groove_C", "T_sump_C", "film_um", "F_lub_N", "F_material_N", "lip_note"]
+                    "T_groove_C", "T_sump_C", "film_um", "F_lub_N", "F_material_N",
+                    "bearing_power_W", "heat_oil_side_W", "heat_housing_W", "heat_air_side_W",
+                    "lip_note"]
 #: Columns of :func:`seal_friction` (units in the names; pressure is gauge, across the seal).
 SEAL_FRICTION_COLUMNS = ["velocity_m_s", "pressure_bar", "temperature_C", "friction_N",
                          "normal_force_N", "contact_width_mm", "film_um", "asperity_share",
@@ -117,8 +119,11 @@ def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] = "VG68-
     -------
     dict or pandas.DataFrame
         shaft_diameter_mm, speed_rpm, torque_Nm, power_W, T_contact_C, T_groove_C,
-        T_sump_C, film_um, F_lub_N, F_material_N, lip_note (text: the lip's mounting case when
-        it runs colder than it was mounted, else ""): a dict for scalar arguments (with
+        T_sump_C, film_um, F_lub_N, F_material_N, bearing_power_W (the bearing beside the
+        seal), heat_oil_side_W, heat_housing_W, heat_air_side_W (where the heat leaves shaft
+        and seal: into the oil side, through the seal's outer diameter, on the air side; they
+        add up to power_W plus the bearing's shaft share), lip_note (text: the lip's mounting
+        case when it runs colder than it was mounted, else ""): a dict for scalar arguments (with
         ``notes``, a list of str), a DataFrame with one row per point when any of
         shaft_diameter, speed, sump_temperature, ambient_temperature is an array (they
         broadcast against each other; notes in ``frame.attrs["notes"]``).  The notes (also

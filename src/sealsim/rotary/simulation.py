@@ -404,6 +404,24 @@ class RotaryModel:
                 break
         return s
 
+    #: Face groups of each heat path out of shaft and seal (:meth:`heat_paths`)
+    HEAT_PATHS = {"oil_side": ("shaft_oil", "shaft_end_oil", "lip_oil", "seal_oil"),
+                  "housing": ("seal_housing",),
+                  "air_side": ("shaft_air", "seal_air", "shaft_end_air", "shaft_pocket",
+                               "seal_pocket")}
+
+    def heat_paths(self, temperatures: np.ndarray, angular_speed: float,
+                   sump_temperature: float) -> dict[str, float]:
+        """Heat [W] leaving shaft and seal by each path: ``oil_side`` (the shaft and the
+        seal's faces into the oil and the gear case, the shaft's continuation in the sump),
+        ``housing`` (through the seal's outer diameter into its bore) and ``air_side`` (the
+        air-side shaft, the seal's air face and the air pocket under it, and the shaft's end
+        there: coupling or motor shaft).  In a steady state they add up to the seal's
+        friction heat plus the bearing's shaft share."""
+        groups = self.network.group_heat(temperatures, self.fixed_temperatures(),
+                                         self.coefficients(angular_speed, sump_temperature))
+        return {path: sum(groups[g] for g in names) for path, names in self.HEAT_PATHS.items()}
+
     def contact_temperature(self, temperatures: np.ndarray) -> float:
         return float(temperatures[self.grid.contact_cells] @ self.grid.contact_weights)
 
@@ -680,7 +698,9 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
     dict
         torque_Nm, power_W, T_contact_C, T_groove_C, T_sump_C, T_housing_C, film_um, F_lub_N,
         F_material_N, lip_force_N, mu_dry, asperity_share, bearing_power_W (friction heat of
-        the bearing beside the seal), iterations, lip_note (which mounting case the lip
+        the bearing beside the seal), heat_oil_side_W, heat_housing_W, heat_air_side_W (where
+        the heat leaves shaft and seal, :meth:`RotaryModel.heat_paths`), iterations,
+        lip_note (which mounting case the lip
         force is when the lip runs colder than it was mounted, else "").  A film outside the
         measured range of lip seal films gives a
         :class:`~sealsim.tribology.film.FilmRangeWarning`.
@@ -741,6 +761,7 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
     t_contact = model.contact_temperature(temps)
     state = friction_at(t_contact)
     film = float(state.film)
+    paths = model.heat_paths(temps, angular_speed, model.sump_temperature(temps))
     if angular_speed != 0 and film_range_note(film, film):
         warnings.warn(film_range_note(film, film), FilmRangeWarning, stacklevel=2)
     return {"torque_Nm": float(state.torque), "power_W": float(state.power),
@@ -752,6 +773,7 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
             "lip_force_N": float(state.lip_force), "mu_dry": float(state.mu_dry),
             "asperity_share": float(state.asperity_share),
             "bearing_power_W": model.bearing_heat(angular_speed, model.sump_temperature(temps)),
+            **{f"heat_{path}_W": heat for path, heat in paths.items()},
             "iterations": iteration, "lip_note": lip_note(case, t_contact)}
 
 

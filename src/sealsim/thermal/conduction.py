@@ -350,15 +350,8 @@ class ThermalNetwork:
         F : scipy.sparse.csr_matrix, shape (n, n_fixed)
             Coupling to the fixed nodes: the heat flow into the unknowns is F·T_fixed − K·T.
         """
-        b = self.conduction.boundary
-        conductances = []
-        for group, (faces, _) in self.face_groups.items():
-            h = np.asarray(coefficients[group], dtype=float)
-            if np.any(h < 0) or not np.all(np.isfinite(h)):
-                raise ValueError(f"heat transfer coefficient of {group!r} must be finite, >= 0")
-            with np.errstate(divide="ignore"):
-                g = 1.0 / (b.resistance[faces] + 1.0 / (h * b.area[faces]))
-            conductances.append(np.broadcast_to(g, faces.shape))
+        conductances = [self._face_conductance(group, coefficients[group])
+                        for group in self.face_groups]
         conductances.append(np.array([link.conductance for link in links], dtype=float))
         g_all = np.concatenate(conductances)
         plan = self._plan(tuple((link.a, link.b) for link in links))
@@ -367,6 +360,47 @@ class ThermalNetwork:
         f = sp.csr_matrix((plan["f_scatter"] @ g_all, plan["f_indices"], plan["f_indptr"]),
                           shape=(self.n, len(self.fixed_names)))
         return k, f
+
+    def _face_conductance(self, group: str, coefficient) -> np.ndarray:
+        """Conductance [W/K] of each face of a group, cell centre to node: the half-cell
+        resistance in series with the convection 1/(h·A)."""
+        faces, _ = self.face_groups[group]
+        b = self.conduction.boundary
+        h = np.asarray(coefficient, dtype=float)
+        if np.any(h < 0) or not np.all(np.isfinite(h)):
+            raise ValueError(f"heat transfer coefficient of {group!r} must be finite, >= 0")
+        with np.errstate(divide="ignore"):
+            g = 1.0 / (b.resistance[faces] + 1.0 / (h * b.area[faces]))
+        return np.broadcast_to(g, faces.shape)
+
+    def group_heat(self, temperatures: np.ndarray, fixed_temperatures: Sequence[float],
+                   coefficients: Mapping[str, float | np.ndarray]) -> dict[str, float]:
+        """Heat [W] that leaves the conduction cells through each face group into its node,
+        Σ g·(T_cell − T_node) with the conductances of :meth:`assemble`.
+
+        Parameters
+        ----------
+        temperatures : numpy.ndarray
+            Temperatures of the unknowns [K] (cells, then lumped nodes).
+        fixed_temperatures : sequence of float
+            Temperatures of the fixed nodes [K], in the order of ``fixed_names``.
+        coefficients : mapping
+            Heat transfer coefficient [W/(m²·K)] per face group, as for :meth:`assemble`.
+
+        Returns
+        -------
+        dict
+            ``{group: heat [W]}``, positive out of the solid.  In a steady state the groups
+            together carry away what the sources put into the cells (energy conservation).
+        """
+        fixed = dict(zip(self.fixed_names, fixed_temperatures))
+        cells = self.conduction.boundary.cell
+        out = {}
+        for group, (faces, node) in self.face_groups.items():
+            t_node = fixed[node] if node in fixed else temperatures[self.node_index[node]]
+            g = self._face_conductance(group, coefficients[group])
+            out[group] = float(g @ (temperatures[cells[faces]] - t_node))
+        return out
 
     def _plan(self, link_nodes: tuple[tuple[str, str], ...]) -> dict:
         """Sparsity pattern of (K, F) and the maps from conductances to matrix entries."""

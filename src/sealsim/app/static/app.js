@@ -116,6 +116,9 @@ $("lip-form").addEventListener("submit", async (event) => {
   show("lip-tcontact", p.T_contact_C);
   show("lip-tsump", p.T_sump_C);
   show("lip-film", p.film_um, 3);
+  show("lip-heat-oil", p.heat_oil_side_W, 3);
+  show("lip-heat-housing", p.heat_housing_W, 3);
+  show("lip-heat-air", p.heat_air_side_W, 3);
   fillNotes("lip-notes", data.notes);
   const blob = new Blob([data.case_toml], {type: "application/toml"});
   $("lip-download").href = URL.createObjectURL(blob);
