@@ -18,16 +18,17 @@ def _minutes(frame: pd.DataFrame) -> np.ndarray:
 
 
 def cycle_figure(frame: pd.DataFrame, shaft_radius: float, title: str = ""):
-    """Speed | torque | temperatures over time for one variant (like Organisciak et al.
-    2014, Fig. 9).
+    """Speed | torque | temperatures | heat over time for one variant (the first three like
+    Organisciak et al. 2014, Fig. 9).
 
     The torque panel splits the torque into its lubricant-shear and rubber parts (forces times
     the shaft radius [m]); the temperature panel shows the spring-groove temperature (the
     paper's thermocouple), the contact temperature and the sump in three colours and line
     styles, so lines that lie on top of each other (a groove in oil at the sump temperature)
-    stay distinguishable.
+    stay distinguishable; the heat panel shows the friction heat and where heat leaves shaft
+    and seal (oil side, the seal's bore, air side; negative: heat coming in).
     """
-    fig, axes = new_figure(3, 1, width=13.0, height=4.0)
+    fig, axes = new_figure(4, 1, width=17.0, height=4.0)
     t = _minutes(frame)
     axes[0].plot(t, frame["speed_rpm"], color="k")
     axes[0].set_ylabel("Speed [rpm]")
@@ -46,6 +47,15 @@ def cycle_figure(frame: pd.DataFrame, shaft_radius: float, title: str = ""):
                  zorder=3)
     axes[2].set_ylabel("Temperature [°C]")
     axes[2].legend(loc="best", fontsize=8)
+    axes[3].plot(t, frame["power_W"], color="k", lw=1.8, label="seal friction heat")
+    for column, colour, style, label in (
+            ("heat_oil_side_W", "tab:blue", "-", "out: oil side"),
+            ("heat_air_side_W", "tab:orange", "--", "out: air side"),
+            ("heat_housing_W", "tab:green", ":", "out: seal bore")):
+        axes[3].plot(t, frame[column], color=colour, lw=1.3, ls=style, label=label)
+    axes[3].axhline(0.0, color="0.5", lw=0.8)
+    axes[3].set_ylabel("Heat [W]")
+    axes[3].legend(loc="best", fontsize=8)
     for ax in axes:
         ax.set_xlabel("Time [min]")
         ax.grid(True, alpha=0.3)

@@ -91,7 +91,8 @@ STEADY_WINDOW = 60.0
 
 TIMESERIES_COLUMNS = ["time_s", "speed_rpm", "torque_Nm", "power_W", "T_contact_C",
                       "T_groove_C", "T_sump_C", "film_um", "F_lub_N", "F_material_N",
-                      "T_housing_C", "lip_force_N", "mu_eff", "film_ratio", "duty_parameter"]
+                      "T_housing_C", "lip_force_N", "mu_eff", "film_ratio", "duty_parameter",
+                      "heat_oil_side_W", "heat_housing_W", "heat_air_side_W"]
 
 
 def housing_defaults(sump_volume: float) -> tuple[float, float, float]:
@@ -410,16 +411,16 @@ class RotaryModel:
                   "air_side": ("shaft_air", "seal_air", "shaft_end_air", "shaft_pocket",
                                "seal_pocket")}
 
-    def heat_paths(self, temperatures: np.ndarray, angular_speed: float,
-                   sump_temperature: float) -> dict[str, float]:
+    def heat_paths(self, temperatures: np.ndarray, conductances: dict) -> dict[str, float]:
         """Heat [W] leaving shaft and seal by each path: ``oil_side`` (the shaft and the
         seal's faces into the oil and the gear case, the shaft's continuation in the sump),
         ``housing`` (through the seal's outer diameter into its bore) and ``air_side`` (the
         air-side shaft, the seal's air face and the air pocket under it, and the shaft's end
         there: coupling or motor shaft).  In a steady state they add up to the seal's
-        friction heat plus the bearing's shaft share."""
-        groups = self.network.group_heat(temperatures, self.fixed_temperatures(),
-                                         self.coefficients(angular_speed, sump_temperature))
+        friction heat plus the bearing's shaft share.  ``conductances``: the network's
+        :meth:`~sealsim.thermal.conduction.ThermalNetwork.face_conductances` of the
+        :meth:`coefficients` the temperatures were solved with."""
+        groups = self.network.group_heat(temperatures, self.fixed_temperatures(), conductances)
         return {path: sum(groups[g] for g in names) for path, names in self.HEAT_PATHS.items()}
 
     def contact_temperature(self, temperatures: np.ndarray) -> float:
@@ -513,6 +514,7 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
     k_break = 1
     last_report = -1.0
     calm_since, steady = None, False
+    conductances: dict[tuple, dict] = {}
     while t < end - 1e-9 or (extend and not steady and t < limit - 1e-9):
         while k_break < len(breaks) and breaks[k_break] <= t + 1e-9:
             k_break += 1
@@ -535,6 +537,9 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
                              f"{t_contact - ZERO_CELSIUS_K:.1f} degC): {exc}") from None
         power = float(state.power)
         key = (round(math.log1p(abs(omega)) / 0.02), round(t_sump / 2.0))
+        if key not in conductances:  # those of the bin, as its factorisation has them
+            conductances[key] = model.network.face_conductances(
+                model.coefficients(omega, t_sump))
         before = watched(temps)
         bearing = model.bearing_source(omega, t_sump)
         temps, heat_out = stepper.step(temps, h, model.source(power) + bearing, fixed, key,
@@ -545,7 +550,7 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
         generated_bearing += float(bearing.sum()) * h
         dissipated += heat_out
         t_contact = model.contact_temperature(temps)
-        rows.append(_row(model, state, t1, omega, temps, t_contact))
+        rows.append(_row(model, state, t1, omega, temps, t_contact, conductances[key]))
         t = t1
         if extend and t >= end - 1e-9:
             calm = float(np.max(np.abs(watched(temps) - before))) / h < case.duty.steady_rate
@@ -571,7 +576,10 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
     frame = pd.DataFrame(rows, columns=TIMESERIES_COLUMNS)
     frame = pd.concat([pd.DataFrame([_row(model, model.friction.evaluate(
         float(speeds[0]), model.start_temperature), 0.0, float(speeds[0]),
-        np.full(model.network.n, model.start_temperature), model.start_temperature)],
+        np.full(model.network.n, model.start_temperature), model.start_temperature,
+        model.network.face_conductances(model.coefficients(
+            float(speeds[0]), model.sump_temperature(np.full(model.network.n,
+                                                             model.start_temperature)))))],
         columns=TIMESERIES_COLUMNS), frame], ignore_index=True)
 
     stored = float(capacity @ temps - stored0)
@@ -625,7 +633,9 @@ def operating_notes(case: RotaryCase, elastomer, contact_temperatures_c, sliding
     return notes
 
 
-def _row(model: RotaryModel, state: FrictionState, t, omega, temps, t_contact) -> tuple:
+def _row(model: RotaryModel, state: FrictionState, t, omega, temps, t_contact,
+         conductances) -> tuple:
+    """One timeseries row; the heat paths with the face conductances of the step."""
     torque = float(state.torque)
     lip_force = float(state.lip_force)
     mu_eff = abs(torque) * 2 / model.case.seal.shaft_diameter / lip_force
@@ -635,7 +645,7 @@ def _row(model: RotaryModel, state: FrictionState, t, omega, temps, t_contact) -
             model.sump_temperature(temps) - ZERO_CELSIUS_K, float(state.film) * 1e6,
             float(state.force_lubricant), float(state.force_material),
             model.housing_temperature(temps) - ZERO_CELSIUS_K, lip_force, mu_eff,
-            float(state.film_ratio), g)
+            float(state.film_ratio), g, *model.heat_paths(temps, conductances).values())
 
 
 #: The validation convention of Organisciak et al. (2014): average over the last 30 s of each
@@ -761,7 +771,8 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
     t_contact = model.contact_temperature(temps)
     state = friction_at(t_contact)
     film = float(state.film)
-    paths = model.heat_paths(temps, angular_speed, model.sump_temperature(temps))
+    paths = model.heat_paths(temps, model.network.face_conductances(
+        model.coefficients(angular_speed, model.sump_temperature(temps))))
     if angular_speed != 0 and film_range_note(film, film):
         warnings.warn(film_range_note(film, film), FilmRangeWarning, stacklevel=2)
     return {"torque_Nm": float(state.torque), "power_W": float(state.power),

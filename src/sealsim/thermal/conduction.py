@@ -350,8 +350,7 @@ class ThermalNetwork:
         F : scipy.sparse.csr_matrix, shape (n, n_fixed)
             Coupling to the fixed nodes: the heat flow into the unknowns is F·T_fixed − K·T.
         """
-        conductances = [self._face_conductance(group, coefficients[group])
-                        for group in self.face_groups]
+        conductances = list(self.face_conductances(coefficients).values())
         conductances.append(np.array([link.conductance for link in links], dtype=float))
         g_all = np.concatenate(conductances)
         plan = self._plan(tuple((link.a, link.b) for link in links))
@@ -361,22 +360,31 @@ class ThermalNetwork:
                           shape=(self.n, len(self.fixed_names)))
         return k, f
 
-    def _face_conductance(self, group: str, coefficient) -> np.ndarray:
-        """Conductance [W/K] of each face of a group, cell centre to node: the half-cell
-        resistance in series with the convection 1/(h·A)."""
-        faces, _ = self.face_groups[group]
+    def face_conductances(self, coefficients: Mapping[str, float | np.ndarray]
+                          ) -> dict[str, np.ndarray]:
+        """Conductance [W/K] of each boundary face, cell centre to its node: the half-cell
+        resistance in series with the convection 1/(h·A), per face group.
+
+        Parameters
+        ----------
+        coefficients : mapping
+            Heat transfer coefficient [W/(m²·K)] per face group (scalar or one per face).
+        """
         b = self.conduction.boundary
-        h = np.asarray(coefficient, dtype=float)
-        if np.any(h < 0) or not np.all(np.isfinite(h)):
-            raise ValueError(f"heat transfer coefficient of {group!r} must be finite, >= 0")
-        with np.errstate(divide="ignore"):
-            g = 1.0 / (b.resistance[faces] + 1.0 / (h * b.area[faces]))
-        return np.broadcast_to(g, faces.shape)
+        out = {}
+        for group, (faces, _) in self.face_groups.items():
+            h = np.asarray(coefficients[group], dtype=float)
+            if np.any(h < 0) or not np.all(np.isfinite(h)):
+                raise ValueError(f"heat transfer coefficient of {group!r} must be finite, >= 0")
+            with np.errstate(divide="ignore"):
+                g = 1.0 / (b.resistance[faces] + 1.0 / (h * b.area[faces]))
+            out[group] = np.broadcast_to(g, faces.shape)
+        return out
 
     def group_heat(self, temperatures: np.ndarray, fixed_temperatures: Sequence[float],
-                   coefficients: Mapping[str, float | np.ndarray]) -> dict[str, float]:
+                   conductances: Mapping[str, np.ndarray]) -> dict[str, float]:
         """Heat [W] that leaves the conduction cells through each face group into its node,
-        Σ g·(T_cell − T_node) with the conductances of :meth:`assemble`.
+        Σ g·(T_cell − T_node).
 
         Parameters
         ----------
@@ -384,8 +392,8 @@ class ThermalNetwork:
             Temperatures of the unknowns [K] (cells, then lumped nodes).
         fixed_temperatures : sequence of float
             Temperatures of the fixed nodes [K], in the order of ``fixed_names``.
-        coefficients : mapping
-            Heat transfer coefficient [W/(m²·K)] per face group, as for :meth:`assemble`.
+        conductances : mapping
+            :meth:`face_conductances` of the coefficients the temperatures were solved with.
 
         Returns
         -------
@@ -398,8 +406,7 @@ class ThermalNetwork:
         out = {}
         for group, (faces, node) in self.face_groups.items():
             t_node = fixed[node] if node in fixed else temperatures[self.node_index[node]]
-            g = self._face_conductance(group, coefficients[group])
-            out[group] = float(g @ (temperatures[cells[faces]] - t_node))
+            out[group] = float(conductances[group] @ (temperatures[cells[faces]] - t_node))
         return out
 
     def _plan(self, link_nodes: tuple[tuple[str, str], ...]) -> dict:
