@@ -661,7 +661,8 @@ def _step_summary(frame: pd.DataFrame, steps, speeds, times) -> list[dict]:
         entry = {"start_s": float(start), "end_s": float(stop),
                  "speed_rpm": round(float(np.interp(stop - 1e-9, times, speeds)) * 30 / math.pi,
                                     6)}
-        for column in ("torque_Nm", "power_W", "T_contact_C", "T_groove_C", "T_sump_C"):
+        for column in ("torque_Nm", "power_W", "T_contact_C", "T_groove_C", "T_sump_C",
+                       "heat_oil_side_W", "heat_housing_W", "heat_air_side_W"):
             entry[column] = _time_average(t, frame[column].to_numpy(), lo, stop)
         out.append(entry)
     return out
