@@ -64,19 +64,20 @@ def test_heated_ring_matches_fin_solution():
 def test_group_heat_of_the_heated_ring_is_the_fin_heat():
     # The ring source q on a long shaft leaves through its surface: in the steady state the
     # surface's heat flow is q (conservation, round-off), and the half of it on z > 0 is
-    # what one semi-infinite fin carries, q/2 (symmetry: 1 % for the grid's asymmetry about
-    # the band; the adiabatic shaft ends, e^{-mL} = e^{-6.5} of the fin, change nothing here).
-    q, length = 10.0, 0.8
-    model, temps, _ = _heated_ring_on_shaft(q=q, length=length)
+    # what one semi-infinite fin carries, q/2 (the grid is symmetric about the band: to
+    # round-off as well).
+    q, h = 10.0, 30.0
+    model, temps, _ = _heated_ring_on_shaft(h=h, q=q)
     surface = np.nonzero(model.boundary.side == 1)[0]
     right = surface[model.boundary.z[surface] > 0]
     net = ThermalNetwork(model, {}, ["ambient"], {"left": (np.setdiff1d(surface, right),
                                                            "ambient"),
                                                   "right": (right, "ambient")})
-    coefficients = {"left": 30.0, "right": 30.0}
-    heat = net.group_heat(temps, [0.0], net.face_conductances(coefficients))
+    heat = net.group_heat(temps, [0.0], net.face_conductances({"left": h, "right": h}))
     assert heat["left"] + heat["right"] == pytest.approx(q, rel=1e-9)
-    assert heat["right"] == pytest.approx(q / 2, rel=0.01)
+    assert heat["right"] == pytest.approx(q / 2, rel=1e-9)
+    with pytest.raises(ValueError, match="1 fixed nodes"):
+        net.group_heat(temps, [0.0, 1.0], net.face_conductances({"left": h, "right": h}))
 
 
 def test_graded_edges_hit_breakpoints_exactly():

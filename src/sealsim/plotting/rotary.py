@@ -25,8 +25,10 @@ def cycle_figure(frame: pd.DataFrame, shaft_radius: float, title: str = ""):
     the shaft radius [m]); the temperature panel shows the spring-groove temperature (the
     paper's thermocouple), the contact temperature and the sump in three colours and line
     styles, so lines that lie on top of each other (a groove in oil at the sump temperature)
-    stay distinguishable; the heat panel shows the friction heat and where heat leaves shaft
-    and seal (oil side, the seal's bore, air side; negative: heat coming in).
+    stay distinguishable; the heat panel shows the friction heat (with a bearing beside the
+    seal, also what enters shaft and seal with its share) and where heat leaves shaft and
+    seal (oil side, the seal's bore, air side; negative: heat coming in; in a warm-up the
+    difference is stored).
     """
     fig, axes = new_figure(4, 1, width=17.0, height=4.0)
     t = _minutes(frame)
@@ -48,6 +50,9 @@ def cycle_figure(frame: pd.DataFrame, shaft_radius: float, title: str = ""):
     axes[2].set_ylabel("Temperature [°C]")
     axes[2].legend(loc="best", fontsize=8)
     axes[3].plot(t, frame["power_W"], color="k", lw=1.8, label="seal friction heat")
+    if frame["bearing_to_shaft_W"].any():
+        axes[3].plot(t, frame["power_W"] + frame["bearing_to_shaft_W"], color="0.4", lw=1.4,
+                     label="in: seal + bearing into the shaft")
     for column, colour, style, label in (
             ("heat_oil_side_W", "tab:blue", "-", "out: oil side"),
             ("heat_air_side_W", "tab:orange", "--", "out: air side"),

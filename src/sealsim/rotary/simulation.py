@@ -92,7 +92,8 @@ STEADY_WINDOW = 60.0
 TIMESERIES_COLUMNS = ["time_s", "speed_rpm", "torque_Nm", "power_W", "T_contact_C",
                       "T_groove_C", "T_sump_C", "film_um", "F_lub_N", "F_material_N",
                       "T_housing_C", "lip_force_N", "mu_eff", "film_ratio", "duty_parameter",
-                      "heat_oil_side_W", "heat_housing_W", "heat_air_side_W"]
+                      "bearing_to_shaft_W", "heat_oil_side_W", "heat_housing_W",
+                      "heat_air_side_W"]
 
 
 def housing_defaults(sump_volume: float) -> tuple[float, float, float]:
@@ -305,7 +306,8 @@ class RotaryModel:
         gearbox air at sump temperature.  Shaft in air: rotating cylinder (Kays & Bjorklund) in
         the air of the air side (``environment.air_side``: the room's air at the ambient
         temperature, or a motor adapter's air at the housing temperature, its properties taken
-        at the sump temperature, which a held or lumped housing follows within a few kelvin);
+        at a held housing's temperature, else at the sump's, which a lumped housing follows
+        within about 10 K);
         all never below free convection (Churchill & Chu, ΔT = 10 K).  Shaft ends
         (``environment.shaft_oil_end`` / ``shaft_air_end``): held at the sump or housing
         temperature (:data:`END_CONTACT`), a semi-infinite rotating fin √(4·h·k/d) (in the
@@ -345,7 +347,8 @@ class RotaryModel:
         if self.bearing_span is not None:  # in the gear case from the bearing on
             h_shaft_oil = np.where(self.shaft_oil_z < self.bearing_span[1], h_shaft_case,
                                    h_shaft_near)
-        h_air = h_air_at(ts if env.air_side == "adapter" else env.ambient_temperature)
+        adapter_air = env.housing_temperature if env.housing_temperature is not None else ts
+        h_air = h_air_at(adapter_air if env.air_side == "adapter" else env.ambient_temperature)
         k_shaft = env.shaft_conductivity
         ends = {"sump": END_CONTACT, "housing": END_CONTACT, "insulated": 0.0}
         return {
@@ -514,7 +517,6 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
     k_break = 1
     last_report = -1.0
     calm_since, steady = None, False
-    conductances: dict[tuple, dict] = {}
     while t < end - 1e-9 or (extend and not steady and t < limit - 1e-9):
         while k_break < len(breaks) and breaks[k_break] <= t + 1e-9:
             k_break += 1
@@ -537,20 +539,22 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
                              f"{t_contact - ZERO_CELSIUS_K:.1f} degC): {exc}") from None
         power = float(state.power)
         key = (round(math.log1p(abs(omega)) / 0.02), round(t_sump / 2.0))
-        if key not in conductances:  # those of the bin, as its factorisation has them
-            conductances[key] = model.network.face_conductances(
-                model.coefficients(omega, t_sump))
         before = watched(temps)
         bearing = model.bearing_source(omega, t_sump)
-        temps, heat_out = stepper.step(temps, h, model.source(power) + bearing, fixed, key,
-                                       lambda o=omega, s=t_sump: model.assemble(o, s))
+        # the face conductances ride with the factorisation: the heat paths of the row are
+        # those of the matrices the step was solved with
+        temps, heat_out = stepper.step(
+            temps, h, model.source(power) + bearing, fixed, key,
+            lambda o=omega, s=t_sump: (*model.assemble(o, s), model.network.face_conductances(
+                model.coefficients(o, s))))
         if not np.all(np.isfinite(temps)):
             raise ModelError(f"rotary simulation: temperatures became non-finite at t = {t1:.1f} s")
         generated += power * h
         generated_bearing += float(bearing.sum()) * h
         dissipated += heat_out
         t_contact = model.contact_temperature(temps)
-        rows.append(_row(model, state, t1, omega, temps, t_contact, conductances[key]))
+        rows.append(_row(model, state, t1, omega, temps, t_contact, stepper.payload,
+                         model.bearing_heat(omega, t_sump)))
         t = t1
         if extend and t >= end - 1e-9:
             calm = float(np.max(np.abs(watched(temps) - before))) / h < case.duty.steady_rate
@@ -574,13 +578,14 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
                          f"NOT steady by duty.max_duration = {limit:g} s"))
 
     frame = pd.DataFrame(rows, columns=TIMESERIES_COLUMNS)
-    frame = pd.concat([pd.DataFrame([_row(model, model.friction.evaluate(
-        float(speeds[0]), model.start_temperature), 0.0, float(speeds[0]),
-        np.full(model.network.n, model.start_temperature), model.start_temperature,
-        model.network.face_conductances(model.coefficients(
-            float(speeds[0]), model.sump_temperature(np.full(model.network.n,
-                                                             model.start_temperature)))))],
-        columns=TIMESERIES_COLUMNS), frame], ignore_index=True)
+    start = np.full(model.network.n, model.start_temperature)
+    first = _row(model, model.friction.evaluate(float(speeds[0]), model.start_temperature),
+                 0.0, float(speeds[0]), start, model.start_temperature,
+                 model.network.face_conductances(model.coefficients(
+                     float(speeds[0]), model.sump_temperature(start))),
+                 model.bearing_heat(float(speeds[0]), model.sump_temperature(start)))
+    frame = pd.concat([pd.DataFrame([first], columns=TIMESERIES_COLUMNS), frame],
+                      ignore_index=True)
 
     stored = float(capacity @ temps - stored0)
     heat_in = generated + generated_bearing
@@ -634,8 +639,9 @@ def operating_notes(case: RotaryCase, elastomer, contact_temperatures_c, sliding
 
 
 def _row(model: RotaryModel, state: FrictionState, t, omega, temps, t_contact,
-         conductances) -> tuple:
-    """One timeseries row; the heat paths with the face conductances of the step."""
+         conductances, bearing_heat) -> tuple:
+    """One timeseries row; the heat paths with the face conductances of the step, the
+    bearing's heat [W] into the shaft (its shaft share)."""
     torque = float(state.torque)
     lip_force = float(state.lip_force)
     mu_eff = abs(torque) * 2 / model.case.seal.shaft_diameter / lip_force
@@ -645,7 +651,9 @@ def _row(model: RotaryModel, state: FrictionState, t, omega, temps, t_contact,
             model.sump_temperature(temps) - ZERO_CELSIUS_K, float(state.film) * 1e6,
             float(state.force_lubricant), float(state.force_material),
             model.housing_temperature(temps) - ZERO_CELSIUS_K, lip_force, mu_eff,
-            float(state.film_ratio), g, *model.heat_paths(temps, conductances).values())
+            float(state.film_ratio), g,
+            bearing_heat * model.case.environment.bearing.shaft_share,
+            *model.heat_paths(temps, conductances).values())
 
 
 #: The validation convention of Organisciak et al. (2014): average over the last 30 s of each

@@ -401,6 +401,9 @@ class ThermalNetwork:
             ``{group: heat [W]}``, positive out of the solid.  In a steady state the groups
             together carry away what the sources put into the cells (energy conservation).
         """
+        if len(fixed_temperatures) != len(self.fixed_names):
+            raise ValueError(f"{len(fixed_temperatures)} fixed temperatures for the "
+                             f"{len(self.fixed_names)} fixed nodes {self.fixed_names}")
         fixed = dict(zip(self.fixed_names, fixed_temperatures))
         cells = self.conduction.boundary.cell
         out = {}
@@ -489,7 +492,9 @@ class BackwardEulerStepper:
 
     A factorisation of (C/Δt + K) is kept per ``key`` (the caller's label of the convection
     state, e.g. a speed bin) and Δt, so piecewise-constant duty cycles factorise only a few
-    times.
+    times.  ``build()`` may return a third item with (K, F), e.g. the face conductances the
+    matrices were assembled from; it is kept with the factorisation and is :attr:`payload`
+    after each :meth:`step` (what that step was solved with).
     """
 
     def __init__(self, network: ThermalNetwork, max_cache: int = 64):
@@ -497,15 +502,17 @@ class BackwardEulerStepper:
         self._cache: dict[Hashable, tuple] = {}
         self.max_cache = max_cache
         self.factorisations = 0
+        self.payload = None
 
     def system(self, key: Hashable, dt: float, build) -> tuple:
-        """Factorised system for ``key`` and ``dt``; ``build()`` returns (K, F) when needed."""
+        """Factorised system (LU, K, F, payload) for ``key`` and ``dt``; ``build()`` returns
+        (K, F) or (K, F, payload) when needed."""
         full_key = (key, dt)
         entry = self._cache.get(full_key)
         if entry is None:
-            k, f = build()
+            k, f, *payload = build()
             lu = factorise((sp.diags(self.network.capacity / dt) + k).tocsc())
-            entry = (lu, k, f)
+            entry = (lu, k, f, payload[0] if payload else None)
             if len(self._cache) >= self.max_cache:
                 self._cache.pop(next(iter(self._cache)))
             self._cache[full_key] = entry
@@ -523,7 +530,7 @@ class BackwardEulerStepper:
         heat_out : float
             Heat that left to the fixed nodes during the step [J].
         """
-        lu, k, f = self.system(key, dt, build)
+        lu, k, f, self.payload = self.system(key, dt, build)
         rhs = self.network.capacity / dt * temperatures + f @ fixed_temperatures + source
         t1 = lu.solve(rhs)
         heat_out = dt * float(np.sum(k @ t1) - np.sum(f @ fixed_temperatures))
