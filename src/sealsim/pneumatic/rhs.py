@@ -223,10 +223,12 @@ def _flows_and_heat(x, p1, p2, t1, t2, s, t_wall, c):
     k1 = _series(c[C_C] * ar_, line1 if p1 > pa else np.inf)
     k2 = _series(c[C_C] * pb_, line2 if p2 > ps else np.inf)
     k3 = _series(c[C_C] * br_, line2 if p2 > pa else np.inf)
-    g0 = _flow(ps, ts, p1, t1, k0, c[C_B], c[C_M], c[C_BETA])
-    g1 = _flow(p1, t1, pa, ta, k1, c[C_B], c[C_M], c[C_BETA])
-    g2 = _flow(ps, ts, p2, t2, k2, c[C_B], c[C_M], c[C_BETA])
-    g3 = _flow(p2, t2, pa, ta, k3, c[C_B], c[C_M], c[C_BETA])
+    # a closed path (conductance 0: half of them whenever the spool is off centre) has no flow;
+    # the ISO 6358 law, which would give 0 · (its finite factors) = 0, is not evaluated there
+    g0 = _flow(ps, ts, p1, t1, k0, c[C_B], c[C_M], c[C_BETA]) if k0 != 0.0 else 0.0
+    g1 = _flow(p1, t1, pa, ta, k1, c[C_B], c[C_M], c[C_BETA]) if k1 != 0.0 else 0.0
+    g2 = _flow(ps, ts, p2, t2, k2, c[C_B], c[C_M], c[C_BETA]) if k2 != 0.0 else 0.0
+    g3 = _flow(p2, t2, pa, ta, k3, c[C_B], c[C_M], c[C_BETA]) if k3 != 0.0 else 0.0
     h0 = AIR_CP * (ts if ps >= p1 else t1) * g0
     h1 = AIR_CP * (t1 if p1 >= pa else ta) * g1
     h2 = AIR_CP * (ts if ps >= p2 else t2) * g2
