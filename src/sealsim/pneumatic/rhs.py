@@ -194,6 +194,16 @@ def profile_point(t, kind, profile):
     return x, (values[i + 1] - values[i]) / (times[i + 1] - times[i])
 
 
+@njit(cache=True)
+def _path_flow(pa, ta, pb, tb, conductance, critical_ratio, subsonic_index, laminar_ratio):
+    """The ISO 6358 flow a → b of a valve path [kg/s]; a closed path (conductance 0: two of the
+    four whenever the spool is off centre) has none, and the law, which would give
+    0 · (its finite factors) = 0, is not evaluated there."""
+    if conductance == 0.0:
+        return 0.0
+    return _flow(pa, ta, pb, tb, conductance, critical_ratio, subsonic_index, laminar_ratio)
+
+
 @njit(inline="always")
 def _seal_loads(i, dp, temp, map_int, map_data):
     """(F_N [N], b [m], clipped) of seal i at Δp [Pa] and its temperature [K]."""
@@ -223,10 +233,10 @@ def _flows_and_heat(x, p1, p2, t1, t2, s, t_wall, c):
     k1 = _series(c[C_C] * ar_, line1 if p1 > pa else np.inf)
     k2 = _series(c[C_C] * pb_, line2 if p2 > ps else np.inf)
     k3 = _series(c[C_C] * br_, line2 if p2 > pa else np.inf)
-    g0 = _flow(ps, ts, p1, t1, k0, c[C_B], c[C_M], c[C_BETA])
-    g1 = _flow(p1, t1, pa, ta, k1, c[C_B], c[C_M], c[C_BETA])
-    g2 = _flow(ps, ts, p2, t2, k2, c[C_B], c[C_M], c[C_BETA])
-    g3 = _flow(p2, t2, pa, ta, k3, c[C_B], c[C_M], c[C_BETA])
+    g0 = _path_flow(ps, ts, p1, t1, k0, c[C_B], c[C_M], c[C_BETA])
+    g1 = _path_flow(p1, t1, pa, ta, k1, c[C_B], c[C_M], c[C_BETA])
+    g2 = _path_flow(ps, ts, p2, t2, k2, c[C_B], c[C_M], c[C_BETA])
+    g3 = _path_flow(p2, t2, pa, ta, k3, c[C_B], c[C_M], c[C_BETA])
     h0 = AIR_CP * (ts if ps >= p1 else t1) * g0
     h1 = AIR_CP * (t1 if p1 >= pa else ta) * g1
     h2 = AIR_CP * (ts if ps >= p2 else t2) * g2
