@@ -22,7 +22,7 @@ from typer.testing import CliRunner
 
 import fmpy  # the test extra installs FMPy
 from fmpy import simulate_fmu
-from fmu_build_once import build_once
+from session_builds import built, session_build
 from hypothesis import given, settings
 from hypothesis import strategies as st
 from fmpy.validation import validate_fmu
@@ -53,20 +53,22 @@ def quiet_law(case):
         return build_law(case)
 
 
-@pytest.fixture(scope="module")
-def fmus(tmp_path_factory, worker_id):
+@session_build("fmus", cost=15)
+def build_fmus(folder):
     """The FMUs of the tests, compiled once: LuGre (FMI 2), Θ (FMI 2), the Θ piston seal of
     the Ø32 cylinder with its analytic contact table (FMI 3)."""
-    def build(folder):
-        return {
-            "lugre": build_fmu(FRICTION / "lugre_hysteresis.toml", folder / "lugre.fmu").path,
-            "theta": build_fmu(FRICTION / "theta_dwell.toml", folder / "theta.fmu").path,
-            "piston3": build_fmu(PNEUMATIC / "cylinder_32.toml", folder / "piston3.fmu",
-                                 seal="piston", fmi_version=3).path,
-        }
+    return {
+        "lugre": build_fmu(FRICTION / "lugre_hysteresis.toml", folder / "lugre.fmu").path,
+        "theta": build_fmu(FRICTION / "theta_dwell.toml", folder / "theta.fmu").path,
+        "piston3": build_fmu(PNEUMATIC / "cylinder_32.toml", folder / "piston3.fmu",
+                             seal="piston", fmi_version=3).path,
+    }
 
+
+@pytest.fixture(scope="module")
+def fmus(tmp_path_factory, worker_id):
     return {name: Path(path) for name, path in
-            build_once(tmp_path_factory, worker_id, "fmus", build).items()}
+            built(tmp_path_factory, worker_id, "fmus").items()}
 
 
 def test_every_fmu_is_valid(fmus):
@@ -422,27 +424,31 @@ def test_cosimulation_example(tmp_path):
 
 
 # -- the C code against the compiled law kernels (sealsim.friction.kernels) ------------------------
+@session_build("kernel_fmus", cost=4)
+def build_kernel_fmus(folder):
+    """Coulomb and Stribeck (pressure scaling), Θ with γ(T) with bristles (constant
+    contact)."""
+    from sealsim.friction import CoulombViscous, Stribeck
+
+    bristles = Theta.from_parameter_set("pneumatic_demo", bristle_stiffness=5e4,
+                                        bristle_damping=20.0)
+    return {
+        "coulomb": build_friction_fmu(CoulombViscous.from_parameter_set("unit"),
+                                      folder / "coulomb.fmu", kind="cs").path,
+        "stribeck": build_friction_fmu(Stribeck.from_parameter_set("pneumatic_demo"),
+                                       folder / "stribeck.fmu", kind="cs").path,
+        "theta_bristles": build_friction_fmu(bristles, folder / "bristles.fmu",
+                                             normal_force=100.0, contact_width=1e-3).path,
+    }
+
+
 @pytest.fixture(scope="module")
 def kernel_fmus(fmus, tmp_path_factory, worker_id):
     """Every C law: Coulomb and Stribeck (pressure scaling), LuGre, Θ with γ(T) without and
     with bristles (constant contact)."""
-    from sealsim.friction import CoulombViscous, Stribeck
-
-    def build(folder):
-        bristles = Theta.from_parameter_set("pneumatic_demo", bristle_stiffness=5e4,
-                                            bristle_damping=20.0)
-        return {
-            "coulomb": build_friction_fmu(CoulombViscous.from_parameter_set("unit"),
-                                          folder / "coulomb.fmu", kind="cs").path,
-            "stribeck": build_friction_fmu(Stribeck.from_parameter_set("pneumatic_demo"),
-                                           folder / "stribeck.fmu", kind="cs").path,
-            "theta_bristles": build_friction_fmu(bristles, folder / "bristles.fmu",
-                                                 normal_force=100.0, contact_width=1e-3).path,
-        }
-
-    built = build_once(tmp_path_factory, worker_id, "kernel_fmus", build)
     return {"lugre": fmus["lugre"], "theta": fmus["theta"],
-            **{name: Path(path) for name, path in built.items()}}
+            **{name: Path(path) for name, path in
+               built(tmp_path_factory, worker_id, "kernel_fmus").items()}}
 
 
 def _close(got, want, scale):

@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 from fmpy.validation import validate_fmu
 
-from fmu_build_once import build_once
+from session_builds import built, session_build
 from sealsim.cases import load_toml
 from sealsim.errors import ModelError
 from sealsim.fmu import LoadedFMU, build_fmu
@@ -112,17 +112,19 @@ def bench_case():
     return case, law, inputs
 
 
-@pytest.fixture(scope="module")
-def contact_fmus(tmp_path_factory, worker_id):
+@session_build("contact_fmus", cost=50, needs=("pneumatic_numba",))
+def build_contact_fmus(folder):
     """The friction FMU of theta_contact_stribeck.toml (FMI 2) and the whole-cylinder FMU of
     heipl_rod_seal.toml, T25C (FMI 3), both with the build checks."""
-    def build(folder):
-        friction = build_fmu(BENCH, folder / "contact.fmu", variant="fast_sweep_4s")
-        cylinder = build_fmu(CYLINDER, folder / "heipl.fmu", variant="T25C", fmi_version=3)
-        return {"friction": {"path": friction.path, "report": friction.report},
-                "cylinder": {"path": cylinder.path, "report": cylinder.report}}
+    friction = build_fmu(BENCH, folder / "contact.fmu", variant="fast_sweep_4s")
+    cylinder = build_fmu(CYLINDER, folder / "heipl.fmu", variant="T25C", fmi_version=3)
+    return {"friction": {"path": friction.path, "report": friction.report},
+            "cylinder": {"path": cylinder.path, "report": cylinder.report}}
 
-    return build_once(tmp_path_factory, worker_id, "contact_fmus", build)
+
+@pytest.fixture(scope="module")
+def contact_fmus(tmp_path_factory, worker_id):
+    return built(tmp_path_factory, worker_id, "contact_fmus")
 
 
 def test_friction_fmu_carries_the_friction_table(contact_fmus):

@@ -13,7 +13,7 @@ import pytest
 import tomli_w
 from fmpy.validation import validate_fmu
 
-from fmu_build_once import build_once
+from session_builds import built, session_build
 from sealsim.cases import load_toml
 from sealsim.errors import InputError, ModelError
 from sealsim.fmu import build_fmu
@@ -32,19 +32,21 @@ def example_case(variant="T25C", **updates):
     return case.model_copy(update=updates)
 
 
-@pytest.fixture(scope="module")
-def cylinders(tmp_path_factory, worker_id):
+@session_build("cylinders", cost=10, needs=("pneumatic_numba",))
+def build_cylinder_fmus(folder):
     """The Ø32 cylinder (T25C) as FMI 2 and FMI 3 FMUs, model exchange and co-simulation;
     every build runs the build check (C right-hand side, co-simulation over the cycle)."""
-    def build(folder):
-        out = {}
-        for version in (2, 3):
-            result = build_fmu(PNEUMATIC / "cylinder_32.toml", folder / f"cyl{version}.fmu",
-                               variant="T25C", fmi_version=version)
-            out[f"fmi{version}"] = {"path": result.path, "report": result.report}
-        return out
+    out = {}
+    for version in (2, 3):
+        result = build_fmu(PNEUMATIC / "cylinder_32.toml", folder / f"cyl{version}.fmu",
+                           variant="T25C", fmi_version=version)
+        out[f"fmi{version}"] = {"path": result.path, "report": result.report}
+    return out
 
-    return build_once(tmp_path_factory, worker_id, "cylinders", build)
+
+@pytest.fixture(scope="module")
+def cylinders(tmp_path_factory, worker_id):
+    return built(tmp_path_factory, worker_id, "cylinders")
 
 
 @pytest.fixture(scope="module")

@@ -19,7 +19,7 @@ import pytest
 import fmpy  # the test extra installs FMPy
 from fmpy import simulate_fmu
 from fmpy.validation import validate_fmu
-from fmu_build_once import build_once
+from session_builds import built, session_build
 
 from sealsim.cases import expand_variants, load_toml
 from sealsim.fmu import LoadedFMU, build_rotary_fmu
@@ -39,19 +39,21 @@ def plain_case():
     return expand_variants(RotaryCase, load_toml(CYCLE), "speed cycle")["plain"]
 
 
-@pytest.fixture(scope="module")
-def rotary_fmu(plain_case, tmp_path_factory, worker_id):
+@session_build("rotary_fmu", cost=25)
+def build_the_rotary_fmu(folder):
     # the sump of the speed cycle stays within 23-69 degC: step responses at 20 and 70 degC
     settings = RotarySettings(speed_points=7, sump_temperatures=list(SUMPS), lag_points=2,
                               lag_sump_temperatures=[SUMPS[0], SUMPS[2]],
                               check_between=False, check_duty_cycle=False)
+    plain = expand_variants(RotaryCase, load_toml(CYCLE), "speed cycle")["plain"]
+    result = build_rotary_fmu(plain, folder / "lip_seal.fmu", settings=settings)
+    return {"path": str(result.path), "report": result.report}
 
-    def build(folder):
-        result = build_rotary_fmu(plain_case, folder / "lip_seal.fmu", settings=settings)
-        return {"path": str(result.path), "report": result.report}
 
-    built = build_once(tmp_path_factory, worker_id, "rotary_fmu", build)
-    return SimpleNamespace(path=Path(built["path"]), report=built["report"])
+@pytest.fixture(scope="module")
+def rotary_fmu(tmp_path_factory, worker_id):
+    fmu = built(tmp_path_factory, worker_id, "rotary_fmu")
+    return SimpleNamespace(path=Path(fmu["path"]), report=fmu["report"])
 
 
 def steady_fmu(fmu, speed, sump):

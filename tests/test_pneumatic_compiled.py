@@ -22,6 +22,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from session_builds import built, session_build
 
 from sealsim.pneumatic.contact_maps import FEContactMap, hermite_grid_point
 
@@ -122,17 +123,22 @@ def _numpy_without_simd_dispatch() -> str:
     return " ".join(getattr(umath, "__cpu_dispatch__", []))
 
 
-@pytest.fixture(scope="module")
-def comparison(tmp_path_factory):
+@session_build("compiled_comparison", cost=20, needs=("pneumatic_numba",))
+def compare_with_the_reference(folder):
     env = dict(os.environ, NPY_DISABLE_CPU_FEATURES=_numpy_without_simd_dispatch())
     src = str(ROOT / "src")
     env["PYTHONPATH"] = src + os.pathsep + env.get("PYTHONPATH", "")
-    map_file = tmp_path_factory.mktemp("map") / "map.nc"
+    map_file = folder / "map.nc"
     done = subprocess.run([sys.executable, "-c", SCRIPT, str(ROOT / "tests"),
                            str(ROOT / "examples" / "pneumatic"), str(map_file)],
                           capture_output=True, text=True, env=env, timeout=600)
     assert done.returncode == 0, done.stderr[-3000:]
     return json.loads(done.stdout.strip().splitlines()[-1])
+
+
+@pytest.fixture(scope="module")
+def comparison(tmp_path_factory, worker_id):
+    return built(tmp_path_factory, worker_id, "compiled_comparison")
 
 
 @pytest.mark.parametrize("label", ["theta", "theta_bristles", "stribeck_5_3", "lugre_gms_dahl",

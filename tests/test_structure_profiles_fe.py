@@ -13,6 +13,8 @@ import pytest
 import tomli_w
 from typer.testing import CliRunner
 
+from session_builds import built, session_build
+
 from sealsim.cases import apply_overrides, validate_case
 from sealsim.cli.structure import structure_app
 from sealsim.structure.case import StructureCase
@@ -128,14 +130,13 @@ def test_ucup_is_pressure_activated():
     assert dfdp > np.pi * 20e-3 * 1.0e-3
 
 
-@pytest.fixture(scope="module")
-def lip_fe(tmp_path_factory):
-    """The shortened FE speed-cycle example (lip table at 20 and 100 °C, coarse mesh), its FE
-    lip table and the cache folder that holds it."""
+@session_build("lip_fe", cost=64)
+def build_lip_fe(folder):
+    """The shortened FE speed-cycle example (lip table at 20 and 100 °C, coarse mesh) and the
+    cache folder in which its FE lip table was built."""
     from sealsim.rotary.lip_fe import lip_force_table
     from sealsim.rotary.simulation import load_rotary_case
 
-    folder = tmp_path_factory.mktemp("lip_fe")
     cache = folder / "cache"
     example = ROOT / "examples/rotary/speed_cycle_fe.toml"
     data = tomllib.loads(example.read_text())
@@ -144,6 +145,22 @@ def lip_fe(tmp_path_factory):
         {"speed": "100 rpm", "duration": "1 min"}, {"speed": "1000 rpm", "duration": "2 min"}]}})
     path = folder / "speed_cycle_fe.toml"
     path.write_text(tomli_w.dumps(data))
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setenv("SEALSIM_CACHE", str(cache))
+        fe = load_rotary_case(path)["fe"]
+        lip_force_table(fe.seal, fe.lip, fe.seal.mounting_temperature)
+    return {"case": path, "cache": cache}
+
+
+@pytest.fixture(scope="module")
+def lip_fe(tmp_path_factory, worker_id):
+    """The example of build_lip_fe, its FE lip table (read from the cache the build filled:
+    the FE ran once per session) and that cache folder."""
+    from sealsim.rotary.lip_fe import lip_force_table
+    from sealsim.rotary.simulation import load_rotary_case
+
+    lip_case = built(tmp_path_factory, worker_id, "lip_fe")
+    path, cache = Path(lip_case["case"]), Path(lip_case["cache"])
     with pytest.MonkeyPatch.context() as mp:
         mp.setenv("SEALSIM_CACHE", str(cache))
         cases = load_rotary_case(path)

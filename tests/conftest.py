@@ -1,0 +1,13 @@
+"""Session-wide set-up of the test suite: the expensive builds of tests/session_builds.py."""
+
+import pytest
+
+from session_builds import prebuild
+
+
+@pytest.fixture(scope="session", autouse=True)
+def _session_builds(request, tmp_path_factory, worker_id):
+    """Under pytest-xdist, make the expensive builds the selected tests need once, spread over
+    the workers, before the first test (without xdist each fixture builds on first use)."""
+    if worker_id != "master":
+        prebuild(tmp_path_factory, worker_id, {item.path for item in request.session.items})
