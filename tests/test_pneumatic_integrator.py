@@ -64,6 +64,29 @@ def test_output_grid_and_segments():
     assert res.stats["segments"] > res.stats["mode_switches"] > 0
 
 
+def test_a_result_keeps_its_numbers_when_the_next_run_reuses_the_work_arrays():
+    # run() samples and evaluates into work arrays of its thread that the next run of the
+    # same size overwrites (page faults of fresh megabyte arrays were a fifth of a run's time):
+    # a result must own its numbers.  Run A, then B with another seal temperature on the
+    # same output grid: A's time series is unchanged, bit for bit, and shares no memory with
+    # the work arrays; A run alone again gives the same numbers.
+    from sealsim.pneumatic import results
+
+    first = simulate(case(0.6))
+    kept = first.timeseries.copy(deep=True)
+    other = case(0.6)
+    other = other.model_copy(update={"cylinder": other.cylinder.model_copy(
+        update={"seal_temperature": 328.15})})
+    second = simulate(other)
+    assert not second.timeseries["F_friction_N"].equals(kept["F_friction_N"])
+    assert first.timeseries.equals(kept)
+    for column in first.timeseries.select_dtypes("number"):
+        values = first.timeseries[column].to_numpy()      # a view of the frame's block
+        for work in results._WORK.arrays.values():
+            assert not np.shares_memory(values, work), column
+    assert simulate(case(0.6)).timeseries.equals(kept)
+
+
 def test_contact_friction_states_are_lsodas():
     # the default seal law takes its steady curve from the seal's contact table (issue 23):
     # heipl_rod_seal.toml at 25 degC, both methods at rtol 1e-11.  During the strokes every

@@ -7,6 +7,7 @@ besides the states is recomputed there by the compiled right-hand side (:mod:`.r
 from __future__ import annotations
 
 import re
+import threading
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -97,19 +98,49 @@ class PneumaticResult:
         return summarize(self)
 
 
+_WORK = threading.local()
+
+
+def _work_array(name: str, shape: tuple, order: str = "C", zero: bool = True) -> np.ndarray:
+    """A float array of this thread (zeroed, or as the last call left it), kept for the next
+    call with the same ``name`` (one shape per name): the output arrays of a run are
+    megabytes, and fresh ones cost their first-touch page faults on every run (a quarter of a
+    10 s cylinder run's time).  The next call with the name overwrites it: for arrays
+    consumed before the run returns."""
+    arrays = _WORK.__dict__.setdefault("arrays", {})
+    array = arrays.get(name)
+    if array is None or array.shape != shape or not array.flags[f"{order}_CONTIGUOUS"]:
+        array = arrays[name] = np.zeros(shape, order=order)
+    elif zero:
+        array.fill(0.0)
+    return array
+
+
 class Sampler:
     """Collects the states on the output grid segment by segment while the integration runs,
     so that the dense output of a segment can be dropped as soon as the next one starts (a long
     duty cycle keeps hundreds of thousands of steps).  ``sampler(segment)`` after each segment,
-    :meth:`finish` at the end."""
+    :meth:`finish` at the end.
 
-    def __init__(self, system):
+    With ``reuse`` the compiled integrator's sample array (:meth:`buffer`) is a work array of
+    this thread that the next reusing sampler overwrites: for a caller that is done with the
+    samples before it simulates again (:func:`sealsim.pneumatic.simulation.run`, whose time
+    series are copies).
+    """
+
+    def __init__(self, system, reuse: bool = False):
         dt = system.case.output.sample_interval
         end = system.duration
         grid = np.arange(0.0, end + 0.5 * dt, dt)
         self.grid = np.minimum(grid[grid <= end * (1 + 1e-12)], end)   # last sample at the end
         self.times, self.states, self.modes = [], [], []
         self.pending = None
+        self.reuse = reuse
+
+    def buffer(self, n_states: int) -> np.ndarray:
+        """Array (samples, states) for the compiled integrator, which writes every row."""
+        shape = (self.grid.size, n_states)
+        return _work_array("samples", shape, zero=False) if self.reuse else np.zeros(shape)
 
     def __call__(self, segment) -> None:
         if self.pending is not None:
@@ -145,14 +176,19 @@ class Sampler:
 
 def sample(system, sampler: Sampler):
     """The output time series: the collected states, everything else recomputed there.
-    Returns (DataFrame, diagnostics dict)."""
+    Returns (DataFrame, diagnostics dict); with a reusing sampler the diagnostics are views of
+    this thread's work arrays too (the DataFrame is a copy)."""
     ts, ys, modes = sampler.finish()
-    diag = _diagnostics(system, ts, ys, modes)
+    diag = _diagnostics(system, ts, ys, modes, sampler.reuse)
     return _frame(system, diag), diag
 
 
-def _diagnostics(system, ts, ys, modes) -> dict[str, np.ndarray]:
-    d = system.evaluate(ts, ys, modes, full=True, outputs_only=True)
+def _diagnostics(system, ts, ys, modes, reuse: bool = False) -> dict[str, np.ndarray]:
+    out = None
+    if reuse:
+        out = (_work_array("derivatives", ys.shape, "F"),
+               _work_array("diagnostics", (system.n_diag, ts.size), "F"))
+    d = system.evaluate(ts, ys, modes, full=True, outputs_only=True, out=out)
     out = {"time": ts, "x": d["x"], "v": d["v"], "p1": d["p1"], "p2": d["p2"], "T1": d["T1"],
            "T2": d["T2"], "spool": np.asarray(d["spool"], dtype=float),
            "command": system.schedule.command_at(ts), "mode": modes,

@@ -133,7 +133,7 @@ def simulate(case, seals: list[Seal] | None = None, base_dir: str | Path = ".",
 def run(system: PneumaticSystem, progress=None) -> PneumaticResult:
     """Integrate an assembled :class:`PneumaticSystem` and sample its results."""
     wall0 = _time.perf_counter()
-    sampler = _results.Sampler(system)
+    sampler = _results.Sampler(system, reuse=True)      # its samples are copied below
     segments = integrate(system, progress, sampler)
     wall = _time.perf_counter() - wall0
     frame, diag = _results.sample(system, sampler)

@@ -394,12 +394,14 @@ class PneumaticSystem:
             return jac
         return j
 
-    def evaluate(self, t, y, mode, full: bool = False, outputs_only: bool = False):
+    def evaluate(self, t, y, mode, full: bool = False, outputs_only: bool = False, out=None):
         """Derivatives dy/dt (and, with ``full``, every intermediate quantity) at (t, y).
 
         ``y`` has shape (n,) or (n, k) (k columns, ``t`` scalar or (k,)).  With
         ``outputs_only`` (and ``full``) only the quantities of the output time series are
         computed (no flows, heat or derivatives: their entries are 0), at about half the cost.
+        ``out``: zeroed, Fortran-ordered arrays (dy of y's shape, diagnostics (n_diag, k)) to
+        write into instead of new ones.
         """
         y = np.asarray(y, dtype=float)
         column = y.ndim == 1
@@ -410,8 +412,10 @@ class PneumaticSystem:
         k = ys.shape[1]
         ts = np.ascontiguousarray(np.broadcast_to(np.asarray(t, dtype=float), (k,)))
         modes = np.ascontiguousarray(np.broadcast_to(np.asarray(mode, dtype=np.int64), (k,)))
-        dy = np.zeros_like(ys, order="F")
-        diag = np.zeros((self.n_diag, k), order="F")
+        if out is None:
+            dy, diag = np.zeros_like(ys, order="F"), np.zeros((self.n_diag, k), order="F")
+        else:
+            dy, diag = out
         rhs.evaluate_many(ts, ys, modes, self.tables, dy, diag,
                           rhs.OUTPUTS if outputs_only and full else rhs.FULL)
         if not full:
