@@ -184,11 +184,11 @@ def sample(system, sampler: Sampler):
 
 
 def _diagnostics(system, ts, ys, modes, reuse: bool = False) -> dict[str, np.ndarray]:
-    out = None
+    buffers = None
     if reuse:
-        out = (_work_array("derivatives", ys.shape, "F"),
-               _work_array("diagnostics", (system.n_diag, ts.size), "F"))
-    d = system.evaluate(ts, ys, modes, full=True, outputs_only=True, out=out)
+        buffers = (_work_array("derivatives", ys.shape, "F"),
+                   _work_array("diagnostics", (system.n_diag, ts.size), "F"))
+    d = system.evaluate(ts, ys, modes, full=True, outputs_only=True, out=buffers)
     out = {"time": ts, "x": d["x"], "v": d["v"], "p1": d["p1"], "p2": d["p2"], "T1": d["T1"],
            "T2": d["T2"], "spool": np.asarray(d["spool"], dtype=float),
            "command": system.schedule.command_at(ts), "mode": modes,
