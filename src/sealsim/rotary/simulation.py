@@ -366,7 +366,12 @@ class RotaryModel:
         }
 
     def assemble(self, angular_speed: float, sump_temperature: float):
-        """Network matrices at this speed and sump temperature.
+        """Network matrices (K, F) at this speed and sump temperature (:meth:`matrices`)."""
+        return self.matrices(angular_speed, sump_temperature)[:2]
+
+    def matrices(self, angular_speed: float, sump_temperature: float) -> tuple:
+        """Network matrices (K, F) at this speed and sump temperature, and the face
+        conductances they were assembled from (for :meth:`heat_paths`).
 
         The air pocket exchanges with the air side's air (:attr:`air_node`) through its
         annular opening with the shaft's air-side coefficient.
@@ -374,7 +379,9 @@ class RotaryModel:
         h = self.coefficients(angular_speed, sump_temperature)
         pocket = Link("air_pocket", self.air_node,
                       h["shaft_air"] * self.grid.pocket_opening_area)
-        return self.network.assemble(h, [*self.links, pocket])
+        conductances = self.network.face_conductances(h)
+        return (*self.network.assemble_faces(conductances, [*self.links, pocket]),
+                conductances)
 
     def fixed_temperatures(self) -> np.ndarray:
         env = self.case.environment
@@ -543,10 +550,8 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
         bearing = model.bearing_source(omega, t_sump)
         # the face conductances ride with the factorisation: the heat paths of the row are
         # those of the matrices the step was solved with
-        temps, heat_out = stepper.step(
-            temps, h, model.source(power) + bearing, fixed, key,
-            lambda o=omega, s=t_sump: (*model.assemble(o, s), model.network.face_conductances(
-                model.coefficients(o, s))))
+        temps, heat_out = stepper.step(temps, h, model.source(power) + bearing, fixed, key,
+                                       lambda o=omega, s=t_sump: model.matrices(o, s))
         if not np.all(np.isfinite(temps)):
             raise ModelError(f"rotary simulation: temperatures became non-finite at t = {t1:.1f} s")
         generated += power * h
@@ -579,11 +584,11 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
 
     frame = pd.DataFrame(rows, columns=TIMESERIES_COLUMNS)
     start = np.full(model.network.n, model.start_temperature)
-    first = _row(model, model.friction.evaluate(float(speeds[0]), model.start_temperature),
-                 0.0, float(speeds[0]), start, model.start_temperature,
-                 model.network.face_conductances(model.coefficients(
-                     float(speeds[0]), model.sump_temperature(start))),
-                 model.bearing_heat(float(speeds[0]), model.sump_temperature(start)))
+    omega0, sump0 = float(speeds[0]), model.sump_temperature(start)
+    first = _row(model, model.friction.evaluate(omega0, model.start_temperature), 0.0, omega0,
+                 start, model.start_temperature,
+                 model.network.face_conductances(model.coefficients(omega0, sump0)),
+                 model.bearing_heat(omega0, sump0))
     frame = pd.concat([pd.DataFrame([first], columns=TIMESERIES_COLUMNS), frame],
                       ignore_index=True)
 

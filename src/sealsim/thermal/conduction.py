@@ -330,7 +330,13 @@ class ThermalNetwork:
 
     def assemble(self, coefficients: Mapping[str, float | np.ndarray],
                  links: Sequence[Link] = ()) -> tuple[sp.csc_matrix, sp.csr_matrix]:
-        """Network matrices for the given convection coefficients.
+        """Network matrices for the given convection coefficients: :meth:`assemble_faces` of
+        their :meth:`face_conductances`."""
+        return self.assemble_faces(self.face_conductances(coefficients), links)
+
+    def assemble_faces(self, conductances: Mapping[str, np.ndarray],
+                       links: Sequence[Link] = ()) -> tuple[sp.csc_matrix, sp.csr_matrix]:
+        """Network matrices for the given face conductances.
 
         The sparsity pattern depends only on the face groups and on which nodes the links
         join; it is built once per set of links and reused, so a call only computes the
@@ -338,8 +344,8 @@ class ThermalNetwork:
 
         Parameters
         ----------
-        coefficients : mapping
-            Heat transfer coefficient [W/(m²·K)] per face group (scalar or one per face).
+        conductances : mapping
+            :meth:`face_conductances` [W/K] per face group.
         links : sequence of Link
             Extra conductances between lumped/fixed nodes [W/K].
 
@@ -350,9 +356,8 @@ class ThermalNetwork:
         F : scipy.sparse.csr_matrix, shape (n, n_fixed)
             Coupling to the fixed nodes: the heat flow into the unknowns is F·T_fixed − K·T.
         """
-        conductances = list(self.face_conductances(coefficients).values())
-        conductances.append(np.array([link.conductance for link in links], dtype=float))
-        g_all = np.concatenate(conductances)
+        g_all = np.concatenate([*(conductances[group] for group in self.face_groups),
+                                np.array([link.conductance for link in links], dtype=float)])
         plan = self._plan(tuple((link.a, link.b) for link in links))
         k = sp.csc_matrix((plan["k_base"] + plan["k_scatter"] @ g_all, plan["k_indices"],
                            plan["k_indptr"]), shape=(self.n, self.n))
