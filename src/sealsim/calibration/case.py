@@ -66,7 +66,7 @@ from sealsim.pneumatic.case import MapModel
 
 __all__ = ["ContactModel", "FitParameter", "FrictionFitCase", "MeasurementModel",
            "check_measurements", "contact_of", "contact_table", "parse_field_value",
-           "parse_law_value"]
+           "parse_law_value", "repeated_conditions"]
 
 
 class FitParameter(CaseModel):
@@ -156,6 +156,11 @@ class MeasurementModel(CaseModel):
         "the seal of this run when one fit spans several seals with the same law parameters "
         "(the same rubber, lubricant and counter surface): the name of a [contacts.NAME] "
         "table; default [contact]"))
+    condition: str | None = Field(None, min_length=1, description=(
+        "runs that repeat one test (the same seal at the same pressure, temperature and "
+        "speed: run again, or after taking the rig apart) share a name here; the report gives "
+        "the scatter of their measured friction and the model's error of their mean in units "
+        "of it (report.json 'conditions', conditions.csv, repeatability.png)"))
 
     @model_validator(mode="after")
     def _check(self):
@@ -204,6 +209,12 @@ class FrictionFitCase(CaseModel):
             if m.contact is not None and m.contact not in self.contacts:
                 raise ValueError(f"measurement {m.name!r}: contact = {m.contact!r} names no "
                                  f"[contacts.NAME] table (given: {sorted(self.contacts)})")
+        for name, runs in repeated_conditions(self.measurements).items():
+            seals = sorted({contact_table(m.contact) for m in runs})
+            if len(seals) > 1:
+                raise ValueError(f"condition {name!r}: its runs ({', '.join(m.name for m in runs)})"
+                                 f" name different seals ({', '.join(seals)}); a repeated test "
+                                 "is one seal at one condition")
         fields = type(self.friction).model_fields
         unused = getattr(self.friction, "unused_fields", tuple)()
         pnames = [p.name for p in self.fit.parameters]
@@ -241,6 +252,16 @@ def contact_of(case: FrictionFitCase, spec: MeasurementModel) -> ContactModel | 
 def contact_table(name: str | None) -> str:
     """The case's table of a contact, for messages: ``contacts.NAME``, or ``contact`` (None)."""
     return "contact" if name is None else f"contacts.{name}"
+
+
+def repeated_conditions(measurements) -> dict[str, list]:
+    """The measurements grouped by their ``condition`` (those without one left out), in the
+    order of the case."""
+    groups: dict[str, list] = {}
+    for m in measurements:
+        if m.condition is not None:
+            groups.setdefault(m.condition, []).append(m)
+    return groups
 
 
 def check_measurements(measurements) -> None:

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["compare_signals", "parameter_report", "parameter_statistics"]
+__all__ = ["compare_signals", "parameter_report", "parameter_statistics", "repeat_scatter"]
 
 
 def parameter_statistics(jacobian, residuals, *, rcond=1e-8, max_relative_error=0.5,
@@ -156,3 +156,53 @@ def compare_signals(measured, model) -> dict[str, float | None]:
     return {"rmse": float(np.sqrt(np.mean(resid ** 2))),
             "max_abs_error": float(np.max(np.abs(resid))),
             "r2": 1.0 - float(np.sum(resid ** 2)) / ss_tot if ss_tot > 0 else None}
+
+
+def repeat_scatter(measured, predicted) -> dict[str, float | int | None]:
+    """Scatter of repeated measurements of one condition and a model's error against it.
+
+    For k runs of the same seal at the same condition (measured levels y_i, the model's
+    predictions ŷ_i of the same runs), after ISO 5725-2:1994 (precision of a measurement
+    method from repeated tests) and JCGM 100:2008 (GUM, §4.2)::
+
+        ȳ = Σ y_i / k,   s = √(Σ (y_i − ȳ)² / (k − 1)),   cv = s/ȳ,   u(ȳ) = s/√k
+        error of the mean  e = (mean ŷ − ȳ)/ȳ,   in units of the scatter  z = (mean ŷ − ȳ)/s
+
+    s is the standard deviation of a single run: a model whose |z| is below about 1 on one
+    run is within what the rig repeats to, and the relative error of one run against the
+    model cannot be resolved much below cv.
+
+    Parameters
+    ----------
+    measured, predicted : array_like
+        Measured and predicted friction levels of the runs [N] (same length, k >= 1).
+
+    Returns
+    -------
+    dict
+        ``runs`` (k), ``F_measured_mean_N``, ``F_measured_std_N`` (s, None for one run),
+        ``cv`` (s/ȳ), ``F_measured_min_N``, ``F_measured_max_N``, ``standard_error_N``
+        (s/√k), ``F_predicted_mean_N``, ``rel_error_of_mean`` (e), ``error_in_std`` (z).
+
+    Examples
+    --------
+    Five runs of one O-ring at 5 bar (N) and a model that predicts 6.8 N for each:
+
+    >>> r = repeat_scatter([7.18, 6.07, 8.02, 5.27, 7.20], [6.8] * 5)
+    >>> r["runs"], round(r["F_measured_mean_N"], 3), round(r["cv"], 3), round(r["error_in_std"], 2)
+    (5, 6.748, 0.16, 0.05)
+    """
+    y = np.asarray(measured, dtype=float).ravel()
+    yhat = np.asarray(predicted, dtype=float).ravel()
+    if y.size == 0 or y.size != yhat.size:
+        raise ValueError(f"repeat_scatter: {y.size} measured and {yhat.size} predicted levels; "
+                         "give one of each per run (at least one run)")
+    mean, pred = float(y.mean()), float(yhat.mean())
+    std = float(y.std(ddof=1)) if y.size > 1 else None
+    return {"runs": int(y.size), "F_measured_mean_N": mean, "F_measured_std_N": std,
+            "cv": std / mean if std is not None and mean else None,
+            "F_measured_min_N": float(y.min()), "F_measured_max_N": float(y.max()),
+            "standard_error_N": std / np.sqrt(y.size) if std is not None else None,
+            "F_predicted_mean_N": pred,
+            "rel_error_of_mean": (pred - mean) / mean if mean else None,
+            "error_in_std": (pred - mean) / std if std else None}

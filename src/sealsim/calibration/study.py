@@ -8,7 +8,9 @@ writes the result folder).
   readable by any friction or pneumatic case (``[friction]`` of a bench case,
   ``friction = {...}`` of a pneumatic seal);
 * ``report`` -- ``{"parameters": {NAME: {...}}, "measurements": {NAME: {"role",
-  "pressure_bar", "F_measured_N", "F_predicted_N", "rel_error", "rmse_N", "r2"}}}``;
+  "pressure_bar", "F_measured_N", "F_predicted_N", "rel_error", "rmse_N", "r2"}},
+  "conditions": {CONDITION: {"measurements", "roles", ...}}}`` (``conditions``: the runs
+  that repeat one test, :func:`repeat_conditions`);
 * ``diagnostics`` -- status, reasons of a failed fit, stages, correlation matrix, warnings;
 * ``predictions`` -- measured (offset-free) and model friction of every run.
 """
@@ -22,7 +24,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from sealsim.calibration.case import FrictionFitCase, contact_table
+from sealsim.calibration.case import FrictionFitCase, contact_table, repeated_conditions
 from sealsim.calibration.friction_fit import (
     FitResult,
     PreparedRun,
@@ -32,13 +34,13 @@ from sealsim.calibration.friction_fit import (
     run_metrics,
     with_law_table,
 )
-from sealsim.calibration.statistics import parameter_report
+from sealsim.calibration.statistics import parameter_report, repeat_scatter
 from sealsim.cases import load_toml, validate_case
 from sealsim.errors import InputError
 from sealsim.friction import make_law
 from sealsim.measurements import friction_level
 
-__all__ = ["FrictionFitStudy", "friction_fit_study", "load_fit_case"]
+__all__ = ["FrictionFitStudy", "friction_fit_study", "load_fit_case", "repeat_conditions"]
 
 _LOADS = {"theta"}     # laws that need F_N and b from a contact map
 
@@ -138,6 +140,7 @@ def friction_fit_study(case: FrictionFitCase, base_dir: str | Path,
         report["measurements"][r.name]["ratio_without_fit"] = (level / r.level if r.level
                                                                else None)
     proportional_baseline(runs, report["measurements"])
+    report["conditions"] = repeat_conditions(case, report["measurements"])
     diagnostics = {
         "status": result.status, "failure": result.failure, "warnings": result.warnings,
         "stages": result.stages, "parameter_names": result.names,
@@ -184,6 +187,27 @@ def proportional_baseline(runs: list[PreparedRun], measurements: dict) -> float 
         entry["proportional_rel_error"] = ((mu * forces[r.name] - r.level) / r.level
                                            if r.level else None)
     return mu
+
+
+def repeat_conditions(case: FrictionFitCase, measurements: dict) -> dict:
+    """The scatter of every repeated test of the case (measurements sharing a ``condition``)
+    and the fitted law's error against it (:func:`~sealsim.calibration.statistics.
+    repeat_scatter` of the runs' measured and predicted levels, report.json ``measurements``).
+
+    Returns
+    -------
+    dict
+        ``{CONDITION: {"measurements": [names], "roles": [fit/validate of each], ...the
+        numbers of repeat_scatter}}`` in the order of the case.
+    """
+    table = {}
+    for name, specs in repeated_conditions(case.measurements).items():
+        entries = [measurements[m.name] for m in specs]
+        table[name] = {"measurements": [m.name for m in specs],
+                       "roles": [m.role for m in specs],
+                       **repeat_scatter([e["F_measured_N"] for e in entries],
+                                        [e["F_predicted_N"] for e in entries])}
+    return table
 
 
 def _drop_none(data: dict) -> dict:

@@ -51,6 +51,14 @@ def fit(
             console.print(f"  friction ∝ F_N (F_N {m['F_normal_N']:.1f} N, μ = F/F_N "
                           f"{m['mu_measured']:.4f} measured): {m['F_proportional_N']:.3f} N, "
                           f"error {100 * m['proportional_rel_error']:+.1f} %")
+    for name, c in report.get("conditions", {}).items():
+        if c["F_measured_std_N"] is None:
+            continue
+        console.print(f"{name} ({c['runs']} runs): measured {c['F_measured_mean_N']:.3f} ± "
+                      f"{c['F_measured_std_N']:.3f} N (1 std of a run, cv "
+                      f"{100 * c['cv']:.1f} %), model {c['F_predicted_mean_N']:.3f} N, error of "
+                      f"the mean {100 * c['rel_error_of_mean']:+.1f} % "
+                      f"({c['error_in_std']:+.2f} std)")
     for text in summary["warnings"]:
         console.print(f"[yellow]warning:[/yellow] {text}")
     console.print(f"results written to {out}")

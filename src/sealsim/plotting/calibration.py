@@ -1,6 +1,7 @@
 """Figures of fits against measurements: overlays (friction vs time and vs stroke; a rotary
-speed cycle like Fig. 9 of Organisciak et al., SKF, AGMA 14FTM14, 2014) and the parity plot of
-measured vs predicted levels with a ±20 % band (in the style of their Fig. 10)."""
+speed cycle like Fig. 9 of Organisciak et al., SKF, AGMA 14FTM14, 2014), the parity plot of
+measured vs predicted levels with a ±20 % band (in the style of their Fig. 10) and the scatter
+of repeated tests against the model."""
 
 from __future__ import annotations
 
@@ -9,7 +10,7 @@ import numpy as np
 from sealsim.calibration.statistics import compare_signals
 from sealsim.plotting import new_figure
 
-__all__ = ["plot_overlay", "plot_parity", "plot_rotary_overlay", "plot_signals"]
+__all__ = ["plot_overlay", "plot_parity", "plot_repeats", "plot_rotary_overlay", "plot_signals"]
 
 
 def plot_overlay(name: str, role: str, time, position, measured, predicted, title: str = ""):
@@ -42,6 +43,57 @@ def plot_overlay(name: str, role: str, time, position, measured, predicted, titl
     return fig
 
 
+def plot_repeats(conditions: dict, measurements: dict, title: str = ""):
+    """Repeated tests: each condition's measured levels (one dot per run, filled if fitted),
+    their mean ± one standard deviation of a single run, and the model's prediction.
+
+    Parameters
+    ----------
+    conditions : dict
+        report.json ``conditions`` (:func:`sealsim.calibration.study.repeat_conditions`).
+    measurements : dict
+        report.json ``measurements`` (the runs' measured and predicted levels [N]).
+    """
+    fig, ax = new_figure(1, 1, width=max(5.0, 1.1 * len(conditions) + 2.5), height=4.5)
+    for k, (name, c) in enumerate(conditions.items()):
+        runs = [measurements[m] for m in c["measurements"]]
+        spread = np.linspace(-0.15, 0.15, len(runs)) if len(runs) > 1 else np.zeros(1)
+        for dx, run, role in zip(spread, runs, c["roles"]):
+            ax.plot(k + dx, run["F_measured_N"], "o", color="0.3",
+                    mfc="0.3" if role == "fit" else "white", zorder=3)
+            ax.plot(k + dx, run["F_predicted_N"], "x", color="C3", zorder=4)
+        if c["F_measured_std_N"] is not None:
+            ax.errorbar(k + 0.3, c["F_measured_mean_N"], yerr=c["F_measured_std_N"], fmt="s",
+                        color="C0", capsize=4, zorder=2)
+    ax.plot([], [], "o", color="0.3", label="measured run (filled: fitted)")
+    ax.plot([], [], "x", color="C3", label="model, same run")
+    ax.errorbar([], [], yerr=[], fmt="s", color="C0", capsize=4,
+                label="mean ± 1 std of a run")
+    ax.set_xticks(range(len(conditions)))
+    ax.set_xticklabels(list(conditions), rotation=20, ha="right", fontsize=8)
+    ax.set_ylabel("friction level [N]")
+    ax.set_ylim(bottom=0.0)
+    ax.grid(alpha=0.3)
+    ax.legend(loc="best", fontsize=8)
+    ax.set_title(f"{title}\nrepeated tests" if title else "repeated tests", fontsize=10)
+    return fig
+
+
+def _labelled(points, band: float, absolute_band: float | None, most: int = 6) -> list:
+    """The points of a parity plot worth a label: all of up to ``most``; beyond that those
+    outside the band, the ``most`` farthest from it (more labels would cover each other)."""
+    if len(points) <= most:
+        return list(points)
+
+    def excess(point):
+        _, _, m, p = point
+        half = band * abs(m) if absolute_band is None else absolute_band
+        return abs(p - m) - half
+
+    outside = [pt for pt in points if excess(pt) > 0]
+    return sorted(outside, key=excess, reverse=True)[:most]
+
+
 def plot_parity(points, title: str = "", quantity: str = "friction level", unit: str = "N",
                 band: float = 0.2, absolute_band: float | None = None,
                 band_unit: str | None = None, annotate: bool = True,
@@ -58,8 +110,8 @@ def plot_parity(points, title: str = "", quantity: str = "friction level", unit:
     band_unit : str, optional
         Unit shown for the absolute band (default ``unit``; "K" for a band in °C).
     annotate : bool
-        Write the points' labels next to them: every label up to six points, beyond that only
-        those outside the band (the others would cover each other).
+        Write the points' labels next to them: every label up to six points, beyond that the
+        six farthest outside the band (more would cover each other).
     reference : list of (measured, predicted), optional
         A simpler model's predictions of the same measurements, drawn as hollow diamonds
         (``reference_label`` in the legend; R² stays that of ``points``).
@@ -93,11 +145,7 @@ def plot_parity(points, title: str = "", quantity: str = "friction level", unit:
     if ref.size:
         ax.scatter(ref[:, 0], ref[:, 1], marker="D", facecolors="none", edgecolors="0.35",
                    zorder=2, label=reference_label)
-    for label, _, m, p in points if annotate else ():
-        if len(points) > 6:
-            half = band * abs(m) if absolute_band is None else absolute_band
-            if abs(p - m) <= half:
-                continue
+    for label, _, m, p in _labelled(points, band, absolute_band) if annotate else ():
         ax.annotate(str(label), (m, p), textcoords="offset points", xytext=(5, -10),
                     fontsize=8)
     r2 = compare_signals(meas, pred)["r2"]

@@ -15,7 +15,11 @@ result folder before anything is computed and writes the tables, reports and fig
   predicted, RMSE, R²), ``fit.json`` (status, reasons of a failed fit, stages, correlation
   matrix, warnings);
 * ``predictions.csv`` (measured, offset-free, and model friction of every run);
-* ``overlay_<run>.png`` per run, ``parity.png`` (±20 % band), ``case_resolved.toml``.
+* ``overlay_<run>.png`` per run, ``parity.png`` (±20 % band), ``case_resolved.toml``;
+* with repeated tests (measurements sharing a ``condition``): ``conditions.csv`` (per condition
+  the runs, the mean, standard deviation and coefficient of variation of the measured level,
+  the model's error of the mean, also in units of that standard deviation) and
+  ``repeatability.png``.
 
 ``sealsim rotary fit`` writes
 
@@ -50,6 +54,7 @@ from sealsim.output import ResultFolder
 from sealsim.plotting.calibration import (
     plot_overlay,
     plot_parity,
+    plot_repeats,
     plot_rotary_overlay,
     plot_signals,
 )
@@ -113,6 +118,15 @@ def run_friction_fit_file(path: str | Path, out: str | Path, force: bool = False
         folder.savefig("parity.png", plot_parity(
             points, title, reference=proportional,
             reference_label="friction ∝ F_N (μ from the fitted runs)"))
+        conditions = study.report["conditions"]
+        if conditions:
+            folder.write_csv("conditions.csv", pd.DataFrame(
+                [{"condition": name, **{k: v for k, v in c.items()
+                                        if k not in ("measurements", "roles")},
+                  "measurements": "; ".join(c["measurements"])}
+                 for name, c in conditions.items()]), float_format="%.6g")
+            folder.savefig("repeatability.png", plot_repeats(
+                conditions, study.report["measurements"], title))
         folder.write_text("case_resolved.toml", dump_case_toml(
             case, header=f"Resolved fit case of {path.name} (all defaults filled in); paths "
                          f"relative to {str(path.parent.resolve())}"))
