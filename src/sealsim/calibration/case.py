@@ -35,6 +35,10 @@ one rig): each further seal is a ``[contacts.NAME]`` table like ``[contact]``, a
 measurements say ``contact = "NAME"``; the law's parameters are fitted to all runs with role
 ``fit`` together, each run with its own seal's contact map.
 
+Repeated tests (the same seal at the same pressure, temperature and speed, run again or after
+taking the rig apart) share a ``condition = "NAME"``; the report gives their scatter next to
+the model's error (:func:`sealsim.calibration.study.repeat_conditions`).
+
 Every condition the model needs comes from the file or the case, never from a default: the
 pressure (a ``pressure`` column, or ``pressure = "2 bar"`` of the measurement) when a contact
 map or a pressure-scaled law uses it, the seal temperature (``temperature`` of the measurement
