@@ -187,7 +187,7 @@ def cylinder_spec(system, identifier: str, *, title: str = "", source: str = "")
         "STICKY": int(sticky), "RTOL": repr(rtol),
         "MAX_STEP": repr(float(system.case.solver.max_step)),
         "SPEED_RESOLUTION": repr(float(0.1 * atol[1])),
-        "MODEL_WORK_DOUBLES": 400 + 24 * n + 7 * n * n,
+        "MODEL_WORK_DOUBLES": 400 + 24 * n + 2 * n * n,
         "AIR_GAMMA": repr(AIR_HEAT_CAPACITY_RATIO), "AIR_CP": repr(AIR_CP),
         "AIR_CV": repr(AIR_CV), "ANR_DENSITY": repr(ANR_DENSITY),
         "ANR_TEMPERATURE": repr(ANR_TEMPERATURE), "GRAVITY": repr(GRAVITY),

@@ -37,9 +37,6 @@ References
    1-22, 1997 (NDF/BDF with quasi-constant step size; the basis of scipy's BDF).
 .. [2] R. P. Brent, *Algorithms for Minimization without Derivatives*, ch. 4, 1973 (root
    finding, as scipy's ``brentq``).
-.. [3] A. C. Hindmarsh et al., "SUNDIALS: Suite of nonlinear and differential/algebraic
-   equation solvers", ACM Trans. Math. Softw. 31(3), 363-396, 2005 (CVODE's Newton
-   convergence test with the rate estimate kept over the steps).
 """
 
 from __future__ import annotations
@@ -57,9 +54,6 @@ MAX_ORDER = 5
 NEWTON_MAXITER = 4
 MIN_FACTOR = 0.2
 MAX_FACTOR = 10.0
-#: with ``kept_rate``: the factorised Newton matrix is kept while c = h/α stays within 30 %
-#: of the c it was factorised with (CVODE's dgmax [3]_)
-LU_KEEP = 0.3
 EPS = float(np.finfo(float).eps)
 _KAPPA = np.array([0.0, -0.1850, -1.0 / 9.0, -0.0823, -0.0415, 0.0])
 GAMMA = np.hstack((0.0, np.cumsum(1.0 / np.arange(1, MAX_ORDER + 1))))
@@ -67,25 +61,16 @@ ALPHA = (1.0 - _KAPPA) * GAMMA
 ERROR_CONST = _KAPPA * GAMMA + 1.0 / np.arange(1, MAX_ORDER + 2)
 
 #: float slots of the workspace: time, time before the last step, step size, tolerance,
-#: largest step, Newton tolerance, end of the interval, c = h/α of the factorised matrix, the
-#: last convergence rate of the Newton iteration with that matrix (-1: none yet)
-(S_T, S_T_OLD, S_H_ABS, S_RTOL, S_MAX_STEP, S_NEWTON_TOL, S_T_BOUND, S_C_LU, S_RATE,
- S_NS) = range(10)
-#: integer slots: order, equal steps since the last change, LU valid, counters, ndyn, the
-#: Newton test of the first iteration on (1) or off (0: scipy's)
-(I_ORDER, I_NEQ, I_LU_OK, I_NFEV, I_NJEV, I_NLU, I_NSTEPS, I_NDYN, I_RATE_TEST,
- I_NI) = range(10)
+#: largest step, Newton tolerance, end of the interval, c = h/α of the factorised matrix
+(S_T, S_T_OLD, S_H_ABS, S_RTOL, S_MAX_STEP, S_NEWTON_TOL, S_T_BOUND, S_C_LU, S_NS) = range(9)
+#: integer slots: order, equal steps since the last change, LU valid, counters, ndyn
+(I_ORDER, I_NEQ, I_LU_OK, I_NFEV, I_NJEV, I_NLU, I_NSTEPS, I_NDYN, I_NI) = range(9)
 #: step results
 OK, TOO_SMALL_STEP = 0, -1
 
 
-def workspace(n: int, ndyn: int, rtol: float, atol, max_step: float = np.inf,
-              kept_rate: bool = False) -> tuple:
+def workspace(n: int, ndyn: int, rtol: float, atol, max_step: float = np.inf) -> tuple:
     """The solver state for ``n`` states of which the first ``ndyn`` are dynamic.
-
-    ``kept_rate``: the Newton iteration may stop after its first iteration, judged with the
-    convergence rate of the last iteration with the same matrix (see :func:`_newton`); off,
-    the steps are scipy's.
 
     A tuple ``(w, iv, y, f, dy)``: one float array ``w`` with the float slots ``S_*`` first,
     then atol, the differences D, J, the LU factors and scratch (offsets: :func:`_offsets`);
@@ -99,8 +84,6 @@ def workspace(n: int, ndyn: int, rtol: float, atol, max_step: float = np.inf,
     w[S_MAX_STEP] = max_step
     w[S_NEWTON_TOL] = max(10.0 * EPS / rtol, min(0.03, rtol ** 0.5))
     iv[I_NDYN] = ndyn
-    iv[I_RATE_TEST] = 1 if kept_rate else 0
-    w[S_RATE] = -1.0
     o_atol = _offsets(n, ndyn)[0]
     w[o_atol:o_atol + n] = np.broadcast_to(np.asarray(atol, dtype=float), (n,))
     return (w, iv, np.zeros(n), np.zeros(n), np.zeros(n))
@@ -264,14 +247,7 @@ def dense(ws, t, out):
 
 # -- the problem-dependent functions (copied per problem by compile_bdf) --------------------
 def _newton(w, iv, y, f, dy, args, t_new, c, n, ndyn):
-    """Simplified Newton iteration of the BDF system; (converged, iterations).
-
-    scipy's test: converged when rate/(1 − rate)·‖Δ‖ < tol with the rate of this iteration
-    (from the second one on).  With the workspace's ``kept_rate``, the first iteration is
-    judged the same way with the rate of the last iteration with the same factorised matrix
-    (kept in S_RATE; none after a new factorisation) -- the test of CVODE [3]_, which keeps
-    its rate estimate over the steps: a step whose predictor is already close takes one
-    right-hand side instead of two."""
+    """Simplified Newton iteration of the BDF system; (converged, iterations)."""
     o_atol, od, oj, olu, opred, opsi, odd, oscale, oerr, ofp, o_r, _ = _offsets(n, ndyn)
     tol = w[S_NEWTON_TOL]
     for i in range(n):
@@ -306,19 +282,12 @@ def _newton(w, iv, y, f, dy, args, t_new, c, n, ndyn):
         rate = -1.0
         if dy_norm_old >= 0.0:
             rate = dy_norm / dy_norm_old
-            w[S_RATE] = rate
         if rate >= 0.0 and (rate >= 1.0 or rate ** (NEWTON_MAXITER - k) / (1.0 - rate)
                             * dy_norm > tol):
             break
         for i in range(n):
             y[i] += dy[i]
             w[odd + i] += dy[i]
-        if rate < 0.0 and iv[I_RATE_TEST] != 0 and 0.0 <= w[S_RATE] < 1.0 and abs(
-                c / w[S_C_LU] - 1.0) <= LU_KEEP:
-            # the first iteration: the kept rate, if the matrix was factorised for about this
-            # c (not after an error rejection cut h: a stale matrix can make the first
-            # correction small and wrong)
-            rate = w[S_RATE]
         if dy_norm == 0.0 or (rate >= 0.0 and rate / (1.0 - rate) * dy_norm < tol):
             converged = True
             break
@@ -336,16 +305,6 @@ def _jacobian(w, iv, t, y, f, args, n, ndyn):
 def start(ws, t0, y0, t_bound, args):
     """Start (or restart) at (t0, y0) towards t_bound: order 1, the initial step of scipy's
     ``select_initial_step``, a fresh Jacobian."""
-    restart(ws, t0, y0, t_bound, args)
-    w, iv = ws[0], ws[1]
-    n = y0.shape[0]
-    _jacobian(w, iv, t0, y0, ws[3], args, n, iv[I_NDYN])
-
-
-def restart(ws, t0, y0, t_bound, args):
-    """:func:`start` without a new Jacobian: the integration goes on with the one in the
-    workspace, which the caller has put there (an earlier Jacobian of the same problem: the
-    Newton iteration takes a new one where it stalls, as between steps)."""
     w, iv, y1, f0, f1 = ws[0], ws[1], ws[2], ws[3], ws[4]
     n = y0.shape[0]
     ndyn = iv[I_NDYN]
@@ -383,6 +342,7 @@ def restart(ws, t0, y0, t_bound, args):
         w[od + i] = y0[i]
         w[od + n + i] = f0[i] * h_abs
         y1[i] = y0[i]
+    _jacobian(w, iv, t0, y0, f0, args, n, ndyn)
     iv[I_ORDER] = 1
     iv[I_NEQ] = 0
     iv[I_LU_OK] = 0
@@ -446,7 +406,6 @@ def step(ws, args):
                     w[olu + i * ndyn + i] += 1.0
                 lu_factor_at(w, olu, ndyn, iv, I_NI)
                 w[S_C_LU] = c
-                w[S_RATE] = -1.0
                 iv[I_NLU] += 1
                 iv[I_LU_OK] = 1
             converged, n_iter = _newton(w, iv, y, f, dy, args, t_new, c, n, ndyn)
@@ -520,8 +479,7 @@ def step(ws, args):
     w[S_H_ABS] = h_abs * factor
     change_differences(w, od, n, order, factor, o_r)
     iv[I_NEQ] = 0
-    if iv[I_RATE_TEST] == 0 or abs(h_abs * factor / ALPHA[order] / w[S_C_LU] - 1.0) > LU_KEEP:
-        iv[I_LU_OK] = 0
+    iv[I_LU_OK] = 0
     return OK
 
 
@@ -599,7 +557,6 @@ class BdfSolver:
     start: object
     step: object
     locate: object
-    restart: object
     dense: object = dense
 
 
@@ -609,7 +566,7 @@ def compile_bdf(name: str, fun, jac, event) -> BdfSolver:
     names the compiled copies in numba's disk cache."""
     env = dict(globals())
     env.update(FUN=fun, JAC=jac, EVENT=event)
-    for func in (_newton, _jacobian, restart, start, step, locate):
+    for func in (_newton, _jacobian, start, step, locate):
         copy = types.FunctionType(func.__code__, env, func.__name__, func.__defaults__,
                                   func.__closure__)
         copy.__qualname__ = f"{func.__qualname__}__{name}"
@@ -618,4 +575,4 @@ def compile_bdf(name: str, fun, jac, event) -> BdfSolver:
         # ``args`` on each call (atomic counts, which cost more than a small system's algebra)
         env[func.__name__] = (njit(inline="always")(copy) if func in (_newton, step)
                               else njit(cache=True)(copy))
-    return BdfSolver(env["start"], env["step"], env["locate"], env["restart"])
+    return BdfSolver(env["start"], env["step"], env["locate"])

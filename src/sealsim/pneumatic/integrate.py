@@ -275,8 +275,7 @@ def _event(t, y, args):
 
 
 _SOLVER = bdf.compile_bdf("pneumatic", _fun, _jac, _event)
-_bdf_start, _bdf_restart, _bdf_step, _bdf_locate = _SOLVER.start, _SOLVER.restart, \
-    _SOLVER.step, _SOLVER.locate
+_bdf_start, _bdf_step, _bdf_locate = _SOLVER.start, _SOLVER.step, _SOLVER.locate
 
 #: results of :func:`run_interval`
 DONE, SEGMENTS_FULL, STEP_FAILED, CHATTERING = 0, 1, 2, 3
@@ -297,7 +296,7 @@ def _borrowed_arrays(tables, work, ws):
     function in the loop then count no references (10 % of the integration's time)."""
     tables = rhs.borrowed_tables(tables)
     work = (borrowed(work[0]), borrowed(work[1]), borrowed(work[2]), borrowed(work[3]),
-            borrowed(work[4]), borrowed(work[5]), borrowed(work[6]))
+            borrowed(work[4]), borrowed(work[5]))
     ws = (borrowed(ws[0]), borrowed(ws[1]), borrowed(ws[2]), borrowed(ws[3]), borrowed(ws[4]))
     return tables, work, ws
 
@@ -322,9 +321,6 @@ def run_interval(t, t_end, y, mode, tables, work, ws, grid, k, samples, sample_m
         borrowed(recent)
     s, iv, y_new = ws[0], ws[1], ws[2]
     y_tmp = work[5]
-    jacobians = work[6]
-    oj = bdf._offsets(y.shape[0], iv[bdf.I_NDYN])[2]
-    jsize = y.shape[0] * iv[bdf.I_NDYN]
     cap = seg_t.shape[0]
     nseg = 0
     ring = recent.shape[0] - 1
@@ -333,13 +329,7 @@ def run_interval(t, t_end, y, mode, tables, work, ws, grid, k, samples, sample_m
             return SEGMENTS_FULL, t, mode, k, nseg
         args = (mode, tables, work)
         steps0, nfev0, njev0 = iv[bdf.I_NSTEPS], iv[bdf.I_NFEV], iv[bdf.I_NJEV]
-        slot = mode - rhs.BACKWARD           # the mode's Jacobian: kept from its last segment
-        if jacobians[slot, 0] != 0.0:
-            for i in range(jsize):
-                s[oj + i] = jacobians[slot, 1 + i]
-            _bdf_restart(ws, t, y, t_end, args)
-        else:
-            _bdf_start(ws, t, y, t_end, args)
+        _bdf_start(ws, t, y, t_end, args)
         direction = 0.0
         if mode == rhs.FORWARD or mode == rhs.BACKWARD:
             direction = -1.0
@@ -376,9 +366,6 @@ def run_interval(t, t_end, y, mode, tables, work, ws, grid, k, samples, sample_m
                 for i in range(y.shape[0]):
                     y[i] = y_new[i]
                 break
-        for i in range(jsize):
-            jacobians[slot, 1 + i] = s[oj + i]
-        jacobians[slot, 0] = 1.0
         seg_t[nseg, 1] = t_stop
         seg_i[nseg, 0] = mode
         seg_i[nseg, 1] = iv[bdf.I_NSTEPS] - steps0
@@ -421,10 +408,9 @@ def _integrate_compiled(system, progress, sampler) -> list[Segment]:
     rtol = case.solver.rtol
     atol = system.tolerances(rtol)
     n, ndyn = system.n_states, system.n_dynamic
-    ws = bdf.workspace(n, ndyn, rtol, atol, case.solver.max_step, kept_rate=True)
+    ws = bdf.workspace(n, ndyn, rtol, atol, case.solver.max_step)
     work = (np.zeros((system.n_diag, 1)), system.tolerances(1.0)[:ndyn].copy(), np.zeros(n),
-            np.zeros(n), np.array([0.1 * atol[1]]), np.zeros(n),
-            np.zeros((rhs.PRESCRIBED - rhs.BACKWARD + 1, 1 + n * ndyn)))
+            np.zeros(n), np.array([0.1 * atol[1]]), np.zeros(n))
     grid = sampler.grid
     samples = sampler.buffer(n) if hasattr(sampler, "buffer") else np.zeros((grid.size, n))
     sample_modes = np.zeros(grid.size, dtype=np.int64)

@@ -13,7 +13,6 @@
 #define BDF_NEWTON_MAXITER 4
 #define BDF_MIN_FACTOR 0.2
 #define BDF_MAX_FACTOR 10.0
-#define BDF_LU_KEEP 0.3
 #define BDF_EPS 2.220446049250313e-16
 
 /* kappa, gamma = cumsum(1/k), alpha = (1 - kappa) gamma, error constants */
@@ -135,11 +134,9 @@ void bdf_dense(const Bdf *b, double t, double *out) {
     }
 }
 
-void bdf_init(Bdf *b, int n, double rtol, const double *atol, double max_step, int kept_rate) {
+void bdf_init(Bdf *b, int n, double rtol, const double *atol, double max_step) {
     memset(b, 0, sizeof *b);
     b->n = n;
-    b->kept_rate = kept_rate;
-    b->rate = -1.0;
     b->rtol = rtol;
     b->max_step = max_step;
     b->newton_tol = fmax(10.0 * BDF_EPS / rtol, fmin(0.03, sqrt(rtol)));
@@ -147,12 +144,6 @@ void bdf_init(Bdf *b, int n, double rtol, const double *atol, double max_step, i
 }
 
 void bdf_start(Bdf *b, double t0, const double *y0, double t_bound, const BdfProblem *p) {
-    bdf_restart(b, t0, y0, t_bound, p);
-    p->jac(p->ctx, t0, y0, b->J);
-    b->njev++;
-}
-
-void bdf_restart(Bdf *b, double t0, const double *y0, double t_bound, const BdfProblem *p) {
     int n = b->n;
     double *f0 = b->f, *y1 = b->dy, *f1 = b->d, *scale = b->scale;
     double h_abs;
@@ -183,6 +174,8 @@ void bdf_restart(Bdf *b, double t0, const double *y0, double t_bound, const BdfP
         b->D[i] = y0[i];
         b->D[BDF_MAXN + i] = f0[i] * h_abs;
     }
+    p->jac(p->ctx, t0, y0, b->J);
+    b->njev++;
     b->order = 1;
     b->n_equal = 0;
     b->lu_ok = 0;
@@ -209,10 +202,7 @@ static int newton(Bdf *b, const BdfProblem *p, double t_new, double c, int *iter
         for (int i = 0; i < n; i++) b->dy[i] = c * b->f[i] - b->psi[i] - b->d[i];
         lu_solve(b->LU, b->piv, b->dy, n);
         double dy_norm = rms(b->dy, b->scale, n), rate = -1.0;
-        if (dy_norm_old >= 0.0) {
-            rate = dy_norm / dy_norm_old;
-            b->rate = rate;
-        }
+        if (dy_norm_old >= 0.0) rate = dy_norm / dy_norm_old;
         if (rate >= 0.0 &&
             (rate >= 1.0 || pow(rate, BDF_NEWTON_MAXITER - k) / (1.0 - rate) * dy_norm >
                                 b->newton_tol))
@@ -221,10 +211,6 @@ static int newton(Bdf *b, const BdfProblem *p, double t_new, double c, int *iter
             b->y_new[i] += b->dy[i];
             b->d[i] += b->dy[i];
         }
-        /* the first iteration: the kept rate of the same matrix, factorised for about this c */
-        if (rate < 0.0 && b->kept_rate && b->rate >= 0.0 && b->rate < 1.0 &&
-            fabs(c / b->c_lu - 1.0) <= BDF_LU_KEEP)
-            rate = b->rate;
         if (dy_norm == 0.0 || (rate >= 0.0 && rate / (1.0 - rate) * dy_norm < b->newton_tol))
             return 1;
         dy_norm_old = dy_norm;
@@ -280,8 +266,6 @@ int bdf_step(Bdf *b, const BdfProblem *p) {
                     b->LU[i * BDF_MAXN + i] += 1.0;
                 }
                 lu_factor(b->LU, b->piv, n);
-                b->c_lu = c;
-                b->rate = -1.0;
                 b->nlu++;
                 b->lu_ok = 1;
             }
@@ -355,8 +339,7 @@ int bdf_step(Bdf *b, const BdfProblem *p) {
     b->h_abs = h_abs * factor;
     change_differences(b, order, factor);
     b->n_equal = 0;
-    if (!b->kept_rate || fabs(b->h_abs / alpha_k(order) / b->c_lu - 1.0) > BDF_LU_KEEP)
-        b->lu_ok = 0;
+    b->lu_ok = 0;
     return BDF_OK;
 }
 

@@ -22,10 +22,8 @@ typedef struct {
 
 typedef struct {
     int n, order, n_equal, lu_ok;
-    int kept_rate;            /* the Newton test of sealsim.ode.bdf's kept_rate (1) or scipy's */
     long nfev, njev, nlu, nsteps;
     double t, t_old, h_abs, rtol, max_step, newton_tol, t_bound;
-    double c_lu, rate;        /* c of the factorised matrix, the last Newton rate with it */
     double atol[BDF_MAXN];
     double D[(BDF_MAX_ORDER + 3) * BDF_MAXN];
     double J[BDF_MAXN * BDF_MAXN], LU[BDF_MAXN * BDF_MAXN];
@@ -34,11 +32,9 @@ typedef struct {
     double dy[BDF_MAXN], scale[BDF_MAXN], err[BDF_MAXN];
 } Bdf;
 
-void bdf_init(Bdf *b, int n, double rtol, const double *atol, double max_step, int kept_rate);
+void bdf_init(Bdf *b, int n, double rtol, const double *atol, double max_step);
 /* start (or restart) at (t0, y0) towards t_bound: order 1, scipy's initial step */
 void bdf_start(Bdf *b, double t0, const double *y0, double t_bound, const BdfProblem *p);
-/* bdf_start with the Jacobian the caller has put into b->J */
-void bdf_restart(Bdf *b, double t0, const double *y0, double t_bound, const BdfProblem *p);
 /* one accepted step: BDF_OK (state b->y_new at b->t) or BDF_TOO_SMALL_STEP */
 int bdf_step(Bdf *b, const BdfProblem *p);
 /* the solution at t within the last step */

@@ -301,9 +301,6 @@ typedef struct {
     double recent[MAX_SWITCHES_PER_MS + 1];
     int recent_next;
     Bdf bdf;
-    /* the Jacobian of each mode's last segment (integrate.run_interval), index mode + 1 */
-    int jac_kept[MODE_PRESCRIBED + 2];
-    double jac[MODE_PRESCRIBED + 2][BDF_MAXN * BDF_MAXN];
 } CylinderData;
 
 #define DATA(c) ((CylinderData *)(void *)(c)->work)
@@ -566,14 +563,6 @@ static void write_states(Instance *c, const double *y) {
     for (int i = 0; i < NSTATES; i++) c->r[STATE_VR[i]] = y[i];
 }
 
-/* the integrator's Jacobian as its mode's for the next restart in that mode
- * (integrate.run_interval keeps each mode's last Jacobian the same way) */
-static void keep_jacobian(CylinderData *m) {
-    if (!m->bdf_active) return;
-    memcpy(m->jac[m->mode + 1], m->bdf.J, sizeof m->bdf.J);
-    m->jac_kept[m->mode + 1] = 1;
-}
-
 /* take the inputs at the current time: a new valve command arrives at the spool after the
  * dead time; an arrival, or a new load, restarts the co-simulation integrator (a kink) */
 static FmuStatus take_inputs(Instance *c) {
@@ -597,11 +586,11 @@ static FmuStatus take_inputs(Instance *c) {
         m->npending++;
         m->last_input = u;
     }
-    if (commit_arrivals(m, c->time) || P(F_LOAD) != m->cst[C_F0]) {
-        keep_jacobian(m);
+    if (commit_arrivals(m, c->time)) m->bdf_active = 0;
+    if (P(F_LOAD) != m->cst[C_F0]) {
+        m->cst[C_F0] = P(F_LOAD);
         m->bdf_active = 0;
     }
-    m->cst[C_F0] = P(F_LOAD);
     return FMU_OK;
 }
 
@@ -737,14 +726,8 @@ FmuStatus model_step(Instance *c, double h) {
         double t_stop = t_end;
         if (m->npending > 0 && m->pending_t[0] < t_stop) t_stop = m->pending_t[0];
         if (!m->bdf_active) {
-            int slot = m->mode + 1;
-            bdf_init(b, NSTATES, RTOL, ATOL, MAX_STEP, 1);
-            if (m->jac_kept[slot]) {
-                memcpy(b->J, m->jac[slot], sizeof b->J);
-                bdf_restart(b, t, y, t_stop, bp);
-            } else {
-                bdf_start(b, t, y, t_stop, bp);
-            }
+            bdf_init(b, NSTATES, RTOL, ATOL, MAX_STEP);
+            bdf_start(b, t, y, t_stop, bp);
             m->g_old = direction != 0 ? problem_event(&p, t, y) : 1.0;
             m->bdf_active = 1;
         } else {
@@ -763,7 +746,6 @@ FmuStatus model_step(Instance *c, double h) {
                 (direction < 0 && m->g_old >= 0.0 && 0.0 >= g_new)) {
                 double t_event = bdf_locate(b, bp, m->g_old, g_new, y_tmp);
                 bdf_dense(b, t_event, y);
-                keep_jacobian(m);
                 t = t_event;
                 m->mode = p.mode = switch_mode(&p, t, y);
                 m->bdf_active = 0;
@@ -783,10 +765,7 @@ FmuStatus model_step(Instance *c, double h) {
         }
         t = t_new;
         for (int i = 0; i < NSTATES; i++) y[i] = b->y_new[i];
-        if (t >= t_stop && commit_arrivals(m, t)) {
-            keep_jacobian(m);
-            m->bdf_active = 0;
-        }
+        if (t >= t_stop && commit_arrivals(m, t)) m->bdf_active = 0;
     }
     if (m->mode == MODE_STICK) y[1] = 0.0;
     write_states(c, y);
