@@ -340,6 +340,11 @@ static int commit_arrivals(CylinderData *m, double t) {
     return arrived;
 }
 
+/* what evaluate computes (rhs.evaluate_column's level): the outputs only, the rates too, the
+ * rates with each seal's contact loads of the evaluation before in o (a Jacobian column that
+ * changes no pressure difference) */
+enum { OUTPUTS_ONLY = 0, RATES = 1, RATES_KEPT_LOADS = 2 };
+
 static void evaluate(const CylinderData *m, double t, const double *y, int mode, int rates,
                      double *dy, Outputs *o) {
     const double *c = m->cst;
@@ -392,7 +397,13 @@ static void evaluate(const CylinderData *m, double t, const double *y, int mode,
         double side_a = (loc == 0) * (p1 - pa) + (loc == 1) * (p2 - pa);
         double side_b = (loc == 0) * (p2 - pa);
         double fn, b, clipped, vv, brk;
-        seal_loads(i, dp, temp, &fn, &b, &clipped);
+        if (rates == RATES_KEPT_LOADS) {
+            fn = o->fn[i];
+            b = o->b[i];
+            clipped = o->clip[i];
+        } else {
+            seal_loads(i, dp, temp, &fn, &b, &clipped);
+        }
         if (!sticky || mode == MODE_FREE || mode == MODE_PRESCRIBED) vv = v;
         else if (mode == MODE_STICK) vv = 0.0;
         else {
@@ -469,19 +480,28 @@ typedef struct {
 
 static void problem_fun(void *ctx, double t, const double *y, double *dy) {
     Problem *p = (Problem *)ctx;
-    evaluate(p->m, t, y, p->mode, 1, dy, &p->o);
+    evaluate(p->m, t, y, p->mode, RATES, dy, &p->o);
 }
 
-/* rhs.jacobian: forward differences, h_j = 1.5e-8 max(|y_j|, scale_j) */
+/* rhs.jacobian: forward differences, h_j = 1.5e-8 max(|y_j|, scale_j); as rhs.jacobian_at,
+ * the columns that change no pressure (all but x, U1, U2) first, the first of them looks the
+ * contact loads up, the others keep them */
 static void problem_jac(void *ctx, double t, const double *y, double *J) {
     Problem *p = (Problem *)ctx;
     problem_fun(ctx, t, y, p->f0);
-    for (int j = 0; j < NSTATES; j++) {
-        double h = 1.5e-8 * fmax(fabs(y[j]), JAC_SCALE[j]);
-        for (int i = 0; i < NSTATES; i++) p->shifted[i] = y[i];
-        p->shifted[j] = y[j] + h;
-        problem_fun(ctx, t, p->shifted, p->f1);
-        for (int i = 0; i < NSTATES; i++) J[i * BDF_MAXN + j] = (p->f1[i] - p->f0[i]) / h;
+    int looked_up = 0;
+    for (int sweep = 0; sweep < 2; sweep++) {
+        for (int j = 0; j < NSTATES; j++) {
+            int new_loads = j == 0 || j == 4 || j == 5;
+            if (new_loads != (sweep == 1)) continue;
+            double h = 1.5e-8 * fmax(fabs(y[j]), JAC_SCALE[j]);
+            for (int i = 0; i < NSTATES; i++) p->shifted[i] = y[i];
+            p->shifted[j] = y[j] + h;
+            evaluate(p->m, t, p->shifted, p->mode,
+                     new_loads || !looked_up ? RATES : RATES_KEPT_LOADS, p->f1, &p->o);
+            looked_up = 1;
+            for (int i = 0; i < NSTATES; i++) J[i * BDF_MAXN + j] = (p->f1[i] - p->f0[i]) / h;
+        }
     }
 }
 
@@ -489,7 +509,7 @@ static void problem_jac(void *ctx, double t, const double *y, double *J) {
 static void stick_margin(Problem *p, double t, const double *y, double *hold, double *brk) {
     for (int i = 0; i < NSTATES; i++) p->rest[i] = y[i];
     p->rest[1] = 0.0;
-    evaluate(p->m, t, p->rest, MODE_STICK, 0, NULL, &p->o);
+    evaluate(p->m, t, p->rest, MODE_STICK, OUTPUTS_ONLY, NULL, &p->o);
     *hold = p->o.hold;
     *brk = p->o.brk + (1e-4 * fabs(p->o.brk) + 1e-3);
 }
@@ -616,7 +636,7 @@ FmuStatus model_outputs(Instance *c) {
     if (take_inputs(c) > FMU_WARNING) return FMU_ERROR;
     problem_init(&p, m);
     read_states(c, y);
-    evaluate(m, c->time, y, m->mode, 0, NULL, &p.o);
+    evaluate(m, c->time, y, m->mode, OUTPUTS_ONLY, NULL, &p.o);
     const Outputs *o = &p.o;
     P(P1) = o->p1;
     P(P2) = o->p2;
@@ -650,7 +670,7 @@ void model_derivatives(Instance *c, double *dx) {
     Outputs o;
     double y[NSTATES];
     read_states(c, y);
-    evaluate(m, c->time, y, m->mode, 1, dx, &o);
+    evaluate(m, c->time, y, m->mode, RATES, dx, &o);
 }
 
 /* the next time event: the arrival of a command at the spool (model exchange) */
