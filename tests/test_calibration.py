@@ -136,6 +136,10 @@ def test_repeat_scatter_against_the_standard_library():
     one = repeat_scatter([4.0], [4.4])
     assert one["F_measured_std_N"] is None and one["cv"] is None and one["error_in_std"] is None
     assert one["rel_error_of_mean"] == pytest.approx(0.1)
+    # runs that agree exactly (a file given twice): no scatter to measure the error in
+    same = repeat_scatter([5.0, 5.0], [5.5, 5.5])
+    assert same["F_measured_std_N"] == 0.0 and same["error_in_std"] is None
+    assert same["rel_error_of_mean"] == pytest.approx(0.1)
     with pytest.raises(ValueError, match="2 measured and 1 predicted"):
         repeat_scatter([1.0, 2.0], [1.0])
 

@@ -202,7 +202,7 @@ def repeat_scatter(measured, predicted) -> dict[str, float | int | None]:
     return {"runs": int(y.size), "F_measured_mean_N": mean, "F_measured_std_N": std,
             "cv": std / mean if std is not None and mean else None,
             "F_measured_min_N": float(y.min()), "F_measured_max_N": float(y.max()),
-            "standard_error_N": std / np.sqrt(y.size) if std is not None else None,
+            "standard_error_N": std / float(np.sqrt(y.size)) if std is not None else None,
             "F_predicted_mean_N": pred,
             "rel_error_of_mean": (pred - mean) / mean if mean else None,
             "error_in_std": (pred - mean) / std if std else None}

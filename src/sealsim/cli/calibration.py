@@ -54,11 +54,13 @@ def fit(
     for name, c in report.get("conditions", {}).items():
         if c["F_measured_std_N"] is None:
             continue
+        error = "-" if c["rel_error_of_mean"] is None else f"{100 * c['rel_error_of_mean']:+.1f} %"
+        in_std = ("no scatter" if c["error_in_std"] is None
+                  else f"{c['error_in_std']:+.2f} std")
+        cv = "-" if c["cv"] is None else f"{100 * c['cv']:.1f} %"
         console.print(f"{name} ({c['runs']} runs): measured {c['F_measured_mean_N']:.3f} ± "
-                      f"{c['F_measured_std_N']:.3f} N (1 std of a run, cv "
-                      f"{100 * c['cv']:.1f} %), model {c['F_predicted_mean_N']:.3f} N, error of "
-                      f"the mean {100 * c['rel_error_of_mean']:+.1f} % "
-                      f"({c['error_in_std']:+.2f} std)")
+                      f"{c['F_measured_std_N']:.3f} N (1 std of a run, cv {cv}), model "
+                      f"{c['F_predicted_mean_N']:.3f} N, error of the mean {error} ({in_std})")
     for text in summary["warnings"]:
         console.print(f"[yellow]warning:[/yellow] {text}")
     console.print(f"results written to {out}")
