@@ -21,6 +21,7 @@ import time
 import tomllib
 from pathlib import Path
 
+import dask
 import jsonschema
 import numpy as np
 import pytest
@@ -384,6 +385,13 @@ def test_bad_scheduler_leaves_no_hidden_work_folder(tmp_path):
     one_message(text)
     assert "cannot connect to the Dask scheduler at 'nonsense'" in text
     assert tree(work) == before                      # no .out.study, no lock, no out
+    # nor a trace in the process: dask's scheduler is not left at the cluster that never came
+    # up (a netCDF write of a later command on this worker once tried to lock through it)
+    assert dask.config.get("scheduler", None) != "dask.distributed"
+    ds = xr.Dataset({"F_N": ("pressure", np.ones(2))}, coords={"pressure": [0.0, 1e5]})
+    with ResultFolder(work / "after") as folder:
+        folder.write_netcdf("map.nc", ds)
+    assert (work / "after" / "map.nc").is_file()
 
 
 def test_sigterm_during_fmu_build_removes_its_scratch_folder(tmp_path):

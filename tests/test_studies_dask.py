@@ -98,6 +98,13 @@ def test_local_cluster_gives_the_serial_numbers(study_file, reference, tmp_path)
     assert result.summary["engine"]["kind"] == "local"
     assert result.summary["engine"]["workers"] == 2
     assert result.table["worker"].nunique() == 2          # both worker processes computed
+    # the study's client was the current one only while it ran: this process's dask is back
+    # to its own schedulers (no closed cluster left as the default client or scheduler)
+    import dask
+    from distributed import default_client
+    assert dask.config.get("scheduler", None) != "dask.distributed"
+    with pytest.raises(ValueError, match="No clients found"):
+        default_client()
 
 
 def test_killed_study_resumes_with_only_the_missing_runs(study_file, reference, tmp_path):

@@ -352,13 +352,18 @@ def open_engine(workers: int | None = None, scheduler: str | None = None,
         from distributed import Client
 
         try:
-            connected = Client(scheduler, timeout="10s")
+            # not made the process's default client: a failed connection would leave dask's
+            # scheduler set to a cluster that never came up (later dask work, and xarray's
+            # netCDF writes through their lock, then try to reach it); the study's client is
+            # the current one only while the study runs (as_current)
+            connected = Client(scheduler, timeout="10s", set_as_default=False)
         except Exception as exc:
             raise InputError(f"cannot connect to the Dask scheduler at {scheduler!r}: "
                              f"{type(exc).__name__}: {exc}; start one with 'dask scheduler' "
                              "(and workers with 'dask worker ADDRESS')") from None
         try:
-            yield Engine("scheduler", connected, scheduler)
+            with connected.as_current():
+                yield Engine("scheduler", connected, scheduler)
         finally:
             connected.close()
         return
@@ -374,9 +379,10 @@ def open_engine(workers: int | None = None, scheduler: str | None = None,
         cluster = LocalCluster(n_workers=workers or default_workers(), threads_per_worker=1,
                                processes=True, dashboard_address=":0",
                                silence_logs=logging.ERROR)
-    local = Client(cluster)
+    local = Client(cluster, set_as_default=False)
     try:
-        yield Engine("local", local, cluster.scheduler_address)
+        with local.as_current():
+            yield Engine("local", local, cluster.scheduler_address)
     finally:
         cluster.close()     # workers first: closing the client first makes them log errors
         local.close()
