@@ -40,7 +40,8 @@ from sealsim.errors import InputError
 from sealsim.friction import make_law
 from sealsim.measurements import friction_level
 
-__all__ = ["FrictionFitStudy", "friction_fit_study", "load_fit_case", "repeat_conditions"]
+__all__ = ["FrictionFitStudy", "fit_run_warnings", "friction_fit_study", "load_fit_case",
+           "repeat_conditions"]
 
 _LOADS = {"theta"}     # laws that need F_N and b from a contact map
 
@@ -141,6 +142,7 @@ def friction_fit_study(case: FrictionFitCase, base_dir: str | Path,
                                                                else None)
     proportional_baseline(runs, report["measurements"])
     report["conditions"] = repeat_conditions(case, report["measurements"])
+    result.warnings.extend(fit_run_warnings(report["conditions"], report["measurements"]))
     diagnostics = {
         "status": result.status, "failure": result.failure, "warnings": result.warnings,
         "stages": result.stages, "parameter_names": result.names,
@@ -208,6 +210,47 @@ def repeat_conditions(case: FrictionFitCase, measurements: dict) -> dict:
                        **repeat_scatter([e["F_measured_N"] for e in entries],
                                         [e["F_predicted_N"] for e in entries])}
     return table
+
+
+def fit_run_warnings(conditions: dict, measurements: dict, limit: float = 1.0) -> list[str]:
+    """Warnings for fit runs that lie far from the mean of their repeated test: a fit on one
+    run of several inherits that run's deviation (on the TU Delft rig, one 1 bar run 1.7
+    standard deviations above its test's mean stopped the three-ring fit at a bound; docs/
+    guide/calibration.md, "Which run the fit sees").
+
+    Parameters
+    ----------
+    conditions, measurements : dict
+        report.json ``conditions`` (:func:`repeat_conditions`) and ``measurements``.
+    limit : float
+        Distance from the condition's mean, in standard deviations of a run, above which a fit
+        run is reported (conditions of at least three runs: two runs give no mean to stand out
+        from).
+
+    Examples
+    --------
+    >>> runs = {n: {"F_measured_N": f} for n, f in [("a", 4.7), ("b", 4.8), ("c", 6.3),
+    ...                                               ("d", 5.0), ("e", 4.3)]}
+    >>> c = {"1 bar": {"measurements": list(runs), "roles": ["validate"] * 2 + ["fit"]
+    ...                + ["validate"] * 2, "runs": 5, "F_measured_mean_N": 5.02,
+    ...                "F_measured_std_N": 0.76}}
+    >>> fit_run_warnings(c, runs)[0][:60]
+    "fit run 'c' lies +1.7 standard deviations from the mean of i"
+    """
+    texts = []
+    for name, c in conditions.items():
+        std = c["F_measured_std_N"]
+        if not std or c["runs"] < 3 or "fit" not in c["roles"]:
+            continue
+        for run, role in zip(c["measurements"], c["roles"]):
+            z = (measurements[run]["F_measured_N"] - c["F_measured_mean_N"]) / std
+            if role == "fit" and abs(z) > limit and c["roles"].count("fit") < c["runs"]:
+                texts.append(f"fit run {run!r} lies {z:+.1f} standard deviations from the mean "
+                             f"of its repeated test {name!r} ({c['runs']} runs, "
+                             f"{c['F_measured_mean_N']:.3g} ± {std:.2g} N): the fitted "
+                             "parameters carry that run's deviation; fit all runs of the test "
+                             "(role = 'fit') to make them depend less on one run")
+    return texts
 
 
 def _drop_none(data: dict) -> dict:
