@@ -13,7 +13,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import tomli_w
-from hypothesis import given
+from hypothesis import assume, given
 from hypothesis import strategies as st
 from typer.testing import CliRunner
 
@@ -148,7 +148,10 @@ def test_repeat_scatter_against_the_standard_library():
        st.floats(0.5, 50.0), st.floats(0.01, 100.0))
 def test_repeat_scatter_is_independent_of_the_force_unit(levels, prediction, scale):
     # a change of unit (N to kN, a different load cell gain) scales every level alike: the
-    # relative numbers and the error in units of the scatter must not change
+    # relative numbers and the error in units of the scatter must not change.  Runs that
+    # differ only by rounding (hypothesis found 0.5 and 0.5 + 1 ulp) have a standard deviation
+    # of rounding noise, which a scaling changes: the property is about real scatter
+    assume(statistics.stdev(levels) > 1e-9 * statistics.mean(levels))
     a = repeat_scatter(levels, [prediction] * len(levels))
     b = repeat_scatter([scale * x for x in levels], [scale * prediction] * len(levels))
     for key in ("cv", "rel_error_of_mean", "error_in_std"):
