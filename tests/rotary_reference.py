@@ -25,7 +25,7 @@ def reference_steady_state(case, angular_speed, tol=1e-4, max_iter=100):
             warnings.simplefilter("ignore", (ServiceRangeWarning, OilRangeWarning))
             state = model.friction.evaluate(angular_speed, t_contact)
         temps = lu.solve(f @ fixed + model.source(float(state.power))
-                         + model.bearing_source(angular_speed, t_sump))
+                         + model.bearing_source(model.bearing_heat(angular_speed, t_sump)))
         new_contact = model.contact_temperature(temps)
         new_sump = model.sump_temperature(temps)
         converged = abs(new_contact - t_contact) < tol and abs(new_sump - t_sump) < tol

@@ -399,12 +399,12 @@ class RotaryModel:
         """Friction heat of the bearing beside the seal [W] (:func:`bearing_heat`)."""
         return bearing_heat(self.case, self.oil, angular_speed, sump_temperature)
 
-    def bearing_source(self, angular_speed: float, sump_temperature: float) -> np.ndarray:
-        """Heat source vector of the bearing: its shaft share spread over the shaft under the
-        inner ring, the rest into the housing (a lumped node) or, with a held housing, into
-        the sump node when that is lumped (else it leaves with the held nodes)."""
+    def bearing_source(self, heat: float) -> np.ndarray:
+        """Heat source vector of the bearing's friction heat [W] (:meth:`bearing_heat`): its
+        shaft share spread over the shaft under the inner ring, the rest into the housing (a
+        lumped node) or, with a held housing, into the sump node when that is lumped (else it
+        leaves with the held nodes)."""
         s = np.zeros(self.network.n)
-        heat = self.bearing_heat(angular_speed, sump_temperature)
         if heat == 0.0:
             return s
         share = self.case.environment.bearing.shaft_share
@@ -547,7 +547,8 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
         power = float(state.power)
         key = (round(math.log1p(abs(omega)) / 0.02), round(t_sump / 2.0))
         before = watched(temps)
-        bearing = model.bearing_source(omega, t_sump)
+        bearing_w = model.bearing_heat(omega, t_sump)
+        bearing = model.bearing_source(bearing_w)
         # the face conductances ride with the factorisation: the heat paths of the row are
         # those of the matrices the step was solved with
         temps, heat_out = stepper.step(temps, h, model.source(power) + bearing, fixed, key,
@@ -559,7 +560,7 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
         dissipated += heat_out
         t_contact = model.contact_temperature(temps)
         rows.append(_row(model, state, t1, omega, temps, t_contact, stepper.payload,
-                         model.bearing_heat(omega, t_sump)))
+                         bearing_w))
         t = t1
         if extend and t >= end - 1e-9:
             calm = float(np.max(np.abs(watched(temps) - before))) / h < case.duty.steady_rate
@@ -765,7 +766,8 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
                 lu, factorised_at = factorise(k), temps[sump]
                 unit_response = lu.solve(unit_source)
                 unit_contact = model.contact_temperature(unit_response)
-        bearing = model.bearing_source(angular_speed, model.sump_temperature(temps))
+        bearing = model.bearing_source(model.bearing_heat(angular_speed,
+                                                          model.sump_temperature(temps)))
         step = lu.solve(f @ fixed + unit_source * power + bearing - k @ temps)
         denominator = 1.0 - slope * unit_contact
         if denominator > 0.1:  # else the friction heats faster than the network cools: no help
@@ -785,19 +787,20 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
     t_contact = model.contact_temperature(temps)
     state = friction_at(t_contact)
     film = float(state.film)
+    t_sump = model.sump_temperature(temps)
     paths = model.heat_paths(temps, model.network.face_conductances(
-        model.coefficients(angular_speed, model.sump_temperature(temps))))
+        model.coefficients(angular_speed, t_sump)))
     if angular_speed != 0 and film_range_note(film, film):
         warnings.warn(film_range_note(film, film), FilmRangeWarning, stacklevel=2)
     return {"torque_Nm": float(state.torque), "power_W": float(state.power),
             "T_contact_C": t_contact - ZERO_CELSIUS_K,
             "T_groove_C": float(temps[model.grid.groove_cell]) - ZERO_CELSIUS_K,
-            "T_sump_C": model.sump_temperature(temps) - ZERO_CELSIUS_K,
+            "T_sump_C": t_sump - ZERO_CELSIUS_K,
             "T_housing_C": model.housing_temperature(temps) - ZERO_CELSIUS_K, "film_um": film * 1e6,
             "F_lub_N": float(state.force_lubricant), "F_material_N": float(state.force_material),
             "lip_force_N": float(state.lip_force), "mu_dry": float(state.mu_dry),
             "asperity_share": float(state.asperity_share),
-            "bearing_power_W": model.bearing_heat(angular_speed, model.sump_temperature(temps)),
+            "bearing_power_W": model.bearing_heat(angular_speed, t_sump),
             **{f"heat_{path}_W": heat for path, heat in paths.items()},
             "iterations": iteration, "lip_note": lip_note(case, t_contact)}
 
