@@ -412,7 +412,7 @@ def _integrate_compiled(system, progress, sampler) -> list[Segment]:
     work = (np.zeros((system.n_diag, 1)), system.tolerances(1.0)[:ndyn].copy(), np.zeros(n),
             np.zeros(n), np.array([0.1 * atol[1]]), np.zeros(n))
     grid = sampler.grid
-    samples = sampler.buffer(n) if hasattr(sampler, "buffer") else np.zeros((grid.size, n))
+    samples = sampler.buffer(n)
     sample_modes = np.zeros(grid.size, dtype=np.int64)
     cap = 256
     seg_t, seg_i, seg_y = np.zeros((cap, 2)), np.zeros((cap, 5), dtype=np.int64), \
@@ -483,6 +483,9 @@ class _EndOnly:
 
     def __init__(self, end: float):
         self.grid = np.array([float(end)])
+
+    def buffer(self, n_states: int) -> np.ndarray:
+        return np.zeros((1, n_states))
 
     def store(self, times, states, modes) -> None:
         pass

@@ -400,8 +400,9 @@ class PneumaticSystem:
         ``y`` has shape (n,) or (n, k) (k columns, ``t`` scalar or (k,)).  With
         ``outputs_only`` (and ``full``) only the quantities of the output time series are
         computed (no flows, heat or derivatives: their entries are 0), at about half the cost.
-        ``out``: zeroed, Fortran-ordered arrays (dy of y's shape, diagnostics (n_diag, k)) to
-        write into instead of new ones.
+        ``out``: Fortran-ordered arrays (dy of y's shape, diagnostics (n_diag, k)) to write
+        into instead of new ones; the entries the evaluation does not write keep what they
+        held (zeros in new arrays).
         """
         y = np.asarray(y, dtype=float)
         column = y.ndim == 1
