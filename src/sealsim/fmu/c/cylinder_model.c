@@ -345,7 +345,7 @@ static int commit_arrivals(CylinderData *m, double t) {
  * changes no pressure difference) */
 enum { OUTPUTS_ONLY = 0, RATES = 1, RATES_KEPT_LOADS = 2 };
 
-static void evaluate(const CylinderData *m, double t, const double *y, int mode, int rates,
+static void evaluate(const CylinderData *m, double t, const double *y, int mode, int level,
                      double *dy, Outputs *o) {
     const double *c = m->cst;
     const double gm1 = AIR_GAMMA - 1.0;
@@ -357,7 +357,7 @@ static void evaluate(const CylinderData *m, double t, const double *y, int mode,
     double s = spool_position(m, t);
     double ps = c[C_PS], pa = c[C_PA], ts = c[C_TS], ta = c[C_TA], t_wall = c[C_TW];
     double g[4] = {0, 0, 0, 0}, h[4] = {0, 0, 0, 0}, q1 = 0.0, q2 = 0.0;
-    if (rates) {
+    if (level != OUTPUTS_ONLY) {
         double op[4];
         openings(s, c[C_CENTRE], op);
         double line1 = series_pair(c[C_THR1], cushion_conductance(x, c[C_CU1_L], c[C_CU1_C],
@@ -397,7 +397,7 @@ static void evaluate(const CylinderData *m, double t, const double *y, int mode,
         double side_a = (loc == 0) * (p1 - pa) + (loc == 1) * (p2 - pa);
         double side_b = (loc == 0) * (p2 - pa);
         double fn, b, clipped, vv, brk;
-        if (rates == RATES_KEPT_LOADS) {
+        if (level == RATES_KEPT_LOADS) {
             fn = o->fn[i];
             b = o->b[i];
             clipped = o->clip[i];
@@ -413,7 +413,7 @@ static void evaluate(const CylinderData *m, double t, const double *y, int mode,
         double force = law_rates(law, LAW_PAR[i], y + off, vv, fn, b, side_a, side_b, temp, dz,
                                  &brk, FRIC_INT[i] + 1, FRIC_DATA + FRIC_INT[i][0], dp,
                                  table_orientation(loc, p1, p2, pa));
-        if (rates) {
+        if (level != OUTPUTS_ONLY) {
             int ns = SEAL_NSTATES[i];
             for (int j = 0; j < ns; j++) dy[off + j] = dz[j];
         }
@@ -441,7 +441,7 @@ static void evaluate(const CylinderData *m, double t, const double *y, int mode,
         }
     }
     for (int i = 0; i < NSEAL; i++) f_fric += o->f[i];
-    if (rates) {
+    if (level != OUTPUTS_ONLY) {
         dy[0] = v;
         dy[1] = (mode == MODE_FORWARD || mode == MODE_BACKWARD || mode == MODE_FREE)
                     ? (f_drive - f_fric) / c[C_MASS] : 0.0;
