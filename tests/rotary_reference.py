@@ -18,6 +18,7 @@ def reference_steady_state(case, angular_speed, tol=1e-4, max_iter=100):
     fixed = model.fixed_temperatures()
     t_sump = model.sump_temperature(np.full(model.network.n, model.start_temperature))
     t_contact = t_sump
+    temps = np.full(model.network.n, model.start_temperature)
     for iteration in range(1, max_iter + 1):
         k, f = model.assemble(angular_speed, t_sump)
         lu = factorise(k.tocsc())
@@ -25,7 +26,7 @@ def reference_steady_state(case, angular_speed, tol=1e-4, max_iter=100):
             warnings.simplefilter("ignore", (ServiceRangeWarning, OilRangeWarning))
             state = model.friction.evaluate(angular_speed, t_contact)
         temps = lu.solve(f @ fixed + model.source(float(state.power))
-                         + model.bearing_source(model.bearing_heat(angular_speed, t_sump)))
+                         + model.bearing_source(model.bearing_heat(angular_speed, temps)))
         new_contact = model.contact_temperature(temps)
         new_sump = model.sump_temperature(temps)
         converged = abs(new_contact - t_contact) < tol and abs(new_sump - t_sump) < tol

@@ -223,7 +223,8 @@ class Bearing(CaseModel):
 
     ``model``: ``"palmgren"`` (Palmgren's load-independent friction of a deep-groove ball
     bearing in the sump oil, :func:`~sealsim.tribology.rolling_bearing.palmgren_viscous_moment`
-    at the sump temperature), ``"power"`` (the heat ``power`` you give, e.g. from a bearing
+    at the bearing's operating temperature, the mean of the shaft under its inner ring and the
+    housing), ``"power"`` (the heat ``power`` you give, e.g. from a bearing
     catalogue's friction model including the load) or ``"none"``; default from the set-up
     (gearbox: palmgren, test_rig: none).
     """

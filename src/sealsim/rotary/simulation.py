@@ -157,17 +157,18 @@ def bearing_span(case: RotaryCase) -> tuple[float, float] | None:
     return near - bearing_geometry(case)[1], near
 
 
-def bearing_heat(case: RotaryCase, oil, angular_speed, sump_temperature):
-    """Friction heat [W] of the bearing beside the seal at the shaft speed ω [rad/s] and the
-    sump temperature [K]: Palmgren's viscous moment × |ω| (``bearing.model = "palmgren"``),
-    the given power while the shaft turns (``"power"``), or 0."""
+def bearing_heat(case: RotaryCase, oil, angular_speed, bearing_temperature):
+    """Friction heat [W] of the bearing beside the seal at the shaft speed ω [rad/s] and its
+    operating temperature [K] (:meth:`RotaryModel.bearing_temperature`): Palmgren's viscous
+    moment × |ω| with the oil's viscosity at that temperature (``bearing.model =
+    "palmgren"``), the given power while the shaft turns (``"power"``), or 0."""
     bearing = case.environment.bearing
     if bearing.model == "none" or angular_speed == 0:
         return 0.0
     if bearing.model == "power":
         return float(bearing.power)
-    moment = palmgren_viscous_moment(oil.kinematic_viscosity(sump_temperature), angular_speed,
-                                     bearing_geometry(case)[0], bearing.f0)
+    moment = palmgren_viscous_moment(oil.kinematic_viscosity(bearing_temperature),
+                                     angular_speed, bearing_geometry(case)[0], bearing.f0)
     return float(moment) * abs(angular_speed)
 
 
@@ -395,9 +396,26 @@ class RotaryModel:
         s[self.grid.contact_cells] = power * self.grid.contact_weights
         return s
 
-    def bearing_heat(self, angular_speed: float, sump_temperature: float) -> float:
-        """Friction heat of the bearing beside the seal [W] (:func:`bearing_heat`)."""
-        return bearing_heat(self.case, self.oil, angular_speed, sump_temperature)
+    def bearing_temperature(self, temperatures: np.ndarray) -> float:
+        """Operating temperature of the bearing beside the seal [K]: the mean of its inner
+        ring, the shaft surface under it, and its outer ring, the housing it sits in (the sump
+        temperature without a bearing).
+
+        Palmgren's moment takes the oil's viscosity at the bearing's operating temperature
+        (Harris & Kotzalas 2007, ch. 9), not at the sump's: the bearing's own friction heats
+        its rings, and the thinner oil there limits that heat.  At the sump's temperature a
+        cold oil would feed the shaft without that limit (VG 68 with the sump held at 0 °C:
+        285 W at 1000 rpm on 80 mm, a contact hotter than with a 20 °C sump)."""
+        if self.grid.bearing_cells.size == 0:
+            return self.sump_temperature(temperatures)
+        inner = float(temperatures[self.grid.bearing_cells] @ self.grid.bearing_weights)
+        return 0.5 * (inner + self.housing_temperature(temperatures))
+
+    def bearing_heat(self, angular_speed: float, temperatures: np.ndarray) -> float:
+        """Friction heat of the bearing beside the seal [W] at the network's temperatures
+        (:func:`bearing_heat` at :meth:`bearing_temperature`)."""
+        return bearing_heat(self.case, self.oil, angular_speed,
+                            self.bearing_temperature(temperatures))
 
     def bearing_source(self, heat: float) -> np.ndarray:
         """Heat source vector of the bearing's friction heat [W] (:meth:`bearing_heat`): its
@@ -547,7 +565,7 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
         power = float(state.power)
         key = (round(math.log1p(abs(omega)) / 0.02), round(t_sump / 2.0))
         before = watched(temps)
-        bearing_w = model.bearing_heat(omega, t_sump)
+        bearing_w = model.bearing_heat(omega, temps)
         bearing = model.bearing_source(bearing_w)
         # the face conductances ride with the factorisation: the heat paths of the row are
         # those of the matrices the step was solved with
@@ -589,7 +607,7 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
     first = _row(model, model.friction.evaluate(omega0, model.start_temperature), 0.0, omega0,
                  start, model.start_temperature,
                  model.network.face_conductances(model.coefficients(omega0, sump0)),
-                 model.bearing_heat(omega0, sump0))
+                 model.bearing_heat(omega0, start))
     frame = pd.concat([pd.DataFrame([first], columns=TIMESERIES_COLUMNS), frame],
                       ignore_index=True)
 
@@ -695,15 +713,20 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
                  max_iter: int = 100) -> dict:
     """Steady operating point at constant speed: friction and temperatures in equilibrium.
 
-    Solves K(T_sump)·T = F·T_fixed + e·P(ω, T_contact) for the temperatures T (e spreads the
-    friction power P over the contact band; K depends on the sump temperature through the oil's
-    convection coefficients).  The network matrix K₀ is factorised once, at the start
+    Solves K(T_sump)·T = F·T_fixed + e·P(ω, T_contact) + b·Q(ω, T_bearing) for the temperatures
+    T (e spreads the friction power P over the contact band, b the bearing's heat Q over the
+    shaft under its inner ring and the housing; K depends on the sump temperature through the
+    oil's convection coefficients).  The network matrix K₀ is factorised once, at the start
     temperature, and reused: each iteration solves K₀·δ = r for the residual
-    r = F·T_fixed + e·P − K(T_sump)·T (a chord iteration; Kelley, *Iterative Methods for Linear
-    and Nonlinear Equations*, SIAM 1995, ch. 5).  The friction's feedback enters through the
-    Sherman–Morrison formula with the secant slope s = ΔP/ΔT_contact of the last two
-    iterates, δ = K₀⁻¹r + u·s·c(K₀⁻¹r)/(1 − s·c(u)), u = K₀⁻¹e, c(·) the contact-band mean,
-    so the friction coupling converges like a secant method instead of a fixed-point sweep.
+    r = F·T_fixed + e·P + b·Q − K(T_sump)·T (a chord iteration; Kelley, *Iterative Methods for Linear
+    and Nonlinear Equations*, SIAM 1995, ch. 5).  The heats' feedback enters through the
+    Woodbury formula with the secant slopes of the last two iterates of the two heats that
+    depend on the temperatures, the seal's friction P(T_contact) and the bearing's heat
+    Q(T_bearing) (source b, :meth:`RotaryModel.bearing_temperature`):
+    δ = x + U·S·a with x = K₀⁻¹r, U = K₀⁻¹[e b], S = diag(s_P, s_Q) and (I − C(U)·S)·a = C(x),
+    C(·) the contact-band mean and the bearing temperature's linear part (with only the friction
+    the Sherman–Morrison formula δ = x + u·s·c(x)/(1 − s·c(u))), so the couplings converge
+    like a secant method instead of a fixed-point sweep.
     Only when a free sump heats far from the temperature of the factorisation and the
     iteration slows down (:data:`STALE_CONTRACTION`) is the matrix factorised anew.
 
@@ -733,12 +756,26 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
     model = RotaryModel(case)
     fixed = model.fixed_temperatures()
     temps = np.full(model.network.n, model.start_temperature)
+    zero = np.zeros(model.network.n)
+
+    def probes(x: np.ndarray) -> np.ndarray:
+        """The linear parts of the contact-band mean and the bearing temperature of x."""
+        return np.array([model.contact_temperature(x), model.bearing_temperature(x)
+                         - model.bearing_temperature(zero)])
+
+    # unit sources of the two heats that depend on the temperatures: the seal's friction
+    # (on the contact band) and the bearing's (inner ring and housing)
+    unit_sources = np.stack([model.source(1.0), model.bearing_source(1.0)], axis=1)
+
+    def factorised(sump_temperature: float):
+        k, f = model.assemble(angular_speed, sump_temperature)
+        lu = factorise(k)
+        responses = np.stack([lu.solve(unit_sources[:, j]) for j in range(2)], axis=1)
+        return lu, responses, np.stack([probes(responses[:, j]) for j in range(2)], axis=1)
+
     factorised_at = model.sump_temperature(temps)
+    lu, responses, coupling = factorised(factorised_at)
     k, f = model.assemble(angular_speed, factorised_at)
-    lu = factorise(k)
-    unit_source = model.source(1.0)
-    unit_response = lu.solve(unit_source)
-    unit_contact = model.contact_temperature(unit_response)  # K/W
 
     def friction_at(t_contact: float) -> FrictionState:
         try:
@@ -749,29 +786,31 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
             raise ModelError(f"steady state at {angular_speed * 30 / math.pi:.0f} rpm: contact "
                              f"temperature {t_contact - ZERO_CELSIUS_K:.1f} degC: {exc}") from None
 
+    def heats(x: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(contact, bearing temperature), (friction power, bearing heat) at x."""
+        where = np.array([model.contact_temperature(x), model.bearing_temperature(x)])
+        return where, np.array([float(friction_at(where[0]).power),
+                                bearing_heat(case, model.oil, angular_speed, where[1])])
+
     sump = None if model.sump_fixed else model.network.node_index["sump"]
-    # the first slope from a 1 K difference, then secants through the iterates
-    previous = (model.start_temperature + 1.0,
-                float(friction_at(model.start_temperature + 1.0).power))
-    slope, converged, last_update, stale = 0.0, False, np.inf, False
+    # the first slopes from a 1 K difference, then secants through the iterates
+    previous = heats(temps + 1.0)
+    slopes, converged, last_update, stale = np.zeros(2), False, np.inf, False
     for iteration in range(1, max_iter + 1):
-        t_contact = model.contact_temperature(temps)
-        power = float(friction_at(t_contact).power)
-        if t_contact != previous[0]:
-            slope = (power - previous[1]) / (t_contact - previous[0])
-        previous = (t_contact, power)
+        where, power = heats(temps)
+        moved = where != previous[0]
+        slopes[moved] = (power - previous[1])[moved] / (where - previous[0])[moved]
+        previous = (where, power)
         if sump is not None:  # the oil's coefficients follow the sump temperature
             k, f = model.assemble(angular_speed, temps[sump])
             if stale and abs(temps[sump] - factorised_at) > STALE_SUMP_CHANGE:
-                lu, factorised_at = factorise(k), temps[sump]
-                unit_response = lu.solve(unit_source)
-                unit_contact = model.contact_temperature(unit_response)
-        bearing = model.bearing_source(model.bearing_heat(angular_speed,
-                                                          model.sump_temperature(temps)))
-        step = lu.solve(f @ fixed + unit_source * power + bearing - k @ temps)
-        denominator = 1.0 - slope * unit_contact
-        if denominator > 0.1:  # else the friction heats faster than the network cools: no help
-            step += unit_response * (slope * model.contact_temperature(step) / denominator)
+                factorised_at = temps[sump]
+                lu, responses, coupling = factorised(factorised_at)
+        step = lu.solve(f @ fixed + unit_sources @ power - k @ temps)
+        # Woodbury: the heats' feedback (P + s·Δ) through the two probes, (I − C·S)·a = C(x)
+        system = np.eye(2) - coupling * slopes[None, :]
+        if np.linalg.det(system) > 0.1:  # else a heat grows faster than the network cools it
+            step += responses @ (slopes * np.linalg.solve(system, probes(step)))
         temps += step
         if not np.all(np.isfinite(temps)):
             break
@@ -800,7 +839,7 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
             "F_lub_N": float(state.force_lubricant), "F_material_N": float(state.force_material),
             "lip_force_N": float(state.lip_force), "mu_dry": float(state.mu_dry),
             "asperity_share": float(state.asperity_share),
-            "bearing_power_W": model.bearing_heat(angular_speed, t_sump),
+            "bearing_power_W": model.bearing_heat(angular_speed, temps),
             **{f"heat_{path}_W": heat for path, heat in paths.items()},
             "iterations": iteration, "lip_note": lip_note(case, t_contact)}
 
