@@ -15,7 +15,7 @@ from typer.testing import CliRunner
 
 from sealsim.cases import validate_case
 from sealsim.cli import app
-from sealsim.errors import InputError
+from sealsim.errors import InputError, ModelError
 from sealsim.properties.elastomers import get_elastomer
 from sealsim.rotary.case import SETUPS, RotaryCase
 from sealsim.rotary.friction import LipSealFriction
@@ -754,3 +754,14 @@ def test_duty_steps_with_ramp_interpolate_speed():
     frame = simulate(case).timeseries
     during = frame[(frame["time_s"] > 120) & (frame["time_s"] < 180)]
     assert len(during) >= 5 and np.all(np.diff(during["speed_rpm"]) > 0)
+
+
+def test_steady_state_beyond_the_rubber_range_is_refused_in_degrees_celsius():
+    # 120 mm at 5000 rpm over an 80 °C sump: the lip would pass 150 °C, where the NBR model
+    # ends.  The message gives that temperature, the range and a remedy in °C (formerly the
+    # first iterate beyond the range stopped the solver with the range in kelvin).
+    case = _case(seal={"shaft_diameter": "120 mm"}, environment={"sump_temperature": "80 degC"})
+    with pytest.raises(ModelError, match=r"5000 rpm: the contact would run at about 15\d degC "
+                       r"\(sump 80 degC\), outside the -125 to 150 degC that the NBR model "
+                       r"covers .* try a lower speed or another elastomer"):
+        steady_state(case, 5000 * RPM)

@@ -777,11 +777,17 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
     lu, responses, coupling = factorised(factorised_at)
     k, f = model.assemble(angular_speed, factorised_at)
 
+    rubber = model.friction.elastomer
+    lowest, highest = rubber.allowed_range
+
     def friction_at(t_contact: float) -> FrictionState:
+        # an iterate may overshoot the rubber's temperature range on its way: its friction is
+        # taken at the range's end; a steady state outside the range is refused below
         try:
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore", (ServiceRangeWarning, OilRangeWarning))
-                return model.friction.evaluate(angular_speed, t_contact)
+                return model.friction.evaluate(angular_speed,
+                                               min(max(t_contact, lowest), highest))
         except InputError as exc:
             raise ModelError(f"steady state at {angular_speed * 30 / math.pi:.0f} rpm: contact "
                              f"temperature {t_contact - ZERO_CELSIUS_K:.1f} degC: {exc}") from None
@@ -824,9 +830,21 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
         raise ModelError(f"steady state at {angular_speed * 30 / math.pi:.0f} rpm did not "
                          f"converge in {max_iter} iterations")
     t_contact = model.contact_temperature(temps)
+    t_sump = model.sump_temperature(temps)
+    if not lowest <= t_contact <= highest:
+        remedy = ("a lower speed or another elastomer" if model.sump_fixed else
+                  "a lower speed, a held sump (environment.sump_temperature) or a housing "
+                  "that sheds more heat (environment.housing_area, housing_heat_transfer)")
+        raise ModelError(
+            f"steady state at {angular_speed * 30 / math.pi:.0f} rpm: the contact would run at "
+            f"about {t_contact - ZERO_CELSIUS_K:.0f} degC (sump {t_sump - ZERO_CELSIUS_K:.0f} "
+            f"degC), "
+            f"outside the {lowest - ZERO_CELSIUS_K:.0f} to {highest - ZERO_CELSIUS_K:.0f} degC "
+            f"that the {rubber.name} model covers (service limit "
+            f"{rubber.service_range[1] - ZERO_CELSIUS_K:.0f} degC): the seal has no steady "
+            f"state there; try {remedy}")
     state = friction_at(t_contact)
     film = float(state.film)
-    t_sump = model.sump_temperature(temps)
     paths = model.heat_paths(temps, model.network.face_conductances(
         model.coefficients(angular_speed, t_sump)))
     if angular_speed != 0 and film_range_note(film, film):
