@@ -765,3 +765,19 @@ def test_steady_state_beyond_the_rubber_range_is_refused_in_degrees_celsius():
                        r"\(sump 80 degC\), outside the -125 to 150 degC that the NBR model "
                        r"covers .* try a lower speed or another elastomer"):
         steady_state(case, 5000 * RPM)
+
+
+def test_cold_start_warms_the_contact_without_overshoot():
+    # 80 mm NBR lip, VG 68, everything at -20 °C, 1500 rpm: the cold oil's 900 W fall as the
+    # contact warms.  Taken at the start of each 0.25 s step the friction overshot (-20 → +70 →
+    # -3 → +18 °C); the linearly implicit step warms the contact monotonically and, after 5 s,
+    # within 1 K of a run with 100× shorter steps (measured 0.6 K; backward Euler's lag).
+    def run(min_step, max_step):
+        case = _case(oil={"name": "ISO VG 68"}, environment={"ambient_temperature": "-20 degC"},
+                     duty={"steps": [{"speed": "1500 rpm", "duration": "6 s"}]},
+                     numerics={"min_time_step": min_step, "max_time_step": max_step})
+        return simulate(case).timeseries
+    coarse, fine = run("0.25 s", "4 s"), run("0.0025 s", "0.04 s")
+    assert np.all(np.diff(coarse["T_contact_C"]) > 0)
+    at = np.interp(5.0, fine["time_s"], fine["T_contact_C"])
+    assert abs(np.interp(5.0, coarse["time_s"], coarse["T_contact_C"]) - at) < 1.0

@@ -114,6 +114,39 @@ def test_backward_euler_conserves_energy(power, dt, steps):
     assert generated - stored - out == pytest.approx(0.0, abs=1e-8 * (1 + abs(stored)))
 
 
+@settings(max_examples=30, deadline=None)
+@given(q0=st.floats(0, 500), slope=st.floats(-50, 0), dt=st.floats(0.01, 100))
+def test_linearly_implicit_source_is_backward_euler_of_a_linear_source(q0, slope, dt):
+    # A heat that depends linearly on a probe temperature, Q = q0 + s·(θ − θ0), θ the mean of
+    # two cells: the stepper's Woodbury update must give the backward-Euler step of that linear
+    # problem, here solved directly with the source's term in the matrix (independent
+    # reference); the heat it reports added is s·(θ1 − θ0).  Round-off: 1e-9 K.
+    r = graded_edges([0, 0.02], [5e-3, 1e-3])
+    z = graded_edges([0, 0.05], [5e-3, 5e-3])
+    model = AxisymmetricConduction(r, z, np.zeros((len(r) - 1, len(z) - 1), int), [STEEL])
+    faces = np.nonzero(model.boundary.side == 1)[0]
+    net = ThermalNetwork(model, {"sump": 500.0}, ["ambient"], {"surface": (faces, "sump")})
+    source_cells, probe_cells = [0, 1], [1, 2]
+    e = np.zeros((net.n, 1))
+    e[source_cells, 0] = 0.5
+    c = np.zeros((net.n, 1))
+    c[probe_cells, 0] = 0.5
+    stepper = BackwardEulerStepper(net, feedback_sources=e, feedback_probes=c)
+    temps = np.linspace(290.0, 330.0, net.n)
+    fixed = np.array([290.0])
+
+    def build():
+        return net.assemble({"surface": 100.0}, [Link("sump", "ambient", 2.0)])
+    t1, _ = stepper.step(temps, dt, q0 * e[:, 0], fixed, "k", build, slopes=np.array([slope]))
+    k, f = build()
+    matrix = (np.diag(net.capacity / dt) + k.toarray()) - slope * e @ c.T
+    rhs = net.capacity / dt * temps + f @ fixed + e[:, 0] * (q0 - slope * (c[:, 0] @ temps))
+    exact = np.linalg.solve(matrix, rhs)
+    assert np.max(np.abs(t1 - exact)) < 1e-9
+    assert stepper.feedback_heat[0] == pytest.approx(slope * (c[:, 0] @ (t1 - temps)),
+                                                     abs=1e-9 * (1 + abs(q0)))
+
+
 def test_rotating_shaft_coefficients_match_worked_values():
     # Kays & Bjorklund's correlation (Incropera) evaluated by hand: d = 80 mm,
     # 1500 rpm: VG 68 at 80 °C (ν = 14.7 mm²/s, k = 0.127, Pr ≈ 190) h ≈ 2000; air h ≈ 60.

@@ -411,6 +411,23 @@ class RotaryModel:
         inner = float(temperatures[self.grid.bearing_cells] @ self.grid.bearing_weights)
         return 0.5 * (inner + self.housing_temperature(temperatures))
 
+    def heat_feedback(self) -> tuple[np.ndarray, np.ndarray]:
+        """The two heats that depend on the temperatures, as the network sees them: unit
+        sources (n × 2: the seal's friction on the contact band, :meth:`source`; the bearing's,
+        :meth:`bearing_source`) and the linear parts of the temperatures they depend on
+        (n × 2 probes: the contact-band mean, :meth:`contact_temperature`; the bearing's
+        temperature, :meth:`bearing_temperature`, whose held housing is a constant)."""
+        probes = np.zeros((self.network.n, 2))
+        probes[self.grid.contact_cells, 0] = self.grid.contact_weights
+        nodes = self.network.node_index
+        if self.grid.bearing_cells.size:
+            probes[self.grid.bearing_cells, 1] = 0.5 * self.grid.bearing_weights
+            if self.case.environment.housing_temperature is None:
+                probes[nodes["housing"], 1] += 0.5
+        elif not self.sump_fixed:
+            probes[nodes["sump"], 1] = 1.0
+        return np.stack([self.source(1.0), self.bearing_source(1.0)], axis=1), probes
+
     def bearing_heat(self, angular_speed: float, temperatures: np.ndarray) -> float:
         """Friction heat of the bearing beside the seal [W] at the network's temperatures
         (:func:`bearing_heat` at :meth:`bearing_temperature`)."""
@@ -526,7 +543,9 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
     limit = max(float(case.duty.max_duration), end) if extend else end
     breaks = np.unique(times)
     num = case.numerics
-    stepper = BackwardEulerStepper(model.network)
+    feedback_sources, feedback_probes = model.heat_feedback()
+    stepper = BackwardEulerStepper(model.network, feedback_sources=feedback_sources,
+                                   feedback_probes=feedback_probes)
     temps = np.full(model.network.n, model.start_temperature)
     fixed = model.fixed_temperatures()
     capacity = model.network.capacity
@@ -542,6 +561,28 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
     k_break = 1
     last_report = -1.0
     calm_since, steady = None, False
+    last, friction_slope = None, 0.0        # (ω, T_contact, P) of the last friction evaluation
+    # a step's row holds the temperatures at its end and the friction there (the heat the
+    # linearly implicit step applied), so each row waits for the next step's evaluation
+    pending = None
+
+    def finish(step: tuple, state: FrictionState | None) -> tuple:
+        t1, omega, temps, t_contact, payload = step
+        if state is None:
+            state = friction_at(omega, t_contact, t1)
+        return _row(model, state, t1, omega, temps, t_contact, payload,
+                    model.bearing_heat(omega, temps))
+
+    def friction_at(omega: float, t_contact: float, t1: float) -> FrictionState:
+        try:
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore", (ServiceRangeWarning, OilRangeWarning))
+                return model.friction.evaluate(omega, t_contact)
+        except InputError as exc:
+            raise ModelError(f"rotary simulation stopped at t = {t1:.1f} s "
+                             f"({omega * 30 / math.pi:.0f} rpm, contact temperature "
+                             f"{t_contact - ZERO_CELSIUS_K:.1f} degC): {exc}") from None
+
     while t < end - 1e-9 or (extend and not steady and t < limit - 1e-9):
         while k_break < len(breaks) and breaks[k_break] <= t + 1e-9:
             k_break += 1
@@ -554,31 +595,37 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
         t1 = t + h
         omega = _speed_profile(times, speeds, t1 - 1e-12 if t1 >= t_next_break else t1)
         t_sump = model.sump_temperature(temps)
-        try:
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore", (ServiceRangeWarning, OilRangeWarning))
-                state = model.friction.evaluate(omega, t_contact)
-        except InputError as exc:
-            raise ModelError(f"rotary simulation stopped at t = {t1:.1f} s "
-                             f"({omega * 30 / math.pi:.0f} rpm, contact temperature "
-                             f"{t_contact - ZERO_CELSIUS_K:.1f} degC): {exc}") from None
+        state = friction_at(omega, t_contact, t1)
         power = float(state.power)
+        if pending is not None:  # the last step's row: the friction at its end
+            rows.append(finish(pending, state if pending[1] == omega else None))
+        # the heats' slopes for the linearly implicit step: the friction's from the last
+        # evaluation at the same speed (a secant), else from a 1 K difference; the bearing's
+        # (Palmgren, cheap) always from a 1 K difference
+        if last is not None and last[0] == omega and abs(t_contact - last[1]) > 1e-6:
+            friction_slope = (power - last[2]) / (t_contact - last[1])
+        elif last is None or last[0] != omega:
+            friction_slope = float(friction_at(omega, t_contact + 1.0, t1).power) - power
+        last = (omega, t_contact, power)
+        t_bearing = model.bearing_temperature(temps)
+        bearing_w = model.bearing_heat(omega, temps)
+        bearing_slope = bearing_heat(case, model.oil, omega, t_bearing + 1.0) - bearing_w
         key = (round(math.log1p(abs(omega)) / 0.02), round(t_sump / 2.0))
         before = watched(temps)
-        bearing_w = model.bearing_heat(omega, temps)
         bearing = model.bearing_source(bearing_w)
         # the face conductances ride with the factorisation: the heat paths of the row are
         # those of the matrices the step was solved with
         temps, heat_out = stepper.step(temps, h, model.source(power) + bearing, fixed, key,
-                                       lambda o=omega, s=t_sump: model.matrices(o, s))
+                                       lambda o=omega, s=t_sump: model.matrices(o, s),
+                                       slopes=np.array([friction_slope, bearing_slope]))
         if not np.all(np.isfinite(temps)):
             raise ModelError(f"rotary simulation: temperatures became non-finite at t = {t1:.1f} s")
-        generated += power * h
-        generated_bearing += float(bearing.sum()) * h
+        added = feedback_sources.sum(axis=0) * stepper.feedback_heat
+        generated += (power + added[0]) * h
+        generated_bearing += (float(bearing.sum()) + added[1]) * h
         dissipated += heat_out
         t_contact = model.contact_temperature(temps)
-        rows.append(_row(model, state, t1, omega, temps, t_contact, stepper.payload,
-                         bearing_w))
+        pending = (t1, omega, temps, t_contact, stepper.payload)
         t = t1
         if extend and t >= end - 1e-9:
             calm = float(np.max(np.abs(watched(temps) - before))) / h < case.duty.steady_rate
@@ -591,6 +638,8 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
         if progress is not None and t - last_report >= end / 100:
             progress(t, max(end, t))
             last_report = t
+    if pending is not None:
+        rows.append(finish(pending, None))
     if progress is not None:
         progress(t, t)
     if extend:
@@ -756,22 +805,14 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
     model = RotaryModel(case)
     fixed = model.fixed_temperatures()
     temps = np.full(model.network.n, model.start_temperature)
-    zero = np.zeros(model.network.n)
-
-    def probes(x: np.ndarray) -> np.ndarray:
-        """The linear parts of the contact-band mean and the bearing temperature of x."""
-        return np.array([model.contact_temperature(x), model.bearing_temperature(x)
-                         - model.bearing_temperature(zero)])
-
-    # unit sources of the two heats that depend on the temperatures: the seal's friction
-    # (on the contact band) and the bearing's (inner ring and housing)
-    unit_sources = np.stack([model.source(1.0), model.bearing_source(1.0)], axis=1)
+    # the seal's friction (on the contact band) and the bearing's heat (inner ring, housing)
+    unit_sources, probes = model.heat_feedback()
 
     def factorised(sump_temperature: float):
         k, f = model.assemble(angular_speed, sump_temperature)
         lu = factorise(k)
         responses = np.stack([lu.solve(unit_sources[:, j]) for j in range(2)], axis=1)
-        return lu, responses, np.stack([probes(responses[:, j]) for j in range(2)], axis=1)
+        return lu, responses, probes.T @ responses
 
     factorised_at = model.sump_temperature(temps)
     lu, responses, coupling = factorised(factorised_at)
@@ -816,7 +857,7 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
         # Woodbury: the heats' feedback (P + s·Δ) through the two probes, (I − C·S)·a = C(x)
         system = np.eye(2) - coupling * slopes[None, :]
         if np.linalg.det(system) > 0.1:  # else a heat grows faster than the network cools it
-            step += responses @ (slopes * np.linalg.solve(system, probes(step)))
+            step += responses @ (slopes * np.linalg.solve(system, probes.T @ step))
         temps += step
         if not np.all(np.isfinite(temps)):
             break

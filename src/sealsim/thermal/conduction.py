@@ -500,14 +500,34 @@ class BackwardEulerStepper:
     times.  ``build()`` may return a third item with (K, F), e.g. the face conductances the
     matrices were assembled from; it is kept with the factorisation and is :attr:`payload`
     after each :meth:`step` (what that step was solved with).
+
+    **Heat sources that follow the temperatures** (``feedback_sources`` E, n × m, and
+    ``feedback_probes`` P, n × m): source j is E[:, j]·Q_j(θ_j) with θ_j = P[:, j]ᵀ·T a linear
+    functional of the temperatures, e.g. a friction heat that falls as the contact warms.  Taken
+    at the start of the step, such a heat can overshoot on a stiff node (a cold start: a lip
+    contact of little heat capacity would warm by its whole step's heat before the friction
+    sees it, and oscillate).  With the slopes s_j = dQ_j/dθ_j given to :meth:`step`, the step
+    is linearly implicit in them (the Rosenbrock–Euler linearisation of the source; Hairer &
+    Wanner, *Solving Ordinary Differential Equations II*, 2nd ed., Springer 1996, IV.7):
+    Q_j ≈ Q_j(θⁿ) + s_j·(θ_jⁿ⁺¹ − θ_jⁿ), solved with the cached factorisation by the Woodbury
+    formula: with x the step without feedback and U = (C/Δt + K)⁻¹E,
+    (I − PᵀU·S)·a = Pᵀ(x − Tⁿ), Tⁿ⁺¹ = x + U·S·a, S = diag(s).  :attr:`feedback_heat` holds
+    the heats S·a [W] the step added to the sources given.
     """
 
-    def __init__(self, network: ThermalNetwork, max_cache: int = 64):
+    def __init__(self, network: ThermalNetwork, max_cache: int = 64,
+                 feedback_sources: np.ndarray | None = None,
+                 feedback_probes: np.ndarray | None = None):
         self.network = network
         self._cache: dict[Hashable, tuple] = {}
+        self._responses: dict[Hashable, np.ndarray] = {}
         self.max_cache = max_cache
         self.factorisations = 0
         self.payload = None
+        self.feedback_sources = feedback_sources
+        self.feedback_probes = feedback_probes
+        self.feedback_heat = np.zeros(0 if feedback_sources is None
+                                      else feedback_sources.shape[1])
 
     def system(self, key: Hashable, dt: float, build) -> tuple:
         """Factorised system (LU, K, F, payload) for ``key`` and ``dt``; ``build()`` returns
@@ -519,14 +539,18 @@ class BackwardEulerStepper:
             lu = factorise((sp.diags(self.network.capacity / dt) + k).tocsc())
             entry = (lu, k, f, payload[0] if payload else None)
             if len(self._cache) >= self.max_cache:
-                self._cache.pop(next(iter(self._cache)))
+                oldest = next(iter(self._cache))
+                self._cache.pop(oldest)
+                self._responses.pop(oldest, None)
             self._cache[full_key] = entry
             self.factorisations += 1
         return entry
 
     def step(self, temperatures: np.ndarray, dt: float, source: np.ndarray,
-             fixed_temperatures: np.ndarray, key: Hashable, build) -> tuple[np.ndarray, float]:
-        """Advance one step.
+             fixed_temperatures: np.ndarray, key: Hashable, build,
+             slopes: np.ndarray | None = None) -> tuple[np.ndarray, float]:
+        """Advance one step; ``slopes`` [W/K] of the feedback sources make it linearly
+        implicit in them (see the class docstring), ``None`` takes ``source`` as given.
 
         Returns
         -------
@@ -538,5 +562,18 @@ class BackwardEulerStepper:
         lu, k, f, self.payload = self.system(key, dt, build)
         rhs = self.network.capacity / dt * temperatures + f @ fixed_temperatures + source
         t1 = lu.solve(rhs)
+        self.feedback_heat = np.zeros_like(self.feedback_heat)
+        if slopes is not None and np.any(slopes != 0.0):
+            responses = self._responses.get((key, dt))
+            if responses is None:
+                responses = np.stack([lu.solve(column) for column in self.feedback_sources.T],
+                                     axis=1)
+                self._responses[(key, dt)] = responses
+            probes = self.feedback_probes
+            system = np.eye(slopes.size) - (probes.T @ responses) * slopes[None, :]
+            if np.linalg.det(system) > 0.1:  # else a source outruns the network within the step
+                self.feedback_heat = slopes * np.linalg.solve(system,
+                                                              probes.T @ (t1 - temperatures))
+                t1 = t1 + responses @ self.feedback_heat
         heat_out = dt * float(np.sum(k @ t1) - np.sum(f @ fixed_temperatures))
         return t1, heat_out
