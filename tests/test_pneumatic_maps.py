@@ -257,3 +257,18 @@ def test_fe_map_built_for_seal_friction_is_announced_and_reports_progress(
     caplog.clear()
     again = sealsim.seal_friction(tiny_structure_case, "0.1 m/s", "6 bar", "40 degC")  # cached
     assert caplog.records == [] and again == row
+
+
+def test_cold_seal_below_the_rubbery_map_says_why():
+    # the analytic O-ring map of catalogue NBR starts 20 K above its T_g (-25 degC): a cylinder
+    # with its seals at -10 degC is refused with that reason and the remedy (a compound with
+    # a lower T_g), not with "extend its temperature grid", which a rubbery map must not do
+    data = load_toml(EXAMPLES / "cylinder_32.toml")
+    data = apply_overrides(data, data.pop("variants")["T25C"])
+    cold = validate_case(PneumaticCase, apply_overrides(data, {
+        "cylinder": {"seal_temperature": "-10 degC"}}))
+    with pytest.raises(InputError, match=r"seals\[0\] \('piston'\): seal temperature -10 degC "
+                       r"is outside its contact map \(-5 \.\.\. 120 degC\); .*T_g of NBR "
+                       r"\(-25 degC\).*lower T_g") as error:
+        simulate(cold)
+    assert "extend its temperature grid" not in str(error.value)

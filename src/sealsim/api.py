@@ -447,6 +447,7 @@ def _contact_map(seal, diameter, progress=None):
 
 def _check_ranges(contact_map, pressure: np.ndarray, temperature: np.ndarray) -> None:
     """Refuse points outside the map (its evaluate would clamp them silently)."""
+    from sealsim.pneumatic.contact_maps import glassy_reason
     from sealsim.units import ZERO_CELSIUS_K
 
     ranges = getattr(contact_map, "ranges", {})
@@ -463,31 +464,8 @@ def _check_ranges(contact_map, pressure: np.ndarray, temperature: np.ndarray) ->
             shown = value * scale + offset
             raise InputError(f"{name}: {shown:.6g} {unit} is outside the seal's contact map "
                              f"({lo * scale + offset:.6g} ... {hi * scale + offset:.6g} {unit})"
-                             + (_glassy_reason(contact_map, value) if name == "temperature"
+                             + (glassy_reason(contact_map, value) if name == "temperature"
                                 else ""))
-
-
-def _glassy_reason(contact_map, temperature: float) -> str:
-    """Why a map refuses ``temperature`` [K] if it lies within the T_g margin of the map's
-    rubber (a rubbery map must not be used there), else ''."""
-    from sealsim.properties.elastomers import (
-        GLASS_TRANSITION_MARGIN,
-        get_elastomer,
-        rubbery_limit_message,
-    )
-
-    name = getattr(contact_map, "elastomer", None)
-    if name is None and hasattr(contact_map, "seal_map"):
-        name = contact_map.seal_map.dataset.attrs.get("elastomer")
-    try:
-        rubber = get_elastomer(name)
-    except (InputError, TypeError, KeyError):   # a custom material: no T_g known here
-        return ""
-    if temperature >= rubber.glass_transition + GLASS_TRANSITION_MARGIN:
-        return ""
-    return ("; " + rubbery_limit_message("the seal's contact map", temperature, rubber)
-            + "; for colder service choose a compound with a lower T_g (analytic map: "
-            "elastomer = 'compound.toml')")
 
 
 def _friction_law(law):

@@ -77,6 +77,7 @@ __all__ = [
     "FEContactMap",
     "build_or_load_fe_map",
     "default_cache_dir",
+    "glassy_reason",
     "energised_force_per_length",
     "hertz_contact_width",
     "lindley_force_per_length",
@@ -527,6 +528,24 @@ class FEContactMap:
         from sealsim.structure.maps import load_map
 
         return cls(load_map(path, extrapolate="clip"), squeeze=squeeze, source=str(path))
+
+
+def glassy_reason(contact_map, temperature: float) -> str:
+    """Why a map refuses ``temperature`` [K] if it lies within the T_g margin of the map's
+    rubber (a rubbery map must not be used there), else '' (also for a compound whose T_g is
+    not known here)."""
+    name = getattr(contact_map, "elastomer", None)
+    if name is None and hasattr(contact_map, "seal_map"):
+        name = contact_map.seal_map.dataset.attrs.get("elastomer")
+    try:
+        rubber = get_elastomer(name)
+    except (InputError, TypeError, KeyError):   # a custom material: no T_g known here
+        return ""
+    if temperature >= rubber.glass_transition + GLASS_TRANSITION_MARGIN:
+        return ""
+    return ("; " + rubbery_limit_message("the seal's contact map", temperature, rubber)
+            + "; for colder service choose a compound with a lower T_g (analytic map: "
+            "elastomer = 'compound.toml')")
 
 
 def default_cache_dir() -> Path:

@@ -24,7 +24,7 @@ from sealsim.pneumatic.chambers import (
     gas_mass,
     internal_energy,
 )
-from sealsim.pneumatic.contact_maps import FEContactMap, tabulated_map_tables
+from sealsim.pneumatic.contact_maps import FEContactMap, glassy_reason, tabulated_map_tables
 from sealsim.pneumatic.controller import command_schedule
 from sealsim.pneumatic.cylinder import piston_areas
 from sealsim.pneumatic.seal_heating import (
@@ -304,10 +304,13 @@ class PneumaticSystem:
                                       s.contact_map.ranges["temperature"])
             where = f"seals[{k}] ({s.name!r})"
             if not (tlo - 1e-9 <= s.temperature <= thi + 1e-9):
+                reason = glassy_reason(s.contact_map, s.temperature)
                 raise InputError(
-                    f"{where}: seal temperature {s.temperature - ZERO_CELSIUS_K:.6g} degC is outside its "
-                    f"contact map ({tlo - ZERO_CELSIUS_K:.6g} ... {thi - ZERO_CELSIUS_K:.6g} degC); the map is "
-                    "not extrapolated -- extend its temperature grid or change the temperature")
+                    f"{where}: seal temperature {s.temperature - ZERO_CELSIUS_K:.6g} degC is "
+                    f"outside its contact map ({tlo - ZERO_CELSIUS_K:.6g} ... "
+                    f"{thi - ZERO_CELSIUS_K:.6g} degC)" + (reason or (
+                        "; the map is not extrapolated -- extend its temperature grid or change "
+                        "the temperature")))
             need = 0.0 if s.location == "wiper" else dp_max
             if need > phi * (1 + 1e-9) or plo > 1e-9 * max(phi, 1.0):
                 raise InputError(
