@@ -209,3 +209,17 @@ def test_end_cushion_brakes_the_piston_before_the_stop():
     v_cushioned, p_cushioned = run(True)
     assert v_cushioned < 0.5 * v_free
     assert p_cushioned > 7.013 > p_free - 0.5        # the cushion pressure exceeds the supply
+
+
+def test_a_stalled_piston_is_noted():
+    # 6 bar on the Ø32 piston push with A1·Δp = 483 N: against 600 N the piston cannot extend,
+    # the extend time is None and a note says that no extend command reached the end and how
+    # far the piston got; 20 N (the example's load) completes every stroke and has no such note
+    stalled = simulate(frictionless({"load": {"force": "600 N"}}))
+    assert stalled.summary()["extend_time_s"] is None
+    assert [n for n in stalled.notes if n.startswith(
+        "2 of 2 extend commands did not reach the extended end: the piston got no further "
+        "than 0 mm of the 100 mm stroke")]
+    free = simulate(frictionless({}))
+    assert free.summary()["extend_time_s"] is not None
+    assert not [n for n in free.notes if "did not reach" in n]

@@ -92,6 +92,7 @@ from sealsim.pneumatic.integrate import integrate
 from sealsim.pneumatic.results import TIMESERIES_COLUMNS, PneumaticResult, seal_columns
 from sealsim.pneumatic.rhs import BACKWARD, BOOKKEEPING, FORWARD, FREE, MODES, PRESCRIBED, STICK
 from sealsim.pneumatic.seals import Seal
+from sealsim.pneumatic.summary import unfinished_strokes
 from sealsim.pneumatic.system import PneumaticSystem, stick_tolerance
 
 __all__ = ["BACKWARD", "BOOKKEEPING", "FORWARD", "FREE", "MODES", "PRESCRIBED", "STICK",
@@ -140,7 +141,9 @@ def run(system: PneumaticSystem, progress=None) -> PneumaticResult:
     balances = _results.balances(system, segments)
     seals = system.seals
     notes = ([f"seal {s.name!r}: {n}" for s in seals for n in s.notes] + system.thermal_notes
-             + _results.notes(system, diag))
+             + _results.notes(system, diag)
+             + unfinished_strokes(frame["time_s"].to_numpy(), frame["x_m"].to_numpy(),
+                                  system.case))
     stats = {
         "segments": len(segments),
         "steps": int(sum(s.steps for s in segments)),

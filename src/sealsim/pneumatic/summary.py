@@ -83,6 +83,52 @@ def end_position_times(time, position, stroke, windows, target):
     return out
 
 
+def unfinished_strokes(time, position, case) -> list[str]:
+    """Notes on the commands of a ``cycle`` case after which the piston did not reach its end
+    position (within :data:`END_TOLERANCE` of the stroke) before the next command: a load or
+    friction the supply pressure cannot overcome, or a command too short for the stroke.
+
+    Examples
+    --------
+    A piston that creeps 30 mm in 1 s of a 100 mm stroke (an extend command from t = 0):
+
+    >>> from types import SimpleNamespace
+    >>> t = np.linspace(0.0, 1.0, 101)
+    >>> c = SimpleNamespace(cylinder=SimpleNamespace(stroke=0.1), controller=SimpleNamespace(
+    ...     mode="cycle", steps=[SimpleNamespace(command="extend", duration=1.0)],
+    ...     duration=1.0, initial_command="retract"))
+    >>> print(unfinished_strokes(t, 0.03 * t, c)[0])
+    1 of 1 extend commands did not reach the extended end: the piston got no further than 30 mm
+    of the 100 mm stroke (the load and friction against the supply pressure, or a command too
+    short); the extend time counts complete strokes only
+    """
+    if case.controller.mode != "cycle":
+        return []
+    schedule = command_schedule(case)
+    stroke = case.cylinder.stroke
+    out = []
+    for target, sign, end_name in (("extend", 1.0, "extended"), ("retract", -1.0, "retracted")):
+        windows = schedule.windows(sign)
+        level = stroke * (1.0 - END_TOLERANCE) if target == "extend" else stroke * END_TOLERANCE
+        missed = []
+        for start, end in windows:
+            inside = (time >= start) & (time < end)
+            if not inside.any():
+                continue
+            x = position[inside]
+            reached = x >= level if target == "extend" else x <= level
+            if not reached[0] and not reached.any():
+                missed.append(float(x.max() if target == "extend" else x.min()))
+        if missed:
+            furthest = max(missed) if target == "extend" else min(missed)
+            out.append(f"{len(missed)} of {len(windows)} {target} commands did not reach the "
+                       f"{end_name} end: the piston got no further than "
+                       f"{furthest * 1e3:.3g} mm of the {stroke * 1e3:.4g} mm stroke (the load "
+                       f"and friction against the supply pressure, or a command too short); "
+                       f"the {target} time counts complete strokes only")
+    return out
+
+
 def stroke_times(time, position, case) -> dict[str, Any]:
     """Extend and retract times of a run of a ``cycle`` case (:data:`DEFINITIONS`): their
     means ``extend_time_s``, ``retract_time_s`` (None without a complete stroke) and the
