@@ -89,15 +89,21 @@ def test_graded_edges_hit_breakpoints_exactly():
     assert np.all(np.diff(edges) > 0)
 
 
-@settings(max_examples=30, deadline=None)
-@given(power=st.floats(0, 200), dt=st.floats(0.01, 100), steps=st.integers(1, 5))
-def test_backward_euler_conserves_energy(power, dt, steps):
-    # heat in = heat stored + heat to fixed nodes, exactly (up to round-off), for any step
+def _small_network() -> ThermalNetwork:
+    """A steel cylinder 20 × 50 mm whose outer surface exchanges heat with a lumped sump node
+    (heat capacity 500 J/K), which is linked to a fixed ambient."""
     r = graded_edges([0, 0.02], [5e-3, 1e-3])
     z = graded_edges([0, 0.05], [5e-3, 5e-3])
     model = AxisymmetricConduction(r, z, np.zeros((len(r) - 1, len(z) - 1), int), [STEEL])
     faces = np.nonzero(model.boundary.side == 1)[0]
-    net = ThermalNetwork(model, {"sump": 500.0}, ["ambient"], {"surface": (faces, "sump")})
+    return ThermalNetwork(model, {"sump": 500.0}, ["ambient"], {"surface": (faces, "sump")})
+
+
+@settings(max_examples=30, deadline=None)
+@given(power=st.floats(0, 200), dt=st.floats(0.01, 100), steps=st.integers(1, 5))
+def test_backward_euler_conserves_energy(power, dt, steps):
+    # heat in = heat stored + heat to fixed nodes, exactly (up to round-off), for any step
+    net = _small_network()
     stepper = BackwardEulerStepper(net)
     temps = np.full(net.n, 300.0)
     fixed = np.array([290.0])
@@ -121,11 +127,7 @@ def test_linearly_implicit_source_is_backward_euler_of_a_linear_source(q0, slope
     # two cells: the stepper's Woodbury update must give the backward-Euler step of that linear
     # problem, here solved directly with the source's term in the matrix (independent
     # reference); the heat it reports added is s·(θ1 − θ0).  Round-off: 1e-9 K.
-    r = graded_edges([0, 0.02], [5e-3, 1e-3])
-    z = graded_edges([0, 0.05], [5e-3, 5e-3])
-    model = AxisymmetricConduction(r, z, np.zeros((len(r) - 1, len(z) - 1), int), [STEEL])
-    faces = np.nonzero(model.boundary.side == 1)[0]
-    net = ThermalNetwork(model, {"sump": 500.0}, ["ambient"], {"surface": (faces, "sump")})
+    net = _small_network()
     source_cells, probe_cells = [0, 1], [1, 2]
     e = np.zeros((net.n, 1))
     e[source_cells, 0] = 0.5
