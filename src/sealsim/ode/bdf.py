@@ -26,9 +26,9 @@ Three additions for the models here:
   is near that pole, may even be accepted by its rate test on a diverging iterate.  The error
   estimate does not see it while the component is below its tolerance (a motion that starts
   from rest).  So every step keeps c·λ⁺ <= ``GROWTH_LIMIT`` = 1/2 (halfway to the pole), and
-  the Jacobian of a step that the limit shortened is renewed at the start of the next: λ⁺
-  changes as the motion grows (for v' ∝ √v it falls as 1/(2t), so the limited steps grow
-  geometrically, by about 1.6 per step).  Problems without one (``GROWTH`` = 0, the default
+  a Jacobian limits one step: where the limit would bind again, the Jacobian is renewed at
+  the current state first, since λ⁺ changes as the motion grows (for v' ∝ √v it falls as
+  1/(2t): the limited steps grow geometrically).  Problems without one (``GROWTH`` = 0, the default
   :func:`no_growth`) take scipy's steps unchanged.
 
 **Generic over the problem.**  The step functions call four problem functions by the global
@@ -87,8 +87,8 @@ ERROR_CONST = _KAPPA * GAMMA + 1.0 / np.arange(1, MAX_ORDER + 2)
 #: the growth rate λ⁺ [1/s] of the Jacobian J (GROWTH)
 (S_T, S_T_OLD, S_H_ABS, S_RTOL, S_MAX_STEP, S_NEWTON_TOL, S_T_BOUND, S_C_LU, S_GROWTH,
  S_NS) = range(10)
-#: integer slots: order, equal steps since the last change, LU valid, counters, ndyn, the last
-#: step was limited by the growth rate
+#: integer slots: order, equal steps since the last change, LU valid, counters, ndyn, the
+#: Jacobian's growth rate has limited a step
 (I_ORDER, I_NEQ, I_LU_OK, I_NFEV, I_NJEV, I_NLU, I_NSTEPS, I_NDYN, I_LIMITED,
  I_NI) = range(10)
 #: step results
@@ -328,6 +328,7 @@ def _jacobian(w, iv, t, y, f, args, n, ndyn):
     jac = w[oj:oj + n * ndyn].reshape(n, ndyn)
     JAC(t, y, f, args, jac)  # noqa: F821
     w[S_GROWTH] = GROWTH(t, y, jac, args)  # noqa: F821
+    iv[I_LIMITED] = 0
     iv[I_NJEV] += 1
 
 
@@ -375,7 +376,6 @@ def start(ws, t0, y0, t_bound, args):
     iv[I_ORDER] = 1
     iv[I_NEQ] = 0
     iv[I_LU_OK] = 0
-    iv[I_LIMITED] = 0
 
 
 def step(ws, args):
@@ -401,25 +401,26 @@ def step(ws, args):
         change_differences(w, od, n, order, min_step / h_abs, o_r)
         h_abs = min_step
         iv[I_NEQ] = 0
-    # the growth limit c·λ⁺ <= GROWTH_LIMIT (module docstring); the rate that limited the
-    # last step is renewed at the current state, where the motion has grown
-    if iv[I_LIMITED] != 0:
-        for i in range(n):
-            dy[i] = w[od + i]
-        FUN(t, dy, args, f)  # noqa: F821
-        iv[I_NFEV] += 1
-        _jacobian(w, iv, t, dy, f, args, n, ndyn)
-        iv[I_LU_OK] = 0
-    limited = 0
+    # the growth limit c·λ⁺ <= GROWTH_LIMIT (module docstring); a Jacobian limits one step:
+    # where the limit would bind again, λ⁺ is renewed at the current state first (it changes
+    # as the motion grows)
     if w[S_GROWTH] > 0.0:
         h_growth = GROWTH_LIMIT * ALPHA[order] / w[S_GROWTH]
+        if h_abs > h_growth and iv[I_LIMITED] != 0:
+            for i in range(n):
+                dy[i] = w[od + i]
+            FUN(t, dy, args, f)  # noqa: F821
+            iv[I_NFEV] += 1
+            _jacobian(w, iv, t, dy, f, args, n, ndyn)
+            iv[I_LU_OK] = 0
+            h_growth = GROWTH_LIMIT * ALPHA[order] / w[S_GROWTH] if w[S_GROWTH] > 0.0 \
+                else np.inf
         if h_abs > h_growth and h_growth >= min_step:
             change_differences(w, od, n, order, h_growth / h_abs, o_r)
             h_abs = h_growth
             iv[I_NEQ] = 0
             iv[I_LU_OK] = 0
-            limited = 1
-    iv[I_LIMITED] = limited
+            iv[I_LIMITED] = 1
     current_jac = False
     n_iter = 0
     error_norm = 0.0

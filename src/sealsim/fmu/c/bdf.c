@@ -149,6 +149,7 @@ static void jacobian(Bdf *b, const BdfProblem *p, double t, const double *y) {
     p->jac(p->ctx, t, y, b->J);
     b->njev++;
     b->growth = p->growth ? p->growth(p->ctx, t, y, b->J) : 0.0;
+    b->limited = 0;
 }
 
 void bdf_start(Bdf *b, double t0, const double *y0, double t_bound, const BdfProblem *p) {
@@ -186,7 +187,6 @@ void bdf_start(Bdf *b, double t0, const double *y0, double t_bound, const BdfPro
     b->order = 1;
     b->n_equal = 0;
     b->lu_ok = 0;
-    b->limited = 0;
 }
 
 /* simplified Newton iteration of the BDF system: 1 when converged; iterations in *iters */
@@ -244,24 +244,24 @@ int bdf_step(Bdf *b, const BdfProblem *p) {
         h_abs = min_step;
         b->n_equal = 0;
     }
-    /* the growth limit c lambda+ <= BDF_GROWTH_LIMIT (sealsim.ode.bdf); the rate that limited
-     * the last step is renewed at the current state, where the motion has grown */
-    if (b->limited) {
-        jacobian(b, p, t, b->D);
-        b->lu_ok = 0;
-    }
-    int limited = 0;
+    /* the growth limit c lambda+ <= BDF_GROWTH_LIMIT (sealsim.ode.bdf); a Jacobian limits one
+     * step: where the limit would bind again, lambda+ is renewed at the current state first */
     if (b->growth > 0.0) {
         double h_growth = BDF_GROWTH_LIMIT * alpha_k(order) / b->growth;
+        if (h_abs > h_growth && b->limited) {
+            jacobian(b, p, t, b->D);
+            b->lu_ok = 0;
+            h_growth = b->growth > 0.0 ? BDF_GROWTH_LIMIT * alpha_k(order) / b->growth
+                                       : INFINITY;
+        }
         if (h_abs > h_growth && h_growth >= min_step) {
             change_differences(b, order, h_growth / h_abs);
             h_abs = h_growth;
             b->n_equal = 0;
             b->lu_ok = 0;
-            limited = 1;
+            b->limited = 1;
         }
     }
-    b->limited = limited;
     for (;;) {
         if (h_abs < min_step) return BDF_TOO_SMALL_STEP;
         double t_new = t + h_abs;
