@@ -9,10 +9,11 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-
+from pydantic import TypeAdapter
 from test_pneumatic_cli import shortened
 
 from sealsim.cases import load_toml
+from sealsim.friction.case import LawParameters
 from sealsim.pneumatic import build_seals, integrate, rhs, simulate
 from sealsim.pneumatic.case import ThermalModel, load_pneumatic_cases
 from sealsim.pneumatic.simulation import PneumaticSystem
@@ -127,20 +128,28 @@ def backward_breakaways(segments):
             and s.mode in (rhs.FORWARD, rhs.BACKWARD) and s.mode * (s.y1[0] - s.y0[0]) < 0.0]
 
 
-@pytest.mark.parametrize("example", ["analytic", "heating", "fe_map"])
+@pytest.mark.parametrize("example", ["analytic", "heating", "contact", "fe_map"])
 def test_breakaways_start_forwards(example, tmp_path):
-    # a slip from rest moves in its direction (issue 27's break-away start: with the rod
-    # seal's FE map the friction table falls like F_brk - k·sqrt(v) at break-away, and the
-    # first BDF step reversed v: 21 of the 110 segments of this coarse-map run and 46 of the
-    # 262 of the full map's 10 s ran backwards to the reversal event).  The Ø32 cycle with
-    # the analytic maps, with seal heating and with a (coarse, 2 x 2) FE map of the rod seal:
-    # none, as with LSODA, the reference.
+    # a slip from rest moves in its direction (issue 27's break-away start: on a seal's
+    # contact friction table, which falls like F_brk - k·sqrt(v) at break-away, the first BDF
+    # step reversed v, and the slip ran backwards to the reversal event: 15 break-aways of the
+    # contact-law cycle here, 21 (of 110 segments) with the coarse FE map; over 10 s 39 of
+    # 227 and, with the full FE map, 46 of 262 segments).  The Ø32 cycle with the analytic
+    # maps (lumped Θ law), with seal heating, with the seals' contact friction tables (set
+    # seal_contact) and with a (coarse, 2 x 2) FE map of the rod seal: none, as with LSODA,
+    # the reference.
     path = EXAMPLES / "cylinder_32.toml"
     if example == "fe_map":
         path = shortened(EXAMPLES / "cylinder_32_fe.toml", tmp_path, cap=4.0)
     c = load_pneumatic_cases(load_toml(path))["T25C"]
     if example == "heating":
         c = c.model_copy(update={"thermal": ThermalModel()})
+    if example == "contact":
+        law = TypeAdapter(LawParameters).validate_python({"law": "theta",
+                                                         "parameter_set": "seal_contact"})
+        c = c.model_copy(update={"seals": [s.model_copy(update={"friction": law})
+                                           if s.friction.law == "theta" else s
+                                           for s in c.seals]})
     seals = build_seals(c, path.parent)
     for method in ("compiled", "LSODA"):
         system = PneumaticSystem(c.model_copy(update={"solver": c.solver.model_copy(
