@@ -1,14 +1,23 @@
 """The compiled BDF integrator (sealsim.ode.bdf) against scipy's solve_ivp(method="BDF"), the
 algorithm it follows, on stiff test problems: the same steps and the same solution; its event
-location against solve_ivp's; quadrature states against their exact integral."""
+location against solve_ivp's; quadrature states against their exact integral; the growth limit
+on a break-away from rest against its exact solution, and the C port (sealsim/fmu/c/bdf.c)
+against the numba one on it."""
 
 from __future__ import annotations
+
+import ctypes
+import math
+import subprocess
+from pathlib import Path
 
 import numpy as np
 import pytest
 from numba import njit
 from scipy.integrate import solve_ivp
+from scipy.optimize import brentq
 
+from sealsim.fmu.builder import find_compiler
 from sealsim.ode import compile_bdf, workspace
 from sealsim.ode.bdf import I_NFEV, I_NJEV, I_NSTEPS, OK, S_T, dense, lu_factor, lu_solve
 
@@ -149,3 +158,166 @@ def test_lu_solves_a_pivoting_system():
     x = b.copy()
     lu_solve(lu, piv, x)
     np.testing.assert_allclose(a @ x, b, atol=1e-12)
+
+
+# -- the growth limit: a break-away from rest (see sealsim.ode.bdf and integrate._growth) ------
+#: v' = a0 + c·√v⁺ (a friction falling as F_brk − k·√v, flat for v < 0 as a slip mode's):
+#: a0 [m/s²] and c [m^½/s^1.5] of the rod seal's break-away in cylinder_32_fe.toml, the
+#: forward-difference scales of the cylinder's Jacobian (0.1 m, 30 m/s), its tolerances
+BREAKAWAY = (2e-3, 190.0, 0.1, 30.0)
+BREAKAWAY_RTOL, BREAKAWAY_ATOL = 1e-5, np.array([1e-6, 3e-4])
+
+
+@njit(cache=True)
+def breakaway(t, y, args, dy):
+    dy[0] = y[1]
+    dy[1] = args[0] + args[1] * math.sqrt(max(y[1], 0.0))
+
+
+@njit(cache=True)
+def breakaway_jac(t, y, f, args, J):
+    shifted, rates = np.empty(2), np.empty(2)
+    for j in range(2):
+        h = 1.5e-8 * max(abs(y[j]), args[2 + j])
+        shifted[0], shifted[1] = y[0], y[1]
+        shifted[j] += h
+        breakaway(t, shifted, args, rates)
+        for i in range(2):
+            J[i, j] = (rates[i] - f[i]) / h
+
+
+@njit(cache=True)
+def breakaway_event(t, y, args):
+    return 1.0
+
+
+@njit(cache=True)
+def breakaway_growth(t, y, J, args):
+    return max(J[1, 1], 0.0)
+
+
+PLAIN = compile_bdf("test_breakaway_plain", breakaway, breakaway_jac, breakaway_event)
+LIMITED = compile_bdf("test_breakaway", breakaway, breakaway_jac, breakaway_event,
+                      breakaway_growth)
+plain_start, plain_step = PLAIN.start, PLAIN.step
+limited_start, limited_step = LIMITED.start, LIMITED.step
+
+
+@njit(cache=True)
+def run_breakaway(ws, t1, args, limited):
+    """The step ends (t, v) from rest to t1."""
+    y0 = np.zeros(2)
+    if limited:
+        limited_start(ws, 0.0, y0, t1, args)
+    else:
+        plain_start(ws, 0.0, y0, t1, args)
+    ts, vs = [0.0], [0.0]
+    while ws[0][S_T] < t1:
+        status = limited_step(ws, args) if limited else plain_step(ws, args)
+        if status != OK:
+            break
+        ts.append(ws[0][S_T])
+        vs.append(ws[2][1])
+    return np.array(ts), np.array(vs)
+
+
+def exact_breakaway_speed(t):
+    """v(t) of v' = a0 + c·√v from rest: with s = √v, t = 2/c·(s − a0/c·ln(1 + c·s/a0))."""
+    a0, c = BREAKAWAY[:2]
+    s = brentq(lambda s: 2 / c * (s - a0 / c * math.log1p(c * s / a0)) - t, 0.0, 10.0,
+               xtol=1e-300, rtol=1e-15)
+    return s * s
+
+
+def test_growth_limit_starts_a_breakaway_forwards():
+    # 2 ms from rest.  scipy's steps (no growth rate): the first step has c·λ ≈ 8 and
+    # reverses v; it stays at -0.2 µm/s (below the 0.3 mm/s tolerance of v, flat for v < 0)
+    # and never breaks away -- at 2 ms the exact speed is 36 mm/s.  With the growth limit every
+    # step has v >= 0 and v is the exact one within the tolerance of v (measured 2.6e-4 m/s,
+    # the local errors of the order-1 steps where v'' = c²/2 is largest).
+    ws = workspace(2, 2, BREAKAWAY_RTOL, BREAKAWAY_ATOL)
+    ts, vs = run_breakaway(ws, 2e-3, BREAKAWAY, False)
+    assert ts[-1] == 2e-3 and vs.min() < 0.0 and vs[-1] < 0.0
+    ws = workspace(2, 2, BREAKAWAY_RTOL, BREAKAWAY_ATOL)
+    ts, vs = run_breakaway(ws, 2e-3, BREAKAWAY, True)
+    assert ts[-1] == 2e-3 and vs.min() >= 0.0
+    assert np.all(np.diff(vs) > 0.0)                  # v' >= a0 > 0
+    exact = np.array([exact_breakaway_speed(t) for t in ts])
+    assert np.max(np.abs(vs - exact)) < BREAKAWAY_ATOL[1]
+    assert vs[-1] == pytest.approx(exact[-1], rel=1e-2)
+    assert ws[1][I_NSTEPS] < 40                         # measured 21 steps, 11 Jacobians
+
+
+_C_HARNESS = r"""
+#include "bdf.h"
+typedef struct { double a0, c, scale[2]; } Par;
+static void fun(void *ctx, double t, const double *y, double *dy) {
+    const Par *p = (const Par *)ctx;
+    (void)t;
+    dy[0] = y[1];
+    dy[1] = p->a0 + p->c * sqrt(fmax(y[1], 0.0));
+}
+static void jac(void *ctx, double t, const double *y, double *J) {
+    const Par *p = (const Par *)ctx;
+    double f0[2], f1[2], z[2];
+    fun(ctx, t, y, f0);
+    for (int j = 0; j < 2; j++) {
+        double h = 1.5e-8 * fmax(fabs(y[j]), p->scale[j]);
+        z[0] = y[0];
+        z[1] = y[1];
+        z[j] += h;
+        fun(ctx, t, z, f1);
+        for (int i = 0; i < 2; i++) J[i * BDF_MAXN + j] = (f1[i] - f0[i]) / h;
+    }
+}
+static double event(void *ctx, double t, const double *y) { return 1.0; }
+static double growth(void *ctx, double t, const double *y, const double *J) {
+    return fmax(J[1 * BDF_MAXN + 1], 0.0);
+}
+int run(const double *par, double t1, double rtol, const double *atol, int limited, int cap,
+        double *ts, double *vs) {
+    Par p = {par[0], par[1], {par[2], par[3]}};
+    BdfProblem bp = {&p, fun, jac, event, limited ? growth : 0};
+    Bdf b;
+    double y0[2] = {0.0, 0.0};
+    bdf_init(&b, 2, rtol, atol, INFINITY);
+    bdf_start(&b, 0.0, y0, t1, &bp);
+    int k = 0;
+    ts[0] = 0.0;
+    vs[0] = 0.0;
+    while (b.t < t1 && k + 1 < cap) {
+        if (bdf_step(&b, &bp) != BDF_OK) return -1;
+        k++;
+        ts[k] = b.t;
+        vs[k] = b.y_new[1];
+    }
+    return k;
+}
+"""
+
+
+@pytest.mark.skipif(find_compiler() is None, reason="no C compiler")
+@pytest.mark.parametrize("limited", [False, True])
+def test_c_port_takes_the_same_steps(tmp_path, limited):
+    # sealsim/fmu/c/bdf.c (the integrator of the cylinder FMU) on the break-away: the steps
+    # of the numba integrator, with and without the growth limit, to round-off
+    sources = Path(__file__).resolve().parents[1] / "src" / "sealsim" / "fmu" / "c"
+    (tmp_path / "harness.c").write_text(_C_HARNESS)
+    lib = tmp_path / "harness.so"
+    subprocess.run([find_compiler(), "-shared", "-fPIC", "-O2", "-std=c99",
+                    "-ffp-contract=off", "-I", str(sources), str(tmp_path / "harness.c"),
+                    str(sources / "bdf.c"), "-o", str(lib), "-lm"], check=True, timeout=120)
+    run_c = ctypes.CDLL(str(lib)).run
+    dbl = ctypes.POINTER(ctypes.c_double)
+    run_c.argtypes = [dbl, ctypes.c_double, ctypes.c_double, dbl, ctypes.c_int, ctypes.c_int,
+                      dbl, dbl]
+    par, cap = np.array(BREAKAWAY), 1000
+    ts_c, vs_c = np.zeros(cap), np.zeros(cap)
+    k = run_c(par.ctypes.data_as(dbl), 2e-3, BREAKAWAY_RTOL,
+              BREAKAWAY_ATOL.ctypes.data_as(dbl), int(limited), cap,
+              ts_c.ctypes.data_as(dbl), vs_c.ctypes.data_as(dbl))
+    ws = workspace(2, 2, BREAKAWAY_RTOL, BREAKAWAY_ATOL)
+    ts, vs = run_breakaway(ws, 2e-3, BREAKAWAY, limited)
+    assert k == ts.size - 1
+    np.testing.assert_allclose(ts_c[:k + 1], ts, rtol=1e-12, atol=0.0)
+    np.testing.assert_allclose(vs_c[:k + 1], vs, rtol=1e-9, atol=1e-15)

@@ -5,7 +5,7 @@ step size, the backward differences of the solution as its history, the NDF modi
 κ of the order 1-4 formulas, a simplified Newton iteration with a Jacobian kept until the
 iteration stalls, order and step selection after ``order + 1`` equal steps) and its dense
 output, followed line by line -- a test runs both on the same problem and finds the same steps.
-Two additions for the models here:
+Three additions for the models here:
 
 * **quadrature states**: the states ``ndyn ... n-1`` (bookkeeping integrals of boundary
   flows, energy, heat) do not feed back into the right-hand side.  They are integrated with
@@ -15,15 +15,31 @@ Two additions for the models here:
   as with the full matrix -- and they are excluded from the error and convergence norms (the
   RMS over the dynamic states);
 * **events**: :func:`locate` finds the root of an event function on the dense output of the
-  last step with Brent's method (scipy's ``brentq``, tolerance 4 ε, as ``solve_ivp``).
+  last step with Brent's method (scipy's ``brentq``, tolerance 4 ε, as ``solve_ivp``);
+* **a growth limit** for locally unstable problems: a problem may give a growth rate
+  λ⁺ >= 0 of its Jacobian (``GROWTH``, evaluated with every Jacobian), the rate at which a
+  state feeds itself.  An implicit step multiplies such a component by 1/(1 − c·λ) to first
+  order (c = h/α_k; for order 1 the stability function R(z) = 1/(1 − z) of the implicit
+  Euler method, Hairer & Wanner [3]_): singular at c·λ = 1 and *negative* beyond, where the
+  exact factor e^(hλ) > 1.  A step with c·λ > 1 therefore reverses the sign of a component
+  the exact solution makes grow, and the simplified Newton iteration, whose matrix I − c·J
+  is near that pole, may even be accepted by its rate test on a diverging iterate.  The error
+  estimate does not see it while the component is below its tolerance (a motion that starts
+  from rest).  So every step keeps c·λ⁺ <= ``GROWTH_LIMIT`` = 1/2 (halfway to the pole), and
+  a Jacobian limits one step: where the limit would bind again, the Jacobian is renewed at
+  the current state first, since λ⁺ changes as the motion grows (for v' ∝ √v it falls as
+  1/(2t): the limited steps grow geometrically).  Problems without one (``GROWTH`` = 0, the default
+  :func:`no_growth`) take scipy's steps unchanged.
 
-**Generic over the problem.**  The step functions call three problem functions by the global
-names ``FUN``, ``JAC`` and ``EVENT``::
+**Generic over the problem.**  The step functions call four problem functions by the global
+names ``FUN``, ``JAC``, ``EVENT`` and ``GROWTH``::
 
     FUN(t, y, args, dy)        # dy/dt into dy (shape (n,))
     JAC(t, y, f, args, J)      # ∂f/∂y_j of all states by the dynamic ones j (n × ndyn);
                                # f = FUN(t, y), which the solver has evaluated already
     EVENT(t, y, args) -> g     # the event function (any float; unused problems return 1)
+    GROWTH(t, y, J, args) -> λ⁺  # growth rate [1/time] of the Jacobian J (n × ndyn) at
+                               # (t, y), >= 0 (optional, default 0: see the growth limit)
 
 ``args`` is any tuple the problem needs (its tables, its mode); the integrator passes it
 through.  :func:`compile_bdf` makes a copy of the step functions with the problem's compiled
@@ -37,6 +53,9 @@ References
    1-22, 1997 (NDF/BDF with quasi-constant step size; the basis of scipy's BDF).
 .. [2] R. P. Brent, *Algorithms for Minimization without Derivatives*, ch. 4, 1973 (root
    finding, as scipy's ``brentq``).
+.. [3] E. Hairer, G. Wanner, *Solving Ordinary Differential Equations II: Stiff and
+   Differential-Algebraic Problems*, 2nd ed., Springer 1996, sect. IV.3 (stability function
+   R(z) = 1/(1 − z) of the implicit Euler method) and sect. V.1 (BDF methods).
 """
 
 from __future__ import annotations
@@ -54,6 +73,9 @@ MAX_ORDER = 5
 NEWTON_MAXITER = 4
 MIN_FACTOR = 0.2
 MAX_FACTOR = 10.0
+#: largest c·λ⁺ of a step (c = h/α_k, λ⁺ the growth rate of GROWTH): the Newton matrix
+#: I − c·J is singular at c·λ = 1 (see the module docstring)
+GROWTH_LIMIT = 0.5
 EPS = float(np.finfo(float).eps)
 _KAPPA = np.array([0.0, -0.1850, -1.0 / 9.0, -0.0823, -0.0415, 0.0])
 GAMMA = np.hstack((0.0, np.cumsum(1.0 / np.arange(1, MAX_ORDER + 1))))
@@ -62,9 +84,13 @@ ERROR_CONST = _KAPPA * GAMMA + 1.0 / np.arange(1, MAX_ORDER + 2)
 
 #: float slots of the workspace: time, time before the last step, step size, tolerance,
 #: largest step, Newton tolerance, end of the interval, c = h/α of the factorised matrix
-(S_T, S_T_OLD, S_H_ABS, S_RTOL, S_MAX_STEP, S_NEWTON_TOL, S_T_BOUND, S_C_LU, S_NS) = range(9)
-#: integer slots: order, equal steps since the last change, LU valid, counters, ndyn
-(I_ORDER, I_NEQ, I_LU_OK, I_NFEV, I_NJEV, I_NLU, I_NSTEPS, I_NDYN, I_NI) = range(9)
+#: the growth rate λ⁺ [1/s] of the Jacobian J (GROWTH)
+(S_T, S_T_OLD, S_H_ABS, S_RTOL, S_MAX_STEP, S_NEWTON_TOL, S_T_BOUND, S_C_LU, S_GROWTH,
+ S_NS) = range(10)
+#: integer slots: order, equal steps since the last change, LU valid, counters, ndyn, the
+#: Jacobian's growth rate has limited a step
+(I_ORDER, I_NEQ, I_LU_OK, I_NFEV, I_NJEV, I_NLU, I_NSTEPS, I_NDYN, I_LIMITED,
+ I_NI) = range(10)
 #: step results
 OK, TOO_SMALL_STEP = 0, -1
 
@@ -296,9 +322,13 @@ def _newton(w, iv, y, f, dy, args, t_new, c, n, ndyn):
 
 
 def _jacobian(w, iv, t, y, f, args, n, ndyn):
-    """JAC at (t, y) with f = FUN(t, y) into the J block of w, counted."""
+    """JAC at (t, y) with f = FUN(t, y) into the J block of w, counted; its growth rate
+    GROWTH into w[S_GROWTH]."""
     oj = _offsets(n, ndyn)[2]
-    JAC(t, y, f, args, w[oj:oj + n * ndyn].reshape(n, ndyn))  # noqa: F821
+    jac = w[oj:oj + n * ndyn].reshape(n, ndyn)
+    JAC(t, y, f, args, jac)  # noqa: F821
+    w[S_GROWTH] = GROWTH(t, y, jac, args)  # noqa: F821
+    iv[I_LIMITED] = 0
     iv[I_NJEV] += 1
 
 
@@ -371,6 +401,26 @@ def step(ws, args):
         change_differences(w, od, n, order, min_step / h_abs, o_r)
         h_abs = min_step
         iv[I_NEQ] = 0
+    # the growth limit c·λ⁺ <= GROWTH_LIMIT (module docstring); a Jacobian limits one step:
+    # where the limit would bind again, λ⁺ is renewed at the current state first (it changes
+    # as the motion grows)
+    if w[S_GROWTH] > 0.0:
+        h_growth = GROWTH_LIMIT * ALPHA[order] / w[S_GROWTH]
+        if h_abs > h_growth and iv[I_LIMITED] != 0:
+            for i in range(n):
+                dy[i] = w[od + i]
+            FUN(t, dy, args, f)  # noqa: F821
+            iv[I_NFEV] += 1
+            _jacobian(w, iv, t, dy, f, args, n, ndyn)
+            iv[I_LU_OK] = 0
+            h_growth = GROWTH_LIMIT * ALPHA[order] / w[S_GROWTH] if w[S_GROWTH] > 0.0 \
+                else np.inf
+        if h_abs > h_growth and h_growth >= min_step:
+            change_differences(w, od, n, order, h_growth / h_abs, o_r)
+            h_abs = h_growth
+            iv[I_NEQ] = 0
+            iv[I_LU_OK] = 0
+            iv[I_LIMITED] = 1
     current_jac = False
     n_iter = 0
     error_norm = 0.0
@@ -560,12 +610,18 @@ class BdfSolver:
     dense: object = dense
 
 
-def compile_bdf(name: str, fun, jac, event) -> BdfSolver:
-    """The BDF step functions for one problem: ``fun``, ``jac``, ``event`` are numba-compiled
-    functions with the signatures of the module docstring; ``name`` (a Python identifier)
-    names the compiled copies in numba's disk cache."""
+@njit(cache=True)
+def no_growth(t, y, jac, args):
+    """The GROWTH of a problem without a locally unstable state: 0 (no step limit)."""
+    return 0.0
+
+
+def compile_bdf(name: str, fun, jac, event, growth=no_growth) -> BdfSolver:
+    """The BDF step functions for one problem: ``fun``, ``jac``, ``event`` and ``growth``
+    are numba-compiled functions with the signatures of the module docstring; ``name`` (a
+    Python identifier) names the compiled copies in numba's disk cache."""
     env = dict(globals())
-    env.update(FUN=fun, JAC=jac, EVENT=event)
+    env.update(FUN=fun, JAC=jac, EVENT=event, GROWTH=growth)
     for func in (_newton, _jacobian, start, step, locate):
         copy = types.FunctionType(func.__code__, env, func.__name__, func.__defaults__,
                                   func.__closure__)

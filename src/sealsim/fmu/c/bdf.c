@@ -13,6 +13,7 @@
 #define BDF_NEWTON_MAXITER 4
 #define BDF_MIN_FACTOR 0.2
 #define BDF_MAX_FACTOR 10.0
+#define BDF_GROWTH_LIMIT 0.5
 #define BDF_EPS 2.220446049250313e-16
 
 /* kappa, gamma = cumsum(1/k), alpha = (1 - kappa) gamma, error constants */
@@ -143,6 +144,14 @@ void bdf_init(Bdf *b, int n, double rtol, const double *atol, double max_step) {
     for (int i = 0; i < n; i++) b->atol[i] = atol[i];
 }
 
+/* the Jacobian at (t, y) and its growth rate */
+static void jacobian(Bdf *b, const BdfProblem *p, double t, const double *y) {
+    p->jac(p->ctx, t, y, b->J);
+    b->njev++;
+    b->growth = p->growth ? p->growth(p->ctx, t, y, b->J) : 0.0;
+    b->limited = 0;
+}
+
 void bdf_start(Bdf *b, double t0, const double *y0, double t_bound, const BdfProblem *p) {
     int n = b->n;
     double *f0 = b->f, *y1 = b->dy, *f1 = b->d, *scale = b->scale;
@@ -174,8 +183,7 @@ void bdf_start(Bdf *b, double t0, const double *y0, double t_bound, const BdfPro
         b->D[i] = y0[i];
         b->D[BDF_MAXN + i] = f0[i] * h_abs;
     }
-    p->jac(p->ctx, t0, y0, b->J);
-    b->njev++;
+    jacobian(b, p, t0, y0);
     b->order = 1;
     b->n_equal = 0;
     b->lu_ok = 0;
@@ -236,6 +244,24 @@ int bdf_step(Bdf *b, const BdfProblem *p) {
         h_abs = min_step;
         b->n_equal = 0;
     }
+    /* the growth limit c lambda+ <= BDF_GROWTH_LIMIT (sealsim.ode.bdf); a Jacobian limits one
+     * step: where the limit would bind again, lambda+ is renewed at the current state first */
+    if (b->growth > 0.0) {
+        double h_growth = BDF_GROWTH_LIMIT * alpha_k(order) / b->growth;
+        if (h_abs > h_growth && b->limited) {
+            jacobian(b, p, t, b->D);
+            b->lu_ok = 0;
+            h_growth = b->growth > 0.0 ? BDF_GROWTH_LIMIT * alpha_k(order) / b->growth
+                                       : INFINITY;
+        }
+        if (h_abs > h_growth && h_growth >= min_step) {
+            change_differences(b, order, h_growth / h_abs);
+            h_abs = h_growth;
+            b->n_equal = 0;
+            b->lu_ok = 0;
+            b->limited = 1;
+        }
+    }
     for (;;) {
         if (h_abs < min_step) return BDF_TOO_SMALL_STEP;
         double t_new = t + h_abs;
@@ -272,8 +298,7 @@ int bdf_step(Bdf *b, const BdfProblem *p) {
             converged = newton(b, p, t_new, c, &n_iter);
             if (!converged) {
                 if (current_jac) break;
-                p->jac(p->ctx, t_new, b->y_pred, b->J);
-                b->njev++;
+                jacobian(b, p, t_new, b->y_pred);
                 b->lu_ok = 0;
                 current_jac = 1;
             }

@@ -18,12 +18,15 @@ typedef struct {
     /* J[i * BDF_MAXN + j] = df_i/dy_j */
     void (*jac)(void *ctx, double t, const double *y, double *J);
     double (*event)(void *ctx, double t, const double *y);
+    /* the growth rate (>= 0) of a Jacobian J, which limits the step (sealsim.ode.bdf); NULL:
+     * none */
+    double (*growth)(void *ctx, double t, const double *y, const double *J);
 } BdfProblem;
 
 typedef struct {
-    int n, order, n_equal, lu_ok;
+    int n, order, n_equal, lu_ok, limited;
     long nfev, njev, nlu, nsteps;
-    double t, t_old, h_abs, rtol, max_step, newton_tol, t_bound;
+    double t, t_old, h_abs, rtol, max_step, newton_tol, t_bound, growth;
     double atol[BDF_MAXN];
     double D[(BDF_MAX_ORDER + 3) * BDF_MAXN];
     double J[BDF_MAXN * BDF_MAXN], LU[BDF_MAXN * BDF_MAXN];

@@ -505,6 +505,14 @@ static void problem_jac(void *ctx, double t, const double *y, double *J) {
     }
 }
 
+/* integrate._growth: the piston's own velocity feedback where positive */
+static double problem_growth(void *ctx, double t, const double *y, const double *J) {
+    (void)ctx;
+    (void)t;
+    (void)y;
+    return fmax(J[1 * BDF_MAXN + 1], 0.0);
+}
+
 /* integrate._margin: (F_req, F_brk + stick_tolerance) with the body held at rest */
 static void stick_margin(Problem *p, double t, const double *y, double *hold, double *brk) {
     for (int i = 0; i < NSTATES; i++) p->rest[i] = y[i];
@@ -552,6 +560,7 @@ static void problem_init(Problem *p, CylinderData *m) {
     p->bp.fun = problem_fun;
     p->bp.jac = problem_jac;
     p->bp.event = problem_event;
+    p->bp.growth = problem_growth;
 }
 
 /* -- the inputs ----------------------------------------------------------------------------- */
