@@ -114,6 +114,33 @@ def test_theta_on_the_contact_table_keeps_the_steady_curve_and_the_dwell(table):
     assert bristle.force(z, v, inputs) == pytest.approx(steady, rel=1e-9)
 
 
+def test_a_lagging_film_takes_load_off_the_asperities_not_its_own_shear(table):
+    # Decelerating, Θ lags above Θ_ss: the film is thicker than steady and the asperities carry
+    # less.  The lag lowers the friction to the film's viscous shear π·D·V(|v|) at most (the
+    # asperities then carry nothing), never to zero (formerly 1e-9 N below 0.05 m/s after a
+    # 1 m/s² sweep, and at 1.5 % of the moving samples of the FE cylinder's piston seal)
+    law = Theta.from_parameter_set("seal_contact")
+    inputs = inputs_for(table)
+    v = np.array([1e-4, 1e-3, 0.01, 0.03])
+    _, viscous, _ = table.evaluate(v, 3e5, 293.15)
+    film_shear = np.pi * 0.012 * viscous
+    steady = law.steady_force(v, inputs)
+    drop = 0.5 * law.breakaway_force(np.zeros((1, 1)), inputs)[0]      # ΔF = d·F_ss(0⁺)
+    theta_ss = law.steady_state(v, inputs)[0]
+    lagging = law.force(np.ones((1, v.size)), v, inputs)               # Θ = 1: a full film
+    expected = np.maximum(steady + drop * (theta_ss - 1.0), film_shear)
+    assert lagging == pytest.approx(expected, rel=1e-12)
+    # at 10 and 30 mm/s the steady force minus the lag falls below the film's shear (it would
+    # be -0.5 and -0.8 N): the floor holds, 0.12 and 0.24 N
+    assert np.all(steady[2:] + drop * (theta_ss[2:] - 1.0) < 0.0)
+    assert lagging[2:] == pytest.approx(film_shear[2:], rel=1e-12)
+    assert np.all(film_shear > 1e-3)
+    # the partials see the floor: no Θ sensitivity on it, −ΔF off it
+    part = law.partials(np.ones((1, v.size)), v, inputs)
+    assert part.dforce_dz[0, 2:] == pytest.approx([0.0, 0.0])
+    assert part.dforce_dz[0, :2] == pytest.approx([-drop, -drop], rel=1e-12)
+
+
 def test_theta_contact_partials_match_finite_differences(table):
     law = Theta.from_parameter_set("seal_contact", bristle_stiffness=5e4)
     inputs = inputs_for(table)

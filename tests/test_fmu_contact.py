@@ -52,8 +52,8 @@ def c_table(tmp_path_factory):
     so = ctypes.CDLL(str(lib))
     dbl, lng = ctypes.POINTER(ctypes.c_double), ctypes.POINTER(ctypes.c_long)
     so.contact_table_point.argtypes = [lng, dbl] + [ctypes.c_double] * 3 + [dbl] * 3
-    so.contact_steady.argtypes = [lng, dbl] + [ctypes.c_double] * 5 + [dbl] * 2
-    so.theta_contact_level.argtypes = [ctypes.c_double] * 6
+    so.contact_steady.argtypes = [lng, dbl] + [ctypes.c_double] * 5 + [dbl] * 3
+    so.theta_contact_level.argtypes = [ctypes.c_double] * 7
     so.theta_contact_level.restype = ctypes.c_double
     return so
 
@@ -91,13 +91,14 @@ def test_c_table_lookup_is_the_numba_kernel(c_table):
                     abs(out[2].value - want[2]) / np.max(values[..., 4:]))
         par = np.zeros(16)
         par[13], par[15] = 0.3, np.pi * 0.02                 # mu_b, pi D
-        steady, boundary = contact_steady(par, row, data, temp, pressure, -1.0, speed)
-        fss, fb = ctypes.c_double(), ctypes.c_double()
+        steady, boundary, viscous = contact_steady(par, row, data, temp, pressure, -1.0, speed)
+        fss, fb, fv = ctypes.c_double(), ctypes.c_double(), ctypes.c_double()
         c_table.contact_steady(row_c, data_c, temp, pressure, -speed, par[15], par[13],
-                               ctypes.byref(fss), ctypes.byref(fb))
+                               ctypes.byref(fss), ctypes.byref(fb), ctypes.byref(fv))
         worst = max(worst, abs(fss.value - steady) / (scale * par[15]),
-                    abs(fb.value - boundary) / (scale * par[15]))
-        args = (rng.uniform(0, 1), speed, steady, boundary, 0.5, rng.uniform(0, 1))
+                    abs(fb.value - boundary) / (scale * par[15]),
+                    abs(fv.value - viscous) / (scale * par[15]))
+        args = (rng.uniform(0, 1), speed, steady, boundary, 0.5, rng.uniform(0, 1), viscous)
         level = c_table.theta_contact_level(*args)
         worst = max(worst, abs(level - theta_contact_level(*args)) / (scale * par[15]))
     assert worst <= 1e-14

@@ -111,7 +111,8 @@ def contact_steady(par, frow, fdata, temp, dp, orient, vv):
     up, _, _ = cell_sums(frow, fdata, i, wa, j, wb, 0, _ON_NODE, 0, False)
     down, _, _ = cell_sums(frow, fdata, i, wa, j, wb, 0, _ON_NODE, 2, False)
     circumference, mu = par[TH_CIRCUMFERENCE], par[TH_MU_B]
-    return circumference * (mu * load + visc), circumference * mu * 0.5 * (up + down)
+    return (circumference * (mu * load + visc), circumference * mu * 0.5 * (up + down),
+            circumference * visc)
 
 
 @njit(cache=True)
@@ -119,9 +120,10 @@ def _theta_level(par, th, vv, fn, temp, frow, fdata, dp, orient):
     """Friction level of the Θ law [N]: lumped g_Θ, or on the contact table
     (:func:`sealsim.friction.kernels.theta_contact_level`)."""
     if par[TH_CONTACT] > 0.0:
-        fss, fb = contact_steady(par, frow, fdata, temp, dp, orient, vv)
+        fss, fb, fv = contact_steady(par, frow, fdata, temp, dp, orient, vv)
         return fk.theta_contact_level(th, vv, fss, fb, par[TH_DROP],
-                                      fk.theta_steady(vv, par[0], par[1], fn, par[5], par[6]))
+                                      fk.theta_steady(vv, par[0], par[1], fn, par[5], par[6]),
+                                      fv)
     return fk.theta_friction_level(th, fn, par[2], par[3])
 
 

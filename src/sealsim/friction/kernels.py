@@ -43,8 +43,9 @@ kernel (arguments)                                 returns
 ``theta_affine(v, dt, tau, al, fn, fref, n)``      (a, b): Θ(t+dt) = a·Θ + b, exact for constant v
 ``theta_friction_level(th, fn, fa, fb)``           g_Θ = F_N·[f_a·(1 − Θ) + f_b·Θ]   (H&M Eq. 5)
 ``theta_force(th, v, fn, b, fa, fb, gamma)``       g_Θ·sgn(v) + γ·b·v                (H&M Eq. 5)
-``theta_contact_level(th, v, fss, fb, d, thss)``   level of the Θ law on a contact table:
-                                                   fss + d·fb·(Θ_ss − Θ), at rest fb·(1 − d·Θ)
+``theta_contact_level(th, v, fss, ...)``           level of the Θ law on a contact table:
+                                                   max(fss + d·fb·(Θ_ss − Θ), fv), at rest
+                                                   fb·(1 − d·Θ)
 ``walther_viscosity_ratio(t, tref, wa, wb)``       ν(T)/ν(T_ref), ASTM D341 (Walther)
 =================================================  ===============================================
 
@@ -306,17 +307,22 @@ def theta_force(th, v, fn, b, fa, fb, gamma):
 
 
 @kernel
-def theta_contact_level(th, v, fss, fb, d, thss):
+def theta_contact_level(th, v, fss, fb, d, thss, fv):
     """Friction level [N] of the Θ law whose steady curve is a contact table
     (:mod:`sealsim.friction.theta`, ``steady = "contact"``): |F_ss(v)| + ΔF·(Θ_ss − Θ) while
-    sliding, F_ss(0⁺) − ΔF·Θ at rest, ΔF = d·F_ss(0⁺); at least 1e-9 N.  fss = |F_ss(v)|,
-    fb = F_ss(0⁺) [N], d = dwell drop [-], thss = Θ_ss(v)."""
+    sliding, but not below the film's viscous shear fv, F_ss(0⁺) − ΔF·Θ at rest,
+    ΔF = d·F_ss(0⁺); at least 1e-9 N.  fss = |F_ss(v)|, fb = F_ss(0⁺), fv = π·D·V(|v|) the
+    viscous part of fss [N], d = dwell drop [-], thss = Θ_ss(v).  The lag of Θ acts on the
+    asperity-carried part: a film thicker than steady (Θ > Θ_ss, while the speed falls) takes
+    load off the asperities, at most all of it, not its own shear."""
     drop = d * fb
+    floor = 1e-9
     if v != 0.0:
         level = fss + drop * (thss - th)
+        floor = fv if fv > floor else floor
     else:
         level = fb - drop * th
-    return level if level > 1e-9 else 1e-9
+    return level if level > floor else floor
 
 
 @kernel
@@ -504,10 +510,10 @@ def _loop_theta_force(th, v, fn, b, fa, fb, gamma, out):
 
 
 @kernel
-def _loop_theta_contact_level(th, v, fss, fb, d, thss, out):
+def _loop_theta_contact_level(th, v, fss, fb, d, thss, fv, out):
     for i in range(out.shape[0]):
         out[i] = theta_contact_level(_at(th, i), _at(v, i), _at(fss, i), _at(fb, i), _at(d, i),
-                                     _at(thss, i))
+                                     _at(thss, i), _at(fv, i))
 
 
 @kernel

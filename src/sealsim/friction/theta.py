@@ -76,10 +76,13 @@ temperature, pressure difference, speed and stroke direction
 (L the asperity-carried load, V the viscous friction, per unit circumference; μ_b the boundary
 friction coefficient of the lubricated rubber).  The Θ state keeps the dynamics on top of it::
 
-    F = [F_ss(|v|) + ΔF·(Θ_ss(v) − Θ)]·sgn(v),   ΔF = d·μ_b·F_N
+    F = max(F_ss(|v|) + ΔF·(Θ_ss(v) − Θ), π·D·V(|v|))·sgn(v),   ΔF = d·μ_b·F_N
 
 with the same state equation: in steady sliding Θ = Θ_ss and F = F_ss exactly; Θ lagging
-behind Θ_ss while the speed rises gives more friction than steady (less while it falls); at
+behind Θ_ss while the speed rises gives more friction than steady (less while it falls: the
+film, thicker than steady, takes load off the asperities -- at most all of it, so the friction
+does not fall below the film's own viscous shear π·D·V, which an unbounded lag took to zero
+after a quick deceleration); at
 rest the break-away force F_ss(0⁺) − ΔF·Θ grows with the dwell time to the boundary level
 μ_b·F_N (F_ss(0⁺): the asperities carry the whole load).  d = ``dwell_drop`` is the fraction by
 which the break-away force just after sliding (Θ = 1) lies below the one after a long dwell --
@@ -621,9 +624,10 @@ class Theta(FrictionLaw):
                                          *self.walther)
 
     def contact_steady(self, v, inputs: ContactInputs):
-        """(|F_ss(v)| [N], boundary level F_ss(0⁺) [N]) from the contact table of ``inputs``
-        (``steady = "contact"``): F_ss = π·D·(μ_b·L + V) in the stroke direction of v, and
-        μ_b times the asperity load at the table's slowest speed (both directions' mean)."""
+        """(|F_ss(v)| [N], boundary level F_ss(0⁺) [N], viscous part π·D·V(|v|) [N]) from the
+        contact table of ``inputs`` (``steady = "contact"``): F_ss = π·D·(μ_b·L + V) in the
+        stroke direction of v, and μ_b times the asperity load at the table's slowest speed
+        (both directions' mean)."""
         table = inputs.contact_table
         if table is None:
             raise InputError("inputs.contact_table: the theta law with steady = 'contact' needs "
@@ -643,22 +647,23 @@ class Theta(FrictionLaw):
         down, _, _ = table.evaluate(-slow, dp, temperature)
         circumference = np.pi * diameter
         return (circumference * (mu * load + viscous),
-                circumference * mu * 0.5 * (up + down))
+                circumference * mu * 0.5 * (up + down), circumference * viscous)
 
     def level(self, theta, inputs: ContactInputs, v=None):
         """Friction level [N] without the sign: the break-away force at rest.
 
         Lumped: g_Θ = F_N·[f_a(1 − Θ) + f_b·Θ] (the viscous γ·b·v comes on top).  Contact:
-        |F_ss(v)| + ΔF·(Θ_ss(v) − Θ), at rest F_ss(0⁺) − ΔF·Θ, ΔF = d·F_ss(0⁺).
+        |F_ss(v)| + ΔF·(Θ_ss(v) − Θ), not below the film's viscous part π·D·V(|v|), at rest
+        F_ss(0⁺) − ΔF·Θ, ΔF = d·F_ss(0⁺).
         """
         p = self.params
         if not self.contact:
             return theta_friction_level(theta, self._fn(inputs), p.f_a, p.f_b)
         v = np.zeros(np.shape(theta)) if v is None else np.asarray(v, dtype=float)
-        steady, boundary = self.contact_steady(v, inputs)
+        steady, boundary, viscous = self.contact_steady(v, inputs)
         theta_ss = theta_steady(v, *self._rate_args(inputs))
         return apply(_k._loop_theta_contact_level, theta, v, steady, boundary, p.dwell_drop,
-                     theta_ss)
+                     theta_ss, viscous)
 
     def relaxed_storage(self, z):
         z = np.asarray(z, dtype=float)
@@ -711,9 +716,13 @@ class Theta(FrictionLaw):
         d_tt = np.broadcast_to(-1.0 / p.tau - r, shape)
         d_tv = np.broadcast_to(np.sign(v) / (p.alpha * load) * (1.0 - z[0]), shape)
         if self.contact:
-            # ∂g/∂Θ = −ΔF; ∂g/∂v by central differences of the tabulated curve
-            _, boundary = self.contact_steady(v, inputs)
-            dlevel = -p.dwell_drop * boundary
+            # ∂g/∂Θ = −ΔF (0 where the level rests on the film's viscous part); ∂g/∂v by
+            # central differences of the tabulated curve
+            steady, boundary, viscous = self.contact_steady(v, inputs)
+            theta_ss = theta_steady(v, *self._rate_args(inputs))
+            free = np.where(v != 0.0, steady + p.dwell_drop * boundary * (theta_ss - z[0])
+                            > np.maximum(viscous, 1e-9), True)
+            dlevel = np.where(free, -p.dwell_drop * boundary, 0.0)
             h = 1e-6 * np.maximum(np.abs(v), 1e-6)
             dg_dv = (self.level(z[0], inputs, v + h) - self.level(z[0], inputs, v - h)) / (2 * h)
             viscous_dv = np.broadcast_to(np.where(v != 0.0, dg_dv * np.sign(v), 0.0), shape)
@@ -774,7 +783,7 @@ class Theta(FrictionLaw):
         p = self.params
         v = as_velocity(v)
         if self.contact:
-            steady, _ = self.contact_steady(v, inputs)
+            steady, _, _ = self.contact_steady(v, inputs)
             return steady * np.sign(v)
         return theta_steady_force(v, self._fn(inputs), self._b(inputs), p.tau,
                                   p.alpha, p.f_a, p.f_b, self.gamma(inputs),

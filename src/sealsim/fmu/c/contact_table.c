@@ -98,7 +98,7 @@ void contact_table_point(const long *row, const double *data, double temperature
 
 void contact_steady(const long *row, const double *data, double temperature, double pressure,
                     double oriented_speed, double circumference, double boundary_friction,
-                    double *steady, double *boundary) {
+                    double *steady, double *boundary, double *viscous) {
     static const double on_node[4] = {1.0, 0.0, 0.0, 0.0};
     double a, b, wa[4], wb[4], load = 0.0, visc = 0.0, up, down, unused0, unused1;
     long i = table_locate(data, 0, row[0], temperature, &a);       /* one cell search */
@@ -116,11 +116,17 @@ void contact_steady(const long *row, const double *data, double temperature, dou
     table_cell_sums(row, data, i, wa, j, wb, 0, on_node, 2, 0, &down, &unused0, &unused1);
     *steady = circumference * (boundary_friction * load + visc);
     *boundary = circumference * boundary_friction * 0.5 * (up + down);
+    *viscous = circumference * visc;
 }
 
 double theta_contact_level(double th, double v, double fss, double fb, double d,
-                           double thss) {
-    double drop = d * fb;
-    double level = v != 0.0 ? fss + drop * (thss - th) : fb - drop * th;
-    return level > 1e-9 ? level : 1e-9;
+                           double thss, double fv) {
+    double drop = d * fb, floor = 1e-9, level;
+    if (v != 0.0) {            /* not below the film's viscous shear fv */
+        level = fss + drop * (thss - th);
+        floor = fv > floor ? fv : floor;
+    } else {
+        level = fb - drop * th;
+    }
+    return level > floor ? level : floor;
 }

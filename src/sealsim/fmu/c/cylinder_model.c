@@ -115,10 +115,10 @@ static double law_rates(long law, const double *par, const double *z, double vv,
         double th = z[0], level;
         fn = fmax(fn, 1e-9);
         if (contact) {                      /* compiled._theta_level on the contact table */
-            double fss, fb;
-            contact_steady(frow, fdata, temp, dp, orient * vv, par[15], par[13], &fss, &fb);
+            double fss, fb, fv;
+            contact_steady(frow, fdata, temp, dp, orient * vv, par[15], par[13], &fss, &fb, &fv);
             level = theta_contact_level(th, vv, fss, fb, par[14],
-                                        theta_steady(vv, par[0], par[1], fn, par[5], par[6]));
+                                        theta_steady(vv, par[0], par[1], fn, par[5], par[6]), fv);
         } else {
             level = theta_friction_level(th, fn, par[2], par[3]);
         }

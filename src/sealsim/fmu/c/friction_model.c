@@ -36,7 +36,8 @@ static double sgn(double x) {
 typedef struct {
     double v, normal_force, contact_width, dp;
     double gamma;      /* viscous coefficient of the Theta law at T_seal [N s/m^2] */
-    double steady, boundary;   /* THETA_CONTACT: |F_ss(v)| and F_ss(0+) [N] */
+    double steady, boundary, viscous;   /* THETA_CONTACT: |F_ss(v)|, F_ss(0+), its viscous
+                                          part [N] */
 } Contact;
 
 static double viscous_coefficient(Instance *c);
@@ -52,6 +53,7 @@ static Contact contact(Instance *c) {
         k.gamma = c->cache[4];
         k.steady = c->cache[5];
         k.boundary = c->cache[6];
+        k.viscous = c->cache[7];
         return k;
     }
     double x = P(P_A) - P(P_B);
@@ -76,17 +78,18 @@ static Contact contact(Instance *c) {
     k.gamma = viscous_coefficient(c);
     c->cache[3] = k.dp;
     c->cache[4] = k.gamma;
-    k.steady = k.boundary = 0.0;
+    k.steady = k.boundary = k.viscous = 0.0;
 #if FRICTION_LAW == LAW_THETA && THETA_CONTACT
     {
         double orient = P(VELOCITY_DIRECTION) * (P(P_A) >= P(P_B) ? 1.0 : -1.0);
         contact_steady(FRIC_ROW, FRIC_DATA, P(T_SEAL), k.dp, orient * k.v,
                        3.141592653589793 * P(SLIDING_DIAMETER), P(BOUNDARY_FRICTION),
-                       &k.steady, &k.boundary);
+                       &k.steady, &k.boundary, &k.viscous);
     }
 #endif
     c->cache[5] = k.steady;
     c->cache[6] = k.boundary;
+    c->cache[7] = k.viscous;
     c->cache_valid = 1;
     return k;
 }
@@ -152,7 +155,7 @@ static double theta_steady(Instance *c, const Contact *k) {
 static double theta_level(Instance *c, double theta, const Contact *k) {
 #if THETA_CONTACT
     return theta_contact_level(theta, k->v, k->steady, k->boundary, P(DWELL_DROP),
-                               theta_steady(c, k));
+                               theta_steady(c, k), k->viscous);
 #else
     return k->normal_force * (P(F_A) * (1.0 - theta) + P(F_B) * theta);
 #endif

@@ -72,9 +72,9 @@ void contact_table_point(const long *row, const double *data, double temperature
                          double *film);
 void contact_steady(const long *row, const double *data, double temperature, double pressure,
                     double oriented_speed, double circumference, double boundary_friction,
-                    double *steady, double *boundary);
+                    double *steady, double *boundary, double *viscous);
 double theta_contact_level(double th, double v, double fss, double fb, double d,
-                           double thss);
+                           double thss, double fv);
 
 #include "config.h"
 
