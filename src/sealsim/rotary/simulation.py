@@ -767,8 +767,8 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
     shaft under its inner ring and the housing; K depends on the sump temperature through the
     oil's convection coefficients).  The network matrix K₀ is factorised once, at the start
     temperature, and reused: each iteration solves K₀·δ = r for the residual
-    r = F·T_fixed + e·P + b·Q − K(T_sump)·T (a chord iteration; Kelley, *Iterative Methods for Linear
-    and Nonlinear Equations*, SIAM 1995, ch. 5).  The heats' feedback enters through the
+    r = F·T_fixed + e·P + b·Q − K(T_sump)·T (a chord iteration; Kelley, *Iterative Methods for
+    Linear and Nonlinear Equations*, SIAM 1995, ch. 5).  The heats' feedback enters through the
     Woodbury formula with the secant slopes of the last two iterates of the two heats that
     depend on the temperatures, the seal's friction P(T_contact) and the bearing's heat
     Q(T_bearing) (source b, :meth:`RotaryModel.bearing_temperature`):
@@ -808,15 +808,14 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
     # the seal's friction (on the contact band) and the bearing's heat (inner ring, housing)
     unit_sources, probes = model.heat_feedback()
 
-    def factorised(sump_temperature: float):
-        k, f = model.assemble(angular_speed, sump_temperature)
+    def factorised(k):
         lu = factorise(k)
         responses = np.stack([lu.solve(unit_sources[:, j]) for j in range(2)], axis=1)
         return lu, responses, probes.T @ responses
 
     factorised_at = model.sump_temperature(temps)
-    lu, responses, coupling = factorised(factorised_at)
     k, f = model.assemble(angular_speed, factorised_at)
+    lu, responses, coupling = factorised(k)
 
     rubber = model.friction.elastomer
     lowest, highest = rubber.allowed_range
@@ -852,7 +851,7 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
             k, f = model.assemble(angular_speed, temps[sump])
             if stale and abs(temps[sump] - factorised_at) > STALE_SUMP_CHANGE:
                 factorised_at = temps[sump]
-                lu, responses, coupling = factorised(factorised_at)
+                lu, responses, coupling = factorised(k)
         step = lu.solve(f @ fixed + unit_sources @ power - k @ temps)
         # Woodbury: the heats' feedback (P + s·Δ) through the two probes, (I − C·S)·a = C(x)
         system = np.eye(2) - coupling * slopes[None, :]
