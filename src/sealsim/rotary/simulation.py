@@ -546,6 +546,7 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
     feedback_sources, feedback_probes = model.heat_feedback()
     stepper = BackwardEulerStepper(model.network, feedback_sources=feedback_sources,
                                    feedback_probes=feedback_probes)
+    feedback_totals = feedback_sources.sum(axis=0)   # W in the network per W of each heat
     temps = np.full(model.network.n, model.start_temperature)
     fixed = model.fixed_temperatures()
     capacity = model.network.capacity
@@ -561,17 +562,20 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
     k_break = 1
     last_report = -1.0
     calm_since, steady = None, False
-    last, friction_slope = None, 0.0        # (ω, T_contact, P) of the last friction evaluation
+    # (ω, T, heat) of the last evaluation of the friction (T_contact) and of the bearing
+    # (T_bearing): their secants are the slopes of the linearly implicit step
+    last, friction_slope, last_bearing, bearing_slope = None, 0.0, None, 0.0
     # a step's row holds the temperatures at its end and the friction there (the heat the
     # linearly implicit step applied), so each row waits for the next step's evaluation
     pending = None
 
-    def finish(step: tuple, state: FrictionState | None) -> tuple:
+    def finish(step: tuple, state: FrictionState | None, bearing: float | None) -> tuple:
         t1, omega, temps, t_contact, payload = step
         if state is None:
             state = friction_at(omega, t_contact, t1)
-        return _row(model, state, t1, omega, temps, t_contact, payload,
-                    model.bearing_heat(omega, temps))
+        if bearing is None:
+            bearing = model.bearing_heat(omega, temps)
+        return _row(model, state, t1, omega, temps, t_contact, payload, bearing)
 
     def friction_at(omega: float, t_contact: float, t1: float) -> FrictionState:
         try:
@@ -597,19 +601,24 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
         t_sump = model.sump_temperature(temps)
         state = friction_at(omega, t_contact, t1)
         power = float(state.power)
-        if pending is not None:  # the last step's row: the friction at its end
-            rows.append(finish(pending, state if pending[1] == omega else None))
-        # the heats' slopes for the linearly implicit step: the friction's from the last
-        # evaluation at the same speed (a secant), else from a 1 K difference; the bearing's
-        # (Palmgren, cheap) always from a 1 K difference
+        t_bearing = model.bearing_temperature(temps)
+        bearing_w = bearing_heat(case, model.oil, omega, t_bearing)
+        if pending is not None:  # the last step's row: the heats at its end
+            same = pending[1] == omega
+            rows.append(finish(pending, state if same else None, bearing_w if same else None))
+        # the heats' slopes for the linearly implicit step: from the last evaluation at the
+        # same speed (a secant), else from a 1 K difference
         if last is not None and last[0] == omega and abs(t_contact - last[1]) > 1e-6:
             friction_slope = (power - last[2]) / (t_contact - last[1])
         elif last is None or last[0] != omega:
             friction_slope = float(friction_at(omega, t_contact + 1.0, t1).power) - power
         last = (omega, t_contact, power)
-        t_bearing = model.bearing_temperature(temps)
-        bearing_w = model.bearing_heat(omega, temps)
-        bearing_slope = bearing_heat(case, model.oil, omega, t_bearing + 1.0) - bearing_w
+        if (last_bearing is not None and last_bearing[0] == omega
+                and abs(t_bearing - last_bearing[1]) > 1e-6):
+            bearing_slope = (bearing_w - last_bearing[2]) / (t_bearing - last_bearing[1])
+        elif last_bearing is None or last_bearing[0] != omega:
+            bearing_slope = bearing_heat(case, model.oil, omega, t_bearing + 1.0) - bearing_w
+        last_bearing = (omega, t_bearing, bearing_w)
         key = (round(math.log1p(abs(omega)) / 0.02), round(t_sump / 2.0))
         before = watched(temps)
         bearing = model.bearing_source(bearing_w)
@@ -620,7 +629,7 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
                                        slopes=np.array([friction_slope, bearing_slope]))
         if not np.all(np.isfinite(temps)):
             raise ModelError(f"rotary simulation: temperatures became non-finite at t = {t1:.1f} s")
-        added = feedback_sources.sum(axis=0) * stepper.feedback_heat
+        added = feedback_totals * stepper.feedback_heat
         generated += (power + added[0]) * h
         generated_bearing += (float(bearing.sum()) + added[1]) * h
         dissipated += heat_out
@@ -639,7 +648,7 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
             progress(t, max(end, t))
             last_report = t
     if pending is not None:
-        rows.append(finish(pending, None))
+        rows.append(finish(pending, None, None))
     if progress is not None:
         progress(t, t)
     if extend:
