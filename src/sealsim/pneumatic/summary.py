@@ -40,6 +40,12 @@ DEFINITIONS = {
 }
 
 
+def _end_reached(position, stroke, target):
+    """(level [m], samples at or beyond it) of the end position ``target`` drives to."""
+    level = stroke * (1.0 - END_TOLERANCE) if target == "extend" else stroke * END_TOLERANCE
+    return level, (position >= level if target == "extend" else position <= level)
+
+
 def end_position_times(time, position, stroke, windows, target):
     """Times from each command to the end position it drives to.
 
@@ -67,8 +73,7 @@ def end_position_times(time, position, stroke, windows, target):
     >>> end_position_times(t, x, 0.1, [(0.0, 1.0)], "extend")
     [0.5]
     """
-    level = stroke * (1.0 - END_TOLERANCE) if target == "extend" else stroke * END_TOLERANCE
-    reached = position >= level if target == "extend" else position <= level
+    level, reached = _end_reached(position, stroke, target)
     out = []
     for start, end in windows:
         inside = (time >= start) & (time < end)
@@ -109,15 +114,12 @@ def unfinished_strokes(time, position, case) -> list[str]:
     out = []
     for target, sign, end_name in (("extend", 1.0, "extended"), ("retract", -1.0, "retracted")):
         windows = schedule.windows(sign)
-        level = stroke * (1.0 - END_TOLERANCE) if target == "extend" else stroke * END_TOLERANCE
+        _, reached = _end_reached(position, stroke, target)
         missed = []
         for start, end in windows:
             inside = (time >= start) & (time < end)
-            if not inside.any():
-                continue
-            x = position[inside]
-            reached = x >= level if target == "extend" else x <= level
-            if not reached[0] and not reached.any():
+            if inside.any() and not reached[inside].any():
+                x = position[inside]
                 missed.append(float(x.max() if target == "extend" else x.min()))
         if missed:
             furthest = max(missed) if target == "extend" else min(missed)
