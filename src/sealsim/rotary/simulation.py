@@ -25,6 +25,7 @@ from __future__ import annotations
 import math
 import warnings
 from dataclasses import dataclass, field
+from functools import cached_property
 from pathlib import Path
 
 import numpy as np
@@ -406,10 +407,26 @@ class RotaryModel:
         its rings, and the thinner oil there limits that heat.  At the sump's temperature a
         cold oil would feed the shaft without that limit (VG 68 with the sump held at 0 °C:
         285 W at 1000 rpm on 80 mm, a contact hotter than with a 20 °C sump)."""
-        if self.grid.bearing_cells.size == 0:
-            return self.sump_temperature(temperatures)
-        inner = float(temperatures[self.grid.bearing_cells] @ self.grid.bearing_weights)
-        return 0.5 * (inner + self.housing_temperature(temperatures))
+        probe, held = self._bearing_probe
+        return float(probe @ temperatures) + held
+
+    @cached_property
+    def _bearing_probe(self) -> tuple[np.ndarray, float]:
+        """T_bearing = probe·T + held [K]: the weights of the network's temperatures in
+        :meth:`bearing_temperature` and the part of the held nodes (housing, sump)."""
+        probe, held = np.zeros(self.network.n), 0.0
+        nodes, env = self.network.node_index, self.case.environment
+        if self.grid.bearing_cells.size:
+            probe[self.grid.bearing_cells] = 0.5 * self.grid.bearing_weights
+            if env.housing_temperature is None:
+                probe[nodes["housing"]] = 0.5
+            else:
+                held = 0.5 * float(env.housing_temperature)
+        elif self.sump_fixed:
+            held = float(env.sump_temperature)
+        else:
+            probe[nodes["sump"]] = 1.0
+        return probe, held
 
     def heat_feedback(self) -> tuple[np.ndarray, np.ndarray]:
         """The two heats that depend on the temperatures, as the network sees them: unit
@@ -419,13 +436,7 @@ class RotaryModel:
         temperature, :meth:`bearing_temperature`, whose held housing is a constant)."""
         probes = np.zeros((self.network.n, 2))
         probes[self.grid.contact_cells, 0] = self.grid.contact_weights
-        nodes = self.network.node_index
-        if self.grid.bearing_cells.size:
-            probes[self.grid.bearing_cells, 1] = 0.5 * self.grid.bearing_weights
-            if self.case.environment.housing_temperature is None:
-                probes[nodes["housing"], 1] += 0.5
-        elif not self.sump_fixed:
-            probes[nodes["sump"], 1] = 1.0
+        probes[:, 1] = self._bearing_probe[0]
         return np.stack([self.source(1.0), self.bearing_source(1.0)], axis=1), probes
 
     def bearing_heat(self, angular_speed: float, temperatures: np.ndarray) -> float:
