@@ -114,10 +114,16 @@ def test_unknown_oil_lists_close_matches():
     assert "unknown oil 'VG6'" in msg and "close matches" in msg and "'VG68'" in msg
 
 
-@pytest.mark.parametrize("temps", ["20,abc", "", "nan", "20,,40", "-300"])
+@pytest.mark.parametrize("temps", ["20,abc", "", "nan", "20,,40", "-300", "20 m", "-300 degC"])
 def test_bad_temperatures_are_a_clean_error(temps):
     msg = user_error("oil", "show", "VG68", "--temperatures", temps)
     assert "--temperatures" in msg
+
+
+def test_temperatures_may_carry_their_units():
+    # plain numbers are degC (the option says so); an item with a unit is converted
+    data = json.loads(ok("oil", "show", "VG68", "-t", "-20 degC, 300 K,212 degF", "--json").stdout)
+    assert [r["temperature_C"] for r in data["table"]] == pytest.approx([-20.0, 26.85, 100.0])
 
 
 def test_temperature_below_the_oil_minimum_is_an_error():

@@ -75,8 +75,10 @@ def print_json(data: Any) -> None:
 
 
 def parse_celsius_list(text: str | None, default: list[float], option: str) -> list[float]:
-    """Parse a comma-separated list of temperatures in °C (e.g. ``"20,40,100"``)."""
+    """Parse a comma-separated list of temperatures in °C (``"20,40,100"``); an item may carry
+    its own temperature unit (``"-20 degC, 300 K, 212 degF"``)."""
     from sealsim.errors import InputError
+    from sealsim.units import parse_quantity
 
     if text is None:
         return default
@@ -85,8 +87,12 @@ def parse_celsius_list(text: str | None, default: list[float], option: str) -> l
         try:
             value = float(part)
         except ValueError:
-            raise InputError(f"{option}: {part.strip()!r} is not a number; give temperatures in "
-                             "degC separated by commas, e.g. '20,40,100'") from None
+            try:
+                value = parse_quantity(part.strip(), "temperature") - ZERO_CELSIUS_K
+            except InputError:
+                raise InputError(f"{option}: {part.strip()!r} is not a temperature; give "
+                                 "numbers in degC separated by commas, e.g. '20,40,100', or "
+                                 "each with its unit, e.g. '-20 degC, 300 K'") from None
         if not math.isfinite(value) or value < -ZERO_CELSIUS_K:
             raise InputError(f"{option}: {value!r} degC is not a valid temperature "
                              "(must be finite and >= -273.15 degC)")

@@ -205,7 +205,8 @@ def oil_show(
                                "VG68-PAO (case-insensitive)."),
     temperatures: str | None = typer.Option(
         None, "--temperatures", "-t",
-        help="Comma-separated temperatures in degC (default 20,40,60,80,100)."),
+        help="Comma-separated temperatures in degC, or each with its unit ('-20 degC, 300 K'); "
+             "default 20,40,60,80,100."),
     json: bool = JSON_OPTION,
     oil_file: Path | None = OIL_FILE_OPTION,
 ) -> None:
@@ -332,8 +333,8 @@ def material_show(
                                "(case-insensitive) or one of --material-file."),
     temperatures: str | None = typer.Option(
         None, "--temperatures", "-t",
-        help="Comma-separated temperatures in degC (default: the service range in 20 degC "
-             "steps)."),
+        help="Comma-separated temperatures in degC, or each with its unit ('-20 degC, 300 K'); "
+             "default: the service range in 20 degC steps."),
     frequency: float = FREQUENCY_OPTION,
     json: bool = JSON_OPTION,
     material_file: Path | None = MATERIAL_FILE_OPTION,
