@@ -204,6 +204,26 @@ def test_extrusion_limit_follows_the_published_table():
     assert np.all(np.diff(extrusion_gap_limit(p, 75)) <= 0)                      # monotone
 
 
+def test_limits_given_in_other_units_are_inside_their_rows_and_ranges():
+    # "1500 psi" converts to a last bit above 1500 * 6894.757 Pa and "212 degF" above
+    # 373.15 K: a limit of the table or of the service range must still count as inside
+    # (before: the 1500-2000 psi row, 0.004 in, was used, and both notes were given)
+    inch = 0.0254
+    p = sealsim.units.parse_quantity("1500 psi", "pressure")
+    assert float(extrusion_gap_limit(p, 70)) == pytest.approx(0.006 * inch)   # <= 1500 psi
+    assert float(extrusion_gap_limit(p * 1.001, 70)) == pytest.approx(0.004 * inch)
+    r = sealsim.oring_gland(_case("piston_static.toml", {"service": {
+        "pressure": "1500 psi", "temperature": ["-40 degF", "212 degF"]}}))
+    check = next(c for c in r["checks"] if c["name"] == "extrusion_gap")
+    # NBR 75 Shore A: between 0.006 (70) and 0.020 in (90) at a quarter
+    assert check["limit"] == pytest.approx((0.006 + 0.25 * 0.014) * inch * 1e3)
+    assert not any("back-up" in n or "service range" in n for n in r["notes"]), r["notes"]
+    r = sealsim.oring_gland(_case("piston_static.toml", {"service": {
+        "pressure": "1501 psi", "temperature": ["-41 degF", "213 degF"]}}))
+    assert any("above 103.4 bar" in n for n in r["notes"])
+    assert any("service range" in n for n in r["notes"])
+
+
 def test_the_failing_example_names_its_failed_check_and_why():
     r = sealsim.oring_gland(EXAMPLES / "rod_extrusion_fails.toml")
     assert not r["ok"] and r["failed"] == ["extrusion_gap"]

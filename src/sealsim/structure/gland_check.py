@@ -53,6 +53,8 @@ PSI = 6894.757293168361
 """Pascal per psi (NIST SP 811, B.8)."""
 INCH = 0.0254
 """Metre per inch (exact)."""
+ROUNDING = 1e-12
+"""Relative rounding of a unit conversion, below which a value equals its limit."""
 
 #: Quantities of the stack: report name -> key of :func:`gland_state`.
 QUANTITIES = {"squeeze_percent": "squeeze", "stretch_percent": "stretch",
@@ -150,10 +152,13 @@ def extrusion_gap_limit(pressure, hardness_shore_a):
     0.1524
     >>> round(float(extrusion_gap_limit(100e5, 80.0)) * 1e3, 4)   # between 0.006 and 0.020
     0.3302
+    >>> from sealsim.units import parse_quantity
+    >>> round(float(extrusion_gap_limit(parse_quantity("1500 psi", "pressure"), 70.0)) / INCH, 4)
+    0.006
     """
     p = np.asarray(pressure, dtype=float)
     steps = np.asarray(EXTRUSION_TABLE["pressure"])
-    k = np.searchsorted(steps, p, side="left")
+    k = np.searchsorted(steps * (1 + ROUNDING), p, side="left")   # "1500 psi" is in its row
     inside = k < steps.size
     kk = np.minimum(k, steps.size - 1)
     soft, hard = (np.asarray(EXTRUSION_TABLE[h])[kk] for h in (70.0, 90.0))
@@ -598,11 +603,14 @@ def check_gland(case) -> GlandReport:
         pressure=service.pressure, hardness_shore_a=hardness,
         silicone=elastomer.name.upper() in ("VMQ", "FVMQ"),
         overrides=case.limits.model_dump(mode="python"))
-    if service.pressure > 1500 * PSI:
-        notes.append("pressure above 103.5 bar (1500 psi): Parker (ORD 5700, Section IV) "
+    # the limits themselves are allowed: "1500 psi" or "212 degF" may come out of the unit
+    # conversion a last bit above 1500 * PSI or 373.15 K
+    if service.pressure > 1500 * PSI * (1 + ROUNDING):
+        notes.append("pressure above 103.4 bar (1500 psi): Parker (ORD 5700, Section IV) "
                      "advises investigating back-up rings")
     lo_t, hi_t = elastomer.service_range
-    if min(service.temperature) < lo_t or max(service.temperature) > hi_t:
+    if (min(service.temperature) < lo_t * (1 - ROUNDING)
+            or max(service.temperature) > hi_t * (1 + ROUNDING)):
         notes.append(f"service temperatures outside the {elastomer.name} catalogue's service "
                      f"range {lo_t - 273.15:.0f} ... {hi_t - 273.15:.0f} degC")
     tg = elastomer.glass_transition
