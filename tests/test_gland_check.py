@@ -234,6 +234,32 @@ def test_the_failing_example_names_its_failed_check_and_why():
         assert set(c) >= {"name", "value", "limit", "ok", "source"} and c["source"]
 
 
+def test_a_piston_ring_larger_than_its_groove_fails_the_stretch_check():
+    # ring 30 x 3.55 on a 19.5 mm groove in a 25 mm bore: it is compressed 36 % around its
+    # circumference and cannot be installed -- before, every check passed ("stretch_max
+    # -33.8 <= 5").  Apple Rubber: the ID must be smaller than the piston groove diameter.
+    r = sealsim.oring_gland(_case("piston_static.toml", {"ring": {"inner_diameter": "30 mm"}}))
+    check = next(c for c in r["checks"] if c["name"] == "stretch_min")
+    assert not check["ok"] and r["failed"] == ["stretch_min"]
+    # by hand at 20 degC: smallest groove 19.448 mm, largest ring ID 30 + 0.338 mm
+    assert check["value"] == pytest.approx((19.448 - 30.338) / 30.338 * 100, abs=PP)
+    assert check["limit"] == 0.0 and "Apple Rubber" in check["source"]
+    # the example's ring (stretch 0.99 ... 4.0 % at assembly) passes; it loosens to -0.43 %
+    # at 100 degC in service, which the check leaves alone (at assembly only)
+    ok = sealsim.oring_gland(EXAMPLES / "piston_static.toml")
+    check = next(c for c in ok["checks"] if c["name"] == "stretch_min")
+    assert ok["ok"] and check["value"] == pytest.approx((19.448 - 19.2576) / 19.2576 * 100,
+                                                        abs=PP)
+    assert ok["stretch_percent"]["min"] < 0.0
+    # a floating ring on purpose: the case's own limit
+    floating = sealsim.oring_gland(_case("piston_static.toml", {
+        "ring": {"inner_diameter": "19.6 mm"}, "limits": {"stretch_min": -0.05}}))
+    assert floating["ok"]
+    # rod and face glands have no such check
+    rod = sealsim.oring_gland(EXAMPLES / "rod_reciprocating.toml")
+    assert "stretch_min" not in {c["name"] for c in rod["checks"]}
+
+
 def test_own_limits_replace_the_published_ones_and_say_so():
     r = sealsim.oring_gland(_case("xring_piston.toml", {"limits": {"squeeze_min": 0.01}}))
     check = next(c for c in r["checks"] if c["name"] == "squeeze_min")
