@@ -89,3 +89,37 @@ def test_compare_refuses_a_measurement_longer_than_the_run(tmp_path):
     result = RUNNER.invoke(app, ["pneumatic", "compare", str(compare_file(tmp_path, base, data)),
                                  "--out", str(tmp_path / "o"), "--quiet"])
     assert result.exit_code == 2 and "controller.duration" in result.output
+
+
+def test_compare_says_gauge_or_absolute_and_gives_both_stroke_times(tmp_path):
+    # the table's and the plot's pressures are as measured: gauge here (before: plain "bar"
+    # for either), and the extend/retract times of the measured and the simulated position
+    # (the module promised them; the report had none)
+    base = short_case(tmp_path, "20 N")
+    same = measured_file(base, tmp_path / "same.csv")
+    out = tmp_path / "same"
+    result = RUNNER.invoke(app, ["pneumatic", "compare", str(compare_file(tmp_path, base, same)),
+                                 "--out", str(out), "--quiet"])
+    assert result.exit_code == 0, result.output
+    columns = (out / "comparison.csv").read_text().splitlines()[0].split(",")
+    assert "pressure_1_measured_bar_gauge" in columns and "pressure_2_model_bar_gauge" in columns
+    times = json.loads((out / "report.json").read_text())["stroke_times"]
+    # the measurement is the model sampled every 5 ms: the same strokes, the end crossings
+    # interpolated between samples (the position is nearly linear there: 1 ms)
+    for key in ("extend_time_s", "retract_time_s"):
+        assert times["measured"][key] == pytest.approx(times["model"][key], abs=1e-3)
+    assert "extend time: measured" in result.output
+    # absolute pressures: the same comparison, labelled abs
+    spec = tomllib.loads((tmp_path / "compare_same.toml").read_text())
+    spec["measurement"]["pressure"] = "absolute"
+    ambient = 1.01325
+    table = np.loadtxt(same, delimiter=",", skiprows=1)
+    table[:, 2:] += ambient
+    np.savetxt(tmp_path / "abs.csv", table, delimiter=",", header="t,x,p1,p2", comments="")
+    spec["measurement"]["file"] = "abs.csv"
+    (tmp_path / "compare_abs.toml").write_text(tomli_w.dumps(spec))
+    result = RUNNER.invoke(app, ["pneumatic", "compare", str(tmp_path / "compare_abs.toml"),
+                                 "--out", str(tmp_path / "abs"), "--quiet"])
+    assert result.exit_code == 0, result.output
+    frame = np.genfromtxt(tmp_path / "abs" / "comparison.csv", delimiter=",", names=True)
+    assert frame["pressure_2_model_bar_abs"][0] == pytest.approx(7.01325, rel=1e-9)

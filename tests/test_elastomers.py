@@ -49,6 +49,7 @@ from sealsim.properties.elastomers import (
     wlf_log10_shift,
     wlf_shift_factor,
 )
+from sealsim.units import parse_quantity
 
 K0 = 273.15
 NAMES = ["NBR", "HNBR", "FKM", "ACM", "VMQ"]
@@ -638,6 +639,8 @@ def test_check_temperature():
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         nbr.modulus(np.array([250.0, 300.0, 370.0]))  # inside the service range: silent
+        # its upper limit given as 212 degF converts to 373.15000000000003 K: still inside
+        nbr.check_temperature(parse_quantity("212 degF", "temperature"))
     assert math.isclose(nbr.allowed_range[0], nbr.glass_transition - 100.0)
 
 

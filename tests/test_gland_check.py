@@ -204,6 +204,26 @@ def test_extrusion_limit_follows_the_published_table():
     assert np.all(np.diff(extrusion_gap_limit(p, 75)) <= 0)                      # monotone
 
 
+def test_limits_given_in_other_units_are_inside_their_rows_and_ranges():
+    # "1500 psi" converts to a last bit above 1500 * 6894.757 Pa and "212 degF" above
+    # 373.15 K: a limit of the table or of the service range must still count as inside
+    # (before: the 1500-2000 psi row, 0.004 in, was used, and both notes were given)
+    inch = 0.0254
+    p = sealsim.units.parse_quantity("1500 psi", "pressure")
+    assert float(extrusion_gap_limit(p, 70)) == pytest.approx(0.006 * inch)   # <= 1500 psi
+    assert float(extrusion_gap_limit(p * 1.001, 70)) == pytest.approx(0.004 * inch)
+    r = sealsim.oring_gland(_case("piston_static.toml", {"service": {
+        "pressure": "1500 psi", "temperature": ["-40 degF", "212 degF"]}}))
+    check = next(c for c in r["checks"] if c["name"] == "extrusion_gap")
+    # NBR 75 Shore A: between 0.006 (70) and 0.020 in (90) at a quarter
+    assert check["limit"] == pytest.approx((0.006 + 0.25 * 0.014) * inch * 1e3)
+    assert not any("back-up" in n or "service range" in n for n in r["notes"]), r["notes"]
+    r = sealsim.oring_gland(_case("piston_static.toml", {"service": {
+        "pressure": "1501 psi", "temperature": ["-41 degF", "213 degF"]}}))
+    assert any("above 103.4 bar" in n for n in r["notes"])
+    assert any("service range" in n for n in r["notes"])
+
+
 def test_the_failing_example_names_its_failed_check_and_why():
     r = sealsim.oring_gland(EXAMPLES / "rod_extrusion_fails.toml")
     assert not r["ok"] and r["failed"] == ["extrusion_gap"]
@@ -212,6 +232,32 @@ def test_the_failing_example_names_its_failed_check_and_why():
     assert any(n.startswith("extrusion_gap fails") for n in r["notes"])
     for c in r["checks"]:
         assert set(c) >= {"name", "value", "limit", "ok", "source"} and c["source"]
+
+
+def test_a_piston_ring_larger_than_its_groove_fails_the_stretch_check():
+    # ring 30 x 3.55 on a 19.5 mm groove in a 25 mm bore: it is compressed 36 % around its
+    # circumference and cannot be installed -- before, every check passed ("stretch_max
+    # -33.8 <= 5").  Apple Rubber: the ID must be smaller than the piston groove diameter.
+    r = sealsim.oring_gland(_case("piston_static.toml", {"ring": {"inner_diameter": "30 mm"}}))
+    check = next(c for c in r["checks"] if c["name"] == "stretch_min")
+    assert not check["ok"] and r["failed"] == ["stretch_min"]
+    # by hand at 20 degC: smallest groove 19.448 mm, largest ring ID 30 + 0.338 mm
+    assert check["value"] == pytest.approx((19.448 - 30.338) / 30.338 * 100, abs=PP)
+    assert check["limit"] == 0.0 and "Apple Rubber" in check["source"]
+    # the example's ring (stretch 0.99 ... 4.0 % at assembly) passes; it loosens to -0.43 %
+    # at 100 degC in service, which the check leaves alone (at assembly only)
+    ok = sealsim.oring_gland(EXAMPLES / "piston_static.toml")
+    check = next(c for c in ok["checks"] if c["name"] == "stretch_min")
+    assert ok["ok"] and check["value"] == pytest.approx((19.448 - 19.2576) / 19.2576 * 100,
+                                                        abs=PP)
+    assert ok["stretch_percent"]["min"] < 0.0
+    # a floating ring on purpose: the case's own limit
+    floating = sealsim.oring_gland(_case("piston_static.toml", {
+        "ring": {"inner_diameter": "19.6 mm"}, "limits": {"stretch_min": -0.05}}))
+    assert floating["ok"]
+    # rod and face glands have no such check
+    rod = sealsim.oring_gland(EXAMPLES / "rod_reciprocating.toml")
+    assert "stretch_min" not in {c["name"] for c in rod["checks"]}
 
 
 def test_own_limits_replace_the_published_ones_and_say_so():

@@ -97,12 +97,13 @@ def test_contact_friction_states_are_lsodas():
     # rtol 1e-12.  During the strokes every state within 1e-6 of its range of LSODA's.  In
     # the end stops the piston creeps into the elastic bumper against a friction that falls
     # with speed (the boundary to mixed branch of the Stribeck curve): that motion amplifies
-    # any difference, and LSODA itself moves v there by 2.4e-4 of its range from rtol 1e-11
-    # to 1e-12 (T0C) -- so there x, p and T within 1e-6, v within 1e-4.
+    # any difference, and LSODA itself moves v there by 1.2e-3 of its range from rtol 1e-11
+    # to 1e-12 -- so there x, p and T within 2e-6, v within 1e-4.
     # The reference is LSODA at 1e-12, not at 1e-11: in the stops LSODA at 1e-11 is itself
-    # T1 8.4e-7 / v 7.0e-5 of the range from LSODA at 1e-12, as far as the compiled method is
-    # from either; measured in the stops against LSODA at 1e-12: T1 6.7e-7, v 4.8e-5 (against
-    # LSODA at 1e-11: 8.2e-7, 6.2e-5), during the strokes 1e-8 (v 9e-8)
+    # T1 1.6e-5 / v 1.2e-3 of the range from LSODA at 1e-12, further than the compiled
+    # method; measured in the stops against LSODA at 1e-12: T1 1.06e-6, v 7.8e-5, during the
+    # strokes 1e-8 (v 6e-8).  (Since the piston starts at rest in its stop, δ = F/k, instead
+    # of at δ = 0: before, T1 6.7e-7 and LSODA's own 8.4e-7.)
     path = EXAMPLES / "heipl_rod_seal.toml"
     c = load_pneumatic_cases(load_toml(path))["T25C"]
     new, ref = (simulate(c.model_copy(update={"solver": c.solver.model_copy(update={
@@ -116,7 +117,7 @@ def test_contact_friction_states_are_lsodas():
         a, b = new.timeseries[name].to_numpy(), ref.timeseries[name].to_numpy()
         error = np.abs(a - b) / np.max(np.abs(b))
         assert np.max(error[stroke]) < 1e-6, name
-        assert np.max(error[~stroke]) < (1e-4 if name == "v_m_s" else 1e-6), name
+        assert np.max(error[~stroke]) < (1e-4 if name == "v_m_s" else 2e-6), name
     assert new.stats["mode_switches"] == ref.stats["mode_switches"]
 
 

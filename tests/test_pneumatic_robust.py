@@ -55,7 +55,8 @@ def test_random_command_sequences_run_clean(steps, centre, load, bristles):
     assert f["p1_bar_abs"].min() > 0 and f["p2_bar_abs"].min() > 0
     for name in ("piston", "rod"):
         theta = f[f"theta_{name}"]
-        assert theta.min() >= 0.0 and theta.max() <= 1.0
+        # (to round-off: a seal with bristles held at rest, Θ = 0, may integrate to -1e-31)
+        assert theta.min() >= -1e-12 and theta.max() <= 1.0
     assert result.balances["mass_balance_rel_error"] < 1e-12
     # the energy balance measures the integration (kinetic and stop energy are not linear in
     # the states): a piston pressed into its stop from rest stores ½kδ² with δ resolved to the

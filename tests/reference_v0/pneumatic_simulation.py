@@ -17,7 +17,7 @@ from sealsim.pneumatic._jit import jit
 from sealsim.pneumatic.case import body_temperature, build_seals
 from sealsim.pneumatic.chambers import AIR_CP, AIR_CV, AIR_HEAT_CAPACITY_RATIO, chamber_wall_area, gas_mass, internal_energy, wall_heat_flow
 from sealsim.pneumatic.controller import COMMANDS, CommandSchedule
-from sealsim.pneumatic.cylinder import end_stop_force, load_force, piston_areas
+from sealsim.pneumatic.cylinder import end_stop_force, load_force, piston_areas, piston_force, rest_position
 from sealsim.pneumatic.seals import Seal, pressure_difference, side_pressures, smooth_abs
 from sealsim.pneumatic.valve import ANR_DENSITY, CENTRES, SpoolMotion, iso6358_flow, iso6358_mass_flow, openings, port_openings, series_pair
 __all__ = ['MODES', 'PneumaticResult', 'PneumaticSystem', 'simulate']
@@ -224,8 +224,14 @@ class PneumaticSystem:
             x0 = case.initial_position
         elif self.position is not None:
             x0 = float(self.position.value(0.0))
-        else:
+        else:   # (the one change since v0: the start at rest in the end stop, as sealsim's)
             x0 = self.stroke if u0 > 0 else 0.0
+            x0 = rest_position(x0, self.stroke, float(
+                piston_force(p1, p2, self.p_amb, self.a1, self.a2, self.a_rod)
+                - load_force(x0, 0.0, case.load.force, case.load.stiffness,
+                             case.load.spring_free_position, self.mass, case.cylinder.incline,
+                             case.load.viscous)), case.cylinder.end_stops.stiffness,
+                case.load.stiffness)
         v1 = case.cylinder.dead_volume_cap + self.a1 * x0
         v2 = case.cylinder.dead_volume_rod + self.a2 * (self.stroke - x0)
         m1 = float(gas_mass(p1, v1, self.t_amb))

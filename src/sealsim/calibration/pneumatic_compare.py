@@ -18,7 +18,10 @@ A compare file (TOML)::
 
 The model is sampled at the measured times (linear interpolation of its output, which is
 sampled finer); per signal the RMSE, the largest deviation and R² are reported, plus the
-extend/retract times of both.
+extend/retract times of both (``stroke_times``, for a ``cycle`` case with a measured position;
+:func:`sealsim.pneumatic.summary.stroke_times` of the measured and of the simulated position).
+Pressures are compared as they were measured: the table's and the plot's pressures are gauge
+(``pressure_1_measured_bar_gauge``) or absolute (``..._bar_abs``).
 """
 
 from __future__ import annotations
@@ -38,6 +41,7 @@ from sealsim.errors import InputError
 from sealsim.measurements import ColumnSpec, read_table
 from sealsim.pneumatic.case import case_input_files, load_pneumatic_case_file
 from sealsim.pneumatic.simulation import simulate
+from sealsim.pneumatic.summary import stroke_times
 
 __all__ = ["CompareCase", "PneumaticComparison", "compare_inputs", "compare_pneumatic_file"]
 
@@ -71,7 +75,8 @@ class PneumaticComparison:
     #: ``{"variant": NAME, "signals": {SIGNAL: {"unit", "rmse", "max_abs_error", "r2"}}}``
     #: (errors in the signal's unit)
     report: dict
-    #: ``time_s`` and ``<signal>_measured_<unit>``, ``<signal>_model_<unit>`` columns
+    #: ``time_s`` and ``<signal>_measured_<unit>``, ``<signal>_model_<unit>`` columns (pressures:
+    #: ``bar_gauge`` or ``bar_abs``, as measured)
     table: pd.DataFrame
     #: ``{signal: (measured, model, unit)}`` in display units
     curves: dict
@@ -142,13 +147,19 @@ def compare_pneumatic_file(path: str | Path, progress=None) -> PneumaticComparis
         column, si_per_model_unit, unit, display = SIGNALS[q]
         model = np.interp(t, t_model, frame[column].to_numpy() * si_per_model_unit)
         meas = measured.column(q)
+        level = unit                       # the unit of the values (errors: of differences)
         if q != "position":
             model = model - gauge          # the model's pressures are absolute
+            level = f"{unit}_{'gauge' if m.pressure == 'gauge' else 'abs'}"
         report["signals"][q] = {"unit": unit, **{
             k: (v * display if v is not None and k != "r2" else v)
             for k, v in compare_signals(meas, model).items()}}
-        table[f"{q}_measured_{unit}"] = meas * display
-        table[f"{q}_model_{unit}"] = model * display
-        curves[q] = (meas * display, model * display, unit)
+        table[f"{q}_measured_{level}"] = meas * display
+        table[f"{q}_model_{level}"] = model * display
+        curves[q] = (meas * display, model * display, level.replace("_", " "))
+    if "position" in wanted and case.controller.mode == "cycle":
+        report["stroke_times"] = {
+            "measured": stroke_times(t, measured.column("position"), case),
+            "model": stroke_times(t_model, frame["x_m"].to_numpy(), case)}
     return PneumaticComparison(report, pd.DataFrame(table), curves, t,
                                f"{case.title or name}: measured vs model")

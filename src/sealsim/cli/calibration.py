@@ -89,6 +89,11 @@ def compare(
         r2 = "-" if s["r2"] is None else f"{s['r2']:.4f}"
         console.print(f"{name}: RMSE {s['rmse']:.4g} {s['unit']}, max error "
                       f"{s['max_abs_error']:.4g} {s['unit']}, R² {r2}")
+    times = report.get("stroke_times")
+    for key in ("extend_time_s", "retract_time_s") if times else ():
+        shown = ["-" if t[key] is None else f"{t[key]:.4g} s"
+                 for t in (times["measured"], times["model"])]
+        console.print(f"{key.split('_')[0]} time: measured {shown[0]}, model {shown[1]}")
     console.print(f"results written to {out}")
 
 

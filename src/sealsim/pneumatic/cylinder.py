@@ -44,6 +44,7 @@ __all__ = [
     "load_force",
     "piston_areas",
     "piston_force",
+    "rest_position",
 ]
 
 #: Standard gravity [m/s²]
@@ -168,6 +169,50 @@ def end_stop_force(x, v, stroke, stiffness, damping, damping_depth=5e-5):
     f_cap = np.maximum(stiffness * d_cap - damping * v * d_cap / (d_cap + damping_depth), 0.0)
     f_head = np.maximum(stiffness * d_head + damping * v * d_head / (d_head + damping_depth), 0.0)
     return f_cap - f_head
+
+
+def rest_position(end, stroke, force, stop_stiffness, load_stiffness=0.0):
+    """Position [m] of a piston at rest against the end stop at ``end`` under a static force.
+
+    The stop's spring carries the net static force F (pressures, load, gravity; positive
+    extends) where it points into the stop: δ = F/(k + k_L) with the stop stiffness k and a
+    load spring k_L that relaxes as the piston goes in (:func:`end_stop_force` at rest,
+    F_stop = k·δ, balances F − k_L·δ).  The seals carry nothing (their friction states
+    relaxed).  A force pointing away from the stop leaves the piston at ``end``.  Started at
+    ``end`` with δ = 0 instead, the piston would be thrown into the stop at the first step
+    (at 6 bar on a Ø32 piston: 0.15 m/s within 1 ms, with a friction peak that is an artefact
+    of the start).
+
+    Parameters
+    ----------
+    end : float
+        The end position [m]: 0 (cap stop) or ``stroke`` (head stop).
+    stroke : float
+        L [m].
+    force : float
+        Net static force on the piston at ``end`` [N], positive extends.
+    stop_stiffness, load_stiffness : float
+        k, k_L [N/m].
+
+    Returns
+    -------
+    float
+        x [m]: below 0 in the cap stop, above L in the head stop.
+
+    Examples
+    --------
+    >>> a1, a2, ar = piston_areas(0.032, 0.012)
+    >>> f = float(piston_force(1.013e5, 7.013e5, 1.013e5, a1, a2, ar))   # rod side at 6 bar
+    >>> round(rest_position(0.0, 0.1, f - 20.0, 2e6) * 1e3, 4)          # and a 20 N load
+    -0.2173
+    >>> rest_position(0.0, 0.1, +50.0, 2e6)                              # pulled off the stop
+    0.0
+    """
+    into = -force if end < 0.5 * stroke else force
+    if into <= 0.0:
+        return float(end)
+    deflection = into / (stop_stiffness + load_stiffness)
+    return float(end - deflection if end < 0.5 * stroke else end + deflection)
 
 
 def load_force(x, v, force=0.0, stiffness=0.0, spring_free_position=0.0, mass=0.0,

@@ -42,7 +42,8 @@ mass flows, enthalpy, wall heat, the work of the load, the atmosphere on the rod
 stops and the friction -- are integrated as extra (bookkeeping) states of the same ODE.  At the
 end they are compared with the change of the stored mass (m1 + m2) and energy (U1 + U2 + ½Mv²):
 ``mass_balance_rel_error`` (relative to the mass throughput) and ``energy_balance_rel_error``
-(relative to the energy throughput).  Mass is linear in the states, so its balance holds to
+(relative to the energy throughput; each at least the initial mass and internal energy of the
+air, so that a run in which nothing flows is not judged by its round-off).  Mass is linear in the states, so its balance holds to
 round-off for any step sequence (a test of the bookkeeping); the energy balance also tests the
 consistency of the model -- the work p·dV the gas does is what drives the piston -- and the
 accuracy of the integration (the kinetic energy is not linear in v).  The bookkeeping states are

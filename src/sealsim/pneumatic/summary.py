@@ -32,11 +32,12 @@ DEFINITIONS = {
     "heat_balance_rel_error": "(seal heating) |friction heat - (heat stored in the seals, tube "
                               "and rod + heat into the chamber air + heat to the surroundings)| "
                               "/ friction heat",
-    "mass_balance_rel_error": "|change of the air mass - (supply - exhaust)| / mass "
-                              "throughput",
+    "mass_balance_rel_error": "|change of the air mass - (supply - exhaust)| / (mass "
+                              "throughput, at least the initial air mass)",
     "energy_balance_rel_error": "|change of (air internal energy + kinetic energy) - "
                                 "(enthalpy + wall heat + work of load, atmosphere and stops - "
-                                "friction work)| / energy throughput",
+                                "friction work)| / (energy throughput, at least the initial "
+                                "internal energy of the air)",
 }
 
 
@@ -123,6 +124,7 @@ def unfinished_strokes(time, position, case) -> list[str]:
                 missed.append(float(x.max() if target == "extend" else x.min()))
         if missed:
             furthest = max(missed) if target == "extend" else min(missed)
+            furthest = min(max(furthest, 0.0), stroke)     # in an end stop's bumper: its end
             out.append(f"{len(missed)} of {len(windows)} {target} commands did not reach the "
                        f"{end_name} end: the piston got no further than "
                        f"{furthest * 1e3:.3g} mm of the {stroke * 1e3:.4g} mm stroke (the load "

@@ -26,7 +26,7 @@ from sealsim.pneumatic.chambers import (
 )
 from sealsim.pneumatic.contact_maps import FEContactMap, glassy_reason, tabulated_map_tables
 from sealsim.pneumatic.controller import command_schedule
-from sealsim.pneumatic.cylinder import piston_areas
+from sealsim.pneumatic.cylinder import load_force, piston_areas, piston_force, rest_position
 from sealsim.pneumatic.seal_heating import (
     METALS,
     ambient_coefficient,
@@ -332,7 +332,7 @@ class PneumaticSystem:
         elif self.position is not None:
             x0 = float(self.position.value(0.0))
         else:
-            x0 = self.stroke if u0 > 0 else 0.0
+            x0 = self.rest_position(self.stroke if u0 > 0 else 0.0, p1, p2)
         v1 = case.cylinder.dead_volume_cap + self.a1 * x0
         v2 = case.cylinder.dead_volume_rod + self.a2 * (self.stroke - x0)
         m1 = float(gas_mass(p1, v1, self.t_amb))
@@ -347,6 +347,16 @@ class PneumaticSystem:
             y[t0:t0 + len(self.seals)] = [s.temperature for s in self.seals]
             y[t0 + len(self.seals)] = y[t0 + len(self.seals) + 1] = body_temperature(case)
         return y
+
+    def rest_position(self, end: float, p1: float, p2: float) -> float:
+        """Where the piston rests in the end stop at ``end`` with the chamber pressures
+        p1, p2 and the load at rest (:func:`~sealsim.pneumatic.cylinder.rest_position`)."""
+        case, load = self.case, self.case.load
+        force = (piston_force(p1, p2, self.p_amb, self.a1, self.a2, self.a_rod)
+                 - load_force(end, 0.0, load.force, load.stiffness, load.spring_free_position,
+                              self.mass, case.cylinder.incline, load.viscous))
+        return rest_position(end, self.stroke, float(force), case.cylinder.end_stops.stiffness,
+                             load.stiffness)
 
     def tolerances(self, rtol: float) -> np.ndarray:
         """Absolute tolerances per state: ``rtol`` times a scale of each quantity -- 0.1 m for

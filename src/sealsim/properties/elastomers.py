@@ -577,8 +577,10 @@ class Elastomer:
         lo, hi = self.allowed_range
         t = _array(temperature, f"temperature for {self.name}", "K", lo=lo, hi=hi)
         s_lo, s_hi = self.service_range
-        if warn and np.any((t < s_lo) | (t > s_hi)):
-            out = t[(t < s_lo) | (t > s_hi)]
+        # a limit given in other units ("212 degF") may convert a last bit outside it
+        outside = (t < s_lo * (1 - 1e-12)) | (t > s_hi * (1 + 1e-12))
+        if warn and np.any(outside):
+            out = t[outside]
             shown = f"{float(out.min()):.2f}" + (
                 f"–{float(out.max()):.2f}" if out.min() != out.max() else ""
             )

@@ -206,6 +206,8 @@ class LimitsSpec(CaseModel):
     squeeze_min: float | None = Field(None, ge=0.0, le=1.0, description="e.g. 0.08 (8 %)")
     squeeze_max: float | None = Field(None, ge=0.0, le=1.0)
     stretch_max: float | None = Field(None, ge=0.0, le=1.0)
+    stretch_min: float | None = Field(None, ge=-1.0, le=1.0, description=(
+        "piston glands, at assembly: e.g. 0.01 (1 %); below 0 allows a floating ring"))
     gland_fill_max: float | None = Field(None, ge=0.0, le=1.2)
     extrusion_gap_max: Q("length", ge=0.0, le=0.01) | None = Field(None, description=(
         "largest diametral extrusion gap, e.g. '0.1 mm'"))

@@ -45,14 +45,16 @@ import numpy as np
 
 from sealsim.errors import InputError
 
-__all__ = ["DESIGN_LIMITS", "GlandGeometry", "GlandReport", "QUANTITIES", "check_gland",
-           "corner_values", "design_checks", "extrusion_gap_limit", "gland_fill", "gland_state",
-           "installed_cord", "squeeze", "stretch", "worst_case"]
+__all__ = ["DESIGN_LIMITS", "GlandGeometry", "GlandReport", "PISTON_STRETCH_MIN", "QUANTITIES",
+           "check_gland", "corner_values", "design_checks", "extrusion_gap_limit", "gland_fill",
+           "gland_state", "installed_cord", "squeeze", "stretch", "worst_case"]
 
 PSI = 6894.757293168361
 """Pascal per psi (NIST SP 811, B.8)."""
 INCH = 0.0254
 """Metre per inch (exact)."""
+ROUNDING = 1e-12
+"""Relative rounding of a unit conversion, below which a value equals its limit."""
 
 #: Quantities of the stack: report name -> key of :func:`gland_state`.
 QUANTITIES = {"squeeze_percent": "squeeze", "stretch_percent": "stretch",
@@ -150,10 +152,13 @@ def extrusion_gap_limit(pressure, hardness_shore_a):
     0.1524
     >>> round(float(extrusion_gap_limit(100e5, 80.0)) * 1e3, 4)   # between 0.006 and 0.020
     0.3302
+    >>> from sealsim.units import parse_quantity
+    >>> round(float(extrusion_gap_limit(parse_quantity("1500 psi", "pressure"), 70.0)) / INCH, 4)
+    0.006
     """
     p = np.asarray(pressure, dtype=float)
     steps = np.asarray(EXTRUSION_TABLE["pressure"])
-    k = np.searchsorted(steps, p, side="left")
+    k = np.searchsorted(steps * (1 + ROUNDING), p, side="left")   # "1500 psi" is in its row
     inside = k < steps.size
     kk = np.minimum(k, steps.size - 1)
     soft, hard = (np.asarray(EXTRUSION_TABLE[h])[kk] for h in (70.0, 90.0))
@@ -390,6 +395,17 @@ DESIGN_LIMITS = {
                     "'a maximum material condition gland fill of 90%'"),
     ),
 }
+#: A piston gland's ring must be stretched onto its groove when it is installed: a ring whose
+#: inside diameter is larger than the groove bottom is not held by it (it twists and can be
+#: pinched when the piston enters the bore; far larger, it does not fit the bore at all).
+#: Checked on the worst-case stack at the assembly temperature, unswollen (a ring warmed in
+#: service may loosen: rubber expands about ten times more than steel).
+PISTON_STRETCH_MIN = DesignLimit(
+    "stretch_min", "installed_stretch", "min", 0.0,
+    "Apple Rubber, Seal Design Guide, 'Dimensional considerations' (applerubber.com): 'the "
+    "O-ring's inside diameter (I.D.) must be smaller than the piston groove diameter, so that "
+    "the O-ring is slightly stretched' (1-5 %, 2 % ideal; floating seals, which may leak, are "
+    "the exception: set limits.stretch_min below 0)")
 #: Cross-sections below which the small-section squeeze limit of dynamic seals applies [m]
 #: (AS568 -0xx series, 1.78 mm: the 'small cross-sectional diameters' of the Kutz quote).
 SMALL_CORD = 2.0e-3
@@ -398,14 +414,16 @@ SMALL_CORD_DYNAMIC_SQUEEZE_MAX = 0.25
 
 def design_checks(stack: dict[str, dict[str, float]], *, motion: str, cord: float,
                   pressure: float, hardness_shore_a: float, silicone: bool = False,
-                  overrides: dict[str, float] | None = None) -> list[dict[str, Any]]:
+                  overrides: dict[str, float] | None = None,
+                  housing: str | None = None) -> list[dict[str, Any]]:
     """The list of checks ``{"name", "value", "limit", "ok", "source", "maker"}``.
 
     Parameters
     ----------
     stack : dict
         ``{quantity: {"min": .., "max": ..}}`` over all temperatures (squeeze, stretch, fill
-        [-], gap [m]).
+        [-], gap [m]); for a piston gland also ``installed_stretch`` (the stretch at the
+        assembly temperature, unswollen, :data:`PISTON_STRETCH_MIN`).
     motion : {"static", "reciprocating"}
     cord : float
         Nominal cross-section [m].
@@ -417,6 +435,8 @@ def design_checks(stack: dict[str, dict[str, float]], *, motion: str, cord: floa
         A silicone (VMQ) ring: extrusion clearances halved.
     overrides : dict, optional
         The case's own limits (``squeeze_min`` ..., ``extrusion_gap_max`` [m]).
+    housing : {"piston", "rod", "face"}, optional
+        A piston gland adds the check ``stretch_min``.
 
     Values and limits are percent for squeeze, stretch and fill, mm for the gap.
     """
@@ -427,6 +447,8 @@ def design_checks(stack: dict[str, dict[str, float]], *, motion: str, cord: floa
                                 SMALL_CORD_DYNAMIC_SQUEEZE_MAX, _KUTZ)
     gap_limit = float(extrusion_gap_limit(pressure, hardness_shore_a)) * (0.5 if silicone
                                                                           else 1.0)
+    if housing == "piston":
+        limits.insert(3, PISTON_STRETCH_MIN)             # after stretch_max
     limits.append(DesignLimit("extrusion_gap", "gap", "max", gap_limit, EXTRUSION_SOURCE))
     checks = []
     for lim in limits:
@@ -594,15 +616,18 @@ def check_gland(case) -> GlandReport:
         notes.append(f"hardness {hardness:g} Shore A is outside the extrusion table (70-90 "
                      "Shore A): the nearest row is used")
     checks = design_checks(
-        overall, motion=case.housing.motion, cord=ring.cord_diameter,
-        pressure=service.pressure, hardness_shore_a=hardness,
+        {**overall, "installed_stretch": nominal["stretch"]}, motion=case.housing.motion,
+        cord=ring.cord_diameter, pressure=service.pressure, hardness_shore_a=hardness,
         silicone=elastomer.name.upper() in ("VMQ", "FVMQ"),
-        overrides=case.limits.model_dump(mode="python"))
-    if service.pressure > 1500 * PSI:
-        notes.append("pressure above 103.5 bar (1500 psi): Parker (ORD 5700, Section IV) "
+        overrides=case.limits.model_dump(mode="python"), housing=case.housing.type)
+    # the limits themselves are allowed: "1500 psi" or "212 degF" may come out of the unit
+    # conversion a last bit above 1500 * PSI or 373.15 K
+    if service.pressure > 1500 * PSI * (1 + ROUNDING):
+        notes.append("pressure above 103.4 bar (1500 psi): Parker (ORD 5700, Section IV) "
                      "advises investigating back-up rings")
     lo_t, hi_t = elastomer.service_range
-    if min(service.temperature) < lo_t or max(service.temperature) > hi_t:
+    if (min(service.temperature) < lo_t * (1 - ROUNDING)
+            or max(service.temperature) > hi_t * (1 + ROUNDING)):
         notes.append(f"service temperatures outside the {elastomer.name} catalogue's service "
                      f"range {lo_t - 273.15:.0f} ... {hi_t - 273.15:.0f} degC")
     tg = elastomer.glass_transition
