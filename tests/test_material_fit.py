@@ -326,6 +326,23 @@ def test_pyvisco_dma_fit_report(pyvisco_fit):
     assert "wlf_c1" in r["parameters"] and "prony_E_inf" in r["parameters"]
 
 
+def test_pyvisco_dma_master_curve_is_at_its_reference_temperature(pyvisco_fit):
+    # The measured shifts are referred to their own value at T_r = 100 degC (an isotherm at
+    # 99.99 degC): the master curve at T_r holds that isotherm unshifted and the WLF law, 0 at
+    # T_r by definition, meets it.  They were pinned near the coldest isotherm instead, 0.82
+    # decades off at T_r, so the compound (Prony series + WLF) missed its own data by 27 % RMS
+    # in E' (35 % at 100 degC) while the report gave the 6.9 % of the series on the master
+    # curve.
+    shift = pyvisco_fit.shift
+    assert abs(np.interp(shift.reference_temperature, shift.temperatures,
+                         shift.log_shift)) < 0.01
+    dma = pyvisco_fit.report["modes"]["dma"]
+    # the compound on every measured point: 10.6 %, against 6.9 % of the series on the master
+    # curve; WLF misses the shifts below T_g by up to 3 decades, where E' is nearly flat
+    assert dma["rel_rmse"] <= dma["rel_rmse_law"] < 0.12
+    assert dma["rel_rmse_loss_law"] > dma["rel_rmse_loss"]   # E'' does not superpose
+
+
 def _written_compound(fit, tmp_path):
     path = tmp_path / "compound.toml"
     path.write_text(fit.compound_text)
@@ -336,14 +353,15 @@ def _written_compound(fit, tmp_path):
 
 def test_written_compounds_constants_and_curve_agree(treloar, pyvisco_fit, tmp_path):
     # A held seal's stiffness is the constants times E_h(T)/E(T_ref, f_test) of the curve.
-    # DMA only: the constants are the fitted curve at (T_ref, f_test), 408 MPa for pyvisco's
-    # polymer at 100 degC (they were E_inf = 212 MPa, counting the relaxation twice).
+    # DMA only: the constants are the fitted curve at (T_ref, f_test), 327 MPa for pyvisco's
+    # polymer at 100 degC and 1 Hz (measured 296 MPa; they were E_inf = 212 MPa, counting the
+    # relaxation twice, and 408 MPa while the master curve was not at T_r).
     # Tensile curves on a catalogue base: the base's curve moved with T_g gets the rubbery
     # plateau that passes through the constants' modulus (the plateau ratio alone left the
     # Treloar compound's curve 33 % off).  Both to the root finder's precision.
     dma_only = _written_compound(pyvisco_fit, tmp_path)
     assert abs(dma_only.constants_modulus_mismatch()) < 1e-6
-    assert 6 * (dma_only.c10 + dma_only.c01) == pytest.approx(408e6, rel=0.01)
+    assert 6 * (dma_only.c10 + dma_only.c01) == pytest.approx(327e6, rel=0.01)
     tensile = _written_compound(treloar, tmp_path)
     assert abs(tensile.constants_modulus_mismatch()) < 1e-6
     assert tensile.glassy_modulus == pytest.approx(2e9)       # the base's glass, unchanged

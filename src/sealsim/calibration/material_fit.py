@@ -67,6 +67,7 @@ from sealsim.calibration.viscoelastic_fit import (
     fit_prony,
     fit_shift_law,
     isotherm_shifts,
+    law_rel_rmse,
     master_curve,
     tan_delta_peak,
     tan_delta_peak_temperature,
@@ -692,9 +693,11 @@ def _report(r: MaterialFitResult, sources: dict) -> dict:
             params[f"prony_E_{k + 1}"] = {"value": float(e),
                                           "stderr": _finite(r.prony.standard_errors[k + 1]),
                                           "unit": "Pa", "tau_s": float(tau)}
+        law = law_rel_rmse(r.dma, r.shift, r.prony)
         modes["dma"] = {"rel_rmse": r.prony.rel_rmse["storage"],
                         "rel_rmse_loss": r.prony.rel_rmse["loss"],
                         "r2": r.prony.r2["storage"], "r2_loss": r.prony.r2["loss"],
+                        "rel_rmse_law": law["storage"], "rel_rmse_loss_law": law["loss"],
                         "role": "fit"}
         out["viscoelastic"] = {
             "reference_temperature_K": r.shift.reference_temperature,
