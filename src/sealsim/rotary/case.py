@@ -576,7 +576,10 @@ class RotaryCase(CaseModel):
         oil = self.oil.build()
         env = self.environment
         start = start_temperature(env)
-        for name, value in (("environment.start_temperature", start),
+        start_name = ("environment.start_temperature" if env.start_temperature is not None
+                      else "environment.sump_temperature" if env.sump_temperature is not None
+                      else "environment.ambient_temperature (the start temperature)")
+        for name, value in ((start_name, start),
                             ("environment.sump_temperature", env.sump_temperature),
                             ("environment.housing_temperature", env.housing_temperature)):
             if value is not None and oil.min_temperature is not None and \
