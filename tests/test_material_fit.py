@@ -434,6 +434,21 @@ def test_fitted_compound_gives_the_fe_force_of_the_same_constants_by_hand(tmp_pa
     assert forces[0] == pytest.approx(forces[1], rel=1e-9, abs=0.0)
 
 
+def test_a_curve_that_fits_no_rubber_is_an_input_error_naming_the_wrong_point(tmp_path):
+    # a negative stress in tension (a sign slip in one row) gave Mooney-Rivlin a negative
+    # initial shear modulus and the compound writer a traceback ('math domain error')
+    (tmp_path / "u.csv").write_text("stretch,stress\n1.0,0\n1.5,-0.5\n2.0,0.8\n2.5,1.2\n")
+    (tmp_path / "fit.toml").write_text(
+        '[compound]\nname = "my_nbr"\nbase = "NBR"\nreference_temperature = "23 degC"\n'
+        '[hyperelastic]\nmodel = "mooney_rivlin"\n[[hyperelastic.curves]]\nname = "u"\n'
+        'mode = "uniaxial"\nfile = "u.csv"\ndelimiter = ","\nheader = true\n'
+        'columns = { stretch = { column = "stretch", unit = "1" }, '
+        'stress = { column = "stress", unit = "MPa" } }\n')
+    with pytest.raises(InputError, match=r"initial shear modulus of -[\d.]+ MPa \(<= 0\).*"
+                                         r"curve 'u' at stretch 1.5: -0.5 MPa"):
+        fit_material_file(tmp_path / "fit.toml")
+
+
 def test_ogden_compound_runs_in_the_fe(treloar, tmp_path):
     # FElupe's Ogden energy in the seal FE; at 10 % squeeze the force is that of a
     # neo-Hookean ring of the same initial shear modulus within 15 % (Ogden-3 of Treloar is

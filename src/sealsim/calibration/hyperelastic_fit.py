@@ -100,6 +100,12 @@ class Curve:
         """Points that carry information (not the unloaded state λ = 1, P = 0)."""
         return (np.abs(self.stretch - 1.0) > 1e-9) & (self.stress != 0.0)
 
+    @property
+    def wrong_sign(self) -> np.ndarray:
+        """Points whose stress pulls against the deformation: negative in tension (λ > 1) or
+        positive in compression (λ < 1)."""
+        return (self.stretch - 1.0) * self.stress < 0.0
+
 
 @dataclass
 class HyperelasticFit:

@@ -340,6 +340,16 @@ def fit_material(case: MaterialFitCase, base_dir: str | Path = ".", origin: str 
         kwargs = {"relative": spec.residuals == "relative",
                   "stretch_range": spec.stability_range}
         hyper = fit_hyperelastic(curves, spec.model, spec.terms, spec.fit_modes, **kwargs)
+        if not hyper.initial_shear_modulus > 0:
+            wrong = [f"curve {c.name!r} at stretch {c.stretch[k]:.4g}: "
+                     f"{c.stress[k] / 1e6:.4g} MPa" for c in curves
+                     for k in np.flatnonzero(c.wrong_sign)[:3]]
+            raise InputError(
+                f"hyperelastic: the fitted {hyper.label} has an initial shear modulus of "
+                f"{hyper.initial_shear_modulus / 1e6:.4g} MPa (<= 0): no rubber; the nominal "
+                "stress must rise with the stretch (> 0 in tension, < 0 in compression)"
+                + (f"; stresses of the wrong sign: {'; '.join(wrong)} (check the sign and "
+                   "the columns)" if wrong else ""))
         for cmp in spec.compare:
             fit = fit_hyperelastic(curves, cmp.model, cmp.terms, cmp.fit_modes, **kwargs)
             modes = cmp.fit_modes or fit.fit_modes
