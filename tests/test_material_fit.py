@@ -122,6 +122,9 @@ def test_a_second_ogden_term_from_uniaxial_data_alone_is_reported_unidentifiable
 
 
 def test_bad_curves_are_refused():
+    with pytest.raises(InputError, match=r"stretch 101 is beyond 20.*unit '%'"):
+        Curve("u", "uniaxial", np.array([1.0, 11.0, 51.0, 101.0]),   # strains in % as '1'
+              np.array([0.0, 0.5e6, 1.5e6, 2.2e6]))
     with pytest.raises(InputError, match="tension test"):
         Curve("x", "equibiaxial", np.array([0.9, 1.1]), np.array([-1.0, 1.0]))
     with pytest.raises(InputError, match="mode"):
@@ -446,6 +449,23 @@ def test_a_curve_that_fits_no_rubber_is_an_input_error_naming_the_wrong_point(tm
         'stress = { column = "stress", unit = "MPa" } }\n')
     with pytest.raises(InputError, match=r"initial shear modulus of -[\d.]+ MPa \(<= 0\).*"
                                          r"curve 'u' at stretch 1.5: -0.5 MPa"):
+        fit_material_file(tmp_path / "fit.toml")
+
+
+def test_a_curve_too_soft_for_the_base_rubber_names_the_stress_unit(tmp_path):
+    # stresses of a rubber written in kPa instead of MPa: E = 6 kPa, below any plateau the
+    # base's master curve can be moved to; was a traceback of brentq ('f(a) and f(b) must
+    # have different signs')
+    (tmp_path / "u.csv").write_text("strain,stress\n0,0\n10,0.5\n50,1.5\n100,2.2\n")
+    (tmp_path / "fit.toml").write_text(
+        '[compound]\nname = "my_nbr"\nbase = "NBR"\nreference_temperature = "23 degC"\n'
+        '[hyperelastic]\nmodel = "mooney_rivlin"\n[[hyperelastic.curves]]\nname = "u"\n'
+        'mode = "uniaxial"\nfile = "u.csv"\ndelimiter = ","\nheader = true\n'
+        'columns = { strain = { column = "strain", unit = "%" }, '
+        'stress = { column = "stress", unit = "kPa" } }\n')
+    with pytest.raises(InputError, match=r"Young's modulus 0.0057\d* MPa at 23 degC is beyond "
+                                         r"what the master curve of compound.base NBR .*"
+                                         r"stress unit"):
         fit_material_file(tmp_path / "fit.toml")
 
 

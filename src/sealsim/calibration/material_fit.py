@@ -567,9 +567,16 @@ def _compound(case, hyper, shift, prony, tg_dma, expansion, notes, origin):
             return math.log(_curve_modulus_at_reference(table, c.name) / e_small)
 
         guess = math.log10(base.rubbery_modulus * e_small / (6.0 * (base.c10 + base.c01)))
-        rubbery = 10.0 ** brentq(miss, max(guess - 2.0, 4.5),       # 32 kPa
-                                 min(guess + 2.0, math.log10(0.5 * base.glassy_modulus)),
-                                 xtol=1e-10)
+        lo = max(guess - 2.0, 4.5)                                   # 32 kPa
+        hi = min(guess + 2.0, math.log10(0.5 * base.glassy_modulus))
+        if not (lo < hi and miss(lo) * miss(hi) < 0):
+            raise InputError(
+                f"the fitted constants' Young's modulus {e_small / 1e6:.4g} MPa at "
+                f"{c.reference_temperature - ZERO_CELSIUS_K:g} degC is beyond what "
+                f"the master curve of compound.base {base.name} reaches with a rubbery plateau "
+                f"of {10 ** lo / 1e6:.3g} ... {10 ** hi / 1e6:.4g} MPa: check the curves' "
+                "stress unit (a seal rubber has a few MPa)")
+        rubbery = 10.0 ** brentq(miss, lo, hi, xtol=1e-10)
         table["modulus"]["rubbery"] = _q(rubbery, "MPa")
         sources["modulus"] = (f"catalogue {base.name}'s master curve moved with T_g, its rubbery "
                               f"modulus ({rubbery / 1e6:.4g} MPa) chosen so that the curve gives "
