@@ -85,7 +85,7 @@ def test_lip_seal_torque_options_reach_the_case():
     ({"speed": [1000, 2000]}, ["speed", "without a unit"]),
     ({"speed": "25 Hz"}, ["Hz is ambiguous"]),
     ({"speed": "-10 rpm"}, ["speed", ">= 0"]),
-    ({"speed": "1500 m"}, ["speed", "angular_speed"]),
+    ({"speed": "1500 m"}, ["speed", "angular speed"]),
     ({"oil": "ISO VG 230"}, ["unknown oil", "close matches", "VG320"]),
     ({"material": "NRB"}, ["unknown elastomer", "NBR"]),
     ({"shaft_diameter": "2 mm"}, ["seal.shaft_diameter", "out of range"]),
@@ -220,7 +220,7 @@ def test_to_si_arrays_and_quantities():
     assert to_si(np.array([[1.0], [2.0]]), "length").shape == (2, 1)
     assert to_si("20 degC", "temperature") == pytest.approx(293.15, abs=1e-12)
     for bad, match in ((q(np.array([1.0]), "Hz"), "Hz is ambiguous"),
-                       (q(np.array([1.0]), "m"), "expected a angular_speed"),
+                       (q(np.array([1.0]), "m"), "expected an angular speed"),
                        ([float("nan")], "not finite"), (True, "not a quantity")):
         with pytest.raises(InputError, match=match):
             to_si(bad, "angular_speed", plain_is_si=True)

@@ -400,6 +400,12 @@ csv = "duty.csv"
     (b"\x7fELF\x02\x01\x00\x00\xff\xfe", "is not a UTF-8 text file"),
     ("time_s,speed_rpm\n0,100\n2000000,100\n", "raise duty.max_duration"),
     (None, "is a folder"),
+    # the line and column of a bad cell (the message gave neither, or Python's float() text)
+    ("time_s,speed_rpm\n0,100\n60,abc\n", "line 3, column speed_rpm: 'abc' is not a finite"),
+    ("time_s,speed_rpm\n0,100\n60\n", "line 3, column speed_rpm: the value is missing"),
+    ("time_s,speed_rpm\n0,100\nnan,1\n", "line 3, column time_s: 'nan' is not a finite"),
+    ("time_s,speed_rpm\n0,1\n60,2\n30,3\n", "must not decrease (line 4: 30 after 60)"),
+    ("time_s;speed_rpm\n0;1\n", "separated by ';': the file must be comma-separated"),
 ])
 def test_bad_duty_csv_is_one_message_and_writes_nothing(content, message, tmp_path):
     (tmp_path / "case.toml").write_text(ROTARY_CSV_CASE)

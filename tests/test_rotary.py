@@ -767,6 +767,21 @@ def test_steady_state_beyond_the_rubber_range_is_refused_in_degrees_celsius():
         steady_state(case, 5000 * RPM)
 
 
+@pytest.mark.parametrize(("environment", "field"), [
+    ({"sump_temperature": "-20 degC"}, "environment.sump_temperature -20.0 degC"),
+    ({"ambient_temperature": "-30 degC"}, "environment.ambient_temperature (the start"),
+    ({"start_temperature": "-30 degC"}, "environment.start_temperature -30.0 degC"),
+])
+def test_a_temperature_below_the_oils_range_names_the_field_it_was_given_in(environment,
+                                                                            field):
+    # VG 220 mineral is usable down to -15 degC.  The start temperature defaults to the held
+    # sump temperature, else the ambient: the message named start_temperature even when the
+    # case gave only one of those.
+    with pytest.raises(InputError) as info:
+        _case(oil={"name": "VG220-mineral"}, environment=environment)
+    assert field in str(info.value) and "(-15.0 degC)" in str(info.value)
+
+
 def test_cold_start_warms_the_contact_without_overshoot():
     # 80 mm NBR lip, VG 68, everything at -20 °C, 1500 rpm: the cold oil's 900 W fall as the
     # contact warms.  Taken at the start of each 0.25 s step the friction overshot (-20 → +70 →

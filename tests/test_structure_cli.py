@@ -112,6 +112,29 @@ def test_states_plot_of_a_cooling_run_is_over_temperature():
     plt.close(fig)
 
 
+def test_map_plots_label_temperatures_given_in_degf_without_conversion_noise():
+    import numpy as np
+    import xarray as xr
+
+    from sealsim.plotting.structure import plot_map, plot_map_profiles
+    from sealsim.units import parse_quantity
+
+    # "32 degF" parses to 273.15 K + 6e-14 K: the legend said "5.684e-14 °C"
+    temps = [parse_quantity(t, "temperature") for t in ("32 degF", "104 degF", "100 degF")]
+    shape = (1, 3, 2)
+    ds = xr.Dataset({"F_N": (("squeeze", "temperature", "pressure"), np.ones(shape)),
+                     "b": (("squeeze", "temperature", "pressure"), np.ones(shape)),
+                     "contact_pressure": (("squeeze", "temperature", "pressure", "position"),
+                                          np.ones(shape + (4,)))},
+                    coords={"squeeze": [0.15], "temperature": temps, "pressure": [0.0, 1e5],
+                            "position": np.linspace(-1e-3, 1e-3, 4)})
+    labels = [t.get_text() for t in plot_map(ds).axes[0].get_legend().get_texts()]
+    assert labels == ["0 °C", "40 °C", "37.78 °C"]
+    profiles = plot_map_profiles(ds)
+    assert profiles.axes[0].get_title() == "at 0 °C"
+    assert [line.get_label() for line in profiles.axes[1].lines] == labels
+
+
 @pytest.mark.parametrize("overrides, message", [
     ({"load": {"squeeze": [1.0]}}, "load.squeeze"),
     ({"seal": {"cord_diameter": "-4 mm"}}, "seal.cord_diameter"),

@@ -50,6 +50,13 @@ def test_plain_number_is_fine_for_dimensionless():
         ("80 kg", "length", ["'80 kg'", "length", "80 mm"]),  # names value, dimension, example
         ("6 m", "pressure", ["'6 m'", "pressure"]),
         ("55 degC", "length", ["length"]),
+        # the dimension as words, with its article (was "expected a angular_speed")
+        ("3 m", "angular_speed", ["expected an angular speed", "1500 rpm"]),
+        ("1 m", "inverse_pressure", ["expected an inverse pressure"]),
+        # C and F are pint's coulomb and farad: the message says to write degC / degF
+        ("23 C", "temperature", ["'23 C'", "temperature", "coulomb", "degC"]),
+        ("73 F", "temperature", ["farad", "degF"]),
+        ("5 C", "temperature_difference", ["temperature difference", "degC"]),
     ],
 )
 def test_wrong_dimension_is_an_input_error(text, dimension, expected_words):

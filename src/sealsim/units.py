@@ -77,6 +77,12 @@ class Dimension:
         return unit_registry().Quantity(1.0, self.si_unit).dimensionality
 
     @property
+    def phrase(self) -> str:
+        """The name with its article, as messages write it ("an angular speed")."""
+        words = self.name.replace("_", " ")
+        return ("an " if words[0] in "aeiou" else "a ") + words
+
+    @property
     def output_unit(self) -> str:
         return self.display_unit or self.si_unit
 
@@ -161,27 +167,27 @@ def parse_quantity(value, dimension: str, field: str | None = None) -> float:
         try:
             value = f"{float(value.magnitude)!r} {value.units:~}"
         except OverflowError:
-            raise InputError(prefix + f"number too large; expected a {dim.name} such as "
+            raise InputError(prefix + f"number too large; expected {dim.phrase} such as "
                                       f"{dim.example!r}") from None
     if isinstance(value, bool):
-        raise InputError(prefix + f"{value!r} is not a quantity; expected a {dim.name} "
+        raise InputError(prefix + f"{value!r} is not a quantity; expected {dim.phrase} "
                          f"such as {dim.example!r}")
     if isinstance(value, (int, float)):
         if dimension != "dimensionless":
-            raise InputError(prefix + f"{value!r} has no unit; write it with a {dim.name} unit, "
+            raise InputError(prefix + f"{value!r} has no unit; write it with {dim.phrase} unit, "
                              f"e.g. {dim.example!r}")
         try:
             magnitude = float(value)
         except OverflowError:
-            raise InputError(prefix + f"number too large; expected a {dim.name} such as "
+            raise InputError(prefix + f"number too large; expected {dim.phrase} such as "
                                       f"{dim.example!r}") from None
     elif isinstance(value, str):
         magnitude = _parse_string(value, dim, field)
     else:
-        raise InputError(prefix + f"{value!r} is not a quantity; expected a {dim.name} "
+        raise InputError(prefix + f"{value!r} is not a quantity; expected {dim.phrase} "
                          f"such as {dim.example!r}")
     if not math.isfinite(magnitude):
-        raise InputError(prefix + f"{value!r} is not a finite number; expected a {dim.name} "
+        raise InputError(prefix + f"{value!r} is not a finite number; expected {dim.phrase} "
                          f"such as {dim.example!r}")
     return magnitude
 
@@ -204,7 +210,7 @@ def _string_to_si(text: str, dim: Dimension) -> float:
     ureg = unit_registry()
     match = _NUMBER.match(text)
     if not match:
-        raise InputError(f"{text!r} is not 'number unit'; expected a {dim.name} "
+        raise InputError(f"{text!r} is not 'number unit'; expected {dim.phrase} "
                          f"such as {dim.example!r}")
     number, unit = match.group(1), match.group(2).strip()
     if _RUNAWAY_POWER.search(unit):  # pint would evaluate e.g. 10**10**8 for minutes
@@ -217,15 +223,17 @@ def _string_to_si(text: str, dim: Dimension) -> float:
                     else ureg.Quantity(float(number), unit or "dimensionless"))
     except (pint.errors.UndefinedUnitError, pint.errors.DefinitionSyntaxError,
             AttributeError, TypeError, ValueError, AssertionError) as exc:
-        raise InputError(f"unknown unit {unit!r} in {text!r}; expected a {dim.name} "
+        raise InputError(f"unknown unit {unit!r} in {text!r}; expected {dim.phrase} "
                          f"such as {dim.example!r}") from exc
     except Exception as exc:  # pint's parser raises a variety of types on garbage input
-        raise InputError(f"cannot read {text!r} as a quantity; expected a {dim.name} "
+        raise InputError(f"cannot read {text!r} as a quantity; expected {dim.phrase} "
                          f"such as {dim.example!r}") from exc
     if quantity.dimensionality != dim.dimensionality:
         got = f"dimension {quantity.dimensionality}" if unit else "no unit"
-        raise InputError(f"{text!r} has {got}, expected a {dim.name} "
-                         f"(e.g. {dim.example!r})")
+        hint = (f"; {unit} is the {ureg.Unit(unit)}: write deg{unit} for degrees"
+                if dim.name.startswith("temperature") and unit in ("C", "F") else "")
+        raise InputError(f"{text!r} has {got}, expected {dim.phrase} "
+                         f"(e.g. {dim.example!r}){hint}")
     try:
         return float(quantity.to(dim.si_unit).magnitude)
     except pint.errors.PintError as exc:  # pragma: no cover - guarded by the check above
@@ -349,7 +357,7 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
             value = revolutions_per_time(value)   # 1/min given for a speed: rpm
         if value.dimensionality != dim.dimensionality:
             raise InputError(prefix + f"unit {value.units:~} has dimension "
-                             f"{value.dimensionality}, expected a {dim.name} (e.g. "
+                             f"{value.dimensionality}, expected {dim.phrase} (e.g. "
                              f"{dim.example!r})")
         si = np.asarray(value.to(dim.si_unit).magnitude, dtype=float)
     elif isinstance(value, list | tuple | np.ndarray):
@@ -377,11 +385,11 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
         try:
             si = np.asarray(float(value))
         except OverflowError:
-            raise InputError(prefix + f"{_shown(value)} is too large; expected a {dim.name} "
+            raise InputError(prefix + f"{_shown(value)} is too large; expected {dim.phrase} "
                              f"such as {dim.example!r}") from None
     else:
         return parse_quantity(value, dimension, field)
     if not np.all(np.isfinite(si)):
-        raise InputError(prefix + f"{value!r} is not finite; expected a {dim.name} such as "
+        raise InputError(prefix + f"{value!r} is not finite; expected {dim.phrase} such as "
                          f"{dim.example!r}")
     return float(si) if si.ndim == 0 else si

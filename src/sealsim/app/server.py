@@ -30,6 +30,10 @@ EXAMPLES = Path(__file__).resolve().parents[3] / "examples" / "gland"
 
 #: Longest text of one form field [characters].
 MAX_FIELD = 200
+#: duty.steady_rate of the rotary case the lip-seal page offers: a run ends within about
+#: 0.2 K of the page's steady state (a free sump's remaining rise is the rate times its time
+#: constant of about an hour)
+APP_STEADY_RATE = "0.005 K/min"
 
 
 class AppConfig:
@@ -313,7 +317,7 @@ def rotary_case_toml(args: dict[str, Any]) -> str:
             "oil": {"name": args["oil"]},
             "environment": environment,
             "duty": {"steps": [{"speed": args["speed"], "duration": "10 min"}],
-                     "until_steady": True}}
+                     "until_steady": True, "steady_rate": APP_STEADY_RATE}}
     validate_case(RotaryCase, data, "rotary case")  # the file the page offers must run
     header = ("# Written by sealsim app: the lip-seal calculation as a rotary case.\n"
               "#   sealsim rotary run lip_seal.toml --out results/lip_seal\n"

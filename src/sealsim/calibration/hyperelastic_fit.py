@@ -62,6 +62,11 @@ OGDEN_STARTS = {
 }
 
 
+#: Largest stretch a curve may hold [-]: rubbers break below about 10 (Treloar's natural
+#: rubber at 7.6); a strain in percent read as a plain number gives 1 + 100 and more.
+MAX_STRETCH = 20.0
+
+
 @dataclass(frozen=True)
 class Curve:
     """One measured curve: nominal stress [Pa] vs stretch [-] of a test deformation.
@@ -86,6 +91,10 @@ class Curve:
         if np.any(lam <= 0) or not np.all(np.isfinite(lam)) or not np.all(np.isfinite(p)):
             raise InputError(f"curve {self.name!r}: stretches must be finite and > 0 and "
                              "stresses finite")
+        if np.any(lam > MAX_STRETCH):
+            raise InputError(f"curve {self.name!r}: stretch {float(lam.max()):.4g} is beyond "
+                             f"{MAX_STRETCH:g}, where every rubber has broken: a strain in "
+                             "percent needs its column's unit '%'")
         if self.mode != "uniaxial" and np.any(lam < 1.0):
             raise InputError(f"curve {self.name!r}: a {self.mode} test is a tension test "
                              "(stretch >= 1); compression belongs to 'uniaxial'")
@@ -99,6 +108,12 @@ class Curve:
     def informative(self) -> np.ndarray:
         """Points that carry information (not the unloaded state λ = 1, P = 0)."""
         return (np.abs(self.stretch - 1.0) > 1e-9) & (self.stress != 0.0)
+
+    @property
+    def wrong_sign(self) -> np.ndarray:
+        """Points whose stress pulls against the deformation: negative in tension (λ > 1) or
+        positive in compression (λ < 1)."""
+        return (self.stretch - 1.0) * self.stress < 0.0
 
 
 @dataclass

@@ -67,6 +67,7 @@ from sealsim.calibration.viscoelastic_fit import (
     fit_prony,
     fit_shift_law,
     isotherm_shifts,
+    law_rel_rmse,
     master_curve,
     tan_delta_peak,
     tan_delta_peak_temperature,
@@ -339,6 +340,16 @@ def fit_material(case: MaterialFitCase, base_dir: str | Path = ".", origin: str 
         kwargs = {"relative": spec.residuals == "relative",
                   "stretch_range": spec.stability_range}
         hyper = fit_hyperelastic(curves, spec.model, spec.terms, spec.fit_modes, **kwargs)
+        if not hyper.initial_shear_modulus > 0:
+            wrong = [f"curve {c.name!r} at stretch {c.stretch[k]:.4g}: "
+                     f"{c.stress[k] / 1e6:.4g} MPa" for c in curves
+                     for k in np.flatnonzero(c.wrong_sign)[:3]]
+            raise InputError(
+                f"hyperelastic: the fitted {hyper.label} has an initial shear modulus of "
+                f"{hyper.initial_shear_modulus / 1e6:.4g} MPa (<= 0): no rubber; the nominal "
+                "stress must rise with the stretch (> 0 in tension, < 0 in compression)"
+                + (f"; stresses of the wrong sign: {'; '.join(wrong)} (check the sign and "
+                   "the columns)" if wrong else ""))
         for cmp in spec.compare:
             fit = fit_hyperelastic(curves, cmp.model, cmp.terms, cmp.fit_modes, **kwargs)
             modes = cmp.fit_modes or fit.fit_modes
@@ -556,9 +567,16 @@ def _compound(case, hyper, shift, prony, tg_dma, expansion, notes, origin):
             return math.log(_curve_modulus_at_reference(table, c.name) / e_small)
 
         guess = math.log10(base.rubbery_modulus * e_small / (6.0 * (base.c10 + base.c01)))
-        rubbery = 10.0 ** brentq(miss, max(guess - 2.0, 4.5),       # 32 kPa
-                                 min(guess + 2.0, math.log10(0.5 * base.glassy_modulus)),
-                                 xtol=1e-10)
+        lo = max(guess - 2.0, 4.5)                                   # 32 kPa
+        hi = min(guess + 2.0, math.log10(0.5 * base.glassy_modulus))
+        if not (lo < hi and miss(lo) * miss(hi) < 0):
+            raise InputError(
+                f"the fitted constants' Young's modulus {e_small / 1e6:.4g} MPa at "
+                f"{c.reference_temperature - ZERO_CELSIUS_K:g} degC is beyond what "
+                f"the master curve of compound.base {base.name} reaches with a rubbery plateau "
+                f"of {10 ** lo / 1e6:.3g} ... {10 ** hi / 1e6:.4g} MPa: check the curves' "
+                "stress unit (a seal rubber has a few MPa)")
+        rubbery = 10.0 ** brentq(miss, lo, hi, xtol=1e-10)
         table["modulus"]["rubbery"] = _q(rubbery, "MPa")
         sources["modulus"] = (f"catalogue {base.name}'s master curve moved with T_g, its rubbery "
                               f"modulus ({rubbery / 1e6:.4g} MPa) chosen so that the curve gives "
@@ -692,9 +710,11 @@ def _report(r: MaterialFitResult, sources: dict) -> dict:
             params[f"prony_E_{k + 1}"] = {"value": float(e),
                                           "stderr": _finite(r.prony.standard_errors[k + 1]),
                                           "unit": "Pa", "tau_s": float(tau)}
+        law = law_rel_rmse(r.dma, r.shift, r.prony)
         modes["dma"] = {"rel_rmse": r.prony.rel_rmse["storage"],
                         "rel_rmse_loss": r.prony.rel_rmse["loss"],
                         "r2": r.prony.r2["storage"], "r2_loss": r.prony.r2["loss"],
+                        "rel_rmse_law": law["storage"], "rel_rmse_loss_law": law["loss"],
                         "role": "fit"}
         out["viscoelastic"] = {
             "reference_temperature_K": r.shift.reference_temperature,

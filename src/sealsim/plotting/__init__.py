@@ -6,6 +6,8 @@ nothing to close).  Plotting reads results; it never changes them.
 
 from matplotlib.figure import Figure
 
+from sealsim.units import ZERO_CELSIUS_K
+
 
 def new_figure(ncols: int = 1, nrows: int = 1, width: float = 6.0, height: float = 4.0,
                **kwargs):
@@ -13,3 +15,13 @@ def new_figure(ncols: int = 1, nrows: int = 1, width: float = 6.0, height: float
     fig = Figure(figsize=(width, height), layout="constrained")
     axes = fig.subplots(nrows, ncols, **kwargs)
     return fig, axes
+
+
+def celsius_text(temperature: float) -> str:
+    """A temperature [K] as a label in °C, to 4 significant digits; the rounding noise of a
+    unit conversion ("32 degF" is 273.15 K + 6e-14 K) does not show as "5.684e-14 °C".
+
+    >>> celsius_text(273.15 + 5.684e-14), celsius_text(310.92777777777775)
+    ('0 °C', '37.78 °C')
+    """
+    return f"{round(temperature - ZERO_CELSIUS_K, 6) + 0.0:.4g} °C"

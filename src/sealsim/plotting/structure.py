@@ -7,9 +7,8 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.collections import PolyCollection
 
-from sealsim.plotting import new_figure
+from sealsim.plotting import celsius_text, new_figure
 from sealsim.structure.results import pressure_profile
-from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["plot_map", "plot_map_profiles", "plot_section", "plot_states"]
 
@@ -84,7 +83,7 @@ def plot_section(state, title: str = ""):
                                                "fluid pressure from the left") + ")")
     ax.set_ylabel("radius r [mm]")
     ax.set_title(f"squeeze {state.squeeze * 100:.3g} %, {state.pressure / 1e5:.3g} bar, "
-                 f"{state.temperature - ZERO_CELSIUS_K:.4g} °C", fontsize=10)
+                 f"{celsius_text(state.temperature)}", fontsize=10)
     for name, style in (("sealing_surface", "-"), ("groove_bottom", "--")):
         s = state.surfaces.get(name)
         if s is None or s.position.size == 0:
@@ -171,7 +170,7 @@ def plot_map(dataset, squeeze_index: int = 0, title: str = ""):
     p = ds["pressure"].values / 1e5
     for t in ds["temperature"].values:
         sel = ds.sel(temperature=t)
-        label = f"{t - ZERO_CELSIUS_K:.4g} °C"
+        label = celsius_text(t)
         axes[0].plot(p, sel["F_N"].values, "-o", ms=3, label=label)
         axes[1].plot(p, sel["b"].values * 1e3, "-o", ms=3, label=label)
     axes[0].set_ylabel("F_N (360°) [N]")
@@ -198,8 +197,8 @@ def plot_map_profiles(dataset, squeeze_index: int = 0, title: str = ""):
     p_hi = ds["pressure"].values[-1]
     for t in ds["temperature"].values:
         axes[1].plot(z, ds["contact_pressure"].sel(temperature=t, pressure=p_hi).values / 1e6,
-                     lw=1.2, label=f"{t - ZERO_CELSIUS_K:.4g} °C")
-    axes[0].set_title(f"at {t0 - ZERO_CELSIUS_K:.4g} °C", fontsize=10)
+                     lw=1.2, label=celsius_text(t))
+    axes[0].set_title(f"at {celsius_text(t0)}", fontsize=10)
     axes[1].set_title(f"at {p_hi / 1e5:.3g} bar", fontsize=10)
     for ax, legend in zip(axes, ("pressure", "temperature")):
         ax.set_xlabel("axial position z [mm]")

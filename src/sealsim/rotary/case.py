@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import csv
 import io
+import math
 from dataclasses import dataclass, fields
 from pathlib import Path
 from typing import Literal
@@ -492,20 +493,25 @@ def _read_duty_csv(path: Path):
         raise InputError(f"{where} cannot be read as CSV: {exc}") from None
     header = [h.strip() for h in header if h is not None]
     if not {"time_s", "speed_rpm"} <= set(header):
+        other = next((d for d in ";\t" if any(d in h for h in header)), None)
         raise InputError(f"{where} needs the columns time_s, speed_rpm; its header is "
-                         f"{', '.join(header) or '(empty)'}")
+                         f"{', '.join(header) or '(empty)'}"
+                         + (f" (separated by {other!r}: the file must be comma-separated, "
+                            "with a decimal point)" if other else ""))
     if not rows:
         raise InputError(f"{where} has a header but no data rows")
     rows = [{(k or "").strip(): v for k, v in r.items()} for r in rows]
-    try:
-        times = np.array([float(r["time_s"]) for r in rows])
-        rpm = np.array([float(r["speed_rpm"]) for r in rows])
-    except (TypeError, ValueError) as exc:
-        raise InputError(f"{where} has a non-numeric or missing value ({exc})") from None
-    if len(times) < 2 or not np.all(np.isfinite(times)) or not np.all(np.isfinite(rpm)):
-        raise InputError(f"{where} needs at least two finite rows")
-    if times[0] != 0 or np.any(np.diff(times) < 0):
-        raise InputError(f"{where}: time_s must start at 0 and not decrease")
+    times, rpm = (np.array([_csv_number(r.get(column), where, k + 2, column)
+                            for k, r in enumerate(rows)])
+                  for column in ("time_s", "speed_rpm"))
+    if len(times) < 2:
+        raise InputError(f"{where} needs at least two rows")
+    if times[0] != 0:
+        raise InputError(f"{where}: time_s must start at 0 (line 2 has {times[0]:g})")
+    if np.any(np.diff(times) < 0):
+        k = int(np.flatnonzero(np.diff(times) < 0)[0]) + 1
+        raise InputError(f"{where}: time_s must not decrease (line {k + 2}: {times[k]:g} after "
+                         f"{times[k - 1]:g})")
     if times[-1] <= 0:
         raise InputError(f"{where}: every row is at time_s = 0; the duty cycle needs a "
                          "duration (time_s of the last row > 0)")
@@ -521,6 +527,19 @@ def _read_duty_csv(path: Path):
     if not steps:  # a measured trace without exact plateaus: summarise it as one step
         steps = [(0.0, float(times[-1]))]
     return times, speeds, steps
+
+
+def _csv_number(text, where: str, line: int, column: str) -> float:
+    """A finite number of a duty-cycle CSV cell, else an InputError naming line and column."""
+    try:
+        value = float(text)
+    except (TypeError, ValueError):
+        value = math.nan
+    if not math.isfinite(value):
+        problem = ("the value is missing" if text is None or not str(text).strip()
+                   else f"{text!r} is not a finite number")
+        raise InputError(f"{where}, line {line}, column {column}: {problem}")
+    return value
 
 
 class Numerics(CaseModel):
@@ -576,7 +595,10 @@ class RotaryCase(CaseModel):
         oil = self.oil.build()
         env = self.environment
         start = start_temperature(env)
-        for name, value in (("environment.start_temperature", start),
+        start_name = ("environment.start_temperature" if env.start_temperature is not None
+                      else "environment.sump_temperature" if env.sump_temperature is not None
+                      else "environment.ambient_temperature (the start temperature)")
+        for name, value in ((start_name, start),
                             ("environment.sump_temperature", env.sump_temperature),
                             ("environment.housing_temperature", env.housing_temperature)):
             if value is not None and oil.min_temperature is not None and \
