@@ -9,7 +9,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from sealsim.errors import InputError
-from sealsim.units import DIMENSIONS, format_quantity, parse_quantity
+from sealsim.measurements import ColumnSpec, read_table
+from sealsim.units import DIMENSIONS, format_quantity, parse_quantity, to_si, ureg
 
 # Conversions are exact up to float rounding of the conversion factors: 1e-12 relative.
 REL = 1e-12
@@ -91,6 +92,28 @@ def test_hz_is_refused_for_angular_speed(text):
     # pint takes 1 Hz = 1 rad/s whereas engineers mean 1 rev/s: ambiguous, so refused
     with pytest.raises(InputError, match="rpm"):
         parse_quantity(text, "angular_speed")
+
+
+@pytest.mark.parametrize(("text", "hz"), [
+    ("1 rad/s", 1 / (2 * math.pi)), ("60 rpm", 1.0), ("360 deg/s", 1.0), ("2 rev/s", 2.0),
+    ("60 1/min", 1.0), ("1 kHz", 1000.0), ("3 1/s", 3.0),
+])
+def test_a_frequency_given_as_an_angular_frequency_keeps_its_2_pi(text, hz):
+    # pint counts the radian as 1: it read 1 rad/s as 1 Hz and 60 rpm as 6.28 Hz (friction
+    # loops, DMA test frequencies, rheometer files in rad/s); f = omega / 2 pi
+    assert parse_quantity(text, "frequency") == pytest.approx(hz, rel=REL)
+    assert to_si(ureg.Quantity([1.0, 2.0], text.split(" ", 1)[1]), "frequency")[1] == \
+        pytest.approx(2 * hz / float(text.split(" ")[0]), rel=REL)
+
+
+def test_a_measured_frequency_column_in_rad_s_is_read_as_hz(tmp_path):
+    # a rheometer writes the angular frequency: 6.283 rad/s is 1 Hz
+    path = tmp_path / "dma.csv"
+    path.write_text("t,omega\n0,6.283185307179586\n1,62.83185307179586\n2,1\n")
+    m = read_table(path, [ColumnSpec("time", "t", "s"), ColumnSpec("frequency", "omega",
+                                                                    "rad/s")],
+                   delimiter=",", header=True)
+    assert m.column("frequency") == pytest.approx([1.0, 10.0, 1 / (2 * math.pi)], rel=REL)
 
 
 @pytest.mark.parametrize("value", [True, None, [80, "mm"], {"value": 80}, b"80 mm"])

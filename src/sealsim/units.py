@@ -9,7 +9,10 @@ for a rotational speed (``1/min``, ``min^-1``, ``1/s``, ``s^-1``) is revolutions
 seal and gearbox data sheets (DIN 1301-2: 1/min is the revolutions per minute), and so are
 ``U/min`` (German catalogues) and ``r/min`` (ISO); pint alone would read ``1/min`` as radians
 per minute, 2π too low.  ``Hz`` is refused for angular speed because pint treats 1 Hz as
-1 rad/s, whereas engineers mean 1 rev/s.
+1 rad/s, whereas engineers mean 1 rev/s.  The other way round, a frequency (cycles per
+second) given as an angular frequency (``rad/s``, ``deg/s``) or in ``rpm``/``rev/s`` is
+converted with its 2π (:func:`cycles_per_time`): pint alone would read 1 rad/s as 1 Hz and
+60 rpm as 6.28 Hz.
 
 pint is imported on first use (:func:`unit_registry`, or the module attribute ``ureg``), so
 modules that only need :data:`ZERO_CELSIUS_K` stay quick to import.
@@ -222,6 +225,8 @@ def _string_to_si(text: str, dim: Dimension) -> float:
     except Exception as exc:  # pint's parser raises a variety of types on garbage input
         raise InputError(f"cannot read {text!r} as a quantity; expected a {dim.name} "
                          f"such as {dim.example!r}") from exc
+    if dim.name == "frequency" and quantity.dimensionality == dim.dimensionality:
+        quantity = cycles_per_time(quantity)      # rad/s, rpm: with their 2π
     if quantity.dimensionality != dim.dimensionality:
         got = f"dimension {quantity.dimensionality}" if unit else "no unit"
         raise InputError(f"{text!r} has {got}, expected a {dim.name} "
@@ -255,6 +260,29 @@ def revolutions_per_time(quantity):
     if units and all(ureg.Quantity(1, name).dimensionality == {"[time]": 1}
                      for name, _ in units):
         return quantity * ureg.revolution
+    return quantity
+
+
+def cycles_per_time(quantity):
+    """A frequency written with an angle (``rad/s``, ``deg/s``, ``rpm``, ``rev/s``) as cycles
+    per second [Hz]; a reciprocal time (``Hz``, ``1/s``, ``1/min``) unchanged.
+
+    pint counts the radian as 1, so it would read the angular frequency 1 rad/s as 1 Hz and
+    60 rpm (2π rad/s) as 6.28 Hz; a frequency is ω/2π (ISO 80000-3, 3-15 and 3-18).
+
+    Examples
+    --------
+    >>> q = unit_registry().Quantity
+    >>> round(float(cycles_per_time(q(1.0, "rad/s")).to("Hz").magnitude), 6)
+    0.159155
+    >>> [float(cycles_per_time(q(v, u)).to("Hz").magnitude) for v, u in
+    ...  [(60.0, "rpm"), (360.0, "deg/s"), (60.0, "1/min"), (2.0, "kHz")]]
+    [1.0, 1.0, 1.0, 2000.0]
+    """
+    ureg = unit_registry()
+    root = ureg.Quantity(1.0, ureg.get_root_units(quantity.units)[1])
+    if "radian" in dict(root.unit_items()):
+        return ureg.Quantity(quantity.to("revolution / second").magnitude, "Hz")
     return quantity
 
 
@@ -347,6 +375,8 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
                 raise InputError(prefix + "Hz is ambiguous for a rotational speed; use rpm, "
                                  "rev/s or rad/s")
             value = revolutions_per_time(value)   # 1/min given for a speed: rpm
+        if dimension == "frequency" and value.dimensionality == dim.dimensionality:
+            value = cycles_per_time(value)        # rad/s, rpm given for a frequency
         if value.dimensionality != dim.dimensionality:
             raise InputError(prefix + f"unit {value.units:~} has dimension "
                              f"{value.dimensionality}, expected a {dim.name} (e.g. "
