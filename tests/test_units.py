@@ -106,6 +106,17 @@ def test_a_frequency_given_as_an_angular_frequency_keeps_its_2_pi(text, hz):
         pytest.approx(2 * hz / float(text.split(" ")[0]), rel=REL)
 
 
+@pytest.mark.parametrize(("text", "kelvin"), [
+    ("10 degC", 10.0), ("18 degF", 10.0), ("10 K", 10.0), ("-5 degC", -5.0),
+    ("10 delta_degC", 10.0),
+])
+def test_a_temperature_difference_in_degc_is_that_difference(text, kelvin):
+    # a rise, an uncertainty, WLF's C2 written "10 degC": 10 K, not the temperature 283.15 K
+    assert parse_quantity(text, "temperature_difference") == pytest.approx(kelvin, rel=REL)
+    assert to_si([text], "temperature_difference")[0] == pytest.approx(kelvin, rel=REL)
+    assert parse_quantity("10 degC", "temperature") == pytest.approx(283.15, rel=REL)
+
+
 def test_a_measured_frequency_column_in_rad_s_is_read_as_hz(tmp_path):
     # a rheometer writes the angular frequency: 6.283 rad/s is 1 Hz
     path = tmp_path / "dma.csv"

@@ -12,7 +12,9 @@ per minute, 2π too low.  ``Hz`` is refused for angular speed because pint treat
 1 rad/s, whereas engineers mean 1 rev/s.  The other way round, a frequency (cycles per
 second) given as an angular frequency (``rad/s``, ``deg/s``) or in ``rpm``/``rev/s`` is
 converted with its 2π (:func:`cycles_per_time`): pint alone would read 1 rad/s as 1 Hz and
-60 rpm as 6.28 Hz.
+60 rpm as 6.28 Hz.  A temperature difference (a rise, an uncertainty, WLF's C2) written in
+``degC`` or ``degF`` is that difference (:func:`as_difference`): ``"10 degC"`` is 10 K, not
+the temperature 283.15 K.
 
 pint is imported on first use (:func:`unit_registry`, or the module attribute ``ureg``), so
 modules that only need :data:`ZERO_CELSIUS_K` stay quick to import.
@@ -227,6 +229,8 @@ def _string_to_si(text: str, dim: Dimension) -> float:
                          f"such as {dim.example!r}") from exc
     if dim.name == "frequency" and quantity.dimensionality == dim.dimensionality:
         quantity = cycles_per_time(quantity)      # rad/s, rpm: with their 2π
+    if dim.name == "temperature_difference":
+        quantity = as_difference(quantity)        # "10 degC" is 10 K, not 283.15 K
     if quantity.dimensionality != dim.dimensionality:
         got = f"dimension {quantity.dimensionality}" if unit else "no unit"
         raise InputError(f"{text!r} has {got}, expected a {dim.name} "
@@ -284,6 +288,23 @@ def cycles_per_time(quantity):
     if "radian" in dict(root.unit_items()):
         return ureg.Quantity(quantity.to("revolution / second").magnitude, "Hz")
     return quantity
+
+
+def as_difference(quantity):
+    """A temperature difference written in a scale with an offset (``degC``, ``degF``) as the
+    difference it means: ``"10 degC"`` is 10 K (pint alone reads it as the temperature
+    283.15 K), ``"18 degF"`` 10 K; any other quantity unchanged.
+
+    Examples
+    --------
+    >>> q = unit_registry().Quantity
+    >>> [round(float(as_difference(q(v, u)).to("K").magnitude), 9)
+    ...  for v, u in [(10.0, "degC"), (18.0, "degF"), (10.0, "K")]]
+    [10.0, 10.0, 10.0]
+    """
+    if quantity._is_multiplicative:
+        return quantity
+    return unit_registry().Quantity(quantity.magnitude, f"delta_{quantity.units}")
 
 
 def rotational_speed(magnitude, unit: str):
@@ -377,6 +398,8 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
             value = revolutions_per_time(value)   # 1/min given for a speed: rpm
         if dimension == "frequency" and value.dimensionality == dim.dimensionality:
             value = cycles_per_time(value)        # rad/s, rpm given for a frequency
+        if dimension == "temperature_difference":
+            value = as_difference(value)          # degC, degF: a difference
         if value.dimensionality != dim.dimensionality:
             raise InputError(prefix + f"unit {value.units:~} has dimension "
                              f"{value.dimensionality}, expected a {dim.name} (e.g. "
