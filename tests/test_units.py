@@ -3,13 +3,17 @@
 from __future__ import annotations
 
 import math
+import re
+from pathlib import Path
 
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from sealsim.cases import load_toml
 from sealsim.errors import InputError
 from sealsim.measurements import ColumnSpec, read_table
+from sealsim.pneumatic.case import load_pneumatic_cases
 from sealsim.units import DIMENSIONS, format_quantity, parse_quantity, to_si, ureg
 
 # Conversions are exact up to float rounding of the conversion factors: 1e-12 relative.
@@ -115,6 +119,22 @@ def test_a_temperature_difference_in_degc_is_that_difference(text, kelvin):
     assert parse_quantity(text, "temperature_difference") == pytest.approx(kelvin, rel=REL)
     assert to_si([text], "temperature_difference")[0] == pytest.approx(kelvin, rel=REL)
     assert parse_quantity("10 degC", "temperature") == pytest.approx(283.15, rel=REL)
+
+
+def test_an_angle_needs_an_angle_unit():
+    # pint counts the radian as 1: a cylinder's incline of '90' or '50 %' was taken as 90 rad
+    # (refused only by the range, 'must be <= 1.57') and 0.5 rad; a plain 1 as 57 degrees
+    assert parse_quantity("90 deg", "angle") == pytest.approx(math.pi / 2, rel=REL)
+    assert parse_quantity("-1.2 rad", "angle") == pytest.approx(-1.2, rel=REL)
+    for text, words in (("90", "no unit"), ("50 %", "no angle unit"), ("3 m", "[length]")):
+        with pytest.raises(InputError, match=re.escape(words)):
+            parse_quantity(text, "angle")
+    with pytest.raises(InputError, match="an angle unit"):
+        parse_quantity(1, "angle")
+    case = load_toml(Path(__file__).resolve().parents[1] / "examples/pneumatic/cylinder_32.toml")
+    case["cylinder"]["incline"] = "30"
+    with pytest.raises(InputError, match="cylinder.incline: '30' has no unit"):
+        load_pneumatic_cases(case)
 
 
 def test_a_measured_frequency_column_in_rad_s_is_read_as_hz(tmp_path):

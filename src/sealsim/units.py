@@ -82,6 +82,11 @@ class Dimension:
         return unit_registry().Quantity(1.0, self.si_unit).dimensionality
 
     @property
+    def a_name(self) -> str:
+        """The name with its indefinite article ("a length", "an angle")."""
+        return ("an " if self.name[0] in "aeiou" else "a ") + self.name
+
+    @property
     def output_unit(self) -> str:
         return self.display_unit or self.si_unit
 
@@ -115,6 +120,7 @@ DIMENSIONS: dict[str, Dimension] = {
         Dimension("thermal_expansion", "1/K", "2e-4 1/K"),
         Dimension("power", "W", "50 W"),
         Dimension("energy", "J", "100 J"),
+        Dimension("angle", "rad", "30 deg", display_unit="deg"),
         Dimension("dimensionless", "", "0.3"),
         Dimension("inverse_pressure", "1/Pa", "20 1/GPa"),
         Dimension("flow_conductance", "m**3/(s*Pa)", "2 dm**3/(s*bar)"),
@@ -166,27 +172,27 @@ def parse_quantity(value, dimension: str, field: str | None = None) -> float:
         try:
             value = f"{float(value.magnitude)!r} {value.units:~}"
         except OverflowError:
-            raise InputError(prefix + f"number too large; expected a {dim.name} such as "
+            raise InputError(prefix + f"number too large; expected {dim.a_name} such as "
                                       f"{dim.example!r}") from None
     if isinstance(value, bool):
-        raise InputError(prefix + f"{value!r} is not a quantity; expected a {dim.name} "
+        raise InputError(prefix + f"{value!r} is not a quantity; expected {dim.a_name} "
                          f"such as {dim.example!r}")
     if isinstance(value, (int, float)):
         if dimension != "dimensionless":
-            raise InputError(prefix + f"{value!r} has no unit; write it with a {dim.name} unit, "
-                             f"e.g. {dim.example!r}")
+            raise InputError(prefix + f"{value!r} has no unit; write it with {dim.a_name} "
+                             f"unit, e.g. {dim.example!r}")
         try:
             magnitude = float(value)
         except OverflowError:
-            raise InputError(prefix + f"number too large; expected a {dim.name} such as "
+            raise InputError(prefix + f"number too large; expected {dim.a_name} such as "
                                       f"{dim.example!r}") from None
     elif isinstance(value, str):
         magnitude = _parse_string(value, dim, field)
     else:
-        raise InputError(prefix + f"{value!r} is not a quantity; expected a {dim.name} "
+        raise InputError(prefix + f"{value!r} is not a quantity; expected {dim.a_name} "
                          f"such as {dim.example!r}")
     if not math.isfinite(magnitude):
-        raise InputError(prefix + f"{value!r} is not a finite number; expected a {dim.name} "
+        raise InputError(prefix + f"{value!r} is not a finite number; expected {dim.a_name} "
                          f"such as {dim.example!r}")
     return magnitude
 
@@ -209,7 +215,7 @@ def _string_to_si(text: str, dim: Dimension) -> float:
     ureg = unit_registry()
     match = _NUMBER.match(text)
     if not match:
-        raise InputError(f"{text!r} is not 'number unit'; expected a {dim.name} "
+        raise InputError(f"{text!r} is not 'number unit'; expected {dim.a_name} "
                          f"such as {dim.example!r}")
     number, unit = match.group(1), match.group(2).strip()
     if _RUNAWAY_POWER.search(unit):  # pint would evaluate e.g. 10**10**8 for minutes
@@ -222,10 +228,10 @@ def _string_to_si(text: str, dim: Dimension) -> float:
                     else ureg.Quantity(float(number), unit or "dimensionless"))
     except (pint.errors.UndefinedUnitError, pint.errors.DefinitionSyntaxError,
             AttributeError, TypeError, ValueError, AssertionError) as exc:
-        raise InputError(f"unknown unit {unit!r} in {text!r}; expected a {dim.name} "
+        raise InputError(f"unknown unit {unit!r} in {text!r}; expected {dim.a_name} "
                          f"such as {dim.example!r}") from exc
     except Exception as exc:  # pint's parser raises a variety of types on garbage input
-        raise InputError(f"cannot read {text!r} as a quantity; expected a {dim.name} "
+        raise InputError(f"cannot read {text!r} as a quantity; expected {dim.a_name} "
                          f"such as {dim.example!r}") from exc
     if dim.name == "frequency" and quantity.dimensionality == dim.dimensionality:
         quantity = cycles_per_time(quantity)      # rad/s, rpm: with their 2π
@@ -233,8 +239,12 @@ def _string_to_si(text: str, dim: Dimension) -> float:
         quantity = as_difference(quantity)        # "10 degC" is 10 K, not 283.15 K
     if quantity.dimensionality != dim.dimensionality:
         got = f"dimension {quantity.dimensionality}" if unit else "no unit"
-        raise InputError(f"{text!r} has {got}, expected a {dim.name} "
+        raise InputError(f"{text!r} has {got}, expected {dim.a_name} "
                          f"(e.g. {dim.example!r})")
+    if dim.name == "angle" and not _has_angle_unit(quantity):
+        # pint counts the radian as 1: '90' or '50 %' would pass as radians
+        raise InputError(f"{text!r} has {'no unit' if not unit else 'no angle unit'}; "
+                         f"expected an angle such as {dim.example!r} (or rad)")
     try:
         return float(quantity.to(dim.si_unit).magnitude)
     except pint.errors.PintError as exc:  # pragma: no cover - guarded by the check above
@@ -283,11 +293,16 @@ def cycles_per_time(quantity):
     ...  [(60.0, "rpm"), (360.0, "deg/s"), (60.0, "1/min"), (2.0, "kHz")]]
     [1.0, 1.0, 1.0, 2000.0]
     """
+    if _has_angle_unit(quantity):
+        return unit_registry().Quantity(quantity.to("revolution / second").magnitude, "Hz")
+    return quantity
+
+
+def _has_angle_unit(quantity) -> bool:
+    """Whether a quantity's unit holds an angle (rad, deg, rev, rpm: radians in its root)."""
     ureg = unit_registry()
     root = ureg.Quantity(1.0, ureg.get_root_units(quantity.units)[1])
-    if "radian" in dict(root.unit_items()):
-        return ureg.Quantity(quantity.to("revolution / second").magnitude, "Hz")
-    return quantity
+    return "radian" in dict(root.unit_items())
 
 
 def as_difference(quantity):
@@ -402,7 +417,7 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
             value = as_difference(value)          # degC, degF: a difference
         if value.dimensionality != dim.dimensionality:
             raise InputError(prefix + f"unit {value.units:~} has dimension "
-                             f"{value.dimensionality}, expected a {dim.name} (e.g. "
+                             f"{value.dimensionality}, expected {dim.a_name} (e.g. "
                              f"{dim.example!r})")
         si = np.asarray(value.to(dim.si_unit).magnitude, dtype=float)
     elif isinstance(value, list | tuple | np.ndarray):
@@ -430,11 +445,11 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
         try:
             si = np.asarray(float(value))
         except OverflowError:
-            raise InputError(prefix + f"{_shown(value)} is too large; expected a {dim.name} "
+            raise InputError(prefix + f"{_shown(value)} is too large; expected {dim.a_name} "
                              f"such as {dim.example!r}") from None
     else:
         return parse_quantity(value, dimension, field)
     if not np.all(np.isfinite(si)):
-        raise InputError(prefix + f"{value!r} is not finite; expected a {dim.name} such as "
+        raise InputError(prefix + f"{value!r} is not finite; expected {dim.a_name} such as "
                          f"{dim.example!r}")
     return float(si) if si.ndim == 0 else si
