@@ -123,7 +123,8 @@ DIMENSIONS: dict[str, Dimension] = {
         Dimension("angle", "rad", "30 deg", display_unit="deg"),
         Dimension("dimensionless", "", "0.3"),
         Dimension("inverse_pressure", "1/Pa", "20 1/GPa"),
-        Dimension("flow_conductance", "m**3/(s*Pa)", "2 dm**3/(s*bar)"),
+        Dimension("flow_conductance", "m**3/(s*Pa)", "2 dm**3/(s*bar)",
+                  display_unit="dm**3/(s*bar)"),
     ]
 }
 
