@@ -243,7 +243,8 @@ def seal_friction(seal, velocity, pressure="0 bar", temperature="20 degC", law=N
         Seal temperature, default 20 °C.
     law : str, mapping or FrictionLaw, optional
         The friction law: a law name whose parameters are its only named set
-        (``"theta"``: ``pneumatic_demo``), a ``[friction]`` table of a case file
+        (``"lugre"``: ``canudas1995``; a law with several sets, such as ``"theta"``, is
+        refused with their names), a ``[friction]`` table of a case file
         (``{"law": "stribeck", "parameter_set": "pneumatic_demo", "coulomb_force": "12 N"}``)
         or a law object of :mod:`sealsim.friction`.  Default :data:`DEFAULT_LAW`: the Θ law
         whose steady curve comes from the seal's contact (set ``seal_contact``: boundary
