@@ -463,10 +463,14 @@ def _check_ranges(contact_map, pressure: np.ndarray, temperature: np.ndarray) ->
         if np.any(bad):
             value = float(values[np.argmax(bad)])
             shown = value * scale + offset
+            hint = ""
+            if name == "pressure" and hasattr(contact_map, "pressure_max"):
+                hint = ("; the analytic estimate's range: seal={..., 'pressure_max': "
+                        f"'{shown:.6g} bar'}}")
             raise InputError(f"{name}: {shown:.6g} {unit} is outside the seal's contact map "
                              f"({lo * scale + offset:.6g} ... {hi * scale + offset:.6g} {unit})"
                              + (glassy_reason(contact_map, value) if name == "temperature"
-                                else ""))
+                                else hint))
 
 
 def _friction_law(law):
