@@ -121,6 +121,12 @@ def test_a_temperature_difference_in_degc_is_that_difference(text, kelvin):
     assert parse_quantity("10 degC", "temperature") == pytest.approx(283.15, rel=REL)
 
 
+def test_a_decimal_comma_is_named():
+    # '1,5 mm' (a German engineer's decimal comma) was 'unknown unit ',5 mm''
+    with pytest.raises(InputError, match=re.escape("decimal point (1.5 mm)")):
+        parse_quantity("1,5 mm", "length")
+
+
 def test_an_angle_needs_an_angle_unit():
     # pint counts the radian as 1: a cylinder's incline of '90' or '50 %' was taken as 90 rad
     # (refused only by the range, 'must be <= 1.57') and 0.5 rad; a plain 1 as 57 degrees

@@ -219,6 +219,10 @@ def _string_to_si(text: str, dim: Dimension) -> float:
         raise InputError(f"{text!r} is not 'number unit'; expected {dim.a_name} "
                          f"such as {dim.example!r}")
     number, unit = match.group(1), match.group(2).strip()
+    if re.match(r",\d", unit):      # "1,5 mm": a decimal comma
+        raise InputError(f"{text!r}: write the number with a decimal point "
+                         f"({number}.{unit[1:]!s}); expected {dim.a_name} such as "
+                         f"{dim.example!r}")
     if _RUNAWAY_POWER.search(unit):  # pint would evaluate e.g. 10**10**8 for minutes
         raise InputError(f"unit {unit!r} in {text!r} has an exponent that is too large")
     if dim.name == "angular_speed" and re.search(r"hz|hertz", unit, re.IGNORECASE):
