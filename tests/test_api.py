@@ -192,6 +192,23 @@ def test_seal_friction_from_an_fe_map_file(tmp_path):
         sealsim.seal_friction(path, "0.2 m/s", "5 bar", "80 degC", law=lumped)
 
 
+def test_seal_friction_follows_the_pressure_range_of_an_analytic_map(tmp_path, monkeypatch):
+    # the contact friction table is cached per map; the analytic map's pressure_max was not
+    # part of the key, so a table built for 0 ... 16 bar served a map up to 100 bar and the
+    # friction stayed at its 16 bar value (0.51 N at 20, 50 and 100 bar, F_N 120 -> 3552 N)
+    monkeypatch.setenv("SEALSIM_CACHE", str(tmp_path))
+    oring = {"cord_diameter": "2 mm", "squeeze": 0.12}
+    at_16 = sealsim.seal_friction(oring, "0.1 m/s", "16 bar", diameter="12 mm")
+    wide = sealsim.seal_friction({**oring, "pressure_max": "100 bar"}, "0.1 m/s",
+                                 ["16 bar", "50 bar", "100 bar"], diameter="12 mm")
+    # the same point from both tables (grids of 9 nodes over 0-16 and 0-100 bar)
+    assert wide["friction_N"].iloc[0] == pytest.approx(at_16["friction_N"], rel=0.01)
+    assert wide["friction_N"].is_monotonic_increasing
+    assert wide["friction_N"].iloc[2] > 10 * at_16["friction_N"]
+    with pytest.raises(InputError, match="pressure_max"):
+        sealsim.seal_friction(oring, "0.1 m/s", "20 bar", diameter="12 mm")
+
+
 @pytest.mark.parametrize(("kwargs", "words"), [
     ({"law": "stribeck"}, ["parameter sets", "modelica_friction_example"]),
     ({"law": "theta"}, ["parameter sets", "pneumatic_demo", "seal_contact"]),

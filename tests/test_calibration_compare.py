@@ -68,6 +68,16 @@ def test_compare_reproduces_its_own_run_and_sees_a_different_load(tmp_path):
     for s in report["signals"].values():
         assert s["rmse"] < 1e-9 and s["r2"] == pytest.approx(1.0, abs=1e-12)
     assert {"report.json", "comparison.csv", "comparison.png"} <= {p.name for p in out.iterdir()}
+    # pressures as measured: gauge (before: plain "bar" for either); the extend/retract times
+    # of the measured and the simulated position (the module promised them, the report had
+    # none): the measurement is the model sampled every 5 ms, the end crossings interpolated
+    # between samples (the position is nearly linear there: 1 ms)
+    columns = (out / "comparison.csv").read_text().splitlines()[0].split(",")
+    assert "pressure_1_measured_bar_gauge" in columns and "pressure_2_model_bar_gauge" in columns
+    for key in ("extend_time_s", "retract_time_s"):
+        assert report["stroke_times"]["measured"][key] == pytest.approx(
+            report["stroke_times"]["model"][key], abs=1e-3)
+    assert "extend time: measured" in result.output
     # a run with twice the load, measured with 20 mbar / 0.05 mm noise: the comparison sees it
     heavy = measured_file(short_case(tmp_path, "200 N"), tmp_path / "heavy.csv", 0.02, 0.05)
     out2 = tmp_path / "heavy"
@@ -91,25 +101,11 @@ def test_compare_refuses_a_measurement_longer_than_the_run(tmp_path):
     assert result.exit_code == 2 and "controller.duration" in result.output
 
 
-def test_compare_says_gauge_or_absolute_and_gives_both_stroke_times(tmp_path):
-    # the table's and the plot's pressures are as measured: gauge here (before: plain "bar"
-    # for either), and the extend/retract times of the measured and the simulated position
-    # (the module promised them; the report had none)
+def test_compare_of_absolute_pressures_says_so(tmp_path):
+    # pressures measured absolute: the table's columns say bar_abs (before: plain "bar")
     base = short_case(tmp_path, "20 N")
     same = measured_file(base, tmp_path / "same.csv")
-    out = tmp_path / "same"
-    result = RUNNER.invoke(app, ["pneumatic", "compare", str(compare_file(tmp_path, base, same)),
-                                 "--out", str(out), "--quiet"])
-    assert result.exit_code == 0, result.output
-    columns = (out / "comparison.csv").read_text().splitlines()[0].split(",")
-    assert "pressure_1_measured_bar_gauge" in columns and "pressure_2_model_bar_gauge" in columns
-    times = json.loads((out / "report.json").read_text())["stroke_times"]
-    # the measurement is the model sampled every 5 ms: the same strokes, the end crossings
-    # interpolated between samples (the position is nearly linear there: 1 ms)
-    for key in ("extend_time_s", "retract_time_s"):
-        assert times["measured"][key] == pytest.approx(times["model"][key], abs=1e-3)
-    assert "extend time: measured" in result.output
-    # absolute pressures: the same comparison, labelled abs
+    compare_file(tmp_path, base, same)
     spec = tomllib.loads((tmp_path / "compare_same.toml").read_text())
     spec["measurement"]["pressure"] = "absolute"
     ambient = 1.01325

@@ -33,6 +33,7 @@ from sealsim.structure.tolerances import (
     iso286_deviations,
     iso3601_inner_diameter_tolerance,
 )
+from sealsim.units import parse_quantity
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples" / "gland"
 #: hand calculations are written to 4-5 digits: agreement to 0.1 percentage points (the
@@ -209,7 +210,7 @@ def test_limits_given_in_other_units_are_inside_their_rows_and_ranges():
     # 373.15 K: a limit of the table or of the service range must still count as inside
     # (before: the 1500-2000 psi row, 0.004 in, was used, and both notes were given)
     inch = 0.0254
-    p = sealsim.units.parse_quantity("1500 psi", "pressure")
+    p = parse_quantity("1500 psi", "pressure")
     assert float(extrusion_gap_limit(p, 70)) == pytest.approx(0.006 * inch)   # <= 1500 psi
     assert float(extrusion_gap_limit(p * 1.001, 70)) == pytest.approx(0.004 * inch)
     r = sealsim.oring_gland(_case("piston_static.toml", {"service": {

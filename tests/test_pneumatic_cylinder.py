@@ -10,6 +10,7 @@ import pytest
 from scipy.integrate import solve_ivp
 
 from sealsim.cases import apply_overrides, load_toml, validate_case
+from sealsim.errors import InputError, ModelError
 from sealsim.pneumatic import PneumaticCase, simulate
 from sealsim.pneumatic.case import load_pneumatic_cases
 from sealsim.pneumatic.chambers import (
@@ -264,3 +265,15 @@ def test_a_run_in_which_nothing_moves_closes_its_balances():
     assert np.ptp(result.timeseries["x_m"]) < 1e-12
     assert result.balances["mass_balance_rel_error"] < 1e-12
     assert result.balances["energy_balance_rel_error"] < 1e-12
+
+
+def test_a_dead_volume_smaller_than_the_bumper_travel_is_refused():
+    # 0.1 cm^3 at the cap: resting in the stop under 435 N (delta = 0.22 mm) the piston
+    # sweeps 0.17 cm^3 -- the chamber had a negative volume, p1 -1536 bar and T1 -253 degC,
+    # and the run "completed" with a peak friction of 118 kN
+    with pytest.raises(InputError, match=r"cylinder.dead_volume_cap: 0.1 cm\^3 .* 0.2173 mm"):
+        simulate(frictionless({"cylinder": {"dead_volume_cap": "0.1 cm**3"}}))
+    # 0.1 cm^3 at the rod end: the piston runs into the head stop at speed (2.4 mm deep)
+    with pytest.raises(ModelError, match="cylinder.dead_volume_rod"):
+        simulate(frictionless({"cylinder": {"dead_volume_rod": "0.1 cm**3"},
+                               "controller": {"duration": "1 s"}}))

@@ -3,13 +3,18 @@
 from __future__ import annotations
 
 import math
+import re
+from pathlib import Path
 
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from sealsim.cases import load_toml
 from sealsim.errors import InputError
-from sealsim.units import DIMENSIONS, format_quantity, parse_quantity
+from sealsim.measurements import ColumnSpec, read_table
+from sealsim.pneumatic.case import load_pneumatic_cases
+from sealsim.units import DIMENSIONS, format_quantity, parse_quantity, to_si, ureg
 
 # Conversions are exact up to float rounding of the conversion factors: 1e-12 relative.
 REL = 1e-12
@@ -98,6 +103,61 @@ def test_hz_is_refused_for_angular_speed(text):
     # pint takes 1 Hz = 1 rad/s whereas engineers mean 1 rev/s: ambiguous, so refused
     with pytest.raises(InputError, match="rpm"):
         parse_quantity(text, "angular_speed")
+
+
+@pytest.mark.parametrize(("text", "hz"), [
+    ("1 rad/s", 1 / (2 * math.pi)), ("60 rpm", 1.0), ("360 deg/s", 1.0), ("2 rev/s", 2.0),
+    ("60 1/min", 1.0), ("1 kHz", 1000.0), ("3 1/s", 3.0),
+])
+def test_a_frequency_given_as_an_angular_frequency_keeps_its_2_pi(text, hz):
+    # pint counts the radian as 1: it read 1 rad/s as 1 Hz and 60 rpm as 6.28 Hz (friction
+    # loops, DMA test frequencies, rheometer files in rad/s); f = omega / 2 pi
+    assert parse_quantity(text, "frequency") == pytest.approx(hz, rel=REL)
+    assert to_si(ureg.Quantity([1.0, 2.0], text.split(" ", 1)[1]), "frequency")[1] == \
+        pytest.approx(2 * hz / float(text.split(" ")[0]), rel=REL)
+
+
+@pytest.mark.parametrize(("text", "kelvin"), [
+    ("10 degC", 10.0), ("18 degF", 10.0), ("10 K", 10.0), ("-5 degC", -5.0),
+    ("10 delta_degC", 10.0),
+])
+def test_a_temperature_difference_in_degc_is_that_difference(text, kelvin):
+    # a rise, an uncertainty, WLF's C2 written "10 degC": 10 K, not the temperature 283.15 K
+    assert parse_quantity(text, "temperature_difference") == pytest.approx(kelvin, rel=REL)
+    assert to_si([text], "temperature_difference")[0] == pytest.approx(kelvin, rel=REL)
+    assert parse_quantity("10 degC", "temperature") == pytest.approx(283.15, rel=REL)
+
+
+def test_a_decimal_comma_is_named():
+    # '1,5 mm' (a German engineer's decimal comma) was 'unknown unit ',5 mm''
+    with pytest.raises(InputError, match=re.escape("decimal point (1.5 mm)")):
+        parse_quantity("1,5 mm", "length")
+
+
+def test_an_angle_needs_an_angle_unit():
+    # pint counts the radian as 1: a cylinder's incline of '90' or '50 %' was taken as 90 rad
+    # (refused only by the range, 'must be <= 1.57') and 0.5 rad; a plain 1 as 57 degrees
+    assert parse_quantity("90 deg", "angle") == pytest.approx(math.pi / 2, rel=REL)
+    assert parse_quantity("-1.2 rad", "angle") == pytest.approx(-1.2, rel=REL)
+    for text, words in (("90", "no unit"), ("50 %", "no angle unit"), ("3 m", "[length]")):
+        with pytest.raises(InputError, match=re.escape(words)):
+            parse_quantity(text, "angle")
+    with pytest.raises(InputError, match="an angle unit"):
+        parse_quantity(1, "angle")
+    case = load_toml(Path(__file__).resolve().parents[1] / "examples/pneumatic/cylinder_32.toml")
+    case["cylinder"]["incline"] = "30"
+    with pytest.raises(InputError, match="cylinder.incline: '30' has no unit"):
+        load_pneumatic_cases(case)
+
+
+def test_a_measured_frequency_column_in_rad_s_is_read_as_hz(tmp_path):
+    # a rheometer writes the angular frequency: 6.283 rad/s is 1 Hz
+    path = tmp_path / "dma.csv"
+    path.write_text("t,omega\n0,6.283185307179586\n1,62.83185307179586\n2,1\n")
+    m = read_table(path, [ColumnSpec("time", "t", "s"), ColumnSpec("frequency", "omega",
+                                                                    "rad/s")],
+                   delimiter=",", header=True)
+    assert m.column("frequency") == pytest.approx([1.0, 10.0, 1 / (2 * math.pi)], rel=REL)
 
 
 @pytest.mark.parametrize("value", [True, None, [80, "mm"], {"value": 80}, b"80 mm"])

@@ -243,7 +243,8 @@ def seal_friction(seal, velocity, pressure="0 bar", temperature="20 degC", law=N
         Seal temperature, default 20 °C.
     law : str, mapping or FrictionLaw, optional
         The friction law: a law name whose parameters are its only named set
-        (``"theta"``: ``pneumatic_demo``), a ``[friction]`` table of a case file
+        (``"lugre"``: ``canudas1995``; a law with several sets, such as ``"theta"``, is
+        refused with their names), a ``[friction]`` table of a case file
         (``{"law": "stribeck", "parameter_set": "pneumatic_demo", "coulomb_force": "12 N"}``)
         or a law object of :mod:`sealsim.friction`.  Default :data:`DEFAULT_LAW`: the Θ law
         whose steady curve comes from the seal's contact (set ``seal_contact``: boundary
@@ -462,10 +463,14 @@ def _check_ranges(contact_map, pressure: np.ndarray, temperature: np.ndarray) ->
         if np.any(bad):
             value = float(values[np.argmax(bad)])
             shown = value * scale + offset
+            hint = ""
+            if name == "pressure" and hasattr(contact_map, "pressure_max"):
+                hint = ("; the analytic estimate's range: seal={..., 'pressure_max': "
+                        f"'{shown:.6g} bar'}}")
             raise InputError(f"{name}: {shown:.6g} {unit} is outside the seal's contact map "
                              f"({lo * scale + offset:.6g} ... {hi * scale + offset:.6g} {unit})"
                              + (glassy_reason(contact_map, value) if name == "temperature"
-                                else ""))
+                                else hint))
 
 
 def _friction_law(law):

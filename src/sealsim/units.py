@@ -9,7 +9,12 @@ for a rotational speed (``1/min``, ``min^-1``, ``1/s``, ``s^-1``) is revolutions
 seal and gearbox data sheets (DIN 1301-2: 1/min is the revolutions per minute), and so are
 ``U/min`` (German catalogues) and ``r/min`` (ISO); pint alone would read ``1/min`` as radians
 per minute, 2π too low.  ``Hz`` is refused for angular speed because pint treats 1 Hz as
-1 rad/s, whereas engineers mean 1 rev/s.
+1 rad/s, whereas engineers mean 1 rev/s.  The other way round, a frequency (cycles per
+second) given as an angular frequency (``rad/s``, ``deg/s``) or in ``rpm``/``rev/s`` is
+converted with its 2π (:func:`cycles_per_time`): pint alone would read 1 rad/s as 1 Hz and
+60 rpm as 6.28 Hz.  A temperature difference (a rise, an uncertainty, WLF's C2) written in
+``degC`` or ``degF`` is that difference (:func:`as_difference`): ``"10 degC"`` is 10 K, not
+the temperature 283.15 K.
 
 pint is imported on first use (:func:`unit_registry`, or the module attribute ``ureg``), so
 modules that only need :data:`ZERO_CELSIUS_K` stay quick to import.
@@ -116,9 +121,11 @@ DIMENSIONS: dict[str, Dimension] = {
         Dimension("thermal_expansion", "1/K", "2e-4 1/K"),
         Dimension("power", "W", "50 W"),
         Dimension("energy", "J", "100 J"),
+        Dimension("angle", "rad", "30 deg", display_unit="deg"),
         Dimension("dimensionless", "", "0.3"),
         Dimension("inverse_pressure", "1/Pa", "20 1/GPa"),
-        Dimension("flow_conductance", "m**3/(s*Pa)", "2 dm**3/(s*bar)"),
+        Dimension("flow_conductance", "m**3/(s*Pa)", "2 dm**3/(s*bar)",
+                  display_unit="dm**3/(s*bar)"),
     ]
 }
 
@@ -213,6 +220,10 @@ def _string_to_si(text: str, dim: Dimension) -> float:
         raise InputError(f"{text!r} is not 'number unit'; expected {dim.phrase} "
                          f"such as {dim.example!r}")
     number, unit = match.group(1), match.group(2).strip()
+    if re.match(r",\d", unit):      # "1,5 mm": a decimal comma
+        raise InputError(f"{text!r}: write the number with a decimal point "
+                         f"({number}.{unit[1:]!s}); expected {dim.phrase} such as "
+                         f"{dim.example!r}")
     if _RUNAWAY_POWER.search(unit):  # pint would evaluate e.g. 10**10**8 for minutes
         raise InputError(f"unit {unit!r} in {text!r} has an exponent that is too large")
     if dim.name == "angular_speed" and re.search(r"hz|hertz", unit, re.IGNORECASE):
@@ -228,12 +239,20 @@ def _string_to_si(text: str, dim: Dimension) -> float:
     except Exception as exc:  # pint's parser raises a variety of types on garbage input
         raise InputError(f"cannot read {text!r} as a quantity; expected {dim.phrase} "
                          f"such as {dim.example!r}") from exc
+    if dim.name == "frequency" and quantity.dimensionality == dim.dimensionality:
+        quantity = cycles_per_time(quantity)      # rad/s, rpm: with their 2π
+    if dim.name == "temperature_difference":
+        quantity = as_difference(quantity)        # "10 degC" is 10 K, not 283.15 K
     if quantity.dimensionality != dim.dimensionality:
         got = f"dimension {quantity.dimensionality}" if unit else "no unit"
         hint = (f"; {unit} is the {ureg.Unit(unit)}: write deg{unit} for degrees"
                 if dim.name.startswith("temperature") and unit in ("C", "F") else "")
         raise InputError(f"{text!r} has {got}, expected {dim.phrase} "
                          f"(e.g. {dim.example!r}){hint}")
+    if dim.name == "angle" and not _has_angle_unit(quantity):
+        # pint counts the radian as 1: '90' or '50 %' would pass as radians
+        raise InputError(f"{text!r} has {'no unit' if not unit else 'no angle unit'}; "
+                         f"expected an angle such as {dim.example!r} (or rad)")
     try:
         return float(quantity.to(dim.si_unit).magnitude)
     except pint.errors.PintError as exc:  # pragma: no cover - guarded by the check above
@@ -264,6 +283,51 @@ def revolutions_per_time(quantity):
                      for name, _ in units):
         return quantity * ureg.revolution
     return quantity
+
+
+def cycles_per_time(quantity):
+    """A frequency written with an angle (``rad/s``, ``deg/s``, ``rpm``, ``rev/s``) as cycles
+    per second [Hz]; a reciprocal time (``Hz``, ``1/s``, ``1/min``) unchanged.
+
+    pint counts the radian as 1, so it would read the angular frequency 1 rad/s as 1 Hz and
+    60 rpm (2π rad/s) as 6.28 Hz; a frequency is ω/2π (ISO 80000-3, 3-15 and 3-18).
+
+    Examples
+    --------
+    >>> q = unit_registry().Quantity
+    >>> round(float(cycles_per_time(q(1.0, "rad/s")).to("Hz").magnitude), 6)
+    0.159155
+    >>> [float(cycles_per_time(q(v, u)).to("Hz").magnitude) for v, u in
+    ...  [(60.0, "rpm"), (360.0, "deg/s"), (60.0, "1/min"), (2.0, "kHz")]]
+    [1.0, 1.0, 1.0, 2000.0]
+    """
+    if _has_angle_unit(quantity):
+        return unit_registry().Quantity(quantity.to("revolution / second").magnitude, "Hz")
+    return quantity
+
+
+def _has_angle_unit(quantity) -> bool:
+    """Whether a quantity's unit holds an angle (rad, deg, rev, rpm: radians in its root)."""
+    ureg = unit_registry()
+    root = ureg.Quantity(1.0, ureg.get_root_units(quantity.units)[1])
+    return "radian" in dict(root.unit_items())
+
+
+def as_difference(quantity):
+    """A temperature difference written in a scale with an offset (``degC``, ``degF``) as the
+    difference it means: ``"10 degC"`` is 10 K (pint alone reads it as the temperature
+    283.15 K), ``"18 degF"`` 10 K; any other quantity unchanged.
+
+    Examples
+    --------
+    >>> q = unit_registry().Quantity
+    >>> [round(float(as_difference(q(v, u)).to("K").magnitude), 9)
+    ...  for v, u in [(10.0, "degC"), (18.0, "degF"), (10.0, "K")]]
+    [10.0, 10.0, 10.0]
+    """
+    if quantity._is_multiplicative:
+        return quantity
+    return unit_registry().Quantity(quantity.magnitude, f"delta_{quantity.units}")
 
 
 def rotational_speed(magnitude, unit: str):
@@ -355,6 +419,10 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
                 raise InputError(prefix + "Hz is ambiguous for a rotational speed; use rpm, "
                                  "rev/s or rad/s")
             value = revolutions_per_time(value)   # 1/min given for a speed: rpm
+        if dimension == "frequency" and value.dimensionality == dim.dimensionality:
+            value = cycles_per_time(value)        # rad/s, rpm given for a frequency
+        if dimension == "temperature_difference":
+            value = as_difference(value)          # degC, degF: a difference
         if value.dimensionality != dim.dimensionality:
             raise InputError(prefix + f"unit {value.units:~} has dimension "
                              f"{value.dimensionality}, expected {dim.phrase} (e.g. "

@@ -36,8 +36,10 @@ def fit(
     report = summary["report"]
     for name, p in report["parameters"].items():
         se = p["standard_error"]
-        console.print(f"{name} = {p['value']:.6g} ± {se:.2g} (1 s.e., SI)" if se is not None
-                      else f"{name} = {p['value']:.6g} (not determined)")
+        text = p.get("text")     # "17921.7 N/m": the SI value with its unit
+        unit = f" {text.split(' ', 1)[1]}" if isinstance(text, str) and " " in text else ""
+        console.print(f"{name} = {p['value']:.6g} ± {se:.2g}{unit} (1 s.e.)" if se is not None
+                      else f"{name} = {p['value']:.6g}{unit} (not determined)")
     for name, m in report["measurements"].items():
         error = "-" if m["rel_error"] is None else f"{100 * m['rel_error']:+.1f} %"
         r2 = "-" if m["r2"] is None else f"{m['r2']:.3f}"

@@ -207,7 +207,7 @@ def profile_type(dimension: str):
         kind=(Literal["harmonic"], ...), mean=(Q(dimension), 0.0),
         amplitude=(Q(dimension), ...),
         angular_frequency=(Q("angular_speed", gt=0), ...),
-        phase=(Q("dimensionless"), 0.0))
+        phase=(Q("angle"), 0.0))
     piecewise = create_model(
         f"Piecewise{tag}Profile", __base__=_PiecewiseBase,
         kind=(Literal["piecewise"], ...), times=(list[Q("time", ge=0)], ...),

@@ -39,7 +39,7 @@ import pint
 
 from sealsim.errors import InputError
 from sealsim.files import MAX_DATA_BYTES, read_input_text
-from sealsim.units import rotational_speed, ureg
+from sealsim.units import cycles_per_time, rotational_speed, ureg
 
 __all__ = [
     "FORMATS",
@@ -152,6 +152,9 @@ def _si_factor(unit: str, quantity: str, where: str):
     def as_quantity(values):
         if quantity == "speed":  # 1/min, U/min are revolutions per minute (DIN 1301)
             return rotational_speed(values, unit)
+        if quantity == "frequency":  # an angular frequency (rad/s, a rheometer's) is 2π f
+            q = ureg.Quantity(values, unit)
+            return cycles_per_time(q) if q.dimensionality == {"[time]": -1} else q
         return ureg.Quantity(values, unit)
 
     try:

@@ -140,7 +140,7 @@ class CylinderModel(CaseModel):
     dead_volume_cap: Q("volume", gt=0)
     dead_volume_rod: Q("volume", gt=0)
     piston_mass: Q("mass", gt=0)
-    incline: Q("dimensionless", ge=-math.pi / 2, le=math.pi / 2) = 0.0
+    incline: Q("angle", ge=-math.pi / 2, le=math.pi / 2) = 0.0
     temperature: _temperature() | None = None
     seal_temperature: _temperature() | None = None
     end_stops: EndStopModel = EndStopModel()

@@ -435,6 +435,9 @@ class AnalyticContactMap:
                 "reference_temperature_K": self.reference_temperature,
                 "temperature_scaling": self.temperature_scaling,
                 "elastomer": self.elastomer,
+                # the range is part of what a friction table built on the map covers
+                "pressure_range_Pa": list(self.ranges["pressure"]),
+                "temperature_range_K": list(self.ranges["temperature"]),
                 **({"frequency_Hz": self.frequency}
                    if self.temperature_scaling == "modulus" else {})}
 

@@ -139,6 +139,7 @@ def run(system: PneumaticSystem, progress=None) -> PneumaticResult:
     segments = integrate(system, progress, sampler)
     wall = _time.perf_counter() - wall0
     frame, diag = _results.sample(system, sampler)
+    system.check_chamber_volumes(frame["time_s"].to_numpy(), frame["x_m"].to_numpy())
     balances = _results.balances(system, segments)
     seals = system.seals
     notes = ([f"seal {s.name!r}: {n}" for s in seals for n in s.notes] + system.thermal_notes

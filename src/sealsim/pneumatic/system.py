@@ -12,7 +12,7 @@ import weakref
 
 import numpy as np
 
-from sealsim.errors import InputError
+from sealsim.errors import InputError, ModelError
 from sealsim.friction.compiled import law_parameters
 from sealsim.friction.kernels import walther_viscosity_ratio
 from sealsim.friction.hybrid import resolve_stick
@@ -335,6 +335,7 @@ class PneumaticSystem:
             x0 = self.rest_position(self.stroke if u0 > 0 else 0.0, p1, p2)
         v1 = case.cylinder.dead_volume_cap + self.a1 * x0
         v2 = case.cylinder.dead_volume_rod + self.a2 * (self.stroke - x0)
+        self.check_chamber_volumes([0.0], [x0], InputError)
         m1 = float(gas_mass(p1, v1, self.t_amb))
         m2 = float(gas_mass(p2, v2, self.t_amb))
         y = np.zeros(self.n_states)
@@ -347,6 +348,26 @@ class PneumaticSystem:
             y[t0:t0 + len(self.seals)] = [s.temperature for s in self.seals]
             y[t0 + len(self.seals)] = y[t0 + len(self.seals) + 1] = body_temperature(case)
         return y
+
+    def check_chamber_volumes(self, time, position, error=ModelError) -> None:
+        """Refuse positions at which a chamber has no volume left: a piston pressed into an
+        end stop's bumper deeper than the dead volume of that end allows (V = V0 + A·x <= 0;
+        the chamber equations then give negative pressures and absolute zero)."""
+        cyl = self.case.cylinder
+        x = np.asarray(position, dtype=float)
+        for volume, field, area, depth in (
+                (cyl.dead_volume_cap + self.a1 * x, "dead_volume_cap", self.a1, -x),
+                (cyl.dead_volume_rod + self.a2 * (self.stroke - x), "dead_volume_rod", self.a2,
+                 x - self.stroke)):
+            if np.any(volume <= 0.0):
+                k = int(np.argmin(volume))
+                raise error(
+                    f"cylinder.{field}: {getattr(cyl, field) * 1e6:.4g} cm^3 is less than the "
+                    f"volume the piston sweeps in the end stop's bumper (t = "
+                    f"{float(np.asarray(time)[k]):.6g} s: {depth[k] * 1e3:.4g} mm deep, "
+                    f"{depth[k] * area * 1e6:.4g} cm^3); give the real dead volume (ports, "
+                    f"tubing to the valve) or a stiffer cylinder.end_stops.stiffness "
+                    f"({cyl.end_stops.stiffness:.4g} N/m)")
 
     def rest_position(self, end: float, p1: float, p2: float) -> float:
         """Where the piston rests in the end stop at ``end`` with the chamber pressures
