@@ -16,7 +16,7 @@ from typer.testing import CliRunner
 import sealsim
 from sealsim.cases import validate_case
 from sealsim.cli import app
-from sealsim.errors import InputError
+from sealsim.errors import InputError, SealsimWarning
 from sealsim.friction import ContactInputs, Stribeck, Theta
 from sealsim.pneumatic.contact_maps import AnalyticContactMap, FEContactMap
 from sealsim.pneumatic.friction_tables import ContactTribology, friction_table_for
@@ -147,6 +147,22 @@ def test_seal_friction_is_the_steady_force_of_the_law_on_the_map():
     assert list(frame["pressure_bar"]) == [6.0] * 4
     assert frame["temperature_C"].to_numpy() == pytest.approx(40.0, abs=1e-12)
     assert frame.loc[0, "friction_N"] < 0 < frame.loc[1, "friction_N"]  # opposes the motion
+
+
+def test_seal_friction_at_rest_is_zero_with_the_limit_named():
+    # At v = 0 the steady sliding friction has no direction: 0 N, no film or asperity share
+    # (before: film 0 and share 0 -- the asperities carry everything as u -> 0, Eq. (1) of
+    # mixed_lubrication); the note gives the limit towards rest, which for the contact's
+    # Stribeck curve is the boundary friction mu_b * F_N (0.2 * 38.0 N; the table is flat
+    # below 1e-7 m/s, where the viscous term and the film are 1e-3 of it: 2 %).
+    with pytest.warns(SealsimWarning, match=r"velocity 0 m/s \(1 of 2 points\).* tends to "
+                                            r"7\.[45] N"):
+        frame = sealsim.seal_friction({"cord_diameter": "2 mm", "squeeze": 0.12},
+                                      ["0 m/s", "1e-6 m/s"], "6 bar", diameter="12 mm")
+    assert frame.loc[0, "friction_N"] == 0.0
+    assert frame.loc[0, ["film_um", "asperity_share", "transport_mm3_per_m"]].isna().all()
+    assert 0.2 * frame.loc[0, "normal_force_N"] == pytest.approx(7.6, abs=0.05)
+    assert frame.loc[1, "asperity_share"] > 0.95
 
 
 def test_seal_friction_pressure_scaling_and_broadcasting():

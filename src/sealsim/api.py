@@ -273,7 +273,9 @@ def seal_friction(seal, velocity, pressure="0 bar", temperature="20 degC", law=N
         the transport needs an FE map, whose profile gives each stroke its own inlet flank): a
         DataFrame with one row per point if velocity, pressure or temperature is an array
         (broadcast), else a dict.
-        Notes (an illustrative parameter set) as for :func:`lip_seal_torque`:
+        At velocity 0 the friction is 0 N (sliding friction has no direction at rest), the
+        film, share and transport NaN, and a note gives the limit towards rest.
+        Notes (an illustrative parameter set, a velocity of 0) as for :func:`lip_seal_torque`:
         ``result["notes"]``, ``frame.attrs["notes"]`` and
         :class:`~sealsim.errors.SealsimWarning`.
 
@@ -325,11 +327,34 @@ def seal_friction(seal, velocity, pressure="0 bar", temperature="20 degC", law=N
         film_out = table.evaluate(np.abs(v), dp, t)[2]
         film_in = table.evaluate(-np.abs(v), dp, t)[2]
         transport = stroke_transport(diameter_m, 1.0, film_out, film_in)
+    at_rest = v == 0.0
+    if np.any(at_rest):
+        # sliding friction has no direction at rest: the law gives 0; say what it tends to
+        limit = np.abs(np.asarray(friction_law.steady_force(
+            np.full(v.size, REST_LIMIT_SPEED), inputs), dtype=float).reshape(-1))[at_rest]
+        notes = [*notes, f"velocity 0 m/s ({int(at_rest.sum())} of {v.size} points): the "
+                 "steady friction of sliding has no direction at rest and is given as 0 N (no "
+                 "film, share or transport there); as the speed falls to 0 it tends to "
+                 f"{_span(limit, 'N')}; the force a seal at rest holds before it breaks away "
+                 "is the friction law's static friction (sealsim friction run)"]
+        film, share, transport = (np.where(at_rest, np.nan, x) for x in (film, share, transport))
     columns = {"velocity_m_s": v, "pressure_bar": dp / 1e5, "temperature_C": t - ZERO_CELSIUS_K,
                "friction_N": force, "normal_force_N": normal_force,
                "contact_width_mm": width * 1e3, "film_um": film * 1e6, "asperity_share": share,
                "transport_mm3_per_m": transport * 1e9}
     return _rows_out(columns, shape, SEAL_FRICTION_COLUMNS, notes)
+
+
+#: Speed at which :func:`seal_friction` evaluates the limit of the steady friction towards rest
+#: [m/s] (the contact friction tables are flat below their slowest speed, 1e-7 m/s).
+REST_LIMIT_SPEED = 1e-9
+
+
+def _span(values: np.ndarray, unit: str) -> str:
+    """'3.1 N' or '2.9-3.4 N' (3 significant digits)."""
+    low, high = float(np.min(values)), float(np.max(values))
+    return f"{low:.3g} {unit}" if f"{low:.3g}" == f"{high:.3g}" else \
+        f"{low:.3g}-{high:.3g} {unit}"
 
 
 def _contact_table(friction_law, contact_map):
