@@ -71,6 +71,28 @@ def test_unknown_list_element_and_index_are_refused(tmp_path):
     assert "factor 'T'" in msg and "no index 7" in msg
 
 
+def test_a_factor_path_into_a_list_that_set_replaced_is_checked_against_it(tmp_path):
+    # [set] replaces the duty cycle by one step: duty.steps.1 no longer exists.  The factor's
+    # path was checked against the base case's three steps and the run documents then raised
+    # a bare IndexError (traceback).
+    case = ROOT / "examples" / "rotary" / "sump_volume.toml"
+    text = ('[study]\nmodel = "rotary"\ncase = "{case}"\nvariant = "sump_3L"\n'
+            '[set]\n"duty.steps" = [{{ speed = "1000 rpm", duration = "1 min" }}]\n'
+            '[outputs]\nT = "last_step.torque_Nm"\n'
+            '[[factors]]\nname = "speed"\npath = "duty.steps.{index}.speed"\n'
+            'values = ["250 rpm", "500 rpm"]\n')
+    msg = _error(tmp_path, text.format(case=case, index=1))
+    assert "factor 'speed'" in msg and "'duty.steps' has 1 element, no index 1" in msg
+    assert len(_study(tmp_path, text.format(case=case, index=0)).factors) == 1
+
+
+def test_grid_values_with_and_without_a_unit_name_the_bare_one(tmp_path):
+    # was "values: 500.0 rpm cannot be converted to a plain number", blaming the good value
+    msg = _error(tmp_path, GRID_HEAD + '[[factors]]\nname = "fc"\npath = "friction.coulomb_force"'
+                                       '\nvalues = ["1", "2 N"]\n')
+    assert "factor 'fc': values: '1' has no unit, '2 N' has one" in msg
+
+
 def test_normal_distribution_of_a_positive_quantity_needs_bounds(tmp_path):
     msg = _error(tmp_path, '[study]\nmodel = "friction"\ndesign = "monte_carlo"\nsamples = 8\n'
                  + COULOMB_BASE + '[outputs]\nF = "max_friction_force_N"\n'
