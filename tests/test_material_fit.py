@@ -452,6 +452,15 @@ def test_a_curve_that_fits_no_rubber_is_an_input_error_naming_the_wrong_point(tm
         fit_material_file(tmp_path / "fit.toml")
 
 
+def test_dma_temperatures_in_celsius_read_as_kelvin_are_refused_naming_the_unit():
+    # pyvisco's -50 ... 100 degC isotherms with the column's unit given as K: the fit ran and
+    # failed only at the written compound ('glass_transition = 74.691 K is not allowed')
+    f = np.full(3, 1.0)
+    with pytest.raises(InputError, match=r"temperature of point 1 is -50 K .* outside 100-800 K"
+                                         r".*check the temperature column's unit"):
+        DMAData(np.array([-50.0, 20.0, 100.0]), f, f * 1e6, f * 1e5)
+
+
 def test_a_curve_too_soft_for_the_base_rubber_names_the_stress_unit(tmp_path):
     # stresses of a rubber written in kPa instead of MPa: E = 6 kPa, below any plateau the
     # base's master curve can be moved to; was a traceback of brentq ('f(a) and f(b) must

@@ -63,12 +63,17 @@ from scipy.optimize import least_squares, nnls
 from sealsim.calibration.statistics import compare_signals, parameter_statistics
 from sealsim.errors import InputError
 from sealsim.properties.viscoelasticity import prony_loss_modulus, prony_storage_modulus
+from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["GAS_CONSTANT", "DMAData", "PronyFit", "ShiftFit", "fit_prony", "fit_shift_law",
            "isotherm_shifts", "law_rel_rmse", "master_curve", "tan_delta_peak", "tan_delta_peak_temperature"]
 
 #: molar gas constant R [J/(mol K)] (CODATA 2018, exact)
 GAS_CONSTANT = 8.314462618
+
+#: Temperatures a DMA of a polymer is measured at [K] (-173 ... +527 degC; instruments reach
+#: -150 ... +500 degC): a column in degC read as kelvin falls below it
+DMA_TEMPERATURE_RANGE = (100.0, 800.0)
 
 #: isotherms: points within this temperature of each other belong to one [K]
 ISOTHERM_TOLERANCE = 1.5
@@ -105,6 +110,13 @@ class DMAData:
                 k = int(np.flatnonzero(~np.isfinite(a) | (a <= 0))[0])
                 raise InputError(f"{self.name}: {label} of point {k + 1} is {a[k]!r}; it must "
                                  "be finite and > 0 (log-log superposition)")
+        lo, hi = DMA_TEMPERATURE_RANGE
+        outside = ~((t >= lo) & (t <= hi))
+        if np.any(outside):
+            k = int(np.flatnonzero(outside)[0])
+            raise InputError(f"{self.name}: temperature of point {k + 1} is {t[k]:.6g} K "
+                             f"({t[k] - ZERO_CELSIUS_K:.6g} degC), outside {lo:g}-{hi:g} K where a "
+                             "polymer's DMA is measured: check the temperature column's unit")
         for k, v in zip(("temperature", "frequency", "storage", "loss"), arrays):
             object.__setattr__(self, k, v)
 
@@ -300,7 +312,8 @@ def fit_shift_law(temperatures, log_shift, stderr, reference_temperature: float,
     if law == "wlf":
         if t.size < 4:
             raise InputError("a WLF fit needs shift factors at 4 or more temperatures "
-                             f"(found {t.size}); use law = 'arrhenius' or measure more")
+                             f"(found {t.size}): measure frequency sweeps at more "
+                             "temperatures (an Arrhenius law needs 3)")
 
         def shape(x):
             return -x[0] * (t - tr) / (x[1] + t - tr)
