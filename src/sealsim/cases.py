@@ -41,7 +41,7 @@ from pydantic import (
 
 from sealsim.errors import InputError
 from sealsim.files import read_input_text
-from sealsim.units import DIMENSIONS, format_quantity, parse_quantity
+from sealsim.units import DIMENSIONS, format_like, format_quantity, parse_quantity
 
 __all__ = [
     "CASE_KINDS",
@@ -116,7 +116,8 @@ def Q(dimension: str, *, gt: float | None = None, ge: float | None = None,  # no
         for bound, ok, word in ((gt, lambda b: si > b, ">"), (ge, lambda b: si >= b, ">="),
                                 (lt, lambda b: si < b, "<"), (le, lambda b: si <= b, "<=")):
             if bound is not None and not ok(bound):
-                raise ValueError(f"{value!r} is out of range: must be {word} {bound_text(bound)}")
+                raise ValueError(f"{value!r} is out of range: must be {word} "
+                                 f"{format_like(bound, dimension, value)}")
         return si
 
     rng = [f"{w} {bound_text(b)}" for b, w in ((gt, ">"), (ge, ">="), (lt, "<"), (le, "<="))
