@@ -227,6 +227,32 @@ def test_sobol_indices_of_an_additive_model_match_the_variance_shares(tmp_path):
     assert abs(dist["P50"] - 25.0) < 0.5
 
 
+def test_sobol_indices_from_too_few_samples_are_noted_and_the_cli_prints_the_notes(tmp_path):
+    # N = 2 base samples (8 runs) of the additive model above: SALib's intervals span more
+    # than the 0-1 an index can take; the indices were written and plotted without a word,
+    # and the CLI printed none of summary.json's notes.  N = 64 (above): no such note.
+    from typer.testing import CliRunner
+
+    from sealsim.cli import app
+
+    text = ('[study]\nmodel = "friction"\ndesign = "sobol"\nsamples = N\nseed = 7\n'
+            + COULOMB_BASE + '[outputs]\nF = "max_friction_force_N"\n'
+            '[[factors]]\nname = "fc"\npath = "friction.coulomb_force"\ndistribution = '
+            '"uniform"\nlower = "10 N"\nupper = "30 N"\n'
+            '[[factors]]\nname = "c"\npath = "friction.viscous_coefficient"\ndistribution = '
+            '"uniform"\nlower = "0 N*s/m"\nupper = "100 N*s/m"\n')
+    few = run_study(_study(tmp_path, text.replace("= N", "= 2")), tmp_path / "few", workers=0)
+    assert any("sensitivity indices are uncertain" in n and "(F)" in n and "from 8 runs" in n
+               for n in few.summary["notes"])
+    many = run_study(_study(tmp_path, text.replace("= N", "= 64"), "many.toml"), tmp_path / "many",
+                     workers=0)
+    assert not any("uncertain" in n for n in many.summary["notes"])
+    result = CliRunner().invoke(app, ["study", "run", str(tmp_path / "study.toml"), "--out",
+                                      str(tmp_path / "cli"), "--workers", "0"])
+    assert result.exit_code == 0, result.output
+    assert "note: the sensitivity indices are uncertain" in " ".join(result.output.split())
+
+
 def test_series_are_resampled_on_a_common_time_grid(tmp_path):
     text = GRID_HEAD + (
         '[[factors]]\nname = "fc"\npath = "friction.coulomb_force"\nvalues = ["5 N", "7 N"]\n'
