@@ -437,19 +437,28 @@ def test_fitted_compound_gives_the_fe_force_of_the_same_constants_by_hand(tmp_pa
     assert forces[0] == pytest.approx(forces[1], rel=1e-9, abs=0.0)
 
 
-def test_a_curve_that_fits_no_rubber_is_an_input_error_naming_the_wrong_point(tmp_path):
-    # a negative stress in tension (a sign slip in one row) gave Mooney-Rivlin a negative
-    # initial shear modulus and the compound writer a traceback ('math domain error')
-    (tmp_path / "u.csv").write_text("stretch,stress\n1.0,0\n1.5,-0.5\n2.0,0.8\n2.5,1.2\n")
-    (tmp_path / "fit.toml").write_text(
+def _uniaxial_fit_file(folder, rows: str, deformation: tuple[str, str], stress_unit: str):
+    """A Mooney-Rivlin fit file on one uniaxial curve ``rows`` (CSV below the header
+    ``<deformation column>,stress``) on the catalogue NBR."""
+    column, unit = deformation
+    (folder / "u.csv").write_text(f"{column},stress\n{rows}")
+    (folder / "fit.toml").write_text(
         '[compound]\nname = "my_nbr"\nbase = "NBR"\nreference_temperature = "23 degC"\n'
         '[hyperelastic]\nmodel = "mooney_rivlin"\n[[hyperelastic.curves]]\nname = "u"\n'
         'mode = "uniaxial"\nfile = "u.csv"\ndelimiter = ","\nheader = true\n'
-        'columns = { stretch = { column = "stretch", unit = "1" }, '
-        'stress = { column = "stress", unit = "MPa" } }\n')
+        f'columns = {{ {column} = {{ column = "{column}", unit = "{unit}" }}, '
+        f'stress = {{ column = "stress", unit = "{stress_unit}" }} }}\n')
+    return folder / "fit.toml"
+
+
+def test_a_curve_that_fits_no_rubber_is_an_input_error_naming_the_wrong_point(tmp_path):
+    # a negative stress in tension (a sign slip in one row) gave Mooney-Rivlin a negative
+    # initial shear modulus and the compound writer a traceback ('math domain error')
+    path = _uniaxial_fit_file(tmp_path, "1.0,0\n1.5,-0.5\n2.0,0.8\n2.5,1.2\n", ("stretch", "1"),
+                              "MPa")
     with pytest.raises(InputError, match=r"initial shear modulus of -[\d.]+ MPa \(<= 0\).*"
                                          r"curve 'u' at stretch 1.5: -0.5 MPa"):
-        fit_material_file(tmp_path / "fit.toml")
+        fit_material_file(path)
 
 
 def test_dma_temperatures_in_celsius_read_as_kelvin_are_refused_naming_the_unit():
@@ -465,17 +474,12 @@ def test_a_curve_too_soft_for_the_base_rubber_names_the_stress_unit(tmp_path):
     # stresses of a rubber written in kPa instead of MPa: E = 6 kPa, below any plateau the
     # base's master curve can be moved to; was a traceback of brentq ('f(a) and f(b) must
     # have different signs')
-    (tmp_path / "u.csv").write_text("strain,stress\n0,0\n10,0.5\n50,1.5\n100,2.2\n")
-    (tmp_path / "fit.toml").write_text(
-        '[compound]\nname = "my_nbr"\nbase = "NBR"\nreference_temperature = "23 degC"\n'
-        '[hyperelastic]\nmodel = "mooney_rivlin"\n[[hyperelastic.curves]]\nname = "u"\n'
-        'mode = "uniaxial"\nfile = "u.csv"\ndelimiter = ","\nheader = true\n'
-        'columns = { strain = { column = "strain", unit = "%" }, '
-        'stress = { column = "stress", unit = "kPa" } }\n')
+    path = _uniaxial_fit_file(tmp_path, "0,0\n10,0.5\n50,1.5\n100,2.2\n", ("strain", "%"),
+                              "kPa")
     with pytest.raises(InputError, match=r"Young's modulus 0.0057\d* MPa at 23 degC is beyond "
                                          r"what the master curve of compound.base NBR .*"
                                          r"stress unit"):
-        fit_material_file(tmp_path / "fit.toml")
+        fit_material_file(path)
 
 
 def test_ogden_compound_runs_in_the_fe(treloar, tmp_path):
