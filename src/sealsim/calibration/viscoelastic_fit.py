@@ -66,7 +66,8 @@ from sealsim.properties.viscoelasticity import prony_loss_modulus, prony_storage
 from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["GAS_CONSTANT", "DMAData", "PronyFit", "ShiftFit", "fit_prony", "fit_shift_law",
-           "isotherm_shifts", "law_rel_rmse", "master_curve", "tan_delta_peak", "tan_delta_peak_temperature"]
+           "isotherm_shifts", "law_rel_rmse", "master_curve", "tan_delta_peak",
+           "tan_delta_peak_temperature"]
 
 #: molar gas constant R [J/(mol K)] (CODATA 2018, exact)
 GAS_CONSTANT = 8.314462618
