@@ -339,6 +339,10 @@ def test_pyvisco_dma_master_curve_is_at_its_reference_temperature(pyvisco_fit):
     shift = pyvisco_fit.shift
     assert abs(np.interp(shift.reference_temperature, shift.temperatures,
                          shift.log_shift)) < 0.01
+    # their errors too: the sums of the pairwise increments to T_r (the random walk from the
+    # coldest isotherm, reversed): 0 at 100 degC, largest at -50 degC
+    assert shift.log_shift_stderr[-1] == 0.0
+    assert shift.log_shift_stderr[0] == pytest.approx(np.max(shift.log_shift_stderr))
     dma = pyvisco_fit.report["modes"]["dma"]
     # the compound on every measured point: 10.6 %, against 6.9 % of the series on the master
     # curve; WLF misses the shifts below T_g by up to 3 decades, where E' is nearly flat

@@ -339,7 +339,8 @@ def fit_shift_law(temperatures, log_shift, stderr, reference_temperature: float,
                             bounds=(lower, upper))
         stats = parameter_statistics(res.jac, res.fun, values=res.x, names=names,
                                      min_residual_variance=1.0)
-        x = np.r_[res.x, _reference_offset(t, y, w, tr, shape(res.x))]
+        offset, se = _reference_offset(t, y, se, w, tr, shape(res.x))
+        x = np.r_[res.x, offset]
         sx = np.r_[stats["standard_errors"], np.nan]
         names = names + ["offset"]
         stats["identifiable"] = np.r_[stats["identifiable"], True]
@@ -393,14 +394,17 @@ def law_rel_rmse(data: DMAData, shift: ShiftFit, prony: PronyFit) -> dict[str, f
                                          ("loss", prony.loss(f_r), loss))}
 
 
-def _reference_offset(t, y, w, tr: float, law) -> float:
-    """Offset of cumulative shift factors ``y`` [decades] at the temperatures ``t`` [K]: their
-    value at the reference temperature ``tr`` where the isotherms span it (an end isotherm
-    within :data:`ISOTHERM_TOLERANCE` counts as at ``tr``), else the weighted mean (weights
-    ``w``) of their distance from the fitted ``law`` values."""
+def _reference_offset(t, y, se, w, tr: float, law) -> tuple[float, np.ndarray]:
+    """Offset of cumulative shift factors ``y`` [decades] at the temperatures ``t`` [K] and
+    their standard errors ``se`` referred to it.  Where the isotherms span the reference
+    temperature ``tr`` (an end isotherm within :data:`ISOTHERM_TOLERANCE` counts as at
+    ``tr``): their value there, and the errors of the sums of the pairwise increments between
+    each isotherm and ``tr``, √|se² − se²(tr)| (0 at ``tr``); else the weighted mean (weights
+    ``w``) of their distance from the fitted ``law`` values, errors as given."""
     if t.min() - ISOTHERM_TOLERANCE <= tr <= t.max() + ISOTHERM_TOLERANCE:
-        return float(np.interp(tr, t, y))
-    return float(np.sum(w ** 2 * (y - law)) / np.sum(w ** 2))
+        return (float(np.interp(tr, t, y)),
+                np.sqrt(np.abs(se ** 2 - np.interp(tr, t, se ** 2))))
+    return float(np.sum(w ** 2 * (y - law)) / np.sum(w ** 2)), se
 
 
 def fit_prony(frequency, storage, loss, terms_per_decade: float = 2.0,
