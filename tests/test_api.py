@@ -80,6 +80,23 @@ def test_lip_seal_torque_options_reach_the_case():
     assert r["torque_Nm"] == steady_state(case, 1000 * RPM)["torque_Nm"]
 
 
+@pytest.mark.parametrize(("case", "words"), [
+    ({"seal": {"material": "FKM"}}, ["case: seal.material = 'FKM'", "argument material="]),
+    ({"seal": {"shaft_diameter": "100 mm"}}, ["seal.shaft_diameter", "shaft_diameter="]),
+    ({"environment": {"sump_temperature": "90 degC"}}, ["sump_temperature="]),
+    ({"oil": {"name": "VG68-mineral"}}, ["[oil] is the argument oil="]),
+])
+def test_lip_seal_torque_refuses_a_case_field_that_an_argument_sets(case, words):
+    # One of the two was dropped without a word: the case's seal.material won over
+    # material='HNBR', the argument shaft_diameter over the case's, the argument
+    # sump_temperature over the case's.
+    with pytest.raises(InputError) as info:
+        sealsim.lip_seal_torque("60 mm", "1500 rpm", "VG220", "70 degC", material="HNBR",
+                                case=case)
+    for word in words:
+        assert word in str(info.value)
+
+
 @pytest.mark.parametrize(("kwargs", "words"), [
     ({"speed": 1500}, ["speed", "no unit", "rpm or rad/s"]),
     ({"speed": [1000, 2000]}, ["speed", "without a unit"]),

@@ -103,6 +103,21 @@ def _set(driver, element_id, value):
         element.send_keys(value)
 
 
+def test_an_uploaded_case_that_refers_to_another_file_is_told_to_use_the_command_line(
+        tmp_path, monkeypatch):
+    # the upload runs alone in its folder: "duty.csv file 'duty.csv' does not exist" left the
+    # user to guess why a file next to their case was not found
+    from sealsim.app.jobs import CASE_FILE, _run_case
+    from sealsim.errors import InputError
+
+    monkeypatch.chdir(tmp_path)          # _run_case enters the job's folder; restored after
+    (tmp_path / CASE_FILE).write_text('[seal]\nshaft_diameter = "80 mm"\n'
+                                      '[duty]\ncsv = "duty.csv"\n')
+    with pytest.raises(InputError, match=r"duty.csv' does not exist \(the app runs an uploaded "
+                                         r"case alone.*sealsim rotary run case.toml --out DIR"):
+        _run_case(tmp_path, None)
+
+
 @pytest.mark.filterwarnings("ignore::sealsim.tribology.film.FilmRangeWarning")
 def test_the_lip_seal_pages_case_file_ends_at_the_pages_operating_point():
     # The page offers its calculation as a rotary case held until steady.  With a free sump

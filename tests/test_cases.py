@@ -142,6 +142,22 @@ def test_out_of_range_names_path_value_and_range():
     assert "> 5 mm" in msg  # the bound, in display units
 
 
+def test_out_of_range_bound_is_in_the_unit_written_and_a_percent_fraction_is_explained():
+    msg = _error(_set(VALID, ("seal", "shaft_diameter"), "0.1 in"))
+    assert "'0.1 in' is out of range: must be > 0.19685 in" in msg    # was "> 5 mm"
+
+    class Gland(CaseModel):
+        squeeze: Q("dimensionless", gt=0.0, lt=0.5)
+
+    with pytest.raises(InputError) as info:       # 12 meant as 12 %
+        validate_case(Gland, {"squeeze": 12})
+    assert "must be < 0.5 (a fraction: 0.12 or '12 %' for 12 %)" in str(info.value)
+    assert validate_case(Gland, {"squeeze": "12 %"}).squeeze == pytest.approx(0.12)
+    with pytest.raises(InputError) as info:       # beyond the bound, but no percentage
+        validate_case(Gland, {"squeeze": 0.7})
+    assert "fraction" not in str(info.value)
+
+
 def test_wrong_dimension_names_path_and_dimension():
     msg = _error(_set(VALID, ("oil", "sump_volume"), "0.2 kg"))
     assert "oil.sump_volume" in msg and "'0.2 kg'" in msg

@@ -282,6 +282,9 @@ def test_material_show_default_table_is_the_service_range():
 def test_material_show_table_and_frequency():
     out = ok("material", "show", "HNBR", "--frequency", "100").stdout
     assert "E(T) at 100 Hz" in out and "[MPa]" in out and "Mooney-Rivlin" in out
+    # at the WLF reference temperature log10 a_T is 0, shown so (it read "-0.00")
+    out = ok("material", "show", "NBR", "-t", "-25").stdout
+    assert "1.000e+00        0.00" in out and "-0.00" not in out
 
 
 def test_material_outside_service_range_is_a_note():

@@ -154,3 +154,17 @@ def test_rotary_inputs_out_of_range_are_clipped_and_me_settles(rotary_fmu):
     assert result["T_contact"][0] == pytest.approx(313.15, abs=1e-9)
     # after > 20 slow time constants: steady within the solver tolerance
     assert result["T_contact"][-1] == pytest.approx(result["T_contact_steady"][-1], abs=1e-3)
+
+
+def test_a_steady_map_beyond_the_rubber_names_the_fmu_fields_to_lower(plain_case):
+    # 20000 rpm over a 120 degC sump: the NBR contact would pass 150 degC.  The rotary
+    # model's message said "try a lower speed" but not which field of the FMU case sets it.
+    from sealsim.errors import ModelError
+    from sealsim.fmu.rotary_export import rotary_maps
+
+    with pytest.raises(ModelError, match=r"outside the .* NBR model covers.*rotary.max_speed = "
+                                         r"20000 rpm and rotary.sump_temperatures up to 120 "
+                                         r"degC: lower them"):
+        rotary_maps(plain_case, speed_max=20000 * RPM, speed_points=3,
+                    sump_temperatures=[SUMPS[0], SUMPS[-1]], torque_speed_min=1 * RPM,
+                    lag_points=1)

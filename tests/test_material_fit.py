@@ -339,6 +339,10 @@ def test_pyvisco_dma_master_curve_is_at_its_reference_temperature(pyvisco_fit):
     shift = pyvisco_fit.shift
     assert abs(np.interp(shift.reference_temperature, shift.temperatures,
                          shift.log_shift)) < 0.01
+    # their errors too: the sums of the pairwise increments to T_r (the random walk from the
+    # coldest isotherm, reversed): 0 at 100 degC, largest at -50 degC
+    assert shift.log_shift_stderr[-1] == 0.0
+    assert shift.log_shift_stderr[0] == pytest.approx(np.max(shift.log_shift_stderr))
     dma = pyvisco_fit.report["modes"]["dma"]
     # the compound on every measured point: 10.6 %, against 6.9 % of the series on the master
     # curve; WLF misses the shifts below T_g by up to 3 decades, where E' is nearly flat
@@ -437,36 +441,49 @@ def test_fitted_compound_gives_the_fe_force_of_the_same_constants_by_hand(tmp_pa
     assert forces[0] == pytest.approx(forces[1], rel=1e-9, abs=0.0)
 
 
-def test_a_curve_that_fits_no_rubber_is_an_input_error_naming_the_wrong_point(tmp_path):
-    # a negative stress in tension (a sign slip in one row) gave Mooney-Rivlin a negative
-    # initial shear modulus and the compound writer a traceback ('math domain error')
-    (tmp_path / "u.csv").write_text("stretch,stress\n1.0,0\n1.5,-0.5\n2.0,0.8\n2.5,1.2\n")
-    (tmp_path / "fit.toml").write_text(
+def _uniaxial_fit_file(folder, rows: str, deformation: tuple[str, str], stress_unit: str):
+    """A Mooney-Rivlin fit file on one uniaxial curve ``rows`` (CSV below the header
+    ``<deformation column>,stress``) on the catalogue NBR."""
+    column, unit = deformation
+    (folder / "u.csv").write_text(f"{column},stress\n{rows}")
+    (folder / "fit.toml").write_text(
         '[compound]\nname = "my_nbr"\nbase = "NBR"\nreference_temperature = "23 degC"\n'
         '[hyperelastic]\nmodel = "mooney_rivlin"\n[[hyperelastic.curves]]\nname = "u"\n'
         'mode = "uniaxial"\nfile = "u.csv"\ndelimiter = ","\nheader = true\n'
-        'columns = { stretch = { column = "stretch", unit = "1" }, '
-        'stress = { column = "stress", unit = "MPa" } }\n')
+        f'columns = {{ {column} = {{ column = "{column}", unit = "{unit}" }}, '
+        f'stress = {{ column = "stress", unit = "{stress_unit}" }} }}\n')
+    return folder / "fit.toml"
+
+
+def test_a_curve_that_fits_no_rubber_is_an_input_error_naming_the_wrong_point(tmp_path):
+    # a negative stress in tension (a sign slip in one row) gave Mooney-Rivlin a negative
+    # initial shear modulus and the compound writer a traceback ('math domain error')
+    path = _uniaxial_fit_file(tmp_path, "1.0,0\n1.5,-0.5\n2.0,0.8\n2.5,1.2\n", ("stretch", "1"),
+                              "MPa")
     with pytest.raises(InputError, match=r"initial shear modulus of -[\d.]+ MPa \(<= 0\).*"
                                          r"curve 'u' at stretch 1.5: -0.5 MPa"):
-        fit_material_file(tmp_path / "fit.toml")
+        fit_material_file(path)
+
+
+def test_dma_temperatures_in_celsius_read_as_kelvin_are_refused_naming_the_unit():
+    # pyvisco's -50 ... 100 degC isotherms with the column's unit given as K: the fit ran and
+    # failed only at the written compound ('glass_transition = 74.691 K is not allowed')
+    f = np.full(3, 1.0)
+    with pytest.raises(InputError, match=r"temperature of point 1 is -50 K .* outside 100-800 K"
+                                         r".*check the temperature column's unit"):
+        DMAData(np.array([-50.0, 20.0, 100.0]), f, f * 1e6, f * 1e5)
 
 
 def test_a_curve_too_soft_for_the_base_rubber_names_the_stress_unit(tmp_path):
     # stresses of a rubber written in kPa instead of MPa: E = 6 kPa, below any plateau the
     # base's master curve can be moved to; was a traceback of brentq ('f(a) and f(b) must
     # have different signs')
-    (tmp_path / "u.csv").write_text("strain,stress\n0,0\n10,0.5\n50,1.5\n100,2.2\n")
-    (tmp_path / "fit.toml").write_text(
-        '[compound]\nname = "my_nbr"\nbase = "NBR"\nreference_temperature = "23 degC"\n'
-        '[hyperelastic]\nmodel = "mooney_rivlin"\n[[hyperelastic.curves]]\nname = "u"\n'
-        'mode = "uniaxial"\nfile = "u.csv"\ndelimiter = ","\nheader = true\n'
-        'columns = { strain = { column = "strain", unit = "%" }, '
-        'stress = { column = "stress", unit = "kPa" } }\n')
+    path = _uniaxial_fit_file(tmp_path, "0,0\n10,0.5\n50,1.5\n100,2.2\n", ("strain", "%"),
+                              "kPa")
     with pytest.raises(InputError, match=r"Young's modulus 0.0057\d* MPa at 23 degC is beyond "
                                          r"what the master curve of compound.base NBR .*"
                                          r"stress unit"):
-        fit_material_file(tmp_path / "fit.toml")
+        fit_material_file(path)
 
 
 def test_ogden_compound_runs_in_the_fe(treloar, tmp_path):

@@ -466,7 +466,9 @@ def _pneumatic(tmp_path, *edits):
     ([('temperature = "25 degC"          # ambient and supply air', 'temperature = "5000 K"\n'
        'supply_temperature = "-100 degC"'),
       ('temperature = "25 degC"          # barrel', 'temperature = "5000 K"')],
-     ["air.temperature", "air.supply_temperature", "cylinder.temperature", "200 degC"]),
+     # the bound in the unit the value was written in
+     ["air.temperature", "air.supply_temperature", "cylinder.temperature", "<= 473.15 K",
+      ">= -60 degC"]),
 ])
 def test_pneumatic_limits_name_the_field_and_how_to_raise_them(edits, fields, tmp_path):
     case = _pneumatic(tmp_path, *edits)

@@ -110,6 +110,12 @@ def test_states_plot_of_a_cooling_run_is_over_temperature():
     # from the installed and held state on: the squeeze ramp at 20 degC is not drawn
     assert list(fig.axes[0].lines[0].get_xdata()) == temperature[2:]
     plt.close(fig)
+    # a lip bonded to its case has no groove bottom (its columns hold 0): not drawn as a
+    # contact force of 0 N (radial_lip_80's states.png had a flat 'groove bottom' line)
+    lip = plot_states(frame, groove_bottom=False)
+    assert [line.get_label() for line in lip.axes[0].lines] == ["sealing surface F_N"]
+    assert [line.get_label() for line in lip.axes[2].lines] == ["sealing surface"]
+    plt.close(lip)
 
 
 def test_map_plots_label_temperatures_given_in_degf_without_conversion_noise():

@@ -2,6 +2,7 @@
 solve: each test runs in well under a second or two)."""
 
 import math
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -66,7 +67,7 @@ def test_clockwise_polyline_is_turned_counter_clockwise():
 def _write_dxf(path, build):
     import ezdxf
 
-    doc = ezdxf.new()
+    doc = ezdxf.new(units=4)      # drawn in millimetres, and the header says so
     build(doc.modelspace())
     doc.saveas(path)
     return path
@@ -87,6 +88,32 @@ def test_dxf_polyline_with_bulge_and_chain_of_lines_and_arcs(tmp_path):
         msp.add_arc((1.5, 12), 1.5, 0, 180)
     c = contour_from_dxf(_write_dxf(tmp_path / "c.dxf", chain))
     assert c.area == pytest.approx(expected, rel=1e-9)
+
+
+def test_a_drawing_in_inches_is_not_read_as_millimetres(tmp_path):
+    # The D-ring of examples/structure/user_profile.toml drawn in inches, the header saying so
+    # ($INSUNITS = 1): it was read as millimetres (a 0.12 x 0.12 mm ring, refused only later
+    # as 'stretched by 2440 %'); now the case must say which unit its numbers are in.
+    import ezdxf
+
+    doc = ezdxf.new(units=1)
+    points = [(1.5, 13.0, 0.0), (-1.5, 13.0, 0.0), (-1.5, 11.5, 1.0), (1.5, 11.5, 0.0)]
+    doc.modelspace().add_lwpolyline([(z / 25.4, r / 25.4, 0, 0, b) for z, r, b in points],
+                                    format="xyseb", close=True)
+    doc.saveas(tmp_path / "dring.dxf")
+    examples = Path(__file__).resolve().parents[1] / "examples" / "structure"
+    text = (examples / "user_profile.toml").read_text()
+    text = text.replace('points_unit = "mm"\n', "").replace(
+        'bulges = [0.0, 0.0, 1.0, 0.0]', "").replace(
+        "points = [[1.5, 13.0], [-1.5, 13.0], [-1.5, 11.5], [1.5, 11.5]]", 'dxf = "dring.dxf"')
+    (tmp_path / "case.toml").write_text(text)
+    with pytest.raises(InputError, match=r"declares its unit as 'in' \(\$INSUNITS\); give "
+                                         r"seal.dxf_unit = 'in'"):
+        load_structure_cases(tmp_path / "case.toml")
+    (tmp_path / "case.toml").write_text(text.replace('dxf = "dring.dxf"',
+                                                     'dxf = "dring.dxf"\ndxf_unit = "in"'))
+    seal = load_structure_cases(tmp_path / "case.toml")["base"].seal
+    assert seal.points[0] == pytest.approx((1.5, 13.0), rel=1e-9)    # in points_unit mm
 
 
 def test_dxf_errors(tmp_path):

@@ -71,6 +71,28 @@ def test_unknown_list_element_and_index_are_refused(tmp_path):
     assert "factor 'T'" in msg and "no index 7" in msg
 
 
+def test_a_factor_path_into_a_list_that_set_replaced_is_checked_against_it(tmp_path):
+    # [set] replaces the duty cycle by one step: duty.steps.1 no longer exists.  The factor's
+    # path was checked against the base case's three steps and the run documents then raised
+    # a bare IndexError (traceback).
+    case = ROOT / "examples" / "rotary" / "sump_volume.toml"
+    text = ('[study]\nmodel = "rotary"\ncase = "{case}"\nvariant = "sump_3L"\n'
+            '[set]\n"duty.steps" = [{{ speed = "1000 rpm", duration = "1 min" }}]\n'
+            '[outputs]\nT = "last_step.torque_Nm"\n'
+            '[[factors]]\nname = "speed"\npath = "duty.steps.{index}.speed"\n'
+            'values = ["250 rpm", "500 rpm"]\n')
+    msg = _error(tmp_path, text.format(case=case, index=1))
+    assert "factor 'speed'" in msg and "'duty.steps' has 1 element, no index 1" in msg
+    assert len(_study(tmp_path, text.format(case=case, index=0)).factors) == 1
+
+
+def test_grid_values_with_and_without_a_unit_name_the_bare_one(tmp_path):
+    # was "values: 500.0 rpm cannot be converted to a plain number", blaming the good value
+    msg = _error(tmp_path, GRID_HEAD + '[[factors]]\nname = "fc"\npath = "friction.coulomb_force"'
+                                       '\nvalues = ["1", "2 N"]\n')
+    assert "factor 'fc': values: '1' has no unit, '2 N' has one" in msg
+
+
 def test_normal_distribution_of_a_positive_quantity_needs_bounds(tmp_path):
     msg = _error(tmp_path, '[study]\nmodel = "friction"\ndesign = "monte_carlo"\nsamples = 8\n'
                  + COULOMB_BASE + '[outputs]\nF = "max_friction_force_N"\n'
@@ -203,6 +225,32 @@ def test_sobol_indices_of_an_additive_model_match_the_variance_shares(tmp_path):
     dist = result.distribution.iloc[0]
     # exact percentiles of U(10,30) + U(0,10): median 25 N (symmetric)
     assert abs(dist["P50"] - 25.0) < 0.5
+
+
+def test_sobol_indices_from_too_few_samples_are_noted_and_the_cli_prints_the_notes(tmp_path):
+    # N = 2 base samples (8 runs) of the additive model above: SALib's intervals span more
+    # than the 0-1 an index can take; the indices were written and plotted without a word,
+    # and the CLI printed none of summary.json's notes.  N = 64 (above): no such note.
+    from typer.testing import CliRunner
+
+    from sealsim.cli import app
+
+    text = ('[study]\nmodel = "friction"\ndesign = "sobol"\nsamples = N\nseed = 7\n'
+            + COULOMB_BASE + '[outputs]\nF = "max_friction_force_N"\n'
+            '[[factors]]\nname = "fc"\npath = "friction.coulomb_force"\ndistribution = '
+            '"uniform"\nlower = "10 N"\nupper = "30 N"\n'
+            '[[factors]]\nname = "c"\npath = "friction.viscous_coefficient"\ndistribution = '
+            '"uniform"\nlower = "0 N*s/m"\nupper = "100 N*s/m"\n')
+    few = run_study(_study(tmp_path, text.replace("= N", "= 2")), tmp_path / "few", workers=0)
+    assert any("sensitivity indices are uncertain" in n and "(F)" in n and "from 8 runs" in n
+               for n in few.summary["notes"])
+    many = run_study(_study(tmp_path, text.replace("= N", "= 64"), "many.toml"), tmp_path / "many",
+                     workers=0)
+    assert not any("uncertain" in n for n in many.summary["notes"])
+    result = CliRunner().invoke(app, ["study", "run", str(tmp_path / "study.toml"), "--out",
+                                      str(tmp_path / "cli"), "--workers", "0"])
+    assert result.exit_code == 0, result.output
+    assert "note: the sensitivity indices are uncertain" in " ".join(result.output.split())
 
 
 def test_series_are_resampled_on_a_common_time_grid(tmp_path):

@@ -113,7 +113,8 @@ def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] = "VG68-
     case : mapping, optional
         Any further fields of a rotary case (:class:`~sealsim.rotary.case.RotaryCase`), as
         nested tables with units as in a case file: ``{"environment": {"sump_volume":
-        "0.2 L"}, "friction": {...}}``.
+        "0.2 L"}, "friction": {...}}``.  A field that an argument sets (``seal.material``,
+        ``environment.sump_temperature``, the ``oil`` table, ...) is refused here.
 
     Returns
     -------
@@ -174,6 +175,7 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
         if value is not None:
             seal[name] = _si_text(_scalar(value, dimension, name), unit)
     oil_table = {"name": oil} if isinstance(oil, str) else dict(oil)
+    _refuse_argument_fields(case, LIP_SEAL_ARGUMENT_FIELDS)
     base = apply_overrides({"seal": seal, "oil": oil_table}, dict(case or {}))
 
     cases: dict[tuple, RotaryCase] = {}  # one case per geometry and temperatures
@@ -199,6 +201,33 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
     notes = operating_notes(first, lip_seal_friction(first).elastomer,
                             [r["T_contact_C"] for r in rows], films)
     return _rows_out(rows, shape, LIP_SEAL_COLUMNS, notes)
+
+
+#: Case fields that arguments of :func:`lip_seal_torque` set (table -> {field: argument});
+#: ``None``: the whole table.
+LIP_SEAL_ARGUMENT_FIELDS = {
+    "seal": {"shaft_diameter": "shaft_diameter", "material": "material",
+             "lip_style": "lip_style", "radial_force": "radial_force",
+             "contact_width": "contact_width", "mounting_temperature": "mounting_temperature"},
+    "oil": None,
+    "environment": {"sump_temperature": "sump_temperature",
+                    "ambient_temperature": "ambient_temperature"}}
+
+
+def _refuse_argument_fields(case: Mapping[str, Any] | None,
+                            owned: dict[str, dict[str, str] | None]) -> None:
+    """An InputError if ``case`` sets a field that an argument sets (one of the two would be
+    ignored without a word)."""
+    for table, fields in owned.items():
+        given = (case or {}).get(table)
+        if given is None:
+            continue
+        if fields is None:
+            raise InputError(f"case: [{table}] is the argument {table}=...; give it there")
+        both = sorted(set(given) & set(fields)) if isinstance(given, Mapping) else []
+        if both:
+            raise InputError(f"case: {table}.{both[0]} = {given[both[0]]!r} is the argument "
+                             f"{fields[both[0]]}=...; give it there (not both)")
 
 
 def seal_friction(seal, velocity, pressure="0 bar", temperature="20 degC", law=None, *,

@@ -41,7 +41,7 @@ from pydantic import (
 
 from sealsim.errors import InputError
 from sealsim.files import read_input_text
-from sealsim.units import DIMENSIONS, format_quantity, parse_quantity
+from sealsim.units import DIMENSIONS, format_like, format_quantity, parse_quantity
 
 __all__ = [
     "CASE_KINDS",
@@ -116,7 +116,13 @@ def Q(dimension: str, *, gt: float | None = None, ge: float | None = None,  # no
         for bound, ok, word in ((gt, lambda b: si > b, ">"), (ge, lambda b: si >= b, ">="),
                                 (lt, lambda b: si < b, "<"), (le, lambda b: si <= b, "<=")):
             if bound is not None and not ok(bound):
-                raise ValueError(f"{value!r} is out of range: must be {word} {bound_text(bound)}")
+                # a fraction (squeeze 0.12) given in percent (12): say how to write it
+                percent = (dimension == "dimensionless" and word in ("<", "<=") and bound <= 1.0
+                           and 1.0 < si <= 100.0 and not isinstance(value, str))
+                raise ValueError(f"{value!r} is out of range: must be {word} "
+                                 f"{format_like(bound, dimension, value)}"
+                                 + (f" (a fraction: {si / 100:g} or '{si:g} %' for {si:g} %)"
+                                    if percent else ""))
         return si
 
     rng = [f"{w} {bound_text(b)}" for b, w in ((gt, ">"), (ge, ">="), (lt, "<"), (le, "<="))

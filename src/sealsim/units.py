@@ -363,6 +363,31 @@ def format_quantity(value: float, dimension: str) -> str:
     return f"{magnitude:.12g} {unit}"
 
 
+def format_like(value: float, dimension: str, given) -> str:
+    """An SI value in the unit a quantity string ``given`` was written in (a range bound in
+    the user's unit), else :func:`format_quantity`'s display unit; angular speeds always in
+    the display unit (pint reads ``1/min`` as radians).
+
+    Examples
+    --------
+    >>> format_like(0.0, "pressure", "-0.7 MPa"), format_like(1e-6, "volume", "0 L")
+    ('0 MPa', '0.001 L')
+    >>> format_like(200.0, "temperature", "-400 degF"), format_like(0.0, "pressure", 5)
+    ('-99.67 degF', '0 bar')
+    """
+    import pint
+
+    match = _NUMBER.match(given) if isinstance(given, str) else None
+    unit = match.group(2).strip() if match else ""
+    if unit and dimension not in ("angular_speed", "dimensionless"):
+        try:
+            magnitude = unit_registry().Quantity(value, DIMENSIONS[dimension].si_unit).to(unit)
+            return f"{float(magnitude.magnitude):.6g} {unit}"
+        except (pint.errors.PintError, AttributeError, TypeError, ValueError, AssertionError):
+            pass
+    return format_quantity(value, dimension)
+
+
 def _shown(value) -> str:
     """``repr`` of a value, shortened to 40 characters (an int of 400 digits)."""
     text = (np.array2string(value, threshold=6, separator=", ") if isinstance(value, np.ndarray)

@@ -228,7 +228,16 @@ def _run_case(folder: Path, progress) -> dict[str, Any]:
         raise InputError(f"{CASE_FILE}: this is {what}; the app runs {known} cases")
     module, function, command = CASE_RUNNERS[kind.name]
     run = getattr(importlib.import_module(module), function)
-    run(CASE_FILE, RESULT_FOLDER, False, progress=progress)
+    try:
+        run(CASE_FILE, RESULT_FOLDER, False, progress=progress)
+    except InputError as exc:
+        if "does not exist" not in str(exc):
+            raise
+        # the upload is the only file in its folder: any other file it names is missing
+        raise InputError(f"{exc} (the app runs an uploaded case alone, in a folder of its "
+                         "own: a case that refers to other files -- a duty-cycle CSV, a "
+                         f"drawing, a structure case -- needs the command line: {command} "
+                         f"{CASE_FILE} --out DIR)") from None
     return {"kind": kind.name, "command": command}
 
 

@@ -63,12 +63,18 @@ from scipy.optimize import least_squares, nnls
 from sealsim.calibration.statistics import compare_signals, parameter_statistics
 from sealsim.errors import InputError
 from sealsim.properties.viscoelasticity import prony_loss_modulus, prony_storage_modulus
+from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["GAS_CONSTANT", "DMAData", "PronyFit", "ShiftFit", "fit_prony", "fit_shift_law",
-           "isotherm_shifts", "law_rel_rmse", "master_curve", "tan_delta_peak", "tan_delta_peak_temperature"]
+           "isotherm_shifts", "law_rel_rmse", "master_curve", "tan_delta_peak",
+           "tan_delta_peak_temperature"]
 
 #: molar gas constant R [J/(mol K)] (CODATA 2018, exact)
 GAS_CONSTANT = 8.314462618
+
+#: Temperatures a DMA of a polymer is measured at [K] (-173 ... +527 degC; instruments reach
+#: -150 ... +500 degC): a column in degC read as kelvin falls below it
+DMA_TEMPERATURE_RANGE = (100.0, 800.0)
 
 #: isotherms: points within this temperature of each other belong to one [K]
 ISOTHERM_TOLERANCE = 1.5
@@ -105,6 +111,13 @@ class DMAData:
                 k = int(np.flatnonzero(~np.isfinite(a) | (a <= 0))[0])
                 raise InputError(f"{self.name}: {label} of point {k + 1} is {a[k]!r}; it must "
                                  "be finite and > 0 (log-log superposition)")
+        lo, hi = DMA_TEMPERATURE_RANGE
+        outside = ~((t >= lo) & (t <= hi))
+        if np.any(outside):
+            k = int(np.flatnonzero(outside)[0])
+            raise InputError(f"{self.name}: temperature of point {k + 1} is {t[k]:.6g} K "
+                             f"({t[k] - ZERO_CELSIUS_K:.6g} degC), outside {lo:g}-{hi:g} K where a "
+                             "polymer's DMA is measured: check the temperature column's unit")
         for k, v in zip(("temperature", "frequency", "storage", "loss"), arrays):
             object.__setattr__(self, k, v)
 
@@ -300,7 +313,8 @@ def fit_shift_law(temperatures, log_shift, stderr, reference_temperature: float,
     if law == "wlf":
         if t.size < 4:
             raise InputError("a WLF fit needs shift factors at 4 or more temperatures "
-                             f"(found {t.size}); use law = 'arrhenius' or measure more")
+                             f"(found {t.size}): measure frequency sweeps at more "
+                             "temperatures (an Arrhenius law needs 3)")
 
         def shape(x):
             return -x[0] * (t - tr) / (x[1] + t - tr)
@@ -325,7 +339,8 @@ def fit_shift_law(temperatures, log_shift, stderr, reference_temperature: float,
                             bounds=(lower, upper))
         stats = parameter_statistics(res.jac, res.fun, values=res.x, names=names,
                                      min_residual_variance=1.0)
-        x = np.r_[res.x, _reference_offset(t, y, w, tr, shape(res.x))]
+        offset, se = _reference_offset(t, y, se, w, tr, shape(res.x))
+        x = np.r_[res.x, offset]
         sx = np.r_[stats["standard_errors"], np.nan]
         names = names + ["offset"]
         stats["identifiable"] = np.r_[stats["identifiable"], True]
@@ -379,14 +394,17 @@ def law_rel_rmse(data: DMAData, shift: ShiftFit, prony: PronyFit) -> dict[str, f
                                          ("loss", prony.loss(f_r), loss))}
 
 
-def _reference_offset(t, y, w, tr: float, law) -> float:
-    """Offset of cumulative shift factors ``y`` [decades] at the temperatures ``t`` [K]: their
-    value at the reference temperature ``tr`` where the isotherms span it (an end isotherm
-    within :data:`ISOTHERM_TOLERANCE` counts as at ``tr``), else the weighted mean (weights
-    ``w``) of their distance from the fitted ``law`` values."""
+def _reference_offset(t, y, se, w, tr: float, law) -> tuple[float, np.ndarray]:
+    """Offset of cumulative shift factors ``y`` [decades] at the temperatures ``t`` [K] and
+    their standard errors ``se`` referred to it.  Where the isotherms span the reference
+    temperature ``tr`` (an end isotherm within :data:`ISOTHERM_TOLERANCE` counts as at
+    ``tr``): their value there, and the errors of the sums of the pairwise increments between
+    each isotherm and ``tr``, √|se² − se²(tr)| (0 at ``tr``); else the weighted mean (weights
+    ``w``) of their distance from the fitted ``law`` values, errors as given."""
     if t.min() - ISOTHERM_TOLERANCE <= tr <= t.max() + ISOTHERM_TOLERANCE:
-        return float(np.interp(tr, t, y))
-    return float(np.sum(w ** 2 * (y - law)) / np.sum(w ** 2))
+        return (float(np.interp(tr, t, y)),
+                np.sqrt(np.abs(se ** 2 - np.interp(tr, t, se ** 2))))
+    return float(np.sum(w ** 2 * (y - law)) / np.sum(w ** 2)), se
 
 
 def fit_prony(frequency, storage, loss, terms_per_decade: float = 2.0,

@@ -379,7 +379,7 @@ def material_show(
         f"E(T) at {freq:g} Hz; a_T relative to {info['wlf_reference_temperature_C']:g} °C",
         ["T\n[°C]", "E\n[MPa]", "a_T\n[-]", "log10 a_T\n[-]"],
         [[f"{r['temperature_C']:g}", _g(r["E_Pa"] / 1e6), f"{r['a_T']:.3e}",
-          f"{r['log10_a_T']:.2f}"] for r in rows]))
+          f"{round(r['log10_a_T'], 2) + 0.0:.2f}"] for r in rows]))   # + 0.0: no "-0.00"
     _notes(notes)
 
 

@@ -22,6 +22,9 @@ from rich.text import Text
 
 from sealsim.cli._common import console, err_console, guarded, sealsim_notices
 
+#: Notes of summary.json printed after a study (the rest are counted)
+MAX_NOTES_SHOWN = 8
+
 __all__ = ["study_app"]
 
 study_app = typer.Typer(
@@ -99,4 +102,9 @@ def run(
                           f"{o['P50']:.4g}, P5 {o['P5']:.4g}, P95 {o['P95']:.4g})")
     for failure in s["failures"][:3]:
         console.print(f"  [yellow]run {failure['run']} failed:[/] {failure['error'][:200]}")
+    notes = s.get("notes", [])
+    for note in notes[:MAX_NOTES_SHOWN]:
+        console.print(Text("  note: ", style="yellow") + Text(note))
+    if len(notes) > MAX_NOTES_SHOWN:
+        console.print(f"  ({len(notes) - MAX_NOTES_SHOWN} more notes in summary.json)")
     console.print(f"results written to {out}/ (study.nc, runs.csv, summary.json, figures)")

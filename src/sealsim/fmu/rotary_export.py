@@ -34,7 +34,7 @@ from pathlib import Path
 
 import numpy as np
 
-from sealsim.errors import InputError
+from sealsim.errors import InputError, ModelError
 from sealsim.fmu.model_description import ModelSpec, Variable
 from sealsim.fmu.rotary_maps import (
     MAX_LAG_EXTENSION,
@@ -186,8 +186,15 @@ def rotary_maps(case: RotaryCase, *, speed_max: float, speed_points: int, sump_t
         done = 0
         for w in speeds:
             part = report("steady map")
-            steady.append(steady_rise_map(case, w, sumps, ambient_step, None if part is None
-                                          else lambda d, n, base=done: part(base + d, calls)))
+            try:
+                steady.append(steady_rise_map(
+                    case, w, sumps, ambient_step,
+                    None if part is None else lambda d, n, base=done: part(base + d, calls)))
+            except ModelError as exc:   # the map's corner: name the fields that span it
+                raise ModelError(f"{exc} (the FMU's steady map spans rotary.max_speed = "
+                                 f"{speed_max * 30 / math.pi:.6g} rpm and "
+                                 f"rotary.sump_temperatures up to "
+                                 f"{sumps[-1] - ZERO_CELSIUS_K:.6g} degC: lower them)") from None
             done += w.size * (2 if ambient_step else 1)
         lag_xi = np.concatenate([k + _lag_fractions(lag_points)
                                  for k in range(axes.n_regimes)])

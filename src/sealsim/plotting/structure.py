@@ -109,12 +109,14 @@ def plot_section(state, title: str = ""):
     return fig
 
 
-def plot_states(frame, x: str | None = None, title: str = ""):
+def plot_states(frame, x: str | None = None, title: str = "", groove_bottom: bool = True):
     """F_N, b and peak pressures over the load states of a ``result.csv`` frame.
 
     ``x`` is the column on the horizontal axis; by default the temperature for a temperature
     history (from the installed state on, the axis running the way the temperature goes), the
     load states (labelled) for a squeeze-then-pressure path, else the varying load.
+    ``groove_bottom=False`` for a seal without one (a lip bonded to its case): its columns
+    hold 0, which is no contact force to draw.
     """
     labels = None
     if x is None:
@@ -137,12 +139,14 @@ def plot_states(frame, x: str | None = None, title: str = ""):
     fig, axes = new_figure(3, 1, width=12.0, height=3.6)
     xs = np.arange(len(frame)) if x == "load state" else frame[x].to_numpy()
     axes[0].plot(xs, frame["F_N_N"], "-o", ms=3, label="sealing surface F_N")
-    axes[0].plot(xs, frame["F_groove_bottom_N"], "--s", ms=3, label="groove bottom")
+    if groove_bottom:
+        axes[0].plot(xs, frame["F_groove_bottom_N"], "--s", ms=3, label="groove bottom")
     axes[0].set_ylabel("normal force (360°) [N]")
     axes[1].plot(xs, frame["b_mm"], "-o", ms=3)
     axes[1].set_ylabel("contact width b [mm]")
     axes[2].plot(xs, frame["p_max_MPa"], "-o", ms=3, label="sealing surface")
-    axes[2].plot(xs, frame["p_max_groove_bottom_MPa"], "--s", ms=3, label="groove bottom")
+    if groove_bottom:
+        axes[2].plot(xs, frame["p_max_groove_bottom_MPa"], "--s", ms=3, label="groove bottom")
     axes[2].set_ylabel("peak contact pressure [MPa]")
     for ax in axes:
         ax.grid(alpha=0.3)

@@ -113,7 +113,8 @@ def _write_variant(folder: ResultFolder, prefix: str, name: str, case: Structure
         if len(result.states) > 1 else result.states[0]
     folder.savefig(prefix + "section_installed.png", plot_section(first, title))
     folder.savefig(prefix + "section_final.png", plot_section(result.states[-1], title))
-    folder.savefig(prefix + "states.png", plot_states(frame, title=title))
+    folder.savefig(prefix + "states.png", plot_states(
+        frame, title=title, groove_bottom="groove_bottom" in result.states[0].surfaces))
     last = frame.iloc[-1]
     folder.write_json(prefix + "summary.json", {
         "variant": name,

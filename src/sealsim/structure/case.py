@@ -121,7 +121,9 @@ class SealSection(CaseModel):
     points_unit: str = "mm"
     dxf: str | None = None
     dxf_layer: str | None = None
-    dxf_unit: str = "mm"
+    dxf_unit: str = Field("mm", description=(
+        "length unit of the drawing's numbers; default: millimetres when the drawing "
+        "declares mm or no unit ($INSUNITS), any other declared unit must be confirmed here"))
     drawing: str | None = Field(None, description="the DXF file the points were read from")
 
     @model_validator(mode="after")
@@ -382,11 +384,20 @@ def _resolve_drawing(seal, base: Path) -> None:
     """Read a ``seal.dxf`` drawing into ``seal.points``/``bulges`` (in place)."""
     if not isinstance(seal, dict) or seal.get("dxf") is None:
         return
-    from sealsim.structure.contour import contour_from_dxf
+    from sealsim.structure.contour import contour_from_dxf, dxf_declared_unit
 
     path = Path(str(seal["dxf"]))
     path = path if path.is_absolute() else base / path
-    unit = _unit_factor(str(seal.get("dxf_unit", "mm")), "seal.dxf_unit")
+    unit_text = seal.get("dxf_unit")
+    if unit_text is None:
+        declared = dxf_declared_unit(path, name=f"seal.dxf {str(path)!r}")
+        if declared not in (None, "mm"):
+            raise InputError(f"seal.dxf {str(path)!r}: the drawing declares its unit as "
+                             f"{declared!r} ($INSUNITS); give seal.dxf_unit = '{declared}' to "
+                             "read it so, or seal.dxf_unit = 'mm' if its numbers are "
+                             "millimetres")
+        unit_text = "mm"   # declared mm, or no unit declared: millimetres
+    unit = _unit_factor(str(unit_text), "seal.dxf_unit")
     out_unit = str(seal.get("points_unit", "mm"))
     scale = _unit_factor(out_unit, "seal.points_unit")
     contour = contour_from_dxf(path, layer=seal.get("dxf_layer"), unit=unit,

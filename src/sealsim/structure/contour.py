@@ -419,6 +419,28 @@ def filleted_contour(points, radii, tags=None, *, corner_tags=None,
     return Contour(np.array(out_pts), np.array(out_bul), tuple(out_tag))
 
 
+#: Drawing units of a DXF header ($INSUNITS code) as pint unit texts.
+DXF_UNITS = {1: "in", 2: "ft", 4: "mm", 5: "cm", 6: "m", 13: "um", 14: "dm"}
+
+
+def dxf_declared_unit(path, name: str | None = None) -> str | None:
+    """The length unit a DXF drawing declares in its header ($INSUNITS): ``"mm"``, ``"in"``,
+    ...; None when it declares none (0, unitless) or cannot be parsed (the contour reader
+    reports that); the name of any other declared unit as ezdxf gives it.  A path that is no
+    regular file (missing, a folder, a FIFO) is an InputError named ``name``."""
+    import ezdxf
+    from ezdxf.units import unit_name
+
+    check_input_file(Path(path), "DXF file", label=name)
+    try:
+        code = int(ezdxf.readfile(str(path)).header.get("$INSUNITS", 0))
+    except (OSError, ValueError, ezdxf.DXFError):
+        return None
+    if code == 0:
+        return None
+    return DXF_UNITS.get(code, unit_name(code))
+
+
 def contour_from_dxf(path, *, layer: str | None = None, unit: float = 1e-3,
                      close_tolerance: float = 1e-6, name: str | None = None) -> Contour:
     """Read a seal section from a DXF drawing (ezdxf).

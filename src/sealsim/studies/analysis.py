@@ -42,6 +42,9 @@ PERCENTILES = (5, 50, 95)
 #: about ±0.1 around the exact indices (10 seeds, sealsim check), at 40 points by more than
 #: ±0.2
 MIN_RBD_SAMPLES = 64
+#: 95 % confidence half-width of a Sobol' index [-] beyond which a note says the sample is too
+#: small: an index lies in 0 ... 1, and an interval wider than half of that cannot rank factors
+MAX_INDEX_HALF_WIDTH = 0.5
 
 
 def spread(values) -> dict[str, float]:
@@ -105,6 +108,7 @@ def sensitivity_table(study, dataset) -> tuple[pd.DataFrame, list[str]]:
                "bounds": [[float(x[:, j].min()), float(x[:, j].max()) or 1.0]
                           for j in range(len(factors))]}
     rows, notes = [], []
+    uncertain: dict[str, float] = {}        # output: widest 95 % half-width of its indices
     for labels, pos in _grid_points(study):
         where = "".join(f", {k} = {v}" for k, v in labels.items())
         for out in study.outputs:
@@ -118,10 +122,18 @@ def sensitivity_table(study, dataset) -> tuple[pd.DataFrame, list[str]]:
             if indices is None:
                 continue
             method, s1, s1c, st, stc = indices
+            widest = float(np.nanmax(np.r_[s1c, stc]))
+            if widest > MAX_INDEX_HALF_WIDTH:
+                uncertain[f"{out.name}{where}"] = widest
             for j, f in enumerate(factors):
                 rows.append({**labels, "output": out.name, "factor": f.name,
                              "S1": s1[j], "S1_conf": s1c[j], "ST": st[j], "ST_conf": stc[j],
                              "method": method})
+    if uncertain:
+        notes.append("the sensitivity indices are uncertain, 95 % confidence half-widths up to "
+                     + ", ".join(f"{w:.2g} ({name})" for name, w in uncertain.items())
+                     + f" where an index lies in 0-1, from {len(x)} runs: raise study.samples "
+                     "(the intervals narrow as 1/sqrt(samples))")
     return pd.DataFrame(rows), notes
 
 

@@ -50,7 +50,8 @@ def _step(node: Any, part: str, walked: str, create: bool) -> tuple[Any, Any]:
         if part.isdigit():
             index = int(part)
             if index >= len(node):
-                raise InputError(f"'{walked}' has {len(node)} elements, no index {index}")
+                raise InputError(f"'{walked}' has {len(node)} element{'s' * (len(node) != 1)}, "
+                                 f"no index {index}")
             return index, node[index]
         names = [item.get("name") for item in node if isinstance(item, dict)]
         if part in names:

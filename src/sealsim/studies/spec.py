@@ -431,11 +431,12 @@ def parse_study(data: dict, source: Path, text: str = "") -> Study:
     documents, links, base_dir, inputs = _base_documents(spec, source, where)
     inputs = [source, *inputs, *links.values()]
 
-    factors = [_factor(f, documents, st.design, where) for f in spec.factors]
-    _check_names(spec, factors, where)
-    constants, derived = _set_table(spec.set, documents, {f.name for f in factors}, where)
+    constants, derived = _set_table(spec.set, documents, {f.name for f in spec.factors}, where)
     for location, value in constants:
         assign(documents, location, value)
+    # factor paths point into the case as [set] leaves it (duty.steps replaced by one step)
+    factors = [_factor(f, documents, st.design, where) for f in spec.factors]
+    _check_names(spec, factors, where)
     try:
         _validate_documents(st.model, documents)
     except InputError as exc:
@@ -702,6 +703,11 @@ def _grid_values(spec: FactorSpec, here: str) -> tuple[list, list, str]:
         return list(values), list(values), ""
     if any(p is None for p in parsed):
         raise InputError(f"{here}: values mix numbers and texts: {values!r}")
+    bare = [v for v, (_, u) in zip(values, parsed) if not u]
+    if bare and len(bare) < len(values):
+        with_unit = next(v for v, (_, u) in zip(values, parsed) if u)
+        raise InputError(f"{here}: values: {bare[0]!r} has no unit, {with_unit!r} has one; "
+                         "give every value its unit (or unit = '...' and plain numbers)")
     unit = parsed[0][1]
     coords = [_convert(m, u, unit, f"{here}: values") for m, u in parsed]
     if spec.unit:
