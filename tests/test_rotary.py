@@ -13,6 +13,7 @@ from rotary_reference import reference_steady_state
 from scipy.special import i0e, i1e
 from typer.testing import CliRunner
 
+import sealsim
 from sealsim.cases import validate_case
 from sealsim.cli import app
 from sealsim.errors import InputError, ModelError
@@ -780,6 +781,23 @@ def test_a_temperature_below_the_oils_range_names_the_field_it_was_given_in(envi
     with pytest.raises(InputError) as info:
         _case(oil={"name": "VG220-mineral"}, environment=environment)
     assert field in str(info.value) and "(-15.0 degC)" in str(info.value)
+
+
+def test_a_steady_point_does_not_start_so_a_cold_ambient_is_no_start_temperature():
+    # Without a duty cycle (lip_seal_torque, steady_state) nothing starts at the ambient: a
+    # -30 degC room below VG 68's -24 degC is allowed, and at 1000 rpm the free sump settles
+    # well above it.  Before, the case was refused for its "start temperature".
+    r = sealsim.lip_seal_torque("80 mm", "1000 rpm", "ISO VG 68",
+                                ambient_temperature="-30 degC")
+    assert r["T_sump_C"] > -24.0 and r["T_contact_C"] > r["T_sump_C"]
+    # at 10 rpm the free sump would settle at -27 degC, below the oil's range: refused with
+    # that temperature (before: returned with the viscosity law extrapolated, no note)
+    with pytest.raises(ModelError, match=r"free sump would settle at -2\d\.\d degC, below the "
+                                         r"lowest usable temperature of VG68-mineral"):
+        sealsim.lip_seal_torque("80 mm", "10 rpm", "ISO VG 68", ambient_temperature="-30 degC")
+    # a transient run still starts at the ambient and is refused there
+    with pytest.raises(InputError, match="ambient_temperature \\(the start"):
+        _case(environment={"ambient_temperature": "-30 degC"})
 
 
 def test_cold_start_warms_the_contact_without_overshoot():

@@ -594,7 +594,9 @@ class RotaryCase(CaseModel):
     def _temperatures_in_oil_range(self):
         oil = self.oil.build()
         env = self.environment
-        start = start_temperature(env)
+        # the start temperature matters to a transient run only: a steady operating point
+        # (no duty cycle) does not start anywhere
+        start = start_temperature(env) if self.duty is not None else None
         start_name = ("environment.start_temperature" if env.start_temperature is not None
                       else "environment.sump_temperature" if env.sump_temperature is not None
                       else "environment.ambient_temperature (the start temperature)")

@@ -903,6 +903,14 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
             f"that the {rubber.name} model covers (service limit "
             f"{rubber.service_range[1] - ZERO_CELSIUS_K:.0f} degC): the seal has no steady "
             f"state there; try {remedy}")
+    oil = case.oil.build()
+    if not model.sump_fixed and oil.min_temperature is not None and t_sump < oil.min_temperature:
+        raise ModelError(
+            f"steady state at {angular_speed * 30 / math.pi:.0f} rpm: the free sump would "
+            f"settle at {t_sump - ZERO_CELSIUS_K:.1f} degC, below the lowest usable temperature "
+            f"of {oil.name} ({oil.min_temperature - ZERO_CELSIUS_K:.1f} degC), where its "
+            "viscosity law no longer holds; try a warmer ambient, a held sump "
+            "(environment.sump_temperature) or an oil for lower temperatures")
     state = friction_at(t_contact)
     film = float(state.film)
     paths = model.heat_paths(temps, model.network.face_conductances(
