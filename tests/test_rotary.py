@@ -800,6 +800,23 @@ def test_a_steady_point_does_not_start_so_a_cold_ambient_is_no_start_temperature
         _case(environment={"ambient_temperature": "-30 degC"})
 
 
+def test_a_sweep_keeps_its_points_when_one_has_no_steady_state():
+    # 120 mm in a held 80 degC sump: 5000 rpm would run the contact beyond NBR's 150 degC.
+    # A sweep returns the other points and a NaN row with the reason (before: the whole
+    # sweep raised); a scalar call and a sweep in which no point has one still raise.
+    frame = sealsim.lip_seal_torque("120 mm", ["1000 rpm", "5000 rpm"], "ISO VG 68",
+                                    sump_temperature="80 degC")
+    single = sealsim.lip_seal_torque("120 mm", "1000 rpm", "ISO VG 68",
+                                     sump_temperature="80 degC")
+    assert frame.loc[0, "torque_Nm"] == single["torque_Nm"]
+    assert frame.loc[1, ["torque_Nm", "T_contact_C", "power_W"]].isna().all()
+    assert any("1 of 2 points have no steady state" in n and "5000 rpm" in n
+               for n in frame.attrs["notes"])
+    for speed in ("5000 rpm", ["5000 rpm", "6000 rpm"]):
+        with pytest.raises(ModelError, match="5000 rpm: the contact would run at about 15"):
+            sealsim.lip_seal_torque("120 mm", speed, "ISO VG 68", sump_temperature="80 degC")
+
+
 def test_cold_start_warms_the_contact_without_overshoot():
     # 80 mm NBR lip, VG 68, everything at -20 °C, 1500 rpm: the cold oil's 900 W fall as the
     # contact warms.  Taken at the start of each 0.25 s step the friction overshot (-20 → +70 →

@@ -38,7 +38,7 @@ from typing import Any
 
 import numpy as np
 
-from sealsim.errors import InputError, SealsimWarning
+from sealsim.errors import InputError, ModelError, SealsimWarning
 
 __all__ = ["friction_loop", "lip_seal_torque", "oring_gland", "seal_friction"]
 
@@ -130,7 +130,8 @@ def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] = "VG68-
         broadcast against each other; notes in ``frame.attrs["notes"]``).  The notes (also
         issued as :class:`~sealsim.errors.SealsimWarning`, once per call) are those of
         ``sealsim rotary run``: a contact above the elastomer's service limit, films outside
-        the measured range.
+        the measured range; in a DataFrame, a point without a steady state is a row of NaN
+        and a note gives its reason.
 
     Raises
     ------
@@ -138,6 +139,9 @@ def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] = "VG68-
         A value without a unit, a wrong unit or dimension, an unknown oil or material (with
         close matches), a value out of range (naming the case field), arrays that do not
         broadcast, more than ``MAX_POINTS["lip_seal_torque"]`` points.
+    ModelError
+        No steady state (a contact beyond the elastomer's range, a free sump below the oil's):
+        the point of a scalar call, or every point of an array call.
 
     Examples
     --------
@@ -179,7 +183,7 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
     base = apply_overrides({"seal": seal, "oil": oil_table}, dict(case or {}))
 
     cases: dict[tuple, RotaryCase] = {}  # one case per geometry and temperatures
-    rows = []
+    rows, failed = [], []
     t_sump = points.get("sump_temperature", np.full(points["speed"].shape, np.nan))
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", FilmRangeWarning)  # one note per call, not per point
@@ -193,13 +197,26 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
                                               "environment": env})
                 cases[key] = validate_case(RotaryCase, data, "lip_seal_torque arguments")
             omega = float(points["speed"][k])
-            result = steady_state(cases[key], omega)
+            try:
+                result = steady_state(cases[key], omega)
+            except ModelError as exc:
+                if shape == ():
+                    raise
+                # one point of a sweep without a steady state: NaN with the reason, the others
+                failed.append(str(exc))
+                result = {**dict.fromkeys(LIP_SEAL_COLUMNS[2:], math.nan), "lip_note": ""}
             rows.append({"shaft_diameter_mm": key[0] * 1e3, "speed_rpm": omega * 30.0 / math.pi,
                          **{c: result[c] for c in LIP_SEAL_COLUMNS[2:]}})
+    if len(failed) == len(rows):
+        raise ModelError(f"lip_seal_torque: no point has a steady state; the first: {failed[0]}")
     first = next(iter(cases.values()))
-    films = [r["film_um"] for r in rows if r["speed_rpm"] != 0]
+    solved = [r for r in rows if not math.isnan(r["T_contact_C"])]
+    films = [r["film_um"] for r in solved if r["speed_rpm"] != 0]
     notes = operating_notes(first, lip_seal_friction(first).elastomer,
-                            [r["T_contact_C"] for r in rows], films)
+                            [r["T_contact_C"] for r in solved], films)
+    if failed:
+        notes.append(f"{len(failed)} of {len(rows)} points have no steady state (their rows "
+                     "are NaN): " + "; ".join(failed))
     return _rows_out(rows, shape, LIP_SEAL_COLUMNS, notes)
 
 
