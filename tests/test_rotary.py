@@ -817,6 +817,21 @@ def test_a_sweep_keeps_its_points_when_one_has_no_steady_state():
             sealsim.lip_seal_torque("120 mm", speed, "ISO VG 68", sump_temperature="80 degC")
 
 
+def test_a_sump_cooling_below_the_oils_range_is_noted():
+    # Started warm in a -70 degC cold chamber, a 0.2 L sump in a light, fan-cooled housing at
+    # 10 rpm cools below VG 68's -24 degC within 30 min; the run says so (before: no note, the
+    # viscosity law extrapolated).
+    case = _case(environment={"ambient_temperature": "-70 degC", "start_temperature": "20 degC",
+                              "sump_volume": "0.2 L", "housing_mass": "0.5 kg",
+                              "housing_heat_transfer": "50 W/(m^2*K)"},
+                 duty={"steps": [{"speed": "10 rpm", "duration": "30 min"}]})
+    result = simulate(case)
+    coldest = result.timeseries["T_sump_C"].min()
+    assert coldest < -24.0
+    assert f"sump cooled to {coldest:.1f} degC, below the lowest usable temperature of " \
+           "VG68-mineral (-24.0 degC)" in " ".join(result.notes)
+
+
 def test_cold_start_warms_the_contact_without_overshoot():
     # 80 mm NBR lip, VG 68, everything at -20 °C, 1500 rpm: the cold oil's 900 W fall as the
     # contact warms.  Taken at the start of each 0.25 s step the friction overshot (-20 → +70 →

@@ -686,7 +686,8 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
               "dissipated": dissipated,
               "rel_error": abs(heat_in - stored - dissipated) / max(abs(heat_in), 1e-12)}
     sliding = frame.loc[frame["speed_rpm"] != 0, "film_um"]
-    found = operating_notes(case, model.elastomer, frame["T_contact_C"], sliding)
+    found = operating_notes(case, model.elastomer, frame["T_contact_C"], sliding,
+                            frame["T_sump_C"])
     notes += found
     for film in (n for n in found if n.startswith("film ")):
         warnings.warn(film, FilmRangeWarning, stacklevel=2)
@@ -699,10 +700,11 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
     return result
 
 
-def operating_notes(case: RotaryCase, elastomer, contact_temperatures_c, sliding_films_um
-                    ) -> list[str]:
+def operating_notes(case: RotaryCase, elastomer, contact_temperatures_c, sliding_films_um,
+                    sump_temperatures_c=()) -> list[str]:
     """Where a run left the range of its models: a contact above the elastomer's service
-    limit, films outside the measured range of lip seal films
+    limit, a sump below the oil's lowest usable temperature (its viscosity law extrapolated),
+    films outside the measured range of lip seal films
     (:func:`~sealsim.tribology.film.film_range_note`).  The notes of ``sealsim rotary run`` and
     of :func:`sealsim.lip_seal_torque` (one set per call, over all its points); the lip's
     mounting path has its own note (:func:`lip_note`).
@@ -716,10 +718,19 @@ def operating_notes(case: RotaryCase, elastomer, contact_temperatures_c, sliding
         Contact temperatures of the run [°C].
     sliding_films_um : array_like
         Films of the samples with the shaft turning [µm] (may be empty).
+    sump_temperatures_c : array_like
+        Sump temperatures of the run [°C] (may be empty).
     """
     contact = np.asarray(contact_temperatures_c, dtype=float)
     films = np.asarray(sliding_films_um, dtype=float)
+    sump = np.asarray(sump_temperatures_c, dtype=float)
     notes = []
+    oil = case.oil.build()
+    if sump.size and oil.min_temperature is not None and \
+            sump.min() < oil.min_temperature - ZERO_CELSIUS_K:
+        notes.append(f"sump cooled to {sump.min():.1f} degC, below the lowest usable "
+                     f"temperature of {oil.name} ({oil.min_temperature - ZERO_CELSIUS_K:.1f} "
+                     "degC): its viscosity is extrapolated there and the torque means little")
     service_max = elastomer.service_range[1] - ZERO_CELSIUS_K
     if contact.max() > service_max:
         notes.append(f"contact temperature reached {contact.max():.0f} degC, above the service "
