@@ -79,7 +79,7 @@ def test_xring_force_follows_its_rubber_volume():
     ring = {"cord_diameter": "4 mm", "inner_diameter": "20 mm"}
     o = quiet_run(case({**base, "seal": {"type": "oring", **ring}}))
     x = quiet_run(case({**base, "seal": {"type": "xring", "valley_depth": 0.125, **ring}}))
-    # equal volume, equal force within 3 % (coarse mesh -0.2 %, medium -0.7 %); not above it
+    # equal volume, equal force within 3 % (coarse mesh -0.2 %, medium -0.9 %); not above it
     assert 0.97 * o[1].F_N < x[1].F_N <= o[1].F_N
     assert x[2].F_N - x[1].F_N < o[2].F_N - o[1].F_N      # smaller rise with pressure
     assert x[1].surfaces["sealing_surface"].zones == 2 and x[1].b < o[1].b
@@ -94,7 +94,7 @@ def test_xring_in_its_own_gland_needs_less_force():
     Reference: X-rings seal with less squeeze in their deeper glands and so with less force
     and friction (Parker Seal Solutions Guide, "X-rings"; "less squeeze is required to
     maintain an effective seal, thus causing less friction", Fridle, X-rings).  The FE gives
-    about 40 % less F_N at 0 bar (medium mesh: 92 N against 157 N) and 30 % less at 10 bar,
+    about 40 % less F_N at 0 bar (medium mesh: 48 N against 81 N) and 25 % less at 10 bar,
     with two lobes and a shorter contact width.  Asserted: lower F_N at both pressures by
     more than 15 % (the smallest squeeze difference of the tables' sizes, 13 % against 9 %
     for 2.62 mm, would still give a clear difference), lower b, two zones."""
