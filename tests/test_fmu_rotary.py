@@ -22,6 +22,7 @@ from fmpy.validation import validate_fmu
 from session_builds import built, session_build
 
 from sealsim.cases import expand_variants, load_toml
+from sealsim.errors import ModelError
 from sealsim.fmu import LoadedFMU, build_rotary_fmu
 from sealsim.fmu.case import RotarySettings
 from sealsim.fmu.cosim import run_rotary
@@ -154,6 +155,20 @@ def test_rotary_inputs_out_of_range_are_clipped_and_me_settles(rotary_fmu):
     assert result["T_contact"][0] == pytest.approx(313.15, abs=1e-9)
     # after > 20 slow time constants: steady within the solver tolerance
     assert result["T_contact"][-1] == pytest.approx(result["T_contact_steady"][-1], abs=1e-3)
+
+
+@pytest.mark.parametrize(("value", "bound"), [(80.0, "> 200 K"), (5000.0, "< 450 K")])
+def test_a_start_temperature_outside_the_cases_range_is_refused(rotary_fmu, value, bound):
+    # T_contact_start was only required > 0 K: 80 (meant as degC) started the contact at
+    # 80 K and 5000 K at 5000 K, with a clip warning only.  Its range is now that of the
+    # rotary case's environment.start_temperature.
+    names = {v.name: v for v in fmpy.read_model_description(str(rotary_fmu.path)).modelVariables}
+    assert names["T_contact_start"].unit == "K"
+    with LoadedFMU(rotary_fmu.path) as fmu:
+        fmu.set(speed=1000 * RPM, T_sump=330.0, start_steady=False, T_contact_start=value)
+        with pytest.raises(ModelError, match=rf"parameter T_contact_start = {value:g} K is not "
+                                             rf"allowed: it must be {bound}"):
+            fmu.initialize()
 
 
 def test_a_steady_map_beyond_the_rubber_names_the_fmu_fields_to_lower(plain_case):

@@ -256,6 +256,11 @@ class Bearing(CaseModel):
         return self
 
 
+#: Open range of a start temperature [K]: environment.start_temperature and the rotary FMU's
+#: parameter T_contact_start.
+START_TEMPERATURE = (200.0, 450.0)
+
+
 class Environment(CaseModel):
     """Oil sump, housing, ambient, shaft.
 
@@ -270,7 +275,8 @@ class Environment(CaseModel):
         "in it) or 'test_rig' "
         "(Organisciak et al.'s rig: short shaft, small oil bath, insulated ends)"))
     ambient_temperature: Q("temperature", gt=200.0, lt=400.0) = 293.15
-    start_temperature: Q("temperature", gt=200.0, lt=450.0) | None = Field(
+    start_temperature: Q("temperature", gt=START_TEMPERATURE[0],
+                         lt=START_TEMPERATURE[1]) | None = Field(
         None, description="initial temperature of shaft, seal, oil and housing; default: the "
                           "held sump temperature, else ambient")
     sump_volume: Q("volume", gt=1e-6, le=10.0) = 1e-3
