@@ -45,12 +45,13 @@ from sealsim.calibration.statistics import compare_signals, parameter_statistics
 from sealsim.cases import apply_overrides, validate_case
 from sealsim.errors import InputError, ModelError
 from sealsim.measurements import ColumnSpec, read_measurement, step_averages
-from sealsim.rotary.case import MAX_DUTY_DURATION, RotaryCase
+from sealsim.rotary.case import CASE_TEMPERATURES, MAX_DUTY_DURATION, RotaryCase
 from sealsim.rotary.simulation import simulate
 from sealsim.tribology.film import FilmRangeWarning
 from sealsim.units import ZERO_CELSIUS_K
 
-__all__ = ["PreparedRotaryRun", "RotaryFitResult", "RotaryPrediction", "duty_from_speed",
+__all__ = ["PreparedRotaryRun", "RotaryFitResult", "RotaryPrediction", "check_groove_temperature",
+           "duty_from_speed",
            "fit_rotary", "predict_rotary_run", "prepare_rotary_run", "rotary_run_metrics",
            "step_agreement"]
 
@@ -240,6 +241,8 @@ def prepare_rotary_run(case: RotaryFitCase, spec: RotaryMeasurementModel,
     speed = m.column("speed")
     torque = m.column("torque")
     temperature = m.column("temperature") if m.has("temperature") else None
+    if temperature is not None:
+        check_groove_temperature(t, temperature, where)
     avg = case.averaging
     if t[-1] > MAX_DURATION:
         raise InputError(f"{where}: the run lasts {t[-1]:.4g} s, more than the rotary model's "
@@ -270,6 +273,31 @@ def prepare_rotary_run(case: RotaryFitCase, spec: RotaryMeasurementModel,
     return PreparedRotaryRun(spec, data, run_case, t, float(t_file[0]), speed, torque,
                              temperature, times, speeds, steps, avg.window, avg.tolerance,
                              duty_dir, tmp)
+
+
+def check_groove_temperature(time, temperature, where: str) -> None:
+    """Refuse a measured spring-groove temperature [K] outside the rotary case's temperatures
+    (:data:`~sealsim.rotary.case.CASE_TEMPERATURES`): the model cannot follow it, and such a
+    value is a column read in the wrong unit (degC numbers declared as K) more often than a
+    measurement.
+
+    Examples
+    --------
+    >>> check_groove_temperature([0.0, 2.0], [296.1, 22.9], "run A")
+    Traceback (most recent call last):
+    ...
+    sealsim.errors.InputError: run A: measured spring-groove temperature 22.9 K (-250.2 degC) at t = 2 s (sample 2) is outside the rotary model's -73 ... 177 degC; check the temperature column's unit (degC or K)
+    """
+    lo, hi = CASE_TEMPERATURES
+    temperature = np.asarray(temperature, dtype=float)
+    bad = np.flatnonzero(~((temperature > lo) & (temperature < hi)))
+    if bad.size:
+        k = int(bad[0])
+        raise InputError(f"{where}: measured spring-groove temperature {temperature[k]:.6g} K "
+                         f"({temperature[k] - ZERO_CELSIUS_K:.4g} degC) at t = {time[k]:g} s "
+                         f"(sample {k + 1}) is outside the rotary model's "
+                         f"{lo - ZERO_CELSIUS_K:.0f} ... {hi - ZERO_CELSIUS_K:.0f} degC; check "
+                         "the temperature column's unit (degC or K)")
 
 
 def write_duty_csv(path: Path, times, speeds) -> None:

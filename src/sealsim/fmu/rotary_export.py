@@ -52,7 +52,7 @@ from sealsim.fmu.rotary_maps import (
 from sealsim.fmu.tables import pchip_table
 from sealsim.properties.elastomers import ServiceRangeWarning
 from sealsim.properties.oils import OilRangeWarning
-from sealsim.rotary.case import START_TEMPERATURE, RotaryCase
+from sealsim.rotary.case import CASE_TEMPERATURES, RotaryCase
 from sealsim.rotary.simulation import lip_seal_friction
 from sealsim.tribology.film import FilmRangeWarning
 from sealsim.units import ZERO_CELSIUS_K
@@ -284,7 +284,7 @@ def rotary_spec(case: RotaryCase, maps: RotaryMaps, identifier: str, *, title: s
                  start=1.0, boolean=True),
         Variable("T_contact_start", "T_CONTACT_START", "parameter",
                  "contact temperature at the start when start_steady is false", "K", sump0,
-                 lower=(">", START_TEMPERATURE[0]), upper=("<", START_TEMPERATURE[1])),
+                 lower=(">", CASE_TEMPERATURES[0]), upper=("<", CASE_TEMPERATURES[1])),
     ]
     lag = maps.lag
     sump_axis, edges = maps.axes.at(maps.sump_temperatures)
