@@ -160,7 +160,7 @@ def cylinder_spec(system, identifier: str, *, title: str = "", source: str = "")
         seal_vr.append(row)
     variables += [
         Variable("p_supply", "P_SUPPLY", "parameter", "absolute supply pressure", "Pa",
-                 float(c[rhs.C_PS]), lower=_GT0),
+                 float(c[rhs.C_PS]), lower=(">", float(c[rhs.C_PA]))),  # as air.supply_pressure
         Variable("moving_mass", "MOVING_MASS", "parameter",
                  "moving mass: piston, rod and load", "kg", float(c[rhs.C_MASS]), lower=_GT0),
         Variable("valve_conductance", "VALVE_CONDUCTANCE", "parameter",
