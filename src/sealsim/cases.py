@@ -660,7 +660,10 @@ def case_json_schema(model: type[BaseModel], *, variants: bool = False,
                     "then": {"$ref": f"#/definitions/{name}WithVariants"},
                     "else": {"$ref": f"#/definitions/{name}"}})
     else:
-        out.update(_draft7(schema))
+        own = _draft7(schema)
+        if title:
+            own.pop("title", None)  # the model's class name would replace the kind's title
+        out.update(own)
     if definitions:
         out["definitions"] = {name: _draft7(d) for name, d in definitions.items()}
     return out
