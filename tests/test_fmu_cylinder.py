@@ -68,6 +68,9 @@ def test_cylinder_fmus_are_valid_fmi_2_and_3(cylinders):
         assert {"valve_command", "F_load", "x", "v", "p_cap", "p_rod", "T_cap", "T_rod",
                 "F_friction", "F_piston", "F_rod", "F_wiper", "F_N_piston", "theta_piston",
                 "valve_delay"} <= names
+        described = {v.name: v.description for v in md.modelVariables}
+        assert described["dp_piston"] == "pressure difference across the seal piston"
+        assert described["F_N_rod"] == "normal force of the seal rod"
         # Θ seals without bristles and a Coulomb wiper stick truly: one event indicator
         assert md.numberOfEventIndicators == 1
         if version == "3.0":

@@ -150,12 +150,12 @@ def cylinder_spec(system, identifier: str, *, title: str = "", source: str = "")
     for i, (seal, name) in enumerate(zip(system.seals, names)):
         row = []
         for key, macro, text, unit in (
-                ("F", "F", "friction force", "N"), ("F_N", "FN", "normal force", "N"),
-                ("b", "B", "contact width", "m"),
+                ("F", "F", "friction force of", "N"), ("F_N", "FN", "normal force of", "N"),
+                ("b", "B", "contact width of", "m"),
                 ("dp", "DP", "pressure difference across", "Pa")):
             row.append(len(variables))
             variables.append(Variable(f"{key}_{name}", f"SEAL{i}_{macro}", "output",
-                                      f"{text} of the seal {seal.name}", unit,
+                                      f"{text} the seal {seal.name}", unit,
                                       exposed=key == "F" or seal.contact_map is not None))
         seal_vr.append(row)
     variables += [
