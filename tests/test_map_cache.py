@@ -70,6 +70,11 @@ def test_default_folder_follows_sealsim_cache(tmp_path, monkeypatch):
     (tmp_path / "file").write_text("")
     with pytest.raises(InputError, match="not a folder"):
         cache_folder(tmp_path / "file")
+    # SEALSIM_CACHE naming a file: 'cache list' showed an empty cache at FILE/maps
+    monkeypatch.setenv("SEALSIM_CACHE", str(tmp_path / "file"))
+    with pytest.raises(InputError, match=r"maps' \(\$SEALSIM_CACHE/maps\) is not a folder: "
+                                         r"'.*file' is a file"):
+        cache_folder()
 
 
 def test_cli_list_and_clear(cache, monkeypatch):
