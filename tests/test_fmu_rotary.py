@@ -22,7 +22,7 @@ from fmpy.validation import validate_fmu
 from session_builds import built, session_build
 
 from sealsim.cases import expand_variants, load_toml
-from sealsim.errors import ModelError
+from sealsim.errors import InputError, ModelError
 from sealsim.fmu import LoadedFMU, build_rotary_fmu
 from sealsim.fmu.case import RotarySettings
 from sealsim.fmu.cosim import run_rotary
@@ -183,3 +183,26 @@ def test_a_steady_map_beyond_the_rubber_names_the_fmu_fields_to_lower(plain_case
         rotary_maps(plain_case, speed_max=20000 * RPM, speed_points=3,
                     sump_temperatures=[SUMPS[0], SUMPS[-1]], torque_speed_min=1 * RPM,
                     lag_points=1)
+
+
+@pytest.mark.parametrize(("settings", "message"), [
+    # torque_points = [1, 1] stopped after the maps (a minute) with "table axis 0: needs at
+    # least two strictly ascending finite values, got [0.0953...]", no field named
+    ({"torque_points": (1, 1)}, r"rotary.torque_points: \[1, 1\]; the torque table needs at "
+                                r"least 2 nodes"),
+    # the two messages named neither the values nor the range
+    ({"lag_sump_temperatures": [473.15]}, r"rotary.lag_sump_temperatures: 200 degC must lie "
+                                          r"between 20 degC and 120 degC"),
+    ({"sump_temperatures": [333.15]}, r"rotary.sump_temperatures: 60 degC; give at least two"),
+    # 500 degC went on to the steady states
+    ({"sump_temperatures": [773.15, 873.15]}, r"rotary.sump_temperatures: 500 degC, 600 degC; "
+                                              r"a rotary case's sump lies between -73.15 degC"),
+])
+def test_bad_rotary_map_settings_are_refused_before_the_maps_with_their_values(
+        plain_case, settings, message):
+    from sealsim.fmu.rotary_export import rotary_maps
+
+    arguments = {"speed_max": 3000 * RPM, "speed_points": 3, "sump_temperatures": SUMPS,
+                 "torque_speed_min": 1 * RPM, "lag_points": 1, **settings}
+    with pytest.raises(InputError, match=message):
+        rotary_maps(plain_case, **arguments)
