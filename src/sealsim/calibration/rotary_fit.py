@@ -51,7 +51,7 @@ from sealsim.tribology.film import FilmRangeWarning
 from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["PreparedRotaryRun", "RotaryFitResult", "RotaryPrediction", "check_groove_temperature",
-           "duty_from_speed",
+           "check_torque_sign", "duty_from_speed",
            "fit_rotary", "predict_rotary_run", "prepare_rotary_run", "rotary_run_metrics",
            "step_agreement"]
 
@@ -262,6 +262,7 @@ def prepare_rotary_run(case: RotaryFitCase, spec: RotaryMeasurementModel,
                          f"({float(np.max(np.abs(speed))) * 30 / math.pi:.4g} rpm) for at least "
                          f"averaging.window = {avg.window:g} s nowhere in its "
                          f"{t[-1]:g} s; check the time and speed columns and their units")
+    check_torque_sign(steps, avg.tolerance, where)
     tmp = tempfile.TemporaryDirectory(prefix="sealsim-duty-")
     duty_dir = Path(tmp.name)
     write_duty_csv(duty_dir / "duty.csv", times, speeds)
@@ -298,6 +299,29 @@ def check_groove_temperature(time, temperature, where: str) -> None:
                          f"(sample {k + 1}) is outside the rotary model's "
                          f"{lo - ZERO_CELSIUS_K:.0f} ... {hi - ZERO_CELSIUS_K:.0f} degC; check "
                          "the temperature column's unit (degC or K)")
+
+
+def check_torque_sign(steps: list[dict], tolerance: float, where: str) -> None:
+    """Refuse a run whose step-average torque is negative on most steps at speed: the
+    model's friction torque opposes the rotation (>= 0 for the |speed| it takes), so such a
+    torque column has the other sign convention (a rig's reaction torque).
+
+    Examples
+    --------
+    >>> steps = [{"speed": s, "torque": -0.4} for s in (0.0, 10.0, 50.0)]
+    >>> check_torque_sign(steps, 0.02, "run A")
+    Traceback (most recent call last):
+    ...
+    sealsim.errors.InputError: run A: the measured torque is negative on 2 of 2 steps at speed (median -0.4 N m); sealsim's friction torque opposes the rotation and is positive: if the rig records it negative, set scale = -1 on the torque column
+    """
+    fastest = max((s["speed"] for s in steps), default=0.0)
+    moving = [s["torque"] for s in steps if s["speed"] > tolerance * fastest]
+    if moving and float(np.median(moving)) < 0:
+        negative = sum(t < 0 for t in moving)
+        raise InputError(f"{where}: the measured torque is negative on {negative} of "
+                         f"{len(moving)} steps at speed (median {np.median(moving):.4g} N m); "
+                         "sealsim's friction torque opposes the rotation and is positive: if "
+                         "the rig records it negative, set scale = -1 on the torque column")
 
 
 def write_duty_csv(path: Path, times, speeds) -> None:
