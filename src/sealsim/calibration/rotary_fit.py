@@ -287,7 +287,7 @@ def check_groove_temperature(time, temperature, where: str) -> None:
     >>> check_groove_temperature([0.0, 2.0], [296.1, 22.9], "run A")
     Traceback (most recent call last):
     ...
-    sealsim.errors.InputError: run A: measured spring-groove temperature 22.9 K (-250.2 degC) at t = 2 s (sample 2) is outside the rotary model's -73 ... 177 degC; check the temperature column's unit (degC or K)
+    sealsim.errors.InputError: run A: measured spring-groove temperature 22.9 K (-250.2 degC) ...
     """
     lo, hi = CASE_TEMPERATURES
     temperature = np.asarray(temperature, dtype=float)
@@ -312,7 +312,7 @@ def check_torque_sign(steps: list[dict], tolerance: float, where: str) -> None:
     >>> check_torque_sign(steps, 0.02, "run A")
     Traceback (most recent call last):
     ...
-    sealsim.errors.InputError: run A: the measured torque is negative on 2 of 2 steps at speed (median -0.4 N m); sealsim's friction torque opposes the rotation and is positive: if the rig records it negative, set scale = -1 on the torque column
+    sealsim.errors.InputError: run A: the measured torque is negative on 2 of 2 steps ...
     """
     fastest = max((s["speed"] for s in steps), default=0.0)
     moving = [s["torque"] for s in steps if s["speed"] > tolerance * fastest]
