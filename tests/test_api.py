@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 import subprocess
 import sys
+import warnings
 
 import numpy as np
 import pandas as pd
@@ -180,6 +181,21 @@ def test_seal_friction_at_rest_is_zero_with_the_limit_named():
     assert frame.loc[0, ["film_um", "asperity_share", "transport_mm3_per_m"]].isna().all()
     assert 0.2 * frame.loc[0, "normal_force_N"] == pytest.approx(7.6, abs=0.05)
     assert frame.loc[1, "asperity_share"] > 0.95
+
+
+def test_a_law_that_ignores_the_contact_says_so():
+    # LuGre (canudas1995, newtons) on an O-ring at 6 bar: 1.04 N whatever F_N = 101 N and b
+    # the result showed beside it, without a word; the Θ law on the contact has no such note
+    seal = {"cord_diameter": "2 mm", "squeeze": 0.12}
+    with pytest.warns(SealsimWarning, match=r"the lugre law's friction does not depend on the "
+                                            r"seal's normal force and contact width"):
+        out = sealsim.seal_friction(seal, "0.1 m/s", "6 bar", diameter="32 mm", law="lugre")
+    assert out["normal_force_N"] > 50.0 and out["friction_N"] < 2.0
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        theta = sealsim.seal_friction(seal, "0.1 m/s", "6 bar", diameter="32 mm")
+    assert not any("does not depend" in str(w.message) for w in caught)
+    assert not any("does not depend" in n for n in theta["notes"])
 
 
 def test_seal_friction_pressure_scaling_and_broadcasting():

@@ -279,3 +279,49 @@ def test_gland_fe_runs_with_progress(server, browser):
     browser.find_element("id", "gland-fe").click()
     cell = _wait(browser, _visible("fe-fn0"), timeout=300)
     assert float(cell.get_attribute("data-value")) > 0
+
+
+@pytest.fixture
+def client(tmp_path):
+    """The app's endpoints without a browser (Flask's test client)."""
+    from sealsim.app.server import AppConfig, create_app
+
+    flask_app = create_app(AppConfig(tmp_path / "jobs"))
+    yield flask_app.test_client()
+    flask_app.extensions["sealsim_jobs"].close()
+
+
+FRICTION_FORM = {"cord_diameter": "2 mm", "squeeze": "12 %", "elastomer": "NBR",
+                 "law": "coulomb", "parameter_set": "unit", "pressure": "6 bar",
+                 "temperature": "25 degC", "diameter": "32 mm", "velocity_min": "0.001 m/s",
+                 "velocity_max": "1 m/s", "amplitude": "5 mm/s", "frequency": "1 Hz",
+                 "mean_velocity": "0 mm/s"}
+
+
+@pytest.mark.parametrize("field", ["cord_diameter", "pressure", "amplitude"])
+def test_the_friction_page_names_a_field_left_empty(client, field):
+    # The page leaves an emptied field out of its form; the server looked it up and answered
+    # with a 500 "Internal Server Error" page (KeyError) instead of naming the field.
+    form = {k: v for k, v in FRICTION_FORM.items() if k != field}
+    response = client.post("/api/friction", json=form)
+    assert response.status_code == 400
+    assert response.get_json() == {"error": f"input error: {field}: required"}
+
+
+@pytest.mark.parametrize(("url", "field", "text"), [
+    ("/api/friction", "squeeze", "0.12"),            # was taken as 0.12 %
+    ("/api/friction", "velocity_max", "1"),
+    ("/api/lip-seal/curve", "speed_max", "3000"),
+])
+def test_a_range_or_squeeze_without_its_unit_is_refused(client, url, field, text):
+    # The page sends "<number> <unit>"; a bare number was read in the page's unit, so a
+    # squeeze of "0.12" (a fraction, as case files write it) silently became 0.12 %.
+    lip = {"shaft_diameter": "80 mm", "speed": "1500 rpm", "oil": "VG68-mineral",
+           "material": "NBR", "lip_style": "plain", "sump_temperature": "60 degC",
+           "speed_min": "0 rpm", "speed_max": "3000 rpm"}
+    form = {**(FRICTION_FORM if url == "/api/friction" else lip), field: text}
+    response = client.post(url, json=form)
+    assert response.status_code == 400
+    error = response.get_json()["error"]
+    assert error.startswith(f"input error: {field}: {text!r} must be a finite number "
+                            "followed by the unit"), error

@@ -505,7 +505,10 @@ def test_a_variant_may_override_any_part_but_the_base_is_complete_without_varian
 def test_schema_command_prints_json_and_refuses_an_unknown_kind():
     result, _ = cli("schema", "friction-fit")
     assert result.exit_code == 0
-    assert json.loads(result.stdout)["$schema"] == "http://json-schema.org/draft-07/schema#"
+    schema = json.loads(result.stdout)
+    assert schema["$schema"] == "http://json-schema.org/draft-07/schema#"
+    # a kind without variants had the class name as its title ("FrictionFitCase")
+    assert schema["title"] == "sealsim friction fit case (sealsim friction fit)"
     result, text = cli("schema", "lipseal")
     assert result.exit_code == 2
     one_message(text)

@@ -150,6 +150,42 @@ def test_bad_cases_name_the_field(tmp_path):
             validate_case(RotaryFitCase, {**good, **change}, "test case")
 
 
+def test_a_groove_temperature_in_the_wrong_unit_is_refused_before_the_fit(tmp_path):
+    # the example's fit file with its degC column declared as K: a spring groove at 22.9 K
+    # was accepted and the fit chased it
+    source = EXAMPLE.parent / EXAMPLE_DATA["measurements"][0]["file"]
+    (tmp_path / "a.csv").write_text(source.read_text())
+    columns = {**COLUMNS, "temperature": {"column": "T_groove_C", "unit": "K"}}
+    data = fit_data({"a": "a.csv"}, PARAMETERS)
+    data["measurements"][0]["columns"] = columns
+    case = validate_case(RotaryFitCase, data, "test case")
+    with pytest.raises(InputError, match=r"measurement 'a' .*a.csv\): measured spring-groove "
+                       r"temperature 22.9 K \(-250.2 degC\) at t = 0 s \(sample 1\) is "
+                       r"outside the rotary model's -73 ... 177 degC; check the temperature "
+                       r"column's unit"):
+        prepare_rotary_run(case, case.measurements[0], tmp_path)
+
+
+def test_a_torque_of_the_other_sign_is_refused_before_the_fit(tmp_path):
+    # a rig that records the reaction torque (negative): the fit ran towards the bounds
+    source = EXAMPLE.parent / EXAMPLE_DATA["measurements"][0]["file"]
+    lines = source.read_text().splitlines()
+    flipped = [line if line.startswith("#") or line.startswith("time") else
+               ",".join([*line.split(",")[:2], str(-float(line.split(",")[2])),
+                         line.split(",")[3]]) for line in lines]
+    (tmp_path / "a.csv").write_text("\n".join(flipped) + "\n")
+    data = fit_data({"a": "a.csv"}, PARAMETERS)
+    case = validate_case(RotaryFitCase, data, "test case")
+    with pytest.raises(InputError, match=r"measured torque is negative on 6 of 6 steps at speed "
+                                         r"\(median -0.438\d N m\).*set scale = -1 on the "
+                                         r"torque column"):
+        prepare_rotary_run(case, case.measurements[0], tmp_path)
+    data["measurements"][0]["columns"] = {**COLUMNS, "torque": {**COLUMNS["torque"],
+                                                                "scale": -1.0}}
+    case = validate_case(RotaryFitCase, data, "test case")
+    assert len(prepare_rotary_run(case, case.measurements[0], tmp_path).steps) == 7
+
+
 def test_synthetic_truth_is_recovered_within_two_standard_errors(short_runs):
     # lip force, film coefficient and the seal's cooling in oil from one 10 min cycle made by
     # another model set-up (mesh 1.5, short steps) than the fit's, two noise seeds; with honest

@@ -176,6 +176,18 @@ def test_missing_field_names_path_and_what_is_expected():
     assert "temperature" in msg and "55 degC" in msg  # the hint gives dimension and example
 
 
+def test_a_missing_field_that_chooses_the_kind_of_table_is_named():
+    # [bench] without mode said "bench: Unable to extract tag using discriminator 'mode'"
+    from sealsim.cases import validate_case
+    from sealsim.friction.case import FrictionCase
+
+    data = {"friction": {"law": "lugre", "parameter_set": "canudas1995"},
+            "bench": {"mass": "1 kg"}, "inputs": {}}
+    with pytest.raises(InputError, match=r"bench.mode: required field is missing \(it chooses "
+                                         r"the kind of bench\)"):
+        validate_case(FrictionCase, data, "case")
+
+
 def test_missing_field_in_a_list_item_names_the_index():
     msg = _error(_delete(VALID, ("steps", 1, "speed")))
     assert "steps.1.speed: required field is missing" in msg

@@ -68,6 +68,9 @@ def test_cylinder_fmus_are_valid_fmi_2_and_3(cylinders):
         assert {"valve_command", "F_load", "x", "v", "p_cap", "p_rod", "T_cap", "T_rod",
                 "F_friction", "F_piston", "F_rod", "F_wiper", "F_N_piston", "theta_piston",
                 "valve_delay"} <= names
+        described = {v.name: v.description for v in md.modelVariables}
+        assert described["dp_piston"] == "pressure difference across the seal piston"
+        assert described["F_N_rod"] == "normal force of the seal rod"
         # Θ seals without bristles and a Coulomb wiper stick truly: one event indicator
         assert md.numberOfEventIndicators == 1
         if version == "3.0":
@@ -165,6 +168,51 @@ def test_bad_command_is_refused(cylinders):
         fmu.set(valve_command=2.0)
         with pytest.raises(ModelError, match="valve_command = 2 is not allowed"):
             fmu.do_step(0.0, 0.01)
+
+
+def test_a_step_of_the_load_breaks_a_stuck_piston_away_in_cosimulation(cylinders):
+    # The retracted piston sticks; F_load steps from 20 N to -2000 N (pulling, 4x the 415 N
+    # of 6 bar on the rod side).  Co-simulation restarted its integrator with the holding
+    # force already beyond the break-away -- no crossing left to find -- and the seals held
+    # 2020 N for ever (model exchange, with its event indicator, extended).
+    with LoadedFMU(cylinders["fmi2"]["path"], "cs") as fmu:
+        fmu.set(valve_command=-1.0)
+        fmu.initialize()
+        fmu.do_step(0.0, 0.1)
+        assert fmu.get("stuck", "x")[0] == 1.0
+        fmu.set(F_load=-2000.0)
+        for k in range(10):
+            fmu.do_step(0.1 + 0.01 * k, 0.01)
+        stuck, x, friction = fmu.get("stuck", "x", "F_friction")
+        # pulled out to the rod-end stop (stroke 100 mm) within 0.1 s; seal friction tens of N
+        assert stuck == 0.0 and x > 0.099 and abs(friction) < 100.0
+
+
+def test_a_load_that_empties_a_chamber_is_refused(cylinders):
+    # 1 MN on the rod pushed the retracted piston 0.5 m into the cap-end bumper, and the FMU
+    # went on with p_cap = -13 MPa absolute; sealsim pneumatic run refuses such a position
+    # (check_chamber_volumes), and so does the FMU now
+    with LoadedFMU(cylinders["fmi3"]["path"], "cs") as fmu:
+        fmu.set(valve_command=-1.0)
+        fmu.initialize()
+        fmu.set(F_load=1e6)
+        with pytest.raises(ModelError, match=r"the piston is [\d.]+ mm deep in the cap-end end "
+                                             r"stop's bumper .*F_load = 1e\+06 N\): more than "
+                                             r"the dead volume of that chamber \(5 cm\^3\)"):
+            for k in range(100):         # the outputs are computed when the host asks
+                fmu.do_step(0.01 * k, 0.01)
+                fmu.get("x", "p_cap")
+        assert k < 10
+
+
+def test_a_supply_pressure_at_or_below_ambient_is_refused(cylinders):
+    # p_supply is absolute; 6 (bar meant) ran the cylinder on 6 Pa.  The case's
+    # air.supply_pressure is a gauge pressure > 0: the FMU asks p_supply > ambient.
+    with LoadedFMU(cylinders["fmi2"]["path"], "cs") as fmu:
+        fmu.set(p_supply=6.0)
+        with pytest.raises(ModelError, match=r"parameter p_supply = 6 Pa is not allowed: it "
+                                             r"must be > 101325 Pa"):
+            fmu.initialize()
 
 
 def test_unsupported_cases_are_refused(tmp_path):

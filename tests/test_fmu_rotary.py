@@ -22,6 +22,7 @@ from fmpy.validation import validate_fmu
 from session_builds import built, session_build
 
 from sealsim.cases import expand_variants, load_toml
+from sealsim.errors import InputError, ModelError
 from sealsim.fmu import LoadedFMU, build_rotary_fmu
 from sealsim.fmu.case import RotarySettings
 from sealsim.fmu.cosim import run_rotary
@@ -156,6 +157,20 @@ def test_rotary_inputs_out_of_range_are_clipped_and_me_settles(rotary_fmu):
     assert result["T_contact"][-1] == pytest.approx(result["T_contact_steady"][-1], abs=1e-3)
 
 
+@pytest.mark.parametrize(("value", "bound"), [(80.0, "> 200 K"), (5000.0, "< 450 K")])
+def test_a_start_temperature_outside_the_cases_range_is_refused(rotary_fmu, value, bound):
+    # T_contact_start was only required > 0 K: 80 (meant as degC) started the contact at
+    # 80 K and 5000 K at 5000 K, with a clip warning only.  Its range is now that of the
+    # rotary case's environment.start_temperature.
+    names = {v.name: v for v in fmpy.read_model_description(str(rotary_fmu.path)).modelVariables}
+    assert names["T_contact_start"].unit == "K"
+    with LoadedFMU(rotary_fmu.path) as fmu:
+        fmu.set(speed=1000 * RPM, T_sump=330.0, start_steady=False, T_contact_start=value)
+        with pytest.raises(ModelError, match=rf"parameter T_contact_start = {value:g} K is not "
+                                             rf"allowed: it must be {bound}"):
+            fmu.initialize()
+
+
 def test_a_steady_map_beyond_the_rubber_names_the_fmu_fields_to_lower(plain_case):
     # 20000 rpm over a 120 degC sump: the NBR contact would pass 150 degC.  The rotary
     # model's message said "try a lower speed" but not which field of the FMU case sets it.
@@ -168,3 +183,26 @@ def test_a_steady_map_beyond_the_rubber_names_the_fmu_fields_to_lower(plain_case
         rotary_maps(plain_case, speed_max=20000 * RPM, speed_points=3,
                     sump_temperatures=[SUMPS[0], SUMPS[-1]], torque_speed_min=1 * RPM,
                     lag_points=1)
+
+
+@pytest.mark.parametrize(("settings", "message"), [
+    # torque_points = [1, 1] stopped after the maps (a minute) with "table axis 0: needs at
+    # least two strictly ascending finite values, got [0.0953...]", no field named
+    ({"torque_points": (1, 1)}, r"rotary.torque_points: \[1, 1\]; the torque table needs at "
+                                r"least 2 nodes"),
+    # the two messages named neither the values nor the range
+    ({"lag_sump_temperatures": [473.15]}, r"rotary.lag_sump_temperatures: 200 degC must lie "
+                                          r"between 20 degC and 120 degC"),
+    ({"sump_temperatures": [333.15]}, r"rotary.sump_temperatures: 60 degC; give at least two"),
+    # 500 degC went on to the steady states
+    ({"sump_temperatures": [773.15, 873.15]}, r"rotary.sump_temperatures: 500 degC, 600 degC; "
+                                              r"a rotary case's sump lies between -73.15 degC"),
+])
+def test_bad_rotary_map_settings_are_refused_before_the_maps_with_their_values(
+        plain_case, settings, message):
+    from sealsim.fmu.rotary_export import rotary_maps
+
+    arguments = {"speed_max": 3000 * RPM, "speed_points": 3, "sump_temperatures": SUMPS,
+                 "torque_speed_min": 1 * RPM, "lag_points": 1, **settings}
+    with pytest.raises(InputError, match=message):
+        rotary_maps(plain_case, **arguments)

@@ -70,6 +70,11 @@ def test_default_folder_follows_sealsim_cache(tmp_path, monkeypatch):
     (tmp_path / "file").write_text("")
     with pytest.raises(InputError, match="not a folder"):
         cache_folder(tmp_path / "file")
+    # SEALSIM_CACHE naming a file: 'cache list' showed an empty cache at FILE/maps
+    monkeypatch.setenv("SEALSIM_CACHE", str(tmp_path / "file"))
+    with pytest.raises(InputError, match=r"maps' \(\$SEALSIM_CACHE/maps\) is not a folder: "
+                                         r"'.*file' is a file"):
+        cache_folder()
 
 
 def test_cli_list_and_clear(cache, monkeypatch):
@@ -87,4 +92,8 @@ def test_cli_list_and_clear(cache, monkeypatch):
     assert not (folder / "c-2222222222222222.nc").exists()
     bad = runner.invoke(app, ["cache", "clear", "--older-than", "7"])
     assert bad.exit_code == 2 and "no unit" in bad.output  # 7 what? days, hours?
+    # a negative age named the function's argument in seconds ('older_than: -432000.0 s')
+    bad = runner.invoke(app, ["cache", "clear", "--older-than", "-5 days"])
+    assert bad.exit_code == 2
+    assert "--older-than: '-5 days' is negative; give an age >= 0" in " ".join(bad.output.split())
     assert (folder / "a-0000000000000000.nc").exists()

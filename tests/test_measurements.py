@@ -65,6 +65,17 @@ def test_bad_files_name_file_row_and_column(tmp_path, text, expected):
         assert part in str(err.value)
 
 
+def test_a_temperature_at_or_below_absolute_zero_is_refused(tmp_path):
+    # -300 degC (a typo) or a degC column of negative values declared as K became a
+    # temperature below 0 K without a word
+    path = write(tmp_path, "t,T\n0,20\n1,-300\n2,20\n")
+    with pytest.raises(InputError, match=r"row 3, column 2 \(temperature\): -300 degC is "
+                                         r"-26.85 K, not above absolute zero; check the "
+                                         r"column's unit"):
+        read_table(path, [ColumnSpec("time", "t", "s"), ColumnSpec("temperature", "T", "degC")],
+                   delimiter=",", header=True)
+
+
 def test_bad_mappings_are_input_errors(tmp_path):
     path = write(tmp_path, "t,x,F,p\n0,0,1,1\n10,1,1,1\n20,1,1,1\n")
     with pytest.raises(InputError, match="no column named 'y'"):

@@ -142,6 +142,22 @@ def test_fe_map_is_built_on_demand_and_cached(tiny_structure_case, fe_cache, tmp
         cm.build_or_load_fe_map(tiny_structure_case, cache_dir=cache)
 
 
+def test_a_damaged_cached_map_is_built_again(tiny_structure_case, fe_cache, tmp_path, caplog):
+    # a cache file damaged on disk stopped every run of the case with "map file ... is not a
+    # readable netCDF map: did not find a match in any of xarray's currently installed IO
+    # backends ... Consider ... installing additional" -- the cache is rebuilt instead
+    [cached] = fe_cache.glob("tiny_rod_seal-*.nc")
+    damaged = tmp_path / cached.name
+    damaged.write_bytes(cached.read_bytes()[:100])
+    with caplog.at_level("INFO", logger="sealsim.pneumatic.contact_maps"):
+        m = cm.build_or_load_fe_map(tiny_structure_case, cache_dir=tmp_path)
+    assert any(r.levelname == "WARNING" and "cannot be read (a damaged file); it is built "
+               "again" in r.getMessage() for r in caplog.records)
+    ref = cm.build_or_load_fe_map(tiny_structure_case, cache_dir=fe_cache)
+    assert m.evaluate(3e5, 310.0) == pytest.approx(ref.evaluate(3e5, 310.0), rel=1e-12)
+    assert [p.name for p in tmp_path.glob("*.nc")] == [cached.name]
+
+
 def test_fingerprint_follows_the_model_version(monkeypatch):
     from sealsim.structure import fingerprint
 

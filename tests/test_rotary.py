@@ -768,6 +768,22 @@ def test_steady_state_beyond_the_rubber_range_is_refused_in_degrees_celsius():
         steady_state(case, 5000 * RPM)
 
 
+@pytest.mark.parametrize(("rpm", "environment", "remedy"), [
+    (10000, {}, "a held sump"),                                   # free sump (the app's)
+    (1e6, {"sump_temperature": "60 degC"}, "another elastomer"),
+])
+def test_a_steady_state_that_runs_the_oil_beyond_its_range_is_refused_by_speed(
+        rpm, environment, remedy):
+    # 80 mm at 10000 rpm with a free sump: the iterates heat the bearing's oil past 700 K on
+    # their way, and the oil's viscosity refused 'temperature = 721.841 K' -- no speed, no
+    # field the user gave, and the hint 'add 273.15 to degC'.
+    case = _case(environment=environment)
+    with pytest.raises(ModelError, match=rf"steady state at {rpm:.0f} rpm: none found; .*"
+                       r"427 degC, the end of the oil model's range .*NBR: 150 degC\); try "
+                       rf"a lower speed.*{remedy}"):
+        steady_state(case, rpm * RPM)
+
+
 @pytest.mark.parametrize(("environment", "field"), [
     ({"sump_temperature": "-20 degC"}, "environment.sump_temperature -20.0 degC"),
     ({"ambient_temperature": "-30 degC"}, "environment.ambient_temperature (the start"),

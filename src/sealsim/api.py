@@ -321,7 +321,8 @@ def seal_friction(seal, velocity, pressure="0 bar", temperature="20 degC", law=N
         (broadcast), else a dict.
         At velocity 0 the friction is 0 N (sliding friction has no direction at rest), the
         film, share and transport NaN, and a note gives the limit towards rest.
-        Notes (an illustrative parameter set, a velocity of 0) as for :func:`lip_seal_torque`:
+        Notes (an illustrative parameter set, a velocity of 0, a law whose friction does not
+        change with F_N and b, such as LuGre's newtons) as for :func:`lip_seal_torque`:
         ``result["notes"]``, ``frame.attrs["notes"]`` and
         :class:`~sealsim.errors.SealsimWarning`.
 
@@ -364,6 +365,8 @@ def seal_friction(seal, velocity, pressure="0 bar", temperature="20 degC", law=N
                            pressure_b=0.0, temperature=t, contact_table=table,
                            sliding_diameter=diameter_m)
     force = np.asarray(friction_law.steady_force(v, inputs), dtype=float).reshape(-1)
+    if table is None:  # a steady curve from the contact table uses the contact
+        notes = [*notes, *_contact_unused_note(friction_law, v, inputs, force)]
     film = share = transport = np.full(v.size, np.nan)
     if table is not None:
         from sealsim.tribology.inverse_hydrodynamics import stroke_transport
@@ -394,6 +397,23 @@ def seal_friction(seal, velocity, pressure="0 bar", temperature="20 degC", law=N
 #: Speed at which :func:`seal_friction` evaluates the limit of the steady friction towards rest
 #: [m/s] (the contact friction tables are flat below their slowest speed, 1e-7 m/s).
 REST_LIMIT_SPEED = 1e-9
+
+
+def _contact_unused_note(friction_law, velocity, inputs, force) -> list[str]:
+    """A note when the law's steady force does not change with the seal's contact (F_N and b
+    doubled: the same force), e.g. LuGre or Coulomb parameter sets in newtons."""
+    from dataclasses import replace
+
+    doubled = replace(inputs, normal_force=2 * np.asarray(inputs.normal_force),
+                      contact_width=2 * np.asarray(inputs.contact_width))
+    again = np.asarray(friction_law.steady_force(velocity, doubled), dtype=float).reshape(-1)
+    if not np.array_equal(again, force):
+        return []
+    name = getattr(friction_law.params, "law", type(friction_law).__name__)
+    return [f"the {name} law's friction does not depend on the seal's normal force and "
+            "contact width: they are the seal's, the friction force comes from the law's "
+            "parameters (and, with a pressure scaling, the pressure) alone; the theta law "
+            "takes its friction from the contact"]
 
 
 def _span(values: np.ndarray, unit: str) -> str:

@@ -372,6 +372,10 @@ def validation_problems(exc: pydantic.ValidationError,
             allowed = _allowed_fields(model, err["loc"][:-1])
             problems.append(f"{where}unknown field" +
                             (f"; allowed fields: {', '.join(allowed)}" if allowed else ""))
+        elif kind == "union_tag_not_found":  # the field that selects the kind of table
+            field = str(err.get("ctx", {}).get("discriminator", "")).strip("'")
+            problems.append(f"{loc + '.' if loc else ''}{field}: required field is missing "
+                            f"(it chooses the kind of {loc or 'table'})")
         elif kind in ("literal_error", "enum"):
             expected = err.get("ctx", {}).get("expected", "")
             problems.append(f"{where}{given!r} is not allowed; choose one of {expected}")
@@ -660,7 +664,10 @@ def case_json_schema(model: type[BaseModel], *, variants: bool = False,
                     "then": {"$ref": f"#/definitions/{name}WithVariants"},
                     "else": {"$ref": f"#/definitions/{name}"}})
     else:
-        out.update(_draft7(schema))
+        own = _draft7(schema)
+        if title:
+            own.pop("title", None)  # the model's class name would replace the kind's title
+        out.update(own)
     if definitions:
         out["definitions"] = {name: _draft7(d) for name, d in definitions.items()}
     return out

@@ -157,6 +157,8 @@ def create_app(config: AppConfig) -> Flask:
         from sealsim.plotting.calculators import figure_png, friction_figure
 
         form = _form(request.get_json(silent=True))
+        _require(form, "cord_diameter", "squeeze", "law", "parameter_set", "pressure",
+                 "temperature", "diameter", "amplitude", "frequency", "mean_velocity")
         seal = {"cord_diameter": form["cord_diameter"],
                 "squeeze": _number(form, "squeeze", "%") / 100.0,
                 "elastomer": form.get("elastomer", "NBR")}
@@ -275,23 +277,30 @@ def _form(data) -> dict[str, str]:
 
 
 def _number(form: dict[str, str], key: str, unit: str) -> float:
-    """A field the page sends as "<number> <unit>" with this unit (a range bound)."""
+    """A field the page sends as "<number> <unit>" with this unit (a range bound, the
+    squeeze); a number without its unit is refused (a squeeze of "0.12" is not 12 %)."""
     text = form.get(key, "")
     number, _, given = text.partition(" ")
     try:
         value = float(number)
     except ValueError:
         raise InputError(f"{key}: {text!r} is not a number in {unit}") from None
-    if given.strip() not in ("", unit) or not math.isfinite(value):
-        raise InputError(f"{key}: {text!r} must be a finite number in {unit}")
+    if given.strip() != unit or not math.isfinite(value):
+        raise InputError(f"{key}: {text!r} must be a finite number followed by the unit "
+                         f"{unit!r}")
     return value
+
+
+def _require(form: dict[str, str], *keys: str) -> None:
+    """Refuse a form without one of these fields (the page leaves an emptied field out)."""
+    for key in keys:
+        if not form.get(key):
+            raise InputError(f"{key}: required")
 
 
 def _lip_arguments(form: dict[str, str]) -> dict[str, Any]:
     """Arguments of :func:`sealsim.lip_seal_torque` from the page's form (unit strings)."""
-    for key in ("shaft_diameter", "speed", "oil", "material", "lip_style"):
-        if not form.get(key):
-            raise InputError(f"{key}: required")
+    _require(form, "shaft_diameter", "speed", "oil", "material", "lip_style")
     return {"shaft_diameter": form["shaft_diameter"], "speed": form["speed"],
             "oil": form["oil"], "sump_temperature": form.get("sump_temperature") or None,
             "material": form["material"], "lip_style": form["lip_style"],

@@ -45,12 +45,13 @@ from sealsim.calibration.statistics import compare_signals, parameter_statistics
 from sealsim.cases import apply_overrides, validate_case
 from sealsim.errors import InputError, ModelError
 from sealsim.measurements import ColumnSpec, read_measurement, step_averages
-from sealsim.rotary.case import MAX_DUTY_DURATION, RotaryCase
+from sealsim.rotary.case import CASE_TEMPERATURES, MAX_DUTY_DURATION, RotaryCase
 from sealsim.rotary.simulation import simulate
 from sealsim.tribology.film import FilmRangeWarning
 from sealsim.units import ZERO_CELSIUS_K
 
-__all__ = ["PreparedRotaryRun", "RotaryFitResult", "RotaryPrediction", "duty_from_speed",
+__all__ = ["PreparedRotaryRun", "RotaryFitResult", "RotaryPrediction", "check_groove_temperature",
+           "check_torque_sign", "duty_from_speed",
            "fit_rotary", "predict_rotary_run", "prepare_rotary_run", "rotary_run_metrics",
            "step_agreement"]
 
@@ -240,6 +241,8 @@ def prepare_rotary_run(case: RotaryFitCase, spec: RotaryMeasurementModel,
     speed = m.column("speed")
     torque = m.column("torque")
     temperature = m.column("temperature") if m.has("temperature") else None
+    if temperature is not None:
+        check_groove_temperature(t, temperature, where)
     avg = case.averaging
     if t[-1] > MAX_DURATION:
         raise InputError(f"{where}: the run lasts {t[-1]:.4g} s, more than the rotary model's "
@@ -259,6 +262,7 @@ def prepare_rotary_run(case: RotaryFitCase, spec: RotaryMeasurementModel,
                          f"({float(np.max(np.abs(speed))) * 30 / math.pi:.4g} rpm) for at least "
                          f"averaging.window = {avg.window:g} s nowhere in its "
                          f"{t[-1]:g} s; check the time and speed columns and their units")
+    check_torque_sign(steps, avg.tolerance, where)
     tmp = tempfile.TemporaryDirectory(prefix="sealsim-duty-")
     duty_dir = Path(tmp.name)
     write_duty_csv(duty_dir / "duty.csv", times, speeds)
@@ -270,6 +274,54 @@ def prepare_rotary_run(case: RotaryFitCase, spec: RotaryMeasurementModel,
     return PreparedRotaryRun(spec, data, run_case, t, float(t_file[0]), speed, torque,
                              temperature, times, speeds, steps, avg.window, avg.tolerance,
                              duty_dir, tmp)
+
+
+def check_groove_temperature(time, temperature, where: str) -> None:
+    """Refuse a measured spring-groove temperature [K] outside the rotary case's temperatures
+    (:data:`~sealsim.rotary.case.CASE_TEMPERATURES`): the model cannot follow it, and such a
+    value is a column read in the wrong unit (degC numbers declared as K) more often than a
+    measurement.
+
+    Examples
+    --------
+    >>> check_groove_temperature([0.0, 2.0], [296.1, 22.9], "run A")
+    Traceback (most recent call last):
+    ...
+    sealsim.errors.InputError: run A: measured spring-groove temperature 22.9 K (-250.2 degC) ...
+    """
+    lo, hi = CASE_TEMPERATURES
+    temperature = np.asarray(temperature, dtype=float)
+    bad = np.flatnonzero(~((temperature > lo) & (temperature < hi)))
+    if bad.size:
+        k = int(bad[0])
+        raise InputError(f"{where}: measured spring-groove temperature {temperature[k]:.6g} K "
+                         f"({temperature[k] - ZERO_CELSIUS_K:.4g} degC) at t = {time[k]:g} s "
+                         f"(sample {k + 1}) is outside the rotary model's "
+                         f"{lo - ZERO_CELSIUS_K:.0f} ... {hi - ZERO_CELSIUS_K:.0f} degC; check "
+                         "the temperature column's unit (degC or K)")
+
+
+def check_torque_sign(steps: list[dict], tolerance: float, where: str) -> None:
+    """Refuse a run whose step-average torque is negative on most steps at speed: the
+    model's friction torque opposes the rotation (>= 0 for the |speed| it takes), so such a
+    torque column has the other sign convention (a rig's reaction torque).
+
+    Examples
+    --------
+    >>> steps = [{"speed": s, "torque": -0.4} for s in (0.0, 10.0, 50.0)]
+    >>> check_torque_sign(steps, 0.02, "run A")
+    Traceback (most recent call last):
+    ...
+    sealsim.errors.InputError: run A: the measured torque is negative on 2 of 2 steps ...
+    """
+    fastest = max((s["speed"] for s in steps), default=0.0)
+    moving = [s["torque"] for s in steps if s["speed"] > tolerance * fastest]
+    if moving and float(np.median(moving)) < 0:
+        negative = sum(t < 0 for t in moving)
+        raise InputError(f"{where}: the measured torque is negative on {negative} of "
+                         f"{len(moving)} steps at speed (median {np.median(moving):.4g} N m); "
+                         "sealsim's friction torque opposes the rotation and is positive: if "
+                         "the rig records it negative, set scale = -1 on the torque column")
 
 
 def write_duty_csv(path: Path, times, speeds) -> None:

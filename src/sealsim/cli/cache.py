@@ -11,6 +11,7 @@ from rich.table import Table
 from rich.text import Text
 
 from sealsim.cli._common import console, guarded, print_json
+from sealsim.errors import InputError
 
 __all__ = ["cache_app"]
 
@@ -84,6 +85,9 @@ def cache_clear(
     from sealsim.units import parse_quantity
 
     age = None if older_than is None else parse_quantity(older_than, "time", "--older-than")
+    if age is not None and not age >= 0:
+        raise InputError(f"--older-than: {older_than!r} is negative; give an age >= 0, "
+                         "e.g. '30 days'")
     folder = cache_folder(cache_dir)
     removed = clear_cached_maps(folder, older_than=age, dry_run=dry_run)
     verb = "would remove" if dry_run else "removed"

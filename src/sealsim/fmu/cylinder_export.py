@@ -150,17 +150,17 @@ def cylinder_spec(system, identifier: str, *, title: str = "", source: str = "")
     for i, (seal, name) in enumerate(zip(system.seals, names)):
         row = []
         for key, macro, text, unit in (
-                ("F", "F", "friction force", "N"), ("F_N", "FN", "normal force", "N"),
-                ("b", "B", "contact width", "m"),
+                ("F", "F", "friction force of", "N"), ("F_N", "FN", "normal force of", "N"),
+                ("b", "B", "contact width of", "m"),
                 ("dp", "DP", "pressure difference across", "Pa")):
             row.append(len(variables))
             variables.append(Variable(f"{key}_{name}", f"SEAL{i}_{macro}", "output",
-                                      f"{text} of the seal {seal.name}", unit,
+                                      f"{text} the seal {seal.name}", unit,
                                       exposed=key == "F" or seal.contact_map is not None))
         seal_vr.append(row)
     variables += [
         Variable("p_supply", "P_SUPPLY", "parameter", "absolute supply pressure", "Pa",
-                 float(c[rhs.C_PS]), lower=_GT0),
+                 float(c[rhs.C_PS]), lower=(">", float(c[rhs.C_PA]))),  # as air.supply_pressure
         Variable("moving_mass", "MOVING_MASS", "parameter",
                  "moving mass: piston, rod and load", "kg", float(c[rhs.C_MASS]), lower=_GT0),
         Variable("valve_conductance", "VALVE_CONDUCTANCE", "parameter",

@@ -52,7 +52,7 @@ from sealsim.fmu.rotary_maps import (
 from sealsim.fmu.tables import pchip_table
 from sealsim.properties.elastomers import ServiceRangeWarning
 from sealsim.properties.oils import OilRangeWarning
-from sealsim.rotary.case import RotaryCase
+from sealsim.rotary.case import CASE_TEMPERATURES, RotaryCase
 from sealsim.rotary.simulation import lip_seal_friction
 from sealsim.tribology.film import FilmRangeWarning
 from sealsim.units import ZERO_CELSIUS_K
@@ -154,7 +154,12 @@ def rotary_maps(case: RotaryCase, *, speed_max: float, speed_points: int, sump_t
     """
     sumps = np.asarray(sump_temperatures, dtype=float)
     if sumps.size < 2 or np.any(np.diff(sumps) <= 0):
-        raise InputError("rotary.sump_temperatures: give at least two ascending temperatures")
+        raise InputError(f"rotary.sump_temperatures: {_celsius(sumps)}; give at least two "
+                         "ascending temperatures")
+    lo, hi = CASE_TEMPERATURES
+    if sumps[0] <= lo or sumps[-1] >= hi:
+        raise InputError(f"rotary.sump_temperatures: {_celsius(sumps)}; a rotary case's sump "
+                         f"lies between {_celsius(lo)} and {_celsius(hi)}")
     if not speed_max > 0:
         raise InputError("rotary.max_speed must be > 0")
     if speed_points < 3:
@@ -163,14 +168,18 @@ def rotary_maps(case: RotaryCase, *, speed_max: float, speed_points: int, sump_t
         raise InputError("rotary.torque_speed_min must be > 0 and below the highest speed")
     if lag_points < 1:
         raise InputError("rotary.lag_points must be >= 1")
+    if min(torque_points) < 2:
+        raise InputError(f"rotary.torque_points: {list(torque_points)}; the torque table needs "
+                         "at least 2 nodes over speed and over contact temperature")
     report = (lambda task: None if progress is None else
               (lambda done, total: progress(task, done, total)))
     if lag_sump_temperatures is None:
         lag_sump_temperatures = [sumps[0], 0.5 * (sumps[0] + sumps[-1]), sumps[-1]]
     lag_sumps = np.sort(np.asarray(lag_sump_temperatures, dtype=float))
     if lag_sumps[0] < sumps[0] or lag_sumps[-1] > sumps[-1]:
-        raise InputError("rotary.lag_sump_temperatures must lie within the sump temperatures "
-                         "of the maps")
+        raise InputError(f"rotary.lag_sump_temperatures: {_celsius(lag_sumps)} must lie "
+                         f"between {_celsius(sumps[0])} and {_celsius(sumps[-1])}, the "
+                         "lowest and highest rotary.sump_temperatures")
     axes = map_axes(case, np.concatenate([sumps, lag_sumps]), speed_max)
     _, edges = axes.at(sumps)
     step = float(speed_coordinate(speed_max)) / (speed_points - 1)
@@ -232,6 +241,11 @@ def rotary_maps(case: RotaryCase, *, speed_max: float, speed_points: int, sump_t
                       t_speeds, t_temps, torque, lag, lag_xi, lag_regime, notes)
 
 
+def _celsius(temperatures) -> str:
+    """Temperatures [K] as the case files write them: '20 degC, 120 degC'."""
+    return ", ".join(f"{t - ZERO_CELSIUS_K:g} degC" for t in np.ravel(temperatures))
+
+
 def _lag_fractions(points: int) -> np.ndarray:
     """Where in a regime (ξ − k) the step responses are taken: at the centres of ``points``
     equal parts (not at standstill, where nothing heats, nor at the top speed, where the
@@ -284,7 +298,7 @@ def rotary_spec(case: RotaryCase, maps: RotaryMaps, identifier: str, *, title: s
                  start=1.0, boolean=True),
         Variable("T_contact_start", "T_CONTACT_START", "parameter",
                  "contact temperature at the start when start_steady is false", "K", sump0,
-                 lower=(">", 0.0)),
+                 lower=(">", CASE_TEMPERATURES[0]), upper=("<", CASE_TEMPERATURES[1])),
     ]
     lag = maps.lag
     sump_axis, edges = maps.axes.at(maps.sump_temperatures)

@@ -241,7 +241,7 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
     InputError
         Missing file, a cell that is not a finite number (file, row, column named; digits
         grouped with ``_`` are refused, not joined), a missing column, an index (time) that
-        does not increase, fewer than 3 rows.
+        does not increase, a temperature at or below absolute zero, fewer than 3 rows.
 
     Examples
     --------
@@ -314,6 +314,14 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
     for c, spec in enumerate(columns):
         convert = _si_factor(spec.unit, spec.quantity, f"{label}, column {spec.column!r}")
         data[spec.quantity] = convert(values[:, c] * spec.scale)
+        if QUANTITIES[spec.quantity] == "K":  # an absolute temperature
+            cold = np.flatnonzero(~(data[spec.quantity] > 0))
+            if cold.size:
+                r = int(cold[0])
+                raise InputError(f"{label}, row {lines[r][0]}, column {indices[c] + 1} "
+                                 f"({spec.quantity}): {values[r, c]:g} {spec.unit} is "
+                                 f"{data[spec.quantity][r]:.6g} K, not above absolute zero; "
+                                 "check the column's unit")
     if index is not None:
         c = [spec.quantity for spec in columns].index(index)
         bad = np.flatnonzero(np.diff(data[index]) <= 0)

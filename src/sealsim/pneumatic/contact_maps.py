@@ -570,7 +570,8 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
     filled in); the SHA-256 of the resolved TOML and of the FE model's fingerprint
     (:func:`sealsim.structure.fingerprint.model_fingerprint`: model version, FElupe version,
     source of the structure model and the elastomer catalogue) names the cache file
-    ``<cache_dir>/<stem>-<hash16>.nc``.  A cached map is read; otherwise
+    ``<cache_dir>/<stem>-<hash16>.nc``.  A cached map is read (one that cannot be read, a
+    damaged file, is built again with a warning); otherwise
     :func:`sealsim.structure.mapping.compute_map` runs (FE, minutes) and its result is written
     atomically to the cache.  Any change of the structure case or of the FE model gives a new
     map (old files stay in the cache folder until deleted).  Before a map is computed, the
@@ -627,7 +628,11 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
                             .encode("utf-8")).hexdigest()[:16]
     folder = Path(cache_dir) if cache_dir is not None else default_cache_dir()
     target = folder / f"{path.stem}-{digest}.nc"
-    if not target.is_file():
+    damaged = target.is_file() and not _readable_netcdf(target)
+    if damaged:
+        logger.warning(f"the cached map {target} cannot be read (a damaged file); it is built "
+                       "again")
+    if damaged or not target.is_file():
         try:
             folder.mkdir(parents=True, exist_ok=True)
         except OSError as exc:
@@ -638,6 +643,17 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
         dataset, encoding = netcdf_ready(dataset)
         atomic_write_bytes(target, dataset.to_netcdf(encoding=encoding))
     return FEContactMap.from_file(target, squeeze=squeeze)
+
+
+def _readable_netcdf(path: Path) -> bool:
+    """Whether ``path`` opens as a netCDF file (a cache file damaged on disk does not)."""
+    import xarray as xr
+
+    try:
+        with xr.open_dataset(path):
+            return True
+    except Exception:  # netCDF errors come in many types
+        return False
 
 
 def _build_notice(case, path: Path, target: Path, label: str = "") -> str:

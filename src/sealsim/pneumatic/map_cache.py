@@ -16,6 +16,7 @@ an hour old (a map being written right now is never removed half-way).
 
 from __future__ import annotations
 
+import os
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -58,10 +59,15 @@ class CachedMap:
 
 
 def cache_folder(cache_dir: str | Path | None = None) -> Path:
-    """The cache folder: ``cache_dir``, or the default one; an existing file is refused."""
+    """The cache folder: ``cache_dir``, or the default one; a file at its place or at the
+    place of one of its parents (``$SEALSIM_CACHE`` naming a file) is refused."""
     folder = Path(cache_dir) if cache_dir is not None else default_cache_dir()
-    if folder.exists() and not folder.is_dir():
-        raise InputError(f"map cache {str(folder)!r} is not a folder")
+    existing = next((p for p in (folder, *folder.parents) if p.exists()), None)
+    if existing is not None and not existing.is_dir():
+        given = "" if cache_dir is not None or "SEALSIM_CACHE" not in os.environ else \
+            " ($SEALSIM_CACHE/maps)"
+        raise InputError(f"map cache {str(folder)!r}{given} is not a folder" + (
+            f": {str(existing)!r} is a file" if existing != folder else ""))
     return folder
 
 

@@ -256,6 +256,12 @@ class Bearing(CaseModel):
         return self
 
 
+#: Open range [K] of the temperatures a rotary case starts at or holds (environment's
+#: start_temperature, sump_temperature, housing_temperature), of the rotary FMU's parameter
+#: T_contact_start and of a measured spring-groove temperature (sealsim rotary fit).
+CASE_TEMPERATURES = (200.0, 450.0)
+
+
 class Environment(CaseModel):
     """Oil sump, housing, ambient, shaft.
 
@@ -270,14 +276,17 @@ class Environment(CaseModel):
         "in it) or 'test_rig' "
         "(Organisciak et al.'s rig: short shaft, small oil bath, insulated ends)"))
     ambient_temperature: Q("temperature", gt=200.0, lt=400.0) = 293.15
-    start_temperature: Q("temperature", gt=200.0, lt=450.0) | None = Field(
+    start_temperature: Q("temperature", gt=CASE_TEMPERATURES[0],
+                         lt=CASE_TEMPERATURES[1]) | None = Field(
         None, description="initial temperature of shaft, seal, oil and housing; default: the "
                           "held sump temperature, else ambient")
     sump_volume: Q("volume", gt=1e-6, le=10.0) = 1e-3
-    sump_temperature: Q("temperature", gt=200.0, lt=450.0) | None = Field(
+    sump_temperature: Q("temperature", gt=CASE_TEMPERATURES[0],
+                         lt=CASE_TEMPERATURES[1]) | None = Field(
         None, description="if given, the sump is held at this temperature (thermostat); "
                           "otherwise it heats up from the seal's friction")
-    housing_temperature: Q("temperature", gt=200.0, lt=450.0) | None = Field(
+    housing_temperature: Q("temperature", gt=CASE_TEMPERATURES[0],
+                            lt=CASE_TEMPERATURES[1]) | None = Field(
         None, description="if given, the housing is held at this temperature (a heated test "
                           "head, a gearbox at its operating temperature); otherwise it is a "
                           "heat capacity between sump and ambient")

@@ -34,6 +34,7 @@ import pandas as pd
 from sealsim.cases import expand_variants, load_toml
 from sealsim.errors import InputError, ModelError
 from sealsim.properties.elastomers import ServiceRangeWarning, get_elastomer
+from sealsim.properties.oils import T_RANGE as OIL_T_RANGE
 from sealsim.properties.oils import OilRangeWarning
 from sealsim.rotary.case import RotaryCase, start_temperature
 from sealsim.rotary.friction import FrictionState, LipSealFriction, LipSealFrictionParameters
@@ -870,42 +871,50 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
                                 bearing_heat(case, model.oil, angular_speed, where[1])])
 
     sump = None if model.sump_fixed else model.network.node_index["sump"]
+    remedy = ("a lower speed or another elastomer" if model.sump_fixed else
+              "a lower speed, a held sump (environment.sump_temperature) or a housing "
+              "that sheds more heat (environment.housing_area, housing_heat_transfer)")
     # the first slopes from a 1 K difference, then secants through the iterates
-    previous = heats(temps + 1.0)
-    slopes, converged, last_update, stale = np.zeros(2), False, np.inf, False
-    for iteration in range(1, max_iter + 1):
-        where, power = heats(temps)
-        moved = where != previous[0]
-        slopes[moved] = (power - previous[1])[moved] / (where - previous[0])[moved]
-        previous = (where, power)
-        if sump is not None:  # the oil's coefficients follow the sump temperature
-            k, f = model.assemble(angular_speed, temps[sump])
-            if stale and abs(temps[sump] - factorised_at) > STALE_SUMP_CHANGE:
-                factorised_at = temps[sump]
-                lu, responses, coupling = factorised(k)
-        step = lu.solve(f @ fixed + unit_sources @ power - k @ temps)
-        # Woodbury: the heats' feedback (P + s·Δ) through the two probes, (I − C·S)·a = C(x)
-        system = np.eye(2) - coupling * slopes[None, :]
-        if np.linalg.det(system) > 0.1:  # else a heat grows faster than the network cools it
-            step += responses @ (slopes * np.linalg.solve(system, probes.T @ step))
-        temps += step
-        if not np.all(np.isfinite(temps)):
-            break
-        update = max(abs(model.contact_temperature(step)),
-                     0.0 if sump is None else abs(step[sump]))
-        if update < tol:
-            converged = True
-            break
-        stale, last_update = update > STALE_CONTRACTION * last_update, update
+    try:
+        previous = heats(temps + 1.0)
+        slopes, converged, last_update, stale = np.zeros(2), False, np.inf, False
+        for iteration in range(1, max_iter + 1):
+            where, power = heats(temps)
+            moved = where != previous[0]
+            slopes[moved] = (power - previous[1])[moved] / (where - previous[0])[moved]
+            previous = (where, power)
+            if sump is not None:  # the oil's coefficients follow the sump temperature
+                k, f = model.assemble(angular_speed, temps[sump])
+                if stale and abs(temps[sump] - factorised_at) > STALE_SUMP_CHANGE:
+                    factorised_at = temps[sump]
+                    lu, responses, coupling = factorised(k)
+            step = lu.solve(f @ fixed + unit_sources @ power - k @ temps)
+            # Woodbury: the heats' feedback (P + s·Δ) through the two probes, (I − C·S)·a = C(x)
+            system = np.eye(2) - coupling * slopes[None, :]
+            if np.linalg.det(system) > 0.1:  # else a heat outgrows the network's cooling
+                step += responses @ (slopes * np.linalg.solve(system, probes.T @ step))
+            temps += step
+            if not np.all(np.isfinite(temps)):
+                break
+            update = max(abs(model.contact_temperature(step)),
+                         0.0 if sump is None else abs(step[sump]))
+            if update < tol:
+                converged = True
+                break
+            stale, last_update = update > STALE_CONTRACTION * last_update, update
+    except InputError:  # an iterate took the oil beyond its property model's range
+        raise ModelError(
+            f"steady state at {angular_speed * 30 / math.pi:.0f} rpm: none found; on the way "
+            f"the oil at the bearing or in the sump passed "
+            f"{OIL_T_RANGE[1] - ZERO_CELSIUS_K:.0f} degC, the end of the oil model's range "
+            f"(the contact's limit with {rubber.name}: {highest - ZERO_CELSIUS_K:.0f} degC); "
+            f"try {remedy}") from None
     if not converged:
         raise ModelError(f"steady state at {angular_speed * 30 / math.pi:.0f} rpm did not "
                          f"converge in {max_iter} iterations")
     t_contact = model.contact_temperature(temps)
     t_sump = model.sump_temperature(temps)
     if not lowest <= t_contact <= highest:
-        remedy = ("a lower speed or another elastomer" if model.sump_fixed else
-                  "a lower speed, a held sump (environment.sump_temperature) or a housing "
-                  "that sheds more heat (environment.housing_area, housing_heat_transfer)")
         raise ModelError(
             f"steady state at {angular_speed * 30 / math.pi:.0f} rpm: the contact would run at "
             f"about {t_contact - ZERO_CELSIUS_K:.0f} degC (sump {t_sump - ZERO_CELSIUS_K:.0f} "

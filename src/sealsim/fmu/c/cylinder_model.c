@@ -665,6 +665,20 @@ FmuStatus model_outputs(Instance *c) {
 #if NEVENT_INDICATORS > 0
     P(STICK_SLIP_INDICATOR) = problem_event(&p, c->time, y);
 #endif
+    /* pneumatic.system.check_chamber_volumes: a piston pressed into an end stop's bumper
+     * deeper than the dead volume allows (a large F_load) leaves a chamber without volume */
+    double volume_cap = m->cst[C_DEAD1] + m->cst[C_A1] * o->x;
+    double volume_rod = m->cst[C_DEAD2] + m->cst[C_A2] * (m->cst[C_STROKE] - o->x);
+    if (!(volume_cap > 0.0 && volume_rod > 0.0)) {
+        int cap = !(volume_cap > 0.0);
+        fmu_log(c, FMU_ERROR, "logStatusError",
+                "at t = %g s the piston is %g mm deep in the %s end stop's bumper (x = %g m, "
+                "F_load = %g N): more than the dead volume of that chamber (%g cm^3) allows, "
+                "so it has no volume left; lower F_load or use a stiffer end stop", c->time,
+                1e3 * (cap ? -o->x : o->x - m->cst[C_STROKE]), cap ? "cap-end" : "rod-end",
+                o->x, P(F_LOAD), 1e6 * m->cst[cap ? C_DEAD1 : C_DEAD2]);
+        return FMU_ERROR;
+    }
     if (!isfinite(o->f_fric) || !isfinite(o->p1) || !isfinite(o->p2)) {
         fmu_log(c, FMU_ERROR, "logStatusError",
                 "the model is not finite at t = %g s (x = %g m, v = %g m/s, p1 = %g Pa, "
@@ -729,6 +743,10 @@ FmuStatus model_step(Instance *c, double h) {
     Bdf *b = &m->bdf;
     int direction = 0;
     while (t < t_end) {
+        /* a step of F_load restarts the integrator with the holding force beyond the
+         * break-away already: no crossing left to find, so the piston breaks away here */
+        if (!m->bdf_active && m->mode == MODE_STICK && problem_event(&p, t, y) > 0.0)
+            m->mode = p.mode = switch_mode(&p, t, y);
         direction = (m->mode == MODE_FORWARD || m->mode == MODE_BACKWARD) ? -1
                     : (m->mode == MODE_STICK ? 1 : 0);
         /* the next breakpoint: the end of the step or a command's arrival at the spool */
