@@ -923,7 +923,7 @@ def steady_state(case: RotaryCase, angular_speed: float, tol: float = 1e-8,
             f"that the {rubber.name} model covers (service limit "
             f"{rubber.service_range[1] - ZERO_CELSIUS_K:.0f} degC): the seal has no steady "
             f"state there; try {remedy}")
-    oil = case.oil.build()
+    oil = model.oil
     if not model.sump_fixed and oil.min_temperature is not None and t_sump < oil.min_temperature:
         raise ModelError(
             f"steady state at {angular_speed * 30 / math.pi:.0f} rpm: the free sump would "
