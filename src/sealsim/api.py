@@ -314,9 +314,9 @@ def seal_friction(seal, velocity, pressure="0 bar", temperature="20 degC", law=N
         film_um (film at the pressure maximum in the stroke direction of the velocity),
         asperity_share (share of F_N the asperities carry) and transport_mm3_per_m (fluid
         the seal lets pass per metre of double stroke at this speed, π·D·(h*_out − h*_in)/2:
-        > 0 leaks out, <= 0 is dragged back; NaN for other laws; exactly 0 for the analytic
-        O-ring estimate, whose Hertz profile is symmetric so both strokes get the same film --
-        the transport needs an FE map, whose profile gives each stroke its own inlet flank): a
+        > 0 leaks out, <= 0 is dragged back; NaN for other laws; for the analytic O-ring
+        estimate (its Hertz profile plus the sealed pressure) 0 without pressure and an
+        estimate under pressure -- an FE map gives each stroke its own inlet flank): a
         DataFrame with one row per point if velocity, pressure or temperature is an array
         (broadcast), else a dict.
         At velocity 0 the friction is 0 N (sliding friction has no direction at rest), the

@@ -98,7 +98,7 @@ def law_parameters(law, sliding_diameter: float = 0.0) -> np.ndarray:
 def contact_steady(par, frow, fdata, temp, dp, orient, vv):
     """(|F_ss(v)| [N], F_ss(0⁺) [N]) of a Θ law on its seal's contact table
     (:meth:`sealsim.friction.theta.Theta.contact_steady`): π·D·(μ_b·L + V) in the stroke
-    direction of orient·v, and π·D·μ_b times the mean asperity load of both directions at
+    direction of orient·v, and π·D·μ_b times the larger asperity load of both directions at
     the table's slowest speed (its first node) -- the table lookups of
     :func:`~sealsim.friction.contact_table.contact_table_point` sharing one cell search."""
     i, wa, j, wb = table_cell(frow, fdata, temp, dp)       # one cell search for all three
@@ -111,7 +111,7 @@ def contact_steady(par, frow, fdata, temp, dp, orient, vv):
     up, _, _ = cell_sums(frow, fdata, i, wa, j, wb, 0, _ON_NODE, 0, False)
     down, _, _ = cell_sums(frow, fdata, i, wa, j, wb, 0, _ON_NODE, 2, False)
     circumference, mu = par[TH_CIRCUMFERENCE], par[TH_MU_B]
-    return (circumference * (mu * load + visc), circumference * mu * 0.5 * (up + down),
+    return (circumference * (mu * load + visc), circumference * mu * max(up, down),
             circumference * visc)
 
 

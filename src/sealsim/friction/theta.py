@@ -626,8 +626,11 @@ class Theta(FrictionLaw):
     def contact_steady(self, v, inputs: ContactInputs):
         """(|F_ss(v)| [N], boundary level F_ss(0⁺) [N], viscous part π·D·V(|v|) [N]) from the
         contact table of ``inputs`` (``steady = "contact"``): F_ss = π·D·(μ_b·L + V) in the
-        stroke direction of v, and μ_b times the asperity load at the table's slowest speed
-        (both directions' mean)."""
+        stroke direction of v, and μ_b times the asperity load at the table's slowest speed,
+        the larger of both directions': sliding from rest then never starts with more
+        friction than held the seal at rest (with the mean, a pressurised analytic O-ring,
+        whose low-pressure inlet is steeper, chattered between stick and slip in its
+        stronger direction)."""
         table = inputs.contact_table
         if table is None:
             raise InputError("inputs.contact_table: the theta law with steady = 'contact' needs "
@@ -647,7 +650,7 @@ class Theta(FrictionLaw):
         down, _, _ = table.evaluate(-slow, dp, temperature)
         circumference = np.pi * diameter
         return (circumference * (mu * load + viscous),
-                circumference * mu * 0.5 * (up + down), circumference * viscous)
+                circumference * mu * np.maximum(up, down), circumference * viscous)
 
     def level(self, theta, inputs: ContactInputs, v=None):
         """Friction level [N] without the sign: the break-away force at rest.

@@ -2,7 +2,8 @@ r"""A seal's steady friction table from its own contact: built on demand, cached
 
 For each temperature and pressure difference of the seal's contact map the static contact
 pressure profile p_c(z) -- the FE map's stored profile (``contact_pressure`` of ``map.nc``),
-or, for the analytic O-ring estimate, the Hertz profile of its force and width -- is turned
+or, for the analytic O-ring estimate, the Hertz profile of its squeeze plus the sealed
+pressure -- is turned
 into a Stribeck curve per stroke direction by inverse hydrodynamics and mixed lubrication
 (:func:`sealsim.tribology.mixed_lubrication.reciprocating_friction`): lubricant viscosity at
 the temperature (the base oil's ASTM D341 curve times a thickener factor), the rubber's
@@ -20,9 +21,11 @@ is not part of it).
 **Direction.**  The table's "+" direction is the counter surface sliding from the pressurised
 side of the seal to the other (+z of an FE profile: the upstream side is z < 0): a rod seal's
 outstroke.  :func:`table_orientation` maps the piston velocity of a cylinder onto it.  The
-analytic O-ring estimate's Hertz profile is symmetric: its table holds one direction for both
-(the same film both ways, so no net fluid transport per stroke); the directions differ only
-on an FE map's profile.
+analytic O-ring estimate's profile is its squeeze's Hertz profile with the sealed pressure on
+top (:func:`~sealsim.pneumatic.contact_maps.energised_contact_pressure`, the profile its force
+estimate integrates): symmetric without pressure (one film both ways, no net transport), under
+pressure the low-pressure edge drops from Δp to 0, a steeper inlet for the stroke that enters
+there.
 
 **Lubricant.**  Pneumatic seals run in grease; the film is that of its base oil (ASTM D341
 through the datasheet's ν40, ν100) times ``thickener_factor``.  Grease films measured in EHL
@@ -44,7 +47,8 @@ import numpy as np
 
 from sealsim.errors import InputError
 from sealsim.friction.contact_table import TABLE_VARIABLES, SteadyFrictionTable
-from sealsim.pneumatic.contact_maps import AnalyticContactMap, FEContactMap, default_cache_dir
+from sealsim.pneumatic.contact_maps import (AnalyticContactMap, FEContactMap, default_cache_dir,
+                                           energised_contact_pressure)
 from sealsim.tribology.contact import DEFAULT_ROUGHNESS_DENSITY, DEFAULT_ROUGHNESS_SLOPE
 from sealsim.tribology.mixed_lubrication import reciprocating_friction
 from sealsim.tribology.rubber_friction import DEFAULT_ASPERITY_WAVELENGTH
@@ -54,7 +58,7 @@ __all__ = ["ContactTribology", "LAW_TABLE_FIELDS", "TABLE_SPEEDS", "build_fricti
            "table_orientation"]
 
 #: Version of the table builder: part of the cache key (a change of the physics gives new files)
-TABLE_VERSION = 3
+TABLE_VERSION = 4
 #: Speeds of a table [m/s]: 1e-7 to 10 m/s, six per decade
 TABLE_SPEEDS = np.logspace(-7.0, 1.0, 49)
 #: Largest temperature step of a table [K]: FE profiles are interpolated linearly between the
@@ -169,12 +173,12 @@ def sliding_diameter(contact_map) -> float:
     return float(contact_map.sliding_diameter)
 
 
-def _hertz_profile(force_per_length, width):
-    """(z [m], p [Pa]) of a Hertz line contact of force F' [N/m] and width b [m]."""
+def _energised_profile(force_per_length, width, pressure_difference):
+    """(z [m], p [Pa]) of the analytic O-ring estimate's contact: its Hertz profile plus Δp
+    (:func:`~sealsim.pneumatic.contact_maps.energised_contact_pressure`)."""
     a = 0.5 * width
     z = np.linspace(-1.1 * a, 1.1 * a, _HERTZ_POINTS)
-    p0 = 2.0 * force_per_length / (np.pi * a)
-    return z, p0 * np.sqrt(np.clip(1.0 - (z / a) ** 2, 0.0, None))
+    return z, energised_contact_pressure(z, force_per_length, width, pressure_difference)
 
 
 def _grid(nodes, step):
@@ -237,7 +241,8 @@ def contact_profiles(contact_map):
         fn, b = contact_map.evaluate(pp, tt)
         force = np.asarray(fn, dtype=float) / (np.pi * contact_map.sliding_diameter)
         width = np.asarray(b, dtype=float)
-        return temps, pressures, lambda i, j: _hertz_profile(force[i, j], width[i, j])
+        return temps, pressures, lambda i, j: _energised_profile(force[i, j], width[i, j],
+                                                                 pressures[j])
     raise InputError(f"a friction table needs a contact map with contact pressure profiles "
                      f"(an FE map or the analytic O-ring estimate), got {type(contact_map)}")
 
@@ -266,7 +271,7 @@ def build_friction_table(contact_map, tribology: ContactTribology,
     speeds = np.asarray(speeds, dtype=float)
     rubber = get_elastomer(tribology.elastomer)
     values = np.zeros((temps.size, pressures.size, speeds.size, len(TABLE_VARIABLES)))
-    symmetric = isinstance(contact_map, AnalyticContactMap)
+    analytic = isinstance(contact_map, AnalyticContactMap)
     kwargs = {"film_factor": tribology.film_factor, "supply_layer": tribology.supply_layer,
               "roughness_density": tribology.roughness_density,
               "roughness_slope": tribology.roughness_slope}
@@ -281,7 +286,7 @@ def build_friction_table(contact_map, tribology: ContactTribology,
         for j in range(pressures.size):
             z, p = profile(i, j)
             for k, direction in enumerate((1, -1)):
-                if k == 1 and symmetric:
+                if k == 1 and analytic and pressures[j] <= 0.0:    # symmetric: one film
                     values[i, j, :, 2:4] = values[i, j, :, 0:2]
                     values[i, j, :, 5] = values[i, j, :, 4]
                     continue

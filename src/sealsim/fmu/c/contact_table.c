@@ -115,7 +115,7 @@ void contact_steady(const long *row, const double *data, double temperature, dou
     table_cell_sums(row, data, i, wa, j, wb, 0, on_node, 0, 0, &up, &unused0, &unused1);
     table_cell_sums(row, data, i, wa, j, wb, 0, on_node, 2, 0, &down, &unused0, &unused1);
     *steady = circumference * (boundary_friction * load + visc);
-    *boundary = circumference * boundary_friction * 0.5 * (up + down);
+    *boundary = circumference * boundary_friction * fmax(up, down);   /* see contact_steady */
     *viscous = circumference * visc;
 }
 
