@@ -324,3 +324,23 @@ def test_fe_at_nominal_is_the_structure_model_of_the_nominal_gland(tmp_path, mon
                                      diameter=structure["gland"]["sealing_diameter"])
     assert 0.5 < rest / analytic["normal_force_N"] < 2.0
     assert fe["friction_N"]["at_pressure"] > fe["friction_N"]["unpressurised"] > 0
+
+
+def test_cli_help_and_notes_keep_their_table_names(monkeypatch, tmp_path):
+    # rich reads "[fe]" as a markup tag and dropped it: the help said "the case's  table";
+    # library notes naming a table ("[fe]") are printed as written
+    import sealsim.runs.gland as gland_runs
+
+    help_text = CliRunner().invoke(app, ["gland", "check", "--help"]).output
+    assert "[fe] table" in " ".join(help_text.split())
+    real = gland_runs.check_case_file
+
+    def with_note(*args, **kwargs):
+        report = real(*args, **kwargs)
+        report["notes"].append("set [fe] pressure to check it")
+        return report
+    monkeypatch.setattr(gland_runs, "check_case_file", with_note)
+    result = CliRunner().invoke(app, ["gland", "check", str(EXAMPLES / "face_static.toml"),
+                                      "--out", str(tmp_path / "g"), "-q"])
+    assert result.exit_code == 0, result.output
+    assert "set [fe] pressure" in " ".join(result.output.split()), result.output

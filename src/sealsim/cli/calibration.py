@@ -11,6 +11,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import typer
+from rich.markup import escape
 
 from sealsim.cli._common import console, err_console, guarded, variant_progress
 from sealsim.cli.friction import friction_app
@@ -64,7 +65,7 @@ def fit(
                       f"{c['F_measured_std_N']:.3f} N (1 std of a run, cv {cv}), model "
                       f"{c['F_predicted_mean_N']:.3f} N, error of the mean {error} ({in_std})")
     for text in summary["warnings"]:
-        console.print(f"[yellow]warning:[/yellow] {text}")
+        console.print(f"[yellow]warning:[/yellow] {escape(text)}")
     console.print(f"results written to {out}")
     if summary["status"] != "ok":
         for text in summary["failure"]:
@@ -137,7 +138,7 @@ def rotary_fit(
                      f"{m['T_groove_error_max_K']:.2f} K")
         console.print(line)
     for text in summary["warnings"]:
-        console.print(f"[yellow]warning:[/yellow] {text}")
+        console.print(f"[yellow]warning:[/yellow] {escape(text)}")
     console.print(f"{summary['simulations']} simulations; results written to {out}")
     if summary["status"] != "ok":
         for text in summary["failure"]:

@@ -10,6 +10,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import typer
+from rich.markup import escape
 
 from sealsim.cli._common import console, guarded, variant_progress
 
@@ -94,5 +95,5 @@ def build(
                       f"extend time {100 * rel['extend_time_s']:.3f} %, retract time "
                       f"{100 * rel['retract_time_s']:.3f} %")
     for note in report.get("notes", []):
-        console.print(f"[yellow]note:[/yellow] {note}")
+        console.print(f"[yellow]note:[/yellow] {escape(note)}")
     console.print(f"FMU written to {result.path} (documentation/index.html inside)")

@@ -9,6 +9,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import typer
+from rich.markup import escape
 
 from sealsim.cli._common import console, guarded, variant_progress
 
@@ -41,7 +42,7 @@ def run(
     with variant_progress("friction", quiet, lambda _, f, __: f"{100 * f:.0f} %") as progress:
         summary = run_case_file(case, out, force, progress)
     for text in summary["warnings"]:
-        console.print(f"[yellow]warning:[/yellow] {text}")
+        console.print(f"[yellow]warning:[/yellow] {escape(text)}")
     if summary["notes"]:
         console.print(f"({len(summary['notes'])} note(s) on the parameters in summary.json)")
     summaries = summary["variants"]

@@ -9,6 +9,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import typer
+from rich.markup import escape
 
 from sealsim.cli._common import console, guarded, variant_progress
 
@@ -29,7 +30,7 @@ def check(
                                           "examples/gland/piston_static.toml"),
     out: Path = typer.Option(..., "--out", "-o", help="Result folder to create"),
     fe: bool = typer.Option(False, "--fe", help="Also the FE contact force and friction at "
-                                                "nominal (the case's [fe] table)"),
+                                                "nominal (the case's \\[fe] table)"),
     force: bool = typer.Option(False, "--force", help="Replace an existing result folder"),
     quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress bar"),
 ) -> None:
@@ -63,7 +64,7 @@ def check(
                       f"friction {f['friction_N']['unpressurised']:.1f} / "
                       f"{f['friction_N']['at_pressure']:.1f} N at {f['velocity_m_s']:g} m/s")
     for note in report["notes"]:
-        console.print(f"  [yellow]note:[/] {note}")
+        console.print(f"  [yellow]note:[/] {escape(note)}")
     verdict = "all checks pass" if report["ok"] else f"FAILED: {', '.join(report['failed'])}"
     console.print(f"[bold]{verdict}[/]; results written to {out}/ (report.json, checks.csv, "
                   "stack.csv, section.png, case_resolved.toml)")

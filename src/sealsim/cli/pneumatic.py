@@ -10,6 +10,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import typer
+from rich.markup import escape
 
 from sealsim.cli._common import console, guarded, variant_progress
 
@@ -70,7 +71,7 @@ def run(
             f"{s['mass_balance_rel_error']:.1e}, energy {s['energy_balance_rel_error']:.1e}"
             f"{heat}")
         for note in result.notes:
-            console.print(f"  [yellow]note:[/] {note}")
+            console.print(f"  [yellow]note:[/] {escape(note)}")
     heated = any(r.case.thermal is not None and r.case.thermal.seal_heating
                  for r in results.values())
     console.print(f"results written to {out}/ (plots: pressure_stroke.png, friction_stroke.png,"

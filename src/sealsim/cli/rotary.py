@@ -6,6 +6,7 @@ import warnings
 from pathlib import Path
 
 import typer
+from rich.markup import escape
 from sealsim.cli._common import console, guarded, variant_progress
 
 rotary_app = typer.Typer(no_args_is_help=True, help=(
@@ -42,6 +43,6 @@ def run(
                       f"{last['T_contact_C']:.1f} °C; energy balance error "
                       f"{result.energy['rel_error']:.1e}")
         for note in result.notes:
-            console.print(f"  [yellow]note:[/] {note}")
+            console.print(f"  [yellow]note:[/] {escape(note)}")
     console.print(f"results written to {out}/ (plots: cycle_*.png, variants.png, stribeck.png; "
                   "tables: timeseries.csv, steps.csv, summary.json)")

@@ -10,6 +10,7 @@ from __future__ import annotations
 from pathlib import Path
 
 import typer
+from rich.markup import escape
 from rich.progress import (
     BarColumn,
     MofNCompleteColumn,
@@ -101,7 +102,7 @@ def run(
             console.print(f"  {name}: {o['min']:.4g} ... {o['max']:.4g}{unit} (median "
                           f"{o['P50']:.4g}, P5 {o['P5']:.4g}, P95 {o['P95']:.4g})")
     for failure in s["failures"][:3]:
-        console.print(f"  [yellow]run {failure['run']} failed:[/] {failure['error'][:200]}")
+        console.print(f"  [yellow]run {failure['run']} failed:[/] {escape(failure['error'][:200])}")
     notes = s.get("notes", [])
     for note in notes[:MAX_NOTES_SHOWN]:
         console.print(Text("  note: ", style="yellow") + Text(note))
