@@ -323,7 +323,14 @@ def test_fe_at_nominal_is_the_structure_model_of_the_nominal_gland(tmp_path, mon
                                      "0.1 m/s", "0 bar", "20 degC",
                                      diameter=structure["gland"]["sealing_diameter"])
     assert 0.5 < rest / analytic["normal_force_N"] < 2.0
-    assert fe["friction_N"]["at_pressure"] > fe["friction_N"]["unpressurised"] > 0
+    # both strokes (the gland check reported the outstroke only: 8.9 N at 100 bar, μ = 0.005,
+    # where the instroke gives 187 N): unpressurised the two are alike (within 10 %: the FE
+    # profile's flanks differ a little), at 100 bar the instroke's film enters where the
+    # contact pressure drops from 10 MPa to 0 -- a steep inlet, a thin film, more friction
+    out, in_ = fe["friction_N"]["outstroke"], fe["friction_N"]["instroke"]
+    assert in_["unpressurised"] == pytest.approx(out["unpressurised"], rel=0.10)
+    assert in_["at_pressure"] > 5.0 * out["at_pressure"] > 0.0
+    assert out["at_pressure"] > out["unpressurised"] > 0.0
 
 
 def test_cli_help_and_notes_keep_their_table_names(monkeypatch, tmp_path):

@@ -637,7 +637,13 @@ def oring_gland(gland, *, fe: bool = False, progress=None) -> dict[str, Any]:
         ``stretch_percent``, ``gland_fill_percent``, ``extrusion_gap_mm`` (each ``{"min",
         "nominal", "max"}``), ``by_temperature``, ``extrusion``, ``checks`` (``{"name",
         "value", "limit", "ok", "source", ...}``), ``ok``, ``failed``, ``notes`` and, with
-        ``fe``, ``fe``.
+        ``fe``, ``fe``: normal force and contact width (``{"unpressurised", "at_pressure"}``)
+        and the friction of both strokes, ``friction_N = {"outstroke": {"unpressurised",
+        "at_pressure"}, "instroke": {...}}`` -- outstroke: the sealed surface slides from the
+        pressurised side to the other (a rod moving out; a piston moving towards its
+        pressurised side), its film enters over the pressurised flank; instroke: the other
+        way, over the flank where the contact pressure drops from the sealed pressure to 0,
+        usually a thinner film and more friction.
 
     Examples
     --------
@@ -712,14 +718,16 @@ def _gland_fe(report, progress=None) -> dict[str, Any]:
         path.write_text(tomli_w.dumps(structure), encoding="utf-8")
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
-            curve = seal_friction(str(path), f"{case.fe.velocity:.6g} m/s",
-                                  [f"{p / 1e5:.6g} bar" for p in (0.0, pressure)],
+            u = case.fe.velocity
+            curve = seal_friction(str(path), [f"{v:.6g} m/s" for v in (u, -u, u, -u)],
+                                  [f"{p / 1e5:.6g} bar" for p in (0.0, 0.0, pressure, pressure)],
                                   f"{t_ref - ZERO_CELSIUS_K:.6g} degC", law=case.fe.law,
                                   progress=progress)
     notes = list(dict.fromkeys(str(w.message) for w in caught
                                if w.category.__module__.startswith("sealsim")))
     notes += [n for n in (getattr(curve, "attrs", {}) or {}).get("notes", []) if n not in notes]
-    rest, loaded = curve.iloc[0], curve.iloc[-1]
+    rest, loaded = curve.iloc[0], curve.iloc[2]
+    friction = np.abs(curve["friction_N"].to_numpy(dtype=float))
     return {"squeeze_percent": squeeze_nominal * 100.0,
             "temperature_C": t_ref - ZERO_CELSIUS_K,
             "velocity_m_s": case.fe.velocity,
@@ -728,8 +736,10 @@ def _gland_fe(report, progress=None) -> dict[str, Any]:
                                "at_pressure": float(loaded["normal_force_N"])},
             "contact_width_mm": {"unpressurised": float(rest["contact_width_mm"]),
                                  "at_pressure": float(loaded["contact_width_mm"])},
-            "friction_N": {"unpressurised": float(rest["friction_N"]),
-                           "at_pressure": float(loaded["friction_N"])},
+            "friction_N": {"outstroke": {"unpressurised": float(friction[0]),
+                                         "at_pressure": float(friction[2])},
+                           "instroke": {"unpressurised": float(friction[1]),
+                                        "at_pressure": float(friction[3])}},
             "law": case.fe.law or DEFAULT_LAW, "mesh": case.fe.mesh,
             "structure_case": structure, "notes": notes}
 

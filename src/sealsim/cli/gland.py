@@ -58,11 +58,14 @@ def check(
         console.print(f"{mark} {c['name']:<15} {c['value']:.3g} {sign} {c['limit']:.3g}")
     if "fe" in report:
         f = report["fe"]
+        out_, in_ = f["friction_N"]["outstroke"], f["friction_N"]["instroke"]
         console.print(f"FE at nominal ({f['squeeze_percent']:.1f} % squeeze): F_N "
                       f"{f['normal_force_N']['unpressurised']:.1f} N, at "
                       f"{f['pressure_bar']:g} bar {f['normal_force_N']['at_pressure']:.1f} N; "
-                      f"friction {f['friction_N']['unpressurised']:.1f} / "
-                      f"{f['friction_N']['at_pressure']:.1f} N at {f['velocity_m_s']:g} m/s")
+                      f"friction at {f['velocity_m_s']:g} m/s outstroke / instroke "
+                      f"{out_['unpressurised']:.1f} / {in_['unpressurised']:.1f} N, at "
+                      f"{f['pressure_bar']:g} bar {out_['at_pressure']:.1f} / "
+                      f"{in_['at_pressure']:.1f} N")
     for note in report["notes"]:
         console.print(f"  [yellow]note:[/] {escape(note)}")
     verdict = "all checks pass" if report["ok"] else f"FAILED: {', '.join(report['failed'])}"

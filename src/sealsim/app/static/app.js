@@ -259,8 +259,10 @@ $("gland-fe").addEventListener("click", async () => {
                   ["normal force F_N, unpressurised [N]", fe.normal_force_N.unpressurised, "fe-fn0"],
                   [`normal force F_N at ${fe.pressure_bar} bar [N]`, fe.normal_force_N.at_pressure, "fe-fnp"],
                   ["contact width, unpressurised [mm]", fe.contact_width_mm.unpressurised, "fe-b0"],
-                  [`friction at ${fe.velocity_m_s} m/s, unpressurised [N]`, fe.friction_N.unpressurised, "fe-f0"],
-                  [`friction at ${fe.velocity_m_s} m/s and ${fe.pressure_bar} bar [N]`, fe.friction_N.at_pressure, "fe-fp"]];
+                  [`friction at ${fe.velocity_m_s} m/s, unpressurised, outstroke [N]`, fe.friction_N.outstroke.unpressurised, "fe-f0"],
+                  [`friction at ${fe.velocity_m_s} m/s, unpressurised, instroke [N]`, fe.friction_N.instroke.unpressurised, "fe-f0-in"],
+                  [`friction at ${fe.velocity_m_s} m/s and ${fe.pressure_bar} bar, outstroke [N]`, fe.friction_N.outstroke.at_pressure, "fe-fp"],
+                  [`friction at ${fe.velocity_m_s} m/s and ${fe.pressure_bar} bar, instroke [N]`, fe.friction_N.instroke.at_pressure, "fe-fp-in"]];
     for (const [label, value, id] of rows) {
       const row = $("gland-fe-result").insertRow();
       row.insertCell().textContent = label;
