@@ -442,3 +442,18 @@ def test_three_rings_fitted_at_1_bar_predict_the_other_pressures(tmp_path):
         assert float(row.group(2)) == pytest.approx(m["F_predicted_N"], abs=0.0015)
         error = float(row.group(3).replace("−", "-"))
         assert error == pytest.approx(100 * m["rel_error"], abs=0.05)
+
+
+def test_cli_prints_fitted_parameters_in_their_case_unit():
+    # report.json holds SI values and the case's unit in "text"; the CLI printed the SI
+    # number with the case's unit: "supply_layer = 8.27717e-08 ± 7.3e-09 mm" for a
+    # 0.083 µm grease layer (tudelft_rings.toml)
+    from sealsim.cli.calibration import _in_case_unit
+
+    value, se, unit = _in_case_unit({"value": 8.27717e-08, "standard_error": 7.3e-09,
+                                     "text": "8.27717e-05 mm"})
+    assert (value, se, unit) == (pytest.approx(8.27717e-05), pytest.approx(7.3e-06), " mm")
+    assert _in_case_unit({"value": 0.04, "standard_error": None, "text": 0.04}) == (0.04, None,
+                                                                                   "")
+    value, se, unit = _in_case_unit({"value": 2.0, "standard_error": 0.1, "text": "2 s"})
+    assert (value, se, unit) == (2.0, pytest.approx(0.1), " s")

@@ -36,11 +36,9 @@ def fit(
         summary = run_friction_fit_file(case, out, force, progress)
     report = summary["report"]
     for name, p in report["parameters"].items():
-        se = p["standard_error"]
-        text = p.get("text")     # "17921.7 N/m": the SI value with its unit
-        unit = f" {text.split(' ', 1)[1]}" if isinstance(text, str) and " " in text else ""
-        console.print(f"{name} = {p['value']:.6g} ± {se:.2g}{unit} (1 s.e.)" if se is not None
-                      else f"{name} = {p['value']:.6g}{unit} (not determined)")
+        value, se, unit = _in_case_unit(p)
+        console.print(f"{name} = {value:.6g} ± {se:.2g}{unit} (1 s.e.)" if se is not None
+                      else f"{name} = {value:.6g}{unit} (not determined)")
     for name, m in report["measurements"].items():
         error = "-" if m["rel_error"] is None else f"{100 * m['rel_error']:+.1f} %"
         r2 = "-" if m["r2"] is None else f"{m['r2']:.3f}"
@@ -155,3 +153,17 @@ def _rounded(text, value: float) -> str:
         except ValueError:
             return text
     return f"{value:.4g}"
+
+
+def _in_case_unit(parameter):
+    """(value, standard error, " unit") of a fitted parameter in the unit of its ``text``
+    ("8.3e-05 mm"; value and standard error are SI): the SI numbers with the case's unit
+    printed 8.3e-08 "mm" for a 0.083 µm grease layer."""
+    from sealsim.units import unit_registry
+
+    value, se, text = parameter["value"], parameter["standard_error"], parameter.get("text")
+    if not (isinstance(text, str) and " " in text):
+        return value, se, ""
+    unit = text.split(" ", 1)[1]
+    si_per_unit = unit_registry().Quantity(1.0, unit).to_base_units().magnitude
+    return (value / si_per_unit, None if se is None else se / si_per_unit, f" {unit}")
