@@ -64,6 +64,11 @@ def test_example_runs_through_the_cli(example, tmp_path):
     text = "".join(result.output.split())            # rich wraps long lines anywhere
     assert text.count("buildingFEmap") == len(notices) == (example.stem == "cylinder_32_fe")
     assert all("".join(notice.split()) in text for notice in notices)
+    # a note every variant has is printed once, after the variants (heipl_rod_seal's four
+    # temperatures printed the parameter set's note four times)
+    generic = "".join("theta parameter set 'seal_contact'".split())
+    assert text.count(generic) <= len({s["name"] for s in tomllib.loads(
+        example.read_text())["seals"]})
     names = {p.name for p in out.iterdir()}
     assert {"timeseries.csv", "summary.json", "case_resolved.toml", "pressure_stroke.png",
             "friction_stroke.png", "friction_velocity.png"} <= names

@@ -149,3 +149,19 @@ def variant_progress(label: str, quiet: bool,
                        t=describe(variant, done, total))
 
         yield progress
+
+
+def print_notes(notes: list[str], indent: str = "  ", label: str = "note") -> None:
+    """Print a run's notes as written (library text is not rich markup)."""
+    for note in notes:
+        console.print(Text(f"{indent}{label}: ", style="yellow") + Text(note))
+
+
+def notes_of_every_variant(notes_by_variant: dict[str, list[str]]) -> list[str]:
+    """The notes every variant of a case has (in the first variant's order): printed once
+    after the variants instead of under each (a case of four temperatures repeated the
+    parameter set's four-line note four times)."""
+    lists = list(notes_by_variant.values())
+    if len(lists) < 2:
+        return []
+    return [n for n in lists[0] if all(n in other for other in lists[1:])]

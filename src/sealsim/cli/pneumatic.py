@@ -10,9 +10,9 @@ from __future__ import annotations
 from pathlib import Path
 
 import typer
-from rich.markup import escape
 
-from sealsim.cli._common import console, guarded, variant_progress
+from sealsim.cli._common import (console, guarded, notes_of_every_variant, print_notes,
+                                 variant_progress)
 
 __all__ = ["pneumatic_app"]
 
@@ -56,6 +56,7 @@ def run(
 
     with variant_progress("pneumatic", quiet, describe) as progress:
         results = run_case_file(case, out, force, progress)
+    shared = notes_of_every_variant({name: r.notes for name, r in results.items()})
     for name, result in results.items():
         s = result.summary()
         ext, ret = s["extend_time_s"], s["retract_time_s"]
@@ -70,8 +71,8 @@ def run(
             f"air {s['air_consumption_NL']:.3f} NL; balance errors mass "
             f"{s['mass_balance_rel_error']:.1e}, energy {s['energy_balance_rel_error']:.1e}"
             f"{heat}")
-        for note in result.notes:
-            console.print(f"  [yellow]note:[/] {escape(note)}")
+        print_notes([n for n in result.notes if n not in shared])
+    print_notes(shared, indent="", label="note (every variant)")
     heated = any(r.case.thermal is not None and r.case.thermal.seal_heating
                  for r in results.values())
     console.print(f"results written to {out}/ (plots: pressure_stroke.png, friction_stroke.png,"

@@ -6,8 +6,8 @@ import warnings
 from pathlib import Path
 
 import typer
-from rich.markup import escape
-from sealsim.cli._common import console, guarded, variant_progress
+from sealsim.cli._common import (console, guarded, notes_of_every_variant, print_notes,
+                                 variant_progress)
 
 rotary_app = typer.Typer(no_args_is_help=True, help=(
     "Radial lip seals in gearboxes (after Organisciak et al., AGMA 14FTM14, 2014): friction "
@@ -36,13 +36,14 @@ def run(
             warnings.catch_warnings():
         warnings.simplefilter("ignore", FilmRangeWarning)  # printed below as a note
         results = run_case_file(case, out, force, progress)
+    shared = notes_of_every_variant({name: r.notes for name, r in results.items()})
     for name, result in results.items():
         last = result.steps[-1]
         console.print(f"[bold]{name}[/]: end of cycle {last['speed_rpm']:.0f} rpm, torque "
                       f"{last['torque_Nm']:.3f} N m, groove {last['T_groove_C']:.1f} °C, contact "
                       f"{last['T_contact_C']:.1f} °C; energy balance error "
                       f"{result.energy['rel_error']:.1e}")
-        for note in result.notes:
-            console.print(f"  [yellow]note:[/] {escape(note)}")
+        print_notes([n for n in result.notes if n not in shared])
+    print_notes(shared, indent="", label="note (every variant)")
     console.print(f"results written to {out}/ (plots: cycle_*.png, variants.png, stribeck.png; "
                   "tables: timeseries.csv, steps.csv, summary.json)")
