@@ -236,7 +236,7 @@ def heating_figure(frame: pd.DataFrame, strokes: pd.DataFrame, seal_names: list[
                      color=_colour(0 if direction > 0 else 1), label=name)
         axes[2].plot(rows["start_s"], rows["stroke_time_s"] * 1e3, marker, ms=2.5, ls="-",
                      lw=0.8, color=_colour(0 if direction > 0 else 1), label=name)
-    axes[1].set_ylabel("Mean friction\nwhile moving [N]")
+    axes[1].set_ylabel("Mean friction over\nthe distance slid [N]")
     axes[2].set_ylabel("Stroke time [ms]")
     axes[2].set_xlabel("Time [s]")
     for a in axes:
