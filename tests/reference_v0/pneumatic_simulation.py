@@ -48,7 +48,9 @@ class _Group:
     n_states: int = 0
 _DEAD1, _DEAD2, _A1, _A2, _AROD, _STROKE, _BORE, _PS, _PA, _TS, _TA, _C, _B, _M, _BETA, _CENTRE, _H, _TW, _F0, _KL, _X0L, _CL, _INCL, _MASS, _KS, _CS, _DS, _THR1, _THR2, _CU1_L, _CU1_C, _CU1_E, _CU2_L, _CU2_C, _CU2_E, _NCONST = range(36)
 _X, _V, _P1, _P2, _T1, _T2, _G0, _G1, _G2, _G3, _H0, _H1, _H2, _H3, _Q1, _Q2, _FPRESS, _FLOAD, _FSTOP, _NOUT = range(20)
-BOOKKEEPING = ('supply_mass', 'exhaust_mass', 'mass_throughput', 'enthalpy', 'enthalpy_throughput', 'heat', 'gas_work', 'work_external', 'work_stop', 'work_friction')
+# + 'supply_return_mass' (added with it to sealsim's bookkeeping): the bookkeeping states count
+# in LSODA's RMS error norm, so the reference needs as many to take the same steps
+BOOKKEEPING = ('supply_mass', 'exhaust_mass', 'mass_throughput', 'enthalpy', 'enthalpy_throughput', 'heat', 'gas_work', 'work_external', 'work_stop', 'work_friction', 'supply_return_mass')
 _flow = jit(iso6358_flow, iso6358_mass_flow=jit(iso6358_mass_flow))
 _series = jit(series_pair)
 _openings = jit(openings)
@@ -127,6 +129,7 @@ def _core_columns(y, spool, xs, vs, prescribed, c, codes, out, dp, sides, dy, bo
         dy[b + 6, j] = p1 * dvol1 + p2 * dvol2
         dy[b + 7, j] = -(f_load + pa * c[_AROD]) * v
         dy[b + 8, j] = f_stop * v
+        dy[b + 10, j] = max(-g0, 0.0) + max(-g2, 0.0)
 _core = jit(_core_columns)
 
 class PneumaticSystem:
@@ -332,7 +335,7 @@ class PneumaticSystem:
         f_fric = f_seal.sum(axis=0) if nseal > 1 else f_seal[0] if nseal else np.zeros(k)
         if mode in (FORWARD, BACKWARD, FREE):
             dy[1] = (f_drive - f_fric) / self.mass
-        dy[self.n_dynamic + len(BOOKKEEPING) - 1] = f_fric * v
+        dy[self.n_dynamic + BOOKKEEPING.index('work_friction')] = f_fric * v
         if not full:
             return dy[:, 0] if column else dy
         return {'dy': dy, 'x': out[_X], 'v': v, 'p1': out[_P1], 'p2': out[_P2], 'T1': out[_T1], 'T2': out[_T2], 'spool': spool, 'flow': out[_G0:_G3 + 1], 'enthalpy': out[_H0:_H3 + 1], 'q1': out[_Q1], 'q2': out[_Q2], 'f_press': out[_FPRESS], 'f_load': out[_FLOAD], 'f_stop': out[_FSTOP], 'f_seal': f_seal, 'f_fric': f_fric, 'hold': hold, 'breakaway': brk, 'loads': loads}

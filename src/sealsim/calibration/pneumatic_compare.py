@@ -16,10 +16,15 @@ A compare file (TOML)::
                 pressure_1 = { column = "p1", unit = "bar" },
                 pressure_2 = { column = "p2", unit = "bar" } }
 
-The model is sampled at the measured times (linear interpolation of its output, which is
-sampled finer); per signal the RMSE, the largest deviation and R² are reported, plus the
-extend/retract times of both (``stroke_times``, for a ``cycle`` case with a measured position;
-:func:`sealsim.pneumatic.summary.stroke_times` of the measured and of the simulated position).
+A logger that does not start at the simulation's t = 0 is aligned with a time offset
+(``sealsim pneumatic compare --time-offset "12.5 s"``, ``time_offset`` here): the logger's
+time at the simulation's t = 0, subtracted from every measured time (the report keeps it as
+``time_offset_s``; the table's ``time_s`` is the simulation's time, ``logger_time_s`` the
+measured one).  The model is sampled at the measured times (linear interpolation of its
+output, which is sampled finer); per signal the RMSE, the largest deviation and R² are
+reported, plus the extend/retract times of both (``stroke_times``, for a ``cycle`` case with a
+measured position; :func:`sealsim.pneumatic.summary.stroke_times` of the measured and of the
+simulated position).
 Pressures are compared as they were measured: the table's and the plot's pressures are gauge
 (``pressure_1_measured_bar_gauge``) or absolute (``..._bar_abs``).
 """
@@ -72,11 +77,11 @@ class CompareCase(CaseModel):
 class PneumaticComparison:
     """A measured cylinder run against its simulation, at the measured times."""
 
-    #: ``{"variant": NAME, "signals": {SIGNAL: {"unit", "rmse", "max_abs_error", "r2"}}}``
-    #: (errors in the signal's unit)
+    #: ``{"variant": NAME, "time_offset_s": OFFSET, "signals": {SIGNAL: {"unit", "rmse",
+    #: "max_abs_error", "r2"}}}`` (errors in the signal's unit)
     report: dict
-    #: ``time_s`` and ``<signal>_measured_<unit>``, ``<signal>_model_<unit>`` columns (pressures:
-    #: ``bar_gauge`` or ``bar_abs``, as measured)
+    #: ``time_s`` (simulation time), ``logger_time_s`` and ``<signal>_measured_<unit>``,
+    #: ``<signal>_model_<unit>`` columns (pressures: ``bar_gauge`` or ``bar_abs``, as measured)
     table: pd.DataFrame
     #: ``{signal: (measured, model, unit)}`` in display units
     curves: dict
@@ -101,7 +106,8 @@ def _resolve(name: str, base: Path) -> Path:
     return Path(name) if Path(name).is_absolute() else base / name
 
 
-def compare_pneumatic_file(path: str | Path, progress=None) -> PneumaticComparison:
+def compare_pneumatic_file(path: str | Path, progress=None,
+                           time_offset: float = 0.0) -> PneumaticComparison:
     """Simulate the case of a compare file and compare it with the measurement.
 
     Parameters
@@ -110,7 +116,11 @@ def compare_pneumatic_file(path: str | Path, progress=None) -> PneumaticComparis
         Compare file (TOML, see the module docstring).
     progress : callable, optional
         ``progress(variant, simulated_time, end_time)``.
+    time_offset : float
+        The logger's time at the simulation's t = 0 [s]; subtracted from the measured times.
     """
+    if not np.isfinite(time_offset):
+        raise InputError(f"time offset: {time_offset!r} is not a finite time")
     path = Path(path)
     spec = validate_case(CompareCase, load_toml(path), f"compare file {str(path)!r}")
     base = path.parent
@@ -136,13 +146,17 @@ def compare_pneumatic_file(path: str | Path, progress=None) -> PneumaticComparis
                       progress=None if progress is None else lambda t, e: progress(name, t, e))
     frame = result.timeseries
     t_model = frame["time_s"].to_numpy()
-    t = measured.time
+    t = measured.time - time_offset
     if t[0] < t_model[0] - 1e-9 or t[-1] > t_model[-1] + 1e-9:
-        raise InputError(f"{mfile}: measured time {t[0]:g} … {t[-1]:g} s lies outside the "
-                         f"simulated {t_model[0]:g} … {t_model[-1]:g} s; set "
-                         "controller.duration of the case to cover it")
+        shifted = (f" (logger time minus the time offset {time_offset:g} s)" if time_offset
+                   else "")
+        raise InputError(f"{mfile}: measured time {t[0]:g} … {t[-1]:g} s{shifted} lies outside "
+                         f"the simulated {t_model[0]:g} … {t_model[-1]:g} s; set "
+                         "controller.duration of the case to cover it, or --time-offset to "
+                         "the logger's time at the start of the simulation")
     gauge = case.air.ambient_pressure if m.pressure == "gauge" else 0.0
-    report, table, curves = {"variant": name, "signals": {}}, {"time_s": t}, {}
+    report = {"variant": name, "time_offset_s": time_offset, "signals": {}}
+    table, curves = {"time_s": t, "logger_time_s": measured.time}, {}
     for q in sorted(wanted):
         column, si_per_model_unit, unit, display = SIGNALS[q]
         model = np.interp(t, t_model, frame[column].to_numpy() * si_per_model_unit)

@@ -80,12 +80,17 @@ def compare(
                                                       "unless --force)."),
     force: bool = typer.Option(False, "--force", help="Replace an existing result folder."),
     quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress bar."),
+    time_offset: str = typer.Option(
+        "0 s", "--time-offset", help="The logger's time at the simulation's t = 0, with a "
+        "unit: '12.5 s', '1500 ms'; subtracted from the measured times."),
 ) -> None:
     """Simulate a cylinder case and compare it with a measured run (RMSE, R², overlays)."""
     from sealsim.runs.calibration import run_pneumatic_compare_file
+    from sealsim.units import parse_quantity
 
+    offset = parse_quantity(time_offset, "time", "--time-offset")
     with variant_progress("pneumatic", quiet, lambda _, t, e: f"{t:.3g}/{e:.3g} s") as progress:
-        report = run_pneumatic_compare_file(compare_file, out, force, progress)
+        report = run_pneumatic_compare_file(compare_file, out, force, progress, offset)
     for name, s in report["signals"].items():
         r2 = "-" if s["r2"] is None else f"{s['r2']:.4f}"
         console.print(f"{name}: RMSE {s['rmse']:.4g} {s['unit']}, max error "

@@ -68,7 +68,10 @@ def run(
         console.print(
             f"[bold]{name}[/]: {times}friction mean "
             f"{'-' if mean is None else f'{mean:.1f}'} N, peak {s['peak_friction_N']:.1f} N, "
-            f"air {s['air_consumption_NL']:.3f} NL; balance errors mass "
+            f"air {s['air_consumption_NL']:.3f} NL"
+            + (f" (returned to the supply {s['air_returned_to_supply_NL']:.3f} NL)"
+               if s["air_returned_to_supply_NL"] >= 5e-4 else "")
+            + "; balance errors mass "
             f"{s['mass_balance_rel_error']:.1e}, energy {s['energy_balance_rel_error']:.1e}"
             f"{heat}")
         print_notes([n for n in result.notes if n not in shared])

@@ -104,16 +104,27 @@ def friction_stroke_figure(frames: dict[str, pd.DataFrame], strokes: dict[str, f
 
 
 def friction_velocity_figure(frames: dict[str, pd.DataFrame], title: str = "",
-                             periods: dict[str, float] | None = None):
+                             periods: dict[str, float] | None = None,
+                             strokes: dict[str, float] | None = None):
     """Total friction force against piston velocity, all variants (the dynamic F–v loops of
     Heipl & Murrenhoff Fig. 2/3 as the cylinder runs through them); the start-up period of a
-    prescribed motion is left out (see :func:`friction_stroke_figure`)."""
+    prescribed motion is left out (see :func:`friction_stroke_figure`).
+
+    The line is broken where the samples do not resolve the motion (:func:`_line_breaks`):
+    where the piston enters or leaves an end stop (with ``strokes``) and where the velocity or
+    the friction jumps between two samples, so an impact does not draw a straight line across
+    the plot.
+    """
     fig, ax = new_figure(width=6.6, height=4.6)
     for k, (name, f) in enumerate(frames.items()):
         keep = ~_start_up(f, (periods or {}).get(name))
         v = f["v_m_s"].to_numpy()[keep]
         friction = f["F_friction_N"].to_numpy()[keep]
-        ax.plot(v, friction, color=_colour(k), lw=1.0, label=name)
+        stroke = (strokes or {}).get(name)
+        breaks = _line_breaks(v, friction, None if stroke is None else f["x_m"].to_numpy()[keep],
+                              stroke)
+        ax.plot(np.insert(v, breaks, np.nan), np.insert(friction, breaks, np.nan),
+                color=_colour(k), lw=1.0, label=name)
     ax.axhline(0.0, color="0.6", lw=0.7)
     ax.axvline(0.0, color="0.6", lw=0.7)
     ax.set_xlabel("Piston velocity v [m/s]")
@@ -123,6 +134,26 @@ def friction_velocity_figure(frames: dict[str, pd.DataFrame], title: str = "",
     if title:
         ax.set_title(title, fontsize=10)
     return fig
+
+
+#: a change of velocity or friction between two samples larger than this share of the run's
+#: span is a jump the samples do not resolve (an impact, a reversal): a line is broken there
+JUMP_SHARE = 0.1
+
+
+def _line_breaks(v: np.ndarray, friction: np.ndarray, x: np.ndarray | None = None,
+                 stroke: float | None = None):
+    """Indices i where a line through the (v, F) samples must not join sample i − 1 to i: the
+    piston enters or leaves an end stop (x < 0 or x > stroke, the bumpers), or v or F jumps by
+    more than :data:`JUMP_SHARE` of its span (for ``np.insert(values, breaks, np.nan)``)."""
+    jump = np.zeros(max(v.size - 1, 0), dtype=bool)
+    for values in (v, friction):
+        if values.size:
+            jump |= np.abs(np.diff(values)) > JUMP_SHARE * float(np.ptp(values))
+    if x is not None and stroke is not None:
+        in_stop = (x < 0.0) | (x > stroke)
+        jump |= in_stop[1:] != in_stop[:-1]
+    return np.flatnonzero(jump) + 1
 
 
 def timeseries_figure(frame: pd.DataFrame, seal_names: list[str], title: str = ""):
@@ -205,7 +236,7 @@ def heating_figure(frame: pd.DataFrame, strokes: pd.DataFrame, seal_names: list[
                      color=_colour(0 if direction > 0 else 1), label=name)
         axes[2].plot(rows["start_s"], rows["stroke_time_s"] * 1e3, marker, ms=2.5, ls="-",
                      lw=0.8, color=_colour(0 if direction > 0 else 1), label=name)
-    axes[1].set_ylabel("Mean friction\nwhile moving [N]")
+    axes[1].set_ylabel("Mean friction over\nthe distance slid [N]")
     axes[2].set_ylabel("Stroke time [ms]")
     axes[2].set_xlabel("Time [s]")
     for a in axes:

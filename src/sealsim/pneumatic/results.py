@@ -282,6 +282,7 @@ def balances(system, segments) -> dict[str, float]:
     out = {
         "air_mass_change_kg": stored_mass,
         "supply_mass_kg": book["supply_mass"],
+        "supply_return_mass_kg": book["supply_return_mass"],
         "exhaust_mass_kg": book["exhaust_mass"],
         "air_energy_change_J": stored_energy,
         "kinetic_energy_change_J": kinetic,
@@ -296,7 +297,11 @@ def balances(system, segments) -> dict[str, float]:
         # round-off of U1 + U2 is no balance error
         "energy_balance_rel_error": abs(energy_change - energy_in) / max(
             throughput, float(y0[4] + y0[5]), 1e-300),
-        "air_consumption_NL": book["supply_mass"] / ANR_DENSITY * 1e3,
+        # what the supply delivered (ISO 6358 / ISO 8778 free air); air a chamber pushed back
+        # into the supply line is its own number, not netted against it
+        "air_consumption_NL": (book["supply_mass"] + book["supply_return_mass"])
+        / ANR_DENSITY * 1e3,
+        "air_returned_to_supply_NL": book["supply_return_mass"] / ANR_DENSITY * 1e3,
     }
     if system.heating:
         out.update(thermal_balance(system, y0, y1, book))

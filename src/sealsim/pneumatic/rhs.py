@@ -79,11 +79,14 @@ STICK, FORWARD, BACKWARD, FREE, PRESCRIBED = 0, 1, -1, 2, 3
 RATES, FULL, OUTPUTS, RATES_KEPT_LOADS = 0, 1, 2, 3
 MODES = {STICK: "stick", FORWARD: "slip+", BACKWARD: "slip-", FREE: "free",
          PRESCRIBED: "prescribed"}
-#: bookkeeping states appended to y: time integrals of the boundary flows (kg, J); the last
-#: three exist with seal heating only
+#: bookkeeping states appended to y: time integrals of the boundary flows (kg, J);
+#: ``supply_mass`` is the net flow out of the supply, ``supply_return_mass`` the flow back into
+#: it alone (from a chamber above supply pressure); the
+#: :data:`THERMAL_BOOKKEEPING` ones follow with seal heating only
 BOOKKEEPING = ("supply_mass", "exhaust_mass", "mass_throughput", "enthalpy",
                "enthalpy_throughput", "heat", "gas_work", "work_external", "work_stop",
-               "work_friction")
+               "work_friction", "supply_return_mass")
+_NBOOK = len(BOOKKEEPING)
 THERMAL_BOOKKEEPING = ("friction_heat", "heat_to_air", "heat_to_ambient")
 
 # -- constants (indices into c) -------------------------------------------------------------
@@ -429,7 +432,7 @@ def evaluate_column(t, y, col, mode, tables, dy, diag, level):
             q_rod_amb = c[C_ROD_G] * (t_rod - c[C_TAMB])
             dy[toff + nseal, col] = (q_tube - q_tube_amb) / cap_t
             dy[toff + nseal + 1, col] = (q_rod - q_rod_amb) / c[C_ROD_CAP]
-            nb = book + 10
+            nb = book + _NBOOK
             dy[nb, col] = q_heat
             dy[nb + 1, col] = q_air1 + q_air2          # walls (tube node) and seals into the air
             dy[nb + 2, col] = q_amb + q_tube_amb + q_rod_amb
@@ -447,6 +450,7 @@ def evaluate_column(t, y, col, mode, tables, dy, diag, level):
         dy[book + 7, col] = -(f_load + pa * c[C_AROD]) * v
         dy[book + 8, col] = f_stop * v
         dy[book + 9, col] = f_fric * v
+        dy[book + 10, col] = max(-g0, 0.0) + max(-g2, 0.0)
     if full:
         diag[D_X, col] = x
         diag[D_V, col] = v

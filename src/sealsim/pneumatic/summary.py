@@ -8,13 +8,13 @@ import numpy as np
 
 from sealsim.pneumatic.controller import command_schedule
 
-__all__ = ["DEFINITIONS", "END_TOLERANCE", "MOVING_SPEED", "end_position_times", "per_stroke",
-           "summarize"]
+__all__ = ["DEFINITIONS", "END_TOLERANCE", "MIN_SLIDING_DISTANCE", "end_position_times",
+           "per_stroke", "sliding_mean", "summarize"]
 
 #: the end positions count as reached within this fraction of the stroke
 END_TOLERANCE = 0.01
-#: the piston counts as moving above this speed [m/s] (for the mean friction)
-MOVING_SPEED = 1e-3
+#: a mean friction needs at least this sliding distance [m]; less is the creep of a held piston
+MIN_SLIDING_DISTANCE = 1e-6
 
 #: how the summary numbers are defined (written into summary.json)
 DEFINITIONS = {
@@ -22,12 +22,18 @@ DEFINITIONS = {
                      f"piston reaching {100 * (1 - END_TOLERANCE):g} % of the stroke",
     "retract_time_s": "mean over the retract commands of the time from the command to the "
                       f"piston reaching {100 * END_TOLERANCE:g} % of the stroke",
-    "mean_friction_N": "mean of |total friction of all seals| while the piston moves "
-                       f"(|v| > {MOVING_SPEED * 1e3:g} mm/s)",
+    "mean_friction_N": "mean of |total friction of all seals| over the distance the piston "
+                       "slid: friction work / sliding distance, integral |F|*|v| dt / integral "
+                       "|v| dt (no speed threshold; None below "
+                       f"{MIN_SLIDING_DISTANCE * 1e6:g} um of travel)",
     "peak_friction_N": "largest |total friction of all seals| over the run (at rest: the "
                        "part of the holding force the seals carry)",
-    "air_consumption_NL": "air taken from the supply, normal litres at the ISO 8778 reference "
-                          "atmosphere (ANR: 20 degC, 100 kPa)",
+    "air_consumption_NL": "free air delivered by the supply (ISO 6358 flow out of the supply "
+                          "port, integrated), normal litres at the ISO 8778 reference "
+                          "atmosphere (ANR: 20 degC, 100 kPa); air flowing back is not "
+                          "subtracted",
+    "air_returned_to_supply_NL": "air pushed back into the supply by a chamber above supply "
+                                 "pressure (warmed or compressed air), normal litres (ANR)",
     "pressure_range_bar_abs": "lowest and highest absolute chamber pressure",
     "heat_balance_rel_error": "(seal heating) |friction heat - (heat stored in the seals, tube "
                               "and rod + heat into the chamber air + heat to the surroundings)| "
@@ -45,6 +51,47 @@ def _end_reached(position, stroke, target):
     """(level [m], samples at or beyond it) of the end position ``target`` drives to."""
     level = stroke * (1.0 - END_TOLERANCE) if target == "extend" else stroke * END_TOLERANCE
     return level, (position >= level if target == "extend" else position <= level)
+
+
+def sliding_mean(time, velocity, force):
+    """Mean |F| over the distance slid: the friction work divided by the sliding distance,
+
+        F̄ = ∫|F|·|v| dt / ∫|v| dt   (trapezoidal rule over the samples).
+
+    Each sample counts with the distance slid around it, so a sample at the break-away, where
+    the speed passes any threshold, changes the mean by its own tiny share of the travel, not by
+    a whole sample's weight.
+
+    Parameters
+    ----------
+    time : ndarray
+        t [s].
+    velocity : ndarray
+        v [m/s].
+    force : ndarray
+        Friction force F [N].
+
+    Returns
+    -------
+    float
+        F̄ [N]; NaN if the piston slid less than :data:`MIN_SLIDING_DISTANCE`.
+
+    Examples
+    --------
+    A stroke at constant speed with friction rising along it from 10 to 30 N; the rest at the
+    end (v = 0, 50 N held) does not count:
+
+    >>> t = np.linspace(0.0, 2.0, 201)
+    >>> v = np.where(t <= 1.0, 0.1, 0.0)
+    >>> f = np.where(t <= 1.0, 10.0 + 20.0 * t, 50.0)
+    >>> round(sliding_mean(t, v, f), 2)
+    20.05
+    """
+    speed = np.abs(np.asarray(velocity, dtype=float))
+    distance = np.trapezoid(speed, time)
+    if not distance >= MIN_SLIDING_DISTANCE:
+        return float("nan")
+    return float(np.trapezoid(np.abs(force) * speed, time) / distance)
 
 
 def end_position_times(time, position, stroke, windows, target):
@@ -154,17 +201,16 @@ def summarize(result) -> dict[str, Any]:
     x = frame["x_m"].to_numpy()
     v = frame["v_m_s"].to_numpy()
     friction = frame["F_friction_N"].to_numpy()
-    moving = np.abs(v) > MOVING_SPEED
     summary: dict[str, Any] = {}
     if case.controller.mode == "cycle":
         summary.update(stroke_times(t, x, case))
     else:
         summary["extend_time_s"] = summary["retract_time_s"] = None
-    summary["mean_friction_N"] = float(np.mean(np.abs(friction[moving]))) if moving.any() \
-        else None
+    summary["mean_friction_N"] = _none_if_nan(sliding_mean(t, v, friction))
     summary["peak_friction_N"] = float(np.max(np.abs(friction)))
     b = result.balances
     summary["air_consumption_NL"] = b["air_consumption_NL"]
+    summary["air_returned_to_supply_NL"] = b["air_returned_to_supply_NL"]
     summary["mass_balance_rel_error"] = b["mass_balance_rel_error"]
     summary["energy_balance_rel_error"] = b["energy_balance_rel_error"]
     summary["friction_work_J"] = b["friction_work_J"]
@@ -177,7 +223,7 @@ def summarize(result) -> dict[str, Any]:
     seals = {}
     for name, col in zip(result.seal_names, result.seal_columns):
         f = frame[f"F_{col}_N"].to_numpy()
-        entry = {"mean_friction_N": float(np.mean(np.abs(f[moving]))) if moving.any() else None,
+        entry = {"mean_friction_N": _none_if_nan(sliding_mean(t, v, f)),
                  "peak_friction_N": float(np.max(np.abs(f)))}
         if f"F_N_{col}_N" in frame:
             fn = frame[f"F_N_{col}_N"].to_numpy()
@@ -201,11 +247,16 @@ def summarize(result) -> dict[str, Any]:
     return summary
 
 
+def _none_if_nan(value: float) -> float | None:
+    return None if np.isnan(value) else value
+
+
 def per_stroke(frame, stroke: float, seal_columns):
     """One row per valve command (stroke) of a cycle run: start time [s], direction (+1
     extend, −1 retract), the time to the end position [s] (:func:`end_position_times`; NaN if
-    not reached), the mean |friction| while moving [N] and the seal temperatures at the end of
-    the stroke [°C] (with seal heating) -- how a long duty cycle drifts.
+    not reached), the mean |friction| over the distance slid [N] (:func:`sliding_mean`) and the
+    seal temperatures at the end of the stroke [°C] (with seal heating) -- how a long duty
+    cycle drifts.
 
     Examples
     --------
@@ -224,8 +275,8 @@ def per_stroke(frame, stroke: float, seal_columns):
 
     t = frame["time_s"].to_numpy()
     x = frame["x_m"].to_numpy()
-    moving = np.abs(frame["v_m_s"].to_numpy()) > MOVING_SPEED
-    friction = np.abs(frame["F_friction_N"].to_numpy())
+    v = frame["v_m_s"].to_numpy()
+    friction = frame["F_friction_N"].to_numpy()
     command = frame["valve_command"].to_numpy()
     starts = np.flatnonzero(np.r_[True, command[1:] != command[:-1]])
     rows = []
@@ -240,8 +291,7 @@ def per_stroke(frame, stroke: float, seal_columns):
         sel = slice(i, j)
         row = {"start_s": float(t[i]), "direction": direction,
                "stroke_time_s": times[0] if times else np.nan,
-               "mean_friction_N": float(np.mean(friction[sel][moving[sel]]))
-               if moving[sel].any() else np.nan}
+               "mean_friction_N": sliding_mean(t[sel], v[sel], friction[sel])}
         for name in seal_columns:
             if f"T_{name}_C" in frame:
                 row[f"T_{name}_C"] = float(frame[f"T_{name}_C"].iloc[j - 1])

@@ -320,8 +320,9 @@ class PneumaticSystem:
                     "grid or lower air.supply_pressure")
 
     def initial_state(self) -> np.ndarray:
-        """Chambers at rest under the initial valve position, friction states relaxed, the
-        seals, rod and tube at their set temperatures."""
+        """Chambers at rest under the initial valve position, their air at the body temperature
+        (``cylinder.temperature``), friction states relaxed, the seals, rod and tube at their
+        set temperatures."""
         case = self.case
         u0 = self.schedule.initial
         openings = port_openings(u0, case.valve.type, case.valve.centre)
@@ -336,11 +337,13 @@ class PneumaticSystem:
         v1 = case.cylinder.dead_volume_cap + self.a1 * x0
         v2 = case.cylinder.dead_volume_rod + self.a2 * (self.stroke - x0)
         self.check_chamber_volumes([0.0], [x0], InputError)
-        m1 = float(gas_mass(p1, v1, self.t_amb))
-        m2 = float(gas_mass(p2, v2, self.t_amb))
+        # a cylinder at rest: its chamber air has taken the temperature of the body around it
+        t_air = body_temperature(case)
+        m1 = float(gas_mass(p1, v1, t_air))
+        m2 = float(gas_mass(p2, v2, t_air))
         y = np.zeros(self.n_states)
-        y[:6] = [x0, 0.0, m1, m2, float(internal_energy(m1, self.t_amb)),
-                 float(internal_energy(m2, self.t_amb))]
+        y[:6] = [x0, 0.0, m1, m2, float(internal_energy(m1, t_air)),
+                 float(internal_energy(m2, t_air))]
         for s, off in zip(self.seals, self.offsets):
             y[off:off + s.n_states] = s.law.initial_state(1)[:, 0]
         if self.heating:

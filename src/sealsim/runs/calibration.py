@@ -208,8 +208,8 @@ def run_rotary_fit_file(path: str | Path, out: str | Path, force: bool = False,
 
 
 def run_pneumatic_compare_file(path: str | Path, out: str | Path, force: bool = False,
-                               progress: Callable[[str, float, float], None] | None = None
-                               ) -> dict:
+                               progress: Callable[[str, float, float], None] | None = None,
+                               time_offset: float = 0.0) -> dict:
     """Simulate the case of a compare file, compare it with the measurement, write ``out``.
 
     Parameters
@@ -222,6 +222,8 @@ def run_pneumatic_compare_file(path: str | Path, out: str | Path, force: bool = 
         Replace existing results.
     progress : callable, optional
         ``progress(variant, simulated_time, end_time)``.
+    time_offset : float
+        The logger's time at the simulation's t = 0 [s], subtracted from the measured times.
 
     Returns
     -------
@@ -229,7 +231,7 @@ def run_pneumatic_compare_file(path: str | Path, out: str | Path, force: bool = 
         The report written to ``report.json``.
     """
     folder = ResultFolder(out, force, inputs=compare_inputs(path))  # before computing
-    comparison = compare_pneumatic_file(path, progress)
+    comparison = compare_pneumatic_file(path, progress, time_offset)
     with folder:
         folder.write_json("report.json", comparison.report)
         folder.write_csv("comparison.csv", comparison.table, float_format="%.8g")

@@ -82,7 +82,8 @@ def write_results(folder: ResultFolder, results: dict[str, PneumaticResult],
                if r.case.controller.mode == "position"}
     folder.savefig("friction_stroke.png", friction_stroke_figure(frames, strokes, title,
                                                                  periods))
-    folder.savefig("friction_velocity.png", friction_velocity_figure(frames, title, periods))
+    folder.savefig("friction_velocity.png", friction_velocity_figure(frames, title, periods,
+                                                                     strokes))
     _contact_friction_figures(folder, first, Path(source).parent if source else Path("."))
     for name, r in results.items():
         heated = r.case.thermal is not None and r.case.thermal.seal_heating
