@@ -848,6 +848,25 @@ def test_a_sump_cooling_below_the_oils_range_is_noted():
            "VG68-mineral (-24.0 degC)" in " ".join(result.notes)
 
 
+def test_a_contact_beyond_the_fe_lip_table_is_noted():
+    # The FE lip table holds its end values outside its temperature grid: a run whose contact
+    # leaves the grid says so (speed_cycle_fe reached 148 degC on a table ending at 140 degC,
+    # silently).  Checked on operating_notes, the function simulate and lip_seal_torque call,
+    # with contacts inside, above and below a 20-100 degC grid; the analytic lip has no grid.
+    from sealsim.rotary.simulation import operating_notes
+
+    fe = _case(lip={"force": "fe", "temperatures": ["20 degC", "100 degC"]})
+    nbr = get_elastomer("NBR")
+    assert not [n for n in operating_notes(fe, nbr, [25.0, 99.9], []) if "FE lip" in n]
+    for contact in ([25.0, 112.0], [5.0, 60.0]):
+        notes = [n for n in operating_notes(fe, nbr, contact, []) if "FE lip" in n]
+        assert len(notes) == 1 and f"{contact[0]:.0f} ... {contact[1]:.0f} degC left the FE " \
+            "lip table's 20 ... 100 degC" in notes[0]
+    width_only = _case(lip={"contact_width": "fe", "temperatures": ["20 degC", "100 degC"]})
+    assert [n for n in operating_notes(width_only, nbr, [25.0, 112.0], []) if "FE lip" in n]
+    assert not [n for n in operating_notes(_case(), nbr, [25.0, 112.0], []) if "FE lip" in n]
+
+
 def test_cold_start_warms_the_contact_without_overshoot():
     # 80 mm NBR lip, VG 68, everything at -20 °C, 1500 rpm: the cold oil's 900 W fall as the
     # contact warms.  Taken at the start of each 0.25 s step the friction overshot (-20 → +70 →

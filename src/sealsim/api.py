@@ -342,9 +342,9 @@ def seal_friction(seal, velocity, pressure="0 bar", temperature="20 degC", law=N
     ...                           diameter="12 mm")
     >>> curve[["velocity_m_s", "friction_N", "normal_force_N", "film_um"]].round(2)
        velocity_m_s  friction_N  normal_force_N  film_um
-    0          0.01        1.41           38.02     0.99
-    1          0.10        0.43           38.02     2.84
-    2          1.00        1.35           38.02     8.97
+    0          0.01        2.67           38.02     0.77
+    1          0.10        0.56           38.02     1.97
+    2          1.00        1.75           38.02     6.26
     """
     from sealsim.friction.base import ContactInputs
     from sealsim.units import ZERO_CELSIUS_K

@@ -704,7 +704,9 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
 def operating_notes(case: RotaryCase, elastomer, contact_temperatures_c, sliding_films_um,
                     sump_temperatures_c=()) -> list[str]:
     """Where a run left the range of its models: a contact above the elastomer's service
-    limit, a sump below the oil's lowest usable temperature (its viscosity law extrapolated),
+    limit or outside the FE lip table's temperatures (``lip.force`` or ``lip.contact_width =
+    "fe"``: held at its end values), a sump below the oil's lowest usable temperature (its
+    viscosity law extrapolated),
     films outside the measured range of lip seal films
     (:func:`~sealsim.tribology.film.film_range_note`).  The notes of ``sealsim rotary run`` and
     of :func:`sealsim.lip_seal_torque` (one set per call, over all its points); the lip's
@@ -732,6 +734,16 @@ def operating_notes(case: RotaryCase, elastomer, contact_temperatures_c, sliding
         notes.append(f"sump cooled to {sump.min():.1f} degC, below the lowest usable "
                      f"temperature of {oil.name} ({oil.min_temperature - ZERO_CELSIUS_K:.1f} "
                      "degC): its viscosity is extrapolated there and the torque means little")
+    lip = case.lip
+    if "fe" in (lip.force, lip.contact_width):
+        # the FE lip table holds its end values outside its grid (LipForceTable)
+        low, high = (float(t) - ZERO_CELSIUS_K for t in (lip.temperatures[0],
+                                                         lip.temperatures[-1]))
+        if contact.max() > high + 0.05 or contact.min() < low - 0.05:
+            notes.append(f"contact temperature {contact.min():.0f} ... {contact.max():.0f} degC "
+                         f"left the FE lip table's {low:.0f} ... {high:.0f} degC: the lip force "
+                         "and contact width are held at the table's end values there; extend "
+                         "lip.temperatures to cover it")
     service_max = elastomer.service_range[1] - ZERO_CELSIUS_K
     if contact.max() > service_max:
         notes.append(f"contact temperature reached {contact.max():.0f} degC, above the service "
