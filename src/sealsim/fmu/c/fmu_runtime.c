@@ -237,7 +237,13 @@ FmuStatus fmu_do_step(Instance *c, double t, double h) {
         }
     }
     c->time = t + h;
-    c->outputs_valid = 0;     /* computed when the host asks for them */
+    c->outputs_valid = 0;
+    /* the outputs at the end of the step are computed here, not at the host's next read: an
+     * error of the model there (a chamber without volume) is this step's.  fmi2Error /
+     * fmi3Error (FMI 2.0.4 sec. 2.1.3, FMI 3.0 sec. 2.2.3): the instance cannot go on, a host
+     * may restore a saved FMU state; not Discard, which asks for a shorter step and would not
+     * help here */
+    if (update_outputs(c) > FMU_WARNING) return fail(c);
     return FMU_OK;
 }
 
