@@ -64,6 +64,11 @@ def test_cylinder_fmus_are_valid_fmi_2_and_3(cylinders):
         assert validate_fmu(path) == []
         md = fmpy.read_model_description(path)
         assert md.fmiVersion == version and md.modelExchange and md.coSimulation
+        # the case's title describes both variants ("seals at 25 vs 55 degC"); the FMU holds
+        # one of them, and its name and description say which
+        title = "Ø32 cylinder, rectangular command, seals at 25 vs 55 degC (variant T25C)"
+        assert md.modelName == title and md.description.endswith(f": {title}")
+        assert md.coSimulation.modelIdentifier == f"cyl{version[0]}"     # the file's name
         names = {v.name for v in md.modelVariables}
         assert {"valve_command", "F_load", "x", "v", "p_cap", "p_rod", "T_cap", "T_rod",
                 "F_friction", "F_piston", "F_rod", "F_wiper", "F_N_piston", "theta_piston",
