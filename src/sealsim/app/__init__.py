@@ -57,9 +57,9 @@ def check_host(host: str, option: str = "host") -> None:
         raise InputError(f"{option} {host!r} is not an IP address nor a host name that "
                          f"resolves; give {_HOSTS_ALLOWED}") from None
     problem = None
-    for family, kind, proto, _, address in found:
+    for found_family, kind, proto, _, address in found:
         try:
-            with socket.socket(family, kind, proto) as probe:
+            with socket.socket(found_family, kind, proto) as probe:
                 probe.bind(address)            # port 0: tests the address only
             return
         except OSError as exc:
