@@ -118,6 +118,19 @@ def test_an_uploaded_case_that_refers_to_another_file_is_told_to_use_the_command
         _run_case(tmp_path, None)
 
 
+@pytest.mark.parametrize("host, problem", [
+    ("999.1.1.1", "is not an IP address nor a host name that resolves"),
+    ("192.0.2.1", "is not an address of this computer"),     # TEST-NET-1: never local
+])
+def test_a_host_the_server_cannot_listen_on_is_refused_before_it_starts(host, problem):
+    # werkzeug printed only "Name or service not known" and exited by itself
+    result = CliRunner().invoke(cli, ["app", "--host", host, "--no-browser"])
+    message = " ".join(result.output.split())
+    assert result.exit_code == 2, message
+    assert f"--host '{host}' {problem}" in message
+    assert "give an IP address or host name of this computer, e.g. 127.0.0.1" in message
+
+
 @pytest.mark.filterwarnings("ignore::sealsim.tribology.film.FilmRangeWarning")
 def test_the_lip_seal_pages_case_file_ends_at_the_pages_operating_point():
     # The page offers its calculation as a rotary case held until steady.  With a free sump

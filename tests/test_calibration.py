@@ -234,10 +234,19 @@ def test_one_speed_cannot_separate_the_two_friction_coefficients(tmp_path):
 def test_failed_fits_say_why(tmp_path):
     f = synthetic_run(tmp_path / "sweep.csv", [0.005, 0.02, 0.08], seed=0)
     # the truth f_a = 0.3 lies above the upper bound: the fit stops at it and says so
-    bounded = [{"name": "f_a", "bounds": [0.01, 0.2]}, {"name": "f_b", "bounds": [0.001, 2.0]}]
+    bounded = [{"name": "f_a", "bounds": [0.01, 0.2], "initial": 0.15},
+               {"name": "f_b", "bounds": [0.001, 2.0], "initial": 0.1}]
     result = fitted(tmp_path, fit_case({"sweep": f.name}, bounded))
     assert result.status == "failed"
     assert "f_a" in result.failure[0] and "bound" in result.failure[0]
+    # a start the law refuses (f_a from the middle of its bounds, 0.0447, below the case's
+    # f_b = 0.2): said before the fit, not a fit against a wall of refused trial laws
+    unset = [{k: v for k, v in p.items() if k != "initial"} for p in bounded]
+    with pytest.raises(InputError, match=r"the fit would start from a law that is not valid "
+                                         r"\(f_a = 0.0447214; SI\): f_b = 0.2 is "
+                                         r"larger than f_a = 0.0447214.*give "
+                                         r"fit.parameters\[\].initial values that are"):
+        fitted(tmp_path, fit_case({"sweep": f.name}, unset[:1]))
     # no motion: no sliding phase
     still = tmp_path / "still.csv"
     np.savetxt(still, np.column_stack([np.arange(100) * 10.0, np.zeros(100), np.zeros(100),
@@ -265,8 +274,10 @@ def test_failed_fits_say_why(tmp_path):
 def test_cli_reports_a_failed_fit_with_exit_status_1(tmp_path):
     synthetic_run(tmp_path / "sweep.csv", [0.005, 0.02, 0.08], seed=0)
     case = tmp_path / "case.toml"
-    case.write_text(tomli_w.dumps(fit_case({"sweep": "sweep.csv"},
-                                           [{"name": "f_a", "bounds": [0.01, 0.2]}])))
+    data = fit_case({"sweep": "sweep.csv"}, [{"name": "f_a", "bounds": [0.01, 0.2],
+                                             "initial": 0.15}])
+    data["friction"]["f_b"] = 0.08             # the truth; a valid law needs f_b <= f_a
+    case.write_text(tomli_w.dumps(data))
     result = RUNNER.invoke(app, ["friction", "fit", str(case), "--out", str(tmp_path / "o"),
                                  "--quiet"])
     assert result.exit_code == 1

@@ -279,6 +279,26 @@ def test_bad_parameters_and_inputs_give_a_clear_message(fmus):
             fmu.set(sigma0=2e5)
 
 
+def test_a_break_away_below_the_sliding_level_and_a_pressure_below_vacuum_are_refused(fmus):
+    # as ThetaParameters and the friction case's [inputs]: f_b (full film, theta = 1) above
+    # f_a (dry, theta = 0) and a gauge p_A below -1 atm ran without a word
+    with LoadedFMU(fmus["theta"]) as fmu:
+        fmu.set(f_b=0.4, f_a=0.2)
+        with pytest.raises(ModelError, match=r"parameter f_b = 0.4 is larger than f_a = 0.2: "
+                                             r"f_b \(the full-film friction coefficient, "
+                                             r"theta = 1\) must be <= f_a"):
+            fmu.initialize()
+    for name in ("theta", "piston3"):
+        with LoadedFMU(fmus[name]) as fmu:
+            fmu.initialize()
+            with pytest.raises(ModelError, match=r"input p_A = -300000 Pa is not allowed: it "
+                                                 r"must be >= -101325 Pa \(it was not set\)"):
+                fmu.set(p_A=-3e5)
+            fmu.set(p_A=-101325.0, p_B=2e5)               # vacuum itself is allowed
+            fmu.do_step(0.0, 1e-3)
+            assert fmu.get("p_A")[0] == -101325.0 and np.isfinite(fmu.get("F")[0])
+
+
 def test_law_without_c_code_is_refused(tmp_path):
     case = {"friction": {"law": "dahl", "parameter_set": "canudas1995"},
             "bench": {"mode": "velocity", "duration": "1 s", "time_step": "1 ms",
@@ -470,7 +490,7 @@ _INPUTS = st.fixed_dictionaries({
     "sign": st.sampled_from([-1.0, 1.0])})
 _THETA = st.fixed_dictionaries({
     "tau": st.floats(0.1, 10.0), "alpha": st.floats(1e-3, 1.0), "f_a": st.floats(0.05, 1.0),
-    "f_b": st.floats(0.01, 1.0), "gamma": st.floats(0.0, 1e5),
+    "f_b_ratio": st.floats(0.01, 1.0), "gamma": st.floats(0.0, 1e5),   # f_b <= f_a
     "reference_normal_force": st.floats(10.0, 1000.0), "load_exponent": st.floats(0.0, 3.0),
     "normal_force": st.floats(1.0, 1000.0), "contact_width": st.floats(0.0, 5e-3),
     "reference_temperature": st.floats(270.0, 370.0), "base_oil_nu40": st.floats(2e-5, 5e-4),
@@ -495,7 +515,8 @@ def _start(fmu, names, params, x, state):
 @settings(max_examples=40, deadline=None, derandomize=True)  # the same cases in CI
 @given(x=_INPUTS, p=_THETA)
 def test_theta_c_code_matches_the_kernels(kernel_fmus, x, p):
-    p = {**p, "base_oil_nu100": p["base_oil_nu40"] * p["viscosity_ratio"]}
+    p = {**p, "base_oil_nu100": p["base_oil_nu40"] * p["viscosity_ratio"],
+         "f_b": p["f_a"] * p["f_b_ratio"]}
     names = ["tau", "alpha", "f_a", "f_b", "gamma", "reference_normal_force", "load_exponent",
              "normal_force", "contact_width", "reference_temperature", "base_oil_nu40",
              "base_oil_nu100"]

@@ -157,6 +157,35 @@ def test_rotary_inputs_out_of_range_are_clipped_and_me_settles(rotary_fmu):
     assert result["T_contact"][-1] == pytest.approx(result["T_contact_steady"][-1], abs=1e-3)
 
 
+def test_above_the_speed_table_all_outputs_are_those_of_its_top_speed(rotary_fmu):
+    # torque and temperatures were clipped to the table's top speed while power was that
+    # torque times the real speed: outputs of no single operating point
+    import re
+    import zipfile
+
+    with zipfile.ZipFile(rotary_fmu.path) as archive:         # the table's top speed, exactly
+        config = archive.read("sources/config.h").decode()
+    top = float(re.search(r"#define STEADY_SPEED_HI (\S+)", config).group(1))
+    assert top < 0.9 * 5000 * RPM                              # the test is above the table
+    names = ("torque", "power", "T_contact", "T_contact_steady", "map_clipped")
+    with LoadedFMU(rotary_fmu.path) as fmu:
+        fmu.set(speed=-5000 * RPM, T_sump=330.0)
+        fmu.initialize()
+        above = dict(zip(names, fmu.get(*names)))
+        assert any("shaft speed" in m and "clipped" in m for s, _, m in fmu.messages
+                   if s == "WARNING")
+        fmu.reset()
+        fmu.set(speed=-top, T_sump=330.0)
+        fmu.initialize()
+        at_top = dict(zip(names, fmu.get(*names)))
+    assert above["map_clipped"] == 1.0 and at_top["map_clipped"] == 0.0
+    assert above["torque"] < 0.0                                   # against the speed
+    # the same operating point (exactly: the same table values), power = |torque| * top
+    for name in ("torque", "power", "T_contact", "T_contact_steady"):
+        assert above[name] == at_top[name], name
+    assert above["power"] == pytest.approx(-above["torque"] * top, rel=1e-15)
+
+
 @pytest.mark.parametrize(("value", "bound"), [(80.0, "> 200 K"), (5000.0, "< 450 K")])
 def test_a_start_temperature_outside_the_cases_range_is_refused(rotary_fmu, value, bound):
     # T_contact_start was only required > 0 K: 80 (meant as degC) started the contact at

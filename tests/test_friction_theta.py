@@ -162,3 +162,29 @@ def test_dwell_relaxation_is_exponential():
     for _ in range(100):
         z = LAW.step(z, np.array([0.0]), 0.03, THETA_INPUTS)
     assert z[0, 0] == pytest.approx(0.8 * np.exp(-3.0 / P.tau), rel=1e-12)
+
+
+def test_a_break_away_below_the_sliding_level_and_a_pressure_below_vacuum_are_refused():
+    # f_a is the dry coefficient (Θ = 0, the break-away after a long dwell), f_b the full-film
+    # one (Θ = 1); f_b > f_a and a gauge p_A below -1 atm ran without a word
+    from sealsim.errors import InputError
+    from sealsim.friction.case import load_friction_cases
+
+    case = {"friction": {"law": "theta", "parameter_set": "pneumatic_demo", "f_a": 0.2,
+                         "f_b": 0.4},
+            "inputs": {"normal_force": "100 N", "contact_width": "1 mm",
+                       "pressure_a": "-3 bar", "pressure_b": "-1 atm"},
+            "bench": {"mode": "velocity", "duration": "1 s", "time_step": "10 ms",
+                      "velocity": {"kind": "constant", "level": "1 mm/s"}}}
+    with pytest.raises(InputError) as info:
+        load_friction_cases(case, "case")
+    message = " ".join(str(info.value).split())
+    assert ("friction: f_b = 0.4 is larger than f_a = 0.2: f_b (the full-film friction "
+            "coefficient, Theta = 1) must be <= f_a") in message
+    assert ("inputs.pressure_a: a gauge pressure below vacuum is not possible: it must be >= "
+            "-1.01325 bar (-1 atm, vacuum) (got '-3 bar')") in message
+    assert "pressure_b" not in message                      # exactly vacuum is allowed
+    # equal coefficients (no Stribeck drop) are allowed
+    equal = {**case, "friction": {**case["friction"], "f_b": 0.2},
+             "inputs": {**case["inputs"], "pressure_a": "-0.5 bar"}}
+    assert load_friction_cases(equal, "case")["base"].friction.f_b == 0.2

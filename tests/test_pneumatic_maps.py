@@ -4,6 +4,7 @@ structure package (read from map.nc, built on demand and cached)."""
 from __future__ import annotations
 
 import math
+import re
 from pathlib import Path
 
 import numpy as np
@@ -90,6 +91,19 @@ def test_analytic_map_rises_with_pressure_and_temperature():
     with pytest.raises(InputError, match="within 20 K of the T_g of NBR"):
         cm.AnalyticContactMap(0.032, 2e-3, 0.10, 7.98e6, 1.9e-4, 293.15,
                               temperature_range=(243.15, 373.15))
+
+
+def test_analytic_map_source_shown_to_users_has_no_internal_tag():
+    # describe()["source"] names the map in the FMU's documentation and contact-table plot
+    # title and in `sealsim fmu build` output; it ended in the docstrings' verification tag
+    # "[R]", which means nothing to a user
+    from sealsim.fmu.friction_export import contact_table
+
+    m = cm.AnalyticContactMap(0.012, 2e-3, 0.12, 7.98e6, 1.9e-4, 293.15)
+    source = m.describe()["source"]
+    assert source.startswith("analytic") and "Lindley" in source
+    assert not re.search(r"\[[A-Z]\]", source)
+    assert contact_table(m, 5, 5).source == source
 
 
 @pytest.fixture(scope="module")

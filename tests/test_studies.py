@@ -212,8 +212,10 @@ def test_sobol_indices_of_an_additive_model_match_the_variance_shares(tmp_path):
             '"uniform"\nlower = "10 N"\nupper = "30 N"\n'
             '[[factors]]\nname = "c"\npath = "friction.viscous_coefficient"\ndistribution = '
             '"uniform"\nlower = "0 N*s/m"\nupper = "100 N*s/m"\n'
-            '[[factors]]\nname = "p"\npath = "inputs.pressure_a"\ndistribution = "normal"\n'
-            'mean = "1 bar"\nstd = "0.1 bar"\n')
+            # a gauge pressure is >= -1 atm (vacuum): its normal distribution needs bounds
+            '[[factors]]\nname = "p"\npath = "inputs.pressure_a"\ndistribution = '
+            '"truncnormal"\nmean = "1 bar"\nstd = "0.1 bar"\nlower = "0 bar"\n'
+            'upper = "2 bar"\n')
     result = run_study(_study(tmp_path, text), tmp_path / "out", workers=0)
     table = result.sensitivity.set_index("factor")
     # N = 64 Saltelli base samples (320 runs): the estimators' Monte-Carlo error is about

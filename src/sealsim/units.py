@@ -33,6 +33,9 @@ from sealsim.errors import InputError
 
 #: 0 degC in kelvin [K] (the definition of the Celsius scale, SI Brochure, 9th ed., 2.3.1).
 ZERO_CELSIUS_K = 273.15
+#: The standard atmosphere [Pa] (10th CGPM 1954, Resolution 4): the lowest gauge pressure is
+#: −1 atm (vacuum).
+STANDARD_ATMOSPHERE_PA = 101325.0
 
 
 @functools.cache

@@ -20,7 +20,54 @@ import webbrowser
 from collections.abc import Callable
 from pathlib import Path
 
-__all__ = ["serve", "start_server"]
+__all__ = ["check_host", "serve", "start_server"]
+
+_HOSTS_ALLOWED = ("an IP address or host name of this computer, e.g. 127.0.0.1 (this computer "
+                  "only) or 0.0.0.0 (every network interface)")
+
+
+def check_host(host: str, option: str = "host") -> None:
+    """Refuse an address the server cannot listen on, before it starts.
+
+    werkzeug prints only the system's message ("Name or service not known") and exits the
+    process; this names the option, the value and what is allowed instead.
+
+    Raises
+    ------
+    InputError
+        ``host`` resolves to no address, or to none of this computer's.
+
+    Examples
+    --------
+    >>> check_host("127.0.0.1")
+    >>> check_host("999.1.1.1", "--host")
+    Traceback (most recent call last):
+    ...
+    sealsim.errors.InputError: --host '999.1.1.1' is not an IP address nor a host name ...
+    """
+    import socket
+
+    from sealsim.errors import InputError
+
+    # the address family werkzeug's server takes (werkzeug.serving.select_address_family)
+    family = socket.AF_INET6 if ":" in host else socket.AF_INET
+    try:
+        found = socket.getaddrinfo(host, 0, family, socket.SOCK_STREAM)
+    except (socket.gaierror, UnicodeError, ValueError):
+        raise InputError(f"{option} {host!r} is not an IP address nor a host name that "
+                         f"resolves; give {_HOSTS_ALLOWED}") from None
+    problem = None
+    for found_family, kind, proto, _, address in found:
+        try:
+            with socket.socket(found_family, kind, proto) as probe:
+                probe.bind(address)            # port 0: tests the address only
+            return
+        except OSError as exc:
+            problem = exc.strerror
+    resolved = found[0][4][0]
+    raise InputError(f"{option} {host!r}" + (f" ({resolved})" if resolved != host else "")
+                     + f" is not an address of this computer ({problem}); give "
+                     f"{_HOSTS_ALLOWED}")
 
 
 def start_server(host: str = "127.0.0.1", port: int = 0, *, run_timeout: float = 600.0,
@@ -38,6 +85,7 @@ def start_server(host: str = "127.0.0.1", port: int = 0, *, run_timeout: float =
     from sealsim.app.server import AppConfig, create_app
 
     logging.getLogger("werkzeug").setLevel(logging.WARNING)  # no line per request
+    check_host(host)
 
     folder = Path(work_dir) if work_dir is not None else Path(
         tempfile.mkdtemp(prefix="sealsim-app-"))

@@ -413,6 +413,13 @@ def fit_friction(case: FrictionFitCase, runs: list[PreparedRun], progress=None) 
         return {**vals, **{target: vals[source] for target, source in tied.items()}}
 
     values = dict(zip(names, initial))
+    try:      # every trial law is refused alike (e.g. a Θ law's f_b above its f_a)
+        _make(start, with_ties(values))
+    except InputError as exc:
+        shown = ", ".join(f"{k} = {v:.6g}" for k, v in with_ties(values).items())
+        raise InputError(f"the fit would start from a law that is not valid ({shown}; SI): "
+                         f"{str(exc).removeprefix('invalid fitted parameters: ')}; give "
+                         "fit.parameters[].initial values that are") from None
     stages, notes = [], start_notes
     failure: list[str] = []
     all_jac_rows = {}

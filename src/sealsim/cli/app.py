@@ -23,8 +23,9 @@ def app_command(
 
     Runs until Ctrl-C.  Every number on the page comes from sealsim's Python API.
     """
-    from sealsim.app import serve
+    from sealsim.app import check_host, serve
 
+    check_host(host, "--host")
     serve(host, port, open_browser=not no_browser, run_timeout=run_timeout,
           max_upload=max_upload * 1024,
           announce=lambda url: console.print(f"sealsim app running at {url} (Ctrl-C stops it)"))

@@ -22,7 +22,13 @@ from pathlib import Path
 
 import numpy as np
 
-from sealsim.cases import detect_case_kind, expand_variants, load_toml, validate_case
+from sealsim.cases import (
+    DEFAULT_VARIANT,
+    detect_case_kind,
+    expand_variants,
+    load_toml,
+    validate_case,
+)
 from sealsim.errors import InputError
 from sealsim.fmu.builder import FMI_KINDS, BuildResult, build_archive, check_output
 from sealsim.fmu.case import (
@@ -246,6 +252,15 @@ def _case_kind(data: dict, source: str) -> str:
                      f"or [duty]) nor an FMU case ([fmu]){found}; see examples/fmu/")
 
 
+def _model_name(title: str, path: Path, variant: str, chosen: bool) -> str:
+    """The FMU's model name: the case's title (else its file name) with the variant exported
+    when the case has named variants and one was chosen -- a case's title usually describes
+    all its variants ("seals at 25 vs 55 degC") while the FMU holds one."""
+    if not chosen:
+        return title
+    return f"{title or path.stem} (variant {variant})"
+
+
 def _one_variant(cases: dict, variant: str | None, source: str, same=None):
     """The variant to export: the one asked for, the only one, or any when all agree."""
     if variant is not None:
@@ -326,6 +341,14 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
         base = source_path.parent
     else:
         base = path.parent
+    case_path = source_path if fmu_case is not None else path
+
+    def chosen(cases) -> bool:
+        """A variant of several (asked for, or the only named one) goes into the name; not
+        when no variant was asked for because all variants give the same FMU."""
+        return (variant is not None and len(cases) > 1) or (
+            len(cases) == 1 and DEFAULT_VARIANT not in cases)
+
     common = dict(name=fmu_case.fmu.name if fmu_case else None, fmi_version=fmi_version,
                   kind=kind, force=force, compile=compile, inputs=inputs)
     title = fmu_case.title if fmu_case and fmu_case.title else ""
@@ -335,9 +358,12 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
         if law_override is not None:
             raise InputError("[friction] and fmu.friction_file apply to seal friction FMUs, "
                              "not to a rotary case")
-        name, case = _one_variant(expand_variants(RotaryCase, data, source), variant, source)
+        cases = expand_variants(RotaryCase, data, source)
+        name, case = _one_variant(cases, variant, source)
         return build_rotary_fmu(case, out, settings=fmu_case.rotary if fmu_case else None,
-                                base_dir=base, title=title or case.title,
+                                base_dir=base,
+                                title=title or _model_name(case.title, case_path, name,
+                                                           chosen(cases)),
                                 source=f"{source}, variant {name!r}", progress=progress,
                                 **common)
     table = fmu_case.table if fmu_case else None
@@ -347,6 +373,7 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
         cases = load_friction_cases(data, source)
         name, case = _one_variant(cases, variant, source,
                                   same=lambda c: repr((c.friction, c.inputs)))
+        title = title or _model_name(case.title, case_path, name, chosen(cases))
         params = law_override or case.friction
         i = case.inputs
         if case.seal is not None:                      # a real seal: its contact map
@@ -358,11 +385,11 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
                 _law(params), out, contact_map=bench_contact_map(case, base, progress),
                 seal_temperature=i.temperature, sliding_diameter=case.seal.sliding_diameter,
                 velocity_direction=side if away else -side, table=table,
-                title=title or case.title, source=f"{source}, variant {name!r}", **common)
+                title=title, source=f"{source}, variant {name!r}", **common)
         return build_friction_fmu(
             _law(params), out, normal_force=i.normal_force, contact_width=i.contact_width,
             seal_temperature=i.temperature,
-            table=table, title=title or case.title,
+            table=table, title=title,
             source=f"{source}, variant {name!r}", **common)
     from sealsim.pneumatic.case import body_temperature, build_contact_map, load_pneumatic_cases
 
@@ -372,7 +399,9 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
             raise InputError("[friction] and fmu.friction_file replace the law of one seal: "
                              "give fmu.seal (or --seal) to export that seal")
         name, case = _one_variant(cases, variant, source, same=lambda c: repr(c))
-        return build_cylinder_fmu(case, out, base_dir=base, title=title or case.title,
+        return build_cylinder_fmu(case, out, base_dir=base,
+                                  title=title or _model_name(case.title, case_path, name,
+                                                             chosen(cases)),
                                   source=f"{source}, variant {name!r}", **common)
     name, case = _one_variant(cases, variant, source, same=lambda c: repr(c.seals))
     seals = {s.name: s for s in case.seals}
@@ -397,12 +426,13 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
     if contact_map is None and law.name == "theta":
         raise InputError(f"{where}: the theta law needs the seal's normal force and contact "
                          "width; give the seal a map")
+    cylinder = _model_name(case.title, case_path, name, chosen(cases))
     # the friction FMU's v is the piston velocity: it slides the rod from the rod-end chamber
     # (side A) out, the bore past a piston seal from the rod-end chamber (side B) to the cap end
     return build_friction_fmu(law, out, contact_map=contact_map, seal_temperature=temperature,
                               sliding_diameter=diameter if contact_map is not None else None,
                               velocity_direction=-1.0 if spec.location == "piston" else 1.0,
-                              table=table, title=title or f"{case.title}: {seal} seal",
+                              table=table, title=title or f"{cylinder}: {seal} seal",
                               source=f"{source}, variant {name!r}, seal {seal!r}", **common)
 
 

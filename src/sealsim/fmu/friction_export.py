@@ -62,6 +62,7 @@ from sealsim.friction.base import ContactInputs, FrictionLaw
 from sealsim.friction.contact_table import SteadyFrictionTable
 from sealsim.fmu.model_description import ModelSpec, Variable
 from sealsim.fmu.tables import HermiteTable, pchip_table, smooth_table
+from sealsim.units import STANDARD_ATMOSPHERE_PA
 
 __all__ = ["C_LAWS", "PRESSURE_ROUNDING", "ContactTable", "SteadyTable", "c_parameters",
            "contact_table", "friction_check", "friction_spec", "model_identifier",
@@ -75,6 +76,8 @@ _LAW_CODE = {"coulomb": 1, "stribeck": 2, "lugre": 3, "theta": 4}
 PRESSURE_ROUNDING = 1e3
 
 _GE0, _GT0 = (">=", 0.0), (">", 0.0)
+#: a gauge pressure input: not below vacuum (-1 atm)
+_ABOVE_VACUUM = (">=", -STANDARD_ATMOSPHERE_PA)
 # parameter -> (unit, description); bounds per law below (those of the pydantic models)
 _PARAMETERS = {
     "coulomb_force": ("N", "Coulomb (kinetic) friction level F_C without pressure"),
@@ -403,8 +406,10 @@ def friction_spec(law: FrictionLaw, identifier: str, *, table: ContactTable | No
         Variable("time", "TIME", "independent", "simulation time", "s"),
         Variable("v", "V", "input", "sliding velocity of the body relative to the seal",
                  "m/s", 0.0),
-        Variable("p_A", "P_A", "input", "gauge pressure on side A of the seal", "Pa", 0.0),
-        Variable("p_B", "P_B", "input", "gauge pressure on side B of the seal", "Pa", 0.0),
+        Variable("p_A", "P_A", "input", "gauge pressure on side A of the seal", "Pa", 0.0,
+                 lower=_ABOVE_VACUUM),
+        Variable("p_B", "P_B", "input", "gauge pressure on side B of the seal", "Pa", 0.0,
+                 lower=_ABOVE_VACUUM),
         Variable("T_seal", "T_SEAL", "input", "seal temperature", "K", seal_temperature),
         Variable("F", "F", "output", "friction force, acting against v", "N"),
         Variable("F_breakaway", "F_BREAKAWAY", "output",

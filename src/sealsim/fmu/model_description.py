@@ -95,8 +95,9 @@ class Variable:
     derivative_of : str, optional
         For ``der(x)``: the name of the state x.
     lower, upper : (str, float), optional
-        Bounds of a parameter checked by the FMU at the end of initialization, e.g.
-        ``(">", 0.0)``; inclusive bounds also become the FMI ``min``/``max``.
+        Bounds checked by the FMU: a parameter's at the end of initialization, an input's
+        whenever it is set (refused, not set), e.g. ``(">", 0.0)``; inclusive bounds also
+        become the FMI ``min``/``max``.
     relative : bool
         A temperature difference (FMI ``relativeQuantity``: no offset in unit conversion).
     nominal : float, optional

@@ -9,7 +9,8 @@ speed                rad/s   input: shaft speed (display unit rpm)
 T_sump               K       input: oil sump temperature
 T_ambient            K       input (optional): ambient temperature
 torque               N m     output: friction torque (sign of the speed)
-power                W       output: power loss torque·|speed|
+power                W       output: power loss torque·|speed| (above the maps: torque·top
+                             speed, the one operating point of all outputs)
 T_contact            K       output: contact temperature
 T_contact_steady     K       output: contact temperature it tends to at these inputs
 map_clipped          -       output: true while an input lies outside the maps (clipped)
@@ -270,7 +271,8 @@ def rotary_spec(case: RotaryCase, maps: RotaryMaps, identifier: str, *, title: s
         Variable("T_sump", "T_SUMP", "input", "oil sump temperature", "K", sump0),
         Variable("T_ambient", "T_AMBIENT", "input", "ambient temperature", "K", maps.ambient),
         Variable("torque", "TORQUE", "output", "friction torque of the seal", "N.m"),
-        Variable("power", "POWER", "output", "power loss torque*|speed|", "W"),
+        Variable("power", "POWER", "output", "power loss torque*|speed| (above the maps: at "
+                 "their top speed, as torque and temperatures)", "W"),
         Variable("T_contact", "T_CONTACT", "output", "contact temperature of the lip", "K"),
         Variable("T_contact_steady", "T_CONTACT_STEADY", "output",
                  "contact temperature in steady state at the current inputs", "K"),

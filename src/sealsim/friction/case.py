@@ -47,7 +47,7 @@ import warnings
 from typing import Annotated, Any, Literal
 
 import numpy as np
-from pydantic import Field
+from pydantic import Field, field_validator
 
 from sealsim.cases import CaseModel, Q, expand_variants
 from sealsim.errors import InputError
@@ -66,6 +66,7 @@ from sealsim.friction.gms import GMSParameters
 from sealsim.friction.lugre import LuGreParameters
 from sealsim.friction.stribeck import CoulombParameters, StribeckParameters
 from sealsim.friction.theta import ThetaParameters
+from sealsim.units import STANDARD_ATMOSPHERE_PA
 
 __all__ = [
     "FrictionCase",
@@ -89,6 +90,15 @@ class InputsModel(CaseModel):
     pressure_a: Q("pressure") = 0.0
     pressure_b: Q("pressure") = 0.0
     temperature: Q("temperature", gt=0) | None = None
+
+    @field_validator("pressure_a", "pressure_b")
+    @classmethod
+    def _not_below_vacuum(cls, value: float) -> float:
+        # gauge pressures (as in system tools): below -1 atm would be less than vacuum
+        if value < -STANDARD_ATMOSPHERE_PA:
+            raise ValueError(f"a gauge pressure below vacuum is not possible: it must be >= "
+                             f"{-STANDARD_ATMOSPHERE_PA / 1e5:g} bar (-1 atm, vacuum)")
+        return value
 
 
 class BenchSealModel(CaseModel):

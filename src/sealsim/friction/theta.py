@@ -510,6 +510,12 @@ class ThetaParameters(LawParameters):
         if self.steady == "lumped" and (self.f_a is None or self.f_b is None):
             raise ValueError("the lumped steady curve needs f_a and f_b (or steady = "
                              "'contact': the seal's own contact)")
+        if self.steady == "lumped" and self.f_b > self.f_a:
+            # f_a is the dry level (Θ = 0, the break-away force after a long dwell), f_b the
+            # full-film one: with f_b > f_a the seal would break away below its sliding level
+            raise ValueError(f"f_b = {self.f_b:g} is larger than f_a = {self.f_a:g}: f_b (the "
+                             "full-film friction coefficient, Theta = 1) must be <= f_a (the "
+                             "dry one, Theta = 0, the break-away level after a long dwell)")
         if self.steady == "contact":
             if self.base_oil_nu40 is None:
                 raise ValueError("steady = 'contact' needs the lubricant: base_oil_nu40 and "

@@ -492,7 +492,9 @@ class AnalyticContactMap:
         return loads
 
     def describe(self) -> dict[str, Any]:
-        return {"source": "analytic (Lindley + Hertz + pressure energisation) [R]",
+        # shown to users (FMU documentation, plot titles, CLI): no internal verification tag
+        return {"source": "analytic engineering estimate (Lindley + Hertz + pressure "
+                          "energisation)",
                 "sliding_diameter_m": self.sliding_diameter,
                 "cord_diameter_m": self.cord_diameter, "squeeze": self.squeeze,
                 "modulus_Pa": self.modulus, "thermal_expansion_per_K": self.thermal_expansion,

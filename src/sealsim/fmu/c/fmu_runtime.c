@@ -113,6 +113,20 @@ static int settable(Instance *c, unsigned vr) {
     return 0;
 }
 
+static const char *bound_text(int kind, int lower) {
+    if (kind == BOUND_INCLUSIVE) return lower ? ">=" : "<=";
+    return lower ? ">" : "<";
+}
+
+/* is x outside the bounds of v?  *low: the lower bound is the one violated */
+static int outside_bounds(const VariableInfo *v, double x, int *low) {
+    *low = (v->lower_kind == BOUND_INCLUSIVE && !(x >= v->lower)) ||
+           (v->lower_kind == BOUND_EXCLUSIVE && !(x > v->lower));
+    int high = (v->upper_kind == BOUND_INCLUSIVE && !(x <= v->upper)) ||
+               (v->upper_kind == BOUND_EXCLUSIVE && !(x < v->upper));
+    return *low || high;
+}
+
 FmuStatus fmu_set_real(Instance *c, const unsigned *vr, size_t n, const double *value) {
     for (size_t k = 0; k < n; k++) {
         if (!valid_vr(c, vr[k], "set real") || !settable(c, vr[k])) return FMU_ERROR;
@@ -125,6 +139,18 @@ FmuStatus fmu_set_real(Instance *c, const unsigned *vr, size_t n, const double *
             fmu_log(c, FMU_ERROR, "logStatusError",
                     "%s = %g is not allowed: the value must be finite (it was not set)",
                     VARIABLES[vr[k]].name, value[k]);
+            return FMU_ERROR;
+        }
+        /* an input outside its bounds (a gauge pressure below vacuum) has no meaning: refused
+         * when it is set (parameters are checked at the end of initialization) */
+        const VariableInfo *v = &VARIABLES[vr[k]];
+        int low;
+        if (v->causality == CAUSALITY_INPUT && outside_bounds(v, value[k], &low)) {
+            fmu_log(c, FMU_ERROR, "logStatusError",
+                    "input %s = %g %s is not allowed: it must be %s %g %s (it was not set)",
+                    v->name, value[k], v->unit, bound_text(low ? v->lower_kind : v->upper_kind,
+                                                           low),
+                    low ? v->lower : v->upper, v->unit);
             return FMU_ERROR;
         }
         c->r[vr[k]] = value[k];
@@ -147,11 +173,6 @@ FmuStatus fmu_set_boolean(Instance *c, const unsigned *vr, size_t n, const int *
     return FMU_OK;
 }
 
-static const char *bound_text(int kind, int lower) {
-    if (kind == BOUND_INCLUSIVE) return lower ? ">=" : "<=";
-    return lower ? ">" : "<";
-}
-
 /* every parameter within its bounds (those of sealsim's case-file models) */
 static FmuStatus check_bounds(Instance *c) {
     FmuStatus status = FMU_OK;
@@ -159,11 +180,8 @@ static FmuStatus check_bounds(Instance *c) {
         const VariableInfo *v = &VARIABLES[vr];
         if (v->name == NULL || v->causality != CAUSALITY_PARAMETER) continue;
         double x = c->r[vr];
-        int low = (v->lower_kind == BOUND_INCLUSIVE && !(x >= v->lower)) ||
-                  (v->lower_kind == BOUND_EXCLUSIVE && !(x > v->lower));
-        int high = (v->upper_kind == BOUND_INCLUSIVE && !(x <= v->upper)) ||
-                   (v->upper_kind == BOUND_EXCLUSIVE && !(x < v->upper));
-        if (low || high) {
+        int low;
+        if (outside_bounds(v, x, &low)) {
             fmu_log(c, FMU_ERROR, "logStatusError",
                     "parameter %s = %g %s is not allowed: it must be %s %g %s", v->name, x,
                     v->unit, bound_text(low ? v->lower_kind : v->upper_kind, low),
@@ -219,7 +237,13 @@ FmuStatus fmu_do_step(Instance *c, double t, double h) {
         }
     }
     c->time = t + h;
-    c->outputs_valid = 0;     /* computed when the host asks for them */
+    c->outputs_valid = 0;
+    /* the outputs at the end of the step are computed here, not at the host's next read: an
+     * error of the model there (a chamber without volume) is this step's.  fmi2Error /
+     * fmi3Error (FMI 2.0.4 sec. 2.1.3, FMI 3.0 sec. 2.2.3): the instance cannot go on, a host
+     * may restore a saved FMU state; not Discard, which asks for a shorter step and would not
+     * help here */
+    if (update_outputs(c) > FMU_WARNING) return fail(c);
     return FMU_OK;
 }
 

@@ -251,6 +251,17 @@ FmuStatus model_check_parameters(Instance *c) {
         return FMU_ERROR;
     }
 #endif
+#if FRICTION_LAW == LAW_THETA && !THETA_CONTACT
+    /* ThetaParameters: f_a is the dry level (theta = 0, the break-away force after a long
+     * dwell), f_b the full-film one; f_b > f_a would break away below the sliding level */
+    if (P(F_B) > P(F_A)) {
+        fmu_log(c, FMU_ERROR, "logStatusError",
+                "parameter f_b = %g is larger than f_a = %g: f_b (the full-film friction "
+                "coefficient, theta = 1) must be <= f_a (the dry one, theta = 0, the "
+                "break-away level after a long dwell)", P(F_B), P(F_A));
+        return FMU_ERROR;
+    }
+#endif
 #if FRICTION_LAW == LAW_THETA && THETA_BRISTLES && !THETA_CONTACT
     if (P(F_A) <= 0.0 || P(F_B) <= 0.0) {
         fmu_log(c, FMU_ERROR, "logStatusError",

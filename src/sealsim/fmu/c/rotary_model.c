@@ -25,7 +25,14 @@
  * Friction torque (sealsim.rotary.friction via friction_map): torque(|speed|, T_contact) from
  * a table; below TORQUE_SPEED_MIN it ramps linearly to 0 at standstill (sealsim's model gives
  * 0 at rest; the ramp keeps the torque continuous for the host's solver).  Power loss
- * P = torque |speed|. */
+ * P = torque |speed|.
+ *
+ * Above the table's top speed every output belongs to one operating point, the top speed
+ * (torque, T_contact, T_contact_steady and P = torque x top speed), flagged by map_clipped
+ * and the log.  Why not torque x the real speed: that power would belong to no operating
+ * point (its heat is not the heat of the contact temperatures reported with it).  Why not
+ * refuse: the other inputs (sump, ambient) are clipped the same way, and a host that runs
+ * briefly over the table keeps running with the flag set instead of stopping. */
 #include "sealsim_fmu.h"
 
 #define P(name) (c->r[VR_##name])
@@ -147,15 +154,15 @@ FmuStatus model_initialize(Instance *c) {
 
 FmuStatus model_outputs(Instance *c) {
     double speed = P(SPEED);
-    double omega = fabs(speed);
     double t_contact = contact_temperature(c);
     double t_table = fmu_clip(c, CLIP_CONTACT, "contact temperature", "K", t_contact,
                               TORQUE_TC_LO, TORQUE_TC_HI);
     double torque;
     MapPoint m = map_point(c);
-    /* above the table the speed is clipped (and reported) in map_point */
-    double u = speed_coordinate(omega < TORQUE_SPEED_MIN ? TORQUE_SPEED_MIN
-                                : (omega > STEADY_SPEED_HI ? STEADY_SPEED_HI : omega));
+    /* above the table the speed is clipped (and reported) in map_point: all outputs, the
+     * power too, are those of the top speed (see the head of this file) */
+    double omega = fmin(fabs(speed), STEADY_SPEED_HI);
+    double u = speed_coordinate(omega < TORQUE_SPEED_MIN ? TORQUE_SPEED_MIN : omega);
     hermite_evaluate(&TORQUE_MAP, u, t_table, &torque);
     if (omega < TORQUE_SPEED_MIN) torque *= omega / TORQUE_SPEED_MIN;
     P(T_CONTACT_STEADY) = P(T_SUMP) + steady_rise(c, &m);
