@@ -157,9 +157,22 @@ def plot_parity(points, title: str = "", quantity: str = "friction level", unit:
     ax.set_ylabel(f"predicted {quantity} [{unit}]")
     ax.grid(alpha=0.3)
     ax.legend(loc="best", fontsize=8)          # not over a point far off the 1:1 line
-    ax.set_title((f"{title}\n" if title else "") + f"R² = {r2:.3f}" if np.isfinite(r2)
+    ax.set_title((f"{title}\n" if title else "") + _r2_text(r2, points) if np.isfinite(r2)
                  else title)
     return fig
+
+
+def _r2_text(r2: float, points) -> str:
+    """R² with what it is taken over: a pooled R² of fitted and held-out points, or of two
+    points, read alone looks like a validation score it is not.
+
+    >>> _r2_text(0.98, [("a", "fit", 1, 1), ("b", "validate", 2, 2), ("c", "fit", 3, 3)])
+    'R² = 0.980 over all 3 points, fitted and not fitted'
+    """
+    roles = {p[1] for p in points}
+    which = {frozenset({"fit"}): "fitted", frozenset({"validate"}): "not fitted"}.get(
+        frozenset(roles), "fitted and not fitted")
+    return f"R² = {r2:.3f} over all {len(points)} points, {which}"
 
 
 def plot_signals(time, curves, title: str = ""):
