@@ -17,3 +17,19 @@ def test_parity_title_of_held_out_points_only():
     fig = plot_parity([("a", "validate", 1.0, 1.1), ("b", "validate", 2.0, 1.9),
                        ("c", "validate", 3.0, 3.2)])
     assert fig.axes[0].get_title().endswith("over all 3 points, not fitted")
+
+
+def test_parity_labels_do_not_print_over_each_other():
+    # tudelft_rings.toml: 'O-ring 25.7 5 bar, rerun 1' printed over 'X-ring 25.7 5 bar'
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    points = [("fit", "fit", 4.0, 3.9)] + [
+        (f"ring {k} at 5 bar, rerun {k}", "validate", 6.0 + 0.05 * k, 8.0 - 0.05 * k)
+        for k in range(8)]
+    fig = plot_parity(points)
+    FigureCanvasAgg(fig).draw()
+    renderer = fig.canvas.get_renderer()
+    boxes = [t.get_window_extent(renderer) for t in fig.axes[0].texts]
+    assert boxes                                 # the farthest point keeps its label
+    assert not [(i, j) for i in range(len(boxes)) for j in range(i)
+                if boxes[i].overlaps(boxes[j])]
