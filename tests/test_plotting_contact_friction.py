@@ -2,9 +2,9 @@
 
 from __future__ import annotations
 
-import numpy as np
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
+from plot_checks import covered_points
 
 from sealsim.pneumatic.contact_maps import AnalyticContactMap
 from sealsim.pneumatic.friction_tables import (
@@ -25,19 +25,6 @@ def figure():
                                   0.1, "rod")
     FigureCanvasAgg(fig).draw()
     return fig
-
-
-def covered_points(ax, renderer) -> int:
-    """How many drawn data points of the axes' lines lie under its legend."""
-    box = ax.get_legend().get_window_extent(renderer)
-    count = 0
-    for line in ax.get_lines():
-        xy = line.get_xydata()
-        xy = xy[np.all(np.isfinite(xy), axis=1)]
-        if len(xy):
-            x, y = ax.transData.transform(xy).T
-            count += int(np.sum((box.x0 <= x) & (x <= box.x1) & (box.y0 <= y) & (y <= box.y1)))
-    return count
 
 
 def test_title_gives_the_temperature_as_engineers_write_it(figure):
