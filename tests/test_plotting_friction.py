@@ -65,3 +65,50 @@ def test_steady_curve_is_not_joined_across_the_jump_at_zero(drawn):
     crosses = np.sign(v[:-1]) != np.sign(v[1:])
     assert not np.any(drawn_segment & crosses)
     assert not np.any(np.isfinite(force) & (v == 0.0))
+
+
+STICK_SLIP = """
+title = "LuGre stick-slip"
+[friction]
+law = "lugre"
+parameter_set = "canudas1995"
+[bench]
+mode = "mass"
+mass = "1 kg"
+stiffness = "2 N/m"
+duration = "25 s"
+time_step = "1 ms"
+drive_velocity = { kind = "constant", level = "0.1 m/s" }
+[variants.native]
+[variants.second]
+"""
+
+
+def test_timeseries_legends_cover_no_curve(tmp_path):
+    # lugre_stick_slip.toml, stick_slip_cosim.py: the force panel's legend ('NAME: friction',
+    # 'NAME: spring + applied' per run) hid the spring force's minima near 0.75 N
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from plot_checks import covered_points
+
+    from sealsim.plotting.friction import plot_timeseries
+
+    case = tmp_path / "stick_slip.toml"
+    case.write_text(STICK_SLIP)
+    figures = []
+
+    def catch(*args, **kwargs):
+        figures.append(plot_timeseries(*args, **kwargs))
+        return figures[-1]
+
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(runs_friction, "plot_timeseries", catch)
+        runs_friction.run_case_file(case, tmp_path / "out")
+    fig = figures[0]
+    FigureCanvasAgg(fig).draw()
+    renderer = fig.canvas.get_renderer()
+    with_legend = [ax for ax in fig.axes if ax.get_legend() is not None]
+    assert [ax.get_ylabel() for ax in with_legend] == ["v [mm/s]", "force [N]"]
+    assert [covered_points(ax, renderer) for ax in with_legend] == [0, 0]
+    assert [t.get_text() for t in with_legend[1].get_legend().get_texts()] == [
+        "friction", "spring + applied"]
+    assert fig.axes[-1].get_ylabel() == "bristles z [µm]"      # was 'z [µm]': of what?

@@ -8,6 +8,7 @@ use readable units (µm, mm/s) chosen from the data.
 from __future__ import annotations
 
 import numpy as np
+from matplotlib.lines import Line2D
 
 from sealsim.plotting import new_figure
 
@@ -204,10 +205,9 @@ def plot_timeseries(results, title: str | None = None):
     xf, xl = _scale([r.position for r in results.values()], "m")
     for name, r in results.items():
         line, = axes[0].plot(r.time, r.velocity * vf, lw=1.0, label=name)
-        axes[1].plot(r.time, r.force, lw=1.0, color=line.get_color(), label=f"{name}: friction")
+        axes[1].plot(r.time, r.force, lw=1.0, color=line.get_color())
         if r.applied_force is not None:
-            axes[1].plot(r.time, r.applied_force, lw=0.8, ls=":", color=line.get_color(),
-                         label=f"{name}: spring + applied")
+            axes[1].plot(r.time, r.applied_force, lw=0.8, ls=":", color=line.get_color())
         axes[2].plot(r.time, r.position * xf, lw=1.0, color=line.get_color())
         for k, state in enumerate(any_states):
             ax = axes[3 + k]
@@ -223,14 +223,22 @@ def plot_timeseries(results, title: str | None = None):
     axes[1].set_ylabel("force [N]")
     axes[2].set_ylabel(f"x [{xl}]")
     for k, state in enumerate(any_states):
-        label = {"theta": "Θ [-]", "z": "z [µm]", "z_i": "z_i [µm]"}.get(state, state)
+        label = {"theta": "film state Θ [-]", "z": "bristles z [µm]",
+                 "z_i": "bristles z_i [µm]"}.get(state, state)
         axes[3 + k].set_ylabel(label)
     axes[-1].set_xlabel("time t [s]")
     for ax in axes:
         ax.grid(True, alpha=0.3)
-    axes[0].legend(fontsize=7, loc="best")
+    # legends above the panels, where they cover no curve (inside, the force legend hid the
+    # spring force's minima); the colours name the runs, the line styles the forces
+    axes[0].legend(fontsize=7, loc="lower left", bbox_to_anchor=(0.0, 1.0), frameon=False,
+                   ncol=min(len(results), 5), borderaxespad=0.1)
     if any(r.applied_force is not None for r in results.values()):
-        axes[1].legend(fontsize=7, loc="best")
+        axes[1].legend(handles=[Line2D([], [], color="k", lw=1.0, label="friction"),
+                                Line2D([], [], color="k", lw=0.8, ls=":",
+                                       label="spring + applied")],
+                       fontsize=7, loc="lower right", bbox_to_anchor=(1.0, 1.0), ncol=2,
+                       frameon=False, borderaxespad=0.1)
     if title:
-        axes[0].set_title(title, fontsize=10)
+        fig.suptitle(title, fontsize=10)
     return fig
