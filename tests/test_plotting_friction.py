@@ -6,7 +6,6 @@ import numpy as np
 import pytest
 
 import sealsim.runs.friction as runs_friction
-from sealsim.plotting.friction import plot_force_velocity
 
 CASE = """
 title = "LuGre sweep"
@@ -26,17 +25,22 @@ velocity = { kind = "piecewise", times = ["0 s", "2 s"], values = ["-0.4 m/s", "
 def drawn(tmp_path_factory):
     """The force_velocity.png figure of a LuGre sweep through v = 0 (Stribeck velocity 1 mm/s,
     400 times below the top speed), caught on its way to the file."""
-    folder = tmp_path_factory.mktemp("lugre")
-    case = folder / "sweep.toml"
-    case.write_text(CASE)
+    return caught_figure(CASE, "plot_force_velocity", tmp_path_factory.mktemp("lugre"))
+
+
+def caught_figure(case_text: str, plot: str, folder):
+    """The figure that ``sealsim.runs.friction``'s ``plot`` draws for a friction case."""
+    case = folder / "case.toml"
+    case.write_text(case_text)
+    draw = getattr(runs_friction, plot)
     figures = []
 
     def catch(*args, **kwargs):
-        figures.append(plot_force_velocity(*args, **kwargs))
+        figures.append(draw(*args, **kwargs))
         return figures[-1]
 
     with pytest.MonkeyPatch.context() as mp:
-        mp.setattr(runs_friction, "plot_force_velocity", catch)
+        mp.setattr(runs_friction, plot, catch)
         runs_friction.run_case_file(case, folder / "out")
     return figures[0]
 
@@ -90,20 +94,7 @@ def test_timeseries_legends_cover_no_curve(tmp_path):
     from matplotlib.backends.backend_agg import FigureCanvasAgg
     from plot_checks import covered_points
 
-    from sealsim.plotting.friction import plot_timeseries
-
-    case = tmp_path / "stick_slip.toml"
-    case.write_text(STICK_SLIP)
-    figures = []
-
-    def catch(*args, **kwargs):
-        figures.append(plot_timeseries(*args, **kwargs))
-        return figures[-1]
-
-    with pytest.MonkeyPatch.context() as mp:
-        mp.setattr(runs_friction, "plot_timeseries", catch)
-        runs_friction.run_case_file(case, tmp_path / "out")
-    fig = figures[0]
+    fig = caught_figure(STICK_SLIP, "plot_timeseries", tmp_path)
     FigureCanvasAgg(fig).draw()
     renderer = fig.canvas.get_renderer()
     with_legend = [ax for ax in fig.axes if ax.get_legend() is not None]
