@@ -119,7 +119,8 @@ def _headroom(ax, legend) -> None:
     if not isinstance(fig.canvas, FigureCanvasAgg):
         FigureCanvasAgg(fig)
     peak = max((float(np.nanmax(line.get_ydata())) for line in ax.get_lines()
-                if np.size(line.get_ydata())), default=1.0)
+                if np.any(np.isfinite(line.get_ydata()))), default=0.0)
+    peak = peak if peak > 0.0 else 1.0         # no contact drawn: a 0 ... 1 MPa frame
     ax.set_ylim(0.0, 1.05 * peak)
     for _ in range(4):                     # the layout moves a little with the limits
         fig.draw_without_rendering()
