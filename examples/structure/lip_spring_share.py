@@ -141,6 +141,7 @@ def _sections(states):
         ax.set_xlabel("z [mm] (oil side left)")
         ax.set_title(f"× {scale:g}: F = {st.F_N:.1f} N\nb = {st.b * 1e3:.3f} mm, "
                      f"R = {seat[0] - edge[0]:.2f} mm", fontsize=9)
+    np.atleast_1d(axes)[0].set_ylabel("radius r [mm]")
     fig.colorbar(coll, ax=axes, shrink=0.8, label="von Mises stress [MPa]")
     fig.suptitle("installed lip (red: spring seat)")
     return fig

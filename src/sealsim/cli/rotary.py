@@ -41,7 +41,7 @@ def run(
         last = result.steps[-1]
         console.print(f"[bold]{name}[/]: end of cycle {last['speed_rpm']:.0f} rpm, torque "
                       f"{last['torque_Nm']:.3f} N m, groove {last['T_groove_C']:.1f} °C, contact "
-                      f"{last['T_contact_C']:.1f} °C; energy balance error "
+                      f"{last['T_contact_C']:.1f} °C; relative energy balance error "
                       f"{result.energy['rel_error']:.1e}")
         print_notes([n for n in result.notes if n not in shared])
     print_notes(shared, indent="", label="note (every variant)")

@@ -62,8 +62,10 @@ def run(
             f"{result.wall_time:.1f} s; final F_N = {last.F_N:.1f} N "
             f"({last.F_N_per_length / 1e3:.3f} N/mm), b = {last.b * 1e3:.3f} mm, "
             f"p_max = {last.p_max / 1e6:.2f} MPa")
-    console.print(f"results written to {out}/ (result.csv, profiles.csv, increments.csv, "
-                  "summary.json, section_*.png, states.png, case_resolved.toml)")
+    where = f"{out}/" if len(runs) == 1 else f"{out}/VARIANT/ for {', '.join(runs)}"
+    console.print(f"results written to {where} (result.csv, profiles.csv, increments.csv, "
+                  "summary.json, section_*.png, states.png; case_resolved.toml in "
+                  f"{out}/)")
 
 
 @structure_app.command("map")

@@ -90,6 +90,8 @@ def run(
             err_console.print(Text("finished runs are kept; continue with the same command "
                                    "and --resume", style="yellow"))
             raise
+    from sealsim.plotting import unit_text
+
     s = result.summary
     runs = s["runs"]
     console.print(f"{runs['finished']} of {runs['total']} runs finished, {runs['failed']} "
@@ -98,7 +100,7 @@ def run(
                   f"{s['wall_time_s']:.1f} s")
     for name, o in s["outputs"].items():
         if o["n"]:
-            unit = f" {o['unit']}" if o["unit"] not in ("", "1") else ""
+            unit = f" {unit_text(o['unit'])}".rstrip()
             console.print(f"  {name}: {o['min']:.4g} ... {o['max']:.4g}{unit} (median "
                           f"{o['P50']:.4g}, P5 {o['P5']:.4g}, P95 {o['P95']:.4g})")
     for failure in s["failures"][:3]:

@@ -6,6 +6,7 @@ of repeated tests against the model."""
 from __future__ import annotations
 
 import numpy as np
+from matplotlib.backends.backend_agg import FigureCanvasAgg
 
 from sealsim.calibration.statistics import compare_signals
 from sealsim.plotting import new_figure
@@ -81,7 +82,8 @@ def plot_repeats(conditions: dict, measurements: dict, title: str = ""):
 
 def _labelled(points, band: float, absolute_band: float | None, most: int = 6) -> list:
     """The points of a parity plot worth a label: all of up to ``most``; beyond that those
-    outside the band, the ``most`` farthest from it (more labels would cover each other)."""
+    outside the band, the ``most`` farthest from it first (more labels would cover each other;
+    :func:`plot_parity` drops a label that still covers one before it)."""
     if len(points) <= most:
         return list(points)
 
@@ -145,9 +147,9 @@ def plot_parity(points, title: str = "", quantity: str = "friction level", unit:
     if ref.size:
         ax.scatter(ref[:, 0], ref[:, 1], marker="D", facecolors="none", edgecolors="0.35",
                    zorder=2, label=reference_label)
-    for label, _, m, p in _labelled(points, band, absolute_band) if annotate else ():
-        ax.annotate(str(label), (m, p), textcoords="offset points", xytext=(5, -10),
-                    fontsize=8)
+    notes = [ax.annotate(str(label), (m, p), textcoords="offset points", xytext=(5, -10),
+                         fontsize=8)
+             for label, _, m, p in (_labelled(points, band, absolute_band) if annotate else ())]
     r2 = compare_signals(meas, pred)["r2"]
     r2 = float("nan") if r2 is None else r2
     ax.set_xlim(bottom, top)
@@ -157,9 +159,38 @@ def plot_parity(points, title: str = "", quantity: str = "friction level", unit:
     ax.set_ylabel(f"predicted {quantity} [{unit}]")
     ax.grid(alpha=0.3)
     ax.legend(loc="best", fontsize=8)          # not over a point far off the 1:1 line
-    ax.set_title((f"{title}\n" if title else "") + f"R² = {r2:.3f}" if np.isfinite(r2)
+    ax.set_title((f"{title}\n" if title else "") + _r2_text(r2, points) if np.isfinite(r2)
                  else title)
+    _drop_covered(fig, notes)
     return fig
+
+
+def _drop_covered(fig, notes) -> None:
+    """Remove each label that would print over one kept before it (the labels come farthest
+    outside the band first): close points' labels overlapped into an unreadable smear."""
+    FigureCanvasAgg(fig)                     # a renderer to measure the texts with
+    fig.draw_without_rendering()            # the final (constrained) layout
+    renderer = fig.canvas.get_renderer()
+    kept = []
+    for note in notes:
+        box = note.get_window_extent(renderer)
+        if any(box.overlaps(other) for other in kept):
+            note.remove()
+        else:
+            kept.append(box)
+
+
+def _r2_text(r2: float, points) -> str:
+    """R² with what it is taken over: a pooled R² of fitted and held-out points, or of two
+    points, read alone looks like a validation score it is not.
+
+    >>> _r2_text(0.98, [("a", "fit", 1, 1), ("b", "validate", 2, 2), ("c", "fit", 3, 3)])
+    'R² = 0.980 over all 3 points, fitted and not fitted'
+    """
+    roles = {p[1] for p in points}
+    which = {frozenset({"fit"}): "fitted", frozenset({"validate"}): "not fitted"}.get(
+        frozenset(roles), "fitted and not fitted")
+    return f"R² = {r2:.3f} over all {len(points)} points, {which}"
 
 
 def plot_signals(time, curves, title: str = ""):

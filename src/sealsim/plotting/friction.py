@@ -8,10 +8,12 @@ use readable units (µm, mm/s) chosen from the data.
 from __future__ import annotations
 
 import numpy as np
+from matplotlib.lines import Line2D
 
 from sealsim.plotting import new_figure
 
 __all__ = [
+    "steady_velocity_grid",
     "plot_force_displacement",
     "plot_force_velocity",
     "plot_theta_velocity",
@@ -60,6 +62,38 @@ def _select(r, sel):
                    stored_energy=pick(r.stored_energy))
 
 
+def steady_velocity_grid(v_min: float, v_max: float, n: int = 200):
+    """Velocities [m/s] at which to draw a steady friction curve over the range a run visited.
+
+    Each direction's branch is sampled linearly and geometrically down to 1e-5 of its extent,
+    so the steep low-speed part of a Stribeck curve (its break-away peak, at a Stribeck
+    velocity often 1000 times below the top speed) is drawn; v = 0, where the curve jumps
+    from -F to +F, is left out (:func:`plot_force_velocity` breaks the line there), and so is
+    a direction the run went less than 1 % as far as the other.
+
+    >>> v = steady_velocity_grid(-0.1, 0.2)
+    >>> float(v.min()), float(v.max()), bool((v == 0).any()), float(abs(v[v > 0]).min())
+    (-0.1, 0.2, False, 2e-06)
+    """
+    branches = []
+    extents = (-min(v_min, 0.0), max(v_max, 0.0))
+    for sign, extent in zip((-1.0, 1.0), extents):
+        if extent > 0.01 * max(extents):     # not the creep of a sticking body backwards
+            speeds = np.union1d(np.geomspace(1e-5 * extent, extent, n),
+                                np.linspace(extent / n, extent, n))
+            branches.append(sign * speeds)
+    return np.sort(np.concatenate(branches)) if branches else np.zeros(0)
+
+
+def _broken_at_zero(v, y):
+    """(v, y) with NaN between samples of opposite sign and at v = 0: a steady friction curve
+    jumps there (sgn v), a line must not join its two branches."""
+    v, y = np.asarray(v, dtype=float), np.asarray(y, dtype=float)
+    y = np.where(v == 0.0, np.nan, y)
+    cross = np.flatnonzero(np.sign(v[:-1]) * np.sign(v[1:]) < 0) + 1
+    return np.insert(v, cross, np.nan), np.insert(y, cross, np.nan)
+
+
 def _same_curves(curves) -> bool:
     items = list(curves.values())
     return len(items) > 1 and all(
@@ -67,17 +101,24 @@ def _same_curves(curves) -> bool:
         and np.allclose(a[1], items[0][1]) for a in items[1:])
 
 
-def _draw_steady(ax, results, steady, factor, what):
-    """Dashed analytic curves: one black curve if all variants share it, else one per run."""
+def _draw_steady(ax, results, steady, factor, what, jumps=True):
+    """Dashed analytic curves: one black curve if all variants share it, else one per run;
+    ``jumps``: the curve jumps at v = 0 (a force), the line is broken there."""
     if not steady:
         return
+
+    def xy(v, y):
+        v, y = _broken_at_zero(v, y) if jumps else (np.asarray(v, dtype=float), y)
+        return v * factor, y
+
     if _same_curves(steady):
         v, y = next(iter(steady.values()))
-        ax.plot(np.asarray(v) * factor, y, ls="--", lw=0.9, color="k", label=what)
+        ax.plot(*xy(v, y), ls="--", lw=0.9, color="k", label=what)
         return
     colors = {line.get_label(): line.get_color() for line in ax.get_lines()}
     for name, (v, y) in steady.items():
-        ax.plot(np.asarray(v) * factor, y, ls="--", lw=0.9, label=f"{name}: {what}",
+        ax.plot(*xy(v, y), ls="--", lw=0.9,
+                label=f"{name.removesuffix(' (last cycle)')}: {what}",
                 color=next((c for k, c in colors.items() if k.startswith(name)), None))
 
 
@@ -125,7 +166,7 @@ def plot_theta_velocity(results, steady=None, title: str | None = None):
     for name, r in with_theta.items():
         i = r.state_names.index("theta")
         ax.plot(r.velocity * vf, r.states[:, i], lw=1.2, label=name)
-    _draw_steady(ax, with_theta, steady, vf, "steady Θ")
+    _draw_steady(ax, with_theta, steady, vf, "steady Θ", jumps=False)
     ax.set_ylim(-0.02, 1.02)
     ax.set_xlabel(f"sliding velocity v [{vl}]")
     ax.set_ylabel("lubrication state Θ [-]  (0 dry, 1 hydrodynamic)")
@@ -164,10 +205,9 @@ def plot_timeseries(results, title: str | None = None):
     xf, xl = _scale([r.position for r in results.values()], "m")
     for name, r in results.items():
         line, = axes[0].plot(r.time, r.velocity * vf, lw=1.0, label=name)
-        axes[1].plot(r.time, r.force, lw=1.0, color=line.get_color(), label=f"{name}: friction")
+        axes[1].plot(r.time, r.force, lw=1.0, color=line.get_color())
         if r.applied_force is not None:
-            axes[1].plot(r.time, r.applied_force, lw=0.8, ls=":", color=line.get_color(),
-                         label=f"{name}: spring + applied")
+            axes[1].plot(r.time, r.applied_force, lw=0.8, ls=":", color=line.get_color())
         axes[2].plot(r.time, r.position * xf, lw=1.0, color=line.get_color())
         for k, state in enumerate(any_states):
             ax = axes[3 + k]
@@ -183,14 +223,22 @@ def plot_timeseries(results, title: str | None = None):
     axes[1].set_ylabel("force [N]")
     axes[2].set_ylabel(f"x [{xl}]")
     for k, state in enumerate(any_states):
-        label = {"theta": "Θ [-]", "z": "z [µm]", "z_i": "z_i [µm]"}.get(state, state)
+        label = {"theta": "film state Θ [-]", "z": "bristles z [µm]",
+                 "z_i": "bristles z_i [µm]"}.get(state, state)
         axes[3 + k].set_ylabel(label)
     axes[-1].set_xlabel("time t [s]")
     for ax in axes:
         ax.grid(True, alpha=0.3)
-    axes[0].legend(fontsize=7, loc="best")
+    # legends above the panels, where they cover no curve (inside, the force legend hid the
+    # spring force's minima); the colours name the runs, the line styles the forces
+    axes[0].legend(fontsize=7, loc="lower left", bbox_to_anchor=(0.0, 1.0), frameon=False,
+                   ncol=min(len(results), 5), borderaxespad=0.1)
     if any(r.applied_force is not None for r in results.values()):
-        axes[1].legend(fontsize=7, loc="best")
+        axes[1].legend(handles=[Line2D([], [], color="k", lw=1.0, label="friction"),
+                                Line2D([], [], color="k", lw=0.8, ls=":",
+                                       label="spring + applied")],
+                       fontsize=7, loc="lower right", bbox_to_anchor=(1.0, 1.0), ncol=2,
+                       frameon=False, borderaxespad=0.1)
     if title:
-        axes[0].set_title(title, fontsize=10)
+        fig.suptitle(title, fontsize=10)
     return fig

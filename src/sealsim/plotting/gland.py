@@ -4,13 +4,39 @@ extremes.  Pyplot-free; plotting never changes results."""
 from __future__ import annotations
 
 import numpy as np
-from matplotlib.patches import Circle, Rectangle
+from matplotlib.patches import Circle, Polygon, Rectangle
 
 from sealsim.plotting import new_figure
 
-__all__ = ["plot_gland_section"]
+__all__ = ["check_label", "check_unit", "plot_gland_section"]
 
 _METAL = {"facecolor": "#c8ccd2", "edgecolor": "#4a4f57", "linewidth": 1.0}
+
+#: where a check is taken when it is not the worst case over all service temperatures
+_CHECKED_AT = {"stretch_min": "at assembly"}
+
+
+def check_label(check: dict) -> str:
+    """The name of a check as printed, with where it is taken if that is not the worst case
+    of the stack above it (the piston ring's stretch_min: at the assembly temperature,
+    unswollen, while the stack's stretch minimum may be that of a warm, loosened ring).
+
+    >>> check_label({"name": "stretch_min"}), check_label({"name": "squeeze_min"})
+    ('stretch_min (at assembly)', 'squeeze_min')
+    """
+    at = _CHECKED_AT.get(check["name"])
+    return f"{check['name']} ({at})" if at else check["name"]
+
+
+def check_unit(check: dict) -> str:
+    """The unit of a check's value and limit in ``report.json``: mm for the extrusion gap,
+    percent for squeeze, stretch and gland fill."""
+    return "mm" if check["name"] == "extrusion_gap" else "%"
+
+
+def _grooved(ax, corners, label):
+    """The grooved metal part as one outline (no edges inside the steel)."""
+    ax.add_patch(Polygon(corners, closed=True, label=label, **_METAL))
 
 
 def plot_gland_section(case, report: dict, title: str = ""):
@@ -45,7 +71,7 @@ def plot_gland_section(case, report: dict, title: str = ""):
     else:
         gap_at = _radial(ax, kind, dims, cords)
     failed = "extrusion_gap" in report["failed"]
-    ax.annotate(f"extrusion gap up to {report['extrusion_gap_mm']['max']:.3f} mm "
+    ax.annotate(f"extrusion gap up to {report['extrusion_gap_mm']['max']:.3f} mm\n"
                 f"(diametral; limit {report['extrusion']['gap_limit_mm']:.3f} mm)",
                 xy=gap_at, xytext=(0.02, 0.03), textcoords="axes fraction", fontsize=8,
                 color="#c53030" if failed else "#2d3748",
@@ -76,10 +102,10 @@ def _band(ax, horizontal, lo, hi, span, name):
     for value, style, word in ((lo, "--", "smallest"), (hi, ":", "largest")):
         if horizontal:
             ax.plot(span, [value, value], color="#2d3748", ls=style, lw=1.0,
-                    label=f"{name}, {word} ({value:.3f})")
+                    label=f"{name}, {word} ({value:.3f} mm)")
         else:
             ax.plot([value, value], span, color="#2d3748", ls=style, lw=1.0,
-                    label=f"{name}, {word} ({value:.3f})")
+                    label=f"{name}, {word} ({value:.3f} mm)")
 
 
 def _radial(ax, kind, dims, cords):
@@ -89,9 +115,9 @@ def _radial(ax, kind, dims, cords):
         r_groove, r_seal = dims["groove_diameter"] / 2, dims["bore"] / 2
         r_land = dims["piston_diameter"][1] / 2
         base = r_groove[1] - 1.2 * cords["nominal"]
-        ax.add_patch(Rectangle((z0, base), -z0 - b / 2, r_land - base, label="piston", **_METAL))
-        ax.add_patch(Rectangle((b / 2, base), z1 - b / 2, r_land - base, **_METAL))
-        ax.add_patch(Rectangle((-b / 2, base), b, r_groove[1] - base, **_METAL))
+        _grooved(ax, [(z0, base), (z1, base), (z1, r_land), (b / 2, r_land),
+                      (b / 2, r_groove[1]), (-b / 2, r_groove[1]), (-b / 2, r_land),
+                      (z0, r_land)], "piston")
         top = r_seal[1] + 1.0 * cords["nominal"]
         ax.add_patch(Rectangle((z0, r_seal[1]), z1 - z0, top - r_seal[1], label="cylinder",
                                **{**_METAL, "facecolor": "#e2e8f0"}))
@@ -102,10 +128,9 @@ def _radial(ax, kind, dims, cords):
         r_groove, r_seal = dims["groove_diameter"] / 2, dims["rod"] / 2
         r_land = dims["bore"][1] / 2
         top = r_groove[1] + 1.2 * cords["nominal"]
-        ax.add_patch(Rectangle((z0, r_land), -z0 - b / 2, top - r_land, label="housing",
-                               **_METAL))
-        ax.add_patch(Rectangle((b / 2, r_land), z1 - b / 2, top - r_land, **_METAL))
-        ax.add_patch(Rectangle((-b / 2, r_groove[1]), b, top - r_groove[1], **_METAL))
+        _grooved(ax, [(z0, top), (z1, top), (z1, r_land), (b / 2, r_land),
+                      (b / 2, r_groove[1]), (-b / 2, r_groove[1]), (-b / 2, r_land),
+                      (z0, r_land)], "housing")
         base = r_seal[1] - 1.0 * cords["nominal"]
         ax.add_patch(Rectangle((z0, base), z1 - z0, r_seal[1] - base, label="rod",
                                **{**_METAL, "facecolor": "#e2e8f0"}))
@@ -133,10 +158,9 @@ def _face(ax, dims, cords):
     r0, r1 = r_in[1] - 0.8 * b, r_in[1] + 1.8 * b
     bottom = -1.0 * cords["nominal"]
     # the flange with the groove (below), the cover flange (above, at the groove depth + gap)
-    ax.add_patch(Rectangle((r0, bottom), r_in[1] - r0, h[1] - bottom, label="flange with groove",
-                           **_METAL))
-    ax.add_patch(Rectangle((r_in[1] + b, bottom), r1 - r_in[1] - b, h[1] - bottom, **_METAL))
-    ax.add_patch(Rectangle((r_in[1], bottom), b, -bottom, **_METAL))
+    _grooved(ax, [(r0, bottom), (r1, bottom), (r1, h[1]), (r_in[1] + b, h[1]),
+                  (r_in[1] + b, 0.0), (r_in[1], 0.0), (r_in[1], h[1]), (r0, h[1])],
+             "flange with groove")
     top = h[1] + gap + 1.0 * cords["nominal"]
     ax.add_patch(Rectangle((r0, h[1] + gap), r1 - r0, top - h[1] - gap, label="cover flange",
                            **{**_METAL, "facecolor": "#e2e8f0"}))
@@ -163,11 +187,13 @@ def _summary(ax, report: dict) -> None:
         lines.append(f"{label:<20}" + "".join(fmt.format(s[k]) for k in ("min", "nominal",
                                                                           "max")))
     lines.append("")
-    lines.append("check               value     limit")
+    lines.append("check                           value         limit")
     for c in report["checks"]:
         sign = ">=" if c["bound"] == "min" else "<="
         mark = "ok  " if c["ok"] else "FAIL"
-        lines.append(f"{mark} {c['name']:<15}{c['value']:8.3g} {sign}{c['limit']:7.3g}")
+        unit = check_unit(c)
+        lines.append(f"{mark} {check_label(c):<26}{c['value']:7.3g} {unit:<2} {sign}"
+                     f"{c['limit']:6.3g} {unit}")
     ax.text(0.0, 1.0, "\n".join(lines), va="top", ha="left", family="monospace", fontsize=9,
             transform=ax.transAxes)
     verdict = "all checks pass" if report["ok"] else "FAILS: " + ", ".join(report["failed"])

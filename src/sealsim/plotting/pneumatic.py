@@ -51,10 +51,23 @@ def pressure_stroke_figure(frames: dict[str, pd.DataFrame], title: str = ""):
     ax_x.set_xlabel("Time [s]")
     for ax in axes:
         ax.grid(True, alpha=0.3)
-        ax.legend(loc="best", fontsize=7, ncol=2)
+        _legend_outside(ax, ncol=1)
     if title:
         fig.suptitle(title)
     return fig
+
+
+def _legend_outside(ax, **kwargs) -> None:
+    """The legend right of the panel, where it covers no curve (inside, over the pressure
+    plateaus and end positions, it did)."""
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), borderaxespad=0.0, fontsize=7,
+              **kwargs)
+
+
+def _legend_above(ax) -> None:
+    """The legend in one row on top of the panel (right of it stands the velocity axis)."""
+    ax.legend(loc="lower right", bbox_to_anchor=(1.0, 1.0), borderaxespad=0.1, fontsize=7,
+              ncol=len(ax.get_legend_handles_labels()[0]), frameon=False)
 
 
 def _start_up(f: pd.DataFrame, period: float | None):
@@ -177,8 +190,8 @@ def timeseries_figure(frame: pd.DataFrame, seal_names: list[str], title: str = "
     axes[1].plot(t, frame["p1_bar_abs"], color="tab:blue", lw=1.3, label="p1 (cap side)")
     axes[1].plot(t, frame["p2_bar_abs"], color="tab:red", lw=1.3, label="p2 (rod side)")
     axes[1].set_ylabel("Pressure [bar abs]")
-    axes[2].plot(t, frame["T1_C"], color="tab:blue", lw=1.2, label="T1")
-    axes[2].plot(t, frame["T2_C"], color="tab:red", lw=1.2, label="T2")
+    axes[2].plot(t, frame["T1_C"], color="tab:blue", lw=1.2, label="T1 (cap side)")
+    axes[2].plot(t, frame["T2_C"], color="tab:red", lw=1.2, label="T2 (rod side)")
     axes[2].set_ylabel("Air temp. [°C]")
     axes[3].plot(t, frame["F_friction_N"], color="k", lw=1.3, label="total")
     for k, n in enumerate(seal_names):
@@ -208,7 +221,7 @@ def timeseries_figure(frame: pd.DataFrame, seal_names: list[str], title: str = "
     axes[-1].set_xlabel("Time [s]")
     for a in axes:
         a.grid(True, alpha=0.3)
-        a.legend(loc="upper right", fontsize=7, ncol=3)
+        _legend_above(a)
     if title:
         fig.suptitle(title)
     return fig

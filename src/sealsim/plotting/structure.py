@@ -95,18 +95,55 @@ def plot_section(state, title: str = ""):
         label = (f"{_LABELS[name]}: F = {s.force:.1f} N, b = {s.width * 1e3:.3f} mm{zones}, "
                  f"p_max = {s.p_max / 1e6:.2f} MPa")
         line, = axp.plot(z * 1e3, p / 1e6, style, lw=1.2, label=label)
-        axp.plot(s.position * 1e3, s.pressure / 1e6, "o", ms=2.0, color=line.get_color())
+        _contact_nodes(axp, s, line.get_color())
     if state.pressure > 0:
         axp.axhline(state.pressure / 1e6, color="0.5", lw=0.8, ls=":",
                     label=f"fluid pressure {state.pressure / 1e5:.3g} bar")
     axp.set_xlabel("axial position z [mm]")
     axp.set_ylabel("contact pressure [MPa]")
-    axp.set_ylim(bottom=0.0)
     axp.grid(alpha=0.3)
-    axp.legend(fontsize=8, loc="upper left")
+    legend = axp.legend(fontsize=8, loc="upper left")
+    _headroom(axp, legend)
     if title:
         fig.suptitle(title)
     return fig
+
+
+def _headroom(ax, legend) -> None:
+    """Raise the top of the axes until the legend's lower edge clears the highest point drawn
+    (the legend in the upper left covered the peak of a profile): measured on a drawn figure,
+    for the final layout."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    fig = ax.get_figure()
+    if not isinstance(fig.canvas, FigureCanvasAgg):
+        FigureCanvasAgg(fig)
+    peak = max((float(np.nanmax(line.get_ydata())) for line in ax.get_lines()
+                if np.any(np.isfinite(line.get_ydata()))), default=0.0)
+    peak = peak if peak > 0.0 else 1.0         # no contact drawn: a 0 ... 1 MPa frame
+    ax.set_ylim(0.0, 1.05 * peak)
+    for _ in range(4):                     # the layout moves a little with the limits
+        fig.draw_without_rendering()
+        box = legend.get_window_extent(fig.canvas.get_renderer())
+        clear = ax.transData.inverted().transform((box.x0, box.y0))[1]   # legend's bottom
+        if clear >= 1.02 * peak:
+            return
+        top = ax.get_ylim()[1]
+        ax.set_ylim(0.0, top + (1.04 * peak - clear))
+
+
+def _contact_nodes(ax, surface, color) -> None:
+    """The contact nodes of a surface as dots; hollow those outside its contact zones (a
+    grazing edge node, whose nodal force stands for no contact length: the width b and the
+    line end inside it, :func:`sealsim.structure.results.contact_width`)."""
+    z = surface.position
+    inside = np.zeros(z.shape, dtype=bool)
+    for lo, hi in surface.zone_edges:
+        inside |= (z >= lo) & (z <= hi)
+    ax.plot(z[inside] * 1e3, surface.pressure[inside] / 1e6, "o", ms=2.0, color=color)
+    if not inside.all():
+        ax.plot(z[~inside] * 1e3, surface.pressure[~inside] / 1e6, "o", ms=4.0, mfc="none",
+                color=color, label="grazing node, outside b")
 
 
 def plot_states(frame, x: str | None = None, title: str = "", groove_bottom: bool = True):

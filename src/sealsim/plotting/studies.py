@@ -15,7 +15,7 @@ import math
 
 import numpy as np
 
-from sealsim.plotting import new_figure
+from sealsim.plotting import new_figure, unit_text
 
 __all__ = ["heatmap_figure", "histogram_figure", "response_figure", "scatter_figure",
            "sensitivity_figure"]
@@ -27,8 +27,8 @@ MAX_LINES = 10
 
 
 def _label(dataset, name: str) -> str:
-    units = dataset[name].attrs.get("units", "")
-    return f"{name} [{units}]" if units and units != "1" else name
+    units = unit_text(dataset[name].attrs.get("units", ""))
+    return f"{name} [{units}]" if units else name
 
 
 def _value_text(value, dataset=None, name: str = "") -> str:
@@ -37,8 +37,8 @@ def _value_text(value, dataset=None, name: str = "") -> str:
     else:
         text = str(value)
     if dataset is not None and name:
-        units = dataset[name].attrs.get("units", "")
-        if units and units != "1":
+        units = unit_text(dataset[name].attrs.get("units", ""))
+        if units:
             text += f" {units}"
     return text
 

@@ -38,6 +38,7 @@ from sealsim.plotting.friction import (
     plot_force_velocity,
     plot_theta_velocity,
     plot_timeseries,
+    steady_velocity_grid,
 )
 
 __all__ = ["run_case_file"]
@@ -135,9 +136,9 @@ def _write_results(folder: ResultFolder, cases: dict, laws: dict, inputs: dict,
         if not c.output.steady_curve:
             continue
         law, res = laws[name], results[name]
-        vmax = float(np.max(np.abs(res.velocity))) or 1e-3
-        v = np.linspace(-vmax, vmax, 801) if np.min(res.velocity) < 0 else np.linspace(
-            0, vmax, 401)[1:]
+        v = steady_velocity_grid(float(np.min(res.velocity)), float(np.max(res.velocity)))
+        if v.size == 0:                      # the body never moved
+            v = np.linspace(1e-5, 1e-3, 200)
         steady_f[name] = (v, law.steady_force(v, inputs[name]))
         if "theta" in law.state_names:
             steady_theta[name] = (v, law.steady_state(v, inputs[name])[0])

@@ -114,6 +114,4 @@ def _contact_friction_figures(folder: ResultFolder, case, base_dir: Path) -> Non
         profiles = film_profiles(seal.contact_map, tribology, seal.temperature, 0.1)
         folder.savefig(f"contact_friction_{seal.name}.png", contact_friction_figure(
             profiles, seal.friction_table, diameter, seal.temperature,
-            seal.law.params.boundary_friction, 0.1,
-            f"seal {seal.name!r}: friction from its contact at "
-            f"{seal.temperature - 273.15:.0f} degC"))
+            seal.law.params.boundary_friction, 0.1, seal.name))
