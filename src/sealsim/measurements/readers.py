@@ -198,9 +198,53 @@ def _delimiter_hint(line: str, delimiter: str | None, cell: str = "", decimal: s
     if delimiter != ";" and ";" in line:
         return ("; the line contains ';': set delimiter = ';' (and decimal = ',' if the numbers "
                 "have decimal commas)")
+    if delimiter not in ("\t", None) and "\t" in line:
+        return "; the line contains tabs: set delimiter = '\\t'"
     if decimal == "." and re.fullmatch(r"[-+]?\d+,\d+", cell):
         return "; for decimal commas set decimal = ',' (with another delimiter, e.g. ';')"
     return ""
+
+
+#: a unit at the end of a header name: "Zeit [s]", "F (N)", "Kraft in N", "t / ms"
+_HEADER_UNIT = re.compile(r".*?(?:\[\s*(?P<b>[^\[\]]+?)\s*\]|\(\s*(?P<p>[^()]+?)\s*\)"
+                          r"|\s+in\s+(?P<i>\S+)|\S\s*/\s*(?P<s>[^/\s]+(?:/[^/\s]+)?))\s*")
+
+
+def header_unit(name: str) -> str | None:
+    """The unit a header name states at its end, if it states one.
+
+    Examples
+    --------
+    >>> [header_unit(n) for n in ("Zeit [ms]", "F (N)", "Kraft in kN", "t / s", "speed_rpm")]
+    ['ms', 'N', 'kN', 's', None]
+    """
+    match = _HEADER_UNIT.fullmatch(name)
+    if match is None:
+        return None
+    return next(u for u in match.group("b", "p", "i", "s") if u is not None)
+
+
+def _check_header_unit(name: str, spec: ColumnSpec, convert, where: str) -> None:
+    """Refuse a column whose header states a unit that reads its numbers differently from the
+    mapping's unit (a ``[ms]`` column mapped with ``unit = "s"``): a wrong number that looks
+    right.  A header unit that is no unit of the quantity (a raw ``[V]`` channel, a word in
+    brackets) is not checked."""
+    unit = header_unit(name)
+    if unit is None:
+        return
+    try:
+        stated = _si_factor(unit, spec.quantity, where)
+    except InputError:
+        return
+    probe = np.array([1.0, 10.0])
+    if not np.allclose(stated(probe), convert(probe), rtol=1e-9, atol=0.0):
+        si = QUANTITIES[spec.quantity]
+        raise InputError(f"{where}: the header names the column {name!r}, in {unit!r}, but the "
+                         f"column mapping says unit = {spec.unit!r} (a value 1 would be read as "
+                         f"{convert(probe)[0]:.6g} {si}, not {stated(probe)[0]:.6g} {si}); set "
+                         f"unit = {unit!r} if the header is right, or read the file without "
+                         "its header (header = false, skip_rows = 1, column indices) if it is "
+                         "not")
 
 
 def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | None = None,
@@ -273,10 +317,18 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
         if not lines:
             raise InputError(f"{label}: no header line found")
         names = _split(lines[0][1], delimiter)
-        header_line = lines[0][1]
+        header_row, header_line = lines[0]
         lines = lines[1:]
     if len(lines) < 3:
         raise InputError(f"{label}: only {len(lines)} data rows; a measurement needs at least 3")
+    if header and delimiter is None and len(names) != len(_split(lines[0][1], None)):
+        # split at blanks, "Zeit [s]" is two names: every name after it points one column off
+        if any(isinstance(spec.column, str) for spec in columns):
+            raise InputError(f"{label}, row {header_row}: the header line {header_line!r} has "
+                             f"{len(names)} names split at blanks, the rows have "
+                             f"{len(_split(lines[0][1], None))} columns; header names with "
+                             "spaces need the file's delimiter, e.g. delimiter = '\\t' or ';'")
+        names = []  # not aligned with the columns: no unit checks against it
     indices = []
     for spec in columns:
         where = f"{label}, column {spec.column!r} ({spec.quantity})"
@@ -302,10 +354,13 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
             try:
                 value = _number(cells[idx], decimal)
             except ValueError:
+                again = (names and cells[:len(names)] == names) and (
+                    "; the row repeats the header line (a logger restarted?): remove it, or "
+                    "split the file there")
                 raise InputError(f"{label}, row {lineno}, column {idx + 1} ({spec.quantity}): "
                                  f"{cells[idx]!r} is not a number"
-                                 + _delimiter_hint(line, delimiter, cells[idx], decimal)) \
-                    from None
+                                 + (again or _delimiter_hint(line, delimiter, cells[idx],
+                                                             decimal))) from None
             if not math.isfinite(value):
                 raise InputError(f"{label}, row {lineno}, column {idx + 1} ({spec.quantity}): "
                                  f"{cells[idx]!r} is not a finite number")
@@ -313,6 +368,9 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
     data = {}
     for c, spec in enumerate(columns):
         convert = _si_factor(spec.unit, spec.quantity, f"{label}, column {spec.column!r}")
+        if indices[c] < len(names):
+            _check_header_unit(names[indices[c]], spec, convert,
+                               f"{label}, column {indices[c] + 1} ({spec.quantity})")
         data[spec.quantity] = convert(values[:, c] * spec.scale)
         if QUANTITIES[spec.quantity] == "K":  # an absolute temperature
             cold = np.flatnonzero(~(data[spec.quantity] > 0))
