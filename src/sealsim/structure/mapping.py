@@ -21,6 +21,9 @@ from __future__ import annotations
 import concurrent.futures as cf
 import copy
 import json
+import os
+import threading
+import time
 import warnings
 from collections.abc import Callable
 
@@ -122,6 +125,18 @@ def _map_task(case_data: dict, squeeze: float | None, temperature: float,
     }
 
 
+def _end_with_parent(parent: int) -> None:
+    """Pool-worker initializer: the worker ends itself once the process that started it is
+    gone.  A parent killed by SIGKILL (no clean-up runs) left its workers to finish their FE
+    path and then wait for work forever; a parent's Ctrl-C is handled by the pool itself."""
+    def watch() -> None:
+        while os.getppid() == parent:
+            time.sleep(0.5)
+        os._exit(1)
+
+    threading.Thread(target=watch, name="end-with-parent", daemon=True).start()
+
+
 def compute_map(case: StructureCase, *, workers: int | None = None,
                 progress: Callable[[int, int], None] | None = None,
                 case_text: str = "") -> xr.Dataset:
@@ -183,7 +198,8 @@ def compute_map(case: StructureCase, *, workers: int | None = None,
             if progress:
                 progress(done, len(tasks))
     else:
-        with cf.ProcessPoolExecutor(max_workers=n_workers) as pool:
+        with cf.ProcessPoolExecutor(max_workers=n_workers, initializer=_end_with_parent,
+                                    initargs=(os.getpid(),)) as pool:
             futures = {pool.submit(_map_task, data, *key, positions): key for key in tasks}
             try:
                 for fut in cf.as_completed(futures):
