@@ -199,3 +199,48 @@ def test_map_workers_end_when_the_map_build_is_killed(tmp_path):
     for pid in alive:             # do not leave them behind on failure either
         os.kill(pid, signal.SIGKILL)
     assert alive == []
+
+
+def test_an_interrupted_map_build_computes_only_the_missing_paths(dataset, tmp_path,
+                                                                  monkeypatch):
+    # Ctrl-C (or SIGKILL) of `sealsim structure map` lost every finished FE load path: the
+    # next run computed the whole map again
+    import tomli_w
+
+    import sealsim.structure.mapping as mapping
+    from sealsim.runs.structure import map_case_file
+
+    path = tmp_path / "map.toml"
+    out, kept = tmp_path / "out", tmp_path / ".out.map"
+    computed = []
+    real = mapping._map_task
+    monkeypatch.setattr(mapping, "_map_task",
+                        lambda data, squeeze, temperature, *args: computed.append(temperature)
+                        or real(data, squeeze, temperature, *args))
+
+    def ctrl_c_after_two_paths(done, total):
+        if done == 2:
+            raise KeyboardInterrupt
+
+    path.write_text(tomli_w.dumps(CASE))
+    with pytest.raises(KeyboardInterrupt):
+        map_case_file(path, out, progress=ctrl_c_after_two_paths, workers=1)
+    assert not out.exists() and len(list(kept.glob("*.json"))) == 2
+    # a changed case reuses none of them: another temperature grid computes its 20 degC too
+    path.write_text(tomli_w.dumps({**CASE, "map": {**CASE["map"],
+                                                   "temperature": ["20 degC", "50 degC"]}}))
+    computed.clear()
+    with pytest.raises(KeyboardInterrupt):
+        map_case_file(path, out, progress=ctrl_c_after_two_paths, workers=1)
+    assert computed == [293.15, 323.15]
+    # the first case again: only the path its interruption left out (60 degC)
+    path.write_text(tomli_w.dumps(CASE))
+    computed.clear()
+    ds = map_case_file(path, out, workers=1)
+    assert computed == [333.15]
+    assert not kept.exists()              # removed once the map is written
+    # the kept paths give the map of an uninterrupted build (JSON keeps every float; 1e-12:
+    # the serial build reuses one installed model where the fixture's two workers install
+    # their own)
+    for name in ("F_N", "b", "p_max", "contact_pressure"):
+        np.testing.assert_allclose(ds[name].values, dataset[name].values, rtol=1e-12, atol=0)
