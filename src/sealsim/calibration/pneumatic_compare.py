@@ -138,9 +138,16 @@ def compare_pneumatic_file(path: str | Path, progress=None) -> PneumaticComparis
     t_model = frame["time_s"].to_numpy()
     t = measured.time
     if t[0] < t_model[0] - 1e-9 or t[-1] > t_model[-1] + 1e-9:
+        hint = "set controller.duration of the case to cover it"
+        if t[0] > t_model[0] and t[-1] - t[0] <= t_model[-1] - t_model[0] + 1e-9:
+            # a logger's clock (time since power-on, a time of day): the model counts from
+            # the start of the case's run, and the comparison lines the two up by time
+            hint = (f"the model counts from the start of the case's run ({t_model[0]:g} s), "
+                    f"the file from {t[0]:g} s: if its clock does not start with the run, "
+                    f"shift the file's time column (e.g. subtract {t[0] - t_model[0]:g} s), "
+                    "else " + hint)
         raise InputError(f"{mfile}: measured time {t[0]:g} … {t[-1]:g} s lies outside the "
-                         f"simulated {t_model[0]:g} … {t_model[-1]:g} s; set "
-                         "controller.duration of the case to cover it")
+                         f"simulated {t_model[0]:g} … {t_model[-1]:g} s; {hint}")
     gauge = case.air.ambient_pressure if m.pressure == "gauge" else 0.0
     report, table, curves = {"variant": name, "signals": {}}, {"time_s": t}, {}
     for q in sorted(wanted):
