@@ -154,6 +154,24 @@ def test_a_repeated_header_line_is_named(tmp_path):
         read_table(tabs, [ColumnSpec("time", "t", "s")], delimiter=",", header=True)
 
 
+def test_quoted_cells_and_a_units_row(tmp_path):
+    # an export that quotes every cell: '"t"' was no column named 't', '"0.5"' not a number
+    path = write(tmp_path, '"t";"F [N]"\n"0";"1,5"\n"1";"1,6"\n"2";"1,4"\n')
+    m = read_table(path, [ColumnSpec("time", "t", "s"), ColumnSpec("friction", "F [N]", "N")],
+                   delimiter=";", decimal=",", header=True)
+    assert m.data["friction"].tolist() == [1.5, 1.6, 1.4]
+    # a units row under the header (as pyvisco's DMA files have): named, with the way round it
+    units = write(tmp_path, "# rig\nt,F\ns,N\n0,1\n1,1\n2,1\n", "units.csv")
+    spec = [ColumnSpec("time", "t", "s"), ColumnSpec("friction", "F", "N")]
+    with pytest.raises(InputError, match=r"row 3, column 1 \(time\): 's' is not a number; a "
+                                         r"units row under the header\? Read the file with "
+                                         r"header = false, skip_rows = 3"):
+        read_table(units, spec, delimiter=",", header=True)
+    m = read_table(units, [ColumnSpec("time", 1, "s"), ColumnSpec("friction", 2, "N")],
+                   delimiter=",", skip_rows=3)
+    assert m.data["time"].tolist() == [0.0, 1.0, 2.0]
+
+
 @pytest.mark.parametrize("name", ["O-ring_1bar.csv", "O-ring_7bar.csv"])
 def test_tudelft_reader_gives_friction_against_the_motion(name):
     m = read_tudelft(DATA / name, bore=0.025)

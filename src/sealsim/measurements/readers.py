@@ -172,9 +172,27 @@ def _si_factor(unit: str, quantity: str, where: str):
 
 
 def _split(line: str, delimiter: str | None) -> list[str]:
-    if delimiter is None:
-        return line.split()
-    return [cell.strip() for cell in line.split(delimiter)]
+    cells = line.split() if delimiter is None else line.split(delimiter)
+    return [_unquoted(cell.strip()) for cell in cells]
+
+
+def _unquoted(cell: str) -> str:
+    """A cell without the double quotes some exports put around every header name or value
+    (``"Zeit [s]"``, ``"0.25"``)."""
+    if len(cell) >= 2 and cell[0] == cell[-1] == '"':
+        return cell[1:-1].strip()
+    return cell
+
+
+def _not_numbers(cells: list[str], decimal: str) -> bool:
+    """Whether no cell of a row is a number (a units row, a second header line)."""
+    for cell in cells:
+        try:
+            _number(cell, decimal)
+            return False
+        except ValueError:
+            pass
+    return True
 
 
 _NUMBER = re.compile(r"[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?|[-+]?(nan|inf|infinity)",
@@ -354,13 +372,16 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
             try:
                 value = _number(cells[idx], decimal)
             except ValueError:
-                again = (names and cells[:len(names)] == names) and (
-                    "; the row repeats the header line (a logger restarted?): remove it, or "
-                    "split the file there")
+                if names and cells[:len(names)] == names:
+                    hint = ("; the row repeats the header line (a logger restarted?): remove "
+                            "it, or split the file there")
+                elif header and r == 0 and _not_numbers(cells, decimal):
+                    hint = (f"; a units row under the header? Read the file with header = "
+                            f"false, skip_rows = {lineno} and 1-based column indices")
+                else:
+                    hint = _delimiter_hint(line, delimiter, cells[idx], decimal)
                 raise InputError(f"{label}, row {lineno}, column {idx + 1} ({spec.quantity}): "
-                                 f"{cells[idx]!r} is not a number"
-                                 + (again or _delimiter_hint(line, delimiter, cells[idx],
-                                                             decimal))) from None
+                                 f"{cells[idx]!r} is not a number{hint}") from None
             if not math.isfinite(value):
                 raise InputError(f"{label}, row {lineno}, column {idx + 1} ({spec.quantity}): "
                                  f"{cells[idx]!r} is not a finite number")
