@@ -172,6 +172,31 @@ def test_quoted_cells_and_a_units_row(tmp_path):
     assert m.data["time"].tolist() == [0.0, 1.0, 2.0]
 
 
+@pytest.mark.parametrize("encoding", ["utf-8", "utf-8-sig", "cp1252", "utf-16"])
+def test_text_encodings_of_spreadsheets_and_loggers(tmp_path, encoding):
+    # a German logger's "T [°C]" in Windows-1252 was "not UTF-8 text (byte 9)"; Excel's
+    # "Unicode text" (UTF-16, tabs) was refused the same way
+    path = tmp_path / "run.txt"
+    path.write_bytes("t [s]\tT [°C]\tx [µm]\r\n0\t20\t5\r\n1\t21\t6\r\n2\t22\t7\r\n"
+                     .encode(encoding))
+    m = read_table(path, [ColumnSpec("time", "t [s]", "s"),
+                          ColumnSpec("temperature", "T [°C]", "degC"),
+                          ColumnSpec("position", "x [µm]", "um")], delimiter="\t", header=True)
+    assert m.data["temperature"].tolist() == pytest.approx([293.15, 294.15, 295.15], rel=1e-12)
+    assert m.data["position"].tolist() == pytest.approx([5e-6, 6e-6, 7e-6], rel=1e-12)
+
+
+def test_bytes_of_no_text_encoding_name_the_row(tmp_path):
+    path = tmp_path / "run.csv"
+    path.write_bytes(b"t,F\n0,1\n1,\x81\xff\n2,1\n")   # 0x81 is undefined in Windows-1252
+    with pytest.raises(InputError, match=r"run.csv, row 3: byte 0x81 is neither UTF-8 nor "
+                                         r"Windows-1252 text; save the file as UTF-8"):
+        read_table(path, [ColumnSpec("time", "t", "s")], delimiter=",", header=True)
+    path.write_bytes(b"\x7fELF\x02\x01\x00\x00\xff\xfe")     # a binary file, named so
+    with pytest.raises(InputError, match=r"run.csv is not a text file \(it holds NUL bytes\)"):
+        read_table(path, [ColumnSpec("time", "t", "s")], delimiter=",", header=True)
+
+
 @pytest.mark.parametrize("name", ["O-ring_1bar.csv", "O-ring_7bar.csv"])
 def test_tudelft_reader_gives_friction_against_the_motion(name):
     m = read_tudelft(DATA / name, bore=0.025)

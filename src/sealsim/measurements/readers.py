@@ -38,7 +38,7 @@ import pandas as pd
 import pint
 
 from sealsim.errors import InputError
-from sealsim.files import MAX_DATA_BYTES, read_input_text
+from sealsim.files import MAX_DATA_BYTES, read_input_bytes
 from sealsim.units import cycles_per_time, rotational_speed, ureg
 
 __all__ = [
@@ -265,6 +265,31 @@ def _check_header_unit(name: str, spec: ColumnSpec, convert, where: str) -> None
                          "not")
 
 
+def _decoded(data: bytes, label: str) -> str:
+    """The text of a measurement file: UTF-8 (with or without the byte-order mark some
+    spreadsheets write), UTF-16 with its byte-order mark (Excel's "Unicode text"), else
+    Windows-1252 (Latin-1), in which German loggers write "°C" or "µm" in their headers.
+    Numbers are ASCII in all three: only header names depend on the guess."""
+    if data.startswith((b"\xff\xfe", b"\xfe\xff")):
+        try:
+            return data.decode("utf-16")
+        except UnicodeDecodeError as exc:
+            raise InputError(f"{label}: not UTF-16 text after its UTF-16 byte-order mark "
+                             f"(byte {exc.start}); save it as UTF-8") from None
+    if b"\x00" in data[:65536]:
+        raise InputError(f"{label} is not a text file (it holds NUL bytes): give the "
+                         "measurement as a text table, e.g. CSV")
+    try:
+        return data.decode("utf-8").removeprefix("\ufeff")
+    except UnicodeDecodeError as exc:
+        try:
+            return data.decode("cp1252")
+        except UnicodeDecodeError:
+            line = data[:exc.start].count(b"\n") + 1
+            raise InputError(f"{label}, row {line}: byte 0x{data[exc.start]:02x} is neither "
+                             "UTF-8 nor Windows-1252 text; save the file as UTF-8") from None
+
+
 def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | None = None,
                header: bool = False, skip_rows: int = 0, comment: str = "#",
                name: str | None = None, index: str | None = "time",
@@ -317,8 +342,7 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
     """
     path = Path(path)
     label = str(path)
-    text = read_input_text(path, "measurement file", MAX_DATA_BYTES)
-    text = text.removeprefix("\ufeff")  # the byte-order mark some spreadsheets write
+    text = _decoded(read_input_bytes(path, "measurement file", MAX_DATA_BYTES), label)
     if index is not None and index not in {c.quantity for c in columns}:
         raise InputError(f"{label}: the column mapping needs a {index} column")
     if decimal not in (".", ","):
