@@ -13,7 +13,9 @@ Values are converted to SI with pint (:data:`sealsim.units.ureg`) and returned a
 :class:`Measurement` (a pandas DataFrame with one SI column per quantity).  Every problem in a
 file -- a cell that is not a number, a missing column, a time that goes backwards, a wrong unit
 -- is one :class:`~sealsim.errors.InputError` naming the file, the row (1-based line number in
-the file) and the column.
+the file) and the column.  A unit a header name states (``Zeit [ms]``, ``F (N)``,
+``Kraft in N``, ``t / s``) must agree with the mapping's unit; text may be UTF-8 (with or
+without byte-order mark), UTF-16 with its byte-order mark or Windows-1252, cells may be quoted.
 
 Named readers for known rigs (:data:`FORMATS`):
 
