@@ -104,8 +104,9 @@ def test_a_header_unit_that_contradicts_the_mapping_is_refused(tmp_path, header,
     spec = [ColumnSpec("time", header, unit), ColumnSpec("friction", 2, "N")]
     stated = header.split()[-1].strip("[]")
     with pytest.raises(InputError, match=rf"column 1 \(time\): the header names the column "
-                                         rf"'{re.escape(header)}', in '{stated}', but the column mapping "
-                                         rf"says unit = '{unit}'.*set unit = '{stated}'"):
+                                         rf"'{re.escape(header)}', in '{stated}', but the "
+                                         rf"column mapping says unit = '{unit}'.*set unit = "
+                                         rf"'{stated}'"):
         read_table(path, spec, delimiter=",", header=True)
     # by index too: the header's unit belongs to the column however it is chosen
     with pytest.raises(InputError, match="the header names the column"):
@@ -126,7 +127,8 @@ def test_header_units_that_agree_or_are_no_unit_of_the_quantity_are_read(tmp_pat
     assert m.data["speed"].tolist() == pytest.approx([2 * np.pi] * 3, rel=1e-12)
     assert m.data["position"].tolist() == pytest.approx([0.01, 0.02, 0.03], rel=1e-12)
     # degC stated, K mapped: 20 would have been 20 K, not 293.15 K
-    with pytest.raises(InputError, match=r"column 5 \(temperature\).*'T \[°C\]'.*1 K, not 274.15 K"):
+    with pytest.raises(InputError,
+                       match=r"column 5 \(temperature\).*'T \[°C\]'.*1 K, not 274.15 K"):
         read_table(path, [ColumnSpec("time", 1, "s"), ColumnSpec("temperature", 5, "K")],
                    delimiter=";", decimal=",", header=True)
 
