@@ -128,10 +128,14 @@ def _map_task(case_data: dict, squeeze: float | None, temperature: float,
     }
 
 
-def _end_with_parent(parent: int) -> None:
+def _end_with_parent() -> None:
     """Pool-worker initializer: the worker ends itself once the process that started it is
     gone.  A parent killed by SIGKILL (no clean-up runs) left its workers to finish their FE
-    path and then wait for work forever; a parent's Ctrl-C is handled by the pool itself."""
+    path and then wait for work forever; a parent's Ctrl-C is handled by the pool itself.
+    (The parent is whoever started the worker: the map's process, or a forkserver that ends
+    with it.)"""
+    parent = os.getppid()
+
     def watch() -> None:
         while os.getppid() == parent:
             time.sleep(0.5)
@@ -260,8 +264,8 @@ def compute_map(case: StructureCase, *, workers: int | None = None,
         for key in todo:
             finished(key, _map_task(data, *key, positions, installed))
     else:
-        with cf.ProcessPoolExecutor(max_workers=n_workers, initializer=_end_with_parent,
-                                    initargs=(os.getpid(),)) as pool:
+        with cf.ProcessPoolExecutor(max_workers=n_workers,
+                                    initializer=_end_with_parent) as pool:
             futures = {pool.submit(_map_task, data, *key, positions): key for key in todo}
             try:
                 for fut in cf.as_completed(futures):
