@@ -231,6 +231,25 @@ def test_one_speed_cannot_separate_the_two_friction_coefficients(tmp_path):
         true_law.steady_force([0.02], inputs), rel=0.01)
 
 
+def test_a_time_column_in_ms_declared_as_s_is_refused(tmp_path):
+    # with a velocity column as well, the fit ran on a time axis 1000x too long: the steady
+    # level came out, the dynamic stage ended at a bound without a word about the unit
+    synthetic_run(tmp_path / "run.csv", [0.01], seed=1)
+    data = fit_case({"run": "run.csv"}, STAGED)
+    data["measurements"][0]["columns"]["time"]["unit"] = "s"
+    case = validate_case(FrictionFitCase, data, "test case")
+    with pytest.raises(InputError, match=r"measurement 'run' \(.*run.csv\): the position "
+                                         r"changes 0.001 times as fast as the velocity column "
+                                         r"says .*check the units of the time, position and "
+                                         r"velocity columns"):
+        prepare_run(case, case.measurements[0], None, tmp_path)
+    # declared right, the same file passes the check (ratio 1 within the smoothing)
+    data["measurements"][0]["columns"]["time"]["unit"] = "ms"
+    case = validate_case(FrictionFitCase, data, "test case")
+    run = prepare_run(case, case.measurements[0], None, tmp_path)
+    assert run.level > 0
+
+
 def test_failed_fits_say_why(tmp_path):
     f = synthetic_run(tmp_path / "sweep.csv", [0.005, 0.02, 0.08], seed=0)
     # the truth f_a = 0.3 lies above the upper bound: the fit stops at it and says so

@@ -99,6 +99,17 @@ def test_compare_refuses_a_measurement_longer_than_the_run(tmp_path):
     result = RUNNER.invoke(app, ["pneumatic", "compare", str(compare_file(tmp_path, base, data)),
                                  "--out", str(tmp_path / "o"), "--quiet"])
     assert result.exit_code == 2 and "controller.duration" in result.output
+    # a logger's clock that does not start with the run: a run of 0.5 s logged at 100 s was
+    # told to simulate 100 s
+    np.savetxt(data, np.column_stack([np.linspace(100, 100.5, 10), np.zeros(10), np.zeros(10),
+                                      np.zeros(10)]), delimiter=",", header="t,x,p1,p2",
+               comments="")
+    result = RUNNER.invoke(app, ["pneumatic", "compare", str(compare_file(tmp_path, base, data)),
+                                 "--out", str(tmp_path / "o"), "--quiet"])
+    assert result.exit_code == 2
+    assert ("the model counts from the start of the case's run (0 s), the file from 100 s: if "
+            "its clock does not start with the run, shift the file's time column (e.g. "
+            "subtract 100 s)") in " ".join(result.output.split())
 
 
 def test_compare_of_absolute_pressures_says_so(tmp_path):

@@ -172,7 +172,8 @@ def _png(path):
 def test_oil_plot_writes_png_and_csv_and_says_where(tmp_path):
     out = tmp_path / "visc"
     result = ok("oil", "plot", "VG32", "VG68", "VG220", "--out", str(out))
-    assert sorted(p.name for p in out.iterdir()) == ["viscosity_temperature.csv",
+    assert sorted(p.name for p in out.iterdir()) == [".sealsim-results",
+                                                    "viscosity_temperature.csv",
                                                     "viscosity_temperature.png"]
     _png(out / "viscosity_temperature.png")
     assert str(out / "viscosity_temperature.png") in result.stdout

@@ -455,6 +455,22 @@ def _uniaxial_fit_file(folder, rows: str, deformation: tuple[str, str], stress_u
     return folder / "fit.toml"
 
 
+def test_a_decimal_comma_table_fits_as_its_decimal_point_original(tmp_path):
+    # the reader's hint for '1,5' ("set decimal = ','") led to "decimal: unknown field" in a
+    # material fit file: a German lab's DMA or tensile export could not be read at all
+    rows = "1.0,0\n1.2,0.31\n1.5,0.62\n2.0,0.98\n2.5,1.29\n"
+    original = fit_material_file(_uniaxial_fit_file(tmp_path, rows, ("stretch", "1"), "MPa"))
+    german = tmp_path / "de"
+    german.mkdir()
+    path = _uniaxial_fit_file(german, rows, ("stretch", "1"), "MPa")
+    table = german / "u.csv"
+    table.write_text(table.read_text().replace(",", ";").replace(".", ","))
+    path.write_text(path.read_text().replace('delimiter = ","', 'delimiter = ";"\ndecimal = ","'))
+    fitted = fit_material_file(path)
+    # the same numbers in another notation: the same fit to the last bit
+    assert fitted.hyperelastic.parameters == original.hyperelastic.parameters
+
+
 def test_a_curve_that_fits_no_rubber_is_an_input_error_naming_the_wrong_point(tmp_path):
     # a negative stress in tension (a sign slip in one row) gave Mooney-Rivlin a negative
     # initial shear modulus and the compound writer a traceback ('math domain error')

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import numpy as np
@@ -93,6 +94,109 @@ def test_bad_mappings_are_input_errors(tmp_path):
         read_measurement(path, format="nope")
     with pytest.raises(InputError, match="needs bore"):
         read_measurement(DATA / "O-ring_1bar.csv", format="tudelft")
+
+
+@pytest.mark.parametrize("header, unit", [("Zeit [ms]", "s"), ("t / s", "ms"),
+                                          ("Zeit in min", "s")])
+def test_a_header_unit_that_contradicts_the_mapping_is_refused(tmp_path, header, unit):
+    # a logger's "Zeit [ms]" mapped with unit = "s" was read 1000x too slow without a word
+    path = write(tmp_path, f"{header},F (N)\n0,1.5\n10,1.6\n20,1.4\n")
+    spec = [ColumnSpec("time", header, unit), ColumnSpec("friction", 2, "N")]
+    stated = header.split()[-1].strip("[]")
+    with pytest.raises(InputError, match=rf"column 1 \(time\): the header names the column "
+                                         rf"'{re.escape(header)}', in '{stated}', but the "
+                                         rf"column mapping says unit = '{unit}'.*set unit = "
+                                         rf"'{stated}'"):
+        read_table(path, spec, delimiter=",", header=True)
+    # by index too: the header's unit belongs to the column however it is chosen
+    with pytest.raises(InputError, match="the header names the column"):
+        read_table(path, [ColumnSpec("time", 1, unit), spec[1]], delimiter=",", header=True)
+
+
+def test_header_units_that_agree_or_are_no_unit_of_the_quantity_are_read(tmp_path):
+    path = write(tmp_path, "Zeit [s];Kraft in N;F (kN);n [1/min];T [°C];x [V];M [Nm]\n"
+                           "0;1,5;1;60;20;1;2\n1;1,6;2;60;21;2;2\n2;1,4;3;60;22;3;2\n")
+    m = read_table(path, [ColumnSpec("time", "Zeit [s]", "s"),
+                          ColumnSpec("friction", "Kraft in N", "N", scale=-1.0),  # a sign flip
+                          ColumnSpec("force", 3, "kN"), ColumnSpec("speed", 4, "rpm"),
+                          ColumnSpec("temperature", 5, "degC"),
+                          ColumnSpec("position", 6, "mm", scale=10.0),   # raw volts, 10 mm/V
+                          ColumnSpec("torque", 7, "N*m")],             # pint's Nm: nanometre
+                   delimiter=";", decimal=",", header=True)
+    assert m.data["friction"].tolist() == [-1.5, -1.6, -1.4]
+    assert m.data["speed"].tolist() == pytest.approx([2 * np.pi] * 3, rel=1e-12)
+    assert m.data["position"].tolist() == pytest.approx([0.01, 0.02, 0.03], rel=1e-12)
+    # degC stated, K mapped: 20 would have been 20 K, not 293.15 K
+    with pytest.raises(InputError,
+                       match=r"column 5 \(temperature\).*'T \[°C\]'.*1 K, not 274.15 K"):
+        read_table(path, [ColumnSpec("time", 1, "s"), ColumnSpec("temperature", 5, "K")],
+                   delimiter=";", decimal=",", header=True)
+
+
+def test_header_names_with_blanks_in_a_whitespace_table_are_refused(tmp_path):
+    # split at blanks, "t [s]" was two names: "F" named the third column, the position
+    path = write(tmp_path, "t [s]\tF [N]\tx [mm]\n0\t1.5\t0\n1\t1.6\t5\n2\t1.4\t10\n")
+    with pytest.raises(InputError, match=r"row 1: the header line .* has 6 names split at "
+                                         r"blanks, the rows have 3 columns.*delimiter = '\\t'"):
+        read_table(path, [ColumnSpec("time", "t", "s"), ColumnSpec("friction", "F", "N")],
+                   header=True)
+    m = read_table(path, [ColumnSpec("time", "t [s]", "s"), ColumnSpec("friction", "F [N]", "N")],
+                   delimiter="\t", header=True)
+    assert m.data["friction"].tolist() == [1.5, 1.6, 1.4]
+
+
+def test_a_repeated_header_line_is_named(tmp_path):
+    path = write(tmp_path, "t,F\n0,1\n1,1\nt,F\n0,1\n1,1\n")
+    with pytest.raises(InputError, match=r"row 4, column 1 \(time\): 't' is not a number; the "
+                                         r"row repeats the header line"):
+        read_table(path, [ColumnSpec("time", "t", "s"), ColumnSpec("friction", "F", "N")],
+                   delimiter=",", header=True)
+    tabs = write(tmp_path, "t\tF\n0\t1\n1\t1\n2\t1\n", "tabs.csv")
+    with pytest.raises(InputError, match=r"no column named 't'.*contains tabs: set delimiter"):
+        read_table(tabs, [ColumnSpec("time", "t", "s")], delimiter=",", header=True)
+
+
+def test_quoted_cells_and_a_units_row(tmp_path):
+    # an export that quotes every cell: '"t"' was no column named 't', '"0.5"' not a number
+    path = write(tmp_path, '"t";"F [N]"\n"0";"1,5"\n"1";"1,6"\n"2";"1,4"\n')
+    m = read_table(path, [ColumnSpec("time", "t", "s"), ColumnSpec("friction", "F [N]", "N")],
+                   delimiter=";", decimal=",", header=True)
+    assert m.data["friction"].tolist() == [1.5, 1.6, 1.4]
+    # a units row under the header (as pyvisco's DMA files have): named, with the way round it
+    units = write(tmp_path, "# rig\nt,F\ns,N\n0,1\n1,1\n2,1\n", "units.csv")
+    spec = [ColumnSpec("time", "t", "s"), ColumnSpec("friction", "F", "N")]
+    with pytest.raises(InputError, match=r"row 3, column 1 \(time\): 's' is not a number; a "
+                                         r"units row under the header\? Read the file with "
+                                         r"header = false, skip_rows = 3"):
+        read_table(units, spec, delimiter=",", header=True)
+    m = read_table(units, [ColumnSpec("time", 1, "s"), ColumnSpec("friction", 2, "N")],
+                   delimiter=",", skip_rows=3)
+    assert m.data["time"].tolist() == [0.0, 1.0, 2.0]
+
+
+@pytest.mark.parametrize("encoding", ["utf-8", "utf-8-sig", "cp1252", "utf-16"])
+def test_text_encodings_of_spreadsheets_and_loggers(tmp_path, encoding):
+    # a German logger's "T [°C]" in Windows-1252 was "not UTF-8 text (byte 9)"; Excel's
+    # "Unicode text" (UTF-16, tabs) was refused the same way
+    path = tmp_path / "run.txt"
+    path.write_bytes("t [s]\tT [°C]\tx [µm]\r\n0\t20\t5\r\n1\t21\t6\r\n2\t22\t7\r\n"
+                     .encode(encoding))
+    m = read_table(path, [ColumnSpec("time", "t [s]", "s"),
+                          ColumnSpec("temperature", "T [°C]", "degC"),
+                          ColumnSpec("position", "x [µm]", "um")], delimiter="\t", header=True)
+    assert m.data["temperature"].tolist() == pytest.approx([293.15, 294.15, 295.15], rel=1e-12)
+    assert m.data["position"].tolist() == pytest.approx([5e-6, 6e-6, 7e-6], rel=1e-12)
+
+
+def test_bytes_of_no_text_encoding_name_the_row(tmp_path):
+    path = tmp_path / "run.csv"
+    path.write_bytes(b"t,F\n0,1\n1,\x81\xff\n2,1\n")   # 0x81 is undefined in Windows-1252
+    with pytest.raises(InputError, match=r"run.csv, row 3: byte 0x81 is neither UTF-8 nor "
+                                         r"Windows-1252 text; save the file as UTF-8"):
+        read_table(path, [ColumnSpec("time", "t", "s")], delimiter=",", header=True)
+    path.write_bytes(b"\x7fELF\x02\x01\x00\x00\xff\xfe")     # a binary file, named so
+    with pytest.raises(InputError, match=r"run.csv is not a text file \(it holds NUL bytes\)"):
+        read_table(path, [ColumnSpec("time", "t", "s")], delimiter=",", header=True)
 
 
 @pytest.mark.parametrize("name", ["O-ring_1bar.csv", "O-ring_7bar.csv"])

@@ -8,18 +8,20 @@ import pandas as pd
 import pytest
 
 from sealsim.errors import InputError, ResultExistsError
-from sealsim.output import ResultFolder, atomic_write_bytes, atomic_write_text
+from sealsim.output import RESULT_MARKER, ResultFolder, atomic_write_bytes, atomic_write_text
 
 
 def _tree(path):
-    """Relative paths of everything below ``path`` (hidden entries included), sorted."""
-    return sorted(str(p.relative_to(path)) for p in path.rglob("*"))
+    """Relative paths of everything below ``path`` (hidden entries included, but not the
+    marker of a result folder: see test_force_replaces_only_folders_sealsim_wrote), sorted."""
+    return sorted(str(p.relative_to(path)) for p in path.rglob("*") if p.name != RESULT_MARKER)
 
 
 def _old_results(tmp_path):
+    """A result folder an earlier run wrote."""
     out = tmp_path / "run"
-    out.mkdir()
-    (out / "summary.json").write_text('{"torque_Nm": 0.5}')
+    with ResultFolder(out) as folder:
+        folder.write_text("summary.json", '{"torque_Nm": 0.5}')
     return out
 
 
@@ -85,6 +87,27 @@ def test_empty_existing_folder_is_fine_without_force(tmp_path):
     with ResultFolder(out) as folder:
         folder.write_text("a.txt", "a")
     assert _tree(out) == ["a.txt"]
+
+
+def test_force_replaces_only_folders_sealsim_wrote(tmp_path):
+    # `--out ~/Documents --force` (a typo, a wrong variable) moved the whole folder aside and
+    # deleted it: only a folder with the marker every committed result folder gets is replaced
+    out = _old_results(tmp_path)
+    assert (out / RESULT_MARKER).is_file()
+    with ResultFolder(out, force=True) as folder:
+        folder.write_text("new.txt", "new")
+    assert (out / RESULT_MARKER).is_file() and _tree(out) == ["new.txt"]
+    documents = tmp_path / "Documents"
+    (documents / "thesis").mkdir(parents=True)
+    (documents / "thesis" / "draft.tex").write_text("precious")
+    (documents / "notes.txt").write_text("precious")
+    before = _tree(tmp_path)
+    with pytest.raises(ResultExistsError, match=r"output folder '.*Documents' was not written by "
+                                                r"sealsim \(it holds 'notes.txt', 'thesis' and no "
+                                                r"\.sealsim-results file\); --force replaces only"):
+        ResultFolder(documents, force=True)
+    assert _tree(tmp_path) == before
+    assert (documents / "thesis" / "draft.tex").read_text() == "precious"
 
 
 def test_path_that_is_a_file_is_an_input_error(tmp_path):

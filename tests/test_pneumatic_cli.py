@@ -15,6 +15,7 @@ from typer.testing import CliRunner
 
 from sealsim.cases import expand_variants, load_toml
 from sealsim.cli.pneumatic import pneumatic_app
+from sealsim.output import ResultFolder
 from sealsim.pneumatic.results import column_name
 
 EXAMPLE_DIR = Path(__file__).resolve().parents[1] / "examples" / "pneumatic"
@@ -106,11 +107,18 @@ def test_example_runs_through_the_cli(example, tmp_path):
 def test_existing_folder_and_force(tmp_path):
     case = shortened(EXAMPLE_DIR / "friction_rig.toml", tmp_path, cap=0.2)
     out = tmp_path / "out"
-    out.mkdir()
-    (out / "old.txt").write_text("keep me")
+    with ResultFolder(out) as folder:       # the results of an earlier run
+        folder.write_text("old.txt", "keep me")
     refused = run(case, "--out", out, "-q")
     assert refused.exit_code == 2 and "--force" in refused.output
     assert (out / "old.txt").read_text() == "keep me"
+    mine = tmp_path / "mine"                # a folder sealsim did not write: not even --force
+    mine.mkdir()
+    (mine / "notes.txt").write_text("keep me")
+    refused = run(case, "--out", mine, "-q", "--force")
+    assert refused.exit_code == 2
+    assert "was not written by sealsim" in " ".join(refused.output.split())
+    assert (mine / "notes.txt").read_text() == "keep me"
     forced = run(case, "--out", out, "-q", "--force")
     assert forced.exit_code == 0, forced.output
     assert not (out / "old.txt").exists() and (out / "summary.json").is_file()

@@ -27,7 +27,7 @@ from typer.testing import CliRunner
 from sealsim.cases import check_variant_name, expand_variants
 from sealsim.cli import app
 from sealsim.errors import InputError, ResultExistsError, SealsimError
-from sealsim.output import ResultFolder, json_ready, run_variants
+from sealsim.output import RESULT_MARKER, ResultFolder, json_ready, run_variants
 
 ROOT = Path(__file__).parents[1]
 EXAMPLES = ROOT / "examples"
@@ -47,9 +47,16 @@ velocity = { kind = "harmonic", mean = "1 mm/s", amplitude = "1 mm/s", angular_f
 
 
 def tree(path: Path) -> dict[str, bytes | None]:
-    """Every entry below ``path`` (hidden ones too) with its content (None for folders)."""
+    """Every entry below ``path`` (hidden ones too, but not the marker of result folders) with
+    its content (None for folders)."""
     return {str(p.relative_to(path)): (None if p.is_dir() else p.read_bytes())
-            for p in sorted(path.rglob("*"))}
+            for p in sorted(path.rglob("*")) if p.name != RESULT_MARKER}
+
+
+def old_results(out: Path, text: str) -> None:
+    """A result folder ``out`` an earlier run wrote: ``old.txt`` holding ``text``."""
+    with ResultFolder(out) as folder:
+        folder.write_text("old.txt", text)
 
 
 def cli(*args, **kwargs):
@@ -232,8 +239,7 @@ def test_force_replaces_only_results_that_existed_when_the_run_started(tmp_path)
 def test_sigterm_while_writing_leaves_out_unchanged(tiny_friction, tmp_path, force):
     out = tmp_path / "out"
     if force:
-        out.mkdir()
-        (out / "old.txt").write_text("old results")
+        old_results(out, "old results")
     before = tree(tmp_path)
     started = tmp_path.parent / f"{tmp_path.name}.started"
     proc = _spawn(SLOW_WRITER, started, "friction", "run", tiny_friction, "--out", out, "-q",
@@ -250,8 +256,7 @@ def test_sigterm_while_writing_leaves_out_unchanged(tiny_friction, tmp_path, for
 def test_interrupt_after_commit_says_the_new_results_were_written(tiny_friction, tmp_path,
                                                                   monkeypatch):
     out = tmp_path / "out"
-    out.mkdir()
-    (out / "old.txt").write_text("old")
+    old_results(out, "old")
     import sealsim.output as output
 
     real = output.shutil.rmtree
@@ -312,8 +317,7 @@ def test_full_disk_gives_one_message_and_removes_the_staging(tiny_friction, tmp_
 
     out = tmp_path / "out"
     if force:
-        out.mkdir()
-        (out / "old.txt").write_text("old results")
+        old_results(out, "old results")
     before = tree(tmp_path)
     real = output.atomic_write_bytes
 

@@ -1,5 +1,12 @@
 """Characteristic maps: FE at off-grid points, netCDF round trip, smoothness, extrapolation."""
 
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
 import numpy as np
 import pytest
 import xarray as xr
@@ -144,3 +151,96 @@ def test_shared_installation_gives_the_paths_solved_from_the_start():
     for key in ("F_N", "b", "contact_pressure"):
         a, b = np.asarray(shared[key]), np.asarray(own[key])
         assert np.abs(a - b).max() <= 1e-12 * np.abs(b).max()
+
+
+KILLED_MAP = """
+import os, sys, time
+import sealsim.structure.mapping as mapping
+from sealsim.structure.case import load_structure_cases
+
+def held(*args, **kwargs):         # an FE path that takes long: the parent is killed meanwhile
+    open(os.path.join(sys.argv[1], f"{os.getpid()}.pid"), "w").close()
+    time.sleep(120)
+
+mapping._map_task = held
+case = next(iter(load_structure_cases(sys.argv[2]).values()))
+mapping.compute_map(case, workers=2)
+"""
+
+
+def _running(pid: int) -> bool:
+    """The process exists and is not a zombie (an orphan's zombie waits for init to reap it)."""
+    try:
+        with open(f"/proc/{pid}/stat") as fh:
+            return fh.read().rsplit(")", 1)[1].split()[0] != "Z"
+    except FileNotFoundError:
+        return False
+
+
+@pytest.mark.skipif(not os.path.isdir("/proc/self"), reason="reads process states from /proc")
+def test_map_workers_end_when_the_map_build_is_killed(tmp_path):
+    # SIGKILL of `sealsim structure map` (no clean-up runs) left its pool workers behind: each
+    # finished its FE path, then waited for work forever, holding its memory
+    case = Path(__file__).resolve().parents[1] / "examples" / "structure" / "oring_map.toml"
+    proc = subprocess.Popen([sys.executable, "-c", KILLED_MAP, str(tmp_path), str(case)])
+    try:
+        end = time.monotonic() + 120
+        while len(list(tmp_path.glob("*.pid"))) < 2:
+            assert proc.poll() is None and time.monotonic() < end, "workers did not start"
+            time.sleep(0.1)
+    finally:
+        proc.kill()
+        proc.wait()
+    workers = [int(p.stem) for p in tmp_path.glob("*.pid")]
+    end = time.monotonic() + 10   # the watch looks every 0.5 s; 10 s: a busy 2-core machine
+    while any(map(_running, workers)) and time.monotonic() < end:
+        time.sleep(0.1)
+    alive = [pid for pid in workers if _running(pid)]
+    for pid in alive:             # do not leave them behind on failure either
+        os.kill(pid, signal.SIGKILL)
+    assert alive == []
+
+
+def test_an_interrupted_map_build_computes_only_the_missing_paths(dataset, tmp_path,
+                                                                  monkeypatch):
+    # Ctrl-C (or SIGKILL) of `sealsim structure map` lost every finished FE load path: the
+    # next run computed the whole map again
+    import tomli_w
+
+    import sealsim.structure.mapping as mapping
+    from sealsim.runs.structure import map_case_file
+
+    path = tmp_path / "map.toml"
+    out, kept = tmp_path / "out", tmp_path / ".out.map"
+    computed = []
+    real = mapping._map_task
+    monkeypatch.setattr(mapping, "_map_task",
+                        lambda data, squeeze, temperature, *args: computed.append(temperature)
+                        or real(data, squeeze, temperature, *args))
+
+    def ctrl_c_after_two_paths(done, total):
+        if done == 2:
+            raise KeyboardInterrupt
+
+    path.write_text(tomli_w.dumps(CASE))
+    with pytest.raises(KeyboardInterrupt):
+        map_case_file(path, out, progress=ctrl_c_after_two_paths, workers=1)
+    assert not out.exists() and len(list(kept.glob("*.json"))) == 2
+    # a changed case reuses none of them: another temperature grid computes its 20 degC too
+    path.write_text(tomli_w.dumps({**CASE, "map": {**CASE["map"],
+                                                   "temperature": ["20 degC", "50 degC"]}}))
+    computed.clear()
+    with pytest.raises(KeyboardInterrupt):
+        map_case_file(path, out, progress=ctrl_c_after_two_paths, workers=1)
+    assert computed == [293.15, 323.15]
+    # the first case again: only the path its interruption left out (60 degC)
+    path.write_text(tomli_w.dumps(CASE))
+    computed.clear()
+    ds = map_case_file(path, out, workers=1)
+    assert computed == [333.15]
+    assert not kept.exists()              # removed once the map is written
+    # the kept paths give the map of an uninterrupted build (JSON keeps every float; 1e-12:
+    # the serial build reuses one installed model where the fixture's two workers install
+    # their own)
+    for name in ("F_N", "b", "p_max", "contact_pressure"):
+        np.testing.assert_allclose(ds[name].values, dataset[name].values, rtol=1e-12, atol=0)

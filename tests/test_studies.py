@@ -169,8 +169,8 @@ def test_grid_study_gives_the_closed_form_friction_and_a_complete_folder(tmp_pat
     expected = ds["fc"].values[:, None] + ds["c"].values[None, :] * 0.1   # F = F_C + c v
     np.testing.assert_allclose(ds["F"].values, expected, rtol=1e-12)     # exact law, rounding
     files = sorted(p.name for p in (tmp_path / "out").iterdir())
-    assert files == ["case_resolved.toml", "heatmap_F.png", "response_F.png", "runs.csv",
-                     "study.nc", "study.toml", "summary.json"]
+    assert files == [".sealsim-results", "case_resolved.toml", "heatmap_F.png", "response_F.png",
+                     "runs.csv", "study.nc", "study.toml", "summary.json"]
     assert not any(p.name.startswith(".out") for p in tmp_path.iterdir())  # no work folder left
     header = (tmp_path / "out" / "runs.csv").read_text().splitlines()[0]
     assert header == "run,fc_N,c_Ns_m,F_N,status,error,wall_time_s,worker"

@@ -5,7 +5,10 @@ through :func:`run_variants`, which adds the per-variant loop and progress repor
 
 * the output location is checked when the folder object is made, before any computing: an
   existing folder that holds files is refused unless ``force=True``
-  (:class:`~sealsim.errors.ResultExistsError`), and so are a file in its place, a location
+  (:class:`~sealsim.errors.ResultExistsError`); even with ``force``, a folder is replaced
+  only if sealsim wrote it (it holds the marker file :data:`RESULT_MARKER` every committed
+  result folder gets), so that a mistyped ``--out ~/Documents --force`` deletes nothing of
+  the user's; refused are also a file in its place, a location
   that cannot be written, the current folder or one of its parents, and a folder that holds
   one of the run's input files;
 * entering the ``with`` block takes an exclusive lock (``.NAME.lock`` next to the target,
@@ -52,8 +55,11 @@ from sealsim.files import (
     raise_terminated,
 )
 
-__all__ = ["JSON_DIGITS", "ResultFolder", "atomic_write_bytes", "atomic_write_text",
-           "committed_folders", "json_ready", "run_variants"]
+__all__ = ["JSON_DIGITS", "RESULT_MARKER", "ResultFolder", "atomic_write_bytes",
+           "atomic_write_text", "committed_folders", "json_ready", "run_variants"]
+
+#: the file in every result folder sealsim commits: ``--force`` replaces only folders with it
+RESULT_MARKER = ".sealsim-results"
 
 #: every result folder committed by this process, in order (see :func:`committed_folders`)
 _COMMITTED: list[Path] = []
@@ -89,8 +95,9 @@ class ResultFolder:
     path : str or Path
         Target folder.
     force : bool
-        Replace a folder that already holds files (only the results that were there when
-        this object was made: a folder committed meanwhile by another run is not replaced).
+        Replace a result folder sealsim wrote (:data:`RESULT_MARKER`) that already holds files
+        (only the results that were there when this object was made: a folder committed
+        meanwhile by another run is not replaced).
     inputs : iterable of path-like
         Files the run reads (the case file, a duty-cycle CSV): refused if they lie inside
         ``path``, where committing the results would delete them.
@@ -101,7 +108,8 @@ class ResultFolder:
         Unusable location (a file, not writable, the current folder or a parent of it, holds
         an input file) -- when the object is made, i.e. before any computing.
     ResultExistsError
-        ``path`` holds results and ``force`` is not set.
+        ``path`` holds results and ``force`` is not set, or it holds files but no
+        :data:`RESULT_MARKER` (sealsim did not write it: not even ``force`` replaces it).
     ResultBusyError
         (on entering) another run is writing to ``path``.
     OutputError
@@ -161,10 +169,19 @@ class ResultFolder:
         if not os.access(existing, os.W_OK | os.X_OK):
             raise InputError(f"cannot write output folder {shown!r}: no write permission in "
                              f"{str(existing)!r} (or a read-only file system)")
-        if self._holds_results() and not self.force:
-            raise ResultExistsError(
-                f"output folder {shown!r} already holds results; "
-                "choose another folder or pass --force to replace them")
+        if self._holds_results():
+            if not self.force:
+                raise ResultExistsError(
+                    f"output folder {shown!r} already holds results; "
+                    "choose another folder or pass --force to replace them")
+            if not (self.path / RESULT_MARKER).is_file():
+                found = sorted(p.name for p in self.path.iterdir())
+                raise ResultExistsError(
+                    f"output folder {shown!r} was not written by sealsim (it holds "
+                    f"{', '.join(map(repr, found[:3]))}{', ...' if len(found) > 3 else ''} "
+                    f"and no {RESULT_MARKER} file); --force replaces only sealsim's result "
+                    "folders, whose files it would delete: choose another folder, or empty "
+                    "this one yourself")
 
     def _holds_results(self) -> bool:
         try:
@@ -265,6 +282,8 @@ class ResultFolder:
     def _commit(self, staging: Path) -> None:
         backup = None
         try:
+            atomic_write_text(staging / RESULT_MARKER,
+                              "Written by sealsim: --force may replace this folder.\n")
             if self.path.exists():
                 backup = self.path.with_name(f".{self.path.name}.{os.getpid()}.old")
                 os.replace(self.path, backup)

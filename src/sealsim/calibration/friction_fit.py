@@ -47,6 +47,7 @@ from sealsim.friction.base import ContactInputs, FrictionLaw, validate_parameter
 from sealsim.measurements import (
     Measurement,
     friction_level,
+    position_velocity_ratio,
     read_measurement,
     sliding_phases,
     smooth_derivative,
@@ -148,6 +149,15 @@ def prepare_run(case: FrictionFitCase, spec: MeasurementModel, contact_map=None,
             "in the file probably counts the other way than sealsim (the force the seal "
             "resists the motion with, positive while the velocity is positive); flip it with "
             f"scale = -1 on {flip}")
+    if m.has("position") and m.has("velocity"):
+        # a column in another unit than declared (a time in ms given as s) moves the velocity
+        # by its factor: the fit ran on it
+        ratio = position_velocity_ratio(t, x, v, phases, sig.velocity_window)
+        if not 0.5 <= ratio <= 2.0:
+            raise InputError(
+                f"{where}: the position changes {ratio:.4g} times as fast as the velocity "
+                "column says (median over the sliding phases): check the units of the time, "
+                "position and velocity columns (a time in ms given as s makes it 0.001)")
     needs = _needed_conditions(case, contact_map)
     if m.has("pressure"):
         p = m.column("pressure")

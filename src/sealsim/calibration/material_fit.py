@@ -91,11 +91,13 @@ GIVEN_FIELDS = ("glass_transition", "service_min", "service_max", "density",
 
 
 class TableFile(CaseModel):
-    """A measurement table: file (relative to the fit file), how to read it, its columns."""
+    """A measurement table: file (relative to the fit file), how to read it, its columns
+    (a German lab's export: ``delimiter = ";"`` with ``decimal = ","``)."""
 
     file: str
     columns: dict[str, ColumnModel]
     delimiter: str | None = None
+    decimal: Literal[".", ","] = "."
     header: bool = False
     skip_rows: int = Field(0, ge=0)
 
@@ -103,7 +105,7 @@ class TableFile(CaseModel):
         specs = [ColumnSpec(q, c.column, c.unit, c.scale) for q, c in self.columns.items()]
         path = Path(self.file)
         return read_table(path if path.is_absolute() else base / path, specs,
-                          delimiter=self.delimiter, header=self.header,
+                          delimiter=self.delimiter, decimal=self.decimal, header=self.header,
                           skip_rows=self.skip_rows, name=name, index=None).data
 
 

@@ -150,10 +150,17 @@ def compare_pneumatic_file(path: str | Path, progress=None,
     if t[0] < t_model[0] - 1e-9 or t[-1] > t_model[-1] + 1e-9:
         shifted = (f" (logger time minus the time offset {time_offset:g} s)" if time_offset
                    else "")
+        hint = ("set controller.duration of the case to cover it, or --time-offset to the "
+                "logger's time at the start of the simulation")
+        if t[0] > t_model[0] and t[-1] - t[0] <= t_model[-1] - t_model[0] + 1e-9:
+            # a logger's clock (time since power-on, a time of day): the model counts from
+            # the start of the case's run, and the comparison lines the two up by time
+            hint = (f"the model counts from the start of the case's run ({t_model[0]:g} s), "
+                    f"the file from {t[0]:g} s: if its clock does not start with the run, give "
+                    f"--time-offset '{t[0] + time_offset - t_model[0]:g} s' (the logger's time "
+                    "at the start of the simulation), else " + hint.split(", or")[0])
         raise InputError(f"{mfile}: measured time {t[0]:g} … {t[-1]:g} s{shifted} lies outside "
-                         f"the simulated {t_model[0]:g} … {t_model[-1]:g} s; set "
-                         "controller.duration of the case to cover it, or --time-offset to "
-                         "the logger's time at the start of the simulation")
+                         f"the simulated {t_model[0]:g} … {t_model[-1]:g} s; {hint}")
     gauge = case.air.ambient_pressure if m.pressure == "gauge" else 0.0
     report = {"variant": name, "time_offset_s": time_offset, "signals": {}}
     table, curves = {"time_s": t, "logger_time_s": measured.time}, {}

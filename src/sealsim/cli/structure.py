@@ -81,7 +81,9 @@ def map_(
     """Characteristic map F_N, b, p(z) over pressure x temperature (x squeeze), in parallel.
 
     Writes map.nc (netCDF; read it with sealsim.structure.load_map), map.csv,
-    map_profiles.csv, map.png, map_profiles.png and case_resolved.toml.
+    map_profiles.csv, map.png, map_profiles.png and case_resolved.toml. Finished load paths
+    are kept in .OUT.map until then: after Ctrl-C or a killed process, the same command
+    computes only the missing ones.
     """
     from sealsim.runs.structure import map_case_file
 

@@ -13,7 +13,9 @@ Values are converted to SI with pint (:data:`sealsim.units.ureg`) and returned a
 :class:`Measurement` (a pandas DataFrame with one SI column per quantity).  Every problem in a
 file -- a cell that is not a number, a missing column, a time that goes backwards, a wrong unit
 -- is one :class:`~sealsim.errors.InputError` naming the file, the row (1-based line number in
-the file) and the column.
+the file) and the column.  A unit a header name states (``Zeit [ms]``, ``F (N)``,
+``Kraft in N``, ``t / s``) must agree with the mapping's unit; text may be UTF-8 (with or
+without byte-order mark), UTF-16 with its byte-order mark or Windows-1252, cells may be quoted.
 
 Named readers for known rigs (:data:`FORMATS`):
 
@@ -38,7 +40,7 @@ import pandas as pd
 import pint
 
 from sealsim.errors import InputError
-from sealsim.files import MAX_DATA_BYTES, read_input_text
+from sealsim.files import MAX_DATA_BYTES, read_input_bytes
 from sealsim.units import cycles_per_time, rotational_speed, ureg
 
 __all__ = [
@@ -172,9 +174,27 @@ def _si_factor(unit: str, quantity: str, where: str):
 
 
 def _split(line: str, delimiter: str | None) -> list[str]:
-    if delimiter is None:
-        return line.split()
-    return [cell.strip() for cell in line.split(delimiter)]
+    cells = line.split() if delimiter is None else line.split(delimiter)
+    return [_unquoted(cell.strip()) for cell in cells]
+
+
+def _unquoted(cell: str) -> str:
+    """A cell without the double quotes some exports put around every header name or value
+    (``"Zeit [s]"``, ``"0.25"``)."""
+    if len(cell) >= 2 and cell[0] == cell[-1] == '"':
+        return cell[1:-1].strip()
+    return cell
+
+
+def _not_numbers(cells: list[str], decimal: str) -> bool:
+    """Whether no cell of a row is a number (a units row, a second header line)."""
+    for cell in cells:
+        try:
+            _number(cell, decimal)
+            return False
+        except ValueError:
+            pass
+    return True
 
 
 _NUMBER = re.compile(r"[-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?|[-+]?(nan|inf|infinity)",
@@ -198,9 +218,78 @@ def _delimiter_hint(line: str, delimiter: str | None, cell: str = "", decimal: s
     if delimiter != ";" and ";" in line:
         return ("; the line contains ';': set delimiter = ';' (and decimal = ',' if the numbers "
                 "have decimal commas)")
+    if delimiter not in ("\t", None) and "\t" in line:
+        return "; the line contains tabs: set delimiter = '\\t'"
     if decimal == "." and re.fullmatch(r"[-+]?\d+,\d+", cell):
         return "; for decimal commas set decimal = ',' (with another delimiter, e.g. ';')"
     return ""
+
+
+#: a unit at the end of a header name: "Zeit [s]", "F (N)", "Kraft in N", "t / ms"
+_HEADER_UNIT = re.compile(r".*?(?:\[\s*(?P<b>[^\[\]]+?)\s*\]|\(\s*(?P<p>[^()]+?)\s*\)"
+                          r"|\s+in\s+(?P<i>\S+)|\S\s*/\s*(?P<s>[^/\s]+(?:/[^/\s]+)?))\s*")
+
+
+def header_unit(name: str) -> str | None:
+    """The unit a header name states at its end, if it states one.
+
+    Examples
+    --------
+    >>> [header_unit(n) for n in ("Zeit [ms]", "F (N)", "Kraft in kN", "t / s", "speed_rpm")]
+    ['ms', 'N', 'kN', 's', None]
+    """
+    match = _HEADER_UNIT.fullmatch(name)
+    if match is None:
+        return None
+    return next(u for u in match.group("b", "p", "i", "s") if u is not None)
+
+
+def _check_header_unit(name: str, spec: ColumnSpec, convert, where: str) -> None:
+    """Refuse a column whose header states a unit that reads its numbers differently from the
+    mapping's unit (a ``[ms]`` column mapped with ``unit = "s"``): a wrong number that looks
+    right.  A header unit that is no unit of the quantity (a raw ``[V]`` channel, a word in
+    brackets) is not checked."""
+    unit = header_unit(name)
+    if unit is None:
+        return
+    try:
+        stated = _si_factor(unit, spec.quantity, where)
+    except InputError:
+        return
+    probe = np.array([1.0, 10.0])
+    if not np.allclose(stated(probe), convert(probe), rtol=1e-9, atol=0.0):
+        si = QUANTITIES[spec.quantity]
+        raise InputError(f"{where}: the header names the column {name!r}, in {unit!r}, but the "
+                         f"column mapping says unit = {spec.unit!r} (a value 1 would be read as "
+                         f"{convert(probe)[0]:.6g} {si}, not {stated(probe)[0]:.6g} {si}); set "
+                         f"unit = {unit!r} if the header is right, or read the file without "
+                         "its header (header = false, skip_rows = 1, column indices) if it is "
+                         "not")
+
+
+def _decoded(data: bytes, label: str) -> str:
+    """The text of a measurement file: UTF-8 (with or without the byte-order mark some
+    spreadsheets write), UTF-16 with its byte-order mark (Excel's "Unicode text"), else
+    Windows-1252 (Latin-1), in which German loggers write "°C" or "µm" in their headers.
+    Numbers are ASCII in all three: only header names depend on the guess."""
+    if data.startswith((b"\xff\xfe", b"\xfe\xff")):
+        try:
+            return data.decode("utf-16")
+        except UnicodeDecodeError as exc:
+            raise InputError(f"{label}: not UTF-16 text after its UTF-16 byte-order mark "
+                             f"(byte {exc.start}); save it as UTF-8") from None
+    if b"\x00" in data[:65536]:
+        raise InputError(f"{label} is not a text file (it holds NUL bytes): give the "
+                         "measurement as a text table, e.g. CSV")
+    try:
+        return data.decode("utf-8").removeprefix("\ufeff")
+    except UnicodeDecodeError as exc:
+        try:
+            return data.decode("cp1252")
+        except UnicodeDecodeError:
+            line = data[:exc.start].count(b"\n") + 1
+            raise InputError(f"{label}, row {line}: byte 0x{data[exc.start]:02x} is neither "
+                             "UTF-8 nor Windows-1252 text; save the file as UTF-8") from None
 
 
 def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | None = None,
@@ -255,8 +344,7 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
     """
     path = Path(path)
     label = str(path)
-    text = read_input_text(path, "measurement file", MAX_DATA_BYTES)
-    text = text.removeprefix("\ufeff")  # the byte-order mark some spreadsheets write
+    text = _decoded(read_input_bytes(path, "measurement file", MAX_DATA_BYTES), label)
     if index is not None and index not in {c.quantity for c in columns}:
         raise InputError(f"{label}: the column mapping needs a {index} column")
     if decimal not in (".", ","):
@@ -273,10 +361,18 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
         if not lines:
             raise InputError(f"{label}: no header line found")
         names = _split(lines[0][1], delimiter)
-        header_line = lines[0][1]
+        header_row, header_line = lines[0]
         lines = lines[1:]
     if len(lines) < 3:
         raise InputError(f"{label}: only {len(lines)} data rows; a measurement needs at least 3")
+    if header and delimiter is None and len(names) != len(_split(lines[0][1], None)):
+        # split at blanks, "Zeit [s]" is two names: every name after it points one column off
+        if any(isinstance(spec.column, str) for spec in columns):
+            raise InputError(f"{label}, row {header_row}: the header line {header_line!r} has "
+                             f"{len(names)} names split at blanks, the rows have "
+                             f"{len(_split(lines[0][1], None))} columns; header names with "
+                             "spaces need the file's delimiter, e.g. delimiter = '\\t' or ';'")
+        names = []  # not aligned with the columns: no unit checks against it
     indices = []
     for spec in columns:
         where = f"{label}, column {spec.column!r} ({spec.quantity})"
@@ -302,10 +398,16 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
             try:
                 value = _number(cells[idx], decimal)
             except ValueError:
+                if names and cells[:len(names)] == names:
+                    hint = ("; the row repeats the header line (a logger restarted?): remove "
+                            "it, or split the file there")
+                elif header and r == 0 and _not_numbers(cells, decimal):
+                    hint = (f"; a units row under the header? Read the file with header = "
+                            f"false, skip_rows = {lineno} and 1-based column indices")
+                else:
+                    hint = _delimiter_hint(line, delimiter, cells[idx], decimal)
                 raise InputError(f"{label}, row {lineno}, column {idx + 1} ({spec.quantity}): "
-                                 f"{cells[idx]!r} is not a number"
-                                 + _delimiter_hint(line, delimiter, cells[idx], decimal)) \
-                    from None
+                                 f"{cells[idx]!r} is not a number{hint}") from None
             if not math.isfinite(value):
                 raise InputError(f"{label}, row {lineno}, column {idx + 1} ({spec.quantity}): "
                                  f"{cells[idx]!r} is not a finite number")
@@ -313,6 +415,9 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
     data = {}
     for c, spec in enumerate(columns):
         convert = _si_factor(spec.unit, spec.quantity, f"{label}, column {spec.column!r}")
+        if indices[c] < len(names):
+            _check_header_unit(names[indices[c]], spec, convert,
+                               f"{label}, column {indices[c] + 1} ({spec.quantity})")
         data[spec.quantity] = convert(values[:, c] * spec.scale)
         if QUANTITIES[spec.quantity] == "K":  # an absolute temperature
             cold = np.flatnonzero(~(data[spec.quantity] > 0))

@@ -17,6 +17,7 @@ __all__ = [
     "SlidingPhase",
     "friction_level",
     "phase_mask",
+    "position_velocity_ratio",
     "sliding_phases",
     "smooth_derivative",
     "step_averages",
@@ -171,6 +172,44 @@ def phase_mask(n, phases) -> np.ndarray:
     for p in phases:
         mask[p.start:p.stop] = True
     return mask
+
+
+def position_velocity_ratio(time, position, velocity, phases, window=0.2):
+    """How the derivative of a measured position compares with a measured velocity.
+
+    The median of |dx/dt| (:func:`smooth_derivative`) over the median of |v|, both over the
+    sliding phases: about 1 when the time, position and velocity columns have the units they
+    are declared with; a unit slip shows as its factor (a time in ms declared as s: 1/1000,
+    a velocity in mm/s declared as m/s: 1/1000).
+
+    Parameters
+    ----------
+    time, position, velocity : array_like
+        Samples [s], [m], [m/s].
+    phases : list of SlidingPhase
+        Where to compare (:func:`sliding_phases`).
+    window : float
+        Smoothing window of the derivative [s].
+
+    Returns
+    -------
+    float
+
+    Examples
+    --------
+    >>> t = np.linspace(0, 8, 801)
+    >>> v = 0.01 * np.sign(np.sin(np.pi * t / 2))
+    >>> x = np.concatenate([[0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * np.diff(t))])
+    >>> round(position_velocity_ratio(t, x, v, sliding_phases(t, v)), 3)
+    1.0
+    >>> round(position_velocity_ratio(t * 1000, x, v, sliding_phases(t * 1000, v)), 6)
+    0.001
+    """
+    t = np.asarray(time, dtype=float)
+    v = np.asarray(velocity, dtype=float)
+    mask = phase_mask(t.size, phases)
+    derivative = smooth_derivative(t, position, window=window)
+    return float(np.median(np.abs(derivative[mask])) / np.median(np.abs(v[mask])))
 
 
 def friction_level(friction, phases):

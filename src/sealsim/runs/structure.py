@@ -10,6 +10,7 @@ and writes ``map.nc``, the tables and the figures.  Both can be used from Python
 
 from __future__ import annotations
 
+import shutil
 from collections.abc import Callable
 from pathlib import Path
 
@@ -143,7 +144,9 @@ def map_case_file(path: str | Path, out: str | Path, force: bool = False,
     Writes ``map.nc`` (xarray/netCDF, SI units, the resolved case as attribute ``case``),
     ``map.csv`` (flat table in engineering units), ``map_profiles.csv`` (contact pressure
     p(z) at every grid point), ``map.png``, ``map_profiles.png`` and ``case_resolved.toml``.
-    Only cases without variants.
+    Only cases without variants.  Finished load paths are kept in ``.OUT.map`` next to
+    ``out`` until the results are written: run the same command again after an interruption
+    (Ctrl-C, a killed process) and only the missing paths are computed.
 
     Returns
     -------
@@ -160,8 +163,12 @@ def map_case_file(path: str | Path, out: str | Path, force: bool = False,
                          "map.temperature grids")
     text = _resolved_text(cases)
 
+    target = Path(out).resolve()
+    kept = target.with_name(f".{target.name}.map")
+
     def compute(name, case, report):
-        return compute_map(case, workers=workers, progress=progress, case_text=text)
+        return compute_map(case, workers=workers, progress=progress, case_text=text,
+                           keep=kept)
 
     def write(folder, results):
         ds = results["map"]
@@ -195,5 +202,7 @@ def map_case_file(path: str | Path, out: str | Path, force: bool = False,
             folder.savefig(name, plot_map_profiles(ds, i, title=title))
         folder.write_text("case_resolved.toml", text)
 
-    return run_variants({"map": case}, out, compute, write, force=force,
-                        inputs=_inputs(path, cases))["map"]
+    ds = run_variants({"map": case}, out, compute, write, force=force,
+                      inputs=_inputs(path, cases))["map"]
+    shutil.rmtree(kept, ignore_errors=True)   # the map is written: its paths are not needed
+    return ds

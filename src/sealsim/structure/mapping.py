@@ -20,14 +20,20 @@ from __future__ import annotations
 
 import concurrent.futures as cf
 import copy
+import hashlib
 import json
+import os
+import threading
+import time
 import warnings
 from collections.abc import Callable
+from pathlib import Path
 
 import numpy as np
 import xarray as xr
 
 from sealsim.errors import InputError, SealsimWarning
+from sealsim.files import atomic_write_text
 from sealsim.structure.build import (
     build_assembly,
     build_material,
@@ -122,9 +128,63 @@ def _map_task(case_data: dict, squeeze: float | None, temperature: float,
     }
 
 
+def _end_with_parent() -> None:
+    """Pool-worker initializer: the worker ends itself once the process that started it is
+    gone.  A parent killed by SIGKILL (no clean-up runs) left its workers to finish their FE
+    path and then wait for work forever; a parent's Ctrl-C is handled by the pool itself.
+    (The parent is whoever started the worker: the map's process, or a forkserver that ends
+    with it.)"""
+    parent = os.getppid()
+
+    def watch() -> None:
+        while os.getppid() == parent:
+            time.sleep(0.5)
+        os._exit(1)
+
+    threading.Thread(target=watch, name="end-with-parent", daemon=True).start()
+
+
+class _KeptPaths:
+    """Finished FE load paths of a map kept in a folder, so that a build that is interrupted
+    (Ctrl-C, SIGKILL, power loss) computes only the missing paths when it is run again.
+
+    Each path is one JSON file named by a hash of everything its values depend on -- the
+    resolved case, its (squeeze, temperature), the stored profile positions, the FE model's
+    fingerprint and a compound file's content, as the map cache's key
+    (:func:`sealsim.pneumatic.contact_maps.build_or_load_fe_map`) -- so a changed case or
+    model never reuses a path.  JSON keeps every float exactly (shortest repr).
+    """
+
+    def __init__(self, folder: str | Path, case: StructureCase, case_data: dict,
+                 positions: np.ndarray):
+        from sealsim.properties.elastomers import compound_file_digest
+        from sealsim.structure.fingerprint import model_fingerprint
+
+        self.folder = Path(folder)
+        self._salt = json.dumps({"case": case_data, "positions": positions.tolist(),
+                                 "model": model_fingerprint(),
+                                 "material": compound_file_digest(case.material.elastomer)},
+                                sort_keys=True)
+
+    def _file(self, key: tuple) -> Path:
+        text = f"{self._salt}|{key[0]!r}|{key[1]!r}"
+        return self.folder / f"{hashlib.sha256(text.encode('utf-8')).hexdigest()[:32]}.json"
+
+    def load(self, key: tuple) -> dict | None:
+        try:
+            return json.loads(self._file(key).read_text(encoding="utf-8"))
+        except (OSError, ValueError):   # not computed yet, or a damaged file: compute it
+            return None
+
+    def save(self, key: tuple, out: dict) -> None:
+        self.folder.mkdir(parents=True, exist_ok=True)
+        atomic_write_text(self._file(key), json.dumps(
+            {k: np.asarray(v).tolist() for k, v in out.items()}))
+
+
 def compute_map(case: StructureCase, *, workers: int | None = None,
                 progress: Callable[[int, int], None] | None = None,
-                case_text: str = "") -> xr.Dataset:
+                case_text: str = "", keep: str | Path | None = None) -> xr.Dataset:
     """Compute the characteristic map of a case with a ``[map]`` table.
 
     Parameters
@@ -137,6 +197,10 @@ def compute_map(case: StructureCase, *, workers: int | None = None,
         ``progress(done, total)`` after each finished (squeeze, temperature) path.
     case_text : str
         Resolved case (TOML) stored as the ``case`` attribute.
+    keep : path, optional
+        Folder where every finished load path is kept (:class:`_KeptPaths`): a build run
+        again after an interruption reuses them and computes only the missing paths.  The
+        caller removes the folder once the map is stored.
 
     Returns
     -------
@@ -163,7 +227,6 @@ def compute_map(case: StructureCase, *, workers: int | None = None,
     arrays = {v: np.full(shape, np.nan) for v in scalars}
     profile = np.full(shape + (len(positions),), np.nan)
     totals = {"ndofs": 0, "increments": 0, "cutbacks": 0}
-    n_workers = max(1, min(workers or spec.workers, len(tasks)))
 
     def store(key, out):
         i, j = squeezes.index(key[0]), spec.temperature.index(key[1])
@@ -174,23 +237,39 @@ def compute_map(case: StructureCase, *, workers: int | None = None,
         totals["increments"] += out["increments"]
         totals["cutbacks"] += out["cutbacks"]
 
-    done = 0
+    kept = None if keep is None else _KeptPaths(keep, case, data, positions)
+    done, todo = 0, []
+    for key in tasks:
+        out = None if kept is None else kept.load(key)
+        if out is None:
+            todo.append(key)
+        else:
+            store(key, out)
+            done += 1
+
+    def finished(key, out):
+        nonlocal done
+        if kept is not None:
+            kept.save(key, out)
+        store(key, out)
+        done += 1
+        if progress:
+            progress(done, len(tasks))
+
+    if progress and done:
+        progress(done, len(tasks))
+    n_workers = max(1, min(workers or spec.workers, len(todo)))
     if n_workers == 1:
         installed: dict = {}
-        for key in tasks:
-            store(key, _map_task(data, *key, positions, installed))
-            done += 1
-            if progress:
-                progress(done, len(tasks))
+        for key in todo:
+            finished(key, _map_task(data, *key, positions, installed))
     else:
-        with cf.ProcessPoolExecutor(max_workers=n_workers) as pool:
-            futures = {pool.submit(_map_task, data, *key, positions): key for key in tasks}
+        with cf.ProcessPoolExecutor(max_workers=n_workers,
+                                    initializer=_end_with_parent) as pool:
+            futures = {pool.submit(_map_task, data, *key, positions): key for key in todo}
             try:
                 for fut in cf.as_completed(futures):
-                    store(futures[fut], fut.result())
-                    done += 1
-                    if progress:
-                        progress(done, len(tasks))
+                    finished(futures[fut], fut.result())
             except BaseException:
                 for f in futures:
                     f.cancel()
