@@ -108,8 +108,8 @@ def test_compare_refuses_a_measurement_longer_than_the_run(tmp_path):
                                  "--out", str(tmp_path / "o"), "--quiet"])
     assert result.exit_code == 2
     assert ("the model counts from the start of the case's run (0 s), the file from 100 s: if "
-            "its clock does not start with the run, shift the file's time column (e.g. "
-            "subtract 100 s)") in " ".join(result.output.split())
+            "its clock does not start with the run, give --time-offset '100 s'") in " ".join(
+                result.output.split())
 
 
 def test_compare_of_absolute_pressures_says_so(tmp_path):
