@@ -131,6 +131,32 @@ def test_a_host_the_server_cannot_listen_on_is_refused_before_it_starts(host, pr
     assert "give an IP address or host name of this computer, e.g. 127.0.0.1" in message
 
 
+def test_the_announced_address_of_an_ipv6_host_opens(tmp_path):
+    # `sealsim app --host ::1` announced http://::1:PORT/, which no browser opens: an IPv6
+    # literal goes in brackets (RFC 3986); the announced address must serve the app
+    import socket
+    import urllib.request
+
+    from sealsim.app import server_url, start_server
+
+    assert server_url("::1", 8050) == "http://[::1]:8050/"
+    assert server_url("127.0.0.1", 8050) == "http://127.0.0.1:8050/"
+    if not socket.has_ipv6:
+        pytest.skip("this machine has no IPv6")
+    from sealsim.errors import InputError
+
+    try:
+        server, url = start_server(host="::1", port=0, work_dir=tmp_path / "jobs")
+    except (OSError, InputError):
+        pytest.skip("no IPv6 loopback here")
+    try:
+        assert url.startswith("http://[::1]:")
+        assert urllib.request.urlopen(url, timeout=30).status == 200
+    finally:
+        server.shutdown()
+        server.app.extensions["sealsim_jobs"].close()
+
+
 @pytest.mark.filterwarnings("ignore::sealsim.tribology.film.FilmRangeWarning")
 def test_the_lip_seal_pages_case_file_ends_at_the_pages_operating_point():
     # The page offers its calculation as a rotary case held until steady.  With a free sump

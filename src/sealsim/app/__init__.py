@@ -20,7 +20,7 @@ import webbrowser
 from collections.abc import Callable
 from pathlib import Path
 
-__all__ = ["check_host", "serve", "start_server"]
+__all__ = ["check_host", "serve", "server_url", "start_server"]
 
 _HOSTS_ALLOWED = ("an IP address or host name of this computer, e.g. 127.0.0.1 (this computer "
                   "only) or 0.0.0.0 (every network interface)")
@@ -94,7 +94,18 @@ def start_server(host: str = "127.0.0.1", port: int = 0, *, run_timeout: float =
     server.app = app
     threading.Thread(target=server.serve_forever, daemon=True).start()
     threading.Thread(target=_warm_up, daemon=True).start()
-    return server, f"http://{host}:{server.server_port}/"
+    return server, server_url(host, server.server_port)
+
+
+def server_url(host: str, port: int) -> str:
+    """The address a browser opens: an IPv6 literal in brackets (RFC 3986, 3.2.2).
+
+    >>> server_url("127.0.0.1", 8050), server_url("::1", 8050)
+    ('http://127.0.0.1:8050/', 'http://[::1]:8050/')
+    """
+    if ":" in host and not host.startswith("["):
+        host = f"[{host}]"
+    return f"http://{host}:{port}/"
 
 
 def _warm_up() -> None:
