@@ -233,6 +233,12 @@ def test_gland_page_names_the_failed_check_of_an_example(server, browser):
     assert browser.find_element("id", "gland-failed").text == "extrusion_gap"
     row = browser.find_element("css selector", "#gland-checks tr[data-name='extrusion_gap']")
     assert row.get_attribute("class") == "fail"
+    # values and limits with their units, the checks named as the CLI prints them (the table
+    # had no units and headed the values "worst case", also for stretch_min at assembly)
+    cells = [c.text for c in row.find_elements("css selector", "td")]
+    assert cells[2].endswith(" mm") and cells[3].startswith("≤ ") and cells[3].endswith(" mm")
+    squeeze = browser.find_element("css selector", "#gland-checks tr[data-name='squeeze_min']")
+    assert squeeze.find_elements("css selector", "td")[2].text.endswith(" %")
     expected = sealsim.oring_gland(EXAMPLES / "gland" / "rod_extrusion_fails.toml")
     cell = browser.find_element("id", "gland-squeeze_percent-min")
     assert float(cell.get_attribute("data-value")) == expected["squeeze_percent"]["min"]

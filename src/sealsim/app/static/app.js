@@ -173,7 +173,7 @@ function fillChecks(checks) {
   const table = $("gland-checks");
   table.replaceChildren();
   const head = table.insertRow();
-  for (const text of ["", "check", "worst case", "limit", "source"]) {
+  for (const text of ["", "check", "value", "limit", "source"]) {
     const th = document.createElement("th");
     th.textContent = text;
     head.appendChild(th);
@@ -183,11 +183,11 @@ function fillChecks(checks) {
     row.className = check.ok ? "ok" : "fail";
     row.dataset.name = check.name;
     row.insertCell().textContent = check.ok ? "ok" : "FAIL";
-    row.insertCell().textContent = check.name;
+    row.insertCell().textContent = check.label;
     const value = row.insertCell();
     value.dataset.value = String(check.value);
-    value.textContent = Number(check.value).toPrecision(4);
-    row.insertCell().textContent = `${check.bound === "min" ? "≥" : "≤"} ${Number(check.limit).toPrecision(4)}`;
+    value.textContent = `${Number(check.value).toPrecision(4)} ${check.unit}`;
+    row.insertCell().textContent = `${check.bound === "min" ? "≥" : "≤"} ${Number(check.limit).toPrecision(4)} ${check.unit}`;
     row.insertCell().textContent = check.source + (check.maker ? " (a seal maker's recommendation)" : "");
   }
 }
