@@ -125,11 +125,11 @@ def create_app(config: AppConfig) -> Flask:
     def gland():
         import sealsim
 
-        from sealsim.plotting.gland import check_label, check_unit
+        from sealsim.plotting.gland import check_label
 
         report, notes = call_with_notes(sealsim.oring_gland, _gland_case(request))
-        for check in report["checks"]:        # shown as the CLI prints them
-            check["label"], check["unit"] = check_label(check), check_unit(check)
+        for check in report["checks"]:        # named as the CLI prints them
+            check["label"] = check_label(check)
         return _json({"report": report, "notes": _merge(report.get("notes", []), notes)})
 
     @app.post("/api/gland/figure")

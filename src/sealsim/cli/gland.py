@@ -40,7 +40,7 @@ def check(
     check is a result, not an error: the command exits with 0 and names it (report.json
     "ok": false, "failed": [...]).
     """
-    from sealsim.plotting.gland import check_label, check_unit
+    from sealsim.plotting.gland import check_label
     from sealsim.runs.gland import check_case_file
 
     with variant_progress("FE", quiet, lambda _, done, total: f"{done:.0f}/{total:.0f}") \
@@ -56,9 +56,8 @@ def check(
     for c in report["checks"]:
         mark = "[green]ok  [/]" if c["ok"] else "[bold red]FAIL[/]"
         sign = ">=" if c["bound"] == "min" else "<="
-        unit = check_unit(c)
-        console.print(f"{mark} {check_label(c):<26} {c['value']:.3g} {unit} {sign} "
-                      f"{c['limit']:.3g} {unit}")
+        console.print(f"{mark} {check_label(c):<26} {c['value']:.3g} {c['unit']} {sign} "
+                      f"{c['limit']:.3g} {c['unit']}")
     if "fe" in report:
         f = report["fe"]
         out_, in_ = f["friction_N"]["outstroke"], f["friction_N"]["instroke"]

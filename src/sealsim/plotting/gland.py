@@ -8,7 +8,7 @@ from matplotlib.patches import Circle, Polygon, Rectangle
 
 from sealsim.plotting import new_figure
 
-__all__ = ["check_label", "check_unit", "plot_gland_section"]
+__all__ = ["check_label", "plot_gland_section"]
 
 _METAL = {"facecolor": "#c8ccd2", "edgecolor": "#4a4f57", "linewidth": 1.0}
 
@@ -26,12 +26,6 @@ def check_label(check: dict) -> str:
     """
     at = _CHECKED_AT.get(check["name"])
     return f"{check['name']} ({at})" if at else check["name"]
-
-
-def check_unit(check: dict) -> str:
-    """The unit of a check's value and limit in ``report.json``: mm for the extrusion gap,
-    percent for squeeze, stretch and gland fill."""
-    return "mm" if check["name"] == "extrusion_gap" else "%"
 
 
 def _grooved(ax, corners, label):
@@ -191,9 +185,8 @@ def _summary(ax, report: dict) -> None:
     for c in report["checks"]:
         sign = ">=" if c["bound"] == "min" else "<="
         mark = "ok  " if c["ok"] else "FAIL"
-        unit = check_unit(c)
-        lines.append(f"{mark} {check_label(c):<26}{c['value']:7.3g} {unit:<2} {sign}"
-                     f"{c['limit']:6.3g} {unit}")
+        lines.append(f"{mark} {check_label(c):<26}{c['value']:7.3g} {c['unit']:<2} {sign}"
+                     f"{c['limit']:6.3g} {c['unit']}")
     ax.text(0.0, 1.0, "\n".join(lines), va="top", ha="left", family="monospace", fontsize=9,
             transform=ax.transAxes)
     verdict = "all checks pass" if report["ok"] else "FAILS: " + ", ".join(report["failed"])

@@ -18,7 +18,7 @@ import pandas as pd
 from sealsim import __version__
 from sealsim.cases import dump_case_toml
 from sealsim.output import ResultFolder, run_variants
-from sealsim.plotting.gland import check_unit, plot_gland_section
+from sealsim.plotting.gland import plot_gland_section
 from sealsim.structure.gland_case import load_gland_case
 
 __all__ = ["check_case_file", "stack_frame", "write_results"]
@@ -79,11 +79,9 @@ def write_results(folder: ResultFolder, case, report: dict[str, Any], source: st
     """report.json, checks.csv, stack.csv, section.png and case_resolved.toml."""
     folder.write_json("report.json", {"source": source, "sealsim_version": __version__,
                                       **report})
-    checks = pd.DataFrame(report["checks"])
-    checks.insert(checks.columns.get_loc("limit") + 1, "unit",
-                  [check_unit(c) for c in report["checks"]])
-    folder.write_csv("checks.csv", checks[["name", "value", "limit", "unit", "bound", "ok",
-                                           "maker", "source"]], float_format="%.6g")
+    folder.write_csv("checks.csv", pd.DataFrame(report["checks"])[
+        ["name", "value", "limit", "unit", "bound", "ok", "maker", "source"]],
+        float_format="%.6g")
     folder.write_csv("stack.csv", stack_frame(report), float_format="%.6g")
     folder.savefig("section.png", plot_gland_section(case, report))
     folder.write_text("case_resolved.toml", dump_case_toml(

@@ -416,7 +416,8 @@ def design_checks(stack: dict[str, dict[str, float]], *, motion: str, cord: floa
                   pressure: float, hardness_shore_a: float, silicone: bool = False,
                   overrides: dict[str, float] | None = None,
                   housing: str | None = None) -> list[dict[str, Any]]:
-    """The list of checks ``{"name", "value", "limit", "ok", "source", "maker"}``.
+    """The list of checks ``{"name", "value", "limit", "unit", "ok", "bound", "source",
+    "maker"}``.
 
     Parameters
     ----------
@@ -438,7 +439,7 @@ def design_checks(stack: dict[str, dict[str, float]], *, motion: str, cord: floa
     housing : {"piston", "rod", "face"}, optional
         A piston gland adds the check ``stretch_min``.
 
-    Values and limits are percent for squeeze, stretch and fill, mm for the gap.
+    Values and limits are percent for squeeze, stretch and fill, mm for the gap (``unit``).
     """
     overrides = {k: v for k, v in (overrides or {}).items() if v is not None}
     limits = list(DESIGN_LIMITS[motion]) + list(DESIGN_LIMITS["any"])
@@ -457,10 +458,10 @@ def design_checks(stack: dict[str, dict[str, float]], *, motion: str, cord: floa
             lim = DesignLimit(lim.name, lim.quantity, lim.bound, overrides[key],
                               "your limit (case file [limits])", maker=False)
         value = stack[lim.quantity][lim.bound]
-        scale = 1e3 if lim.quantity == "gap" else 100.0
+        scale, unit = (1e3, "mm") if lim.quantity == "gap" else (100.0, "%")
         checks.append({"name": lim.name, "value": value * scale, "limit": lim.value * scale,
-                       "ok": bool(lim.ok(value)), "bound": lim.bound, "source": lim.source,
-                       "maker": lim.maker})
+                       "unit": unit, "ok": bool(lim.ok(value)), "bound": lim.bound,
+                       "source": lim.source, "maker": lim.maker})
     return checks
 
 
