@@ -11,9 +11,9 @@ from __future__ import annotations
 from pathlib import Path
 
 import typer
-from rich.markup import escape
+from rich.text import Text
 
-from sealsim.cli._common import console, err_console, guarded, variant_progress
+from sealsim.cli._common import console, err_console, guarded, print_notes, variant_progress
 from sealsim.cli.friction import friction_app
 from sealsim.cli.pneumatic import pneumatic_app
 from sealsim.cli.rotary import rotary_app
@@ -62,12 +62,11 @@ def fit(
         console.print(f"{name} ({c['runs']} runs): measured {c['F_measured_mean_N']:.3f} ± "
                       f"{c['F_measured_std_N']:.3f} N (1 std of a run, cv {cv}), model "
                       f"{c['F_predicted_mean_N']:.3f} N, error of the mean {error} ({in_std})")
-    for text in summary["warnings"]:
-        console.print(f"[yellow]warning:[/yellow] {escape(text)}")
+    print_notes(summary["warnings"], indent="", label="warning")
     console.print(f"results written to {out}")
     if summary["status"] != "ok":
         for text in summary["failure"]:
-            err_console.print(f"[bold red]fit failed:[/bold red] {text}")
+            err_console.print(Text("fit failed: ", style="bold red") + Text(text))
         raise typer.Exit(1)
 
 
@@ -140,12 +139,11 @@ def rotary_fit(
             line += (f"; groove temperature RMSE {m['T_groove_rmse_K']:.2f} K, max "
                      f"{m['T_groove_error_max_K']:.2f} K")
         console.print(line)
-    for text in summary["warnings"]:
-        console.print(f"[yellow]warning:[/yellow] {escape(text)}")
+    print_notes(summary["warnings"], indent="", label="warning")
     console.print(f"{summary['simulations']} simulations; results written to {out}")
     if summary["status"] != "ok":
         for text in summary["failure"]:
-            err_console.print(f"[bold red]fit failed:[/bold red] {text}")
+            err_console.print(Text("fit failed: ", style="bold red") + Text(text))
         raise typer.Exit(1)
 
 

@@ -10,9 +10,8 @@ from __future__ import annotations
 from pathlib import Path
 
 import typer
-from rich.markup import escape
 
-from sealsim.cli._common import console, guarded, variant_progress
+from sealsim.cli._common import console, guarded, print_notes, variant_progress
 
 fmu_app = typer.Typer(
     help="FMU export: seal friction, whole pneumatic cylinders and rotary lip seals as "
@@ -94,6 +93,5 @@ def build(
         console.print(f"co-simulation over the case's cycle against sealsim pneumatic run: "
                       f"extend time {100 * rel['extend_time_s']:.3f} %, retract time "
                       f"{100 * rel['retract_time_s']:.3f} %")
-    for note in report.get("notes", []):
-        console.print(f"[yellow]note:[/yellow] {escape(note)}")
+    print_notes(report.get("notes", []), indent="")
     console.print(f"FMU written to {result.path} (documentation/index.html inside)")

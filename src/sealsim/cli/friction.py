@@ -9,9 +9,8 @@ from __future__ import annotations
 from pathlib import Path
 
 import typer
-from rich.markup import escape
 
-from sealsim.cli._common import console, guarded, variant_progress
+from sealsim.cli._common import console, guarded, print_notes, variant_progress
 
 friction_app = typer.Typer(
     help="Dynamic friction laws (Stribeck, LuGre, Dahl, GMS, Θ rate-and-state) on test benches.",
@@ -41,8 +40,7 @@ def run(
 
     with variant_progress("friction", quiet, lambda _, f, __: f"{100 * f:.0f} %") as progress:
         summary = run_case_file(case, out, force, progress)
-    for text in summary["warnings"]:
-        console.print(f"[yellow]warning:[/yellow] {escape(text)}")
+    print_notes(summary["warnings"], indent="", label="warning")
     if summary["notes"]:
         console.print(f"({len(summary['notes'])} note(s) on the parameters in summary.json)")
     summaries = summary["variants"]

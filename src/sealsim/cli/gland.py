@@ -9,9 +9,8 @@ from __future__ import annotations
 from pathlib import Path
 
 import typer
-from rich.markup import escape
 
-from sealsim.cli._common import console, guarded, variant_progress
+from sealsim.cli._common import console, guarded, print_notes, variant_progress
 
 __all__ = ["gland_app"]
 
@@ -68,8 +67,7 @@ def check(
                       f"{out_['unpressurised']:.1f} / {in_['unpressurised']:.1f} N, at "
                       f"{f['pressure_bar']:g} bar {out_['at_pressure']:.1f} / "
                       f"{in_['at_pressure']:.1f} N")
-    for note in report["notes"]:
-        console.print(f"  [yellow]note:[/] {escape(note)}")
+    print_notes(report["notes"])
     verdict = "all checks pass" if report["ok"] else f"FAILED: {', '.join(report['failed'])}"
     console.print(f"[bold]{verdict}[/]; results written to {out}/ (report.json, checks.csv, "
                   "stack.csv, section.png, case_resolved.toml)")

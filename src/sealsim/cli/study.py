@@ -10,7 +10,6 @@ from __future__ import annotations
 from pathlib import Path
 
 import typer
-from rich.markup import escape
 from rich.progress import (
     BarColumn,
     MofNCompleteColumn,
@@ -21,7 +20,7 @@ from rich.progress import (
 )
 from rich.text import Text
 
-from sealsim.cli._common import console, err_console, guarded, sealsim_notices
+from sealsim.cli._common import console, err_console, guarded, print_notes, sealsim_notices
 
 #: Notes of summary.json printed after a study (the rest are counted)
 MAX_NOTES_SHOWN = 8
@@ -104,10 +103,9 @@ def run(
             console.print(f"  {name}: {o['min']:.4g} ... {o['max']:.4g}{unit} (median "
                           f"{o['P50']:.4g}, P5 {o['P5']:.4g}, P95 {o['P95']:.4g})")
     for failure in s["failures"][:3]:
-        console.print(f"  [yellow]run {failure['run']} failed:[/] {escape(failure['error'][:200])}")
+        print_notes([failure["error"][:200]], label=f"run {failure['run']} failed")
     notes = s.get("notes", [])
-    for note in notes[:MAX_NOTES_SHOWN]:
-        console.print(Text("  note: ", style="yellow") + Text(note))
+    print_notes(notes[:MAX_NOTES_SHOWN])
     if len(notes) > MAX_NOTES_SHOWN:
         console.print(f"  ({len(notes) - MAX_NOTES_SHOWN} more notes in summary.json)")
     console.print(f"results written to {out}/ (study.nc, runs.csv, summary.json, figures)")
