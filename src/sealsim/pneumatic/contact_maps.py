@@ -304,7 +304,14 @@ def energised_contact_pressure(position, force_per_length, width, pressure_diffe
     >>> z = np.array([-0.7e-3, -0.6e-3, 0.0, 0.6e-3])
     >>> (energised_contact_pressure(z, 1635.0, 1.229e-3, 6e5) / 1e6).round(3)
     array([0.   , 0.6  , 1.855, 0.6  ])
+    >>> energised_contact_pressure(z, 1635.0, 0.0, 6e5)
+    Traceback (most recent call last):
+    ...
+    sealsim.errors.InputError: energised_contact_pressure: width = 0.0 m must be > 0 and ...
     """
+    if not (width > 0.0 and force_per_length >= 0.0):
+        raise InputError(f"energised_contact_pressure: width = {width!r} m must be > 0 and "
+                         f"force_per_length = {force_per_length!r} N/m >= 0")
     z = np.asarray(position, dtype=float)
     a = 0.5 * width
     dp = min(max(float(pressure_difference), 0.0), force_per_length / width)
