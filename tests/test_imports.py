@@ -4,7 +4,7 @@ import cycles between modules, and no module imports a higher layer.
 Every import counts -- at the top of a module or inside a function -- because a deferred
 import still makes the lower module depend on the higher one.  Layers, lowest first:
 
-    base (errors, units, cases, files, ode) -> properties -> tribology, friction, structure,
+    base (errors, units, cases, files, tables, ode) -> properties -> tribology, friction, structure,
     thermal -> rotary, pneumatic -> measurements, calibration, fmu, studies, api ->
     output, plotting, runs, cli, app
 """
@@ -20,7 +20,7 @@ SRC = Path(__file__).resolve().parents[1] / "src"
 #: Layers, lowest first; a module belongs to the longest matching name.
 LAYERS = (
     ("base", ("sealsim", "sealsim.errors", "sealsim.units", "sealsim.cases", "sealsim.files",
-              "sealsim.ode")),
+              "sealsim.tables", "sealsim.ode")),
     ("properties", ("sealsim.properties",)),
     ("physics", ("sealsim.tribology", "sealsim.friction", "sealsim.structure",
                  "sealsim.thermal")),

@@ -54,7 +54,8 @@ def test_column_mapping_converts_units_with_pint(tmp_path):
     ("t,x,F,p\n0,0,1,1\n10,abc,1,1\n20,1,1,1\n", ["row 3", "column 2", "(position)", "'abc'"]),
     ("t,x,F,p\n0,0,1,1\n10,1,1\n20,1,1,1\n", ["row 3", "column 4", "missing"]),
     ("t,x,F,p\n0,0,1,1\n10,nan,1,1\n20,1,1,1\n", ["row 3", "column 2", "not a finite"]),
-    ("t,x,F,p\n0,0,1,1\n10,1,1,1\n5,1,1,1\n", ["row 4", "column 1", "does not increase"]),
+    ("t,x,F,p\n0,0,1,1\n10,1,1,1\n5,1,1,1\n", ["row 4", "column 1", "5 after 10",
+                                             "must be strictly increasing"]),
     ("t,x,F,p\n0,0,1,1\n", ["at least 3"]),
 ])
 def test_bad_files_name_file_row_and_column(tmp_path, text, expected):

@@ -19,12 +19,13 @@ import textwrap
 import time
 from pathlib import Path
 
+import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from typer.testing import CliRunner
 
-from sealsim.cases import check_variant_name, expand_variants
+from sealsim.cases import check_variant_name, expand_variants, validate_case
 from sealsim.cli import app
 from sealsim.errors import InputError, ResultExistsError, SealsimError
 from sealsim.output import RESULT_MARKER, ResultFolder, json_ready, run_variants
@@ -397,19 +398,26 @@ csv = "duty.csv"
 
 
 @pytest.mark.parametrize("content, message", [
-    ("time_s,speed_rpm\n0,100\n0,200\n", "every row is at time_s = 0"),
-    ("time_s,speed_rpm\n", "has a header but no data rows"),
-    ("\ufefftime_s,speed_rpm\n", "has a header but no data rows"),  # BOM: header is found
-    ("speed,rpm\n0,1\n", "needs the columns time_s, speed_rpm; its header is speed, rpm"),
-    (b"\x7fELF\x02\x01\x00\x00\xff\xfe", "is not a UTF-8 text file"),
+    ("time_s,speed_rpm\n0,100\n0,200\n", "every row is at time 0"),
+    ("time_s,speed_rpm\n", "only 0 data rows; it needs at least 2"),
+    ("\ufefftime_s,speed_rpm\n", "only 0 data rows; it needs at least 2"),  # BOM: header found
+    # a header that states no unit: the numbers could be anything
+    ("speed,rpm\n0,1\n60,1\n", "column 1 (time): no unit is given and its header 'speed' "
+                                 "states none"),
+    ("t [s],n\n0,1\n60,1\n", "column 2 (speed): no unit is given and its header 'n'"),
+    ("t [s],n [Hz]\n0,1\n60,1\n", "'Hz' is ambiguous for a rotational speed"),
+    ("t [s],T [degC]\n0,1\n60,1\n", "'degC' is not a unit of speed"),
+    ("t [s],n [rpm]\n1,1\n60,1\n", "the time must start at 0 (the first row has 1 s)"),
+    (b"\x7fELF\x02\x01\x00\x00\xff\xfe", "is not a text file"),
     ("time_s,speed_rpm\n0,100\n2000000,100\n", "raise duty.max_duration"),
+    ("t [s],n [1/min]\n0,100\n60,50000\n", "within 0-47746 rpm"),
     (None, "is a folder"),
-    # the line and column of a bad cell (the message gave neither, or Python's float() text)
-    ("time_s,speed_rpm\n0,100\n60,abc\n", "line 3, column speed_rpm: 'abc' is not a finite"),
-    ("time_s,speed_rpm\n0,100\n60\n", "line 3, column speed_rpm: the value is missing"),
-    ("time_s,speed_rpm\n0,100\nnan,1\n", "line 3, column time_s: 'nan' is not a finite"),
-    ("time_s,speed_rpm\n0,1\n60,2\n30,3\n", "must not decrease (line 4: 30 after 60)"),
-    ("time_s;speed_rpm\n0;1\n", "separated by ';': the file must be comma-separated"),
+    # the row and column of a bad cell (the message gave neither, or Python's float() text)
+    ("time_s,speed_rpm\n0,100\n60,abc\n", "row 3, column 2 (speed): 'abc' is not a number"),
+    ("time_s,speed_rpm\n0,100\n60\n", "row 3: has 1 columns, column 2 (speed) is missing"),
+    ("time_s,speed_rpm\n0,100\nnan,1\n", "row 3, column 1 (time): 'nan' is not a finite"),
+    ("time_s,speed_rpm\n0,1\n60,2\n30,3\n", "row 4, column 1 (time): time 30 after 60"),
+    ("time_s;speed_rpm\n0;1\n60;1\n", "set delimiter = ';'"),
 ])
 def test_bad_duty_csv_is_one_message_and_writes_nothing(content, message, tmp_path):
     (tmp_path / "case.toml").write_text(ROTARY_CSV_CASE)
@@ -451,6 +459,45 @@ def test_duty_csv_with_bom_and_no_plateau_is_read():
         path.unlink()
     assert times.tolist() == [0.0, 60.0, 120.0]
     assert steps == [(0.0, 120.0)]  # a ramp only: summarised as one step, not none
+
+
+def test_duty_csv_reads_the_units_its_header_states(tmp_path):
+    # A rig's trace as German software writes it: semicolons, decimal commas, quoted names,
+    # minutes and U/min (revolutions per minute, DIN 1301); the same cycle as time_s/speed_rpm.
+    from sealsim.rotary.case import _read_duty_csv
+
+    german = tmp_path / "zyklus.csv"
+    german.write_text('"Zeit [min]";"Drehzahl [U/min]"\n0;0\n0,5;1000\n1,5;1000\n',
+                      encoding="cp1252")
+    plain = tmp_path / "cycle.csv"
+    plain.write_text("time_s,speed_rpm\n0,0\n30,1000\n90,1000\n")
+    times, speeds, steps = _read_duty_csv(german, delimiter=";", decimal=",")
+    reference = _read_duty_csv(plain)
+    np.testing.assert_allclose(times, reference[0], rtol=1e-12)
+    np.testing.assert_allclose(speeds, reference[1], rtol=1e-12)
+    assert speeds[-1] == pytest.approx(1000 * np.pi / 30, rel=1e-12)  # 1000 rpm in rad/s
+    assert steps == reference[2] == [(30.0, 90.0)]
+    # columns chosen by name, anywhere in the file
+    logged = tmp_path / "log.csv"
+    logged.write_text("T [degC],n [rpm],t [s]\n80,0,0\n80,500,60\n")
+    times, speeds, _ = _read_duty_csv(logged, time_column="t [s]", speed_column="n [rpm]")
+    assert times.tolist() == [0.0, 60.0] and speeds[-1] == pytest.approx(500 * np.pi / 30)
+
+
+def test_duty_csv_options_of_a_case_reach_the_reader(tmp_path):
+    # the [duty] fields delimiter/decimal/columns are read by a run, not only by the function
+    (tmp_path / "zyklus.csv").write_text("Zeit [s];Drehzahl [1/min]\n0;100\n60,0;100\n")
+    case = tmp_path / "case.toml"
+    case.write_text(ROTARY_CSV_CASE.replace('csv = "duty.csv"', 'csv = "zyklus.csv"\n'
+                                            'delimiter = ";"\ndecimal = ","'))
+    from sealsim.rotary.simulation import load_rotary_case
+
+    loaded = load_rotary_case(case)["base"]
+    times, speeds, _ = loaded.duty_cycle().profile(tmp_path)
+    assert times.tolist() == [0.0, 60.0] and speeds[0] == pytest.approx(100 * np.pi / 30)
+    with pytest.raises(InputError, match="decimal = ',' needs another delimiter"):
+        validate_case(type(loaded), {"seal": {"shaft_diameter": "80 mm"},
+                                     "duty": {"csv": "x.csv", "decimal": ","}})
 
 
 def _pneumatic(tmp_path, *edits):

@@ -26,9 +26,6 @@ results lists them all.
 
 from __future__ import annotations
 
-import csv
-import io
-import math
 from dataclasses import dataclass, fields
 from pathlib import Path
 from typing import Literal
@@ -38,7 +35,6 @@ from pydantic import Field, field_validator, model_validator
 
 from sealsim.cases import CaseModel, Q
 from sealsim.errors import InputError
-from sealsim.files import MAX_DATA_BYTES, read_input_bytes
 from sealsim.properties.elastomers import get_elastomer, is_compound_file
 from sealsim.properties.oils import FAMILIES, Oil, get_oil
 from sealsim.rotary.lip import (
@@ -52,6 +48,7 @@ from sealsim.rotary.lip import (
     default_width,
 )
 from sealsim.rotary.lip_fe import LipSpec
+from sealsim.tables import ColumnSpec, header_names, read_table
 from sealsim.tribology.film import EHL_EXPONENT, FILM_FLOOR, film_coefficient_matching_fit
 from sealsim.tribology.rolling_bearing import DEEP_GROOVE_OIL_BATH_F0
 from sealsim.tribology.rubber_friction import DEFAULT_ASPERITY_WAVELENGTH, DEFAULT_MASTER_CURVE
@@ -414,11 +411,21 @@ MAX_DUTY_DURATION = 1.0e6
 
 
 class DutyCycle(CaseModel):
-    """Speed over time: a list of steps, or a CSV file with columns time_s, speed_rpm."""
+    """Speed over time: a list of steps, or a CSV file of time and speed, their units in the
+    header (``time [s], speed [1/min]``, or the names ``time_s, speed_rpm``)."""
 
     steps: list[DutyStep] | None = None
-    csv: str | None = Field(None, description="CSV with columns time_s, speed_rpm "
-                                              "(relative paths: from the case file)")
+    csv: str | None = Field(None, description=(
+        "CSV of time and speed, a piecewise-linear profile (two rows at one time: a jump); "
+        "the header states the units, e.g. 'time [s]', 'n [1/min]' (or the names time_s, "
+        "speed_rpm); relative paths: from the case file"))
+    time_column: int | str = Field(1, description=(
+        "the CSV's time column: its header name or 1-based index"))
+    speed_column: int | str = Field(2, description=(
+        "the CSV's speed column: its header name or 1-based index"))
+    delimiter: Literal[",", ";", "\t"] = Field(",", description="the CSV's column separator")
+    decimal: Literal[".", ","] = Field(".", description=(
+        "the CSV's decimal separator (',' needs delimiter = ';' or a tab)"))
     max_duration: Q("time", gt=0) = Field(MAX_DUTY_DURATION, description=(
         "longest duty cycle that is run (default 1e6 s, about 11.6 days, a few minutes of "
         "computing): a guard against a unit slip such as '1000 h' for '1000 s'; raise it "
@@ -433,6 +440,8 @@ class DutyCycle(CaseModel):
     def _one_source(self):
         if (self.steps is None) == (self.csv is None):
             raise ValueError("give either steps = [...] or csv = 'file.csv'")
+        if self.decimal == "," and self.delimiter == ",":
+            raise ValueError("decimal = ',' needs another delimiter, e.g. delimiter = ';'")
         if self.steps is not None and not self.steps:
             raise ValueError("steps must not be empty")
         if self.steps is not None:
@@ -478,55 +487,49 @@ class DutyCycle(CaseModel):
                 previous = step.speed
             return np.array(times), np.array(speeds), steps
         path = Path(self.csv) if base_dir is None else base_dir / self.csv
-        times, speeds, steps = _read_duty_csv(path)
+        times, speeds, steps = _read_duty_csv(path, self.time_column, self.speed_column,
+                                              self.delimiter, self.decimal)
         too_long = self._too_long(float(times[-1]), f"the CSV {str(path)!r} lasts")
         if too_long:
             raise InputError(f"duty: {too_long}")
         return times, speeds, steps
 
 
-def _read_duty_csv(path: Path):
-    """Break points, speeds and constant-speed steps of a duty-cycle CSV (every problem an
-    InputError naming the file and row)."""
-    where = f"duty.csv: {str(path)!r}"
-    data = read_input_bytes(path, "duty.csv file", MAX_DATA_BYTES)
+#: Header names of a duty-cycle CSV that say their unit without brackets.
+DUTY_CSV_NAMES = {"time_s": "s", "speed_rpm": "rpm"}
+
+
+def _read_duty_csv(path: Path, time_column: int | str = 1, speed_column: int | str = 2,
+                   delimiter: str = ",", decimal: str = "."):
+    """Break points, speeds and constant-speed steps of a duty-cycle CSV, read by
+    :func:`sealsim.tables.read_table` (every problem an InputError naming the file, row and
+    column).  The columns' units are those their header names state (``t [s]``,
+    ``n [1/min]``); ``time_s`` and ``speed_rpm`` are read as seconds and rpm."""
+    where = f"duty.csv: {path}"
     try:
-        # utf-8-sig: a byte-order mark (spreadsheet export) is not part of the first header
-        reader = csv.DictReader(io.StringIO(data.decode("utf-8-sig"), newline=""))
-        header = reader.fieldnames or []
-        rows = list(reader)
-    except UnicodeDecodeError:
-        raise InputError(f"{where} is not a UTF-8 text file (a CSV with columns time_s, "
-                         "speed_rpm)") from None
-    except csv.Error as exc:  # NUL bytes of a binary file
-        raise InputError(f"{where} cannot be read as CSV: {exc}") from None
-    header = [h.strip() for h in header if h is not None]
-    if not {"time_s", "speed_rpm"} <= set(header):
-        other = next((d for d in ";\t" if any(d in h for h in header)), None)
-        raise InputError(f"{where} needs the columns time_s, speed_rpm; its header is "
-                         f"{', '.join(header) or '(empty)'}"
-                         + (f" (separated by {other!r}: the file must be comma-separated, "
-                            "with a decimal point)" if other else ""))
-    if not rows:
-        raise InputError(f"{where} has a header but no data rows")
-    rows = [{(k or "").strip(): v for k, v in r.items()} for r in rows]
-    times, rpm = (np.array([_csv_number(r.get(column), where, k + 2, column)
-                            for k, r in enumerate(rows)])
-                  for column in ("time_s", "speed_rpm"))
-    if len(times) < 2:
-        raise InputError(f"{where} needs at least two rows")
+        names = header_names(path, delimiter=delimiter, what="duty.csv file")
+        specs = []
+        for quantity, column in (("time", time_column), ("speed", speed_column)):
+            name = column if isinstance(column, str) else (
+                names[column - 1] if 0 < column <= len(names) else "")
+            specs.append(ColumnSpec(quantity, column, DUTY_CSV_NAMES.get(name)))
+        table = read_table(path, specs, delimiter=delimiter, decimal=decimal, header=True,
+                           min_rows=2, what="duty.csv file", index_may_repeat=True)
+    except InputError as exc:
+        text = str(exc)
+        if "no unit is given" in text and time_column == 1 and speed_column == 2:
+            text += ("; or name the columns time_s, speed_rpm (or set duty.time_column and "
+                     "duty.speed_column to the columns holding them)")
+        raise InputError(f"duty.csv: {text}") from None
+    times, speeds = table.time, table.column("speed")
     if times[0] != 0:
-        raise InputError(f"{where}: time_s must start at 0 (line 2 has {times[0]:g})")
-    if np.any(np.diff(times) < 0):
-        k = int(np.flatnonzero(np.diff(times) < 0)[0]) + 1
-        raise InputError(f"{where}: time_s must not decrease (line {k + 2}: {times[k]:g} after "
-                         f"{times[k - 1]:g})")
+        raise InputError(f"{where}: the time must start at 0 (the first row has "
+                         f"{times[0]:g} s)")
     if times[-1] <= 0:
-        raise InputError(f"{where}: every row is at time_s = 0; the duty cycle needs a "
-                         "duration (time_s of the last row > 0)")
-    if np.any(rpm < 0) or np.any(rpm > 5000 * 60 / (2 * np.pi)):
-        raise InputError(f"{where}: speed_rpm must be within 0-47746 rpm")
-    speeds = rpm * np.pi / 30.0
+        raise InputError(f"{where}: every row is at time 0; the duty cycle needs a duration "
+                         "(the last row's time > 0)")
+    if np.any(speeds < 0) or np.any(speeds > 5000.0):
+        raise InputError(f"{where}: the speed must be within 0-47746 rpm (0-5000 rad/s)")
     steps, start = [], 0
     for k in range(1, len(times) + 1):  # plateaus of constant speed are the summary steps
         if k == len(times) or speeds[k] != speeds[start]:
@@ -536,19 +539,6 @@ def _read_duty_csv(path: Path):
     if not steps:  # a measured trace without exact plateaus: summarise it as one step
         steps = [(0.0, float(times[-1]))]
     return times, speeds, steps
-
-
-def _csv_number(text, where: str, line: int, column: str) -> float:
-    """A finite number of a duty-cycle CSV cell, else an InputError naming line and column."""
-    try:
-        value = float(text)
-    except (TypeError, ValueError):
-        value = math.nan
-    if not math.isfinite(value):
-        problem = ("the value is missing" if text is None or not str(text).strip()
-                   else f"{text!r} is not a finite number")
-        raise InputError(f"{where}, line {line}, column {column}: {problem}")
-    return value
 
 
 class Numerics(CaseModel):
