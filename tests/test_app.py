@@ -288,6 +288,8 @@ def test_two_tabs_run_cases_and_see_only_their_own_results(server, browser, tmp_
         if kind == "gland":
             _shot(browser, "run_case")
     assert "section.png" in files["gland"] and "force_velocity.png" not in files["gland"]
+    # the result folder's marker (bookkeeping of --force) is no result to download
+    assert not any(".sealsim-results" in name for names in files.values() for name in names)
     assert "force_velocity.png" in files["friction"] and "section.png" not in files["friction"]
     assert zips["gland"] != zips["friction"]
     with urllib.request.urlopen(zips["gland"]) as response:

@@ -26,6 +26,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from sealsim.output import RESULT_MARKER
+
 __all__ = ["CASE_RUNNERS", "Job", "JobManager", "TOKEN"]
 
 #: Kind of case -> (module of sealsim.runs, function, the command it stands for).
@@ -152,12 +154,14 @@ class JobManager:
         job.process.join(timeout=5)
 
     def files(self, job: Job) -> list[str]:
-        """Result files of a finished job, relative to its result folder (posix names)."""
+        """Result files of a finished job, relative to its result folder (posix names); not
+        the folder's marker file (:data:`~sealsim.output.RESULT_MARKER`, bookkeeping of
+        ``--force``, not a result)."""
         folder = job.folder / RESULT_FOLDER
         if job.state != "done" or not folder.is_dir():
             return []
         return sorted(p.relative_to(folder).as_posix() for p in folder.rglob("*")
-                      if p.is_file() and not p.is_symlink())
+                      if p.is_file() and not p.is_symlink() and p.name != RESULT_MARKER)
 
     def result_path(self, job: Job, name: str) -> Path | None:
         """The file ``name`` of a job's results if it is one of :meth:`files`, else None."""
