@@ -153,8 +153,9 @@ def test_default_wall_heat_gives_the_published_polytropic_exponent():
     # Richer & Hurmuzlu (2000) describe the pressure change by piston motion as p·V^1.2 = const
     # (from the chamber temperatures Al-Ibrahim & Otis 1992 measured in an actuating cylinder).
     # The default h reproduces it for a closed chamber of the Ø32 example compressed 2:1 in
-    # 0.3 s (prescribed motion, 5/3 valve closed): 1.2 within 0.02 (the exponent moves by
-    # about 0.003 per W/(m²·K) here); adiabatic walls give 1.4.
+    # 0.3 s (prescribed motion, 5/3 valve closed): 1.2 within 0.02, the source's one decimal
+    # (it gives 1.181; the exponent moves by about 0.0026 per W/(m²·K) here, h = 38 gives
+    # 1.198); adiabatic walls give 1.4.
     from sealsim.pneumatic.chambers import polytropic_exponent
 
     def exponent(h, heat_transfer="constant"):
@@ -180,9 +181,10 @@ def test_default_wall_heat_gives_the_published_polytropic_exponent():
     assert exponent("0 W/(m**2*K)") == pytest.approx(1.4, abs=1e-3)
     # free convection alone (Churchill & Chu at the chamber state, 6-17 W/(m²·K) here) is the
     # lower bound of the wall heat: the exponent lies between the default's and the adiabat,
-    # in the 1.30-1.37 that constant coefficients of 17 and 6 W/(m²·K) give (chambers module)
+    # in the 1.28-1.35 that constant coefficients of 17 and 6 W/(m²·K) give (chambers module;
+    # free convection gives 1.33)
     free = exponent(None, "free_convection")
-    assert 1.30 < free < 1.37
+    assert 1.28 < free < 1.35
 
 
 def test_free_convection_wall_heat_in_the_compiled_rhs():
