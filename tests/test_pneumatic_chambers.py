@@ -179,6 +179,9 @@ def test_default_wall_heat_gives_the_published_polytropic_exponent():
 
     assert exponent(None) == pytest.approx(1.2, abs=0.02)
     assert exponent("0 W/(m**2*K)") == pytest.approx(1.4, abs=1e-3)
+    # and the other limit, infinite heat transfer: isothermal, p·V = const (the air follows
+    # the wall within m·c_v/(h·A) ≈ 0.1 ms at h = 1e5; measured 1.0000003)
+    assert exponent("1e5 W/(m**2*K)") == pytest.approx(1.0, abs=1e-5)
     # free convection alone (Churchill & Chu at the chamber state, 6-17 W/(m²·K) here) is the
     # lower bound of the wall heat: the exponent lies between the default's and the adiabat,
     # in the 1.28-1.35 that constant coefficients of 17 and 6 W/(m²·K) give (chambers module;
