@@ -96,7 +96,7 @@ THERMAL_BOOKKEEPING = ("friction_heat", "heat_to_air", "heat_to_ambient")
  C_SPOOL_TAU, C_SPOOL_INIT, C_PROFILE_KIND, C_HFREE,
  C_AW1, C_AW1_X, C_AW2, C_AW2_X, C_AWROD, C_AWROD_X, C_NCONST) = range(54)
 #: the chambers' wall areas A_w1, A_w2 and the rod's share of A_w2 are affine in x: their
-#: values at x = 0 (C_AW1, C_AW2, C_AWROD) and slopes dA/dx (C_*_X) are those of
+#: values at x = 0 (C_AW1, C_AW2, C_AWROD) [m²] and slopes dA/dx (C_*_X) [m] are those of
 #: :func:`sealsim.pneumatic.chambers.chamber_wall_areas`, the one formula of the Python model,
 #: this right-hand side and the FMU's C (:class:`.system.PneumaticSystem`)
 
