@@ -125,8 +125,8 @@ def independent_extension(case: PneumaticCase, t_end: float, samples: np.ndarray
         v1 = cyl.dead_volume_cap + a1 * x
         v2 = cyl.dead_volume_rod + a2 * (length - x)
         q1 = h * chamber_wall_area(x + cyl.dead_volume_cap / a1, cyl.bore, a1) * (ta - t1)
-        q2 = h * chamber_wall_area(length - x + cyl.dead_volume_rod / a2, cyl.bore, a1) * (
-            ta - t2)
+        q2 = h * chamber_wall_area(length - x + cyl.dead_volume_rod / a2, cyl.bore, a2,
+                                   cyl.rod_diameter) * (ta - t2)
 
         def split(g_in_path, g_out_path, t_chamber):
             inflow = max(g_in_path, 0.0) + max(-g_out_path, 0.0)

@@ -121,3 +121,34 @@ def test_contact_map_and_grease_follow_the_seal_temperature():
     assert vars(seals[0].contact_map)["_tabulated_tables"]
     np.testing.assert_array_equal(simulate(case, seals).timeseries["F_N_test_seal_N"],
                                   f["F_N_test_seal_N"])
+
+
+def test_rod_surface_in_the_rod_chamber_exchanges_heat_with_the_rod_node():
+    # With seal heating the barrel and end faces are the tube node, and the rod's surface in
+    # the rod-side chamber, π·d·l2, is the rod node: chamber 2 gets
+    # q2 = h·(A_w2 − A_rod)·(T_tube − T2) + h·A_rod·(T_rod − T2), and the rod gives its part
+    # (before, the tube gave all of it and the rod none).  Chamber air and metal nodes at
+    # different temperatures, no seals; the rod node's rate against the hand balance
+    # C_rod·dT_rod/dt = −h·A_rod·(T_rod − T2) − G_rod,amb·(T_rod − T_amb), to round-off.
+    from sealsim.pneumatic.chambers import chamber_wall_areas, gas_mass, internal_energy
+
+    case = heated("cylinder_32.toml").model_copy(update={"seals": []})
+    system = PneumaticSystem(case, [])
+    cyl, h, c = case.cylinder, case.air.heat_transfer_coefficient, system.tables[0]
+    x, t1, t2, t_tube, t_rod = 0.04, 330.0, 260.0, 300.0, 320.0
+    vol1 = cyl.dead_volume_cap + system.a1 * x
+    vol2 = cyl.dead_volume_rod + system.a2 * (cyl.stroke - x)
+    y = system.initial_state()
+    m1, m2 = float(gas_mass(4e5, vol1, t1)), float(gas_mass(2e5, vol2, t2))
+    y[:6] = [x, 0.0, m1, m2, float(internal_energy(m1, t1)), float(internal_energy(m2, t2))]
+    toff = system.temperature_offset
+    y[toff], y[toff + 1] = t_tube, t_rod
+    d = system.evaluate(0.0, y, rhs.FORWARD, full=True)
+    a_w1, a_w2, a_rod = chamber_wall_areas(x, cyl.stroke, cyl.bore, cyl.rod_diameter,
+                                           system.a1, system.a2, cyl.dead_volume_cap,
+                                           cyl.dead_volume_rod)
+    q_rod = h * a_rod * (t_rod - t2)
+    assert d["q1"][0] == pytest.approx(h * a_w1 * (t_tube - t1), rel=1e-12)
+    assert d["q2"][0] == pytest.approx(h * (a_w2 - a_rod) * (t_tube - t2) + q_rod, rel=1e-12)
+    rod_rate = (-q_rod - c[rhs.C_ROD_G] * (t_rod - system.t_amb)) / c[rhs.C_ROD_CAP]
+    assert d["dy"][toff + 1, 0] == pytest.approx(rod_rate, rel=1e-12)

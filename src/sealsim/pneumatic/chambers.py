@@ -18,25 +18,29 @@ mass exactly (dm/dt = 0 identically) and the energy bookkeeping of a run can be 
 the enthalpy, heat and work that crossed the boundary.  A closed adiabatic chamber gives
 dU = −p·dV with p = (γ − 1)U/V, i.e. U·V^(γ−1) = const and p·V^γ = const.
 
-**Wall heat transfer.**  Q̇ = h·A_w·(T_wall − T) with the wetted wall area A_w (barrel, end cap,
-piston face) and the wall at the temperature of the cylinder body (the barrel is a large heat
-sink on the time scale of a stroke; with seal heating it is the tube node of
-:mod:`.seal_heating`).  h = 0 gives adiabatic chambers.
+**Wall heat transfer.**  Q̇ = h·A_w·(T_wall − T) with the wetted wall area A_w
+(:func:`chamber_wall_area`: barrel, end cap and piston face; in the rod-side chamber also the
+rod's surface, and annular faces) and the wall at the temperature of the cylinder body (the
+barrel is a large heat sink on the time scale of a stroke; with seal heating it is the tube
+node of :mod:`.seal_heating`, and the rod's surface the rod node).  h = 0 gives adiabatic
+chambers.
 
 The default h = 45 W/(m²·K) (:data:`DEFAULT_HEAT_TRANSFER_COEFFICIENT`) is derived from a
 published characterisation of actuating pneumatic cylinders: Richer & Hurmuzlu [1]_ model the
 pressure change by piston motion as a polytropic process with the exponent α = 1.2 (between
 isothermal 1 and adiabatic 1.4), from the air temperatures Al-Ibrahim & Otis [2]_ measured in a
-cylinder during charging and discharging.  With h = 45 W/(m²·K) a closed chamber of the Ø32
-example compressed 2:1 in 0.3 s (a typical stroke) follows p·V^1.2 = const
-(:func:`polytropic_exponent`; a test checks it).  It is a single constant: a faster stroke or
+cylinder during charging and discharging.  With h = 45 W/(m²·K) the rod-side chamber of the
+Ø32 example, closed and compressed 2:1 in 0.3 s (a typical stroke), follows p·V^1.18 = const,
+the source's 1.2 to its one decimal (:func:`polytropic_exponent`; a test checks 1.2 ± 0.02;
+h = 38 W/(m²·K) would give 1.20: 45 was set when the wall area of that chamber still lacked
+the rod's surface, and then gave 1.20).  It is a single constant: a faster stroke or
 a smaller cylinder runs closer to adiabatic.  The measured coefficients of Carneiro & de
 Almeida [3]_ would be the better source; their values could not be retrieved for sealsim.
 
 Free convection alone, :func:`free_convection_coefficient` (Churchill & Chu [4]_ at the
 chamber pressure), is the lower bound: 6-17 W/(m²·K) for the Ø32 chamber at 1-6 bar and 30 K
-(exponent 1.30-1.37 in the stroke above; the case option ``[air] heat_transfer =
-"free_convection"`` evaluates it at each chamber's state and gives 1.34); the default's excess
+(exponent 1.28-1.35 in the stroke above; the case option ``[air] heat_transfer =
+"free_convection"`` evaluates it at each chamber's state and gives 1.33); the default's excess
 is the stirring by the port jet and the piston.
 
 **Measured air-temperature swing.**  No published temperature record of a cylinder chamber
@@ -85,6 +89,7 @@ __all__ = [
     "STANDARD_ATMOSPHERE",
     "chamber_energy_rate",
     "chamber_wall_area",
+    "chamber_wall_areas",
     "free_convection_coefficient",
     "gas_mass",
     "gas_pressure",
@@ -105,7 +110,8 @@ AIR_CV = AIR_GAS_CONSTANT / (AIR_HEAT_CAPACITY_RATIO - 1.0)
 #: Specific heat at constant pressure c_p = γ·R/(γ − 1) [J/(kg·K)]
 AIR_CP = AIR_HEAT_CAPACITY_RATIO * AIR_CV
 #: Default wall heat-transfer coefficient of the chamber air [W/(m²·K)] (module docstring:
-#: the polytropic exponent 1.2 of Richer & Hurmuzlu 2000 for a 0.3 s stroke of the Ø32 example)
+#: the polytropic exponent 1.2 of Richer & Hurmuzlu 2000 (1.18) for a 0.3 s stroke of the Ø32
+#: example)
 DEFAULT_HEAT_TRANSFER_COEFFICIENT = 45.0
 #: Pressure of the air property tables (Incropera Table A.4: 1 atm) [Pa]
 STANDARD_ATMOSPHERE = 101325.0
@@ -276,8 +282,14 @@ def free_convection_coefficient(pressure, gas_temperature, wall_temperature, dia
         nu * scale, alpha * scale, k, 1.0 / t_film)
 
 
-def chamber_wall_area(length, bore, face_area):
-    """Wetted wall area of a chamber: barrel π·D·l plus the two end faces.
+def chamber_wall_area(length, bore, face_area, rod_diameter=0.0):
+    """Wetted wall area of a chamber: barrel π·D·l, the surface π·d·l of a rod that runs
+    through it, and the two end faces.
+
+    .. math:: A_w = \\pi (D + d)\\, l + 2 A_f
+
+    The cap-side chamber has no rod (d = 0) and the full piston area as its faces; the
+    rod-side chamber is an annulus: barrel, rod surface and two annular faces π/4·(D² − d²).
 
     Parameters
     ----------
@@ -287,6 +299,8 @@ def chamber_wall_area(length, bore, face_area):
         Bore D [m].
     face_area : float or ndarray
         Area of one end face [m²] (piston side; the cap or head face counted equal).
+    rod_diameter : float
+        Diameter d [m] of a rod through the chamber (0: none).
 
     Returns
     -------
@@ -295,10 +309,53 @@ def chamber_wall_area(length, bore, face_area):
 
     Examples
     --------
-    >>> round(float(chamber_wall_area(0.1, 0.032, 8.04e-4)) * 1e4, 2)   # [cm²]
+    >>> round(float(chamber_wall_area(0.1, 0.032, 8.04e-4)) * 1e4, 2)   # cap side [cm²]
     116.61
+    >>> round(float(chamber_wall_area(0.1, 0.032, 6.91e-4, 0.012)) * 1e4, 2)   # rod side
+    152.05
     """
-    return np.pi * bore * length + 2.0 * face_area
+    return np.pi * (bore + rod_diameter) * length + 2.0 * face_area
+
+
+def chamber_wall_areas(x, stroke, bore, rod_diameter, a1, a2, dead_volume_1, dead_volume_2):
+    """Wetted wall areas of the two chambers of a single-rod cylinder at the piston position x
+    (:func:`chamber_wall_area` of each air column; its length is the chamber volume over the
+    piston area, V1/A1 = x + V01/A1 and V2/A2 = L − x + V02/A2), and the rod's share of the
+    rod-side one (it exchanges heat with the rod, not with the barrel).
+
+    Parameters
+    ----------
+    x : float or ndarray
+        Piston position [m] (0 retracted, L extended).
+    stroke : float
+        L [m].
+    bore, rod_diameter : float
+        D, d [m].
+    a1, a2 : float
+        Piston area π/4·D² and annulus π/4·(D² − d²) [m²].
+    dead_volume_1, dead_volume_2 : float
+        Dead volumes of the cap-side and rod-side chamber [m³].
+
+    Returns
+    -------
+    a_w1, a_w2, a_rod2 : ndarray
+        Wall area of the cap-side chamber, of the rod-side chamber (barrel, rod, two annular
+        faces) and the rod's surface in it, π·d·(L − x + V02/A2) [m²].
+
+    Examples
+    --------
+    Ø32/12 × 100 mm, 5 cm³ dead volume each, at mid-stroke [cm²]:
+
+    >>> a1, a2 = np.pi / 4 * 0.032 ** 2, np.pi / 4 * (0.032 ** 2 - 0.012 ** 2)
+    >>> [round(float(a) * 1e4, 2) for a in chamber_wall_areas(0.05, 0.1, 0.032, 0.012, a1, a2,
+    ...                                                        5e-6, 5e-6)]
+    [72.6, 92.94, 21.58]
+    """
+    length_1 = x + dead_volume_1 / a1
+    length_2 = stroke - x + dead_volume_2 / a2
+    return (chamber_wall_area(length_1, bore, a1),
+            chamber_wall_area(length_2, bore, a2, rod_diameter),
+            chamber_wall_area(length_2, 0.0, 0.0, rod_diameter))     # the rod alone
 
 
 def chamber_energy_rate(enthalpy_in, enthalpy_out, pressure, volume_rate, heat_flow=0.0):

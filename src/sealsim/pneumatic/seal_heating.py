@@ -23,11 +23,13 @@ sliding contact couples a seal to its counterface within a few kelvin, so a seal
 long duty cycle because the rod and the tube do.  The **tube** (the barrel swept by the piston
 seals, with the heads) receives the heat of the seals sliding on it and gives the chamber wall
 heat to the air (the chamber walls are at its temperature); the **rod** receives the heat of the
-rod seal and wiper and, through the groove of the piston, of the piston seals.  Both lose heat
-to the surroundings by free convection and radiation (:func:`ambient_coefficient`)::
+rod seal and wiper and, through the groove of the piston, of the piston seals, and gives the
+air of the rod-side chamber the heat of its surface there
+(:func:`~sealsim.pneumatic.chambers.chamber_wall_areas`).  Both lose heat to the surroundings
+by free convection and radiation (:func:`ambient_coefficient`)::
 
     C_tube·dT_tube/dt = Σ heat from seals − Q_wall,air − G_amb,tube·(T_tube − T_amb)
-    C_rod·dT_rod/dt   = Σ heat from seals − G_amb,rod·(T_rod − T_amb)
+    C_rod·dT_rod/dt   = Σ heat from seals − Q_rod,air − G_amb,rod·(T_rod − T_amb)
 
 Not modelled: conduction along the rod into the load and along the tube into the mounting
 (both would cool the metal; they make the warming an upper estimate), temperature gradients

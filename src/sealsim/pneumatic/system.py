@@ -20,6 +20,7 @@ from sealsim.pneumatic import rhs
 from sealsim.pneumatic.case import body_temperature
 from sealsim.pneumatic.chambers import (
     AIR_CV,
+    chamber_wall_areas,
     free_convection_coefficient,
     gas_mass,
     internal_energy,
@@ -110,6 +111,13 @@ class PneumaticSystem:
         c[rhs.C_DEAD1], c[rhs.C_DEAD2] = cyl.dead_volume_cap, cyl.dead_volume_rod
         c[rhs.C_A1], c[rhs.C_A2], c[rhs.C_AROD] = self.a1, self.a2, self.a_rod
         c[rhs.C_STROKE], c[rhs.C_BORE] = cyl.stroke, cyl.bore
+        # wall areas, affine in x: the values at x = 0 and the slopes, from the one formula
+        walls = (chamber_wall_areas(x, cyl.stroke, cyl.bore, cyl.rod_diameter, self.a1, self.a2,
+                                    cyl.dead_volume_cap, cyl.dead_volume_rod)
+                 for x in (0.0, cyl.stroke))
+        for (at0, slope), start, end in zip(((rhs.C_AW1, rhs.C_AW1_X), (rhs.C_AW2, rhs.C_AW2_X),
+                                             (rhs.C_AWROD, rhs.C_AWROD_X)), *walls):
+            c[at0], c[slope] = start, (end - start) / cyl.stroke
         c[rhs.C_PS], c[rhs.C_PA] = self.p_supply, self.p_amb
         c[rhs.C_TS], c[rhs.C_TA] = self.t_supply, self.t_amb
         c[rhs.C_C], c[rhs.C_B], c[rhs.C_M], c[rhs.C_BETA] = (

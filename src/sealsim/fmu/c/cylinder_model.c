@@ -376,11 +376,10 @@ static void evaluate(const CylinderData *m, double t, const double *y, int mode,
         h[1] = AIR_CP * (p1 >= pa ? t1 : ta) * g[1];
         h[2] = AIR_CP * (ps >= p2 ? ts : t2) * g[2];
         h[3] = AIR_CP * (p2 >= pa ? t2 : ta) * g[3];
-        const double pi = 3.141592653589793;
-        double area1 = pi * c[C_BORE] * (x + c[C_DEAD1] / c[C_A1]) + 2.0 * c[C_A1];
-        double area2 = pi * c[C_BORE] * (c[C_STROKE] - x + c[C_DEAD2] / c[C_A2]) + 2.0 * c[C_A1];
-        q1 = c[C_H] * area1 * (t_wall - t1);
-        q2 = c[C_H] * area2 * (t_wall - t2);
+        /* wall areas: affine in x, from chambers.chamber_wall_areas (no seal heating here:
+         * the rod's surface is at t_wall too) */
+        q1 = c[C_H] * (c[C_AW1] + c[C_AW1_X] * x) * (t_wall - t1);
+        q2 = c[C_H] * (c[C_AW2] + c[C_AW2_X] * x) * (t_wall - t2);
     }
     double f_press = p1 * c[C_A1] - p2 * c[C_A2] - pa * c[C_AROD];
     double f_load = c[C_F0] + c[C_KL] * (x - c[C_X0L]) + c[C_MASS] * GRAVITY * sin(c[C_INCL]) +
