@@ -1,6 +1,7 @@
 """Frozen copy of the pre-issue-13 implementation (commit 9cdec80, pneumatic_simulation), kept as the
 reference that the compiled code is tested against and as the benchmark baseline.
-Docstrings removed; physics unchanged.  Do not edit."""
+Docstrings removed; physics unchanged except the rod-side chamber's wall area (the rod's surface
+and annular faces, fixed in sealsim too).  Do not edit otherwise."""
 # ruff: noqa
 from __future__ import annotations
 import time as _time
@@ -15,7 +16,7 @@ from sealsim.friction.base import ContactInputs
 from sealsim.friction.hybrid import resolve_stick
 from sealsim.pneumatic._jit import jit
 from sealsim.pneumatic.case import body_temperature, build_seals
-from sealsim.pneumatic.chambers import AIR_CP, AIR_CV, AIR_HEAT_CAPACITY_RATIO, chamber_wall_area, gas_mass, internal_energy, wall_heat_flow
+from sealsim.pneumatic.chambers import AIR_CP, AIR_CV, AIR_HEAT_CAPACITY_RATIO, chamber_wall_areas, gas_mass, internal_energy, wall_heat_flow
 from sealsim.pneumatic.controller import COMMANDS, CommandSchedule
 from sealsim.pneumatic.cylinder import end_stop_force, load_force, piston_areas, piston_force, rest_position
 from sealsim.pneumatic.seals import Seal, pressure_difference, side_pressures, smooth_abs
@@ -46,7 +47,7 @@ class _Group:
     has_map: bool
     temperatures: Any = None
     n_states: int = 0
-_DEAD1, _DEAD2, _A1, _A2, _AROD, _STROKE, _BORE, _PS, _PA, _TS, _TA, _C, _B, _M, _BETA, _CENTRE, _H, _TW, _F0, _KL, _X0L, _CL, _INCL, _MASS, _KS, _CS, _DS, _THR1, _THR2, _CU1_L, _CU1_C, _CU1_E, _CU2_L, _CU2_C, _CU2_E, _NCONST = range(36)
+_DEAD1, _DEAD2, _A1, _A2, _AROD, _STROKE, _BORE, _PS, _PA, _TS, _TA, _C, _B, _M, _BETA, _CENTRE, _H, _TW, _F0, _KL, _X0L, _CL, _INCL, _MASS, _KS, _CS, _DS, _THR1, _THR2, _CU1_L, _CU1_C, _CU1_E, _CU2_L, _CU2_C, _CU2_E, _AW1, _AW1_X, _AW2, _AW2_X, _AWROD, _AWROD_X, _NCONST = range(42)
 _X, _V, _P1, _P2, _T1, _T2, _G0, _G1, _G2, _G3, _H0, _H1, _H2, _H3, _Q1, _Q2, _FPRESS, _FLOAD, _FSTOP, _NOUT = range(20)
 # + 'supply_return_mass' (added with it to sealsim's bookkeeping): the bookkeeping states count
 # in LSODA's RMS error norm, so the reference needs as many to take the same steps
@@ -54,7 +55,6 @@ BOOKKEEPING = ('supply_mass', 'exhaust_mass', 'mass_throughput', 'enthalpy', 'en
 _flow = jit(iso6358_flow, iso6358_mass_flow=jit(iso6358_mass_flow))
 _series = jit(series_pair)
 _openings = jit(openings)
-_wall_area = jit(chamber_wall_area)
 _heat = jit(wall_heat_flow)
 _stop = jit(end_stop_force)
 _load = jit(load_force)
@@ -99,8 +99,12 @@ def _core_columns(y, spool, xs, vs, prescribed, c, codes, out, dp, sides, dy, bo
         h1 = AIR_CP * (t1 if p1 >= pa else ta) * g1
         h2 = AIR_CP * (ts if ps >= p2 else t2) * g2
         h3 = AIR_CP * (t2 if p2 >= pa else ta) * g3
-        q1 = _heat(c[_H], _wall_area(x + c[_DEAD1] / c[_A1], c[_BORE], c[_A1]), c[_TW], t1)
-        q2 = _heat(c[_H], _wall_area(c[_STROKE] - x + c[_DEAD2] / c[_A2], c[_BORE], c[_A1]), c[_TW], t2)
+        # physics fix applied to the frozen copy: the rod-side chamber's wall has the rod's surface
+        # and two annular faces (it had two full piston faces and no rod); the areas are affine
+        # in x and evaluated in sealsim's order of operations (stick/slip amplifies a last bit)
+        area_rod = c[_AWROD] + c[_AWROD_X] * x
+        q1 = _heat(c[_H], c[_AW1] + c[_AW1_X] * x, c[_TW], t1)
+        q2 = _heat(c[_H], c[_AW2] + c[_AW2_X] * x - area_rod, c[_TW], t2) + _heat(c[_H], area_rod, c[_TW], t2)
         f_press = p1 * c[_A1] - p2 * c[_A2] - pa * c[_AROD]
         f_load = _load(x, v, c[_F0], c[_KL], c[_X0L], c[_MASS], c[_INCL], c[_CL])
         f_stop = _stop(x, v, c[_STROKE], c[_KS], c[_CS], c[_DS])
@@ -174,6 +178,9 @@ class PneumaticSystem:
         c[_DEAD1], c[_DEAD2] = (cyl.dead_volume_cap, cyl.dead_volume_rod)
         c[_A1], c[_A2], c[_AROD] = (self.a1, self.a2, self.a_rod)
         c[_STROKE], c[_BORE] = (cyl.stroke, cyl.bore)
+        walls = [chamber_wall_areas(x, cyl.stroke, cyl.bore, cyl.rod_diameter, self.a1, self.a2, cyl.dead_volume_cap, cyl.dead_volume_rod) for x in (0.0, cyl.stroke)]
+        for (at0, slope), start, end in zip(((_AW1, _AW1_X), (_AW2, _AW2_X), (_AWROD, _AWROD_X)), *walls):
+            c[at0], c[slope] = start, (end - start) / cyl.stroke
         c[_PS], c[_PA], c[_TS], c[_TA] = (self.p_supply, self.p_amb, self.t_supply, self.t_amb)
         c[_C], c[_B], c[_M], c[_BETA] = (valve.conductance, valve.critical_pressure_ratio, valve.subsonic_index, valve.laminar_ratio)
         c[_CENTRE] = CENTRES.index(valve.centre) if valve.type == '5/3' else 0

@@ -23,7 +23,7 @@ A case (see ``examples/pneumatic/cylinder_32.toml``)::
     [air]
     supply_pressure = "6 bar"        # gauge
     temperature = "25 degC"          # ambient and supply air
-    heat_transfer_coefficient = "45 W/(m**2*K)"   # default; or heat_transfer = "free_convection"
+    heat_transfer_coefficient = "38 W/(m**2*K)"   # default; or heat_transfer = "free_convection"
 
     [valve]
     type = "5/2"                     # or "5/3" with centre = "closed" | "exhaust" | "pressure"
@@ -179,7 +179,7 @@ class AirModel(CaseModel):
     supply_temperature: _temperature() | None = None
     heat_transfer_coefficient: Q("heat_transfer_coefficient", ge=0) = Field(
         DEFAULT_HEAT_TRANSFER_COEFFICIENT, description=(
-            "air-wall heat transfer in the chambers (default 45 W/(m**2*K): the polytropic "
+            "air-wall heat transfer in the chambers (default 38 W/(m**2*K): the polytropic "
             "exponent 1.2 of Richer & Hurmuzlu 2000 for a stroke of the Ø32 example, see "
             "sealsim.pneumatic.chambers); 0: adiabatic"))
     heat_transfer: Literal["constant", "free_convection"] = Field(

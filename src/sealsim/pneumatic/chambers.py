@@ -25,15 +25,14 @@ barrel is a large heat sink on the time scale of a stroke; with seal heating it 
 node of :mod:`.seal_heating`, and the rod's surface the rod node).  h = 0 gives adiabatic
 chambers.
 
-The default h = 45 W/(m²·K) (:data:`DEFAULT_HEAT_TRANSFER_COEFFICIENT`) is derived from a
+The default h = 38 W/(m²·K) (:data:`DEFAULT_HEAT_TRANSFER_COEFFICIENT`) is derived from a
 published characterisation of actuating pneumatic cylinders: Richer & Hurmuzlu [1]_ model the
 pressure change by piston motion as a polytropic process with the exponent α = 1.2 (between
 isothermal 1 and adiabatic 1.4), from the air temperatures Al-Ibrahim & Otis [2]_ measured in a
-cylinder during charging and discharging.  With h = 45 W/(m²·K) the rod-side chamber of the
-Ø32 example, closed and compressed 2:1 in 0.3 s (a typical stroke), follows p·V^1.18 = const,
-the source's 1.2 to its one decimal (:func:`polytropic_exponent`; a test checks 1.2 ± 0.02;
-h = 38 W/(m²·K) would give 1.20: 45 was set when the wall area of that chamber still lacked
-the rod's surface, and then gave 1.20).  It is a single constant: a faster stroke or
+cylinder during charging and discharging.  With h = 38 W/(m²·K) the rod-side chamber of the
+Ø32 example, closed and compressed 2:1 in 0.3 s (a typical stroke), follows p·V^1.20 = const
+(:func:`polytropic_exponent`; a test checks 1.2 ± 0.02; the former default 45 gave 1.20 while
+that chamber's wall lacked the rod's surface, and 1.18 with it).  It is a single constant: a faster stroke or
 a smaller cylinder runs closer to adiabatic.  The measured coefficients of Carneiro & de
 Almeida [3]_ would be the better source; their values could not be retrieved for sealsim.
 
@@ -50,7 +49,7 @@ measured drop 41.6 K at 23 s, recovery time constant 27 s at 1 bar.  These equat
 free convection give a drop of 52.6 K at 20 s and a recovery time constant of 14 s, every
 measured point within 16 K (10 K rms); a lagging thermocouple flattens the measured minimum,
 and cold air settling in the vessel probably slows its recovery.  Any constant h fits worse
-(best h = 10 W/(m²·K): 15 K rms), h = 45 recovers far too fast and h = 0 drops 133 K
+(best h = 10 W/(m²·K): 15 K rms), h = 38 recovers far too fast and h = 0 drops 133 K
 (``tests/test_pneumatic_air_temperature.py``).
 
 References
@@ -110,9 +109,8 @@ AIR_CV = AIR_GAS_CONSTANT / (AIR_HEAT_CAPACITY_RATIO - 1.0)
 #: Specific heat at constant pressure c_p = γ·R/(γ − 1) [J/(kg·K)]
 AIR_CP = AIR_HEAT_CAPACITY_RATIO * AIR_CV
 #: Default wall heat-transfer coefficient of the chamber air [W/(m²·K)] (module docstring:
-#: the polytropic exponent 1.2 of Richer & Hurmuzlu 2000 (1.18) for a 0.3 s stroke of the Ø32
-#: example)
-DEFAULT_HEAT_TRANSFER_COEFFICIENT = 45.0
+#: the polytropic exponent 1.2 of Richer & Hurmuzlu 2000 for a 0.3 s stroke of the Ø32 example)
+DEFAULT_HEAT_TRANSFER_COEFFICIENT = 38.0
 #: Pressure of the air property tables (Incropera Table A.4: 1 atm) [Pa]
 STANDARD_ATMOSPHERE = 101325.0
 

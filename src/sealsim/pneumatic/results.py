@@ -279,6 +279,7 @@ def balances(system, segments) -> dict[str, float]:
         energy_in = book["enthalpy"] + book["heat"] - book["gas_work"]
         energy_change = stored_energy
         throughput = book["enthalpy_throughput"] + abs(book["heat"]) + abs(book["gas_work"])
+    returned = max(book["supply_return_mass"], 0.0)
     out = {
         "air_mass_change_kg": stored_mass,
         "supply_mass_kg": book["supply_mass"],
@@ -298,10 +299,11 @@ def balances(system, segments) -> dict[str, float]:
         "energy_balance_rel_error": abs(energy_change - energy_in) / max(
             throughput, float(y0[4] + y0[5]), 1e-300),
         # what the supply delivered (ISO 6358 / ISO 8778 free air); air a chamber pushed back
-        # into the supply line is its own number, not netted against it
-        "air_consumption_NL": (book["supply_mass"] + book["supply_return_mass"])
-        / ANR_DENSITY * 1e3,
-        "air_returned_to_supply_NL": book["supply_return_mass"] / ANR_DENSITY * 1e3,
+        # into the supply line is its own number, not netted against it.  Both integrate a
+        # flow that is never negative: a negative total is the integrator's error on a flow
+        # that stays zero (about -1e-7 NL), not air, and is reported as none
+        "air_consumption_NL": max(book["supply_mass"] + returned, 0.0) / ANR_DENSITY * 1e3,
+        "air_returned_to_supply_NL": returned / ANR_DENSITY * 1e3,
     }
     if system.heating:
         out.update(thermal_balance(system, y0, y1, book))
