@@ -1,106 +1,154 @@
-"""Figures of material fits: stress-stretch data vs models per deformation mode, the DMA
-master curve with its Prony series, the shift factors with WLF/Arrhenius, dilatometry.
+"""``sealsim material fit``: a material fit file into a result folder.
 
-The figures receive arrays and fitted objects' evaluations; they compute nothing physical
-beyond evaluating the fitted models on a plotting grid."""
+The fits are computed by :mod:`sealsim.calibration.material_fit`; this module checks the
+result folder before anything is computed (the fit file and its data files, if inside the
+folder, are refused: committing the results would remove them) and writes
+
+* ``<name>.toml`` -- the compound in the catalogue format with a source tag on every value,
+  usable as ``material = "<name>.toml"`` in structure, rotary, pneumatic and study cases, in the
+  one-call API and by ``sealsim material show <name>.toml``;
+* ``report.json`` -- ``{"model", "parameters": {NAME: {"value", "stderr", ...}},
+  "modes": {MODE: {"rel_rmse", "r2", ...}}}``, plus the comparison models, the Drucker
+  stability of every model (``unstable_models``: where), the viscoelastic and dilatometric
+  details and the source of every compound value;
+* ``hyperelastic_<mode>.png`` (data and models, relative error), ``curves.csv`` (every point
+  with each model's stress), ``dma_master_curve.png``, ``shift_factors.png``, ``prony.csv``,
+  ``shift_factors.csv``, ``dilatometry.png``, ``case_resolved.toml``.
+"""
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
+import pandas as pd
 
-from sealsim.plotting import new_figure
+from sealsim.calibration.material_fit import (
+    MaterialFitResult,
+    fit_material,
+    load_material_fit_case,
+)
+from sealsim.cases import dump_case_toml
+from sealsim.output import ResultFolder
+from sealsim.plotting.material import (
+    plot_dilatometry,
+    plot_master_curve,
+    plot_shift_factors,
+    plot_stress_mode,
+)
+from sealsim.properties.hyperelastic import MODES, nominal_stress
+from sealsim.units import ZERO_CELSIUS_K
 
-__all__ = ["plot_dilatometry", "plot_master_curve", "plot_shift_factors", "plot_stress_mode"]
-
-_MPA = 1e-6
-
-
-def plot_stress_mode(mode: str, data, models, title: str = ""):
-    """Nominal stress vs stretch of one deformation mode: measured points and model curves.
-
-    Parameters
-    ----------
-    data : list of (label, role, stretch, stress [Pa])
-    models : list of (label, fitted, stretch grid, stress [Pa], rel_rmse)
-        ``fitted``: whether this mode was used in the model's fit (else a prediction).
-    """
-    fig, (ax, ax_rel) = new_figure(2, 1, width=11.0, height=4.6)
-    for label, role, lam, p in data:
-        kind = "" if role == "fit" else " (validation)"
-        ax.plot(lam, p * _MPA, "o", ms=4, mfc="none", color="k", label=f"{label}{kind}")
-    for k, (label, fitted, lam, p, err) in enumerate(models):
-        style = "-" if fitted else "--"
-        what = "fitted" if fitted else "predicted"
-        ax.plot(lam, p * _MPA, style, color=f"C{k}", lw=1.4,
-                label=f"{label}: {what}, RMS rel. error {100 * err:.1f} %")
-    pts = [(lam, p) for _, _, lam, p in data]
-    for k, (label, fitted, lam_m, p_m, _) in enumerate(models):
-        for lam, p in pts:
-            ok = p != 0
-            rel = np.interp(lam[ok], lam_m, p_m) / p[ok] - 1.0
-            ax_rel.plot(lam[ok], 100 * rel, "o-" if fitted else "o--", ms=3, lw=0.8,
-                        color=f"C{k}")
-    ax.set_xlabel("stretch λ [-]")
-    ax.set_ylabel("nominal stress [MPa]")
-    ax.legend(loc="best", fontsize=7)
-    ax_rel.axhline(0.0, color="k", lw=0.6)
-    for y in (-5, 5):
-        ax_rel.axhline(y, color="0.6", lw=0.6, ls=":")
-    ax_rel.set_xlabel("stretch λ [-]")
-    ax_rel.set_ylabel("model / measured − 1 [%]")
-    lim = ax_rel.get_ylim()
-    ax_rel.set_ylim(max(lim[0], -60), min(lim[1], 60))
-    for a in (ax, ax_rel):
-        a.grid(alpha=0.3)
-    fig.suptitle(f"{title}\n{mode}" if title else mode)
-    return fig
+__all__ = ["run_material_fit_file"]
 
 
-def plot_master_curve(f_r, storage, loss, grid, storage_model, loss_model, reference_c,
-                      title: str = "", compound_storage=None):
-    """Master curve at the reference temperature: E′ and E″ points (shifted with the measured
-    shift factors), the Prony series and (``compound_storage`` on ``grid``) the compound
-    file's E′, the master-curve sigmoid the seal models use."""
-    fig, ax = new_figure(1, 1, width=7.5, height=5.0)
-    ax.loglog(f_r, storage * _MPA, "o", ms=3, mfc="none", color="C0", label="E′ measured")
-    ax.loglog(f_r, loss * _MPA, "s", ms=3, mfc="none", color="C3", label="E″ measured")
-    ax.loglog(grid, storage_model * _MPA, "-", color="C0", label="E′ Prony")
-    ax.loglog(grid, loss_model * _MPA, "-", color="C3", label="E″ Prony")
-    if compound_storage is not None:
-        ax.loglog(grid, np.asarray(compound_storage) * _MPA, "--", color="k", lw=1.0,
-                  label="E′ compound file (sigmoid, used by the seal models)")
-    ax.set_xlabel(f"reduced frequency f·a_T at {reference_c:g} °C [Hz]")
-    ax.set_ylabel("modulus [MPa]")
-    ax.grid(alpha=0.3, which="both")
-    ax.legend(loc="best", fontsize=8)
-    ax.set_title(title or "DMA master curve")
-    return fig
+def _inputs(path: Path, case) -> list[Path]:
+    """The fit file and every data file it reads (refused inside the result folder)."""
+    files = [path]
+    tables = []
+    if case.hyperelastic is not None:
+        tables += case.hyperelastic.curves
+    if case.viscoelastic is not None:
+        tables += case.viscoelastic.files
+    if case.dilatometry is not None:
+        tables.append(case.dilatometry)
+    for t in tables:
+        p = Path(t.file)
+        files.append(p if p.is_absolute() else path.parent / p)
+    return files
 
 
-def plot_shift_factors(temperature_c, log_a, stderr, grid_c, curves, title: str = ""):
-    """Measured log10 a_T (±1 s.e.) and the fitted laws ``curves`` = [(label, log a)]."""
-    fig, ax = new_figure(1, 1, width=7.0, height=4.6)
-    ax.errorbar(temperature_c, log_a, yerr=stderr, fmt="o", ms=4, color="k", capsize=2,
-                label="measured (pairwise shifts)")
-    for k, (label, y) in enumerate(curves):
-        ax.plot(grid_c, y, "-", color=f"C{k}", label=label)
-    ax.set_xlabel("temperature [°C]")
-    ax.set_ylabel("log10 a_T [-]")
-    ax.grid(alpha=0.3)
-    ax.legend(loc="best", fontsize=8)
-    ax.set_title(title or "time-temperature shift factors")
-    return fig
+def run_material_fit_file(path: str | Path, out: str | Path, force: bool = False
+                          ) -> MaterialFitResult:
+    """Fit a material fit file and write the result folder ``out`` (see the module)."""
+    path = Path(path)
+    case = load_material_fit_case(path)
+    folder = ResultFolder(out, force, inputs=_inputs(path, case))  # before computing
+    result = fit_material(case, path.parent, origin=path.name)
+    title = case.title or case.compound.name
+    with folder:
+        folder.write_text(f"{case.compound.name}.toml", result.compound_text)
+        folder.write_json("report.json", result.report)
+        if result.hyperelastic is not None:
+            _write_hyperelastic(folder, result, title)
+        if result.shift is not None and result.prony is not None:
+            _write_dma(folder, result, title)
+        if result.expansion is not None:
+            e = result.expansion
+            grid = np.linspace(e.temperature.min(), e.temperature.max(), 200)
+            folder.savefig("dilatometry.png", plot_dilatometry(
+                e.temperature - ZERO_CELSIUS_K, e.strain, grid - ZERO_CELSIUS_K,
+                e.model(grid), e.glass_transition - ZERO_CELSIUS_K, title))
+        folder.write_text("case_resolved.toml", dump_case_toml(
+            case, header=f"Resolved material fit file {path.name} (all defaults filled in); "
+                         f"paths relative to {str(path.parent.resolve())}"))
+    return result
 
 
-def plot_dilatometry(temperature_c, strain, grid_c, model, tg_c, title: str = ""):
-    """Linear thermal strain vs temperature with the two-line fit and T_g."""
-    fig, ax = new_figure(1, 1, width=7.0, height=4.6)
-    ax.plot(temperature_c, strain * 1e3, "o", ms=3, mfc="none", color="k", label="measured")
-    ax.plot(grid_c, model * 1e3, "-", color="C3", label="glassy / rubbery lines")
-    ax.axvline(tg_c, color="0.5", ls=":", label=f"T_g = {tg_c:.1f} °C")
-    ax.set_xlabel("temperature [°C]")
-    ax.set_ylabel("linear thermal strain [‰]")
-    ax.grid(alpha=0.3)
-    ax.legend(loc="best", fontsize=8)
-    ax.set_title(title or "dilatometry")
-    return fig
+def _models(result: MaterialFitResult):
+    return [(result.hyperelastic.label + " (compound)", result.hyperelastic)] + \
+        list(result.comparisons.items())
+
+
+def _write_hyperelastic(folder: ResultFolder, result: MaterialFitResult, title: str) -> None:
+    rows = []
+    for mode in MODES:
+        curves = [c for c in result.curves if c.mode == mode]
+        if not curves:
+            continue
+        lam_all = np.concatenate([c.stretch for c in curves])
+        grid = np.linspace(lam_all.min(), lam_all.max(), 200)
+        models = []
+        for label, fit in _models(result):
+            models.append((label, mode in fit.fit_modes, grid,
+                           nominal_stress(fit.model, fit.parameters, mode, grid),
+                           fit.modes[mode]["rel_rmse"]))
+        data = [(c.name, c.role, c.stretch, c.stress) for c in curves]
+        folder.savefig(f"hyperelastic_{mode}.png", plot_stress_mode(mode, data, models, title))
+        for c in curves:
+            row = {"curve": c.name, "mode": mode, "role": c.role, "stretch": c.stretch,
+                   "stress_Pa": c.stress}
+            for label, fit in _models(result):
+                row[f"model_{label}_Pa"] = nominal_stress(fit.model, fit.parameters, mode,
+                                                          c.stretch)
+            rows.append(pd.DataFrame(row))
+    folder.write_csv("curves.csv", pd.concat(rows, ignore_index=True), float_format="%.8g")
+
+
+def _write_dma(folder: ResultFolder, result: MaterialFitResult, title: str) -> None:
+    from sealsim.calibration.viscoelastic_fit import master_curve
+
+    shift, prony = result.shift, result.prony
+    f_r, e1, e2 = master_curve(result.dma, shift)
+    grid = np.logspace(np.log10(f_r.min()), np.log10(f_r.max()), 300)
+    ref_c = shift.reference_temperature - ZERO_CELSIUS_K
+    compound = result.compound()._modulus(np.full(grid.shape, shift.reference_temperature),
+                                          grid)
+    folder.savefig("dma_master_curve.png", plot_master_curve(
+        f_r, e1, e2, grid, prony.storage(grid), prony.loss(grid), ref_c, title,
+        compound_storage=compound))
+    t = shift.temperatures
+    tgrid = np.linspace(t.min(), t.max(), 200)
+    law = f"WLF: C1 = {shift.parameters['c1']:.3g}, C2 = {shift.parameters['c2']:.3g} K"
+    if shift.arrhenius_below is not None and shift.arrhenius_below > t.min():
+        law += (f" above T_g = {shift.arrhenius_below - ZERO_CELSIUS_K:.3g} °C, Arrhenius "
+                "below (the compound's law)")
+    curves = [(law, shift.log10_shift(tgrid))]
+    if result.arrhenius is not None:
+        curves.append((f"Arrhenius: E_a = "
+                       f"{result.arrhenius.parameters['activation_energy'] / 1e3:.0f} kJ/mol",
+                       result.arrhenius.log10_shift(tgrid)))
+    folder.savefig("shift_factors.png", plot_shift_factors(
+        t - ZERO_CELSIUS_K, shift.log_shift, shift.log_shift_stderr, tgrid - ZERO_CELSIUS_K,
+        curves, title))
+    folder.write_csv("shift_factors.csv", pd.DataFrame({
+        "temperature_C": t - ZERO_CELSIUS_K, "log10_aT": shift.log_shift,
+        "log10_aT_stderr": shift.log_shift_stderr,
+        "log10_aT_law": shift.log10_shift(t),
+        "storage_rel_rmse_compound": [
+            f["storage_rel_rmse_compound"]
+            for f in result.report["viscoelastic"]["shift_factors"]]}), float_format="%.8g")
+    folder.write_csv("prony.csv", pd.DataFrame({
+        "relaxation_time_s": np.r_[np.inf, prony.relaxation_times],
+        "modulus_Pa": np.r_[prony.equilibrium_modulus, prony.moduli],
+        "stderr_Pa": prony.standard_errors}), float_format="%.8g")
