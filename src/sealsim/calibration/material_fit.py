@@ -513,6 +513,14 @@ def _compound(case, hyper, dma, shift, prony, tg_dma, expansion, notes, origin):
             continue
         if value is not None:
             take(key, _q(value, _UNITS[key]), "given in the fit file")
+        elif key == "service_min" and base is not None:
+            # a low-temperature limit follows the glass transition (the base's WLF reference
+            # and master curve are moved with T_g too); glass_transition is set above
+            moved = _si_value(table["glass_transition"]) - base.glass_transition
+            take(key, _q(base.service_range[0] + moved, "degC"),
+                 f"catalogue {base.name} [L]" if abs(moved) < 1e-9 else
+                 f"catalogue {base.name}'s {base.service_range[0] - ZERO_CELSIUS_K:g} degC "
+                 f"moved with T_g by {moved:+.4g} K [D]")
         elif base is not None:
             si = {"service_min": base.service_range[0],
                   "service_max": base.service_range[1]}.get(key, getattr(base, key, None))
