@@ -403,22 +403,58 @@ def test_pyvisco_compound_follows_its_own_dma_data(pyvisco_fit, tmp_path):
     # evaluated here through the written file.  The sigmoid was fitted to the Prony series
     # over its relaxation times (32 decades, most beyond the data) and the law was a WLF the
     # compound does not evaluate below T_g: 12.0 % RMS, 23.7 % on the 40 degC isotherm, the
-    # 100 degC isotherm 9.5 % high.  Now 5.0 %, 8.4 % at worst, 5.6 % high at 100 degC: the
-    # Richards sigmoid sits at its asymmetry bound (nu = 0.05) and cannot follow both the
-    # 30-decade transition and the rubbery end of this polymer (the Prony series: 3.1 %
-    # there); a model-form limit, reported, not hidden.
+    # 100 degC isotherm 9.5 % high.  Now 6.4 %, 10.5 % at worst (-5 degC, in the glass),
+    # 1 % high at 100 degC.  The Richards sigmoid sits at its asymmetry bound (nu = 0.05) and
+    # cannot follow both the 30-decade transition and the rubbery end of this polymer (the
+    # Prony series on the master curve: 6.9 %); a model-form limit, reported, not hidden.
     compound = _written_compound(pyvisco_fit, tmp_path)
     data = pyvisco_fit.dma
     rel = np.asarray(compound._modulus(data.temperature, data.frequency)) / data.storage - 1
     dma = pyvisco_fit.report["modes"]["dma"]
     assert dma["rel_rmse_compound"] == pytest.approx(np.sqrt(np.mean(rel ** 2)), rel=1e-9)
-    assert dma["rel_rmse_compound"] < 0.06
+    assert dma["rel_rmse_compound"] < 0.07
     per = [np.sqrt(np.mean(rel[g] ** 2)) for g in data.isotherms()]
-    assert max(per) < 0.10
+    assert max(per) < 0.12
     hot = data.isotherms()[-1]                                   # 100 degC = T_r
-    assert abs(np.mean(rel[hot])) < 0.07
+    assert abs(np.mean(rel[hot])) < 0.03
     factors = pyvisco_fit.report["viscoelastic"]["shift_factors"]
     assert [f["storage_rel_rmse_compound"] for f in factors] == pytest.approx(per)
+
+
+def test_a_rubbers_dma_in_its_service_range_gives_back_its_modulus_curve(tmp_path):
+    # Synthetic DMA of the catalogue NBR (its Prony series moved by its own shift law, the
+    # plateau times T/T_p, as the catalogue defines it): isotherms -20 ... 100 degC, 0.1-100
+    # Hz, the glass not reached -- a seal rubber measured in its service range.  The compound
+    # follows these points within 3.1 % RMS, 3.7 % on every isotherm.  Its sigmoid was fitted
+    # to the Prony series, whose E_inf takes up the warm isotherms' entropic rise (the master
+    # curve is shifted along log f only) and was then multiplied by T/T_ref once more: 14.7 %
+    # RMS, 27 % high at 100 degC.  Fitted to the measured points alone the glassy modulus is
+    # free (250 GPa): it comes from the series.
+    nbr = get_elastomer("NBR")
+    e_inf, e_i, tau = nbr.prony
+    t_p = nbr.prony_reference_temperature
+    temps = np.repeat(np.arange(-20.0, 101.0, 10.0) + 273.15, 10)
+    f = np.tile(np.logspace(-1, 2, 10), 13)
+    w = 2 * np.pi * f * 10.0 ** (np.asarray(nbr.log10_shift_factor(temps))
+                                 - nbr.log10_shift_factor(t_p))
+    e1 = prony_storage_modulus(w, 0.0, e_i, tau) + e_inf * temps / t_p
+    e2 = prony_loss_modulus(w, e_inf, e_i, tau)
+    (tmp_path / "dma.csv").write_text("f,T,E1,E2\n" + "".join(
+        f"{a:.10g},{b:.10g},{c:.10g},{d:.10g}\n" for a, b, c, d in zip(f, temps, e1, e2)))
+    (tmp_path / "fit.toml").write_text(
+        '[compound]\nname = "syn"\nbase = "NBR"\nreference_temperature = "23 degC"\n'
+        '[[viscoelastic.files]]\nfile = "dma.csv"\ndelimiter = ","\nheader = true\n'
+        'columns = { frequency = { column = "f", unit = "Hz" }, temperature = { column = "T", '
+        'unit = "K" }, storage_modulus = { column = "E1", unit = "Pa" }, loss_modulus = { '
+        'column = "E2", unit = "Pa" } }\n')
+    fit = fit_material_file(tmp_path / "fit.toml")
+    compound = _written_compound(fit, tmp_path)
+    rel = np.asarray(compound._modulus(temps, f)) / e1 - 1
+    assert fit.report["modes"]["dma"]["rel_rmse_compound"] == pytest.approx(
+        np.sqrt(np.mean(rel ** 2)), rel=1e-9)
+    assert np.sqrt(np.mean(rel ** 2)) < 0.04
+    assert max(np.sqrt(np.mean(rel[g] ** 2)) for g in fit.dma.isotherms()) < 0.05
+    assert compound.glassy_modulus < 1e10                       # 2.9 GPa (NBR: 2 GPa)
 
 
 def _written_compound(fit, tmp_path):
@@ -431,7 +467,7 @@ def _written_compound(fit, tmp_path):
 
 def test_written_compounds_constants_and_curve_agree(treloar, pyvisco_fit, tmp_path):
     # A held seal's stiffness is the constants times E_h(T)/E(T_ref, f_test) of the curve.
-    # DMA only: the constants are the fitted curve at (T_ref, f_test), 312 MPa for pyvisco's
+    # DMA only: the constants are the fitted curve at (T_ref, f_test), 288 MPa for pyvisco's
     # polymer at 100 degC and 1 Hz (measured 296 MPa; they were E_inf = 212 MPa, counting the
     # relaxation twice, 408 MPa while the master curve was not at T_r and 327 MPa while the
     # curve was fitted to the Prony series instead of the measured points).
@@ -440,7 +476,7 @@ def test_written_compounds_constants_and_curve_agree(treloar, pyvisco_fit, tmp_p
     # Treloar compound's curve 33 % off).  Both to the root finder's precision.
     dma_only = _written_compound(pyvisco_fit, tmp_path)
     assert abs(dma_only.constants_modulus_mismatch()) < 1e-6
-    assert 6 * (dma_only.c10 + dma_only.c01) == pytest.approx(312e6, rel=0.01)
+    assert 6 * (dma_only.c10 + dma_only.c01) == pytest.approx(288e6, rel=0.01)
     tensile = _written_compound(treloar, tmp_path)
     assert abs(tensile.constants_modulus_mismatch()) < 1e-6
     assert tensile.glassy_modulus == pytest.approx(2e9)       # the base's glass, unchanged
