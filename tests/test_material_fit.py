@@ -403,20 +403,21 @@ def test_pyvisco_compound_follows_its_own_dma_data(pyvisco_fit, tmp_path):
     # evaluated here through the written file.  The sigmoid was fitted to the Prony series
     # over its relaxation times (32 decades, most beyond the data) and the law was a WLF the
     # compound does not evaluate below T_g: 12.0 % RMS, 23.7 % on the 40 degC isotherm, the
-    # 100 degC isotherm 9.5 % high.  Now 6.4 %, 10.5 % at worst (-5 degC, in the glass),
-    # 1 % high at 100 degC.  The Richards sigmoid sits at its asymmetry bound (nu = 0.05) and
-    # cannot follow both the 30-decade transition and the rubbery end of this polymer (the
-    # Prony series on the master curve: 6.9 %); a model-form limit, reported, not hidden.
+    # 100 degC isotherm 9.5 % high (10.1 % RMS).  Now 6.4 %; at 100 degC 1 % high on
+    # average but still 10.5 % RMS, from -19 % at 0.1 Hz to +12 % at 22 Hz: the Richards
+    # sigmoid sits at its asymmetry bound (nu = 0.05) and cannot follow both the 30-decade
+    # transition and the steep rubbery end of this polymer (the Prony series: 3.1 % there);
+    # a model-form limit, reported, not hidden.
     compound = _written_compound(pyvisco_fit, tmp_path)
     data = pyvisco_fit.dma
     rel = np.asarray(compound._modulus(data.temperature, data.frequency)) / data.storage - 1
-    dma = pyvisco_fit.report["modes"]["dma"]
-    assert dma["rel_rmse_compound"] == pytest.approx(np.sqrt(np.mean(rel ** 2)), rel=1e-9)
-    assert dma["rel_rmse_compound"] < 0.07
+    assert np.sqrt(np.mean(rel ** 2)) < 0.07
     per = [np.sqrt(np.mean(rel[g] ** 2)) for g in data.isotherms()]
     assert max(per) < 0.12
     hot = data.isotherms()[-1]                                   # 100 degC = T_r
     assert abs(np.mean(rel[hot])) < 0.03
+    dma = pyvisco_fit.report["modes"]["dma"]
+    assert dma["rel_rmse_compound"] == pytest.approx(np.sqrt(np.mean(rel ** 2)), rel=1e-9)
     factors = pyvisco_fit.report["viscoelastic"]["shift_factors"]
     assert [f["storage_rel_rmse_compound"] for f in factors] == pytest.approx(per)
 
@@ -450,11 +451,11 @@ def test_a_rubbers_dma_in_its_service_range_gives_back_its_modulus_curve(tmp_pat
     fit = fit_material_file(tmp_path / "fit.toml")
     compound = _written_compound(fit, tmp_path)
     rel = np.asarray(compound._modulus(temps, f)) / e1 - 1
-    assert fit.report["modes"]["dma"]["rel_rmse_compound"] == pytest.approx(
-        np.sqrt(np.mean(rel ** 2)), rel=1e-9)
     assert np.sqrt(np.mean(rel ** 2)) < 0.04
     assert max(np.sqrt(np.mean(rel[g] ** 2)) for g in fit.dma.isotherms()) < 0.05
     assert compound.glassy_modulus < 1e10                       # 2.9 GPa (NBR: 2 GPa)
+    assert fit.report["modes"]["dma"]["rel_rmse_compound"] == pytest.approx(
+        np.sqrt(np.mean(rel ** 2)), rel=1e-9)
 
 
 def _written_compound(fit, tmp_path):
