@@ -599,6 +599,15 @@ def test_dma_temperatures_in_celsius_read_as_kelvin_are_refused_naming_the_unit(
         DMAData(np.array([-50.0, 20.0, 100.0]), f, f * 1e6, f * 1e5)
 
 
+def test_dma_moduli_in_mpa_read_as_pa_are_refused_naming_the_unit():
+    # a rubber's 4.5 ... 1000 MPa with the column's unit given as Pa: the fit ended in a
+    # scipy traceback ('Each lower bound must be strictly less than each upper bound')
+    t, f = np.array([250.0, 260.0, 270.0]), np.full(3, 1.0)
+    with pytest.raises(InputError, match=r"storage modulus of point 2 is 4.5 Pa, outside "
+                                         r"10000-1e\+11 Pa .* check the modulus column's unit"):
+        DMAData(t, f, np.array([1e7, 4.5, 1e6]), f * 1e5)
+
+
 def test_a_curve_too_soft_for_the_base_rubber_names_the_stress_unit(tmp_path):
     # stresses of a rubber written in kPa instead of MPa: E = 6 kPa, below any plateau the
     # base's master curve can be moved to; was a traceback of brentq ('f(a) and f(b) must

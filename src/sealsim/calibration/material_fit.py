@@ -706,7 +706,8 @@ def _master_table(dma: DMAData, prony: PronyFit, shift: ShiftFit, t_ref: float) 
 
     top = log_eg - math.log10(2.01 * entropic.max())              # glassy > 2 x rubbery
     start = np.r_[first.x[1:], min(math.log10(e_r), top - 1e-6)]
-    res = least_squares(on_data, start, bounds=([-30, 0.05, 0.05, 4.0], [30, 9.0, 50.0, top]))
+    res = least_squares(on_data, start, bounds=([-30, 0.05, 0.05, min(4.0, top - 1.0)],
+                                                [30, 9.0, 50.0, top]))
     return {"glassy": _q(10 ** log_eg, "MPa"), "rubbery": _q(10 ** res.x[3], "MPa"),
             "test_frequency": "1 Hz", "transition_log10_frequency": float(f"{res.x[0]:.6g}"),
             "transition_width_decades": float(f"{res.x[1]:.6g}"),

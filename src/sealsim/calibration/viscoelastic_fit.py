@@ -80,6 +80,11 @@ GAS_CONSTANT = 8.314462618
 #: -150 ... +500 degC): a column in degC read as kelvin falls below it
 DMA_TEMPERATURE_RANGE = (100.0, 800.0)
 
+#: Storage moduli of a polymer [Pa]: a soft rubber's plateau (0.1 MPa) down to 10 kPa, a
+#: glass (1-10 GPa) up to 100 GPa (the limits of a compound's rubbery and glassy moduli,
+#: :class:`~sealsim.properties.elastomers.Elastomer`): MPa read as Pa falls below it
+DMA_STORAGE_RANGE = (1e4, 1e11)
+
 #: isotherms: points within this temperature of each other belong to one [K]
 ISOTHERM_TOLERANCE = 1.5
 
@@ -122,6 +127,13 @@ class DMAData:
             raise InputError(f"{self.name}: temperature of point {k + 1} is {t[k]:.6g} K "
                              f"({t[k] - ZERO_CELSIUS_K:.6g} degC), outside {lo:g}-{hi:g} K where a "
                              "polymer's DMA is measured: check the temperature column's unit")
+        lo, hi = DMA_STORAGE_RANGE
+        outside = ~((e1 >= lo) & (e1 <= hi))
+        if np.any(outside):
+            k = int(np.flatnonzero(outside)[0])
+            raise InputError(f"{self.name}: storage modulus of point {k + 1} is {e1[k]:.6g} Pa, "
+                             f"outside {lo:g}-{hi:g} Pa where a polymer's lies (a soft rubber "
+                             "to a stiff glass): check the modulus column's unit (MPa?)")
         for k, v in zip(("temperature", "frequency", "storage", "loss"), arrays):
             object.__setattr__(self, k, v)
 
@@ -567,7 +579,7 @@ def tan_delta_peak_temperature(data: DMAData, frequency: float = 1.0) -> float |
     >>> T = np.repeat([250.0, 260.0, 270.0, 280.0, 290.0], 3)
     >>> f = np.tile([0.1, 1.0, 10.0], 5)
     >>> td = 1.0 - ((T - 272.0) / 40.0) ** 2
-    >>> round(tan_delta_peak_temperature(DMAData(T, f, np.ones(15), td)), 1)
+    >>> round(tan_delta_peak_temperature(DMAData(T, f, np.full(15, 1e6), td * 1e6)), 1)
     272.0
     """
     temps, values = [], []
