@@ -174,6 +174,9 @@ def test_user_elastomer_file_with_units_equals_the_older_format(tmp_path):
     (('glassy = "2 GPa"', 'glassy = "2 GPa"\nglasy = "1 GPa"'), ["modulus.glasy: unknown"]),
     (('service_max = "110 degC"', 'service_max = "-50 degC"'),
      ["field 'service_min/service_max'"]),
+    # below T_g - 100 K every temperature is refused: a service range starting there
+    (('service_min = "-40 degC"', 'service_min = "-140 degC"'),
+     ["field 'service_min/service_max'", "T_min >= T_g - 100 K = 141.15 K"]),
 ])
 def test_bad_elastomer_entries_name_the_field(tmp_path, edit, words):
     path = tmp_path / "bad.toml"

@@ -268,6 +268,31 @@ def test_superposition_of_synthetic_dma_finds_the_wlf_law():
     assert hits / total >= 0.8, (hits, total)
 
 
+def test_wlf_with_an_arrhenius_branch_below_tg_is_recovered_where_plain_wlf_misses():
+    # Shift factors that follow WLF above T_g and, below it, the Arrhenius continuation with
+    # the WLF's value and slope at T_g (Ferry 1980, ch. 11; the law a compound evaluates),
+    # written out here: log a = y_g + B (1/T - 1/T_g), B = C1 C2 T_g^2 / (C2 + T_g - T_r)^2.
+    t_ref, c1, c2, tg = 373.15, 8.0, 120.0, 330.0
+    temps = np.arange(223.15, 374.0, 7.5)
+    d_g = tg - t_ref
+    b = c1 * c2 * tg ** 2 / (c2 + d_g) ** 2
+    d = np.where(temps >= tg, temps - t_ref, d_g)        # the WLF branch only above T_g
+    log_a = np.where(temps >= tg, -c1 * d / (c2 + d),
+                     -c1 * d_g / (c2 + d_g) + b * (1 / temps - 1 / tg))
+    se = 0.01 * np.sqrt(np.arange(temps.size) + 1.0)
+    fit = fit_shift_law(temps, log_a, se, t_ref, "wlf", cumulative=True, arrhenius_below=tg)
+    assert fit.parameters["c1"] == pytest.approx(c1, rel=1e-4)
+    assert fit.parameters["c2"] == pytest.approx(c2, rel=1e-4)
+    assert np.max(np.abs(fit.log10_shift(temps) - log_a)) < 1e-3        # decades
+    # a WLF at every temperature cannot follow the kink of the slope's curvature at T_g:
+    # 1.0 decade off just below it
+    plain = fit_shift_law(temps, log_a, se, t_ref, "wlf", cumulative=True)
+    assert np.max(np.abs(plain.log10_shift(temps) - log_a)) > 0.5
+    with pytest.raises(InputError, match="arrhenius_below"):
+        fit_shift_law(temps, log_a, se, t_ref, "arrhenius", cumulative=True,
+                      arrhenius_below=tg)
+
+
 def test_prony_from_synthetic_master_curve():
     # the Prony series of the superposed synthetic data: E_inf within 2 s.e., E' within 2 %
     # and E'' within 4 % (noise 0.5 %; the rest is the shift factors' systematic error),
@@ -344,10 +369,100 @@ def test_pyvisco_dma_master_curve_is_at_its_reference_temperature(pyvisco_fit):
     assert shift.log_shift_stderr[-1] == 0.0
     assert shift.log_shift_stderr[0] == pytest.approx(np.max(shift.log_shift_stderr))
     dma = pyvisco_fit.report["modes"]["dma"]
-    # the compound on every measured point: 10.6 %, against 6.9 % of the series on the master
-    # curve; WLF misses the shifts below T_g by up to 3 decades, where E' is nearly flat
-    assert dma["rel_rmse"] <= dma["rel_rmse_law"] < 0.12
+    # the series moved by the fitted law on every measured point: 8.3 %, against 6.9 % of the
+    # series on the master curve (the law misses the glassy shifts, where E' is nearly flat)
+    assert dma["rel_rmse"] <= dma["rel_rmse_law"] < 0.10
     assert dma["rel_rmse_loss_law"] > dma["rel_rmse_loss"]   # E'' does not superpose
+
+
+def test_pyvisco_compound_evaluates_the_fitted_shift_law(pyvisco_fit, tmp_path):
+    # The compound evaluates WLF above its T_g (here the tan delta peak, 74.7 degC) and the
+    # slope-continuous Arrhenius branch below.  The law was fitted as a WLF at every
+    # temperature: the compound's shift at -50 degC was 24.0 decades against the fitted
+    # law's 30.3 and the measured 27.2 (5.2 decades low at -20 degC), and the report's errors
+    # were those of a law the compound does not use.  Now the fit is the compound's law.
+    shift = pyvisco_fit.shift
+    compound = _written_compound(pyvisco_fit, tmp_path)
+    assert shift.arrhenius_below == pytest.approx(compound.glass_transition)
+    t = shift.temperatures
+    ours = np.asarray(compound._log10_shift(t)) - float(compound._log10_shift(
+        np.asarray(shift.reference_temperature)))
+    # (to 1e-3 decades: the file gives T_g to 6 digits, 74.6911 degC)
+    assert np.max(np.abs(ours - shift.log10_shift(t))) < 1e-3
+    # the remaining miss (measured: 1.9 decades at -20 degC, 1.75 at -50 degC, 0.05 above
+    # T_g): below ~0 degC E' is nearly flat and the pairwise shifts are extrapolations
+    # (pyvisco's own differ from ours by up to 1.6 decades there, see above)
+    miss = np.abs(shift.log10_shift(t) - shift.log_shift)
+    assert np.max(miss) < 2.0
+    assert np.max(miss[t >= shift.arrhenius_below]) < 0.1
+
+
+def test_pyvisco_compound_follows_its_own_dma_data(pyvisco_fit, tmp_path):
+    # The compound's E'(T, f) -- its master-curve sigmoid moved by its shift law, what the
+    # lip force, the O-ring maps and the heat model use -- against every measured point,
+    # evaluated here through the written file.  The sigmoid was fitted to the Prony series
+    # over its relaxation times (32 decades, most beyond the data) and the law was a WLF the
+    # compound does not evaluate below T_g: 12.0 % RMS, 23.7 % on the 40 degC isotherm, the
+    # 100 degC isotherm 9.5 % high (10.1 % RMS).  Now 6.4 %; at 100 degC 1 % high on
+    # average but still 10.5 % RMS, from -19 % at 0.1 Hz to +12 % at 22 Hz: the Richards
+    # sigmoid sits at its asymmetry bound (nu = 0.05) and cannot follow both the 30-decade
+    # transition and the steep rubbery end of this polymer (the Prony series: 3.1 % there);
+    # a model-form limit, reported, not hidden.
+    compound = _written_compound(pyvisco_fit, tmp_path)
+    data = pyvisco_fit.dma
+    rel = np.asarray(compound._modulus(data.temperature, data.frequency)) / data.storage - 1
+    assert np.sqrt(np.mean(rel ** 2)) < 0.07
+    per = [np.sqrt(np.mean(rel[g] ** 2)) for g in data.isotherms()]
+    assert max(per) < 0.12
+    hot = data.isotherms()[-1]                                   # 100 degC = T_r
+    assert abs(np.mean(rel[hot])) < 0.03
+    dma = pyvisco_fit.report["modes"]["dma"]
+    assert dma["rel_rmse_compound"] == pytest.approx(np.sqrt(np.mean(rel ** 2)), rel=1e-9)
+    factors = pyvisco_fit.report["viscoelastic"]["shift_factors"]
+    assert [f["storage_rel_rmse_compound"] for f in factors] == pytest.approx(per)
+
+
+def test_a_rubbers_dma_in_its_service_range_gives_back_its_modulus_curve(tmp_path):
+    # Synthetic DMA of the catalogue NBR (its Prony series moved by its own shift law, the
+    # plateau times T/T_p, as the catalogue defines it): isotherms -20 ... 100 degC, 0.1-100
+    # Hz, the glass not reached -- a seal rubber measured in its service range.  The compound
+    # follows these points within 3.1 % RMS, 3.7 % on every isotherm.  Its sigmoid was fitted
+    # to the Prony series, whose E_inf takes up the warm isotherms' entropic rise (the master
+    # curve is shifted along log f only) and was then multiplied by T/T_ref once more: 14.7 %
+    # RMS, 27 % high at 100 degC.  Fitted to the measured points alone the glassy modulus is
+    # free (250 GPa): it comes from the series.
+    nbr = get_elastomer("NBR")
+    e_inf, e_i, tau = nbr.prony
+    t_p = nbr.prony_reference_temperature
+    temps = np.repeat(np.arange(-20.0, 101.0, 10.0) + 273.15, 10)
+    f = np.tile(np.logspace(-1, 2, 10), 13)
+    w = 2 * np.pi * f * 10.0 ** (np.asarray(nbr.log10_shift_factor(temps))
+                                 - nbr.log10_shift_factor(t_p))
+    e1 = prony_storage_modulus(w, 0.0, e_i, tau) + e_inf * temps / t_p
+    e2 = prony_loss_modulus(w, e_inf, e_i, tau)
+    (tmp_path / "dma.csv").write_text("f,T,E1,E2\n" + "".join(
+        f"{a:.10g},{b:.10g},{c:.10g},{d:.10g}\n" for a, b, c, d in zip(f, temps, e1, e2)))
+    (tmp_path / "fit.toml").write_text(
+        '[compound]\nname = "syn"\nbase = "NBR"\nreference_temperature = "23 degC"\n'
+        '[[viscoelastic.files]]\nfile = "dma.csv"\ndelimiter = ","\nheader = true\n'
+        'columns = { frequency = { column = "f", unit = "Hz" }, temperature = { column = "T", '
+        'unit = "K" }, storage_modulus = { column = "E1", unit = "Pa" }, loss_modulus = { '
+        'column = "E2", unit = "Pa" } }\n')
+    fit = fit_material_file(tmp_path / "fit.toml")
+    compound = _written_compound(fit, tmp_path)
+    rel = np.asarray(compound._modulus(temps, f)) / e1 - 1
+    assert np.sqrt(np.mean(rel ** 2)) < 0.04
+    assert max(np.sqrt(np.mean(rel[g] ** 2)) for g in fit.dma.isotherms()) < 0.05
+    assert compound.glassy_modulus < 1e10                       # 2.9 GPa (NBR: 2 GPa)
+    assert fit.report["modes"]["dma"]["rel_rmse_compound"] == pytest.approx(
+        np.sqrt(np.mean(rel ** 2)), rel=1e-9)
+    # what the seal models take from it: the 1 Hz modulus within 6 % of NBR's and the held
+    # seal's modulus (lip force, O-ring maps) within 11 % at 20, 60, 100 degC (measured -3 to
+    # -6 % and -9 to -10 %; with the old fit +18, +34, +40 %: the speed cycle's torque of
+    # examples/rotary/speed_cycle.toml came out 0.437 N m against NBR's 0.345, now 0.336)
+    t = np.array([20.0, 60.0, 100.0]) + 273.15
+    assert compound.modulus(t) == pytest.approx(nbr.modulus(t), rel=0.06)
+    assert compound.held_modulus(t) == pytest.approx(nbr.held_modulus(t), rel=0.11)
 
 
 def _written_compound(fit, tmp_path):
@@ -360,15 +475,16 @@ def _written_compound(fit, tmp_path):
 
 def test_written_compounds_constants_and_curve_agree(treloar, pyvisco_fit, tmp_path):
     # A held seal's stiffness is the constants times E_h(T)/E(T_ref, f_test) of the curve.
-    # DMA only: the constants are the fitted curve at (T_ref, f_test), 327 MPa for pyvisco's
+    # DMA only: the constants are the fitted curve at (T_ref, f_test), 288 MPa for pyvisco's
     # polymer at 100 degC and 1 Hz (measured 296 MPa; they were E_inf = 212 MPa, counting the
-    # relaxation twice, and 408 MPa while the master curve was not at T_r).
+    # relaxation twice, 408 MPa while the master curve was not at T_r and 327 MPa while the
+    # curve was fitted to the Prony series instead of the measured points).
     # Tensile curves on a catalogue base: the base's curve moved with T_g gets the rubbery
     # plateau that passes through the constants' modulus (the plateau ratio alone left the
     # Treloar compound's curve 33 % off).  Both to the root finder's precision.
     dma_only = _written_compound(pyvisco_fit, tmp_path)
     assert abs(dma_only.constants_modulus_mismatch()) < 1e-6
-    assert 6 * (dma_only.c10 + dma_only.c01) == pytest.approx(327e6, rel=0.01)
+    assert 6 * (dma_only.c10 + dma_only.c01) == pytest.approx(288e6, rel=0.01)
     tensile = _written_compound(treloar, tmp_path)
     assert abs(tensile.constants_modulus_mismatch()) < 1e-6
     assert tensile.glassy_modulus == pytest.approx(2e9)       # the base's glass, unchanged
@@ -490,6 +606,15 @@ def test_dma_temperatures_in_celsius_read_as_kelvin_are_refused_naming_the_unit(
         DMAData(np.array([-50.0, 20.0, 100.0]), f, f * 1e6, f * 1e5)
 
 
+def test_dma_moduli_in_mpa_read_as_pa_are_refused_naming_the_unit():
+    # a rubber's 4.5 ... 1000 MPa with the column's unit given as Pa: the fit ended in a
+    # scipy traceback ('Each lower bound must be strictly less than each upper bound')
+    t, f = np.array([250.0, 260.0, 270.0]), np.full(3, 1.0)
+    with pytest.raises(InputError, match=r"storage modulus of point 2 is 4.5 Pa, outside "
+                                         r"10000-1e\+11 Pa .* check the modulus column's unit"):
+        DMAData(t, f, np.array([1e7, 4.5, 1e6]), f * 1e5)
+
+
 def test_a_curve_too_soft_for_the_base_rubber_names_the_stress_unit(tmp_path):
     # stresses of a rubber written in kPa instead of MPa: E = 6 kPa, below any plateau the
     # base's master curve can be moved to; was a traceback of brentq ('f(a) and f(b) must
@@ -550,6 +675,25 @@ def test_cli_material_fit_writes_the_folder_and_show_reads_the_compound(tmp_path
     assert show.exit_code == 0, show.output
     assert json.loads(show.output)["name"] == "treloar_nr"
     assert not math.isnan(json.loads(show.output)["c10_Pa"])
+
+
+def test_a_dma_compound_on_a_base_gets_the_bases_service_minimum_moved_with_tg(
+        pyvisco_fit, tmp_path):
+    # pyvisco's polymer (T_g 74.7 degC, tan delta peak) on base NBR (T_g -25 degC) got NBR's
+    # service minimum of -40 degC, below T_g - 100 K = -25.3 degC where the compound refuses
+    # every temperature: 'sealsim material show' of the written file failed with its own
+    # default temperatures.  The minimum now follows T_g (as the base's WLF reference does).
+    from typer.testing import CliRunner
+
+    from sealsim.cli import app
+
+    compound = _written_compound(pyvisco_fit, tmp_path)
+    nbr = get_elastomer("NBR")
+    moved = compound.glass_transition - nbr.glass_transition
+    assert compound.service_range[0] == pytest.approx(nbr.service_range[0] + moved, abs=1e-3)
+    show = CliRunner().invoke(app, ["material", "show", str(tmp_path / "compound.toml")])
+    assert show.exit_code == 0, show.output
+    assert "outside the service range" not in show.output     # its first row, rounded inwards
 
 
 def test_fit_file_inside_the_result_folder_is_refused(tmp_path):

@@ -13,7 +13,7 @@ from sealsim.cases import apply_overrides
 from sealsim.cli.structure import structure_app
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "examples" / "structure"
-RESULT_COLUMNS = ["squeeze", "pressure_bar", "temperature_C", "F_N_N",
+RESULT_COLUMNS = ["squeeze_percent", "pressure_bar", "temperature_C", "F_N_N",
                   "F_N_per_length_N_per_mm", "b_mm", "p_max_MPa", "p_mean_MPa"]
 runner = CliRunner()
 
@@ -99,7 +99,7 @@ def test_states_plot_of_a_cooling_run_is_over_temperature():
     # installation (squeeze ramp) and hold at 20 degC, then cooling to -40 degC
     temperature = [20.0, 20.0, 20.0, 0.0, -20.0, -40.0]
     frame = pd.DataFrame({
-        "squeeze": [0.05, 0.15, 0.15, 0.15, 0.15, 0.15], "pressure_bar": 0.0,
+        "squeeze_percent": [5.0, 15.0, 15.0, 15.0, 15.0, 15.0], "pressure_bar": 0.0,
         "temperature_C": temperature, "time_s": [0, 30, 3660, 4860, 6060, 7260],
         "F_N_N": [40, 130, 120, 100, 60, 200], "F_groove_bottom_N": [50, 170, 160, 120, 0, 0],
         "b_mm": 1.0, "p_max_MPa": 1.0, "p_max_groove_bottom_MPa": 1.0})

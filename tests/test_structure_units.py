@@ -308,3 +308,26 @@ def test_compiled_solid_body_equals_felupe(axisymmetric, viscoelastic):
     for ref, new in zip(out[False], out[True], strict=True):
         for r, n in zip(ref, new, strict=True):
             assert np.abs(n - r).max() <= 1e-10 * np.abs(r).max()
+
+
+def test_result_tables_give_the_squeeze_in_percent_as_the_gland_check_does():
+    """result.csv and profiles.csv carry the squeeze as ``squeeze_percent`` (the gland
+    check's ``squeeze_percent`` convention, the unit in the header); they gave a bare
+    fraction headed ``squeeze`` (0.15 next to the gland check's 15 %)."""
+    from sealsim.structure.results import (
+        StateResult,
+        SurfaceResult,
+        profiles_frame,
+        results_frame,
+    )
+
+    surface = SurfaceResult("sealing_surface", 10.0, 1e-3, 1e6, 5e5, np.array([0.0, 1e-3]),
+                            np.array([1e6, 0.0]), 0.01)
+    state = StateResult(squeeze=0.15, pressure=6e5, temperature=293.15, time=0.0, F_N=10.0,
+                        F_N_per_length=100.0, b=1e-3, p_max=1e6, p_mean=5e5,
+                        surfaces={"sealing_surface": surface}, axial_imbalance=0.0,
+                        radial_imbalance=0.0, hoop_force=0.0, fluid_force=(0.0, 0.0),
+                        max_penetration=0.0, wetted_length=0.0, rolling_moment=0.0)
+    for frame in (results_frame([state]), profiles_frame([state])):
+        assert "squeeze" not in frame.columns
+        assert frame["squeeze_percent"].tolist() == pytest.approx([15.0] * len(frame))

@@ -28,4 +28,4 @@ fig = plot_section(result.states[-1], "15 % squeeze, 6 bar")
 # %%
 # Normal force, contact width and peak contact pressure on the rod at each load state:
 frame = results_frame(result.states)
-print(frame[["squeeze", "pressure_bar", "F_N_N", "b_mm", "p_max_MPa"]].round(3).to_string())
+print(frame[["squeeze_percent", "pressure_bar", "F_N_N", "b_mm", "p_max_MPa"]].round(3).to_string())

@@ -62,7 +62,11 @@ from scipy.optimize import least_squares, nnls
 
 from sealsim.calibration.statistics import compare_signals, parameter_statistics
 from sealsim.errors import InputError
-from sealsim.properties.viscoelasticity import prony_loss_modulus, prony_storage_modulus
+from sealsim.properties.viscoelasticity import (
+    _log10_shift,
+    prony_loss_modulus,
+    prony_storage_modulus,
+)
 from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["GAS_CONSTANT", "DMAData", "PronyFit", "ShiftFit", "fit_prony", "fit_shift_law",
@@ -75,6 +79,11 @@ GAS_CONSTANT = 8.314462618
 #: Temperatures a DMA of a polymer is measured at [K] (-173 ... +527 degC; instruments reach
 #: -150 ... +500 degC): a column in degC read as kelvin falls below it
 DMA_TEMPERATURE_RANGE = (100.0, 800.0)
+
+#: Storage moduli of a polymer [Pa]: a soft rubber's plateau (0.1 MPa) down to 10 kPa, a
+#: glass (1-10 GPa) up to 100 GPa (the limits of a compound's rubbery and glassy moduli,
+#: :class:`~sealsim.properties.elastomers.Elastomer`): MPa read as Pa falls below it
+DMA_STORAGE_RANGE = (1e4, 1e11)
 
 #: isotherms: points within this temperature of each other belong to one [K]
 ISOTHERM_TOLERANCE = 1.5
@@ -118,6 +127,13 @@ class DMAData:
             raise InputError(f"{self.name}: temperature of point {k + 1} is {t[k]:.6g} K "
                              f"({t[k] - ZERO_CELSIUS_K:.6g} degC), outside {lo:g}-{hi:g} K where a "
                              "polymer's DMA is measured: check the temperature column's unit")
+        lo, hi = DMA_STORAGE_RANGE
+        outside = ~((e1 >= lo) & (e1 <= hi))
+        if np.any(outside):
+            k = int(np.flatnonzero(outside)[0])
+            raise InputError(f"{self.name}: storage modulus of point {k + 1} is {e1[k]:.6g} Pa, "
+                             f"outside {lo:g}-{hi:g} Pa where a polymer's lies (a soft rubber "
+                             "to a stiff glass): check the modulus column's unit (MPa?)")
         for k, v in zip(("temperature", "frequency", "storage", "loss"), arrays):
             object.__setattr__(self, k, v)
 
@@ -148,12 +164,17 @@ class ShiftFit:
     standard_errors: dict
     identifiable: dict
     notes: list[str] = field(default_factory=list)
+    #: for WLF: the temperature [K] below which the slope-continuous Arrhenius branch holds
+    #: (the compound's T_g, as :class:`~sealsim.properties.elastomers.Elastomer` evaluates
+    #: it), or None for WLF at every temperature
+    arrhenius_below: float | None = None
 
     def log10_shift(self, temperature) -> np.ndarray:
         """log10 a_T of the fitted law at T [K] (relative to the reference temperature)."""
-        t = np.asarray(temperature, dtype=float) - self.reference_temperature
         if self.law == "wlf":
-            return -self.parameters["c1"] * t / (self.parameters["c2"] + t)
+            return _log10_shift(np.asarray(temperature, dtype=float),
+                                self.reference_temperature, self.parameters["c1"],
+                                self.parameters["c2"], self.arrhenius_below)
         b = self.parameters["activation_energy"] / (GAS_CONSTANT * math.log(10.0))
         return b * (1.0 / np.asarray(temperature, dtype=float) - 1.0 / self.reference_temperature)
 
@@ -268,8 +289,15 @@ def isotherm_shifts(data: DMAData) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 
 def fit_shift_law(temperatures, log_shift, stderr, reference_temperature: float,
-                  law: str = "wlf", cumulative: bool = False) -> ShiftFit:
+                  law: str = "wlf", cumulative: bool = False,
+                  arrhenius_below: float | None = None) -> ShiftFit:
     """WLF or Arrhenius fitted to measured shift factors (see the module docstring).
+
+    ``arrhenius_below`` (WLF only; the compound's T_g [K]): the law fitted is the one a
+    compound evaluates (:func:`sealsim.properties.viscoelasticity.wlf_log10_shift` with
+    ``arrhenius_below``): WLF above that temperature, below it the Arrhenius continuation
+    whose value and slope meet the WLF there (Ferry 1980, ch. 11).  Shift factors measured
+    below T_g are then fitted by that branch, not by a WLF the compound does not use there.
 
     The measured log a_T may have any offset (relative to one isotherm); the result's
     ``log_shift`` is re-referenced to ``reference_temperature`` with the fitted offset.
@@ -305,6 +333,7 @@ def fit_shift_law(temperatures, log_shift, stderr, reference_temperature: float,
     # the isotherm the shifts are relative to has no error of its own: weight by the median
     w = 1.0 / np.where(se > 0, se, np.median(se[se > 0]) if np.any(se > 0) else 1.0)
     tr = float(reference_temperature)
+    t_a = None if arrhenius_below is None else float(arrhenius_below)
     if cumulative:
         steps = np.sqrt(np.maximum(np.diff(se ** 2), 0.0))
         if t.size < 2 or np.any(np.diff(t) <= 0) or not np.all(steps > 0):
@@ -317,8 +346,9 @@ def fit_shift_law(temperatures, log_shift, stderr, reference_temperature: float,
                              "temperatures (an Arrhenius law needs 3)")
 
         def shape(x):
-            return -x[0] * (t - tr) / (x[1] + t - tr)
-        lo_c2 = max(1.0, tr - float(t.min()) + 1.0)   # WLF finite over the data
+            return _log10_shift(t, tr, x[0], x[1], t_a)
+        # WLF finite over the data (down to T_a where the Arrhenius branch takes over)
+        lo_c2 = max(1.0, tr - (float(t.min()) if t_a is None else t_a) + 1.0)
         start = [10.0, max(100.0, lo_c2 + 20.0)]
         lower, upper = [0.0, lo_c2], [200.0, 5000.0]
         names = ["c1", "c2"]
@@ -334,6 +364,9 @@ def fit_shift_law(temperatures, log_shift, stderr, reference_temperature: float,
         names = ["activation_energy"]
     else:
         raise InputError(f"shift law {law!r} is not known; choose 'wlf' or 'arrhenius'")
+    if law != "wlf" and t_a is not None:
+        raise InputError("arrhenius_below is the WLF law's Arrhenius branch; an Arrhenius "
+                         "law has none")
     if cumulative:
         res = least_squares(lambda x: (np.diff(shape(x)) - np.diff(y)) / steps, start,
                             bounds=(lower, upper))
@@ -357,7 +390,8 @@ def fit_shift_law(temperatures, log_shift, stderr, reference_temperature: float,
     params = {n: float(v) for n, v in zip(names[:-1], x[:-1])}
     errors = {n: (float(v) if math.isfinite(v) else None) for n, v in zip(names[:-1], sx[:-1])}
     ident = {n: bool(v) for n, v in zip(names[:-1], stats["identifiable"][:-1])}
-    fit = ShiftFit(t, y - x[-1], se, law, tr, params, errors, ident)
+    fit = ShiftFit(t, y - x[-1], se, law, tr, params, errors, ident,
+                   arrhenius_below=t_a)
     for n, reasons in zip(names[:-1], stats["reasons"][:-1]):
         fit.notes += [f"{n}: {r}" for r in reasons]
     return fit
@@ -545,7 +579,7 @@ def tan_delta_peak_temperature(data: DMAData, frequency: float = 1.0) -> float |
     >>> T = np.repeat([250.0, 260.0, 270.0, 280.0, 290.0], 3)
     >>> f = np.tile([0.1, 1.0, 10.0], 5)
     >>> td = 1.0 - ((T - 272.0) / 40.0) ** 2
-    >>> round(tan_delta_peak_temperature(DMAData(T, f, np.ones(15), td)), 1)
+    >>> round(tan_delta_peak_temperature(DMAData(T, f, np.full(15, 1e6), td * 1e6)), 1)
     272.0
     """
     temps, values = [], []

@@ -477,8 +477,10 @@ def material_fit(
         m = report["modes"]["dma"]
         _say(f"DMA: Prony series {report['viscoelastic']['prony_terms']} terms, RMS relative "
              f"error E' {100 * m['rel_rmse']:.1f} %, E'' {100 * m['rel_rmse_loss']:.1f} % on "
-             f"the master curve; with the fitted WLF shifts (the compound) E' "
-             f"{100 * m['rel_rmse_law']:.1f} %, E'' {100 * m['rel_rmse_loss_law']:.1f} %")
+             f"the master curve; moved by the fitted shift law E' "
+             f"{100 * m['rel_rmse_law']:.1f} %, E'' {100 * m['rel_rmse_loss_law']:.1f} %; the "
+             f"compound file's E'(T, f) (master-curve sigmoid and shift law, what the seal "
+             f"models use) {100 * m['rel_rmse_compound']:.1f} %")
     _notes(report["notes"])
     _say(f"compound file: {Path(out) / (result.case.compound.name + '.toml')}")
     _say(f"results written to {out}")

@@ -57,14 +57,18 @@ def plot_stress_mode(mode: str, data, models, title: str = ""):
 
 
 def plot_master_curve(f_r, storage, loss, grid, storage_model, loss_model, reference_c,
-                      title: str = ""):
+                      title: str = "", compound_storage=None):
     """Master curve at the reference temperature: E′ and E″ points (shifted with the measured
-    shift factors) and the Prony series."""
+    shift factors), the Prony series and (``compound_storage`` on ``grid``) the compound
+    file's E′, the master-curve sigmoid the seal models use."""
     fig, ax = new_figure(1, 1, width=7.5, height=5.0)
     ax.loglog(f_r, storage * _MPA, "o", ms=3, mfc="none", color="C0", label="E′ measured")
     ax.loglog(f_r, loss * _MPA, "s", ms=3, mfc="none", color="C3", label="E″ measured")
     ax.loglog(grid, storage_model * _MPA, "-", color="C0", label="E′ Prony")
     ax.loglog(grid, loss_model * _MPA, "-", color="C3", label="E″ Prony")
+    if compound_storage is not None:
+        ax.loglog(grid, np.asarray(compound_storage) * _MPA, "--", color="k", lw=1.0,
+                  label="E′ compound file (sigmoid, used by the seal models)")
     ax.set_xlabel(f"reduced frequency f·a_T at {reference_c:g} °C [Hz]")
     ax.set_ylabel("modulus [MPa]")
     ax.grid(alpha=0.3, which="both")

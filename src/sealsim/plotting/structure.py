@@ -158,21 +158,22 @@ def plot_states(frame, x: str | None = None, title: str = "", groove_bottom: boo
     labels = None
     if x is None:
         spans = {c: float(np.ptp(frame[c].to_numpy())) for c in
-                 ("temperature_C", "pressure_bar", "squeeze")}
+                 ("temperature_C", "pressure_bar", "squeeze_percent")}
         if spans["temperature_C"] > 0:
             # installation and hold sit at one temperature: start at the last of them
             temperature = frame["temperature_C"].to_numpy()
             first_change = int(np.argmax(temperature != temperature[0]))
             frame = frame.iloc[max(first_change - 1, 0):]
             x = "temperature_C"
-        elif spans["squeeze"] > 0 and spans["pressure_bar"] > 0:
+        elif spans["squeeze_percent"] > 0 and spans["pressure_bar"] > 0:
             x = "load state"
-            labels = [f"{s * 100:.3g} %" if k == 0 or s != frame["squeeze"].iloc[k - 1]
+            labels = [f"{s:.3g} %" if k == 0 or s != frame["squeeze_percent"].iloc[k - 1]
                       else f"{p:.3g} bar"
-                      for k, (s, p) in enumerate(zip(frame["squeeze"], frame["pressure_bar"],
+                      for k, (s, p) in enumerate(zip(frame["squeeze_percent"],
+                                                     frame["pressure_bar"],
                                                      strict=True))]
         else:
-            x = "pressure_bar" if spans["pressure_bar"] > 0 else "squeeze"
+            x = "pressure_bar" if spans["pressure_bar"] > 0 else "squeeze_percent"
     fig, axes = new_figure(3, 1, width=12.0, height=3.6)
     xs = np.arange(len(frame)) if x == "load state" else frame[x].to_numpy()
     axes[0].plot(xs, frame["F_N_N"], "-o", ms=3, label="sealing surface F_N")
@@ -192,7 +193,7 @@ def plot_states(frame, x: str | None = None, title: str = "", groove_bottom: boo
             ax.set_xlabel("load state (squeeze, then pressure)")
         else:
             ax.set_xlabel({"time_s": "time [s]", "pressure_bar": "pressure [bar]",
-                           "squeeze": "squeeze [-]", "temperature_C": "temperature [°C]"
+                           "squeeze_percent": "squeeze [%]", "temperature_C": "temperature [°C]"
                            }.get(x, x))
     if x == "temperature_C" and xs[-1] < xs[0]:
         for ax in axes:          # a cooling run reads from left to right

@@ -472,6 +472,12 @@ class Elastomer:
             raise _field_error("service_range", self.service_range, "0 < T_min < T_max [K]")
         if t_max <= tg:
             raise _field_error("service_range", self.service_range, f"T_max > T_g = {tg:g} K")
+        if t_min < tg - BELOW_TG_LIMIT:
+            # below it the model refuses every temperature (allowed_range): a service range
+            # that starts there cannot be used
+            raise _field_error("service_range", self.service_range,
+                               f"T_min >= T_g - {BELOW_TG_LIMIT:g} K = {tg - BELOW_TG_LIMIT:g} K "
+                               "(the lower end of the range where the model is meaningful)")
         set_("service_range", (t_min, t_max))
         if self.dma_table is not None:
             self._validate_dma(set_)

@@ -229,7 +229,9 @@ def default_material_temperatures(m: Elastomer) -> list[float]:
     >>> default_material_temperatures(get_elastomer("NBR"))
     [-40.0, -20.0, 0.0, 20.0, 40.0, 60.0, 80.0, 100.0]
     """
-    lo, hi = round(celsius(m.service_range[0]), 2), round(celsius(m.service_range[1]), 2)
+    # to 0.01 K inwards: a limit rounded outwards (59.6911 -> 59.69 degC) is outside service
+    lo = math.ceil(round(celsius(m.service_range[0]) * 100.0, 6)) / 100.0
+    hi = math.floor(round(celsius(m.service_range[1]) * 100.0, 6)) / 100.0
     inner = np.arange(math.ceil(lo / 20.0) * 20.0, hi, 20.0)
     return [lo] + [float(v) for v in inner if lo + 5.0 < v < hi - 5.0] + [hi]
 

@@ -122,12 +122,18 @@ def _write_dma(folder: ResultFolder, result: MaterialFitResult, title: str) -> N
     f_r, e1, e2 = master_curve(result.dma, shift)
     grid = np.logspace(np.log10(f_r.min()), np.log10(f_r.max()), 300)
     ref_c = shift.reference_temperature - ZERO_CELSIUS_K
+    compound = result.compound()._modulus(np.full(grid.shape, shift.reference_temperature),
+                                          grid)
     folder.savefig("dma_master_curve.png", plot_master_curve(
-        f_r, e1, e2, grid, prony.storage(grid), prony.loss(grid), ref_c, title))
+        f_r, e1, e2, grid, prony.storage(grid), prony.loss(grid), ref_c, title,
+        compound_storage=compound))
     t = shift.temperatures
     tgrid = np.linspace(t.min(), t.max(), 200)
-    curves = [(f"WLF: C1 = {shift.parameters['c1']:.3g}, C2 = {shift.parameters['c2']:.3g} K",
-               shift.log10_shift(tgrid))]
+    law = f"WLF: C1 = {shift.parameters['c1']:.3g}, C2 = {shift.parameters['c2']:.3g} K"
+    if shift.arrhenius_below is not None and shift.arrhenius_below > t.min():
+        law += (f" above T_g = {shift.arrhenius_below - ZERO_CELSIUS_K:.3g} °C, Arrhenius "
+                "below (the compound's law)")
+    curves = [(law, shift.log10_shift(tgrid))]
     if result.arrhenius is not None:
         curves.append((f"Arrhenius: E_a = "
                        f"{result.arrhenius.parameters['activation_energy'] / 1e3:.0f} kJ/mol",
@@ -138,7 +144,10 @@ def _write_dma(folder: ResultFolder, result: MaterialFitResult, title: str) -> N
     folder.write_csv("shift_factors.csv", pd.DataFrame({
         "temperature_C": t - ZERO_CELSIUS_K, "log10_aT": shift.log_shift,
         "log10_aT_stderr": shift.log_shift_stderr,
-        "log10_aT_wlf": shift.log10_shift(t)}), float_format="%.8g")
+        "log10_aT_law": shift.log10_shift(t),
+        "storage_rel_rmse_compound": [
+            f["storage_rel_rmse_compound"]
+            for f in result.report["viscoelastic"]["shift_factors"]]}), float_format="%.8g")
     folder.write_csv("prony.csv", pd.DataFrame({
         "relaxation_time_s": np.r_[np.inf, prony.relaxation_times],
         "modulus_Pa": np.r_[prony.equilibrium_modulus, prony.moduli],

@@ -175,23 +175,23 @@ def map_case_file(path: str | Path, out: str | Path, force: bool = False,
         folder.write_netcdf("map.nc", ds)
         flat = ds.drop_dims("position").to_dataframe().reset_index()
         table = flat.assign(
-            squeeze=flat["squeeze"], pressure_bar=flat["pressure"] / 1e5,
+            squeeze_percent=flat["squeeze"] * 100.0, pressure_bar=flat["pressure"] / 1e5,
             temperature_C=flat["temperature"] - ZERO_CELSIUS_K, F_N_N=flat["F_N"],
             F_N_per_length_N_per_mm=flat["F_N_per_length"] / 1e3, b_mm=flat["b"] * 1e3,
             p_max_MPa=flat["p_max"] / 1e6, p_mean_MPa=flat["p_mean"] / 1e6,
             F_groove_bottom_N=flat["F_groove_bottom"], contact_zones=flat["contact_zones"],
             b_span_mm=flat["b_span"] * 1e3)[
-            ["squeeze", "pressure_bar", "temperature_C", "F_N_N", "F_N_per_length_N_per_mm",
+            ["squeeze_percent", "pressure_bar", "temperature_C", "F_N_N", "F_N_per_length_N_per_mm",
              "b_mm", "p_max_MPa", "p_mean_MPa", "F_groove_bottom_N", "contact_zones",
              "b_span_mm"]]
         folder.write_csv("map.csv", table)
         prof = ds["contact_pressure"].to_dataframe().reset_index()
         folder.write_csv("map_profiles.csv", prof.assign(
-            pressure_bar=prof["pressure"] / 1e5,
+            squeeze_percent=prof["squeeze"] * 100.0, pressure_bar=prof["pressure"] / 1e5,
             temperature_C=prof["temperature"] - ZERO_CELSIUS_K,
             position_mm=prof["position"] * 1e3,
             contact_pressure_MPa=prof["contact_pressure"] / 1e6)[
-            ["squeeze", "temperature_C", "pressure_bar", "position_mm",
+            ["squeeze_percent", "temperature_C", "pressure_bar", "position_mm",
              "contact_pressure_MPa"]])
         title = case.title or describe_seal(case)
         for i in range(ds.sizes["squeeze"]):

@@ -125,10 +125,11 @@ class StateResult:
     spring_points: np.ndarray = field(repr=False, default=None)
 
     def row(self) -> dict:
-        """One row of ``result.csv`` (engineering units)."""
+        """One row of ``result.csv`` (engineering units; the squeeze in percent, as the gland
+        check gives it)."""
         s = self.surfaces
         return {
-            "squeeze": round(self.squeeze, 10),
+            "squeeze_percent": round(self.squeeze * 100.0, 8),
             "pressure_bar": self.pressure / 1e5,
             "temperature_C": self.temperature - ZERO_CELSIUS_K,
             "time_s": self.time,
@@ -442,11 +443,11 @@ def profiles_frame(results):
     for k, r in enumerate(results):
         for name, s in r.surfaces.items():
             for pos, p in zip(s.position, s.pressure):
-                rows.append({"state": k, "squeeze": round(r.squeeze, 10),
+                rows.append({"state": k, "squeeze_percent": round(r.squeeze * 100.0, 8),
                              "pressure_bar": r.pressure / 1e5,
                              "temperature_C": r.temperature - ZERO_CELSIUS_K, "time_s": r.time,
                              "surface": name, "position_mm": pos * 1e3,
                              "contact_pressure_MPa": p / 1e6})
-    return pd.DataFrame(rows, columns=["state", "squeeze", "pressure_bar", "temperature_C",
+    return pd.DataFrame(rows, columns=["state", "squeeze_percent", "pressure_bar", "temperature_C",
                                        "time_s", "surface", "position_mm",
                                        "contact_pressure_MPa"])
