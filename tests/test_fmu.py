@@ -348,6 +348,36 @@ def test_cli_writes_atomically_and_refuses_an_existing_file(tmp_path, monkeypatc
     assert list(scratch.iterdir()) == []                 # also after a failed compile
 
 
+
+def test_build_writes_through_the_one_result_mechanism(tmp_path, monkeypatch):
+    # the builder had its own atomic write: no lock (two builds of one file raced, the second
+    # replacing the first with --force), and the temporaries of a killed build stayed forever
+    import subprocess
+
+    from sealsim.errors import ResultBusyError
+    from sealsim.output import ResultFile
+
+    out = tmp_path / "theta.fmu"
+    dead = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"],
+                          capture_output=True, text=True, check=True).stdout.strip()
+    with ResultFile(out, suffix=".fmu") as running:      # another build of the same file
+        with pytest.raises(ResultBusyError, match="theta.fmu' is being written by another"):
+            build_fmu(FRICTION / "theta_dwell.toml", out, compile=False, force=True)
+        running.write_bytes(b"the other build's FMU")
+    assert out.read_bytes() == b"the other build's FMU"
+    (tmp_path / f".theta.fmu.{dead}.k1ll3d00.tmp").write_bytes(b"PK half")  # a killed build's
+    # a build that fails in the middle (here: its validation) leaves the file as it was
+    import fmpy.validation
+
+    monkeypatch.setattr(fmpy.validation, "validate_fmu", lambda folder: ["broken"])
+    with pytest.raises(ModelError, match="not valid"):
+        build_fmu(FRICTION / "theta_dwell.toml", out, compile=False, force=True)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["theta.fmu"]  # and no temporaries
+    monkeypatch.undo()
+    build_fmu(FRICTION / "theta_dwell.toml", out, compile=False, force=True)
+    assert validate_fmu(str(out)) == [] and sorted(p.name for p in tmp_path.iterdir()) == [
+        "theta.fmu"]
+
 def test_missing_compiler_still_writes_the_source_fmu(tmp_path, monkeypatch):
     monkeypatch.setenv("CC", str(tmp_path / "no-such-compiler"))
     out = tmp_path / "src.fmu"
