@@ -172,6 +172,41 @@ def test_a_damaged_cached_map_is_built_again(tiny_structure_case, fe_cache, tmp_
     assert [p.name for p in tmp_path.glob("*.nc")] == [cached.name]
 
 
+
+def test_an_interrupted_on_demand_map_build_computes_only_the_missing_paths(
+        tiny_structure_case, fe_cache, tmp_path, monkeypatch):
+    # a map built on demand (pneumatic run, fits, studies) kept none of its finished FE load
+    # paths: after Ctrl-C or a killed process the next run computed the whole map again
+    import sealsim.structure.mapping as mapping
+    from sealsim.pneumatic.map_cache import list_cached_maps
+
+    computed = []
+    real = mapping._map_task
+    monkeypatch.setattr(mapping, "_map_task",
+                        lambda data, squeeze, temperature, *args: computed.append(temperature)
+                        or real(data, squeeze, temperature, *args))
+
+    def ctrl_c_after_one_path(done, total):
+        if done == 1:
+            raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        cm.build_or_load_fe_map(tiny_structure_case, cache_dir=tmp_path,
+                                progress=ctrl_c_after_one_path)
+    assert computed == [293.15] and list(tmp_path.glob("*.nc")) == []
+    [entry] = list_cached_maps(tmp_path)          # 'sealsim cache list' shows what is kept
+    assert not entry.complete and entry.path.name.endswith(".nc.paths") and entry.size > 0
+    assert len(list(entry.path.glob("*.json"))) == 1
+    computed.clear()
+    m = cm.build_or_load_fe_map(tiny_structure_case, cache_dir=tmp_path)
+    assert computed == [333.15]                   # only the path the interruption left out
+    assert sorted(p.name for p in tmp_path.iterdir()) == [p.name for p in fe_cache.glob("*.nc")]
+    # the same map as an uninterrupted build (JSON keeps every float; 1e-12: the resumed
+    # build installs the seal again for its one path)
+    ref = cm.build_or_load_fe_map(tiny_structure_case, cache_dir=fe_cache)
+    for p, t in ((0.0, 293.15), (3e5, 310.0), (8e5, 333.15)):
+        np.testing.assert_allclose(m.evaluate(p, t), ref.evaluate(p, t), rtol=1e-12)
+
 def test_fingerprint_follows_the_model_version(monkeypatch):
     from sealsim.structure import fingerprint
 

@@ -149,22 +149,18 @@ class _KeptPaths:
     (Ctrl-C, SIGKILL, power loss) computes only the missing paths when it is run again.
 
     Each path is one JSON file named by a hash of everything its values depend on -- the
-    resolved case, its (squeeze, temperature), the stored profile positions, the FE model's
-    fingerprint and a compound file's content, as the map cache's key
-    (:func:`sealsim.pneumatic.contact_maps.build_or_load_fe_map`) -- so a changed case or
-    model never reuses a path.  JSON keeps every float exactly (shortest repr).
+    key of the case's FE results (:func:`~sealsim.structure.fingerprint.results_key`: the
+    resolved case, the FE model's fingerprint, a compound file's content; the map cache's key
+    too) with the stored profile positions, and the path's (squeeze, temperature) -- so a
+    changed case or model never reuses a path.  JSON keeps every float exactly (shortest
+    repr).
     """
 
-    def __init__(self, folder: str | Path, case: StructureCase, case_data: dict,
-                 positions: np.ndarray):
-        from sealsim.properties.elastomers import compound_file_digest
-        from sealsim.structure.fingerprint import model_fingerprint
+    def __init__(self, folder: str | Path, case: StructureCase, positions: np.ndarray):
+        from sealsim.structure.fingerprint import results_key
 
         self.folder = Path(folder)
-        self._salt = json.dumps({"case": case_data, "positions": positions.tolist(),
-                                 "model": model_fingerprint(),
-                                 "material": compound_file_digest(case.material.elastomer)},
-                                sort_keys=True)
+        self._salt = results_key(case, positions.tolist())
 
     def _file(self, key: tuple) -> Path:
         text = f"{self._salt}|{key[0]!r}|{key[1]!r}"
@@ -237,7 +233,7 @@ def compute_map(case: StructureCase, *, workers: int | None = None,
         totals["increments"] += out["increments"]
         totals["cutbacks"] += out["cutbacks"]
 
-    kept = None if keep is None else _KeptPaths(keep, case, data, positions)
+    kept = None if keep is None else _KeptPaths(keep, case, positions)
     done, todo = 0, []
     for key in tasks:
         out = None if kept is None else kept.load(key)
