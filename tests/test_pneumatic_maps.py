@@ -207,6 +207,21 @@ def test_an_interrupted_on_demand_map_build_computes_only_the_missing_paths(
     for p, t in ((0.0, 293.15), (3e5, 310.0), (8e5, 333.15)):
         np.testing.assert_allclose(m.evaluate(p, t), ref.evaluate(p, t), rtol=1e-12)
 
+
+def test_build_notice_of_a_lip_seal_map():
+    # a shaft (lip) case has no load.squeeze: announcing its map raised "TypeError:
+    # 'NoneType' object is not subscriptable" before any FE was computed
+    from sealsim.structure.case import StructureCase
+
+    data = load_toml(EXAMPLES.parent / "structure" / "radial_lip_80.toml")
+    data.pop("variants", None)
+    case = validate_case(StructureCase, apply_overrides(data, {"map": {
+        "pressure": ["0 bar", "0.5 bar"], "temperature": ["20 degC", "60 degC", "100 degC"]}}))
+    assert case.load.squeeze is None
+    assert cm._build_notice(case, Path("lip.toml"), Path("cache/lip-0.nc")) == (
+        "building FE map from lip.toml (2 pressures x 3 temperatures, 3 FE load paths), cached "
+        "at cache/lip-0.nc")
+
 def test_fingerprint_follows_the_model_version(monkeypatch):
     from sealsim.structure import fingerprint
 

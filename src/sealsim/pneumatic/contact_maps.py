@@ -651,10 +651,10 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
     atomically to the cache; its finished FE load paths are kept meanwhile
     (:func:`kept_paths_folder`), so that a build that is interrupted computes only the missing
     paths the next time the map is needed.  Any change of the structure case or of the FE
-    model gives a new map (old files stay in the cache folder until deleted).  Before a map is computed, the
-    logger ``sealsim.pneumatic.contact_maps`` announces it at INFO level ("building FE map for
-    seal 'rod' from rod_seal_12.toml (5 pressures x 3 temperatures, 3 FE load paths), cached
-    at ...").
+    model gives a new map (old files stay in the cache folder until deleted).  Before a map
+    is computed, the logger ``sealsim.pneumatic.contact_maps`` announces it at INFO level
+    ("building FE map for seal 'rod' from rod_seal_12.toml (5 pressures x 3 temperatures, 3 FE
+    load paths), cached at ...").
 
     Parameters
     ----------
@@ -743,7 +743,7 @@ def _build_notice(case, path: Path, target: Path, label: str = "") -> str:
     """The line announcing that the FE map of structure case ``case`` (read from ``path``) is
     built and cached at ``target``."""
     spec = case.map
-    squeezes = len(spec.squeeze or [case.load.squeeze[-1]])
+    squeezes = len(spec.squeeze) if spec.squeeze else 1   # else the installation's one
     grid = f"{len(spec.pressure)} pressures x {len(spec.temperature)} temperatures" + (
         f" x {squeezes} squeezes" if squeezes > 1 else "")
     paths = squeezes * len(spec.temperature)
