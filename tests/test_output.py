@@ -229,8 +229,8 @@ def test_result_file_never_overwrites_a_file_that_appeared_meanwhile(tmp_path):
     assert out.read_bytes() == b"someone else's" and _tree(tmp_path) == ["seal.fmu"]
     # with force: only the file that was there when the run started is replaced
     result = ResultFile(out, force=True)
-    out.unlink()
-    out.write_bytes(b"newer")                   # a new file (inode) before the run locks it
+    (tmp_path / "newer").write_bytes(b"newer")  # another file (inode: both exist now) ...
+    os.replace(tmp_path / "newer", out)         # ... put in its place before the run locks it
     with pytest.raises(ResultExistsError, match="written by another run after this one"):
         with result:
             pass

@@ -174,17 +174,12 @@ def test_a_damaged_cached_map_is_built_again(tiny_structure_case, fe_cache, tmp_
 
 
 def test_an_interrupted_on_demand_map_build_computes_only_the_missing_paths(
-        tiny_structure_case, fe_cache, tmp_path, monkeypatch):
+        tiny_structure_case, fe_cache, tmp_path, computed_map_paths):
     # a map built on demand (pneumatic run, fits, studies) kept none of its finished FE load
     # paths: after Ctrl-C or a killed process the next run computed the whole map again
-    import sealsim.structure.mapping as mapping
     from sealsim.pneumatic.map_cache import list_cached_maps
 
-    computed = []
-    real = mapping._map_task
-    monkeypatch.setattr(mapping, "_map_task",
-                        lambda data, squeeze, temperature, *args: computed.append(temperature)
-                        or real(data, squeeze, temperature, *args))
+    computed = computed_map_paths
 
     def ctrl_c_after_one_path(done, total):
         if done == 1:
