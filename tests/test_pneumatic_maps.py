@@ -203,6 +203,26 @@ def test_an_interrupted_on_demand_map_build_computes_only_the_missing_paths(
         np.testing.assert_allclose(m.evaluate(p, t), ref.evaluate(p, t), rtol=1e-12)
 
 
+
+def test_an_interrupted_parallel_map_build_keeps_the_paths_being_solved(
+        tiny_structure_case, fe_cache, tmp_path, request):
+    # stopping a map built by worker processes waited for the paths they were solving, then
+    # threw those away: only the paths handed back before the interruption were kept
+    def stop_after_one_path(done, total):
+        if done == 1:
+            raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        cm.build_or_load_fe_map(tiny_structure_case, cache_dir=tmp_path, workers=2,
+                                progress=stop_after_one_path)
+    [kept] = tmp_path.glob(".*.nc.paths")
+    assert len(list(kept.glob("*.json"))) == 2        # both paths (2 workers, 2 paths)
+    computed = request.getfixturevalue("computed_map_paths")   # counts in this process
+    m = cm.build_or_load_fe_map(tiny_structure_case, cache_dir=tmp_path, workers=1)
+    assert computed == [] and not kept.exists()       # nothing was left to compute
+    ref = cm.build_or_load_fe_map(tiny_structure_case, cache_dir=fe_cache)
+    np.testing.assert_allclose(m.evaluate(3e5, 310.0), ref.evaluate(3e5, 310.0), rtol=1e-12)
+
 def test_build_notice_of_a_lip_seal_map():
     # a shaft (lip) case has no load.squeeze: announcing its map raised "TypeError:
     # 'NoneType' object is not subscriptable" before any FE was computed

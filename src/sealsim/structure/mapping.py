@@ -195,8 +195,10 @@ def compute_map(case: StructureCase, *, workers: int | None = None,
         Resolved case (TOML) stored as the ``case`` attribute.
     keep : path, optional
         Folder where every finished load path is kept (:class:`_KeptPaths`): a build run
-        again after an interruption reuses them and computes only the missing paths.  The
-        caller removes the folder once the map is stored.
+        again after an interruption reuses them and computes only the missing paths (the
+        paths the worker processes were solving when the build was stopped are kept too,
+        since it waits for them anyway).  The caller removes the folder once the map is
+        stored.
 
     Returns
     -------
@@ -263,12 +265,18 @@ def compute_map(case: StructureCase, *, workers: int | None = None,
         with cf.ProcessPoolExecutor(max_workers=n_workers,
                                     initializer=_end_with_parent) as pool:
             futures = {pool.submit(_map_task, data, *key, positions): key for key in todo}
+            handled = set()
             try:
                 for fut in cf.as_completed(futures):
+                    handled.add(fut)
                     finished(futures[fut], fut.result())
             except BaseException:
                 for f in futures:
                     f.cancel()
+                if kept is not None:  # the pool waits for the paths being solved: keep them
+                    for f, key in futures.items():
+                        if f not in handled and not f.cancelled() and f.exception() is None:
+                            kept.save(key, f.result())
                 raise
     if np.any(profile[..., [0, -1]] > 0.0):
         warnings.warn(SealsimWarning(
