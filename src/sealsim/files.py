@@ -13,11 +13,16 @@ place, so a reader never sees half a file and an interrupted write leaves the ol
 none).  Result folders (:class:`sealsim.output.ResultFolder`) are built on it, and so are the
 files written below the output layer: the FE map cache (:mod:`sealsim.pneumatic.contact_maps`)
 and a study's work folder (:mod:`sealsim.studies.store`).
+
+:class:`ResultTarget` is what every result of a command shares -- the lock next to it, the
+parent folders a run creates, SIGTERM as an exception while it computes, Ctrl-C held back
+while the result is moved into place; :class:`sealsim.output.ResultFolder` (a folder of
+results) and :class:`ResultFile` (one file: an FMU, which :mod:`sealsim.fmu` writes below the
+output layer) are built on it.
 """
 
 from __future__ import annotations
 
-import contextlib
 import errno
 import math
 import os
@@ -43,8 +48,7 @@ from sealsim.errors import (
 __all__ = ["CF_CONVENTIONS", "JSON_DIGITS", "MAX_CASE_BYTES", "MAX_DATA_BYTES", "USER_UMASK",
            "ResultFile", "ResultTarget", "atomic_write_bytes", "atomic_write_text",
            "check_input_file", "committed_folders", "json_ready", "netcdf_ready",
-           "os_error_reason", "raise_terminated", "read_input_bytes", "read_input_text",
-           "sigterm_as_interrupt"]
+           "os_error_reason", "raise_terminated", "read_input_bytes", "read_input_text"]
 
 #: The process's umask: mkstemp/mkdtemp create private (0600/0700) entries, written files get
 #: the user's normal modes (0o666 & ~USER_UMASK).
@@ -264,22 +268,6 @@ def raise_terminated(signum, frame):
     """SIGTERM handler: raise :class:`~sealsim.errors.Terminated`, so that the clean-up that
     runs for Ctrl-C (``finally`` blocks, context managers) runs for SIGTERM too."""
     raise Terminated("SIGTERM")
-
-
-@contextlib.contextmanager
-def sigterm_as_interrupt() -> Iterator[None]:
-    """While the block runs, SIGTERM raises :class:`~sealsim.errors.Terminated` instead of
-    ending the process at once (only in the main thread, and only where SIGTERM still has its
-    default action: a handler someone installed is left alone)."""
-    if threading.current_thread() is not threading.main_thread() \
-            or signal.getsignal(signal.SIGTERM) is not signal.SIG_DFL:
-        yield
-        return
-    previous = signal.signal(signal.SIGTERM, raise_terminated)
-    try:
-        yield
-    finally:
-        signal.signal(signal.SIGTERM, previous)
 
 
 # -- result targets: the one write mechanism of results (see sealsim.output) ---------------------
