@@ -348,6 +348,77 @@ def test_cli_writes_atomically_and_refuses_an_existing_file(tmp_path, monkeypatc
     assert list(scratch.iterdir()) == []                 # also after a failed compile
 
 
+
+def test_build_writes_through_the_one_result_mechanism(tmp_path, monkeypatch):
+    # the builder had its own atomic write: no lock (two builds of one file raced, the second
+    # replacing the first with --force), and the temporaries of a killed build stayed forever
+    import subprocess
+
+    from sealsim.errors import ResultBusyError
+    from sealsim.output import ResultFile
+
+    out = tmp_path / "theta.fmu"
+    dead = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"],
+                          capture_output=True, text=True, check=True).stdout.strip()
+    with ResultFile(out, suffix=".fmu") as running:      # another build of the same file
+        with pytest.raises(ResultBusyError, match="theta.fmu' is being written by another"):
+            build_fmu(FRICTION / "theta_dwell.toml", out, compile=False, force=True)
+        running.write_bytes(b"the other build's FMU")
+    assert out.read_bytes() == b"the other build's FMU"
+    (tmp_path / f".theta.fmu.{dead}.k1ll3d00.tmp").write_bytes(b"PK half")  # a killed build's
+    # a build that fails in the middle (here: its validation) leaves the file as it was
+    import fmpy.validation
+
+    monkeypatch.setattr(fmpy.validation, "validate_fmu", lambda folder: ["broken"])
+    with pytest.raises(ModelError, match="not valid"):
+        build_fmu(FRICTION / "theta_dwell.toml", out, compile=False, force=True)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["theta.fmu"]  # and no temporaries
+    monkeypatch.undo()
+    build_fmu(FRICTION / "theta_dwell.toml", out, compile=False, force=True)
+    assert validate_fmu(str(out)) == [] and sorted(p.name for p in tmp_path.iterdir()) == [
+        "theta.fmu"]
+
+
+def test_build_says_which_variant_it_exports_not_that_all_run(tmp_path, caplog):
+    # 'sealsim fmu build' of a case with variants printed the run commands' "runs the
+    # variants T25C, T55C; the base case ... is not run", while it exports one of them
+    runner = CliRunner()
+    piston = runner.invoke(app, ["fmu", "build", str(ROOT / "examples" / "fmu" /
+                                                     "piston_seal.toml"),
+                                 "--out", str(tmp_path / "p.fmu"), "--no-compile", "-q"])
+    assert piston.exit_code == 0, piston.output
+    text = " ".join(piston.output.split())            # the console wraps lines
+    assert "runs the variants" not in text
+    assert ("cylinder_32.toml' has the variants T25C, T55C; they give the same FMU but for the "
+            "start value of the input T_seal (25 degC in 'T25C'): built from the first, "
+            "'T25C' (--variant chooses another)") in text
+    chosen = build_fmu(ROOT / "examples" / "fmu" / "piston_seal.toml", tmp_path / "q.fmu",
+                       variant="T55C", compile=False)
+    assert chosen.report["notes"] == [] and chosen.report["source"].endswith(
+        "variant 'T55C', seal 'piston'")
+    md = fmpy.read_model_description(str(tmp_path / "q.fmu"))
+    assert {v.name: v.start for v in md.modelVariables}["T_seal"] == "328.15"
+    # variants that give different FMUs still have to be chosen, and the run note stays off
+    load = runner.invoke(app, ["fmu", "build", str(FRICTION / "theta_load.toml"), "--out",
+                               str(tmp_path / "l.fmu"), "--no-compile"])
+    assert load.exit_code == 2 and "choose one with --variant" in load.output
+    assert "runs the variants" not in load.output
+    # ... also when they differ only in the seal whose contact map the FMU embeds (the first
+    # variant was exported as if they were the same)
+    squeezes = load_toml(FRICTION / "theta_contact_stribeck.toml")
+    squeezes["variants"] = {"c10": {"seal": {"map": {"analytic": {"squeeze": 0.10}}}},
+                            "c14": {"seal": {"map": {"analytic": {"squeeze": 0.14}}}}}
+    (tmp_path / "squeezes.toml").write_text(tomli_w.dumps(squeezes))
+    with pytest.raises(InputError, match="has the variants c10, c14; choose one"):
+        build_fmu(tmp_path / "squeezes.toml", tmp_path / "s.fmu", compile=False)
+    # the run commands still announce it
+    from sealsim.cases import expand_variants
+    from sealsim.friction.case import FrictionCase
+
+    with caplog.at_level("INFO", logger="sealsim.cases"):
+        expand_variants(FrictionCase, load_toml(FRICTION / "theta_load.toml"), "x")
+    assert any("runs the variants" in r.getMessage() for r in caplog.records)
+
 def test_missing_compiler_still_writes_the_source_fmu(tmp_path, monkeypatch):
     monkeypatch.setenv("CC", str(tmp_path / "no-such-compiler"))
     out = tmp_path / "src.fmu"

@@ -97,3 +97,25 @@ def test_cli_list_and_clear(cache, monkeypatch):
     assert bad.exit_code == 2
     assert "--older-than: '-5 days' is negative; give an age >= 0" in " ".join(bad.output.split())
     assert (folder / "a-0000000000000000.nc").exists()
+
+
+def test_kept_paths_of_interrupted_builds_are_listed_and_cleared_once_stale(tmp_path):
+    # the finished FE load paths an interrupted on-demand build keeps (.NAME.nc.paths) were
+    # invisible to 'cache list' and never removed by 'cache clear'
+    now = time.time()
+    for name, age in ((".a-0000000000000000.nc.paths", 60.0),
+                      (".b-1111111111111111.nc.paths", 2 * STALE_TEMPORARY_AGE)):
+        kept = tmp_path / name
+        kept.mkdir()
+        for k in range(2):
+            (kept / f"{k}.json").write_bytes(b"x" * 50)
+            os.utime(kept / f"{k}.json", (now - age - k, now - age - k))
+        os.utime(kept, (now - 10 * DAY, now - 10 * DAY))    # the folder's time is not used
+    maps = list_cached_maps(tmp_path)
+    assert [(m.path.name, m.size, m.complete) for m in maps] == [
+        (".a-0000000000000000.nc.paths", 100, False),
+        (".b-1111111111111111.nc.paths", 100, False)]
+    assert maps[0].age(now) == pytest.approx(60.0, abs=1.0)   # its newest path
+    removed = clear_cached_maps(tmp_path, now=now)
+    assert [m.path.name for m in removed] == [".b-1111111111111111.nc.paths"]
+    assert [p.name for p in tmp_path.iterdir()] == [".a-0000000000000000.nc.paths"]

@@ -162,3 +162,96 @@ def test_results_get_normal_permissions(tmp_path):
         folder.write_text("a.txt", "a")
     assert (tmp_path / "run" / "a.txt").stat().st_mode & 0o777 == 0o666 & ~umask
     assert (tmp_path / "run").stat().st_mode & 0o777 == 0o777 & ~umask
+
+
+# -- one result file (an FMU): the same mechanism ------------------------------------------------
+def test_result_file_is_checked_locked_staged_and_committed_only_on_success(tmp_path):
+    from sealsim.errors import ResultBusyError
+    from sealsim.output import ResultFile
+
+    out = tmp_path / "new" / "seal.fmu"         # the parent does not exist yet
+    with ResultFile(out, suffix=".fmu") as result:
+        staged = result.write_bytes(b"first")
+        assert not out.exists() and staged.parent == out.parent  # invisible until committed
+        # a second run to the same file while this one writes it is refused, not raced
+        with pytest.raises(ResultBusyError, match="being written by another sealsim run"):
+            with ResultFile(out, suffix=".fmu"):
+                pass
+    assert out.read_bytes() == b"first" and _tree(out.parent) == ["seal.fmu"]
+    with pytest.raises(ResultExistsError, match="already exists; use --force"):
+        ResultFile(out)
+    # a failed run leaves the file as it was, no temporary and no lock behind
+    with pytest.raises(RuntimeError), ResultFile(out, force=True) as result:
+        result.write_bytes(b"second")
+        raise RuntimeError("the build failed")
+    assert out.read_bytes() == b"first" and _tree(out.parent) == ["seal.fmu"]
+    # nothing written (a build that wrote no file): nothing committed, the old file stays
+    with ResultFile(out, force=True):
+        pass
+    assert out.read_bytes() == b"first"
+    with ResultFile(out, force=True) as result:
+        result.write_bytes(b"second")
+    assert out.read_bytes() == b"second" and _tree(out.parent) == ["seal.fmu"]
+    # a run that failed before any parent folder was needed removes the folders it created
+    with pytest.raises(RuntimeError), ResultFile(tmp_path / "a" / "b" / "x.fmu"):
+        raise RuntimeError
+    assert not (tmp_path / "a").exists()
+
+
+def test_result_file_refuses_bad_targets_before_any_work(tmp_path):
+    from sealsim.output import ResultFile
+
+    case = tmp_path / "case.toml"
+    case.write_text("x = 1\n")
+    with pytest.raises(InputError, match="must end in .fmu"):
+        ResultFile(tmp_path / "seal.zip", suffix=".fmu")
+    with pytest.raises(InputError, match="is a folder"):
+        ResultFile(tmp_path, suffix="")
+    # an input of the run is never the target, not even with force (nor through a link)
+    link = tmp_path / "link.toml"
+    link.symlink_to(case)
+    for target in (case, link):
+        with pytest.raises(InputError, match="is an input of the run"):
+            ResultFile(target, force=True, inputs=[case])
+    (tmp_path / "file").write_text("")
+    with pytest.raises(InputError, match="is a file"):
+        ResultFile(tmp_path / "file" / "seal.fmu")
+    assert case.read_text() == "x = 1\n"
+
+
+def test_result_file_never_overwrites_a_file_that_appeared_meanwhile(tmp_path):
+    from sealsim.output import ResultFile
+
+    out = tmp_path / "seal.fmu"
+    with pytest.raises(ResultExistsError, match="already exists"), ResultFile(out) as result:
+        result.write_bytes(b"mine")
+        out.write_bytes(b"someone else's")      # written by another program meanwhile
+    assert out.read_bytes() == b"someone else's" and _tree(tmp_path) == ["seal.fmu"]
+    # with force: only the file that was there when the run started is replaced
+    result = ResultFile(out, force=True)
+    (tmp_path / "newer").write_bytes(b"newer")  # another file (inode: both exist now) ...
+    os.replace(tmp_path / "newer", out)         # ... put in its place before the run locks it
+    with pytest.raises(ResultExistsError, match="written by another run after this one"):
+        with result:
+            pass
+    assert out.read_bytes() == b"newer"
+
+
+def test_result_file_removes_temporaries_of_killed_runs(tmp_path):
+    import subprocess
+    import sys
+
+    from sealsim.output import ResultFile
+
+    dead = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"],
+                          capture_output=True, text=True, check=True).stdout.strip()
+    out = tmp_path / "seal.fmu"
+    left = tmp_path / f".seal.fmu.{dead}.abcd1234.tmp"   # a build killed while writing
+    mine = tmp_path / f".seal.fmu.{os.getpid()}.abcd1234.tmp"
+    other = tmp_path / ".other.fmu.1.abcd1234.tmp"
+    for path in (left, mine, other):
+        path.write_bytes(b"partial")
+    with ResultFile(out) as result:
+        result.write_bytes(b"fmu")
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(
+        [mine.name, other.name, "seal.fmu"])

@@ -172,6 +172,71 @@ def test_a_damaged_cached_map_is_built_again(tiny_structure_case, fe_cache, tmp_
     assert [p.name for p in tmp_path.glob("*.nc")] == [cached.name]
 
 
+
+def test_an_interrupted_on_demand_map_build_computes_only_the_missing_paths(
+        tiny_structure_case, fe_cache, tmp_path, computed_map_paths):
+    # a map built on demand (pneumatic run, fits, studies) kept none of its finished FE load
+    # paths: after Ctrl-C or a killed process the next run computed the whole map again
+    from sealsim.pneumatic.map_cache import list_cached_maps
+
+    computed = computed_map_paths
+
+    def ctrl_c_after_one_path(done, total):
+        if done == 1:
+            raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        cm.build_or_load_fe_map(tiny_structure_case, cache_dir=tmp_path,
+                                progress=ctrl_c_after_one_path)
+    assert computed == [293.15] and list(tmp_path.glob("*.nc")) == []
+    [entry] = list_cached_maps(tmp_path)          # 'sealsim cache list' shows what is kept
+    assert not entry.complete and entry.path.name.endswith(".nc.paths") and entry.size > 0
+    assert len(list(entry.path.glob("*.json"))) == 1
+    computed.clear()
+    m = cm.build_or_load_fe_map(tiny_structure_case, cache_dir=tmp_path)
+    assert computed == [333.15]                   # only the path the interruption left out
+    assert sorted(p.name for p in tmp_path.iterdir()) == [p.name for p in fe_cache.glob("*.nc")]
+    # the same map as an uninterrupted build (JSON keeps every float; 1e-12: the resumed
+    # build installs the seal again for its one path)
+    ref = cm.build_or_load_fe_map(tiny_structure_case, cache_dir=fe_cache)
+    for p, t in ((0.0, 293.15), (3e5, 310.0), (8e5, 333.15)):
+        np.testing.assert_allclose(m.evaluate(p, t), ref.evaluate(p, t), rtol=1e-12)
+
+
+
+def test_an_interrupted_parallel_map_build_keeps_the_paths_being_solved(
+        tiny_structure_case, fe_cache, tmp_path, request):
+    # stopping a map built by worker processes waited for the paths they were solving, then
+    # threw those away: only the paths handed back before the interruption were kept
+    def stop_after_one_path(done, total):
+        if done == 1:
+            raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        cm.build_or_load_fe_map(tiny_structure_case, cache_dir=tmp_path, workers=2,
+                                progress=stop_after_one_path)
+    [kept] = tmp_path.glob(".*.nc.paths")
+    assert len(list(kept.glob("*.json"))) == 2        # both paths (2 workers, 2 paths)
+    computed = request.getfixturevalue("computed_map_paths")   # counts in this process
+    m = cm.build_or_load_fe_map(tiny_structure_case, cache_dir=tmp_path, workers=1)
+    assert computed == [] and not kept.exists()       # nothing was left to compute
+    ref = cm.build_or_load_fe_map(tiny_structure_case, cache_dir=fe_cache)
+    np.testing.assert_allclose(m.evaluate(3e5, 310.0), ref.evaluate(3e5, 310.0), rtol=1e-12)
+
+def test_build_notice_of_a_lip_seal_map():
+    # a shaft (lip) case has no load.squeeze: announcing its map raised "TypeError:
+    # 'NoneType' object is not subscriptable" before any FE was computed
+    from sealsim.structure.case import StructureCase
+
+    data = load_toml(EXAMPLES.parent / "structure" / "radial_lip_80.toml")
+    data.pop("variants", None)
+    case = validate_case(StructureCase, apply_overrides(data, {"map": {
+        "pressure": ["0 bar", "0.5 bar"], "temperature": ["20 degC", "60 degC", "100 degC"]}}))
+    assert case.load.squeeze is None
+    assert cm._build_notice(case, Path("lip.toml"), Path("cache/lip-0.nc")) == (
+        "building FE map from lip.toml (2 pressures x 3 temperatures, 3 FE load paths), cached "
+        "at cache/lip-0.nc")
+
 def test_fingerprint_follows_the_model_version(monkeypatch):
     from sealsim.structure import fingerprint
 

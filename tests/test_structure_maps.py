@@ -202,21 +202,16 @@ def test_map_workers_end_when_the_map_build_is_killed(tmp_path):
 
 
 def test_an_interrupted_map_build_computes_only_the_missing_paths(dataset, tmp_path,
-                                                                  monkeypatch):
+                                                                  computed_map_paths):
     # Ctrl-C (or SIGKILL) of `sealsim structure map` lost every finished FE load path: the
     # next run computed the whole map again
     import tomli_w
 
-    import sealsim.structure.mapping as mapping
     from sealsim.runs.structure import map_case_file
 
     path = tmp_path / "map.toml"
     out, kept = tmp_path / "out", tmp_path / ".out.map"
-    computed = []
-    real = mapping._map_task
-    monkeypatch.setattr(mapping, "_map_task",
-                        lambda data, squeeze, temperature, *args: computed.append(temperature)
-                        or real(data, squeeze, temperature, *args))
+    computed = computed_map_paths
 
     def ctrl_c_after_two_paths(done, total):
         if done == 2:

@@ -12,6 +12,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+import tomli_w
 from scipy import special
 
 from sealsim.errors import InputError, ResultExistsError
@@ -321,3 +322,28 @@ def test_cli_reports_a_bad_study_in_one_message(tmp_path):
     text = " ".join(result.output.split())          # rich wraps long lines
     assert "factor 'fc': values is empty, which gives zero runs" in text
     assert "Traceback" not in result.output and not (tmp_path / "out").exists()
+
+
+def test_structure_map_study_gives_the_maps_of_its_cases(tmp_path):
+    # every run of a 'structure_map' study failed: "ImportError: cannot import name
+    # 'compute_map' from 'sealsim.structure.maps'" (it lives in sealsim.structure.mapping)
+    from sealsim.cases import apply_overrides, load_toml, validate_case
+    from sealsim.structure.case import StructureCase
+    from sealsim.structure.mapping import compute_map
+
+    case = load_toml(ROOT / "examples" / "pneumatic" / "rod_seal_12.toml")
+    small = {"mesh": {"level": "coarse"}, "map": {"temperature": ["20 degC"],
+                                                  "pressure": ["0 bar", "6 bar"],
+                                                  "workers": 1}}
+    (tmp_path / "seal.toml").write_text(tomli_w.dumps(apply_overrides(case, small)))
+    study = _study(tmp_path, '[study]\nmodel = "structure_map"\ncase = "seal.toml"\n'
+                   '[[factors]]\nname = "squeeze"\npath = "load.squeeze"\n'
+                   'values = [[0.10], [0.14]]\n[outputs]\nF_max = "F_N_N.max"\n')
+    result = run_study(study, tmp_path / "out", workers=0)
+    ds = result.dataset
+    f_max = ds["F_max"].values                     # a failed run would be NaN
+    assert np.all(np.isfinite(f_max)) and f_max[1] > f_max[0]   # more squeeze, more force
+    # each run is the map of its case (the same FE, so equal to rounding)
+    direct = compute_map(validate_case(StructureCase, apply_overrides(
+        case, {**small, "load": {"squeeze": [0.14]}})), workers=1)
+    assert f_max[1] == pytest.approx(float(direct["F_N"].max()), rel=1e-9)

@@ -18,12 +18,15 @@ per problem, the field path (``seal.shaft_diameter``), the value given and what 
 
 from __future__ import annotations
 
+import contextlib
+import contextvars
 import copy
 import logging
 import math
 import re
 import tomllib
 import typing
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Annotated, Any, TypeVar
@@ -59,6 +62,7 @@ __all__ = [
     "expand_variants",
     "format_validation_error",
     "load_toml",
+    "one_variant_used",
     "parse_toml",
     "validate_case",
     "validation_problems",
@@ -589,9 +593,27 @@ def expand_variants(model: type[ModelT], data: dict[str, Any],
     return cases
 
 
+#: False inside :func:`one_variant_used`
+_ANNOUNCE_RUNS: contextvars.ContextVar[bool] = contextvars.ContextVar("announce_runs",
+                                                                      default=True)
+
+
+@contextlib.contextmanager
+def one_variant_used() -> Iterator[None]:
+    """Within the block, a case with variants is loaded without announcing that its variants
+    run: for a command that uses one of them (an FMU build), which says itself which one."""
+    token = _ANNOUNCE_RUNS.set(False)
+    try:
+        yield
+    finally:
+        _ANNOUNCE_RUNS.reset(token)
+
+
 def _say_base_not_run(cases: dict[str, Any], source: str) -> None:
     """Announce (INFO on the ``sealsim.cases`` logger, which the CLI prints) that a case with
-    variants runs the variants only, not its base case."""
+    variants runs the variants only, not its base case (not within :func:`one_variant_used`)."""
+    if not _ANNOUNCE_RUNS.get():
+        return
     logging.getLogger(__name__).info(
         "%s: runs the variants %s; the base case only gives their common fields and is not run "
         "on its own (add an empty [variants.%s] table to run it too)", source, ", ".join(cases),

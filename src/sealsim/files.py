@@ -13,29 +13,42 @@ place, so a reader never sees half a file and an interrupted write leaves the ol
 none).  Result folders (:class:`sealsim.output.ResultFolder`) are built on it, and so are the
 files written below the output layer: the FE map cache (:mod:`sealsim.pneumatic.contact_maps`)
 and a study's work folder (:mod:`sealsim.studies.store`).
+
+:class:`ResultTarget` is what every result of a command shares -- the lock next to it, the
+parent folders a run creates, SIGTERM as an exception while it computes, Ctrl-C held back
+while the result is moved into place; :class:`sealsim.output.ResultFolder` (a folder of
+results) and :class:`ResultFile` (one file: an FMU, which :mod:`sealsim.fmu` writes below the
+output layer) are built on it.
 """
 
 from __future__ import annotations
 
-import contextlib
+import errno
 import math
 import os
+import re
 import signal
 import stat
 import tempfile
 import threading
-from collections.abc import Iterator
+from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from sealsim.errors import InputError, Terminated
+from sealsim.errors import (
+    InputError,
+    OutputError,
+    ResultBusyError,
+    ResultExistsError,
+    Terminated,
+)
 
 __all__ = ["CF_CONVENTIONS", "JSON_DIGITS", "MAX_CASE_BYTES", "MAX_DATA_BYTES", "USER_UMASK",
-           "atomic_write_bytes", "atomic_write_text", "check_input_file", "json_ready",
-           "netcdf_ready", "raise_terminated", "read_input_bytes", "read_input_text",
-           "sigterm_as_interrupt"]
+           "ResultFile", "ResultTarget", "atomic_write_bytes", "atomic_write_text",
+           "check_input_file", "committed_folders", "json_ready", "netcdf_ready",
+           "os_error_reason", "raise_terminated", "read_input_bytes", "read_input_text"]
 
 #: The process's umask: mkstemp/mkdtemp create private (0600/0700) entries, written files get
 #: the user's normal modes (0o666 & ~USER_UMASK).
@@ -257,17 +270,339 @@ def raise_terminated(signum, frame):
     raise Terminated("SIGTERM")
 
 
-@contextlib.contextmanager
-def sigterm_as_interrupt() -> Iterator[None]:
-    """While the block runs, SIGTERM raises :class:`~sealsim.errors.Terminated` instead of
-    ending the process at once (only in the main thread, and only where SIGTERM still has its
-    default action: a handler someone installed is left alone)."""
-    if threading.current_thread() is not threading.main_thread() \
-            or signal.getsignal(signal.SIGTERM) is not signal.SIG_DFL:
-        yield
-        return
-    previous = signal.signal(signal.SIGTERM, raise_terminated)
+# -- result targets: the one write mechanism of results (see sealsim.output) ---------------------
+#: every result folder or file committed by this process, in order (see
+#: :func:`committed_folders`)
+_COMMITTED: list[Path] = []
+
+
+def committed_folders() -> tuple[Path, ...]:
+    """Result folders (and files) this process has committed so far (oldest first).
+
+    The CLI uses it to say truthfully, after Ctrl-C, whether the new results were written.
+    """
+    return tuple(_COMMITTED)
+
+
+def _pid_alive(pid: int) -> bool:
     try:
-        yield
-    finally:
-        signal.signal(signal.SIGTERM, previous)
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:  # exists, owned by someone else
+        return True
+    return True
+
+
+def _in_main_thread() -> bool:
+    return threading.current_thread() is threading.main_thread()
+
+
+def os_error_reason(exc: OSError) -> str:
+    """The short reason of an OS error ('No space left on device')."""
+    return exc.strerror or errno.errorcode.get(exc.errno or 0, "") or str(exc)
+
+
+class ResultTarget:
+    """What a result folder and a result file share: the target as given and as resolved, the
+    lock next to it (``.NAME.lock``), the parent folders a run creates (removed again if it
+    fails), SIGTERM raising :class:`~sealsim.errors.Terminated` while the run computes, and
+    Ctrl-C/SIGTERM held back while the results are moved into place."""
+
+    #: how messages name the target
+    kind = "output folder"
+
+    def __init__(self, path: str | Path, force: bool):
+        self.requested = Path(path)
+        self.path = Path(path).resolve()  # through links: stage next to the real target
+        self.force = force
+        self.committed = False
+        self._lock_fd: int | None = None
+        self._old_sigterm = None
+        self._created: list[Path] = []
+
+    def _shown(self, name: str = "") -> str:
+        return str(self.requested / name) if name else str(self.requested)
+
+    def _check_parent(self) -> None:
+        """The nearest existing parent is a folder this process may write."""
+        shown = self._shown()
+        existing = self.path.parent
+        while not existing.exists():
+            existing = existing.parent
+        if not existing.is_dir():
+            raise InputError(f"cannot create {self.kind} {shown!r}: {str(existing)!r} is a "
+                             "file")
+        if not os.access(existing, os.W_OK | os.X_OK):
+            raise InputError(f"cannot write {self.kind} {shown!r}: no write permission in "
+                             f"{str(existing)!r} (or a read-only file system)")
+
+    def _open(self) -> None:
+        """Entering the ``with`` block: create the parent folders, take the lock."""
+        parent = self.path.parent
+        self._created = [p for p in (parent, *parent.parents) if not p.exists()]
+        try:
+            parent.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            raise InputError(f"cannot create {self.kind} {self._shown()!r}: "
+                             f"{exc.strerror or exc}") from exc
+        try:
+            self._lock()
+        except BaseException:
+            self._remove_created()
+            raise
+
+    def _sigterm_raises(self) -> None:
+        """SIGTERM raises Terminated while the run computes (so its clean-up runs)."""
+        if _in_main_thread() and signal.getsignal(signal.SIGTERM) is signal.SIG_DFL:
+            self._old_sigterm = signal.signal(signal.SIGTERM, raise_terminated)
+
+    def _abandon(self) -> None:
+        """The run failed: release the lock, remove the (empty) parent folders it created."""
+        self._release()
+        self._remove_created()
+
+    def _remove_created(self) -> None:
+        """Remove the (still empty) parent folders this run created: a failed run leaves no
+        trace."""
+        for folder in self._created:
+            try:
+                folder.rmdir()
+            except OSError:
+                break
+
+    def _finish(self, commit: Callable[[], None]) -> None:
+        """Run ``commit`` (the renames into place) with Ctrl-C and SIGTERM held back until it
+        is done, release the lock, then act on a held-back signal."""
+        if not _in_main_thread():  # signals reach Python in the main thread only
+            try:
+                commit()
+            finally:
+                self._release()
+            return
+        deferred: list[int] = []
+        handlers = {sig: signal.signal(sig, lambda signum, frame: deferred.append(signum))
+                    for sig in (signal.SIGINT, signal.SIGTERM)}
+        try:
+            commit()
+        finally:
+            for sig, handler in handlers.items():
+                signal.signal(sig, handler)
+            self._release()
+            for signum in deferred[:1]:
+                handler = handlers[signum]
+                if callable(handler):
+                    handler(signum, None)
+                elif handler == signal.SIG_DFL:
+                    raise Terminated("SIGTERM") if signum == signal.SIGTERM \
+                        else KeyboardInterrupt
+
+    def _committed(self) -> None:
+        self.committed = True
+        _COMMITTED.append(self.path)
+
+    def _release(self) -> None:
+        if self._old_sigterm is not None:
+            signal.signal(signal.SIGTERM, self._old_sigterm)
+            self._old_sigterm = None
+        self._unlock()
+
+    def _lock_path(self) -> Path:
+        return self.path.with_name(f".{self.path.name}.lock")
+
+    def _lock(self) -> None:
+        import fcntl
+
+        path = self._lock_path()
+        while True:
+            try:
+                fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o666 & ~USER_UMASK)
+            except OSError as exc:
+                raise InputError(f"cannot create the lock file {str(path)!r} of {self.kind} "
+                                 f"{self._shown()!r}: {exc.strerror or exc}") from exc
+            try:
+                fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            except BlockingIOError:
+                owner = os.read(fd, 32).decode("ascii", "replace").strip()
+                os.close(fd)
+                raise ResultBusyError(
+                    f"{self.kind} {self._shown()!r} is being written by another sealsim run"
+                    + (f" (process {owner})" if owner else "")
+                    + "; wait for it to finish or choose another "
+                    + self.kind.split()[-1]) from None
+            # the holder before us may have removed the file after we opened it: retry then
+            try:
+                same = os.stat(path).st_ino == os.fstat(fd).st_ino
+            except FileNotFoundError:
+                same = False
+            if same:
+                break
+            os.close(fd)
+        os.ftruncate(fd, 0)
+        os.write(fd, str(os.getpid()).encode())
+        self._lock_fd = fd
+
+    def _unlock(self) -> None:
+        if self._lock_fd is not None:
+            self._lock_path().unlink(missing_ok=True)  # while still holding it (see _lock)
+            os.close(self._lock_fd)
+            self._lock_fd = None
+
+    def _stale(self, suffix: str) -> Iterator[Path]:
+        """Entries ``.NAME.PID.<suffix>`` next to the target left by processes that died."""
+        pattern = re.compile(rf"\.{re.escape(self.path.name)}\.(\d+)\.(?:{suffix})")
+        for entry in self.path.parent.iterdir():
+            match = pattern.fullmatch(entry.name)
+            if match and int(match[1]) != os.getpid() and not _pid_alive(int(match[1])):
+                yield entry
+
+
+class ResultFile(ResultTarget):
+    """One result file (an FMU) written all-or-nothing, locked against concurrent runs: the
+    guarantees of :class:`ResultFolder` for a result that is a single file.
+
+    * the target is checked when the object is made, before any computing: a name without
+      ``suffix``, a folder in its place, one of the run's input files (writing would replace
+      it) and a parent that cannot be written are refused (:class:`~sealsim.errors.InputError`),
+      an existing file unless ``force`` (:class:`~sealsim.errors.ResultExistsError`);
+    * entering the ``with`` block takes the lock ``.NAME.lock`` (a second run to the same file
+      is refused, :class:`~sealsim.errors.ResultBusyError`) and removes temporary files of
+      processes that died;
+    * :meth:`write_bytes` stages the content in a hidden temporary file
+      ``.NAME.PID.XXXXXXXX.tmp`` next to the target; only when the block ends without an error
+      does it become the target (without ``force`` as a new link, so that a file that appeared
+      meanwhile is never overwritten; with ``force`` by a rename that replaces the file that
+      was there when the object was made -- one written by another run meanwhile is refused).
+      Ctrl-C and SIGTERM are held back while this happens; a failed or interrupted run leaves
+      the target as it was and no temporary file behind.
+
+    Parameters
+    ----------
+    path : str or Path
+        The file.
+    force : bool
+        Replace an existing file.
+    inputs : iterable of path-like
+        Files the run reads: refused as the target.
+    suffix : str
+        Required ending of the file name (e.g. ``".fmu"``); ``""``: any name.
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> out = pathlib.Path(tempfile.mkdtemp()) / "model.fmu"
+    >>> with ResultFile(out, suffix=".fmu") as result:
+    ...     _ = result.write_bytes(b"PK")
+    >>> out.read_bytes(), sorted(p.name for p in out.parent.iterdir())
+    (b'PK', ['model.fmu'])
+    >>> try:
+    ...     ResultFile(out)
+    ... except ResultExistsError as err:
+    ...     print(str(err).endswith("use --force to replace it"))
+    True
+    """
+
+    kind = "output file"
+
+    def __init__(self, path: str | Path, force: bool = False, inputs: Iterable[str | Path] = (),
+                 suffix: str = ""):
+        super().__init__(path, force)
+        self._staged: Path | None = None
+        self._check_location(inputs, suffix)
+        self._at_start = self._identity()
+
+    def _check_location(self, inputs: Iterable[str | Path], suffix: str) -> None:
+        shown = self._shown()
+        if suffix and self.requested.suffix.lower() != suffix.lower():
+            raise InputError(f"output file {shown!r}: the file name must end in {suffix} "
+                             f"(e.g. --out result{suffix})")
+        if self.path.is_dir():
+            raise InputError(f"output file {shown!r} is a folder; give the name of the file")
+        for item in inputs:
+            if Path(item).resolve() == self.path:
+                raise InputError(f"output file {shown!r} is an input of the run; writing the "
+                                 "result would replace it: choose another file name")
+        if self.path.exists() and not self.force:
+            raise ResultExistsError(f"{shown!r} already exists; use --force to replace it")
+        self._check_parent()
+
+    def _identity(self) -> tuple[int, int] | None:
+        """Which file the target is: (device, inode), None if there is none."""
+        try:
+            st = self.path.stat()
+        except FileNotFoundError:
+            return None
+        return st.st_dev, st.st_ino
+
+    def __enter__(self) -> ResultFile:
+        self._open()
+        try:
+            for entry in list(self._stale(r"[a-z0-9_]{8}\.tmp")):
+                entry.unlink(missing_ok=True)
+            if self._identity() != self._at_start:
+                raise ResultExistsError(
+                    f"{self._shown()!r} was written by another run after this one started; "
+                    "--force replaces only the file that existed when a run started: check "
+                    "it, then run again")
+            self._sigterm_raises()
+        except BaseException:
+            self._abandon()
+            raise
+        return self
+
+    def write_bytes(self, data: bytes) -> Path:
+        """Stage the file's content (written to the target when the block ends)."""
+        if self._lock_fd is None:
+            raise RuntimeError("ResultFile is written outside its 'with' block")
+        self._discard()
+        try:
+            fd, tmp = tempfile.mkstemp(dir=self.path.parent, suffix=".tmp",
+                                       prefix=f".{self.path.name}.{os.getpid()}.")
+            self._staged = Path(tmp)
+            with os.fdopen(fd, "wb") as fh:
+                fh.write(data)
+                fh.flush()
+                os.fsync(fh.fileno())
+            os.chmod(tmp, 0o666 & ~USER_UMASK)
+        except OSError as exc:
+            self._discard()
+            raise OutputError(f"cannot write {self._shown()!r}: {os_error_reason(exc)}; nothing "
+                              "was written") from exc
+        return self._staged
+
+    def _discard(self) -> None:
+        if self._staged is not None:
+            self._staged.unlink(missing_ok=True)
+            self._staged = None
+
+    def __exit__(self, exc_type, exc, tb) -> None:
+        if exc_type is not None or self._staged is None:
+            self._discard()
+            self._abandon()
+            return
+        self._finish(self._commit)
+
+    def _commit(self) -> None:
+        staged, shown = self._staged, self._shown()
+        try:
+            if self.force:
+                os.replace(staged, self.path)
+            else:
+                try:
+                    os.link(staged, self.path)    # fails if the file appeared meanwhile
+                except FileExistsError:
+                    raise ResultExistsError(f"{shown!r} already exists; use --force to "
+                                            "replace it") from None
+                except OSError:                   # a file system without hard links
+                    if self.path.exists():
+                        raise ResultExistsError(f"{shown!r} already exists; use --force to "
+                                                "replace it") from None
+                    os.replace(staged, self.path)
+        except OSError as exc:
+            if isinstance(exc, ResultExistsError):
+                raise
+            raise OutputError(f"cannot move the result into {shown!r}: {os_error_reason(exc)}; "
+                              "nothing was written") from exc
+        finally:
+            self._discard()
+        self._committed()

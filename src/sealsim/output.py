@@ -25,69 +25,46 @@ through :func:`run_variants`, which adds the per-variant loop and progress repor
   leaves the target untouched and no half-written file behind;
 * staging and backup folders of processes that died (SIGKILL, power loss) are removed by the
   next run to the same target -- a backup whose commit never happened is put back.
+
+A command whose result is one file (``sealsim fmu build``) writes it through
+:class:`ResultFile`, which gives the same guarantees (checked first, locked, staged next to
+the target, moved into place only on success, never replacing a file without ``force``).
 """
 
 from __future__ import annotations
 
 import contextlib
-import errno
 import json
 import os
-import re
 import shutil
-import signal
 import tempfile
-import threading
 import warnings
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from pathlib import Path
 from typing import Any, TypeVar
 
-from sealsim.errors import InputError, OutputError, ResultBusyError, ResultExistsError, Terminated
-# re-exported: the atomic writes and JSON conversion are part of the result-folder API
+from sealsim.errors import InputError, OutputError, ResultExistsError
+# re-exported: the atomic writes, the result file and JSON conversion are part of the result API
 from sealsim.files import (
     JSON_DIGITS,
     USER_UMASK,
+    ResultFile,
+    ResultTarget,
     atomic_write_bytes,
     atomic_write_text,
+    committed_folders,
     json_ready,
     netcdf_ready,
-    raise_terminated,
+    os_error_reason,
 )
 
-__all__ = ["JSON_DIGITS", "RESULT_MARKER", "ResultFolder", "atomic_write_bytes",
+__all__ = ["JSON_DIGITS", "RESULT_MARKER", "ResultFile", "ResultFolder", "atomic_write_bytes",
            "atomic_write_text", "committed_folders", "json_ready", "run_variants"]
 
 #: the file in every result folder sealsim commits: ``--force`` replaces only folders with it
 RESULT_MARKER = ".sealsim-results"
 
-#: every result folder committed by this process, in order (see :func:`committed_folders`)
-_COMMITTED: list[Path] = []
-
-
-def committed_folders() -> tuple[Path, ...]:
-    """Result folders this process has committed so far (oldest first).
-
-    The CLI uses it to say truthfully, after Ctrl-C, whether the new results were written.
-    """
-    return tuple(_COMMITTED)
-
-
-def _pid_alive(pid: int) -> bool:
-    try:
-        os.kill(pid, 0)
-    except ProcessLookupError:
-        return False
-    except PermissionError:  # exists, owned by someone else
-        return True
-    return True
-
-
-def _in_main_thread() -> bool:
-    return threading.current_thread() is threading.main_thread()
-
-
-class ResultFolder:
+class ResultFolder(ResultTarget):
     """A result folder written all-or-nothing, locked against concurrent runs.
 
     Parameters
@@ -131,21 +108,12 @@ class ResultFolder:
     """
 
     def __init__(self, path: str | Path, force: bool = False, inputs: Iterable[str | Path] = ()):
-        self.requested = Path(path)
-        self.path = Path(path).resolve()  # through links: stage next to the real folder
-        self.force = force
-        self.committed = False
+        super().__init__(path, force)
         self._staging: Path | None = None
-        self._lock_fd: int | None = None
-        self._old_sigterm = None
-        self._created: list[Path] = []
         self._check_location(inputs)
         self._at_start = self._identity()
 
     # -- checks before any computing -----------------------------------------------------------
-    def _shown(self, name: str = "") -> str:
-        return str(self.requested / name) if name else str(self.requested)
-
     def _check_location(self, inputs: Iterable[str | Path]) -> None:
         shown = self._shown()
         cwd = Path.cwd().resolve()
@@ -160,15 +128,7 @@ class ResultFolder:
                                  "another output folder or move the file")
         if self.path.exists() and not self.path.is_dir():
             raise InputError(f"output path {shown!r} is a file, expected a folder")
-        existing = self.path.parent
-        while not existing.exists():
-            existing = existing.parent
-        if not existing.is_dir():
-            raise InputError(f"cannot create output folder {shown!r}: {str(existing)!r} is a "
-                             "file")
-        if not os.access(existing, os.W_OK | os.X_OK):
-            raise InputError(f"cannot write output folder {shown!r}: no write permission in "
-                             f"{str(existing)!r} (or a read-only file system)")
+        self._check_parent()
         if self._holds_results():
             if not self.force:
                 raise ResultExistsError(
@@ -205,14 +165,7 @@ class ResultFolder:
         return self._staging
 
     def __enter__(self) -> ResultFolder:
-        parent = self.path.parent
-        self._created = [p for p in (parent, *parent.parents) if not p.exists()]
-        try:
-            parent.mkdir(parents=True, exist_ok=True)
-        except OSError as exc:
-            raise InputError(f"cannot create output folder {self._shown()!r}: "
-                             f"{exc.strerror or exc}") from exc
-        self._lock()
+        self._open()
         try:
             if self._clean_stale():
                 raise ResultExistsError(
@@ -226,58 +179,25 @@ class ResultFolder:
                     "started: check them, then run again")
             try:
                 self._staging = Path(tempfile.mkdtemp(
-                    dir=parent, prefix=f".{self.path.name}.{os.getpid()}.", suffix=".partial"))
+                    dir=self.path.parent, prefix=f".{self.path.name}.{os.getpid()}.",
+                    suffix=".partial"))
                 os.chmod(self._staging, 0o777 & ~USER_UMASK)
             except OSError as exc:
                 raise InputError(f"cannot create output folder {self._shown()!r}: "
                                  f"{exc.strerror or exc}") from exc
-            if _in_main_thread() and signal.getsignal(signal.SIGTERM) is signal.SIG_DFL:
-                self._old_sigterm = signal.signal(signal.SIGTERM, raise_terminated)
+            self._sigterm_raises()
         except BaseException:
-            self._unlock()
-            self._remove_created()
+            self._abandon()
             raise
         return self
-
-    def _remove_created(self) -> None:
-        """Remove the (still empty) parent folders this run created: a failed run leaves no
-        trace."""
-        for folder in self._created:
-            try:
-                folder.rmdir()
-            except OSError:
-                break
 
     def __exit__(self, exc_type, exc, tb) -> None:
         staging, self._staging = self._staging, None
         if exc_type is not None:
             shutil.rmtree(staging, ignore_errors=True)
-            self._release()
-            self._remove_created()
+            self._abandon()
             return
-        if not _in_main_thread():  # signals reach Python in the main thread only
-            try:
-                self._commit(staging)
-            finally:
-                self._release()
-            return
-        # Ctrl-C/SIGTERM wait for these renames, then act (on any thread's signal delivery)
-        deferred: list[int] = []
-        handlers = {sig: signal.signal(sig, lambda signum, frame: deferred.append(signum))
-                    for sig in (signal.SIGINT, signal.SIGTERM)}
-        try:
-            self._commit(staging)
-        finally:
-            for sig, handler in handlers.items():
-                signal.signal(sig, handler)
-            self._release()
-            for signum in deferred[:1]:
-                handler = handlers[signum]
-                if callable(handler):
-                    handler(signum, None)
-                elif handler == signal.SIG_DFL:
-                    raise Terminated("SIGTERM") if signum == signal.SIGTERM \
-                        else KeyboardInterrupt
+        self._finish(lambda: self._commit(staging))
 
     def _commit(self, staging: Path) -> None:
         backup = None
@@ -297,56 +217,9 @@ class ResultFolder:
             shutil.rmtree(staging, ignore_errors=True)
             raise OutputError(f"cannot move the results into {self._shown()!r}: "
                               f"{exc.strerror or exc}; the folder is unchanged") from exc
-        self.committed = True
-        _COMMITTED.append(self.path)
+        self._committed()
         if backup is not None:
             shutil.rmtree(backup, ignore_errors=True)
-
-    def _release(self) -> None:
-        if self._old_sigterm is not None:
-            signal.signal(signal.SIGTERM, self._old_sigterm)
-            self._old_sigterm = None
-        self._unlock()
-
-    def _lock_path(self) -> Path:
-        return self.path.with_name(f".{self.path.name}.lock")
-
-    def _lock(self) -> None:
-        import fcntl
-
-        path = self._lock_path()
-        while True:
-            try:
-                fd = os.open(path, os.O_RDWR | os.O_CREAT, 0o666 & ~USER_UMASK)
-            except OSError as exc:
-                raise InputError(f"cannot create the lock file {str(path)!r} of output folder "
-                                 f"{self._shown()!r}: {exc.strerror or exc}") from exc
-            try:
-                fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
-            except BlockingIOError:
-                owner = os.read(fd, 32).decode("ascii", "replace").strip()
-                os.close(fd)
-                raise ResultBusyError(
-                    f"output folder {self._shown()!r} is being written by another sealsim run"
-                    + (f" (process {owner})" if owner else "")
-                    + "; wait for it to finish or choose another folder") from None
-            # the holder before us may have removed the file after we opened it: retry then
-            try:
-                same = os.stat(path).st_ino == os.fstat(fd).st_ino
-            except FileNotFoundError:
-                same = False
-            if same:
-                break
-            os.close(fd)
-        os.ftruncate(fd, 0)
-        os.write(fd, str(os.getpid()).encode())
-        self._lock_fd = fd
-
-    def _unlock(self) -> None:
-        if self._lock_fd is not None:
-            self._lock_path().unlink(missing_ok=True)  # while still holding it (see _lock)
-            os.close(self._lock_fd)
-            self._lock_fd = None
 
     def _clean_stale(self) -> bool:
         """Remove staging/backup folders of dead processes (we hold the target's lock).
@@ -354,13 +227,7 @@ class ResultFolder:
         Returns True if old results were put back (a run died between moving them aside and
         committing its own)."""
         restored = False
-        pattern = re.compile(rf"\.{re.escape(self.path.name)}\.(\d+)\."
-                             r"(?:[a-z0-9_]{8}\.partial|old)")
-        for entry in self.path.parent.iterdir():
-            match = pattern.fullmatch(entry.name)
-            pid = int(match[1]) if match else None
-            if pid is None or pid == os.getpid() or _pid_alive(pid):
-                continue
+        for entry in list(self._stale(r"[a-z0-9_]{8}\.partial|old")):
             if entry.name.endswith(".old") and not self.path.exists():
                 os.replace(entry, self.path)  # died before its commit: the old results return
                 restored = True
@@ -399,8 +266,8 @@ class ResultFolder:
         except OSError as exc:
             if isinstance(exc, OutputError):
                 raise
-            reason = exc.strerror or errno.errorcode.get(exc.errno or 0, "") or str(exc)
-            raise OutputError(f"cannot write result file {self._shown(name)!r}: {reason}; "
+            raise OutputError(f"cannot write result file {self._shown(name)!r}: "
+                              f"{os_error_reason(exc)}; "
                               f"nothing was written, {self._shown()!r} is unchanged") from exc
 
     def write_bytes(self, name: str, data: bytes) -> Path:

@@ -27,6 +27,7 @@ from sealsim.cases import (
     detect_case_kind,
     expand_variants,
     load_toml,
+    one_variant_used,
     validate_case,
 )
 from sealsim.errors import InputError
@@ -47,6 +48,7 @@ from sealsim.fmu.friction_export import (
     steady_table,
 )
 from sealsim.fmu.model_description import xml_text_problem
+from sealsim.units import format_quantity
 
 __all__ = ["build_cylinder_fmu", "build_fmu", "build_friction_fmu", "build_rotary_fmu"]
 
@@ -261,18 +263,50 @@ def _model_name(title: str, path: Path, variant: str, chosen: bool) -> str:
     return f"{title or path.stem} (variant {variant})"
 
 
-def _one_variant(cases: dict, variant: str | None, source: str, same=None):
-    """The variant to export: the one asked for, the only one, or any when all agree."""
+def _one_variant(cases: dict, variant: str | None, source: str, same=None,
+                 notes: list | None = None, but: str = ""):
+    """The variant to export: the one asked for, the only one, or the first when all agree
+    (which ``notes`` then says, with ``but``: what differs all the same)."""
     if variant is not None:
         if variant not in cases:
             raise InputError(f"{source}: variant {variant!r} does not exist; choose one of "
                              f"{', '.join(cases)}")
         return variant, cases[variant]
-    if len(cases) == 1 or (same is not None and len({same(c) for c in cases.values()}) == 1):
-        name = next(iter(cases))
+    name = next(iter(cases))
+    if len(cases) == 1:
+        return name, cases[name]
+    if same is not None and len({same(c) for c in cases.values()}) == 1:
+        if notes is not None:
+            notes.append(f"{source} has the variants {', '.join(cases)}; they give the same "
+                         f"FMU{but}: built from the first, {name!r} (--variant chooses "
+                         "another)")
         return name, cases[name]
     raise InputError(f"{source} has the variants {', '.join(cases)}; choose one with "
                      "--variant (or fmu.variant)")
+
+
+def _named(seals, name: str):
+    return next((s for s in seals if s.name == name), None)
+
+
+def _seal_identity(case, seal: str) -> str:
+    """What a seal FMU of ``seal`` takes from a pneumatic case (its start temperature aside):
+    the seal's table and the diameter its map is evaluated at."""
+    spec = _named(case.seals, seal)
+    diameter = case.cylinder.bore if spec is not None and spec.location == "piston" \
+        else case.cylinder.rod_diameter
+    return repr((spec, diameter))
+
+
+def _seal_temperature(case, spec) -> float:
+    """Start value of a seal FMU's input T_seal [K]: the seal's, the cylinder's seal
+    temperature or the body's."""
+    from sealsim.pneumatic.case import body_temperature
+
+    for temperature in (spec and spec.temperature, case.cylinder.seal_temperature):
+        if temperature is not None:
+            return temperature
+    return body_temperature(case)
 
 
 def _law(params):
@@ -306,8 +340,24 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
         False: a source-only FMU.
     progress : callable, optional
         ``progress(task, done, total)``.
+
+    Returns
+    -------
+    BuildResult
+        Its ``report["source"]`` names the case file and the variant built from; when no
+        variant was chosen and all variants give the same FMU, ``report["notes"]`` says so.
     """
-    path = Path(path)
+    notes: list[str] = []
+    with one_variant_used():          # one variant is exported, not all of them run
+        result = _build_case_fmu(Path(path), out, fmi_version, kind, force, variant, seal,
+                                 compile, progress, notes)
+    result.report.setdefault("notes", []).extend(notes)
+    return result
+
+
+def _build_case_fmu(path: Path, out, fmi_version, kind, force, variant, seal, compile,
+                    progress, notes: list) -> BuildResult:
+    """:func:`build_fmu`; ``notes`` receives what the caller should be told."""
     check_output(out, force, [path])
     source = f"case file {str(path)!r}"
     data = load_toml(path)
@@ -372,7 +422,7 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
 
         cases = load_friction_cases(data, source)
         name, case = _one_variant(cases, variant, source,
-                                  same=lambda c: repr((c.friction, c.inputs)))
+                                  same=lambda c: repr((c.friction, c.inputs, c.seal)), notes=notes)
         title = title or _model_name(case.title, case_path, name, chosen(cases))
         params = law_override or case.friction
         i = case.inputs
@@ -391,19 +441,24 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
             seal_temperature=i.temperature,
             table=table, title=title,
             source=f"{source}, variant {name!r}", **common)
-    from sealsim.pneumatic.case import body_temperature, build_contact_map, load_pneumatic_cases
+    from sealsim.pneumatic.case import build_contact_map, load_pneumatic_cases
 
     cases = load_pneumatic_cases(data, source)
     if seal is None:                                   # the whole cylinder
         if law_override is not None:
             raise InputError("[friction] and fmu.friction_file replace the law of one seal: "
                              "give fmu.seal (or --seal) to export that seal")
-        name, case = _one_variant(cases, variant, source, same=lambda c: repr(c))
+        name, case = _one_variant(cases, variant, source, same=lambda c: repr(c), notes=notes)
         return build_cylinder_fmu(case, out, base_dir=base,
                                   title=title or _model_name(case.title, case_path, name,
                                                              chosen(cases)),
                                   source=f"{source}, variant {name!r}", **common)
-    name, case = _one_variant(cases, variant, source, same=lambda c: repr(c.seals))
+    starts = [_seal_temperature(c, _named(c.seals, seal)) for c in cases.values()]
+    start = f"{format_quantity(starts[0], 'temperature')} in {next(iter(cases))!r}"
+    name, case = _one_variant(
+        cases, variant, source, notes=notes, same=lambda c: _seal_identity(c, seal),
+        but="" if len(set(starts)) == 1 else
+        f" but for the start value of the input T_seal ({start})")
     seals = {s.name: s for s in case.seals}
     if seal not in seals:
         raise InputError(f"{source}: there is no seal {seal!r}; choose one of "
@@ -418,11 +473,7 @@ def build_fmu(path, out, *, fmi_version: int = 2, kind: str = "both", force: boo
         contact_map = build_contact_map(spec.map, diameter, base, where,
                                         None if progress is None else
                                         (lambda d, n: progress("FE map", d, n)))
-    temperature = spec.temperature
-    if temperature is None:
-        temperature = case.cylinder.seal_temperature
-    if temperature is None:
-        temperature = body_temperature(case)
+    temperature = _seal_temperature(case, spec)
     if contact_map is None and law.name == "theta":
         raise InputError(f"{where}: the theta law needs the seal's normal force and contact "
                          "width; give the seal a map")

@@ -13,10 +13,12 @@ file and a generated ``config.h`` (value references, start values, parameter bou
 tables); ``all.c`` includes them all, so one compiler call builds the binary.  The FMI
 headers come from FMPy (BSD 2-clause, Modelica Association).
 
-Writing follows sealsim's result-folder rules (:mod:`sealsim.output`): the target is checked
-before anything is computed (an existing file is refused unless ``force``), the archive is
-assembled in a temporary folder that is always removed, and the ``.fmu`` appears atomically
-(a temporary file next to it, then a rename) -- nothing else is written outside the target.
+The ``.fmu`` is written through sealsim's one write mechanism, :class:`sealsim.files.ResultFile`:
+the target is checked before anything is computed (an existing file is refused unless
+``force``, an input file is never the target), it is locked while the FMU is built (a second
+build to the same file is refused), the archive is assembled in a temporary folder that is
+always removed, and the ``.fmu`` appears only when the build succeeded (a temporary file next
+to it, then a link or a rename) -- nothing else is written outside the target.
 """
 
 from __future__ import annotations
@@ -37,9 +39,9 @@ from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
 
-from sealsim.errors import InputError, ModelError, OutputError, ResultExistsError, SealsimError
+from sealsim.errors import InputError, ModelError, SealsimError
 from sealsim.fmu.model_description import ModelSpec, c_variables, model_description_xml
-from sealsim.files import json_ready, sigterm_as_interrupt
+from sealsim.files import ResultFile, json_ready
 
 __all__ = ["FMI_KINDS", "BuildResult", "FMUCompileError", "FMUDependencyError",
            "build_archive", "check_output", "find_compiler", "platform_folder"]
@@ -117,7 +119,7 @@ def _fmi_header_folder() -> Path:
 
 
 def check_output(out: str | Path, force: bool, inputs: Iterable[str | Path] = ()) -> Path:
-    """Check the target of an FMU before anything is computed.
+    """Check the target of an FMU before anything is computed (:class:`~sealsim.files.ResultFile`).
 
     The name must end in ``.fmu``; an existing file is refused unless ``force``; a folder in
     its place, one of the input files, or a parent that is not a folder are refused.
@@ -127,28 +129,11 @@ def check_output(out: str | Path, force: bool, inputs: Iterable[str | Path] = ()
     Path
         The target.
     """
-    path = Path(out)
-    if path.suffix.lower() != ".fmu":
-        raise InputError(f"--out {str(path)!r}: the FMU file name must end in .fmu "
-                         "(e.g. --out seal.fmu)")
-    if path.is_dir():
-        raise InputError(f"--out {str(path)!r} is a folder; give the name of the .fmu file")
-    resolved = path.resolve()
-    for item in inputs:
-        if Path(item).resolve() == resolved:
-            raise InputError(f"--out {str(path)!r} is an input of the build; choose another "
-                             "file name")
-    if path.exists() and not force:
-        raise ResultExistsError(f"{str(path)!r} already exists; use --force to replace it")
-    for parent in resolved.parents:
-        if parent.exists():
-            if not parent.is_dir():
-                raise InputError(f"--out {str(path)!r}: {str(parent)!r} is not a folder")
-            if not os.access(parent, os.W_OK | os.X_OK):
-                raise InputError(f"--out {str(path)!r}: the folder {str(parent)!r} cannot be "
-                                 "written")
-            break
-    return path
+    return _result_file(out, force, inputs).requested
+
+
+def _result_file(out: str | Path, force: bool, inputs: Iterable[str | Path] = ()) -> ResultFile:
+    return ResultFile(out, force, inputs, suffix=".fmu")
 
 
 def platform_folder(fmi_version: int) -> tuple[str, str]:
@@ -262,53 +247,11 @@ def _zip(folder: Path) -> bytes:
     return buffer.getvalue()
 
 
-def _commit(data: bytes, target: Path, force: bool) -> None:
-    """Write ``target`` atomically: a temporary file next to it, then a rename (refusing an
-    existing file unless ``force``); folders created for it are removed on failure."""
-    created = []
-    parent = target.resolve().parent
-    missing = [p for p in [parent, *parent.parents] if not p.exists()]
-    try:
-        for folder in reversed(missing):
-            folder.mkdir()
-            created.append(folder)
-        fd, tmp = tempfile.mkstemp(dir=parent, prefix=f".{target.name}.", suffix=".tmp")
-        try:
-            with os.fdopen(fd, "wb") as fh:
-                fh.write(data)
-                fh.flush()
-                os.fsync(fh.fileno())
-            umask = os.umask(0)
-            os.umask(umask)
-            os.chmod(tmp, 0o666 & ~umask)
-            if force:
-                os.replace(tmp, target)
-            else:
-                try:
-                    os.link(tmp, target)          # fails if the target appeared meanwhile
-                except FileExistsError:
-                    raise ResultExistsError(f"{str(target)!r} already exists; use --force to "
-                                            "replace it") from None
-                except OSError:                   # a file system without hard links
-                    if target.exists():
-                        raise ResultExistsError(f"{str(target)!r} already exists; use --force "
-                                                "to replace it") from None
-                    os.replace(tmp, target)
-        finally:
-            Path(tmp).unlink(missing_ok=True)
-    except BaseException as exc:
-        for folder in reversed(created):
-            shutil.rmtree(folder, ignore_errors=True)
-        if isinstance(exc, OSError) and not isinstance(exc, SealsimError):
-            raise OutputError(f"cannot write {str(target)!r}: {exc.strerror or exc}; nothing "
-                              "was written") from None
-        raise
-
-
 def build_archive(spec: ModelSpec, out: str | Path, *, fmi_version: int = 2,
                   kind: str = "both", force: bool = False, compile: bool = True,
                   check: Callable[[Path, str], None] | None = None,
-                  document: Callable[[ModelSpec], None] | None = None) -> BuildResult:
+                  document: Callable[[ModelSpec], None] | None = None,
+                  inputs: Iterable[str | Path] = ()) -> BuildResult:
     """Generate, compile, validate and write the FMU of a model.
 
     Parameters
@@ -329,6 +272,8 @@ def build_archive(spec: ModelSpec, out: str | Path, *, fmi_version: int = 2,
         (it may add to ``spec.report`` and ``spec.data``, or raise).
     document : callable, optional
         ``document(spec)`` fills ``spec.documentation`` (after the check).
+    inputs : iterable of path
+        Files the FMU is built from (refused as ``out``).
 
     Returns
     -------
@@ -344,10 +289,11 @@ def build_archive(spec: ModelSpec, out: str | Path, *, fmi_version: int = 2,
     if kind not in FMI_KINDS:
         raise InputError(f"--kind {kind!r} is not allowed; choose me, cs or both")
     kinds = FMI_KINDS[kind]
-    target = check_output(out, force)
+    result_file = _result_file(out, force, inputs)
+    target = result_file.requested
     generated = _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
-    # SIGTERM raises like Ctrl-C here, so the scratch folder is removed either way
-    with sigterm_as_interrupt(), tempfile.TemporaryDirectory(prefix="sealsim-fmu-") as scratch:
+    # locked until written; SIGTERM raises like Ctrl-C, so the scratch folder is removed
+    with result_file, tempfile.TemporaryDirectory(prefix="sealsim-fmu-") as scratch:
         folder = Path(scratch) / "fmu"
         folder.mkdir()
         token = _write_sources(folder, spec, fmi_version, kinds)
@@ -376,7 +322,7 @@ def build_archive(spec: ModelSpec, out: str | Path, *, fmi_version: int = 2,
         if problems:
             raise ModelError("the generated FMU is not valid (a sealsim bug, please report "
                              "it): " + "; ".join(problems))
-        _commit(_zip(folder), target, force)
+        result_file.write_bytes(_zip(folder))
     result = BuildResult(target, fmi_version, kinds, binary, report)
     if compile and binary is None:
         raise FMUCompileError(

@@ -47,9 +47,9 @@ its glassy expansion (``material.model = "viscoelastic"``) describes the seal.
 
 from __future__ import annotations
 
-import hashlib
 import logging
 import os
+import shutil
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Protocol, runtime_checkable
@@ -81,6 +81,7 @@ __all__ = [
     "energised_contact_pressure",
     "energised_force_per_length",
     "hertz_contact_width",
+    "kept_paths_folder",
     "lindley_force_per_length",
     "thermal_squeeze",
 ]
@@ -640,17 +641,20 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
     """FE map of a structure case file, built on demand and cached.
 
     The case (with a ``[map]`` table, no variants) is validated and resolved (all defaults
-    filled in); the SHA-256 of the resolved TOML and of the FE model's fingerprint
-    (:func:`sealsim.structure.fingerprint.model_fingerprint`: model version, FElupe version,
-    source of the structure model and the elastomer catalogue) names the cache file
+    filled in); the key of its FE results
+    (:func:`sealsim.structure.fingerprint.results_key`: the resolved case, the FE model's
+    fingerprint -- model version, FElupe version, source of the structure model and the
+    elastomer catalogue -- and a compound file's content) names the cache file
     ``<cache_dir>/<stem>-<hash16>.nc``.  A cached map is read (one that cannot be read, a
     damaged file, is built again with a warning); otherwise
     :func:`sealsim.structure.mapping.compute_map` runs (FE, minutes) and its result is written
-    atomically to the cache.  Any change of the structure case or of the FE model gives a new
-    map (old files stay in the cache folder until deleted).  Before a map is computed, the
-    logger ``sealsim.pneumatic.contact_maps`` announces it at INFO level ("building FE map for
-    seal 'rod' from rod_seal_12.toml (5 pressures x 3 temperatures, 3 FE load paths), cached
-    at ...").
+    atomically to the cache; its finished FE load paths are kept meanwhile
+    (:func:`kept_paths_folder`), so that a build that is interrupted computes only the missing
+    paths the next time the map is needed.  Any change of the structure case or of the FE
+    model gives a new map (old files stay in the cache folder until deleted).  Before a map
+    is computed, the logger ``sealsim.pneumatic.contact_maps`` announces it at INFO level
+    ("building FE map for seal 'rod' from rod_seal_12.toml (5 pressures x 3 temperatures, 3 FE
+    load paths), cached at ...").
 
     Parameters
     ----------
@@ -690,15 +694,11 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
                          "map.temperature grids) to build the seal's characteristic map from")
     text = dump_case_toml(case, header="resolved sealsim structure case (all defaults filled "
                                        "in)")
-    from sealsim.structure.fingerprint import model_fingerprint
+    from sealsim.structure.fingerprint import results_key
 
-    # the model's fingerprint too: a map computed by another FE model is not reused
-    from sealsim.properties.elastomers import compound_file_digest
-
+    # the resolved case, the FE model's fingerprint (a map of another FE model is not reused)
     # and the content of a compound file the case names, not only its path
-    material = compound_file_digest(case.material.elastomer)
-    digest = hashlib.sha256(f"{text}\n# FE model {model_fingerprint()}{material}"
-                            .encode("utf-8")).hexdigest()[:16]
+    digest = results_key(case)[:16]
     folder = Path(cache_dir) if cache_dir is not None else default_cache_dir()
     target = folder / f"{path.stem}-{digest}.nc"
     damaged = target.is_file() and not _readable_netcdf(target)
@@ -712,10 +712,20 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
             raise InputError(f"cannot create the map cache folder {str(folder)!r}: {exc}") \
                 from None
         logger.info(_build_notice(case, path, target, label))
-        dataset = compute_map(case, workers=workers, progress=progress, case_text=text)
+        kept = kept_paths_folder(target)
+        dataset = compute_map(case, workers=workers, progress=progress, case_text=text,
+                              keep=kept)
         dataset, encoding = netcdf_ready(dataset)
         atomic_write_bytes(target, dataset.to_netcdf(encoding=encoding))
+        shutil.rmtree(kept, ignore_errors=True)   # the map is stored: its paths are not needed
     return FEContactMap.from_file(target, squeeze=squeeze)
+
+
+def kept_paths_folder(target: Path) -> Path:
+    """Where the finished FE load paths of the cached map ``target`` are kept while it is
+    built (``.NAME.paths`` next to it): a build interrupted by Ctrl-C, a killed process or a
+    power loss computes only the missing paths when the map is needed again."""
+    return target.with_name(f".{target.name}.paths")
 
 
 def _readable_netcdf(path: Path) -> bool:
@@ -733,7 +743,7 @@ def _build_notice(case, path: Path, target: Path, label: str = "") -> str:
     """The line announcing that the FE map of structure case ``case`` (read from ``path``) is
     built and cached at ``target``."""
     spec = case.map
-    squeezes = len(spec.squeeze or [case.load.squeeze[-1]])
+    squeezes = len(spec.squeeze) if spec.squeeze else 1   # else the installation's one
     grid = f"{len(spec.pressure)} pressures x {len(spec.temperature)} temperatures" + (
         f" x {squeezes} squeezes" if squeezes > 1 else "")
     paths = squeezes * len(spec.temperature)

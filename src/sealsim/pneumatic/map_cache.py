@@ -9,14 +9,17 @@ resolved structure case and of the FE model's fingerprint
 model gets a new file and old ones are never read again (``sealsim cache clear`` removes them).
 Maps are a few hundred kB each; removing one only means it is built again when needed.
 
-Only files this cache writes are touched: ``*.nc`` maps and the temporary files of
-interrupted writes (``.NAME.nc.*.tmp``), which :func:`clear_cached_maps` removes once they are
-an hour old (a map being written right now is never removed half-way).
+Only files this cache writes are touched: ``*.nc`` maps, the temporary files of interrupted
+writes (``.NAME.nc.*.tmp``) and the finished FE load paths of builds that were interrupted
+(folders ``.NAME.nc.paths``, :func:`~sealsim.pneumatic.contact_maps.kept_paths_folder`: the
+next build of that map reuses them); :func:`clear_cached_maps` removes the last two once they
+are an hour old (a map being built or written right now is never removed half-way).
 """
 
 from __future__ import annotations
 
 import os
+import shutil
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -27,8 +30,9 @@ from sealsim.pneumatic.contact_maps import default_cache_dir
 __all__ = ["STALE_TEMPORARY_AGE", "CachedMap", "cache_folder", "clear_cached_maps",
            "list_cached_maps"]
 
-#: Age after which a temporary file of an interrupted map write is removed by a clear [s]
-#: (writing a map takes well under a second; the FE computation comes before it).
+#: Age after which a temporary file of an interrupted map write, or the kept load paths of an
+#: interrupted build, are removed by a clear [s] (writing a map takes well under a second; a
+#: build keeps a load path every few seconds to minutes).
 STALE_TEMPORARY_AGE = 3600.0
 
 
@@ -45,7 +49,8 @@ class CachedMap:
     modified : float
         When it was written [s since the epoch].
     complete : bool
-        False for a temporary file left by an interrupted write.
+        False for a temporary file left by an interrupted write, or the folder of the kept
+        load paths of an interrupted build (size: its files', modified: its newest file's).
     """
 
     path: Path
@@ -96,15 +101,31 @@ def list_cached_maps(cache_dir: str | Path | None = None) -> list[CachedMap]:
                 continue
             if path.is_file():
                 found.append(CachedMap(path, stat.st_size, stat.st_mtime, complete))
+    for path in folder.glob(".*.nc.paths"):
+        if path.is_dir() and not path.is_symlink():
+            found.append(_kept_paths(path))
     return sorted(found, key=lambda m: (-m.modified, m.path.name))
+
+
+def _kept_paths(path: Path) -> CachedMap:
+    """The kept load paths of an interrupted build: their total size, the newest one's time."""
+    size, modified = 0, path.stat().st_mtime
+    for entry in path.iterdir():
+        try:
+            stat = entry.stat()
+        except FileNotFoundError:
+            continue
+        size += stat.st_size
+        modified = max(modified, stat.st_mtime)
+    return CachedMap(path, size, modified, complete=False)
 
 
 def clear_cached_maps(cache_dir: str | Path | None = None, older_than: float | None = None,
                       dry_run: bool = False, now: float | None = None) -> list[CachedMap]:
     """Remove cached maps, all of them or those written more than ``older_than`` ago.
 
-    Temporary files of interrupted writes are removed when they are older than both
-    ``older_than`` and :data:`STALE_TEMPORARY_AGE`.
+    Temporary files of interrupted writes and the kept load paths of interrupted builds are
+    removed when they are older than both ``older_than`` and :data:`STALE_TEMPORARY_AGE`.
 
     Parameters
     ----------
@@ -139,7 +160,12 @@ def clear_cached_maps(cache_dir: str | Path | None = None, older_than: float | N
             continue
         if not dry_run:
             try:
-                entry.path.unlink(missing_ok=True)
+                if entry.path.is_dir():
+                    shutil.rmtree(entry.path)
+                else:
+                    entry.path.unlink(missing_ok=True)
+            except FileNotFoundError:  # removed meanwhile (another clear, the build's end)
+                pass
             except OSError as exc:
                 raise InputError(f"cannot remove {str(entry.path)!r} from the map cache: "
                                  f"{exc.strerror or exc}") from None

@@ -13,15 +13,21 @@ results (:func:`sealsim.pneumatic.contact_maps.build_or_load_fe_map`): it combin
   (``catalogue.py``, where present) and ``data/elastomers.toml`` -- so that even a change
   that forgot to raise the version gives a new key (a cosmetic edit costs one rebuild of the
   map, which is cheap compared with a wrong one).
+
+:func:`results_key` is the one key of a structure case's FE results: the map cache's file name
+and the kept load paths of an interrupted map build
+(:class:`sealsim.structure.mapping._KeptPaths`) both come from it.
 """
 
 from __future__ import annotations
 
 import functools
 import hashlib
+import json
 from importlib import resources
+from typing import Any
 
-__all__ = ["FE_MODEL_VERSION", "model_fingerprint"]
+__all__ = ["FE_MODEL_VERSION", "model_fingerprint", "results_key"]
 
 #: Version of the FE model's results. History: 1 = hyperelastic/viscoelastic Mooney-Rivlin,
 #: rubbery thermal expansion; 2 = glassy thermal expansion through the fictive temperature,
@@ -56,3 +62,29 @@ def model_fingerprint() -> str:
                 digest.update(entry.name.encode())
                 digest.update(entry.read_bytes())
     return digest.hexdigest()[:16]
+
+
+def results_key(case: Any, *extra: Any) -> str:
+    """SHA-256 (hex) of everything FE results of a structure case depend on: the resolved case
+    (every field, defaults filled in), the FE model's :func:`model_fingerprint`, the content of
+    a compound file the case's material names (not only its path) and ``extra`` (JSON values,
+    e.g. the stored profile positions).
+
+    Examples
+    --------
+    >>> from sealsim.cases import validate_case
+    >>> from sealsim.structure.case import StructureCase
+    >>> case = validate_case(StructureCase, {
+    ...     "seal": {"cord_diameter": "2 mm", "inner_diameter": "12 mm"},
+    ...     "gland": {"arrangement": "rod", "sealing_diameter": "12 mm",
+    ...               "groove_width": "2.7 mm"}, "load": {"squeeze": [0.1]}})
+    >>> key = results_key(case)
+    >>> len(key), key == results_key(case), key == results_key(case, [0.0])
+    (64, True, False)
+    """
+    from sealsim.properties.elastomers import compound_file_digest
+
+    text = json.dumps({"case": case.model_dump(mode="json"), "model": model_fingerprint(),
+                       "material": compound_file_digest(case.material.elastomer),
+                       "extra": list(extra)}, sort_keys=True)
+    return hashlib.sha256(text.encode("utf-8")).hexdigest()

@@ -149,22 +149,18 @@ class _KeptPaths:
     (Ctrl-C, SIGKILL, power loss) computes only the missing paths when it is run again.
 
     Each path is one JSON file named by a hash of everything its values depend on -- the
-    resolved case, its (squeeze, temperature), the stored profile positions, the FE model's
-    fingerprint and a compound file's content, as the map cache's key
-    (:func:`sealsim.pneumatic.contact_maps.build_or_load_fe_map`) -- so a changed case or
-    model never reuses a path.  JSON keeps every float exactly (shortest repr).
+    key of the case's FE results (:func:`~sealsim.structure.fingerprint.results_key`: the
+    resolved case, the FE model's fingerprint, a compound file's content; the map cache's key
+    too) with the stored profile positions, and the path's (squeeze, temperature) -- so a
+    changed case or model never reuses a path.  JSON keeps every float exactly (shortest
+    repr).
     """
 
-    def __init__(self, folder: str | Path, case: StructureCase, case_data: dict,
-                 positions: np.ndarray):
-        from sealsim.properties.elastomers import compound_file_digest
-        from sealsim.structure.fingerprint import model_fingerprint
+    def __init__(self, folder: str | Path, case: StructureCase, positions: np.ndarray):
+        from sealsim.structure.fingerprint import results_key
 
         self.folder = Path(folder)
-        self._salt = json.dumps({"case": case_data, "positions": positions.tolist(),
-                                 "model": model_fingerprint(),
-                                 "material": compound_file_digest(case.material.elastomer)},
-                                sort_keys=True)
+        self._salt = results_key(case, positions.tolist())
 
     def _file(self, key: tuple) -> Path:
         text = f"{self._salt}|{key[0]!r}|{key[1]!r}"
@@ -199,8 +195,10 @@ def compute_map(case: StructureCase, *, workers: int | None = None,
         Resolved case (TOML) stored as the ``case`` attribute.
     keep : path, optional
         Folder where every finished load path is kept (:class:`_KeptPaths`): a build run
-        again after an interruption reuses them and computes only the missing paths.  The
-        caller removes the folder once the map is stored.
+        again after an interruption reuses them and computes only the missing paths (the
+        paths the worker processes were solving when the build was stopped are kept too,
+        since it waits for them anyway).  The caller removes the folder once the map is
+        stored.
 
     Returns
     -------
@@ -237,7 +235,7 @@ def compute_map(case: StructureCase, *, workers: int | None = None,
         totals["increments"] += out["increments"]
         totals["cutbacks"] += out["cutbacks"]
 
-    kept = None if keep is None else _KeptPaths(keep, case, data, positions)
+    kept = None if keep is None else _KeptPaths(keep, case, positions)
     done, todo = 0, []
     for key in tasks:
         out = None if kept is None else kept.load(key)
@@ -267,12 +265,18 @@ def compute_map(case: StructureCase, *, workers: int | None = None,
         with cf.ProcessPoolExecutor(max_workers=n_workers,
                                     initializer=_end_with_parent) as pool:
             futures = {pool.submit(_map_task, data, *key, positions): key for key in todo}
+            handled = set()
             try:
                 for fut in cf.as_completed(futures):
+                    handled.add(fut)
                     finished(futures[fut], fut.result())
             except BaseException:
                 for f in futures:
                     f.cancel()
+                if kept is not None:  # the pool waits for the paths being solved: keep them
+                    for f, key in futures.items():
+                        if f not in handled and not f.cancelled() and f.exception() is None:
+                            kept.save(key, f.result())
                 raise
     if np.any(profile[..., [0, -1]] > 0.0):
         warnings.warn(SealsimWarning(

@@ -21,7 +21,7 @@ time or load state, or the arrays of a characteristic map).  Nothing here comput
 ``structure``             FE load path of a seal (:func:`sealsim.structure.run.run_case`):
                           ``final.F_N_N``, ``final.b_mm``, ``final.p_max_MPa``, ...,
                           ``states.K.*``; series over load ``state``
-``structure_map``         characteristic map (:func:`sealsim.structure.maps.compute_map`):
+``structure_map``         characteristic map (:func:`sealsim.structure.mapping.compute_map`):
                           ``F_N_N.min``/``.max``/``.grid.I.J.K`` (squeeze, temperature,
                           pressure indices), likewise ``b_mm``, ``p_max_MPa``; series: the map
 ``pneumatic``             cylinder cycle (:func:`sealsim.pneumatic.simulation.simulate`):
@@ -169,7 +169,7 @@ _MAP_SUMMARY = {"F_N_N": ("F_N", 1.0), "F_N_per_length_N_per_mm": ("F_N_per_leng
 
 
 def _structure_map(case, base_dir: Path) -> RunOutput:
-    from sealsim.structure.maps import compute_map
+    from sealsim.structure.mapping import compute_map
 
     dataset = compute_map(case, workers=1)
     summary = {}
