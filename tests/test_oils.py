@@ -247,6 +247,13 @@ def test_invalid_datasheet_values(kwargs, field):
         Oil.from_datasheet(**args)
 
 
+def test_swapped_datasheet_viscosities_are_named_as_written():
+    # the message gave m^2/s floats (6.8e-06 ... 4.6e-05) for a file written in mm^2/s
+    with pytest.raises(InputError, match=r"nu40 = 6.8 mm\^2/s must be greater than nu100 = "
+                                         r"46 mm\^2/s .*swapped"):
+        Oil.from_datasheet("x", 6.8e-6, 46e-6, 880.0)
+
+
 def test_invalid_walther_inputs():
     with pytest.raises(InputError, match="temperature"):
         walther_viscosity(-5.0, 9.3, 3.6)

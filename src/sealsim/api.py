@@ -34,11 +34,14 @@ import math
 import warnings
 from collections.abc import Mapping
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from sealsim.errors import InputError, ModelError, SealsimWarning
+
+if TYPE_CHECKING:
+    from sealsim.properties.oils import Oil
 
 __all__ = ["friction_loop", "lip_seal_torque", "oring_gland", "seal_friction"]
 
@@ -63,7 +66,7 @@ SEAL_FRICTION_COLUMNS = ["velocity_m_s", "pressure_bar", "temperature_C", "frict
 DEFAULT_LAW = {"law": "theta", "parameter_set": "seal_contact"}
 
 
-def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] = "VG68-mineral",
+def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] | Oil = "VG68-mineral",
                     sump_temperature=None, *, material: str = "NBR", lip_style: str = "plain",
                     ambient_temperature="20 degC", radial_force=None, contact_width=None,
                     mounting_temperature=None, case: Mapping[str, Any] | None = None):
@@ -87,10 +90,12 @@ def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] = "VG68-
     speed : str, pint quantity or array
         Shaft speed with its unit, e.g. ``"1500 rpm"``, ``"1500 1/min"`` (revolutions per
         minute, as on data sheets) or ``["500 rpm", "3000 rpm"]``; >= 0.
-    oil : str or mapping
+    oil : str, mapping or Oil
         Catalogue oil (``"ISO VG 220"``, ``"VG68-PAO"``; ``sealsim oil list``), or your oil's
         datasheet ``{"name": ..., "nu40": "220 mm^2/s", "nu100": "19 mm^2/s",
-        "density15": "895 kg/m^3"}``.
+        "density15": "895 kg/m^3", "min_temperature": "-30 degC"}`` (the fields of a case's
+        ``[oil]`` table, :class:`~sealsim.rotary.case.OilSpec`), or an
+        :class:`~sealsim.properties.oils.Oil` (e.g. ``Oil.from_datasheet``).
     sump_temperature : str, pint quantity or array, optional
         Oil sump held at this temperature, e.g. ``"70 degC"``, as in a
         gearbox whose gears heat the oil.  ``None``: the sump is heated by the seal alone and
@@ -178,7 +183,7 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
                                           "temperature", "K")):
         if value is not None:
             seal[name] = _si_text(_scalar(value, dimension, name), unit)
-    oil_table = {"name": oil} if isinstance(oil, str) else dict(oil)
+    oil_table = _oil_argument(oil)
     _refuse_argument_fields(case, LIP_SEAL_ARGUMENT_FIELDS)
     base = apply_overrides({"seal": seal, "oil": oil_table}, dict(case or {}))
 
@@ -218,6 +223,22 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
         notes.append(f"{len(failed)} of {len(rows)} points have no steady state (their rows "
                      "are NaN): " + "; ".join(failed))
     return _rows_out(rows, shape, LIP_SEAL_COLUMNS, notes)
+
+
+def _oil_argument(oil) -> dict[str, Any]:
+    """The case's ``[oil]`` table of the ``oil`` argument of :func:`lip_seal_torque`."""
+    from sealsim.properties.catalogue import oil_table
+    from sealsim.properties.oils import Oil
+
+    if isinstance(oil, str):
+        return {"name": oil}
+    if isinstance(oil, Oil):
+        return {"name": oil.name, **oil_table(oil)}
+    if isinstance(oil, Mapping):
+        return dict(oil)
+    raise InputError(f"oil: {oil!r} is neither a catalogue name (str), a mapping of datasheet "
+                     "values (nu40, nu100, density15, ...) nor an Oil "
+                     "(sealsim.properties.Oil.from_datasheet)")
 
 
 #: Case fields that arguments of :func:`lip_seal_torque` set (table -> {field: argument});

@@ -68,6 +68,7 @@ __all__ = [
     "PronyTable",
     "WLFTable",
     "elastomer_key",
+    "oil_table",
     "read_elastomer_table",
     "read_elastomer_tables",
     "read_oil_tables",
@@ -124,6 +125,30 @@ class OilEntry(CaseModel):
         kwargs["family"] = self.family
         kwargs["source"] = self.source if self.source is not None else f"oil file {origin}"
         return kwargs
+
+
+def oil_table(oil) -> dict[str, Any]:
+    """An :class:`~sealsim.properties.oils.Oil` as the table of an oil file or of a case's
+    ``[oil]`` (without its name): ASTM D341 constants and every property with its unit, exact
+    (``repr`` of the SI values), so that reading the table gives the same oil.
+
+    Examples
+    --------
+    >>> from sealsim.properties.oils import get_oil
+    >>> table = oil_table(get_oil("VG68"))
+    >>> table["density15"], table["min_temperature"]
+    ('880.0 kg/m^3', '249.15 K')
+    """
+    optional = {"thermal_conductivity": (oil.thermal_conductivity_value, "W/(m*K)"),
+                "specific_heat": (oil.specific_heat_value, "J/(kg*K)")}
+    return {"family": oil.family, "walther_A": oil.walther_A, "walther_B": oil.walther_B,
+            "density15": f"{oil.rho15!r} kg/m^3",
+            "min_temperature": f"{oil.min_temperature!r} K",
+            "pressure_viscosity_coefficient": f"{oil.pressure_viscosity_coefficient!r} 1/Pa",
+            "thermal_expansion": f"{oil.thermal_expansion!r} 1/K",
+            **{key: f"{value!r} {unit}" for key, (value, unit) in optional.items()
+               if value is not None},
+            "source": oil.source}
 
 
 class CatalogueOilEntry(OilEntry):

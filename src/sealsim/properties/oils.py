@@ -788,8 +788,9 @@ specific_heat_value, thermal_expansion, source
                              "2 mm^2/s, the lower limit of ASTM D341/D2270; allowed: "
                              "nu100 >= 2e-6 m^2/s")
         if not n40 > n100:
-            raise InputError(f"{where}nu40 = {n40:g} m^2/s must be greater than nu100 = "
-                             f"{n100:g} m^2/s")
+            raise InputError(f"{where}nu40 = {n40 * 1e6:g} mm^2/s must be greater than nu100 = "
+                             f"{n100 * 1e6:g} mm^2/s (an oil is thinner at 100 degC than at "
+                             "40 degC: are the two swapped?)")
         A, B = walther_constants(T40, n40, T100, n100)
         return cls(name=name, family=family, walther_A=A, walther_B=B, rho15=rho15,
                    pressure_viscosity_coefficient=pressure_viscosity_coefficient,
@@ -1137,6 +1138,6 @@ def get_oil(name: str | Oil, extra: Mapping[str, Oil] | None = None) -> Oil:
     hint = (f"; close matches: {', '.join(repr(shown[c]) for c in close)}" if close
             else "")
     raise InputError(f"unknown oil {name!r}{hint}; 'sealsim oil list' shows the catalogue; "
-                     "give your own oil with nu40, nu100 and density15 in the case file, or "
-                     "with --oil-file")
+                     "give your own oil by its datasheet values nu40, nu100 and density15 in "
+                     "the case's [oil] table (or an oil file for 'sealsim oil ... --oil-file')")
 
