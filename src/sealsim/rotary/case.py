@@ -139,8 +139,8 @@ class OilSpec(OilEntry):
     """The lubricant: a catalogue name, or your own oil from its datasheet.
 
     Your own oil gives ``nu40`` and ``nu100`` (or ASTM D341 ``walther_A`` and ``walther_B``)
-    and ``density15``, and may give every other field of an oil file
-    (:class:`~sealsim.properties.catalogue.OilEntry`): ``family`` (default mineral),
+    and ``density15``, and may give every other field of an oil file (as for ``sealsim oil
+    list --oil-file``): ``family`` (default mineral),
     ``min_temperature`` (the datasheet pour point), ``pressure_viscosity_coefficient``,
     ``thermal_conductivity``, ``specific_heat``, ``thermal_expansion``, ``source``.  A
     catalogue oil takes those optional values too, as corrections from your datasheet (e.g.
