@@ -726,6 +726,19 @@ def test_an_oil_table_corrects_a_catalogue_oil_and_refuses_what_it_would_ignore(
     assert walther.oil.build().nu40 == pytest.approx(46e-6, rel=1e-12)
 
 
+def test_free_convection_in_the_sump_takes_the_oils_expansion():
+    # The free-convection floor of the oil-side coefficients took a constant 7e-4 1/K
+    # (OIL_EXPANSION), whatever the oil's thermal_expansion, a second value for one property.
+    def h_end(oil):
+        case = _case(oil=oil, environment={"shaft_oil_convection": "open",
+                                           "sump_temperature": "80 degC"})
+        return RotaryModel(case).coefficients(0.0, 353.15)["shaft_end_oil"]  # at rest: free
+
+    default = h_end({"name": "VG68"})
+    assert default == h_end({"name": "VG68", "thermal_expansion": f"{0.34878 * 1.8 / 880} 1/K"})
+    assert h_end({"name": "VG68", "thermal_expansion": "1.4e-3 1/K"}) > default * 1.05
+
+
 def test_cli_run_writes_results_and_refuses_overwrite(tmp_path):
     case = tmp_path / "short.toml"
     case.write_text((EXAMPLES / "speed_cycle.toml").read_text().replace(

@@ -100,7 +100,8 @@ class OilEntry(CaseModel):
     specific_heat: Q("specific_heat", gt=0) | None = Field(
         None, description="constant c_p; default Cragoe (PAO, PAG: constants)")
     thermal_expansion: Q("thermal_expansion", ge=0) | None = Field(
-        None, description="volumetric expansion coefficient of the density; default 6.4e-4 1/K")
+        None, description=("thermal expansion coefficient at 15 degC of the density; default "
+                           "ASTM D1250 for lubricating oils, 0.6278 kg/(m^3 K) / density15"))
     source: str | None = None
 
     @model_validator(mode="after")

@@ -7,7 +7,8 @@ Two layers, as everywhere in sealsim:
   viscosity in Pa s, density in kg/m^3, pressure in Pa, thermal conductivity in W/(m K) and
   specific heat in J/(kg K):
   :func:`walther_viscosity`, :func:`walther_constants` (ASTM D341),
-  :func:`viscosity_index` (ASTM D2270), :func:`density`, :func:`thermal_conductivity_cragoe`,
+  :func:`viscosity_index` (ASTM D2270), :func:`density` and :func:`expansion_d1250` (ASTM
+  D1250), :func:`thermal_conductivity_cragoe`,
   :func:`specific_heat_cragoe` (Cragoe, NBS 1929) and :func:`barus_viscosity`.
 * **The** :class:`Oil` **record** (frozen dataclass) and a small catalogue of typical gear and
   circulating oils (``data/oils.toml``): :func:`list_oils`, :func:`get_oil`,
@@ -68,6 +69,7 @@ __all__ = [
     "OilRangeWarning",
     "barus_viscosity",
     "density",
+    "expansion_d1250",
     "get_oil",
     "list_oils",
     "load_oil_file",
@@ -94,6 +96,9 @@ T_RANGE = (150.0, 700.0)
 RHO15_RANGE = (600.0, 1300.0)
 #: Density of water at 15 degC used for the specific gravity s15 = rho15 / 999.0 [kg/m^3].
 RHO_WATER_15 = 999.0
+#: K1 of the lubricating-oil group of ASTM D1250 / API MPMS 11.1 at 15 degC [kg/(m^3 K)]
+#: (0.34878 kg/m^3 per degF at 60 degF, times 1.8): alpha_15 = K1 / rho15.
+D1250_K1_LUBRICATING = 0.34878 * 1.8
 
 #: Oil families.
 FAMILIES = ("mineral", "PAO", "PAG", "ester", "other")
@@ -445,12 +450,49 @@ def viscosity_index(nu40, nu100):
 # ----------------------------------------------------------------------------------------------
 
 
-def density(temperature, rho15, expansion=6.4e-4):
-    r"""Density of a lubricating oil, linear in temperature from 15 degC.
+def expansion_d1250(rho15):
+    r"""Thermal expansion coefficient at 15 degC of a petroleum lubricating oil (ASTM D1250).
+
+    .. math:: \alpha_{15} = K_1 / \rho_{15}, \qquad K_1 = 0.6278\ \mathrm{kg/(m^3\,K)}
+
+    the lubricating-oil group of the petroleum measurement tables (API MPMS 11.1 / ASTM
+    D1250: :math:`K_0 = 0`, :math:`K_1 = 0.34878` kg/m^3 per degF at 60 degF, i.e. 0.6278 per
+    K, as in Table 54D at 15 degC).  The tables hold for 800-1164 kg/m^3; synthetic oils (PAO,
+    PAG, esters) expand differently: give their datasheet value.
+
+    Parameters
+    ----------
+    rho15 : array_like
+        Density at 15 degC [kg/m^3], 600-1300.
+
+    Returns
+    -------
+    numpy.ndarray or float
+        Thermal expansion coefficient at 15 degC [1/K].
+
+    References
+    ----------
+    API MPMS Chapter 11.1 / ASTM D1250-04 (IP 200/04), Temperature and Pressure Volume
+    Correction Factors for Generalized Crude Oils, Refined Products, and Lubricating Oils.
+
+    Examples
+    --------
+    >>> round(expansion_d1250(880.0) * 1e4, 2)
+    7.13
+    """
+    return _out(D1250_K1_LUBRICATING / _rho15(rho15))
+
+
+def density(temperature, rho15, expansion=None):
+    r"""Density of a lubricating oil over temperature (ASTM D1250 volume correction).
 
     .. math::
 
-        \rho(T) = \rho_{15}\,[1 - \beta\,(T - 288.15\ \mathrm{K})]
+        \rho(T) = \rho_{15}\,\exp[-\alpha_{15}\,\Delta T\,(1 + 0.8\,\alpha_{15}\,\Delta T)],
+        \qquad \Delta T = T - 288.15\ \mathrm{K}
+
+    the volume correction factor of the petroleum measurement tables, with the expansion
+    coefficient :math:`\alpha_{15}` of :func:`expansion_d1250` unless one is given.
 
     Parameters
     ----------
@@ -459,8 +501,8 @@ def density(temperature, rho15, expansion=6.4e-4):
     rho15 : array_like
         Density at 15 degC [kg/m^3], 600-1300.
     expansion : array_like, optional
-        Volumetric thermal expansion coefficient beta [1/K], 0-2e-3.  Default 6.4e-4
-        (mineral oils: 6-7e-4).
+        Thermal expansion coefficient at 15 degC, alpha_15 [1/K], 0-2e-3.  Default
+        :func:`expansion_d1250` (880 kg/m^3: 7.13e-4 1/K).
 
     Returns
     -------
@@ -469,18 +511,20 @@ def density(temperature, rho15, expansion=6.4e-4):
 
     References
     ----------
-    The expansion coefficient is the usual value for petroleum oils (e.g. ASTM D1250 / API
-    MPMS 11.1 tables, linearised).
+    API MPMS Chapter 11.1 / ASTM D1250-04 (IP 200/04), Temperature and Pressure Volume
+    Correction Factors for Generalized Crude Oils, Refined Products, and Lubricating Oils.
 
     Examples
     --------
     >>> round(density(353.15, 880.0), 1)
-    843.4
+    838.7
     """
     t = _temperature(temperature)
     r = _rho15(rho15)
-    beta = _array(expansion, "expansion", "1/K", lo=0.0, hi=2e-3)
-    return _out(r * (1.0 - beta * (t - (T0 + 15.0))))
+    alpha = (D1250_K1_LUBRICATING / r if expansion is None else
+             _array(expansion, "expansion", "1/K", lo=0.0, hi=2e-3))
+    dt = t - (T0 + 15.0)
+    return _out(r * np.exp(-alpha * dt * (1.0 + 0.8 * alpha * dt)))
 
 
 def thermal_conductivity_cragoe(temperature, rho15):
@@ -653,7 +697,9 @@ class Oil:
         Constant specific heat [J/(kg K)].  ``None``: Cragoe correlation, except PAO (2200)
         and PAG (2000).
     thermal_expansion : float, optional
-        Volumetric expansion coefficient [1/K] of :func:`density`, default 6.4e-4.
+        Thermal expansion coefficient at 15 degC [1/K] of :func:`density`; default
+        :func:`expansion_d1250` of ``rho15`` (ASTM D1250 lubricating oils: 880 kg/m^3 gives
+        7.13e-4).
     source : str, optional
         Where the numbers come from.
 
@@ -682,7 +728,7 @@ class Oil:
     min_temperature: float | None = None
     thermal_conductivity_value: float | None = None
     specific_heat_value: float | None = None
-    thermal_expansion: float = 6.4e-4
+    thermal_expansion: float | None = None
     source: str = ""
 
     def __post_init__(self) -> None:
@@ -704,6 +750,8 @@ class Oil:
         object.__setattr__(self, "rho15", num("rho15", "kg/m^3", lo=RHO15_RANGE[0],
                                               hi=RHO15_RANGE[1],
                                               hint=" (0.88 g/ml = 880 kg/m^3)"))
+        if self.thermal_expansion is None:
+            object.__setattr__(self, "thermal_expansion", expansion_d1250(self.rho15))
         object.__setattr__(self, "thermal_expansion",
                            num("thermal_expansion", "1/K", lo=0.0, hi=2e-3))
         nu100 = self.nu100
@@ -748,7 +796,7 @@ class Oil:
                        min_temperature: float | None = None,
                        thermal_conductivity_value: float | None = None,
                        specific_heat_value: float | None = None,
-                       thermal_expansion: float = 6.4e-4,
+                       thermal_expansion: float | None = None,
                        source: str = "user datasheet") -> Oil:
         """Oil from datasheet viscosities at 40 and 100 degC.
 
@@ -806,7 +854,7 @@ specific_heat_value, thermal_expansion, source
                      min_temperature: float | None = None,
                      thermal_conductivity_value: float | None = None,
                      specific_heat_value: float | None = None,
-                     thermal_expansion: float = 6.4e-4,
+                     thermal_expansion: float | None = None,
                      source: str = "user ASTM D341 constants") -> Oil:
         """Oil from ASTM D341 constants A and B (nu in mm^2/s, T in K).
 
@@ -889,7 +937,7 @@ specific_heat_value, thermal_expansion, source
         --------
         >>> oil = Oil.from_datasheet("VG 68", 68e-6, 8.7e-6, 880.0)
         >>> round(oil.dynamic_viscosity(353.15) * 1e3, 1)
-        12.4
+        12.3
         """
         eta0 = self.density(temperature) * self.kinematic_viscosity(temperature)
         if np.ndim(pressure) == 0 and pressure == 0:
