@@ -824,10 +824,17 @@ def friction_loop(seal, velocity_amplitude, frequency, pressure="0 bar",
                         ("frequency", f), ("pressure", dp), ("temperature", temp)):
         if np.ndim(value) != 0 or not math.isfinite(float(value)):
             raise InputError(f"{name}: {value!r} must be one finite value")
-    if not (v_a > 0 and f > 0 and dp >= 0):
-        raise InputError("velocity_amplitude and frequency must be > 0, pressure >= 0")
-    if not (1 <= int(cycles) <= 50 and 20 <= int(steps_per_cycle) <= 20000):
-        raise InputError("cycles: 1 ... 50, steps_per_cycle: 20 ... 20000")
+    for name, value, ok, allowed in (
+            ("velocity_amplitude", velocity_amplitude, v_a > 0, "> 0"),
+            ("frequency", frequency, f > 0, "> 0"), ("pressure", pressure, dp >= 0, ">= 0")):
+        if not ok:
+            raise InputError(f"{name}: {value!r} must be {allowed}")
+    for name, value, low, high in (("cycles", cycles, 1, 50),
+                                   ("steps_per_cycle", steps_per_cycle, 20, 20000)):
+        # a count: 2.5 cycles were run as 2, the string '400' was read as 400
+        if isinstance(value, bool) or not isinstance(value, int | np.integer) \
+                or not low <= value <= high:
+            raise InputError(f"{name} = {value!r} must be a whole number from {low} to {high}")
     contact_map = _contact_map(seal, diameter, progress)
     _check_ranges(contact_map, np.array([dp]), np.array([temp]))
     friction_law, notes = _friction_law(DEFAULT_LAW if law is None else law)
