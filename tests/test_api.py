@@ -108,6 +108,9 @@ def test_lip_seal_torque_refuses_a_case_field_that_an_argument_sets(case, words)
     ({"material": "NRB"}, ["unknown elastomer", "NBR"]),
     ({"shaft_diameter": "2 mm"}, ["seal.shaft_diameter", "out of range"]),
     ({"sump_temperature": "70 degF", "oil": "VG32"}, []),  # valid: 21 degC
+    # a case file's name or a list: AttributeError 'str' object has no attribute 'get'
+    ({"case": "gearbox.toml"}, ["case: 'gearbox.toml' must be a mapping of case tables"]),
+    ({"oil": None}, ["oil: None is neither a catalogue name"]),
 ])
 def test_lip_seal_torque_errors_name_the_argument(kwargs, words):
     args = {"shaft_diameter": "60 mm", "speed": "1500 rpm", "oil": "VG220",

@@ -254,8 +254,12 @@ LIP_SEAL_ARGUMENT_FIELDS = {
 
 def _refuse_argument_fields(case: Mapping[str, Any] | None,
                             owned: dict[str, dict[str, str] | None]) -> None:
-    """An InputError if ``case`` sets a field that an argument sets (one of the two would be
-    ignored without a word)."""
+    """An InputError if ``case`` is not a mapping of case tables, or sets a field that an
+    argument sets (one of the two would be ignored without a word)."""
+    if case is not None and not isinstance(case, Mapping):
+        raise InputError(f"case: {case!r} must be a mapping of case tables with units, e.g. "
+                         "{'environment': {'sump_volume': '0.2 L'}} (a case file runs with "
+                         "'sealsim rotary run')")
     for table, fields in owned.items():
         given = (case or {}).get(table)
         if given is None:
