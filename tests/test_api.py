@@ -111,6 +111,7 @@ def test_lip_seal_torque_refuses_a_case_field_that_an_argument_sets(case, words)
     # a case file's name or a list: AttributeError 'str' object has no attribute 'get'
     ({"case": "gearbox.toml"}, ["case: 'gearbox.toml' must be a mapping of case tables"]),
     ({"oil": None}, ["oil: None is neither a catalogue name"]),
+    ({"mounting_temperature": "-280 degC"}, ["mounting_temperature: -280 degC", "absolute zero"]),
 ])
 def test_lip_seal_torque_errors_name_the_argument(kwargs, words):
     args = {"shaft_diameter": "60 mm", "speed": "1500 rpm", "oil": "VG220",
@@ -303,6 +304,9 @@ def test_seal_friction_follows_the_pressure_range_of_an_analytic_map(tmp_path, m
      ["unknown elastomer", "NBR"]),
     ({"velocity": "1 rpm"}, ["velocity", "velocity"]),
     ({"pressure": "-1 bar"}, ["pressure", ">= 0"]),
+    # -300 degC went on as -26.85 K, and was refused as 'within 20 K of the T_g of NBR'
+    ({"temperature": ["20 degC", "-300 degC"]},
+     ["temperature: -300 degC (-26.85 K) is at or below absolute zero"]),
 ])
 def test_seal_friction_errors(kwargs, words):
     args = {"seal": {"cord_diameter": "2 mm", "squeeze": 0.12}, "velocity": ["0.1 m/s"],
