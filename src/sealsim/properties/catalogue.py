@@ -54,6 +54,13 @@ from pydantic import ConfigDict, Field, PrivateAttr, model_validator
 
 from sealsim.cases import CaseModel, Q, parse_toml, validation_problems
 from sealsim.errors import InputError
+from sealsim.properties.oil_limits import (
+    EXPANSION_MAX,
+    PRESSURE_VISCOSITY_MAX,
+    RHO15_RANGE,
+    SPECIFIC_HEAT_RANGE,
+    THERMAL_CONDUCTIVITY_RANGE,
+)
 
 __all__ = [
     "ELASTOMER_FIELD_KEYS",
@@ -76,6 +83,11 @@ __all__ = [
 
 
 # -- oils -------------------------------------------------------------------------------------
+#: density15 of an oil table: the range that :class:`~sealsim.properties.oils.Oil` allows, so
+#: that a value outside it is named as written in the file (not as Oil's ``rho15``)
+DENSITY15 = Q("density", ge=RHO15_RANGE[0], le=RHO15_RANGE[1])
+
+
 class OilEntry(CaseModel):
     """One oil of an oil file (``[oils."NAME"]``): datasheet values with units.
 
@@ -89,17 +101,20 @@ class OilEntry(CaseModel):
     nu40: Q("kinematic_viscosity", gt=0) | None = None
     nu100: Q("kinematic_viscosity", gt=0) | None = None
     walther_A: float | None = None
-    walther_B: float | None = None
-    density15: Q("density", gt=0)
+    walther_B: float | None = Field(None, gt=0)
+    density15: DENSITY15
     min_temperature: Q("temperature", gt=0) | None = Field(
         None, description="lowest temperature of use (pour point); default per family/grade")
-    pressure_viscosity_coefficient: Q("inverse_pressure", ge=0) | None = Field(
+    pressure_viscosity_coefficient: Q("inverse_pressure", ge=0,
+                                      le=PRESSURE_VISCOSITY_MAX) | None = Field(
         None, description="Barus alpha, e.g. '20 1/GPa'; default per family")
-    thermal_conductivity: Q("thermal_conductivity", gt=0) | None = Field(
+    thermal_conductivity: Q("thermal_conductivity", ge=THERMAL_CONDUCTIVITY_RANGE[0],
+                            le=THERMAL_CONDUCTIVITY_RANGE[1]) | None = Field(
         None, description="constant k; default Cragoe (PAO, PAG: constants)")
-    specific_heat: Q("specific_heat", gt=0) | None = Field(
+    specific_heat: Q("specific_heat", ge=SPECIFIC_HEAT_RANGE[0],
+                     le=SPECIFIC_HEAT_RANGE[1]) | None = Field(
         None, description="constant c_p; default Cragoe (PAO, PAG: constants)")
-    thermal_expansion: Q("thermal_expansion", ge=0) | None = Field(
+    thermal_expansion: Q("thermal_expansion", ge=0, le=EXPANSION_MAX) | None = Field(
         None, description=("thermal expansion coefficient at 15 degC of the density; default "
                            "ASTM D1250 for lubricating oils, 0.6278 kg/(m^3 K) / density15"))
     source: str | None = None

@@ -61,6 +61,13 @@ from typing import Any
 import numpy as np
 
 from sealsim.errors import InputError
+from sealsim.properties.oil_limits import (
+    EXPANSION_MAX,
+    PRESSURE_VISCOSITY_MAX,
+    RHO15_RANGE,
+    SPECIFIC_HEAT_RANGE,
+    THERMAL_CONDUCTIVITY_RANGE,
+)
 from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = [
@@ -92,8 +99,6 @@ _NU_MAX = 1.0
 #: Plausible temperature range of all oil functions [K] (-123 to 427 degC): wider than any use
 #: of a lubricating oil; its purpose is to catch degC given where K is expected.
 T_RANGE = (150.0, 700.0)
-#: Allowed range of rho15 [kg/m^3].
-RHO15_RANGE = (600.0, 1300.0)
 #: Density of water at 15 degC used for the specific gravity s15 = rho15 / 999.0 [kg/m^3].
 RHO_WATER_15 = 999.0
 #: K1 of the lubricating-oil group of ASTM D1250 / API MPMS 11.1 at 15 degC [kg/(m^3 K)]
@@ -522,7 +527,7 @@ def density(temperature, rho15, expansion=None):
     t = _temperature(temperature)
     r = _rho15(rho15)
     alpha = (D1250_K1_LUBRICATING / r if expansion is None else
-             _array(expansion, "expansion", "1/K", lo=0.0, hi=2e-3))
+             _array(expansion, "expansion", "1/K", lo=0.0, hi=EXPANSION_MAX))
     dt = t - (T0 + 15.0)
     return _out(r * np.exp(-alpha * dt * (1.0 + 0.8 * alpha * dt)))
 
@@ -636,7 +641,7 @@ def barus_viscosity(eta0, alpha, pressure):
     0.01317
     """
     e0 = _array(eta0, "eta0", "Pa s", lo=0.0, lo_open=True)
-    a = _array(alpha, "alpha", "1/Pa", lo=0.0, hi=1e-7,
+    a = _array(alpha, "alpha", "1/Pa", lo=0.0, hi=PRESSURE_VISCOSITY_MAX,
                hint=" (alpha is in 1/Pa: 20 GPa^-1 = 20e-9 1/Pa)")
     p = _array(pressure, "pressure", "Pa", lo=-5e9, hi=5e9)
     return _out(e0 * np.exp(a * p))
@@ -753,7 +758,7 @@ class Oil:
         if self.thermal_expansion is None:
             object.__setattr__(self, "thermal_expansion", expansion_d1250(self.rho15))
         object.__setattr__(self, "thermal_expansion",
-                           num("thermal_expansion", "1/K", lo=0.0, hi=2e-3))
+                           num("thermal_expansion", "1/K", lo=0.0, hi=EXPANSION_MAX))
         nu100 = self.nu100
         if not nu100 >= NU_MIN_D341 * (1 - 1e-6):
             raise InputError(
@@ -764,7 +769,8 @@ class Oil:
             object.__setattr__(self, "pressure_viscosity_coefficient",
                                DEFAULT_PRESSURE_VISCOSITY[self.family])
         object.__setattr__(self, "pressure_viscosity_coefficient",
-                           num("pressure_viscosity_coefficient", "1/Pa", lo=0.0, hi=1e-7,
+                           num("pressure_viscosity_coefficient", "1/Pa", lo=0.0,
+                               hi=PRESSURE_VISCOSITY_MAX,
                                hint=" (20 GPa^-1 = 20e-9 1/Pa)"))
         if self.min_temperature is None:
             object.__setattr__(self, "min_temperature",
@@ -779,10 +785,13 @@ class Oil:
             object.__setattr__(self, "specific_heat_value", cp_default)
         if self.thermal_conductivity_value is not None:
             object.__setattr__(self, "thermal_conductivity_value",
-                               num("thermal_conductivity_value", "W/(m K)", lo=0.05, hi=0.5))
+                               num("thermal_conductivity_value", "W/(m K)",
+                                   lo=THERMAL_CONDUCTIVITY_RANGE[0],
+                                   hi=THERMAL_CONDUCTIVITY_RANGE[1]))
         if self.specific_heat_value is not None:
             object.__setattr__(self, "specific_heat_value",
-                               num("specific_heat_value", "J/(kg K)", lo=1000.0, hi=4000.0,
+                               num("specific_heat_value", "J/(kg K)", lo=SPECIFIC_HEAT_RANGE[0],
+                                   hi=SPECIFIC_HEAT_RANGE[1],
                                    hint=" (in J/(kg K): 2.1 kJ/(kg K) = 2100 J/(kg K))"))
         if not isinstance(self.source, str):
             raise InputError(f"{where}source = {self.source!r} must be a string")

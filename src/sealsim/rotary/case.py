@@ -35,7 +35,7 @@ from pydantic import Field, field_validator, model_validator
 
 from sealsim.cases import CaseModel, Q
 from sealsim.errors import InputError
-from sealsim.properties.catalogue import OilEntry
+from sealsim.properties.catalogue import DENSITY15, OilEntry
 from sealsim.properties.elastomers import get_elastomer, is_compound_file
 from sealsim.properties.oils import FAMILIES, Oil, get_oil
 from sealsim.rotary.lip import (
@@ -150,7 +150,7 @@ class OilSpec(OilEntry):
 
     name: str = "VG68-mineral"
     family: Literal[FAMILIES] | None = None  # type: ignore[valid-type]
-    density15: Q("density", gt=0) | None = None
+    density15: DENSITY15 | None = None
 
     @model_validator(mode="after")
     def _one_viscosity_source(self):  # replaces OilEntry's: a catalogue name needs none
