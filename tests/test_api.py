@@ -108,6 +108,10 @@ def test_lip_seal_torque_refuses_a_case_field_that_an_argument_sets(case, words)
     ({"material": "NRB"}, ["unknown elastomer", "NBR"]),
     ({"shaft_diameter": "2 mm"}, ["seal.shaft_diameter", "out of range"]),
     ({"sump_temperature": "70 degF", "oil": "VG32"}, []),  # valid: 21 degC
+    # a case file's name or a list: AttributeError 'str' object has no attribute 'get'
+    ({"case": "gearbox.toml"}, ["case: 'gearbox.toml' must be a mapping of case tables"]),
+    ({"oil": None}, ["oil: None is neither a catalogue name"]),
+    ({"mounting_temperature": "-280 degC"}, ["mounting_temperature: -280 degC", "absolute zero"]),
 ])
 def test_lip_seal_torque_errors_name_the_argument(kwargs, words):
     args = {"shaft_diameter": "60 mm", "speed": "1500 rpm", "oil": "VG220",
@@ -119,6 +123,37 @@ def test_lip_seal_torque_errors_name_the_argument(kwargs, words):
         sealsim.lip_seal_torque(**args)
     for word in words:
         assert word in str(info.value)
+
+
+def test_lip_seal_torque_takes_an_oil_built_in_python():
+    # A notebook user's Oil.from_datasheet went into lip_seal_torque as dict(oil): TypeError
+    # 'Oil' object is not iterable.  The Oil and the same datasheet as a table: one result.
+    from sealsim.properties import Oil
+
+    oil = Oil.from_datasheet("my VG 46", 46e-6, 6.8e-6, 872.0, min_temperature=234.15)
+    table = {"name": "my VG 46", "nu40": "46 mm^2/s", "nu100": "6.8 mm^2/s",
+             "density15": "872 kg/m^3", "min_temperature": "-39 degC"}
+    by_object = sealsim.lip_seal_torque("80 mm", "1000 rpm", oil, "60 degC")
+    by_table = sealsim.lip_seal_torque("80 mm", "1000 rpm", table, "60 degC")
+    # the table's nu40/nu100 pass through pint (mm^2/s): the same oil to a few ulp
+    assert by_object["torque_Nm"] == pytest.approx(by_table["torque_Nm"], rel=1e-9)
+    with pytest.raises(InputError, match=r"oil: 46 is neither a catalogue name"):
+        sealsim.lip_seal_torque("80 mm", "1000 rpm", 46, "60 degC")
+
+
+def test_lip_seal_torque_takes_the_datasheet_pour_point_of_your_oil():
+    # An own oil could give nu40, nu100, density15 and family only: its pour point was the
+    # typical one of its grade (VG 46 mineral: -27 degC), so a cold start at -33 degC of an oil
+    # rated to -39 degC was refused with no way to say so.
+    own = {"name": "HVI 46", "nu40": "46 mm^2/s", "nu100": "8.0 mm^2/s",
+           "density15": "872 kg/m^3"}
+    cold = {"sump_temperature": "-33 degC", "ambient_temperature": "-33 degC"}
+    with pytest.raises(InputError, match=r"-27.0 degC\); if your oil's datasheet gives a lower "
+                                         r"pour point, set it as oil.min_temperature"):
+        sealsim.lip_seal_torque("80 mm", "300 rpm", own, **cold)
+    r = sealsim.lip_seal_torque("80 mm", "300 rpm", {**own, "min_temperature": "-39 degC"},
+                                **cold)
+    assert r["T_sump_C"] == pytest.approx(-33.0, abs=1e-9) and r["torque_Nm"] > 0
 
 
 # -- rotary case without a duty cycle ----------------------------------------------------------
@@ -269,6 +304,9 @@ def test_seal_friction_follows_the_pressure_range_of_an_analytic_map(tmp_path, m
      ["unknown elastomer", "NBR"]),
     ({"velocity": "1 rpm"}, ["velocity", "velocity"]),
     ({"pressure": "-1 bar"}, ["pressure", ">= 0"]),
+    # -300 degC went on as -26.85 K, and was refused as 'within 20 K of the T_g of NBR'
+    ({"temperature": ["20 degC", "-300 degC"]},
+     ["temperature: -300 degC (-26.85 K) is at or below absolute zero"]),
 ])
 def test_seal_friction_errors(kwargs, words):
     args = {"seal": {"cord_diameter": "2 mm", "squeeze": 0.12}, "velocity": ["0.1 m/s"],

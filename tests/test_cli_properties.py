@@ -89,6 +89,20 @@ def test_oil_show_table_has_units_and_header():
         assert unit in out  # units in the headers survive (no rich markup eating [..])
 
 
+def test_oil_show_says_which_law_gives_density_conductivity_and_heat_capacity(tmp_path):
+    # the table gave rho, k and c_p without saying from where (ASTM D1250? Cragoe? a constant?)
+    assert ("ρ: ASTM D1250 volume correction, α15 = 7.13e-4 1/K; k: Cragoe (NBS 1929, "
+            "petroleum oils); c_p: Cragoe") in " ".join(ok("oil", "show", "VG68").stdout.split())
+    path = tmp_path / "oils.toml"
+    path.write_text('[oils."mine"]\nfamily = "ester"\nnu40 = "46 mm^2/s"\nnu100 = "8 mm^2/s"\n'
+                    'density15 = "920 kg/m^3"\nthermal_expansion = "7.6e-4 1/K"\n'
+                    'thermal_conductivity = "0.15 W/(m*K)"\n')
+    data = json.loads(ok("oil", "show", "mine", "--oil-file", str(path), "--json").stdout)
+    assert data["thermal_expansion_1_K"] == pytest.approx(7.6e-4, rel=1e-12)
+    assert data["property_laws"].startswith("ρ: ASTM D1250 volume correction, α15 = 7.6e-4 1/K "
+                                            "(given); k: constant 0.15 W/(m K); c_p: Cragoe")
+
+
 def test_oil_show_json_has_si_values():
     data = json.loads(ok("oil", "show", "iso vg 68", "--json", "-t", "40,100").stdout)
     assert set(data) >= OIL_KEYS | {"table", "notes", "pressure_viscosity_coefficient_1_Pa"}

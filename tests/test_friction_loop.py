@@ -39,3 +39,19 @@ def test_bad_arguments_are_refused():
         sealsim.friction_loop(ORING, "1 mm/s", "0 Hz", diameter="12 mm")
     with pytest.raises(InputError):
         sealsim.friction_loop(ORING, "1 mm/s", "1 Hz", diameter="12 mm", cycles=0)
+
+
+@pytest.mark.parametrize(("kwargs", "message"), [
+    # 2.5 cycles were run as 2 and '400' steps as 400, without a word
+    ({"cycles": 2.5}, r"cycles = 2.5 must be a whole number from 1 to 50"),
+    ({"steps_per_cycle": "400"}, r"steps_per_cycle = '400' must be a whole number"),
+    ({"cycles": 0}, r"cycles = 0 must be a whole number from 1 to 50"),
+    # 'velocity_amplitude and frequency must be > 0, pressure >= 0': which one, which value?
+    ({"velocity_amplitude": "-1 mm/s"}, r"velocity_amplitude: '-1 mm/s' must be > 0"),
+    ({"pressure": "-1 bar"}, r"pressure: '-1 bar' must be >= 0"),
+])
+def test_a_bad_argument_is_named_with_its_value(kwargs, message):
+    args = {"seal": ORING, "velocity_amplitude": "1 mm/s", "frequency": "1 Hz",
+            "diameter": "12 mm", **kwargs}
+    with pytest.raises(InputError, match=message):
+        sealsim.friction_loop(**args)

@@ -18,6 +18,7 @@ from sealsim.cases import validate_case
 from sealsim.cli import app
 from sealsim.errors import InputError, ModelError
 from sealsim.properties.elastomers import get_elastomer
+from sealsim.properties.oils import get_oil
 from sealsim.rotary.case import SETUPS, RotaryCase
 from sealsim.rotary.friction import LipSealFriction
 from sealsim.rotary.lip import (
@@ -703,6 +704,39 @@ def test_duty_cycle_from_csv_with_ramps_and_standstill(tmp_path):
 def test_bad_input_names_the_field(section, values, field):
     with pytest.raises(InputError, match=field.replace(".", r"\.")):
         _case(**{section: values})
+
+
+def test_an_oil_table_corrects_a_catalogue_oil_and_refuses_what_it_would_ignore():
+    catalogue = get_oil("VG46")
+    # the datasheet pour point of the oil in the gearbox corrects the catalogue's typical one
+    oil = _case(oil={"name": "VG46", "min_temperature": "-39 degC"}).oil.build()
+    assert oil.min_temperature == pytest.approx(234.15, abs=1e-9)
+    assert (oil.walther_A, oil.walther_B) == (catalogue.walther_A, catalogue.walther_B)
+    assert oil.source.endswith("min_temperature from the case")
+    # a family with a catalogue name was dropped without a word (the oil stayed mineral)
+    with pytest.raises(InputError, match=r"oil: family given: your own oil needs nu40"):
+        _case(oil={"name": "VG46", "family": "PAO"})
+    # an own oil without a name was called 'VG68-mineral', the default catalogue oil
+    own = {"nu40": "46 mm^2/s", "nu100": "6.8 mm^2/s", "density15": "872 kg/m^3"}
+    with pytest.raises(InputError, match=r"your own oil needs its name.*'VG68-mineral'"):
+        _case(oil=own)
+    # the ASTM D341 constants of an oil file serve as well as its two viscosities
+    walther = _case(oil={"name": "mine", "walther_A": catalogue.walther_A,
+                         "walther_B": catalogue.walther_B, "density15": "875 kg/m^3"})
+    assert walther.oil.build().nu40 == pytest.approx(46e-6, rel=1e-12)
+
+
+def test_free_convection_in_the_sump_takes_the_oils_expansion():
+    # The free-convection floor of the oil-side coefficients took a constant 7e-4 1/K
+    # (OIL_EXPANSION), whatever the oil's thermal_expansion, a second value for one property.
+    def h_end(oil):
+        case = _case(oil=oil, environment={"shaft_oil_convection": "open",
+                                           "sump_temperature": "80 degC"})
+        return RotaryModel(case).coefficients(0.0, 353.15)["shaft_end_oil"]  # at rest: free
+
+    default = h_end({"name": "VG68"})
+    assert default == h_end({"name": "VG68", "thermal_expansion": f"{0.34878 * 1.8 / 880} 1/K"})
+    assert h_end({"name": "VG68", "thermal_expansion": "1.4e-3 1/K"}) > default * 1.05
 
 
 def test_cli_run_writes_results_and_refuses_overwrite(tmp_path):

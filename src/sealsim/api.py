@@ -25,7 +25,7 @@ b from a contact map of :mod:`sealsim.pneumatic.contact_maps`.
 >>> r = sealsim.lip_seal_torque(shaft_diameter="60 mm", speed="1500 rpm", oil="ISO VG 220",
 ...                             sump_temperature="70 degC")
 >>> round(r["torque_Nm"], 3), round(r["power_W"], 1), round(r["T_contact_C"], 1)
-(0.219, 34.5, 84.6)
+(0.219, 34.4, 84.6)
 """
 
 from __future__ import annotations
@@ -34,11 +34,14 @@ import math
 import warnings
 from collections.abc import Mapping
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from sealsim.errors import InputError, ModelError, SealsimWarning
+
+if TYPE_CHECKING:
+    from sealsim.properties.oils import Oil
 
 __all__ = ["friction_loop", "lip_seal_torque", "oring_gland", "seal_friction"]
 
@@ -63,7 +66,7 @@ SEAL_FRICTION_COLUMNS = ["velocity_m_s", "pressure_bar", "temperature_C", "frict
 DEFAULT_LAW = {"law": "theta", "parameter_set": "seal_contact"}
 
 
-def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] = "VG68-mineral",
+def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] | Oil = "VG68-mineral",
                     sump_temperature=None, *, material: str = "NBR", lip_style: str = "plain",
                     ambient_temperature="20 degC", radial_force=None, contact_width=None,
                     mounting_temperature=None, case: Mapping[str, Any] | None = None):
@@ -87,10 +90,12 @@ def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] = "VG68-
     speed : str, pint quantity or array
         Shaft speed with its unit, e.g. ``"1500 rpm"``, ``"1500 1/min"`` (revolutions per
         minute, as on data sheets) or ``["500 rpm", "3000 rpm"]``; >= 0.
-    oil : str or mapping
+    oil : str, mapping or Oil
         Catalogue oil (``"ISO VG 220"``, ``"VG68-PAO"``; ``sealsim oil list``), or your oil's
         datasheet ``{"name": ..., "nu40": "220 mm^2/s", "nu100": "19 mm^2/s",
-        "density15": "895 kg/m^3"}``.
+        "density15": "895 kg/m^3", "min_temperature": "-30 degC"}`` (the fields of a case's
+        ``[oil]`` table, :class:`~sealsim.rotary.case.OilSpec`), or an
+        :class:`~sealsim.properties.oils.Oil` (e.g. ``Oil.from_datasheet``).
     sump_temperature : str, pint quantity or array, optional
         Oil sump held at this temperature, e.g. ``"70 degC"``, as in a
         gearbox whose gears heat the oil.  ``None``: the sump is heated by the seal alone and
@@ -152,7 +157,7 @@ def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] = "VG68-
     ...                 "70 degC")[["speed_rpm", "torque_Nm"]].round(3)
        speed_rpm  torque_Nm
     0      500.0      0.196
-    1     3000.0      0.233
+    1     3000.0      0.232
     >>> lip_seal_torque("60 mm", 1500, "ISO VG 220")
     Traceback (most recent call last):
     ...
@@ -178,7 +183,7 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
                                           "temperature", "K")):
         if value is not None:
             seal[name] = _si_text(_scalar(value, dimension, name), unit)
-    oil_table = {"name": oil} if isinstance(oil, str) else dict(oil)
+    oil_table = _oil_argument(oil)
     _refuse_argument_fields(case, LIP_SEAL_ARGUMENT_FIELDS)
     base = apply_overrides({"seal": seal, "oil": oil_table}, dict(case or {}))
 
@@ -220,6 +225,22 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
     return _rows_out(rows, shape, LIP_SEAL_COLUMNS, notes)
 
 
+def _oil_argument(oil) -> dict[str, Any]:
+    """The case's ``[oil]`` table of the ``oil`` argument of :func:`lip_seal_torque`."""
+    from sealsim.properties.catalogue import oil_table
+    from sealsim.properties.oils import Oil
+
+    if isinstance(oil, str):
+        return {"name": oil}
+    if isinstance(oil, Oil):
+        return {"name": oil.name, **oil_table(oil)}
+    if isinstance(oil, Mapping):
+        return dict(oil)
+    raise InputError(f"oil: {oil!r} is neither a catalogue name (str), a mapping of datasheet "
+                     "values (nu40, nu100, density15, ...) nor an Oil "
+                     "(sealsim.properties.Oil.from_datasheet)")
+
+
 #: Case fields that arguments of :func:`lip_seal_torque` set (table -> {field: argument});
 #: ``None``: the whole table.
 LIP_SEAL_ARGUMENT_FIELDS = {
@@ -233,8 +254,12 @@ LIP_SEAL_ARGUMENT_FIELDS = {
 
 def _refuse_argument_fields(case: Mapping[str, Any] | None,
                             owned: dict[str, dict[str, str] | None]) -> None:
-    """An InputError if ``case`` sets a field that an argument sets (one of the two would be
-    ignored without a word)."""
+    """An InputError if ``case`` is not a mapping of case tables, or sets a field that an
+    argument sets (one of the two would be ignored without a word)."""
+    if case is not None and not isinstance(case, Mapping):
+        raise InputError(f"case: {case!r} must be a mapping of case tables with units, e.g. "
+                         "{'environment': {'sump_volume': '0.2 L'}} (a case file runs with "
+                         "'sealsim rotary run')")
     for table, fields in owned.items():
         given = (case or {}).get(table)
         if given is None:
@@ -460,8 +485,6 @@ def _operating_points(function: str, arguments: dict[str, tuple[Any, str]]
     (a plain number is refused); arguments that do not broadcast against each other and more
     than :data:`MAX_POINTS` points are refused before any value is converted.
     """
-    from sealsim.units import to_si
-
     shapes = {name: _shape(value) for name, (value, _) in arguments.items()}
     try:
         shape = np.broadcast_shapes(*shapes.values())
@@ -474,9 +497,22 @@ def _operating_points(function: str, arguments: dict[str, tuple[Any, str]]
         raise InputError(f"{function}: {size} operating points are more than the "
                          f"{MAX_POINTS[function]} one call evaluates; split them into several "
                          "calls")
-    return shape, {name: np.broadcast_to(np.asarray(
-        to_si(value, dimension, name, plain_is_si=False), dtype=float), shape).ravel()
-        for name, (value, dimension) in arguments.items()}
+    return shape, {name: np.broadcast_to(np.asarray(_to_si(value, dimension, name),
+                                                   dtype=float), shape).ravel()
+                   for name, (value, dimension) in arguments.items()}
+
+
+def _to_si(value, dimension: str, name: str):
+    """``to_si`` of an argument (its unit required); a temperature at or below absolute zero
+    ('-300 degC') is refused, not passed on as a negative kelvin value."""
+    from sealsim.units import ZERO_CELSIUS_K, to_si
+
+    si = to_si(value, dimension, name, plain_is_si=False)
+    if dimension == "temperature" and np.any(np.asarray(si) <= 0.0):
+        coldest = float(np.min(si))
+        raise InputError(f"{name}: {coldest - ZERO_CELSIUS_K:.6g} degC ({coldest:.6g} K) is at "
+                         "or below absolute zero (-273.15 degC)")
+    return si
 
 
 def _shape(value) -> tuple:
@@ -489,9 +525,7 @@ def _shape(value) -> tuple:
 
 def _scalar(value, dimension: str, name: str) -> float:
     """One SI value of an argument that takes no array."""
-    from sealsim.units import to_si
-
-    si = to_si(value, dimension, name, plain_is_si=False)
+    si = _to_si(value, dimension, name)
     if np.ndim(si) != 0:
         raise InputError(f"{name}: one value is expected, got an array of shape {np.shape(si)}")
     return float(si)
@@ -792,21 +826,27 @@ def friction_loop(seal, velocity_amplitude, frequency, pressure="0 bar",
     import pandas as pd
 
     from sealsim.friction.base import ContactInputs
-    from sealsim.units import to_si
 
-    v_a = to_si(velocity_amplitude, "velocity", "velocity_amplitude", plain_is_si=False)
-    v_m = to_si(mean_velocity, "velocity", "mean_velocity", plain_is_si=False)
-    f = to_si(frequency, "frequency", "frequency", plain_is_si=False)
-    dp = to_si(pressure, "pressure", "pressure", plain_is_si=False)
-    temp = to_si(temperature, "temperature", "temperature", plain_is_si=False)
+    v_a = _to_si(velocity_amplitude, "velocity", "velocity_amplitude")
+    v_m = _to_si(mean_velocity, "velocity", "mean_velocity")
+    f = _to_si(frequency, "frequency", "frequency")
+    dp = _to_si(pressure, "pressure", "pressure")
+    temp = _to_si(temperature, "temperature", "temperature")
     for name, value in (("velocity_amplitude", v_a), ("mean_velocity", v_m),
                         ("frequency", f), ("pressure", dp), ("temperature", temp)):
         if np.ndim(value) != 0 or not math.isfinite(float(value)):
             raise InputError(f"{name}: {value!r} must be one finite value")
-    if not (v_a > 0 and f > 0 and dp >= 0):
-        raise InputError("velocity_amplitude and frequency must be > 0, pressure >= 0")
-    if not (1 <= int(cycles) <= 50 and 20 <= int(steps_per_cycle) <= 20000):
-        raise InputError("cycles: 1 ... 50, steps_per_cycle: 20 ... 20000")
+    for name, value, ok, allowed in (
+            ("velocity_amplitude", velocity_amplitude, v_a > 0, "> 0"),
+            ("frequency", frequency, f > 0, "> 0"), ("pressure", pressure, dp >= 0, ">= 0")):
+        if not ok:
+            raise InputError(f"{name}: {value!r} must be {allowed}")
+    for name, value, low, high in (("cycles", cycles, 1, 50),
+                                   ("steps_per_cycle", steps_per_cycle, 20, 20000)):
+        # a count: 2.5 cycles were run as 2, the string '400' was read as 400
+        if isinstance(value, bool) or not isinstance(value, int | np.integer) \
+                or not low <= value <= high:
+            raise InputError(f"{name} = {value!r} must be a whole number from {low} to {high}")
     contact_map = _contact_map(seal, diameter, progress)
     _check_ranges(contact_map, np.array([dp]), np.array([temp]))
     friction_law, notes = _friction_law(DEFAULT_LAW if law is None else law)

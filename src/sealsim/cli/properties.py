@@ -8,7 +8,8 @@ JSON output (``--json``) uses one key per value with the unit in the key name:
 
 * oils: ``name``, ``family``, ``origin``, ``nu40_mm2_s``, ``nu100_mm2_s``,
   ``viscosity_index``, ``rho15_kg_m3``, ``min_temperature_C``, ``source``; ``oil show`` adds
-  ``pressure_viscosity_coefficient_1_Pa``, ``walther_A``, ``walther_B``, ``notes`` and
+  ``pressure_viscosity_coefficient_1_Pa``, ``walther_A``, ``walther_B``,
+  ``thermal_expansion_1_K``, ``property_laws``, ``notes`` and
   ``table`` rows with ``temperature_C``, ``nu_mm2_s``, ``eta_Pa_s``, ``rho_kg_m3``,
   ``k_W_mK``, ``cp_J_kgK``.
 * elastomers: ``name``, ``description``, ``origin``, ``glass_transition_C``,
@@ -53,6 +54,7 @@ from sealsim.properties.tables import (
     material_rows,
     material_summary,
     modulus_curves,
+    oil_property_laws,
     oil_rows,
     oil_summary,
     unique_by_name,
@@ -216,7 +218,8 @@ def oil_show(
     viscosity below 2 mm²/s (outside ASTM D341) is shown with a note.
 
     --json prints one object: the keys of 'oil list' plus
-    pressure_viscosity_coefficient_1_Pa, walther_A, walther_B, notes and
+    pressure_viscosity_coefficient_1_Pa, walther_A, walther_B,
+    thermal_expansion_1_K, property_laws (which law gives ρ, k, c_p), notes and
     table, a list of rows with temperature_C, nu_mm2_s, eta_Pa_s,
     rho_kg_m3, k_W_mK, cp_J_kgK.
     """
@@ -227,7 +230,9 @@ def oil_show(
     origin = str(oil_file) if oil.name in extra else "catalogue"
     info = {**oil_summary(oil, origin),
             "pressure_viscosity_coefficient_1_Pa": oil.pressure_viscosity_coefficient,
-            "walther_A": oil.walther_A, "walther_B": oil.walther_B}
+            "walther_A": oil.walther_A, "walther_B": oil.walther_B,
+            "thermal_expansion_1_K": oil.thermal_expansion,
+            "property_laws": oil_property_laws(oil)}
     if json:
         _notes(notes)
         print_json({**info, "notes": notes, "table": rows})
@@ -237,6 +242,7 @@ def oil_show(
          f"VI = {info['viscosity_index']:.0f}, ρ15 = {oil.rho15:.0f} kg/m³, "
          f"min. temperature {info['min_temperature_C']:.0f} °C, "
          f"α = {oil.pressure_viscosity_coefficient * 1e9:.0f} 1/GPa")
+    _say(f"  {oil_property_laws(oil)}")
     _say(f"  source: {oil.source}")
     console.print(_table(
         None, ["T\n[°C]", "ν\n[mm²/s]", "η\n[mPa·s]", "ρ\n[kg/m³]", "k\n[W/(m K)]",

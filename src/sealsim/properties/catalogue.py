@@ -54,6 +54,13 @@ from pydantic import ConfigDict, Field, PrivateAttr, model_validator
 
 from sealsim.cases import CaseModel, Q, parse_toml, validation_problems
 from sealsim.errors import InputError
+from sealsim.properties.oil_limits import (
+    EXPANSION_MAX,
+    PRESSURE_VISCOSITY_MAX,
+    RHO15_RANGE,
+    SPECIFIC_HEAT_RANGE,
+    THERMAL_CONDUCTIVITY_RANGE,
+)
 
 __all__ = [
     "ELASTOMER_FIELD_KEYS",
@@ -68,6 +75,7 @@ __all__ = [
     "PronyTable",
     "WLFTable",
     "elastomer_key",
+    "oil_table",
     "read_elastomer_table",
     "read_elastomer_tables",
     "read_oil_tables",
@@ -75,6 +83,11 @@ __all__ = [
 
 
 # -- oils -------------------------------------------------------------------------------------
+#: density15 of an oil table: the range that :class:`~sealsim.properties.oils.Oil` allows, so
+#: that a value outside it is named as written in the file (not as Oil's ``rho15``)
+DENSITY15 = Q("density", ge=RHO15_RANGE[0], le=RHO15_RANGE[1])
+
+
 class OilEntry(CaseModel):
     """One oil of an oil file (``[oils."NAME"]``): datasheet values with units.
 
@@ -88,18 +101,22 @@ class OilEntry(CaseModel):
     nu40: Q("kinematic_viscosity", gt=0) | None = None
     nu100: Q("kinematic_viscosity", gt=0) | None = None
     walther_A: float | None = None
-    walther_B: float | None = None
-    density15: Q("density", gt=0)
+    walther_B: float | None = Field(None, gt=0)
+    density15: DENSITY15
     min_temperature: Q("temperature", gt=0) | None = Field(
         None, description="lowest temperature of use (pour point); default per family/grade")
-    pressure_viscosity_coefficient: Q("inverse_pressure", ge=0) | None = Field(
+    pressure_viscosity_coefficient: Q("inverse_pressure", ge=0,
+                                      le=PRESSURE_VISCOSITY_MAX) | None = Field(
         None, description="Barus alpha, e.g. '20 1/GPa'; default per family")
-    thermal_conductivity: Q("thermal_conductivity", gt=0) | None = Field(
+    thermal_conductivity: Q("thermal_conductivity", ge=THERMAL_CONDUCTIVITY_RANGE[0],
+                            le=THERMAL_CONDUCTIVITY_RANGE[1]) | None = Field(
         None, description="constant k; default Cragoe (PAO, PAG: constants)")
-    specific_heat: Q("specific_heat", gt=0) | None = Field(
+    specific_heat: Q("specific_heat", ge=SPECIFIC_HEAT_RANGE[0],
+                     le=SPECIFIC_HEAT_RANGE[1]) | None = Field(
         None, description="constant c_p; default Cragoe (PAO, PAG: constants)")
-    thermal_expansion: Q("thermal_expansion", ge=0) | None = Field(
-        None, description="volumetric expansion coefficient of the density; default 6.4e-4 1/K")
+    thermal_expansion: Q("thermal_expansion", ge=0, le=EXPANSION_MAX) | None = Field(
+        None, description=("thermal expansion coefficient at 15 degC of the density; default "
+                           "ASTM D1250 for lubricating oils, 0.6278 kg/(m^3 K) / density15"))
     source: str | None = None
 
     @model_validator(mode="after")
@@ -124,6 +141,30 @@ class OilEntry(CaseModel):
         kwargs["family"] = self.family
         kwargs["source"] = self.source if self.source is not None else f"oil file {origin}"
         return kwargs
+
+
+def oil_table(oil) -> dict[str, Any]:
+    """An :class:`~sealsim.properties.oils.Oil` as the table of an oil file or of a case's
+    ``[oil]`` (without its name): ASTM D341 constants and every property with its unit, exact
+    (``repr`` of the SI values), so that reading the table gives the same oil.
+
+    Examples
+    --------
+    >>> from sealsim.properties.oils import get_oil
+    >>> table = oil_table(get_oil("VG68"))
+    >>> table["density15"], table["min_temperature"]
+    ('880.0 kg/m^3', '249.15 K')
+    """
+    optional = {"thermal_conductivity": (oil.thermal_conductivity_value, "W/(m*K)"),
+                "specific_heat": (oil.specific_heat_value, "J/(kg*K)")}
+    return {"family": oil.family, "walther_A": oil.walther_A, "walther_B": oil.walther_B,
+            "density15": f"{oil.rho15!r} kg/m^3",
+            "min_temperature": f"{oil.min_temperature!r} K",
+            "pressure_viscosity_coefficient": f"{oil.pressure_viscosity_coefficient!r} 1/Pa",
+            "thermal_expansion": f"{oil.thermal_expansion!r} 1/K",
+            **{key: f"{value!r} {unit}" for key, (value, unit) in optional.items()
+               if value is not None},
+            "source": oil.source}
 
 
 class CatalogueOilEntry(OilEntry):

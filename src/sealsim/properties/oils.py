@@ -7,7 +7,8 @@ Two layers, as everywhere in sealsim:
   viscosity in Pa s, density in kg/m^3, pressure in Pa, thermal conductivity in W/(m K) and
   specific heat in J/(kg K):
   :func:`walther_viscosity`, :func:`walther_constants` (ASTM D341),
-  :func:`viscosity_index` (ASTM D2270), :func:`density`, :func:`thermal_conductivity_cragoe`,
+  :func:`viscosity_index` (ASTM D2270), :func:`density` and :func:`expansion_d1250` (ASTM
+  D1250), :func:`thermal_conductivity_cragoe`,
   :func:`specific_heat_cragoe` (Cragoe, NBS 1929) and :func:`barus_viscosity`.
 * **The** :class:`Oil` **record** (frozen dataclass) and a small catalogue of typical gear and
   circulating oils (``data/oils.toml``): :func:`list_oils`, :func:`get_oil`,
@@ -60,6 +61,13 @@ from typing import Any
 import numpy as np
 
 from sealsim.errors import InputError
+from sealsim.properties.oil_limits import (
+    EXPANSION_MAX,
+    PRESSURE_VISCOSITY_MAX,
+    RHO15_RANGE,
+    SPECIFIC_HEAT_RANGE,
+    THERMAL_CONDUCTIVITY_RANGE,
+)
 from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = [
@@ -68,6 +76,7 @@ __all__ = [
     "OilRangeWarning",
     "barus_viscosity",
     "density",
+    "expansion_d1250",
     "get_oil",
     "list_oils",
     "load_oil_file",
@@ -90,10 +99,11 @@ _NU_MAX = 1.0
 #: Plausible temperature range of all oil functions [K] (-123 to 427 degC): wider than any use
 #: of a lubricating oil; its purpose is to catch degC given where K is expected.
 T_RANGE = (150.0, 700.0)
-#: Allowed range of rho15 [kg/m^3].
-RHO15_RANGE = (600.0, 1300.0)
 #: Density of water at 15 degC used for the specific gravity s15 = rho15 / 999.0 [kg/m^3].
 RHO_WATER_15 = 999.0
+#: K1 of the lubricating-oil group of ASTM D1250 / API MPMS 11.1 at 15 degC [kg/(m^3 K)]
+#: (0.34878 kg/m^3 per degF at 60 degF, times 1.8): alpha_15 = K1 / rho15.
+D1250_K1_LUBRICATING = 0.34878 * 1.8
 
 #: Oil families.
 FAMILIES = ("mineral", "PAO", "PAG", "ester", "other")
@@ -445,12 +455,49 @@ def viscosity_index(nu40, nu100):
 # ----------------------------------------------------------------------------------------------
 
 
-def density(temperature, rho15, expansion=6.4e-4):
-    r"""Density of a lubricating oil, linear in temperature from 15 degC.
+def expansion_d1250(rho15):
+    r"""Thermal expansion coefficient at 15 degC of a petroleum lubricating oil (ASTM D1250).
+
+    .. math:: \alpha_{15} = K_1 / \rho_{15}, \qquad K_1 = 0.6278\ \mathrm{kg/(m^3\,K)}
+
+    the lubricating-oil group of the petroleum measurement tables (API MPMS 11.1 / ASTM
+    D1250: :math:`K_0 = 0`, :math:`K_1 = 0.34878` kg/m^3 per degF at 60 degF, i.e. 0.6278 per
+    K, as in Table 54D at 15 degC).  The tables hold for 800-1164 kg/m^3; synthetic oils (PAO,
+    PAG, esters) expand differently: give their datasheet value.
+
+    Parameters
+    ----------
+    rho15 : array_like
+        Density at 15 degC [kg/m^3], 600-1300.
+
+    Returns
+    -------
+    numpy.ndarray or float
+        Thermal expansion coefficient at 15 degC [1/K].
+
+    References
+    ----------
+    API MPMS Chapter 11.1 / ASTM D1250-04 (IP 200/04), Temperature and Pressure Volume
+    Correction Factors for Generalized Crude Oils, Refined Products, and Lubricating Oils.
+
+    Examples
+    --------
+    >>> round(expansion_d1250(880.0) * 1e4, 2)
+    7.13
+    """
+    return _out(D1250_K1_LUBRICATING / _rho15(rho15))
+
+
+def density(temperature, rho15, expansion=None):
+    r"""Density of a lubricating oil over temperature (ASTM D1250 volume correction).
 
     .. math::
 
-        \rho(T) = \rho_{15}\,[1 - \beta\,(T - 288.15\ \mathrm{K})]
+        \rho(T) = \rho_{15}\,\exp[-\alpha_{15}\,\Delta T\,(1 + 0.8\,\alpha_{15}\,\Delta T)],
+        \qquad \Delta T = T - 288.15\ \mathrm{K}
+
+    the volume correction factor of the petroleum measurement tables, with the expansion
+    coefficient :math:`\alpha_{15}` of :func:`expansion_d1250` unless one is given.
 
     Parameters
     ----------
@@ -459,8 +506,8 @@ def density(temperature, rho15, expansion=6.4e-4):
     rho15 : array_like
         Density at 15 degC [kg/m^3], 600-1300.
     expansion : array_like, optional
-        Volumetric thermal expansion coefficient beta [1/K], 0-2e-3.  Default 6.4e-4
-        (mineral oils: 6-7e-4).
+        Thermal expansion coefficient at 15 degC, alpha_15 [1/K], 0-2e-3.  Default
+        :func:`expansion_d1250` (880 kg/m^3: 7.13e-4 1/K).
 
     Returns
     -------
@@ -469,18 +516,20 @@ def density(temperature, rho15, expansion=6.4e-4):
 
     References
     ----------
-    The expansion coefficient is the usual value for petroleum oils (e.g. ASTM D1250 / API
-    MPMS 11.1 tables, linearised).
+    API MPMS Chapter 11.1 / ASTM D1250-04 (IP 200/04), Temperature and Pressure Volume
+    Correction Factors for Generalized Crude Oils, Refined Products, and Lubricating Oils.
 
     Examples
     --------
     >>> round(density(353.15, 880.0), 1)
-    843.4
+    838.7
     """
     t = _temperature(temperature)
     r = _rho15(rho15)
-    beta = _array(expansion, "expansion", "1/K", lo=0.0, hi=2e-3)
-    return _out(r * (1.0 - beta * (t - (T0 + 15.0))))
+    alpha = (D1250_K1_LUBRICATING / r if expansion is None else
+             _array(expansion, "expansion", "1/K", lo=0.0, hi=EXPANSION_MAX))
+    dt = t - (T0 + 15.0)
+    return _out(r * np.exp(-alpha * dt * (1.0 + 0.8 * alpha * dt)))
 
 
 def thermal_conductivity_cragoe(temperature, rho15):
@@ -592,7 +641,7 @@ def barus_viscosity(eta0, alpha, pressure):
     0.01317
     """
     e0 = _array(eta0, "eta0", "Pa s", lo=0.0, lo_open=True)
-    a = _array(alpha, "alpha", "1/Pa", lo=0.0, hi=1e-7,
+    a = _array(alpha, "alpha", "1/Pa", lo=0.0, hi=PRESSURE_VISCOSITY_MAX,
                hint=" (alpha is in 1/Pa: 20 GPa^-1 = 20e-9 1/Pa)")
     p = _array(pressure, "pressure", "Pa", lo=-5e9, hi=5e9)
     return _out(e0 * np.exp(a * p))
@@ -653,7 +702,9 @@ class Oil:
         Constant specific heat [J/(kg K)].  ``None``: Cragoe correlation, except PAO (2200)
         and PAG (2000).
     thermal_expansion : float, optional
-        Volumetric expansion coefficient [1/K] of :func:`density`, default 6.4e-4.
+        Thermal expansion coefficient at 15 degC [1/K] of :func:`density`; default
+        :func:`expansion_d1250` of ``rho15`` (ASTM D1250 lubricating oils: 880 kg/m^3 gives
+        7.13e-4).
     source : str, optional
         Where the numbers come from.
 
@@ -682,7 +733,7 @@ class Oil:
     min_temperature: float | None = None
     thermal_conductivity_value: float | None = None
     specific_heat_value: float | None = None
-    thermal_expansion: float = 6.4e-4
+    thermal_expansion: float | None = None
     source: str = ""
 
     def __post_init__(self) -> None:
@@ -704,8 +755,10 @@ class Oil:
         object.__setattr__(self, "rho15", num("rho15", "kg/m^3", lo=RHO15_RANGE[0],
                                               hi=RHO15_RANGE[1],
                                               hint=" (0.88 g/ml = 880 kg/m^3)"))
+        if self.thermal_expansion is None:
+            object.__setattr__(self, "thermal_expansion", expansion_d1250(self.rho15))
         object.__setattr__(self, "thermal_expansion",
-                           num("thermal_expansion", "1/K", lo=0.0, hi=2e-3))
+                           num("thermal_expansion", "1/K", lo=0.0, hi=EXPANSION_MAX))
         nu100 = self.nu100
         if not nu100 >= NU_MIN_D341 * (1 - 1e-6):
             raise InputError(
@@ -716,7 +769,8 @@ class Oil:
             object.__setattr__(self, "pressure_viscosity_coefficient",
                                DEFAULT_PRESSURE_VISCOSITY[self.family])
         object.__setattr__(self, "pressure_viscosity_coefficient",
-                           num("pressure_viscosity_coefficient", "1/Pa", lo=0.0, hi=1e-7,
+                           num("pressure_viscosity_coefficient", "1/Pa", lo=0.0,
+                               hi=PRESSURE_VISCOSITY_MAX,
                                hint=" (20 GPa^-1 = 20e-9 1/Pa)"))
         if self.min_temperature is None:
             object.__setattr__(self, "min_temperature",
@@ -731,10 +785,13 @@ class Oil:
             object.__setattr__(self, "specific_heat_value", cp_default)
         if self.thermal_conductivity_value is not None:
             object.__setattr__(self, "thermal_conductivity_value",
-                               num("thermal_conductivity_value", "W/(m K)", lo=0.05, hi=0.5))
+                               num("thermal_conductivity_value", "W/(m K)",
+                                   lo=THERMAL_CONDUCTIVITY_RANGE[0],
+                                   hi=THERMAL_CONDUCTIVITY_RANGE[1]))
         if self.specific_heat_value is not None:
             object.__setattr__(self, "specific_heat_value",
-                               num("specific_heat_value", "J/(kg K)", lo=1000.0, hi=4000.0,
+                               num("specific_heat_value", "J/(kg K)", lo=SPECIFIC_HEAT_RANGE[0],
+                                   hi=SPECIFIC_HEAT_RANGE[1],
                                    hint=" (in J/(kg K): 2.1 kJ/(kg K) = 2100 J/(kg K))"))
         if not isinstance(self.source, str):
             raise InputError(f"{where}source = {self.source!r} must be a string")
@@ -748,7 +805,7 @@ class Oil:
                        min_temperature: float | None = None,
                        thermal_conductivity_value: float | None = None,
                        specific_heat_value: float | None = None,
-                       thermal_expansion: float = 6.4e-4,
+                       thermal_expansion: float | None = None,
                        source: str = "user datasheet") -> Oil:
         """Oil from datasheet viscosities at 40 and 100 degC.
 
@@ -788,8 +845,9 @@ specific_heat_value, thermal_expansion, source
                              "2 mm^2/s, the lower limit of ASTM D341/D2270; allowed: "
                              "nu100 >= 2e-6 m^2/s")
         if not n40 > n100:
-            raise InputError(f"{where}nu40 = {n40:g} m^2/s must be greater than nu100 = "
-                             f"{n100:g} m^2/s")
+            raise InputError(f"{where}nu40 = {n40 * 1e6:g} mm^2/s must be greater than nu100 = "
+                             f"{n100 * 1e6:g} mm^2/s (an oil is thinner at 100 degC than at "
+                             "40 degC: are the two swapped?)")
         A, B = walther_constants(T40, n40, T100, n100)
         return cls(name=name, family=family, walther_A=A, walther_B=B, rho15=rho15,
                    pressure_viscosity_coefficient=pressure_viscosity_coefficient,
@@ -805,7 +863,7 @@ specific_heat_value, thermal_expansion, source
                      min_temperature: float | None = None,
                      thermal_conductivity_value: float | None = None,
                      specific_heat_value: float | None = None,
-                     thermal_expansion: float = 6.4e-4,
+                     thermal_expansion: float | None = None,
                      source: str = "user ASTM D341 constants") -> Oil:
         """Oil from ASTM D341 constants A and B (nu in mm^2/s, T in K).
 
@@ -888,7 +946,7 @@ specific_heat_value, thermal_expansion, source
         --------
         >>> oil = Oil.from_datasheet("VG 68", 68e-6, 8.7e-6, 880.0)
         >>> round(oil.dynamic_viscosity(353.15) * 1e3, 1)
-        12.4
+        12.3
         """
         eta0 = self.density(temperature) * self.kinematic_viscosity(temperature)
         if np.ndim(pressure) == 0 and pressure == 0:
@@ -1137,6 +1195,6 @@ def get_oil(name: str | Oil, extra: Mapping[str, Oil] | None = None) -> Oil:
     hint = (f"; close matches: {', '.join(repr(shown[c]) for c in close)}" if close
             else "")
     raise InputError(f"unknown oil {name!r}{hint}; 'sealsim oil list' shows the catalogue; "
-                     "give your own oil with nu40, nu100 and density15 in the case file, or "
-                     "with --oil-file")
+                     "give your own oil by its datasheet values nu40, nu100 and density15 in "
+                     "the case's [oil] table (or an oil file for 'sealsim oil ... --oil-file')")
 

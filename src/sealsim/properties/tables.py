@@ -40,6 +40,7 @@ __all__ = [
     "material_rows",
     "material_summary",
     "modulus_curves",
+    "oil_property_laws",
     "oil_rows",
     "oil_summary",
     "unique_by_name",
@@ -106,6 +107,32 @@ def oil_summary(oil: Oil, origin: str = "catalogue") -> dict[str, Any]:
         "min_temperature_C": celsius(oil.min_temperature),
         "source": oil.source,
     }
+
+
+def oil_property_laws(oil: Oil) -> str:
+    """Which law and which values give an oil's density, conductivity and heat capacity.
+
+    Examples
+    --------
+    >>> from sealsim.properties import get_oil
+    >>> print(oil_property_laws(get_oil("VG68-PAO")))
+    ρ: ASTM D1250 volume correction, α15 = 7.43e-4 1/K (the tables' value for petroleum \
+oils); k: constant 0.145 W/(m K) (PAO default); c_p: constant 2200 J/(kg K) (PAO default)
+    """
+    def constant(value, unit, default):
+        if value is None:
+            return "Cragoe (NBS 1929, petroleum oils)"
+        return f"constant {value:g} {unit}" + (f" ({oil.family} default)"
+                                               if value == default else "")
+
+    k_default, cp_default = oils_module.DEFAULT_THERMAL.get(oil.family, (None, None))
+    given = not math.isclose(oil.thermal_expansion, oils_module.expansion_d1250(oil.rho15))
+    note = (" (given)" if given else "" if oil.family == "mineral"
+            else " (the tables' value for petroleum oils)")
+    return (f"ρ: ASTM D1250 volume correction, α15 = {oil.thermal_expansion * 1e4:.3g}e-4 1/K"
+            + note
+            + f"; k: {constant(oil.thermal_conductivity_value, 'W/(m K)', k_default)}"
+            + f"; c_p: {constant(oil.specific_heat_value, 'J/(kg K)', cp_default)}")
 
 
 def oil_rows(oil: Oil, temperatures_c: list[float], field: str = "temperatures"

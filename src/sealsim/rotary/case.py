@@ -26,7 +26,7 @@ results lists them all.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, fields, replace
 from pathlib import Path
 from typing import Literal
 
@@ -35,6 +35,7 @@ from pydantic import Field, field_validator, model_validator
 
 from sealsim.cases import CaseModel, Q
 from sealsim.errors import InputError
+from sealsim.properties.catalogue import DENSITY15, OilEntry
 from sealsim.properties.elastomers import get_elastomer, is_compound_file
 from sealsim.properties.oils import FAMILIES, Oil, get_oil
 from sealsim.rotary.lip import (
@@ -134,34 +135,68 @@ class Seal(CaseModel):
         return self
 
 
-class OilSpec(CaseModel):
-    """The lubricant: a catalogue name, or your own oil from datasheet values."""
+class OilSpec(OilEntry):
+    """The lubricant: a catalogue name, or your own oil from its datasheet.
+
+    Your own oil gives ``nu40`` and ``nu100`` (or ASTM D341 ``walther_A`` and ``walther_B``)
+    and ``density15``, and may give every other field of an oil file (as for ``sealsim oil
+    list --oil-file``): ``family`` (default mineral),
+    ``min_temperature`` (the datasheet pour point), ``pressure_viscosity_coefficient``,
+    ``thermal_conductivity``, ``specific_heat``, ``thermal_expansion``, ``source``.  A
+    catalogue oil takes those optional values too, as corrections from your datasheet (e.g.
+    ``name = "VG68"`` with ``min_temperature = "-36 degC"``); its viscosities and family are
+    the catalogue's.
+    """
 
     name: str = "VG68-mineral"
-    nu40: Q("kinematic_viscosity", gt=0) | None = None
-    nu100: Q("kinematic_viscosity", gt=0) | None = None
-    density15: Q("density", gt=0) | None = None
     family: Literal[FAMILIES] | None = None  # type: ignore[valid-type]
+    density15: DENSITY15 | None = None
 
     @model_validator(mode="after")
-    def _resolve(self):
-        own = [self.nu40, self.nu100, self.density15]
-        if any(v is not None for v in own):
-            if any(v is None for v in own):
-                raise ValueError("an own oil needs nu40, nu100 and density15 "
-                                 "(or give only a catalogue name)")
-            self.build()  # validates the datasheet values
-        else:
-            get_oil(self.name)  # unknown names list close matches
+    def _one_viscosity_source(self):  # replaces OilEntry's: a catalogue name needs none
+        own = [k for k in OWN_OIL_FIELDS if getattr(self, k) is not None]
+        nu = [self.nu40 is not None, self.nu100 is not None]
+        ab = [self.walther_A is not None, self.walther_B is not None]
+        if own and not (self.density15 is not None and (all(nu) and not any(ab)
+                                                         or all(ab) and not any(nu))):
+            raise ValueError(
+                f"{', '.join(own)} given: your own oil needs nu40 and nu100 (or walther_A and "
+                "walther_B, not both) and density15; a catalogue oil is given by its name "
+                "alone (its optional values, such as min_temperature, may be corrected)")
+        if own and "name" not in self.model_fields_set:  # not the default catalogue name
+            raise ValueError(f"{', '.join(own)} given: your own oil needs its name, e.g. "
+                             "name = \"my gear oil\" (without one it was called "
+                             f"{type(self).model_fields['name'].default!r}, a catalogue oil)")
+        self.build()  # validates the values (an unknown name lists close matches)
         return self
 
     def build(self) -> Oil:
         """The :class:`~sealsim.properties.oils.Oil` this spec describes."""
-        if self.nu40 is None:
-            return get_oil(self.name)
-        return Oil.from_datasheet(self.name, self.nu40, self.nu100, self.density15,
-                                  family=self.family or "mineral",
-                                  source="user datasheet values (case file)")
+        kwargs = self.oil_arguments()
+        kwargs.pop("family")
+        if self.density15 is None:  # a catalogue oil, perhaps with datasheet corrections
+            oil = get_oil(self.name)
+            kwargs.pop("source")
+            if not kwargs:
+                return oil
+            given = [k for k in CORRECTABLE_OIL_FIELDS if getattr(self, k) is not None]
+            return replace(oil, **kwargs, source=f"{oil.source.rstrip('.')}; {', '.join(given)} "
+                           f"from {self.source or 'the case'}")
+        kwargs["family"] = self.family or "mineral"
+        if self.source is None:
+            kwargs["source"] = "user datasheet values (case file)"
+        if self.nu40 is not None:
+            return Oil.from_datasheet(self.name, self.nu40, self.nu100, self.density15,
+                                      **kwargs)
+        return Oil.from_walther(self.name, self.walther_A, self.walther_B, self.density15,
+                                **kwargs)
+
+
+#: Fields of an [oil] table that only your own oil gives (a catalogue oil has them).
+OWN_OIL_FIELDS = ("family", "nu40", "nu100", "walther_A", "walther_B", "density15")
+#: Fields of an [oil] table that correct a catalogue oil (from your oil's datasheet).
+CORRECTABLE_OIL_FIELDS = ("min_temperature", "pressure_viscosity_coefficient",
+                          "thermal_conductivity", "specific_heat", "thermal_expansion")
 
 
 @dataclass(frozen=True)
@@ -604,7 +639,10 @@ class RotaryCase(CaseModel):
                             ("environment.housing_temperature", env.housing_temperature)):
             if value is not None and oil.min_temperature is not None and \
                     value < oil.min_temperature:
+                hint = ("" if self.oil.min_temperature is not None else
+                        "; if your oil's datasheet gives a lower pour point, set it as "
+                        "oil.min_temperature")
                 raise ValueError(f"{name} {value - ZERO_CELSIUS_K:.1f} degC is below the lowest "
                                  f"usable temperature of {oil.name} "
-                                 f"({oil.min_temperature - ZERO_CELSIUS_K:.1f} degC)")
+                                 f"({oil.min_temperature - ZERO_CELSIUS_K:.1f} degC){hint}")
         return self

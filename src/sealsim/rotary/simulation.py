@@ -72,8 +72,6 @@ __all__ = ["RotaryModel", "RotaryResult", "friction_map", "housing_defaults", "l
            "lip_style", "load_rotary_case", "operating_notes", "simulate", "steady_state"]
 
 STEEL_DENSITY, STEEL_SPECIFIC_HEAT = 7850.0, 460.0
-#: Oil volumetric expansion coefficient for free convection [1/K] (mineral oil ≈ 7e-4).
-OIL_EXPANSION = 7e-4
 #: Temperature difference assumed for the free-convection floor of the coefficients [K].
 FREE_CONVECTION_DELTA_T = 10.0
 #: Housing wall thickness for the default housing mass [m].
@@ -327,7 +325,7 @@ class RotaryModel:
         rho_c = float(self.oil.density(ts) * self.oil.specific_heat(ts))
         alpha_o = k_o / rho_c
         free = float(free_convection_horizontal_cylinder(d, FREE_CONVECTION_DELTA_T, nu_o,
-                                                         alpha_o, k_o, OIL_EXPANSION))
+                                                         alpha_o, k_o, self.oil.thermal_expansion))
         h_open = max(float(rotating_cylinder_coefficient(omega, d, nu_o, k_o, nu_o / alpha_o)),
                      free)
         if env.shaft_oil_convection == "annulus":
