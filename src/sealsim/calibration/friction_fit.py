@@ -41,7 +41,12 @@ from sealsim.calibration.case import (
     parse_law_value,
 )
 from sealsim.calibration.kept import KeptEvaluations
-from sealsim.calibration.statistics import compare_signals, on_constraint, parameter_statistics
+from sealsim.calibration.statistics import (
+    compare_signals,
+    drop_constrained,
+    on_constraint,
+    parameter_statistics,
+)
 from sealsim.errors import InputError
 from sealsim.friction import make_law
 from sealsim.friction.base import ContactInputs, FrictionLaw, validate_parameters
@@ -561,6 +566,7 @@ def fit_friction(case: FrictionFitCase, runs: list[PreparedRun], progress=None,
             reasons[i] = stats["reasons"][a]
             for b, j in enumerate(idx):
                 corr[i, j] = stats["correlation"][a, b]
+    drop_constrained(limits, se, identifiable, reasons)
     for i, name in enumerate(names):
         if not identifiable[i]:
             notes.append(f"{name} is not identifiable from the fit data: {'; '.join(reasons[i])}")

@@ -42,7 +42,12 @@ from sealsim.calibration.rotary_case import (
     expand_dotted,
     parse_case_value,
 )
-from sealsim.calibration.statistics import compare_signals, on_constraint, parameter_statistics
+from sealsim.calibration.statistics import (
+    compare_signals,
+    drop_constrained,
+    on_constraint,
+    parameter_statistics,
+)
 from sealsim.cases import apply_overrides, validate_case
 from sealsim.errors import InputError, ModelError
 from sealsim.measurements import ColumnSpec, read_measurement, step_averages
@@ -664,10 +669,6 @@ def fit_rotary(case: RotaryFitCase, runs: list[PreparedRotaryRun],
     raw_variance = float(res @ res) / max(res.size - len(names), 1)
     stats = parameter_statistics(jac, res, values=[values[n] for n in names], names=names,
                                  min_residual_variance=1.0)
-    for i, name in enumerate(names):
-        if not stats["identifiable"][i]:
-            notes.append(f"{name} is not identifiable from the fit data: "
-                         f"{'; '.join(stats['reasons'][i])}")
     limits = [stages[-1]["at_bound"].get(name) for name in names]
     free = [name for name, limit in zip(names, limits) if limit is None]
     # within the Jacobians' step of a constraint, the optimiser cannot tell it from one on it
@@ -681,6 +682,11 @@ def fit_rotary(case: RotaryFitCase, runs: list[PreparedRotaryRun],
                        f"of the model (one step beyond: {next(iter(pinned.values()))}): the "
                        "data ask for values beyond it, which the model cannot take, so the "
                        "constraint set them, not the data; fix one of them")
+    drop_constrained(limits, stats["standard_errors"], stats["identifiable"], stats["reasons"])
+    for i, name in enumerate(names):
+        if not stats["identifiable"][i]:
+            notes.append(f"{name} is not identifiable from the fit data: "
+                         f"{'; '.join(stats['reasons'][i])}")
     undetermined = [n for n, ok in zip(names, stats["identifiable"]) if not ok]
     if undetermined and failure:
         failure.append(f"the data do not determine {', '.join(undetermined)} (see the "

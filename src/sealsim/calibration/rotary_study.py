@@ -162,7 +162,8 @@ def rotary_fit_study(case: RotaryFitCase, base_dir: str | Path,
         "residual_variance": result.residual_variance,
         "uncertainties": {"torque_Nm": case.fit.torque_uncertainty,
                           "temperature_K": case.fit.temperature_uncertainty},
-        "simulations": result.simulations,
+        "simulations": result.simulations,      # run by this call
+        "evaluations_reused": 0 if kept is None else kept.reused,  # from an interrupted fit
         "numerics": runs[0].case.numerics.model_dump(mode="json"),
         "duty": {r.name: r.duty_deviation() for r in runs},
         "steps": {r.name: len(r.steps) for r in runs},

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["compare_signals", "on_constraint", "parameter_report", "parameter_statistics",
+__all__ = ["compare_signals", "drop_constrained", "on_constraint", "parameter_report", "parameter_statistics",
            "repeat_scatter"]
 
 #: Relative distance from a constraint of the model within which a fitted value sits on it: 10x
@@ -167,6 +167,19 @@ def on_constraint(values: dict[str, float], names, refusal,
                 out[name] = why
                 break
     return out
+
+
+def drop_constrained(limits, standard_errors, identifiable, reasons) -> None:
+    """Mark the parameters that sit on a constraint (``limits[i]`` "constraint: ...", see
+    :func:`on_constraint`) as not determined, in place: no standard error (the Jacobian's
+    finite differences step past the constraint into refused trials, which gave standard
+    errors of 1e-13), not identifiable, with the reason."""
+    for i, limit in enumerate(limits):
+        if limit and limit.startswith("constraint"):
+            standard_errors[i] = np.nan
+            identifiable[i] = False
+            reasons[i] = [*reasons[i], "it sits on a constraint of the model, which set its "
+                                       "value (see the failure)"]
 
 
 def parameter_report(result, texts: dict[str, str]) -> dict:

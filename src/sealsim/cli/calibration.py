@@ -187,7 +187,7 @@ def _limit(parameter) -> str:
     limit = parameter.get("at_limit")
     if not limit:
         return ""
-    return (" -- on a constraint of the model, not determined by the data"
+    return (" -- set by a constraint of the model, not by the data"
             if limit.startswith("constraint") else f" -- at its {limit}")
 
 
