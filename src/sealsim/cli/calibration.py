@@ -44,7 +44,7 @@ def fit(
     from sealsim.runs.calibration import run_friction_fit_file
 
     with variant_progress("fit", quiet, lambda _, d, n: f"{d:g}/{n:g}") as progress, \
-            _resumable():
+            _resumable(out):
         summary = run_friction_fit_file(case, out, force, progress, resume=resume)
     report = summary["report"]
     for name, p in report["parameters"].items():
@@ -86,13 +86,17 @@ def fit(
 
 
 @contextlib.contextmanager
-def _resumable():
-    """After Ctrl-C (or SIGTERM) during a fit: say that its evaluations are kept."""
+def _resumable(out: Path):
+    """After Ctrl-C (or SIGTERM) during a fit: say whether evaluations were kept."""
+    from sealsim.calibration.kept import KeptEvaluations, work_folder_for
+
     try:
         yield
     except KeyboardInterrupt:
-        err_console.print(Text("finished evaluations are kept; continue with the same command "
-                               "and --resume", style="yellow"))
+        kept = KeptEvaluations(work_folder_for(out), resume=True).count()
+        if kept:
+            err_console.print(Text(f"{kept} finished evaluations are kept; continue with the "
+                                   "same command and --resume", style="yellow"))
         raise
 
 
@@ -148,7 +152,7 @@ def rotary_fit(
     from sealsim.runs.calibration import run_rotary_fit_file
 
     with variant_progress("stage", quiet, lambda _, d, n: f"{d:g}/{n:g} evaluations") \
-            as progress, _resumable():
+            as progress, _resumable(out):
         summary = run_rotary_fit_file(case, out, force, progress, resume=resume)
     report = summary["report"]
     for name, p in report["parameters"].items():
