@@ -168,7 +168,7 @@ class KeptEvaluations:
                 old = json.loads(meta.read_text(encoding="utf-8"))
             except (OSError, ValueError):
                 old = {}
-            if self.resume:
+            if self.resume and self.count():
                 if old.get("fingerprint") != key:
                     before, now = old.get("files") or {}, self.files
                     changed = sorted(p for p in {*before, *now} if before.get(p) != now.get(p))
