@@ -297,7 +297,7 @@ def test_a_fit_pressed_against_a_constraint_of_the_model_says_so(tmp_path):
     assert result.limits[0].startswith("constraint: ")
     assert np.isnan(result.standard_errors[0]) and not result.identifiable[0]
     assert "mu_low (1.01) must not exceed mu_peak (1.0)" in result.limits[0]
-    assert re.match(r"friction.mu_low = 1(\.\d+)? \(SI\) sits on a constraint of the model",
+    assert re.match(r"friction.mu_low = 1(\.\d+)? sits on a constraint of the rotary case",
                     result.failure[0])
 
 

@@ -43,8 +43,8 @@ from sealsim.calibration.case import (
 from sealsim.calibration.kept import KeptEvaluations
 from sealsim.calibration.statistics import (
     compare_signals,
+    constraint_failure,
     drop_constrained,
-    on_constraint,
     parameter_statistics,
 )
 from sealsim.errors import InputError
@@ -541,17 +541,9 @@ def fit_friction(case: FrictionFitCase, runs: list[PreparedRun], progress=None,
                        "values": {names[i]: values[names[i]] for i in idx}})
         if progress is not None:
             progress(stage, 1.0, 1.0)
-    free = [name for name, limit in zip(names, limits) if limit is None]
-    pinned = on_constraint(values, free, lambda trial: _refusal(start, with_ties(trial)))
-    for name, why in pinned.items():
-        limits[names.index(name)] = f"constraint: {why}"
-    if pinned:
-        shown = " and ".join(f"{name} = {values[name]:.6g}" for name in pinned)
-        failure.append(f"{shown} {'sit' if len(pinned) > 1 else 'sits'} on a constraint of "
-                       f"the law (one step beyond: {next(iter(pinned.values()))}): the data "
-                       "ask for values beyond it, which the law cannot take, so the "
-                       "constraint set them, not the data; fix one of them or choose a law "
-                       "that can follow the data")
+    pinned = constraint_failure(values, names, limits,
+                                lambda trial: _refusal(start, with_ties(trial)), "law")
+    failure += [pinned] if pinned else []
     n = len(names)
     se = np.full(n, np.nan)
     corr = np.full((n, n), np.nan)

@@ -44,8 +44,8 @@ from sealsim.calibration.rotary_case import (
 )
 from sealsim.calibration.statistics import (
     compare_signals,
+    constraint_failure,
     drop_constrained,
-    on_constraint,
     parameter_statistics,
 )
 from sealsim.cases import apply_overrides, validate_case
@@ -670,18 +670,10 @@ def fit_rotary(case: RotaryFitCase, runs: list[PreparedRotaryRun],
     stats = parameter_statistics(jac, res, values=[values[n] for n in names], names=names,
                                  min_residual_variance=1.0)
     limits = [stages[-1]["at_bound"].get(name) for name in names]
-    free = [name for name, limit in zip(names, limits) if limit is None]
     # within the Jacobians' step of a constraint, the optimiser cannot tell it from one on it
-    pinned = on_constraint(values, free, lambda trial: _refusal(fit_runs, trial),
-                           tolerance=DIFFERENCE_STEP)
-    for name, why in pinned.items():
-        limits[names.index(name)] = f"constraint: {why}"
-    if pinned:
-        shown = " and ".join(f"{name} = {values[name]:.6g}" for name in pinned)
-        failure.append(f"{shown} (SI) {'sit' if len(pinned) > 1 else 'sits'} on a constraint "
-                       f"of the model (one step beyond: {next(iter(pinned.values()))}): the "
-                       "data ask for values beyond it, which the model cannot take, so the "
-                       "constraint set them, not the data; fix one of them")
+    pinned = constraint_failure(values, names, limits, lambda trial: _refusal(fit_runs, trial),
+                                "rotary case", tolerance=DIFFERENCE_STEP)
+    failure += [pinned] if pinned else []
     drop_constrained(limits, stats["standard_errors"], stats["identifiable"], stats["reasons"])
     for i, name in enumerate(names):
         if not stats["identifiable"][i]:

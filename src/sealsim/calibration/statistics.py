@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["compare_signals", "drop_constrained", "on_constraint", "parameter_report", "parameter_statistics",
+__all__ = ["compare_signals", "constraint_failure", "drop_constrained", "on_constraint", "parameter_report", "parameter_statistics",
            "repeat_scatter"]
 
 #: Relative distance from a constraint of the model within which a fitted value sits on it: 10x
@@ -167,6 +167,24 @@ def on_constraint(values: dict[str, float], names, refusal,
                 out[name] = why
                 break
     return out
+
+
+def constraint_failure(values: dict[str, float], names: list[str], limits: list, refusal,
+                       what: str, tolerance: float = CONSTRAINT_TOLERANCE) -> str | None:
+    """Mark the fitted parameters on a constraint of the model (:func:`on_constraint`; those
+    not already at a bound, ``limits[i]`` None) in ``limits`` as "constraint: WHY", and the
+    failure that says so (None if there is none).  ``what``: the model's name in the text."""
+    free = [name for name, limit in zip(names, limits) if limit is None]
+    pinned = on_constraint(values, free, refusal, tolerance)
+    if not pinned:
+        return None
+    for name, why in pinned.items():
+        limits[names.index(name)] = f"constraint: {why}"
+    shown = " and ".join(f"{name} = {values[name]:.6g}" for name in pinned)
+    return (f"{shown} {'sit' if len(pinned) > 1 else 'sits'} on a constraint of the {what} "
+            f"(one step beyond: {next(iter(pinned.values()))}): the data ask for values "
+            f"beyond it, which the {what} cannot take, so the constraint set them, not the "
+            "data; fix one of them or choose a model that can follow the data")
 
 
 def drop_constrained(limits, standard_errors, identifiable, reasons) -> None:
