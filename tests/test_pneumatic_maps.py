@@ -156,6 +156,34 @@ def test_fe_map_is_built_on_demand_and_cached(tiny_structure_case, fe_cache, tmp
         cm.build_or_load_fe_map(tiny_structure_case, cache_dir=cache)
 
 
+def test_an_interrupted_map_build_on_demand_keeps_its_finished_paths(tiny_structure_case,
+                                                                    tmp_path, monkeypatch):
+    # a map built on demand (by a friction fit's [contact], a pneumatic seal, a study) that was
+    # interrupted lost every finished FE load path: only `sealsim structure map` kept them
+    import sealsim.structure.mapping as mapping
+
+    computed = []
+    real = mapping._map_task
+    monkeypatch.setattr(mapping, "_map_task",
+                        lambda data, squeeze, temperature, *args: computed.append(temperature)
+                        or real(data, squeeze, temperature, *args))
+
+    def ctrl_c_after_one_path(done, total):
+        if done == 1:
+            raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        cm.build_or_load_fe_map(tiny_structure_case, cache_dir=tmp_path, workers=1,
+                                progress=ctrl_c_after_one_path)
+    assert computed == [293.15] and not list(tmp_path.glob("*.nc"))
+    computed.clear()
+    m = cm.build_or_load_fe_map(tiny_structure_case, cache_dir=tmp_path, workers=1)
+    assert computed == [333.15]                       # only the path the interruption left
+    assert [p.suffix for p in tmp_path.iterdir()] == [".nc"]   # the kept paths are removed
+    fn0, _ = m.evaluate(0.0, 293.15)
+    assert 15.0 < fn0 < 80.0
+
+
 def test_a_damaged_cached_map_is_built_again(tiny_structure_case, fe_cache, tmp_path, caplog):
     # a cache file damaged on disk stopped every run of the case with "map file ... is not a
     # readable netCDF map: did not find a match in any of xarray's currently installed IO

@@ -50,6 +50,7 @@ from __future__ import annotations
 import hashlib
 import logging
 import os
+import shutil
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Protocol, runtime_checkable
@@ -712,9 +713,14 @@ def build_or_load_fe_map(structure_case: str | Path, squeeze: float | None = Non
             raise InputError(f"cannot create the map cache folder {str(folder)!r}: {exc}") \
                 from None
         logger.info(_build_notice(case, path, target, label))
-        dataset = compute_map(case, workers=workers, progress=progress, case_text=text)
+        # finished FE load paths are kept beside the cache file until the map is written: a
+        # build interrupted inside a fit, a pneumatic run or a study loses none of them
+        kept = target.with_name(f".{target.stem}.paths")
+        dataset = compute_map(case, workers=workers, progress=progress, case_text=text,
+                              keep=kept)
         dataset, encoding = netcdf_ready(dataset)
         atomic_write_bytes(target, dataset.to_netcdf(encoding=encoding))
+        shutil.rmtree(kept, ignore_errors=True)
     return FEContactMap.from_file(target, squeeze=squeeze)
 
 
