@@ -296,6 +296,12 @@ def test_a_fit_pressed_against_a_constraint_of_the_model_says_so(tmp_path):
     assert result.status == "failed"
     assert result.limits[0].startswith("constraint: ")
     assert np.isnan(result.standard_errors[0]) and not result.identifiable[0]
+    # the refused trials are one note, not one per trial (there were nine)
+    refused = [n for n in result.warnings if "the optimiser stepped back" in n]
+    assert len(refused) == 1, refused
+    assert re.match(r"stage 'joint': the model failed at \{friction.mu_low = 1.01\d*\} \(.*"
+                    r"mu_low \(1.01\d*\) must not exceed mu_peak \(1.0\)\), and at \d+ more "
+                    r"parameter sets; the optimiser stepped back", refused[0])
     assert "mu_low (1.01) must not exceed mu_peak (1.0)" in result.limits[0]
     assert re.match(r"friction.mu_low = 1(\.\d+)? sits on a constraint of the rotary case",
                     result.failure[0])

@@ -510,7 +510,7 @@ class _Objective:
                       "temperature": case.fit.temperature_uncertainty}
         self.cache: dict[tuple, dict[str, RotaryPrediction] | Exception] = {}
         self.simulations = 0
-        self.failures: list[str] = []
+        self.failures: dict[str, list[str]] = {}   # stage: where the model failed
 
     def _simulate(self, values: dict[str, float]) -> dict[str, RotaryPrediction] | Exception:
         try:
@@ -689,8 +689,10 @@ def fit_rotary(case: RotaryFitCase, runs: list[PreparedRotaryRun],
                      "uncertainties (rms): the model does not reproduce the fit data within "
                      "them (a model error, or uncertainties stated too small); the standard "
                      "errors are scaled up by this factor")
-    for message in objective.failures:
-        notes.append(message)
+    for stage, where in objective.failures.items():   # one note per stage, not per trial
+        more = f", and at {len(where) - 1} more parameter sets" if len(where) > 1 else ""
+        notes.append(f"stage {stage!r}: the model failed at {where[0]}{more}; the optimiser "
+                     "stepped back")
     predictions = dict(objective.full_predictions(values))
     for run in runs:
         if run.name not in predictions:
@@ -775,10 +777,9 @@ def _run_stage(objective: _Objective, case: RotaryFitCase, stage, idx, kinds, na
         try:
             return objective.residuals(trial, kinds)
         except (ModelError, InputError) as exc:
-            message = f"stage {stage!r}: the model failed at {_show(trial)} ({exc}); the " \
-                      "optimiser stepped back"
-            if message not in objective.failures:
-                objective.failures.append(message)
+            where = objective.failures.setdefault(stage, [])
+            if f"{_show(trial)} ({exc})" not in where:
+                where.append(f"{_show(trial)} ({exc})")
             return np.full(n_res, PENALTY)
 
     def jacobian(x):
