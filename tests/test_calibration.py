@@ -56,15 +56,15 @@ def synthetic_contact():
 
 
 def synthetic_run(path: Path, speeds, seed: int, segment=6.0, ramp=0.2, noise=0.2,
-                  offset=0.7):
-    """A rig run made by the true law: back-and-forth strokes at each speed [m/s], friction
-    with a load-cell offset and seeded white noise (σ = ``noise`` N); columns t [ms],
-    x [mm], v [mm/s], p [bar], F [N]."""
+                  offset=0.7, truth=None):
+    """A rig run made by the true law (``truth``, default :data:`TRUTH`): back-and-forth
+    strokes at each speed [m/s], friction with a load-cell offset and seeded white noise
+    (σ = ``noise`` N); columns t [ms], x [mm], v [mm/s], p [bar], F [N]."""
     dt = 0.01
     t, v = stroke_velocity(speeds, segment, ramp, dt)
     x = np.concatenate([[0.0], np.cumsum(0.5 * (v[1:] + v[:-1]) * dt)])
     fn, b = synthetic_contact()
-    law = Theta(**TRUTH)
+    law = Theta(**(truth or TRUTH))
     inputs = ContactInputs(normal_force=fn, contact_width=b)
     z = law.trajectory(law.initial_state(1), 0.5 * (v[1:] + v[:-1]), dt, inputs)
     force = law.force(z[:, :, 0].T, v, inputs)
@@ -301,6 +301,97 @@ def test_cli_reports_a_failed_fit_with_exit_status_1(tmp_path):
                                  "--quiet"])
     assert result.exit_code == 1
     assert "fit failed" in result.output and "bound" in result.output
+    # the report says which parameter sits on which bound
+    assert "f_a = 0.2 ± " in result.output and "-- at its upper bound" in result.output
+    report = json.loads((tmp_path / "o" / "report.json").read_text())
+    assert report["parameters"]["f_a"]["at_limit"] == "upper bound"
+
+
+def test_a_fit_pressed_against_a_constraint_of_the_law_says_so(tmp_path):
+    # data whose friction rises with speed 3x more steeply than the case's viscous term
+    # (gamma) makes it: the fit of f_a and f_b asks for f_b > f_a, a sliding friction above
+    # the break-away level, which the Θ law refuses.  The optimiser stops on f_b = f_a (its
+    # trial laws beyond are refused), within its tolerance; that is no estimate of either
+    # coefficient, and was reported as an "ok" fit
+    synthetic_run(tmp_path / "rising.csv", [0.005, 0.02, 0.08], seed=0,
+                  truth={**TRUTH, "f_a": 0.1, "f_b": 0.1, "gamma": 3e4})
+    case = tmp_path / "case.toml"
+    case.write_text(tomli_w.dumps(fit_case({"rising": "rising.csv"}, STAGED[:2])))
+    result = RUNNER.invoke(app, ["friction", "fit", str(case), "--out", str(tmp_path / "o"),
+                                 "--quiet"])
+    assert result.exit_code == 1, result.output
+    fit = json.loads((tmp_path / "o" / "fit.json").read_text())
+    report = json.loads((tmp_path / "o" / "report.json").read_text())
+    f_a, f_b = (report["parameters"][n]["value"] for n in ("f_a", "f_b"))
+    assert 0 <= f_a - f_b < 1e-5 * f_a             # on the constraint, within the tolerance
+    assert fit["status"] == "failed"
+    assert re.search(r"f_a = 0.11\d+ and f_b = 0.11\d+ sit on a constraint of the law \(one "
+                     r"step beyond: f_b = .* is larger than f_a", fit["failure"][0])
+    for name in ("f_a", "f_b"):
+        assert report["parameters"][name]["at_limit"].startswith("constraint: f_b = ")
+        # no standard error: the Jacobian's steps beyond the constraint made it 1e-13
+        assert report["parameters"][name]["standard_error"] is None
+        assert not report["parameters"][name]["identifiable"]
+    assert result.output.count("(not determined) -- set by a constraint of the model") == 2
+    # a fit of the same law to data it can follow has no limit
+    synthetic_run(tmp_path / "sweep.csv", [0.005, 0.02, 0.08], seed=0)
+    ok = fitted(tmp_path, fit_case({"sweep": "sweep.csv"}, STAGED[:2]))
+    assert ok.status == "ok" and ok.limits == [None, None]
+
+
+def test_an_interrupted_fit_resumes_with_the_result_of_an_uninterrupted_one(tmp_path,
+                                                                           monkeypatch):
+    # the rule for long work: what finished is kept and reused.  The fit is interrupted in its
+    # dynamic stage (Ctrl-C in the objective after 4 model runs); run again with --resume it
+    # computes only the evaluations it had not finished and writes the same results, byte for
+    # byte, as a fit that was never interrupted
+    from sealsim.calibration import friction_fit
+    from sealsim.runs.calibration import run_friction_fit_file
+
+    synthetic_run(tmp_path / "sweep.csv", [0.005, 0.02, 0.08], seed=2)
+    case = tmp_path / "case.toml"
+    case.write_text(tomli_w.dumps(fit_case({"sweep": "sweep.csv"}, STAGED)))
+    whole = run_friction_fit_file(case, tmp_path / "whole")
+    total = whole["evaluations"]["computed"]
+    assert whole["evaluations"]["reused"] == 0 and total > 10
+    assert not (tmp_path / ".whole.fit").exists()      # dropped once the results are written
+
+    out = tmp_path / "o"
+    runs = {"n": 0}
+    model = friction_fit.predict_run
+
+    def interrupted(law, run):
+        runs["n"] += 1
+        if runs["n"] > 4:
+            raise KeyboardInterrupt
+        return model(law, run)
+
+    monkeypatch.setattr(friction_fit, "predict_run", interrupted)
+    stopped = RUNNER.invoke(app, ["friction", "fit", str(case), "--out", str(out), "--quiet"])
+    monkeypatch.undo()
+    assert stopped.exit_code == 130 and not out.exists()
+    kept = len(list((tmp_path / ".o.fit" / "evaluations").glob("*.json")))
+    assert 4 < kept < total        # the steady stage and the dynamic stage's first runs
+    assert f"{kept} finished evaluations are kept; continue with the same command and " \
+           "--resume" in stopped.output.replace("\n", " ")
+    # run again without --resume: refused, saying how to go on
+    again = RUNNER.invoke(app, ["friction", "fit", str(case), "--out", str(out), "--quiet"])
+    assert again.exit_code == 2
+    assert re.search(rf"an interrupted fit left {kept} finished evaluations in .*\.o\.fit.*"
+                     r"pass --resume", again.output.replace("\n", ""))
+    # a measurement that changed since: no resume, the file is named
+    synthetic_run(tmp_path / "sweep.csv", [0.005, 0.02, 0.08], seed=3)
+    changed = RUNNER.invoke(app, ["friction", "fit", str(case), "--out", str(out), "--quiet",
+                                  "--resume"])
+    assert changed.exit_code == 2
+    assert re.search(r"cannot resume: .*changed since: '.*sweep\.csv'",
+                     changed.output.replace("\n", ""))
+    synthetic_run(tmp_path / "sweep.csv", [0.005, 0.02, 0.08], seed=2)     # as it was
+    resumed = run_friction_fit_file(case, out, resume=True)
+    assert resumed["evaluations"] == {"computed": total - kept, "reused": kept}
+    for name in ("report.json", "fit.json", "fitted_parameters.toml", "predictions.csv"):
+        assert (out / name).read_bytes() == (tmp_path / "whole" / name).read_bytes(), name
+    assert not (tmp_path / ".o.fit").exists()
 
 
 @pytest.fixture(scope="module")

@@ -50,10 +50,11 @@ SHORT_CYCLE = [(250, 3), (750, 3), (1500, 3)]
 PARAMETERS = [p for p in EXAMPLE_DATA["fit"]["parameters"] if p["path"] in TRUTH]
 
 
-def synthetic(folder: Path, name: str, steps, seeds, conditions=None) -> list[str]:
+def synthetic(folder: Path, name: str, steps, seeds, conditions=None, truth=None) -> list[str]:
     """Measured runs ``name_SEED.csv`` made by the measurements' model (mesh 1.5, 0.1-2 s
-    steps) with the true parameters, 2 s sampling and seeded noise (the example's generator)."""
-    case = MAKER.true_case(MODEL, conditions or {}, steps, truth=TRUTH)
+    steps) with the true parameters (default :data:`TRUTH`), 2 s sampling and seeded noise
+    (the example's generator)."""
+    case = MAKER.true_case(MODEL, conditions or {}, steps, truth=truth or TRUTH)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         frame = simulate(case).timeseries
@@ -280,6 +281,73 @@ def test_cli_reports_a_fit_that_ends_at_a_bound_with_exit_status_1(tmp_path, sho
     again = RUNNER.invoke(app, ["rotary", "fit", str(case), "--out", str(out), "--quiet",
                                 "--force"])
     assert again.exit_code == 1 and (out / "report.json").read_bytes() == report
+
+
+def test_a_fit_pressed_against_a_constraint_of_the_model_says_so(tmp_path):
+    # a run whose rubber friction at low speed (mu_low 1.5, under a peak of 2.0) lies above
+    # the fit's master-curve peak (the default 1.0): fitting mu_low alone asks for
+    # mu_low > mu_peak, which the rotary case refuses.  The optimiser stepped back from every
+    # refused trial and ended on mu_low = mu_peak: reported as an "ok" fit of mu_low = 1.0
+    (name,) = synthetic(tmp_path, "rubber", SHORT_CYCLE, (1,), truth={
+        **TRUTH, "friction.mu_peak": 2.0, "friction.mu_low": 1.5})
+    result = fitted(tmp_path, fit_data({"rubber": name}, [
+        {"path": "friction.mu_low", "bounds": [0.05, 3.0]}]))
+    assert result.values[0] == pytest.approx(1.0, rel=0.01)  # the peak, within the 1 % step
+    assert result.status == "failed"
+    assert result.limits[0].startswith("constraint: ")
+    assert np.isnan(result.standard_errors[0]) and not result.identifiable[0]
+    # the refused trials are one note, not one per trial (there were nine)
+    refused = [n for n in result.warnings if "the optimiser stepped back" in n]
+    assert len(refused) == 1, refused
+    assert re.match(r"stage 'joint': the model failed at \{friction.mu_low = 1.01\d*\} \(.*"
+                    r"mu_low \(1.01\d*\) must not exceed mu_peak \(1.0\)\), and at \d+ more "
+                    r"parameter sets; the optimiser stepped back", refused[0])
+    assert "mu_low (1.01) must not exceed mu_peak (1.0)" in result.limits[0]
+    assert re.match(r"friction.mu_low = 1(\.\d+)? sits on a constraint of the rotary case",
+                    result.failure[0])
+
+
+def test_an_interrupted_fit_resumes_with_the_result_of_an_uninterrupted_one(
+        tmp_path, short_runs, monkeypatch):
+    # an interrupted rotary fit (Ctrl-C in its 8th simulation) keeps the parameter sets it
+    # finished; run again with --resume it simulates only the missing ones (and the optimum
+    # once more if it was one of the kept ones: the plots need its time series) and writes
+    # the same results
+    from sealsim.calibration import rotary_fit
+    from sealsim.runs.calibration import run_rotary_fit_file
+
+    folder, files = short_runs
+    case = tmp_path / "case.toml"
+    case.write_text(tomli_w.dumps(fit_data({"short": str(folder / files[0])},
+                                           PARAMETERS[:2])))
+    whole = run_rotary_fit_file(case, tmp_path / "whole")
+    total = whole["evaluations"]["computed"]
+    assert whole["evaluations"]["reused"] == 0 and total == whole["simulations"] > 8
+    simulations = {"n": 0}
+    model = rotary_fit.predict_rotary_run
+
+    def interrupted(run, values):
+        simulations["n"] += 1
+        if simulations["n"] == 8:
+            raise KeyboardInterrupt
+        return model(run, values)
+
+    monkeypatch.setattr(rotary_fit, "predict_rotary_run", interrupted)
+    out = tmp_path / "o"
+    with pytest.raises(KeyboardInterrupt):
+        run_rotary_fit_file(case, out)
+    monkeypatch.undo()
+    assert len(list((tmp_path / ".o.fit" / "evaluations").glob("*.json"))) == 7
+    resumed = run_rotary_fit_file(case, out, resume=True)
+    assert resumed["evaluations"] == {"computed": total - 7, "reused": 7}
+    assert resumed["simulations"] in (total - 7, total - 6)   # + the optimum, if it was kept
+    for name in ("report.json", "fitted_parameters.toml", "predictions.csv", "steps.csv"):
+        assert (out / name).read_bytes() == (tmp_path / "whole" / name).read_bytes(), name
+    diagnostics = [json.loads((o / "fit.json").read_text()) for o in (out, tmp_path / "whole")]
+    for d in diagnostics:
+        del d["simulations"], d["evaluations_reused"]
+    assert diagnostics[0] == diagnostics[1]
+    assert not (tmp_path / ".o.fit").exists()
 
 
 @pytest.fixture(scope="module")

@@ -121,6 +121,26 @@ def test_a_second_ogden_term_from_uniaxial_data_alone_is_reported_unidentifiable
     assert fit_hyperelastic(curves, "ogden1").identifiable.all()
 
 
+def test_a_modulus_on_its_bound_is_reported():
+    # uniaxial curves whose best Mooney-Rivlin has C10 < 0 (P = 2(λ − λ⁻²)(C10 + C01/λ) with
+    # C10 = −0.05 MPa, C01 = 0.5 MPa): the fit stops on the bound C10 >= 0 at 1e-20 Pa.  It
+    # was reported as a value with a standard error of 0.014 MPa, "not identifiable" because
+    # that error exceeds the value -- as if more data would determine it
+    lam = np.linspace(1.05, 2.5, 15)
+    curve = Curve("ut", "uniaxial", lam, 2 * (lam - lam ** -2) * (-0.05e6 + 0.5e6 / lam))
+    fit = fit_hyperelastic([curve], "mooney_rivlin")
+    report = fit.report()["parameters"]
+    assert abs(report["C10"]["value"]) < 1e-6
+    assert report["C10"]["at_limit"] == "lower bound 0 MPa"
+    assert report["C10"]["stderr"] is None and not report["C10"]["identifiable"]
+    assert report["C01"]["at_limit"] is None           # unbounded: never "on its bound"
+    assert any(n.startswith("C10 sits on its lower bound 0 MPa: the best mooney_rivlin lies "
+                            "beyond what the model allows") for n in fit.notes)
+    # a curve the model can follow has no limit
+    ok = Curve("ut", "uniaxial", lam, 2 * (lam - lam ** -2) * (0.15e6 + 0.2e6 / lam))
+    assert fit_hyperelastic([ok], "mooney_rivlin").limits == [None, None]
+
+
 def test_bad_curves_are_refused():
     with pytest.raises(InputError, match=r"stretch 101 is beyond 20.*unit '%'"):
         Curve("u", "uniaxial", np.array([1.0, 11.0, 51.0, 101.0]),   # strains in % as '1'

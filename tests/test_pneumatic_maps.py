@@ -172,7 +172,6 @@ def test_a_damaged_cached_map_is_built_again(tiny_structure_case, fe_cache, tmp_
     assert [p.name for p in tmp_path.glob("*.nc")] == [cached.name]
 
 
-
 def test_an_interrupted_on_demand_map_build_computes_only_the_missing_paths(
         tiny_structure_case, fe_cache, tmp_path, computed_map_paths):
     # a map built on demand (pneumatic run, fits, studies) kept none of its finished FE load
@@ -201,7 +200,6 @@ def test_an_interrupted_on_demand_map_build_computes_only_the_missing_paths(
     ref = cm.build_or_load_fe_map(tiny_structure_case, cache_dir=fe_cache)
     for p, t in ((0.0, 293.15), (3e5, 310.0), (8e5, 333.15)):
         np.testing.assert_allclose(m.evaluate(p, t), ref.evaluate(p, t), rtol=1e-12)
-
 
 
 def test_an_interrupted_parallel_map_build_keeps_the_paths_being_solved(

@@ -40,7 +40,13 @@ from sealsim.calibration.case import (
     contact_table,
     parse_law_value,
 )
-from sealsim.calibration.statistics import compare_signals, parameter_statistics
+from sealsim.calibration.kept import KeptEvaluations
+from sealsim.calibration.statistics import (
+    compare_signals,
+    constraint_failure,
+    drop_constrained,
+    parameter_statistics,
+)
 from sealsim.errors import InputError
 from sealsim.friction import make_law
 from sealsim.friction.base import ContactInputs, FrictionLaw, validate_parameters
@@ -59,8 +65,8 @@ from sealsim.pneumatic.friction_tables import (
 )
 from sealsim.units import ZERO_CELSIUS_K
 
-__all__ = ["FitResult", "PreparedRun", "fit_friction", "friction_from_rod_force", "predict_run",
-           "prepare_run", "run_metrics", "with_law_table"]
+__all__ = ["FitResult", "PreparedRun", "fit_friction", "friction_from_rod_force", "model_inputs",
+           "predict_run", "prepare_run", "run_metrics", "with_law_table"]
 
 #: friction tables of the tribology values a fit tried last, kept per contact map (in memory)
 _FIT_TABLES = 16
@@ -273,6 +279,20 @@ def with_law_table(law: FrictionLaw, runs: list[PreparedRun]) -> list[PreparedRu
     return out
 
 
+def model_inputs(run: PreparedRun) -> dict[str, Any]:
+    """Everything the model of a run is computed from besides the law's parameters: the
+    fingerprint of a kept fit (:class:`~sealsim.calibration.kept.KeptEvaluations`)."""
+    return {"name": run.name, "role": run.spec.role, "time": run.time,
+            "velocity": run.velocity, "friction": run.friction, "pressure": run.pressure,
+            "pressure_difference": run.pressure_difference, "temperature": run.temperature,
+            "normal_force": run.normal_force, "contact_width": run.contact_width,
+            "samples": run.samples, "phases": [(p.start, p.stop) for p in run.phases],
+            "contact_table": getattr(run.contact_table, "__dict__", run.contact_table),
+            "contact_map": None if run.contact_map is None else run.contact_map.describe(),
+            "sliding_diameter": run.sliding_diameter,
+            "orientation": run.orientation}
+
+
 def _needed_conditions(case: FrictionFitCase, contact_map) -> dict[str, str]:
     """The conditions the model of a fit uses, each with what uses it."""
     needs = {}
@@ -367,6 +387,7 @@ class FitResult:
     bounds: list[tuple[float, float]]
     initial: list[float]
     stage_of: list[str]
+    limits: list[str | None]           # "lower bound", "upper bound", "constraint: WHY", None
 
 
 def _make(params_model, values: dict[str, float]):
@@ -377,14 +398,26 @@ def _make(params_model, values: dict[str, float]):
         return params, make_law(params)
 
 
+def _refusal(params_model, values: dict[str, float]) -> str | None:
+    """Why the law refuses these parameter values, or None if it takes them."""
+    try:
+        _make(params_model, values)
+    except InputError as exc:
+        return str(exc).removeprefix("invalid fitted parameters: ")
+    return None
+
+
 def _log_space(lo: float, hi: float) -> bool:
     return lo > 0 and hi > 0
 
 
-def fit_friction(case: FrictionFitCase, runs: list[PreparedRun], progress=None) -> FitResult:
+def fit_friction(case: FrictionFitCase, runs: list[PreparedRun], progress=None,
+                 kept: KeptEvaluations | None = None) -> FitResult:
     """Fit the case's parameters to the runs with role ``fit`` (see the module docstring).
 
-    Deterministic: no random start, finite-difference Jacobians of fixed step.
+    Deterministic: no random start, finite-difference Jacobians of fixed step.  With ``kept``
+    (started), every evaluation of the residuals is kept in its work folder, and the ones it
+    already holds (from an interrupted run of the same fit) are reused.
     """
     start = case.friction
     names, bounds, initial, stage_of = [], [], [], []
@@ -423,15 +456,14 @@ def fit_friction(case: FrictionFitCase, runs: list[PreparedRun], progress=None) 
         return {**vals, **{target: vals[source] for target, source in tied.items()}}
 
     values = dict(zip(names, initial))
-    try:      # every trial law is refused alike (e.g. a Θ law's f_b above its f_a)
-        _make(start, with_ties(values))
-    except InputError as exc:
+    refused = _refusal(start, with_ties(values))
+    if refused:  # every trial law is refused alike (e.g. a Θ law's f_b above its f_a)
         shown = ", ".join(f"{k} = {v:.6g}" for k, v in with_ties(values).items())
         raise InputError(f"the fit would start from a law that is not valid ({shown}; SI): "
-                         f"{str(exc).removeprefix('invalid fitted parameters: ')}; give "
-                         "fit.parameters[].initial values that are") from None
+                         f"{refused}; give fit.parameters[].initial values that are")
     stages, notes = [], start_notes
     failure: list[str] = []
+    limits: list[str | None] = [None] * len(names)   # bound or constraint a value sits on
     all_jac_rows = {}
     for stage in ("steady", "dynamic"):
         idx = [i for i, s in enumerate(stage_of) if s == stage]
@@ -450,18 +482,26 @@ def fit_friction(case: FrictionFitCase, runs: list[PreparedRun], progress=None) 
             return out
 
         def residuals(x, stage=stage, to_values=to_values):
+            trial = with_ties(to_values(x))
             try:
-                _, law = _make(start, with_ties(to_values(x)))
+                _, law = _make(start, trial)
             except InputError:
                 return np.full(n_res, 1e6)
-            parts = []
-            for r in (with_law_table(law, fit_runs) if retable else fit_runs):
-                if stage == "steady":
-                    parts.append(measured_phase_forces(r) - steady_phase_forces(law, r))
-                else:
-                    parts.append((r.friction - predict_run(law, r))[r.samples])
-            res = np.concatenate(parts)
-            return np.where(np.isfinite(res), res, 1e6)
+
+            def compute():
+                parts = []
+                for r in (with_law_table(law, fit_runs) if retable else fit_runs):
+                    if stage == "steady":
+                        parts.append(measured_phase_forces(r) - steady_phase_forces(law, r))
+                    else:
+                        parts.append((r.friction - predict_run(law, r))[r.samples])
+                res = np.concatenate(parts)
+                return np.where(np.isfinite(res), res, 1e6)
+
+            if kept is None:
+                return compute()
+            return np.asarray(kept.evaluate({"stage": stage, "values": trial}, compute),
+                              dtype=float)
 
         lo = np.array([math.log(bounds[i][0]) if lg else bounds[i][0]
                        for i, lg in zip(idx, logs)])
@@ -486,14 +526,13 @@ def fit_friction(case: FrictionFitCase, runs: list[PreparedRun], progress=None) 
                 jac[:, col] /= values[names[i]]
         all_jac_rows[stage] = (idx, jac, sol.fun if case.fit.loss == "linear"
                                else residuals(sol.x))
-        at_bound = [names[i] for i, a, lg, xi, l_, h_ in zip(idx, sol.active_mask, logs, sol.x,
-                                                             lo, hi)
-                    if a != 0 or min(xi - l_, h_ - xi) <= 1e-6 * max(1.0, abs(h_ - l_))]
-        for name in at_bound:
-            i = names.index(name)
-            failure.append(f"{name} = {values[name]:.6g} ended at a bound {bounds[i]}: the "
-                           "optimum lies outside the bounds or the data do not determine it; "
-                           "widen the bounds or fix the parameter")
+        for i, a, xi, l_, h_ in zip(idx, sol.active_mask, sol.x, lo, hi):
+            if a != 0 or min(xi - l_, h_ - xi) <= 1e-6 * max(1.0, abs(h_ - l_)):
+                limits[i] = ("lower bound" if a < 0 or (a == 0 and xi - l_ <= h_ - xi)
+                             else "upper bound")
+                failure.append(f"{names[i]} = {values[names[i]]:.6g} ended at a bound "
+                               f"{bounds[i]}: the optimum lies outside the bounds or the data "
+                               "do not determine it; widen the bounds or fix the parameter")
         if not sol.success:
             failure.append(f"stage {stage!r}: least_squares stopped: {sol.message}")
         stages.append({"stage": stage, "parameters": [names[i] for i in idx],
@@ -502,6 +541,9 @@ def fit_friction(case: FrictionFitCase, runs: list[PreparedRun], progress=None) 
                        "values": {names[i]: values[names[i]] for i in idx}})
         if progress is not None:
             progress(stage, 1.0, 1.0)
+    pinned = constraint_failure(values, names, limits,
+                                lambda trial: _refusal(start, with_ties(trial)), "law")
+    failure += [pinned] if pinned else []
     n = len(names)
     se = np.full(n, np.nan)
     corr = np.full((n, n), np.nan)
@@ -516,13 +558,14 @@ def fit_friction(case: FrictionFitCase, runs: list[PreparedRun], progress=None) 
             reasons[i] = stats["reasons"][a]
             for b, j in enumerate(idx):
                 corr[i, j] = stats["correlation"][a, b]
+    drop_constrained(limits, se, identifiable, reasons)
     for i, name in enumerate(names):
         if not identifiable[i]:
             notes.append(f"{name} is not identifiable from the fit data: {'; '.join(reasons[i])}")
     params, _ = _make(start, with_ties(values))
     return FitResult(params, names, np.array([values[k] for k in names]), se, corr,
                      identifiable, reasons, stages, "failed" if failure else "ok", failure,
-                     notes, bounds, initial, stage_of)
+                     notes, bounds, initial, stage_of, limits)
 
 
 def _plain_jacobian(fun, x, step=1e-6):

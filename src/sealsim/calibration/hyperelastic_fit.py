@@ -136,6 +136,7 @@ class HyperelasticFit:
     success: bool
     message: str
     notes: list[str] = field(default_factory=list)
+    limits: list[str | None] = field(default_factory=list)   # "lower bound 0 MPa", ... or None
 
     @property
     def hyperelastic(self) -> tuple:
@@ -163,6 +164,7 @@ class HyperelasticFit:
                             "stderr": se if math.isfinite(se) else None,
                             "unit": "Pa" if _is_stress(self.model, name) else "-",
                             "identifiable": bool(self.identifiable[i]),
+                            "at_limit": self.limits[i] if self.limits else None,
                             "notes": list(self.reasons[i])}
         return {"model": self.label, "parameters": params, "modes": self.modes,
                 "fit_modes": self.fit_modes,
@@ -353,12 +355,30 @@ def fit_hyperelastic(curves: Sequence[Curve], model: str, terms: int | None = No
     stats = parameter_statistics(res.jac, res.fun, values=res.x, names=flat_names)
     scale = np.array([_MPA if _is_stress(name, n) else 1.0 for n in flat_names])
     values = res.x * scale
+    with np.errstate(invalid="ignore"):                 # inf - inf of unbounded parameters
+        at_lower = (res.active_mask < 0) | (np.isfinite(lo) & (
+            res.x - lo <= 1e-6 * np.maximum(1.0, np.abs(lo))))
+        at_upper = (res.active_mask > 0) | (np.isfinite(hi) & (
+            hi - res.x <= 1e-6 * np.maximum(1.0, np.abs(hi))))
     if spec.terms:  # term order is arbitrary: report them by increasing exponent
         order = np.argsort(res.x[terms:2 * terms])
         perm = np.concatenate([order + k * terms for k in range(len(spec.parameters))])
         res.x, res.jac = res.x[perm], res.jac[:, perm]
+        lo, hi, at_lower, at_upper = lo[perm], hi[perm], at_lower[perm], at_upper[perm]
         stats = parameter_statistics(res.jac, res.fun, values=res.x, names=flat_names)
         values = res.x * scale
+    limits = [None] * len(flat_names)
+    for i, n in enumerate(flat_names):
+        if at_lower[i] or at_upper[i]:
+            bound = (lo if at_lower[i] else hi)[i]
+            unit = "MPa" if _is_stress(name, n) else "-"
+            limits[i] = f"{'lower' if at_lower[i] else 'upper'} bound {bound:g} {unit}"
+            # the optimum lies beyond what the model allows: no estimate, no standard error
+            stats["standard_errors"][i] = np.inf
+            stats["identifiable"][i] = False
+            stats["reasons"][i] = [*stats["reasons"][i], f"it sits on its {limits[i]}: the "
+                                   "data ask for a value beyond it, which the model does not "
+                                   "allow"]
     parameters = {}
     offset = 0
     for p in spec.parameters:
@@ -371,11 +391,17 @@ def fit_hyperelastic(curves: Sequence[Curve], model: str, terms: int | None = No
         standard_errors=stats["standard_errors"] * scale, identifiable=stats["identifiable"],
         reasons=stats["reasons"], modes={}, stability={}, fit_modes=fit_modes,
         relative=relative, cost=float(res.cost), success=bool(res.success),
-        message=str(res.message))
+        message=str(res.message), limits=limits)
     fit.modes = _mode_errors(fit, curves)
     fit.stability = _stability(fit, curves, stretch_range)
     if not fit.success:
         fit.notes.append(f"the optimiser did not converge: {res.message}")
+    for i, limit in enumerate(limits):
+        if limit:
+            fit.notes.append(f"{flat_names[i]} sits on its {limit}: the best "
+                             f"{label} lies beyond what the model allows (e.g. a negative C10 "
+                             "of Mooney-Rivlin); the value is the bound's, not the data's: "
+                             "choose another model or fit more test modes")
     bad = [n for n, ok in zip(flat_names, fit.identifiable) if not ok]
     if bad:
         fit.notes.append(f"not identifiable from the fitted data: {', '.join(bad)} (see the "

@@ -35,13 +35,19 @@ import numpy as np
 import pandas as pd
 from scipy.optimize import least_squares
 
+from sealsim.calibration.kept import KeptEvaluations
 from sealsim.calibration.rotary_case import (
     RotaryFitCase,
     RotaryMeasurementModel,
     expand_dotted,
     parse_case_value,
 )
-from sealsim.calibration.statistics import compare_signals, parameter_statistics
+from sealsim.calibration.statistics import (
+    compare_signals,
+    constraint_failure,
+    drop_constrained,
+    parameter_statistics,
+)
 from sealsim.cases import apply_overrides, validate_case
 from sealsim.errors import InputError, ModelError
 from sealsim.measurements import ColumnSpec, read_measurement, step_averages
@@ -52,8 +58,8 @@ from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["PreparedRotaryRun", "RotaryFitResult", "RotaryPrediction", "check_groove_temperature",
            "check_torque_sign", "duty_from_speed",
-           "fit_rotary", "predict_rotary_run", "prepare_rotary_run", "rotary_run_metrics",
-           "step_agreement"]
+           "fit_rotary", "model_inputs", "predict_rotary_run", "prepare_rotary_run",
+           "rotary_run_metrics", "step_agreement"]
 
 #: Largest speed of a duty cycle [rad/s] (the duty CSV's limit, 47746 rpm).
 MAX_SPEED = 5000.0
@@ -336,16 +342,25 @@ def write_duty_csv(path: Path, times, speeds) -> None:
 # -- the model of a run -------------------------------------------------------------------------
 @dataclass
 class RotaryPrediction:
-    """The model of one run at one parameter set, at the measured samples."""
+    """The model of one run at one parameter set, at the measured samples (an evaluation
+    read back from a kept fit has only its steps and notes: the series are None)."""
 
-    frame: pd.DataFrame            # the simulation's time series (time from the run start)
-    torque: np.ndarray             # at the measured samples [N m]
-    temperature: np.ndarray        # spring groove at the measured samples [K]
+    frame: pd.DataFrame | None     # the simulation's time series (time from the run start)
+    torque: np.ndarray | None      # at the measured samples [N m]
+    temperature: np.ndarray | None  # spring groove at the measured samples [K]
     steps: list[dict]              # step averages over the measured steps' windows
     notes: list[str]
 
     def step_values(self, key: str) -> np.ndarray:
         return np.array([s[key] for s in self.steps])
+
+
+def model_inputs(run: PreparedRotaryRun) -> dict[str, Any]:
+    """Everything the model of a run is computed from besides the fitted values: the
+    fingerprint of a kept fit (:class:`~sealsim.calibration.kept.KeptEvaluations`)."""
+    return {"name": run.name, "role": run.role, "data": run.data, "time": run.time,
+            "speed": run.speed, "duty_times": run.duty_times, "duty_speeds": run.duty_speeds,
+            "steps": run.steps, "window": run.window, "tolerance": run.tolerance}
 
 
 def run_case_with(run: PreparedRotaryRun, values: dict[str, float]) -> RotaryCase:
@@ -475,6 +490,7 @@ class RotaryFitResult:
     residual_variance: float           # Σr²/(m − n) of the scaled residuals (1: as stated)
     simulations: int
     predictions: dict[str, RotaryPrediction]
+    limits: list[str | None]           # "lower bound", "upper bound", "constraint: WHY", None
 
     @property
     def value_dict(self) -> dict[str, float]:
@@ -482,31 +498,71 @@ class RotaryFitResult:
 
 
 class _Objective:
-    """Residuals of the fit runs at parameter values (cached: least_squares asks twice)."""
+    """Residuals of the fit runs at parameter values (cached: least_squares asks twice; with
+    ``kept``, every evaluation's step averages, notes or failure are also kept on disk, and
+    those of an interrupted run of the same fit are reused)."""
 
-    def __init__(self, case: RotaryFitCase, runs: list[PreparedRotaryRun]):
+    def __init__(self, case: RotaryFitCase, runs: list[PreparedRotaryRun],
+                 kept: KeptEvaluations | None = None):
         self.runs = runs
+        self.kept = kept
         self.sigma = {"torque": case.fit.torque_uncertainty,
                       "temperature": case.fit.temperature_uncertainty}
         self.cache: dict[tuple, dict[str, RotaryPrediction] | Exception] = {}
         self.simulations = 0
-        self.failures: list[str] = []
+        self.failures: dict[str, list[str]] = {}   # stage: where the model failed
+
+    def _simulate(self, values: dict[str, float]) -> dict[str, RotaryPrediction] | Exception:
+        try:
+            out = {}
+            for run in self.runs:
+                self.simulations += 1
+                out[run.name] = predict_rotary_run(run, values)
+            return out
+        except (ModelError, InputError) as exc:
+            return exc
+
+    def _evaluate(self, values: dict[str, float]) -> dict[str, RotaryPrediction] | Exception:
+        if self.kept is None:
+            return self._simulate(values)
+        simulated = []
+
+        def record():
+            found = self._simulate(values)
+            simulated.append(found)
+            if isinstance(found, Exception):
+                return {"failed": {"error": type(found).__name__, "message": str(found)}}
+            return {"runs": {name: {"steps": p.steps, "notes": p.notes}
+                             for name, p in found.items()}}
+
+        value = self.kept.evaluate({"values": values}, record)
+        if simulated:
+            return simulated[0]
+        if "failed" in value:
+            kind = InputError if value["failed"]["error"] == "InputError" else ModelError
+            return kind(value["failed"]["message"])
+        # kept: the step averages (all the fit uses), no time series (see full_predictions)
+        return {name: RotaryPrediction(None, None, None, p["steps"], p["notes"])
+                for name, p in value["runs"].items()}
 
     def predictions(self, values: dict[str, float]) -> dict[str, RotaryPrediction]:
         key = tuple(sorted(values.items()))
         if key not in self.cache:
-            try:
-                out = {}
-                for run in self.runs:
-                    self.simulations += 1
-                    out[run.name] = predict_rotary_run(run, values)
-                self.cache[key] = out
-            except (ModelError, InputError) as exc:
-                self.cache[key] = exc
+            self.cache[key] = self._evaluate(values)
         found = self.cache[key]
         if isinstance(found, Exception):
             raise found
         return found
+
+    def full_predictions(self, values: dict[str, float]) -> dict[str, RotaryPrediction]:
+        """:meth:`predictions` with the time series (simulated again if they were kept)."""
+        found = self.predictions(values)
+        if all(p.frame is not None for p in found.values()):
+            return found
+        simulated = self._simulate(values)
+        if isinstance(simulated, Exception):
+            raise simulated
+        return simulated
 
     def residuals(self, values: dict[str, float], kinds: tuple[str, ...]) -> np.ndarray:
         preds = self.predictions(values)
@@ -553,11 +609,13 @@ def _get(model, path: str):
 
 
 def fit_rotary(case: RotaryFitCase, runs: list[PreparedRotaryRun],
-               progress=None) -> RotaryFitResult:
+               progress=None, kept: KeptEvaluations | None = None) -> RotaryFitResult:
     """Fit the case's parameters to the step averages of the runs with role ``fit`` and
     predict every run with the result (see the module docstring).
 
-    Deterministic: no random start, finite-difference Jacobians of fixed steps.
+    Deterministic: no random start, finite-difference Jacobians of fixed steps.  With ``kept``
+    (started), every evaluation of the fit runs is kept in its work folder, and the ones it
+    already holds (from an interrupted run of the same fit) are reused.
 
     Raises
     ------
@@ -569,7 +627,7 @@ def fit_rotary(case: RotaryFitCase, runs: list[PreparedRotaryRun],
     fit_runs = [r for r in runs if r.role == "fit"]
     names, bounds, initial, stage_of = _parameters(case, fit_runs[0].case)
     logs = [lo > 0 for lo, _ in bounds]
-    objective = _Objective(case, fit_runs)
+    objective = _Objective(case, fit_runs, kept)
     values = dict(zip(names, initial))
     objective.predictions(values)            # the start must run: else say where it fails
     both = ("torque", "temperature")
@@ -611,6 +669,12 @@ def fit_rotary(case: RotaryFitCase, runs: list[PreparedRotaryRun],
     raw_variance = float(res @ res) / max(res.size - len(names), 1)
     stats = parameter_statistics(jac, res, values=[values[n] for n in names], names=names,
                                  min_residual_variance=1.0)
+    limits = [stages[-1]["at_bound"].get(name) for name in names]
+    # within the Jacobians' step of a constraint, the optimiser cannot tell it from one on it
+    pinned = constraint_failure(values, names, limits, lambda trial: _refusal(fit_runs, trial),
+                                "rotary case", tolerance=DIFFERENCE_STEP)
+    failure += [pinned] if pinned else []
+    drop_constrained(limits, stats["standard_errors"], stats["identifiable"], stats["reasons"])
     for i, name in enumerate(names):
         if not stats["identifiable"][i]:
             notes.append(f"{name} is not identifiable from the fit data: "
@@ -625,9 +689,11 @@ def fit_rotary(case: RotaryFitCase, runs: list[PreparedRotaryRun],
                      "uncertainties (rms): the model does not reproduce the fit data within "
                      "them (a model error, or uncertainties stated too small); the standard "
                      "errors are scaled up by this factor")
-    for message in objective.failures:
-        notes.append(message)
-    predictions = dict(objective.predictions(values))
+    for stage, where in objective.failures.items():   # one note per stage, not per trial
+        more = f", and at {len(where) - 1} more parameter sets" if len(where) > 1 else ""
+        notes.append(f"stage {stage!r}: the model failed at {where[0]}{more}; the optimiser "
+                     "stepped back")
+    predictions = dict(objective.full_predictions(values))
     for run in runs:
         if run.name not in predictions:
             predictions[run.name] = predict_rotary_run(run, values)
@@ -638,7 +704,18 @@ def fit_rotary(case: RotaryFitCase, runs: list[PreparedRotaryRun],
                            np.asarray(stats["correlation"], dtype=float),
                            np.asarray(stats["identifiable"], dtype=bool), stats["reasons"],
                            stages, "failed" if failure else "ok", failure, notes, bounds,
-                           initial, stage_of, raw_variance, objective.simulations, predictions)
+                           initial, stage_of, raw_variance, objective.simulations, predictions,
+                           limits)
+
+
+def _refusal(runs: list[PreparedRotaryRun], values: dict[str, float]) -> str | None:
+    """Why the rotary case refuses these values (for one of the runs), or None."""
+    try:
+        for run in runs:
+            run_case_with(run, values)
+    except InputError as exc:
+        return str(exc)
+    return None
 
 
 def _to_x(values, names, logs, idx=None):
@@ -700,10 +777,9 @@ def _run_stage(objective: _Objective, case: RotaryFitCase, stage, idx, kinds, na
         try:
             return objective.residuals(trial, kinds)
         except (ModelError, InputError) as exc:
-            message = f"stage {stage!r}: the model failed at {_show(trial)} ({exc}); the " \
-                      "optimiser stepped back"
-            if message not in objective.failures:
-                objective.failures.append(message)
+            where = objective.failures.setdefault(stage, [])
+            if f"{_show(trial)} ({exc})" not in where:
+                where.append(f"{_show(trial)} ({exc})")
             return np.full(n_res, PENALTY)
 
     def jacobian(x):
@@ -717,9 +793,13 @@ def _run_stage(objective: _Objective, case: RotaryFitCase, stage, idx, kinds, na
                         x_scale=1.0, method="trf", xtol=1e-4, ftol=1e-6, gtol=1e-8)
     values = _to_values(sol.x, values, names, logs, idx)
     failure = []
+    at_bound = {}
     for j, i in enumerate(idx):
         near = min(sol.x[j] - lo[j], hi[j] - sol.x[j]) <= 1e-3 * (hi[j] - lo[j])
         if sol.active_mask[j] != 0 or near:
+            lower = sol.active_mask[j] < 0 or (sol.active_mask[j] == 0
+                                               and sol.x[j] - lo[j] <= hi[j] - sol.x[j])
+            at_bound[names[i]] = "lower bound" if lower else "upper bound"
             failure.append(f"{names[i]} = {values[names[i]]:.6g} (SI) ended at a bound "
                            f"{list(case.fit.parameters[i].bounds)} in stage {stage!r}: the "
                            "optimum lies outside the bounds or the data do not determine it; "
@@ -733,5 +813,5 @@ def _run_stage(objective: _Objective, case: RotaryFitCase, stage, idx, kinds, na
               "n_residuals": int(n_res), "evaluations": int(sol.nfev),
               "jacobians": int(sol.njev or 0), "cost": float(sol.cost),
               "message": sol.message,
-              "values": {names[i]: values[names[i]] for i in idx}}
+              "values": {names[i]: values[names[i]] for i in idx}, "at_bound": at_bound}
     return values, record, failure

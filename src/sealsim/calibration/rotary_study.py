@@ -28,11 +28,13 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
+from sealsim.calibration.kept import KeptEvaluations
 from sealsim.calibration.rotary_case import RotaryFitCase, expand_dotted
 from sealsim.calibration.rotary_fit import (
     PreparedRotaryRun,
     RotaryFitResult,
     fit_rotary,
+    model_inputs,
     prepare_rotary_run,
     rotary_run_metrics,
     run_case_with,
@@ -121,8 +123,8 @@ class RotaryFitStudy:
 
 
 def rotary_fit_study(case: RotaryFitCase, base_dir: str | Path,
-                     progress: Callable[[str, float, float], None] | None = None
-                     ) -> RotaryFitStudy:
+                     progress: Callable[[str, float, float], None] | None = None,
+                     kept: KeptEvaluations | None = None) -> RotaryFitStudy:
     """Fit rotary-case parameters to the measured speed cycles of a fit case and evaluate it.
 
     Parameters
@@ -133,6 +135,9 @@ def rotary_fit_study(case: RotaryFitCase, base_dir: str | Path,
         Folder the case's relative paths (measurement files) start from.
     progress : callable, optional
         ``progress(stage, evaluations, max_evaluations)``.
+    kept : KeptEvaluations, optional
+        Where the fit keeps its finished evaluations (and finds those of an interrupted run
+        of the same fit): started here, once the runs are prepared.
 
     Returns
     -------
@@ -142,7 +147,9 @@ def rotary_fit_study(case: RotaryFitCase, base_dir: str | Path,
     """
     base = Path(base_dir)
     runs = [prepare_rotary_run(case, spec, base) for spec in case.measurements]
-    result = fit_rotary(case, runs, progress)
+    if kept is not None:
+        kept.start("rotary fit", case, [model_inputs(r) for r in runs])
+    result = fit_rotary(case, runs, progress, kept)
     overlay = fitted_overlay(runs[0], result.value_dict)
     measurements = {r.name: rotary_run_metrics(r, result.predictions[r.name]) for r in runs}
     report = {"parameters": parameter_report(result, _overlay_texts(result.names, overlay)),
@@ -155,7 +162,8 @@ def rotary_fit_study(case: RotaryFitCase, base_dir: str | Path,
         "residual_variance": result.residual_variance,
         "uncertainties": {"torque_Nm": case.fit.torque_uncertainty,
                           "temperature_K": case.fit.temperature_uncertainty},
-        "simulations": result.simulations,
+        "simulations": result.simulations,      # run by this call
+        "evaluations_reused": 0 if kept is None else kept.reused,  # from an interrupted fit
         "numerics": runs[0].case.numerics.model_dump(mode="json"),
         "duty": {r.name: r.duty_deviation() for r in runs},
         "steps": {r.name: len(r.steps) for r in runs},

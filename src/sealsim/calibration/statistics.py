@@ -18,7 +18,12 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["compare_signals", "parameter_report", "parameter_statistics", "repeat_scatter"]
+__all__ = ["compare_signals", "constraint_failure", "drop_constrained", "on_constraint", "parameter_report", "parameter_statistics",
+           "repeat_scatter"]
+
+#: Relative distance from a constraint of the model within which a fitted value sits on it: 10x
+#: the fits' finite-difference steps, which an optimum pressed against it does not get past.
+CONSTRAINT_TOLERANCE = 1e-5
 
 
 def parameter_statistics(jacobian, residuals, *, rcond=1e-8, max_relative_error=0.5,
@@ -119,13 +124,92 @@ def parameter_statistics(jacobian, residuals, *, rcond=1e-8, max_relative_error=
             "singular_values": sv}
 
 
+def on_constraint(values: dict[str, float], names, refusal,
+                  tolerance: float = CONSTRAINT_TOLERANCE) -> dict[str, str]:
+    """The fitted parameters that sit on a constraint of the model: moved by ``tolerance``
+    (relative) to one side, the model refuses them.
+
+    A fit cannot step past a relation between parameters that the model enforces (a Θ law's
+    f_b <= f_a, a Stribeck curve's F_S >= F_C): the trial is refused and the optimiser stays
+    on this side.  Where the data ask for a value beyond it, the optimum ends pressed
+    against it, and the value there is set by the constraint, not determined by the data.
+
+    Parameters
+    ----------
+    values : dict
+        The fitted values by name (SI).
+    names : iterable of str
+        The parameters to check.
+    refusal : callable
+        ``refusal(values)``: why the model refuses these values, or None if it takes them.
+
+    Returns
+    -------
+    dict
+        ``{name: why the model refuses the value beyond}`` of each parameter on a constraint.
+
+    Examples
+    --------
+    >>> def refusal(v):
+    ...     return "f_b must be <= f_a" if v["f_b"] > v["f_a"] else None
+    >>> on_constraint({"f_a": 0.3, "f_b": 0.3}, ["f_a", "f_b"], refusal)
+    {'f_a': 'f_b must be <= f_a', 'f_b': 'f_b must be <= f_a'}
+    >>> on_constraint({"f_a": 0.3, "f_b": 0.2}, ["f_a", "f_b"], refusal)
+    {}
+    """
+    out = {}
+    for name in names:
+        value = values[name]
+        step = tolerance * (abs(value) or 1.0)
+        for trial in (value - step, value + step):
+            why = refusal({**values, name: trial})
+            if why:
+                out[name] = why
+                break
+    return out
+
+
+def constraint_failure(values: dict[str, float], names: list[str], limits: list, refusal,
+                       what: str, tolerance: float = CONSTRAINT_TOLERANCE) -> str | None:
+    """Mark the fitted parameters on a constraint of the model (:func:`on_constraint`; those
+    not already at a bound, ``limits[i]`` None) in ``limits`` as "constraint: WHY", and the
+    failure that says so (None if there is none).  ``what``: the model's name in the text."""
+    free = [name for name, limit in zip(names, limits) if limit is None]
+    pinned = on_constraint(values, free, refusal, tolerance)
+    if not pinned:
+        return None
+    for name, why in pinned.items():
+        limits[names.index(name)] = f"constraint: {why}"
+    shown = " and ".join(f"{name} = {values[name]:.6g}" for name in pinned)
+    return (f"{shown} {'sit' if len(pinned) > 1 else 'sits'} on a constraint of the {what} "
+            f"(one step beyond: {next(iter(pinned.values()))}): the data ask for values "
+            f"beyond it, which the {what} cannot take, so the constraint set them, not the "
+            "data; fix one of them or choose a model that can follow the data")
+
+
+def drop_constrained(limits, standard_errors, identifiable, reasons) -> None:
+    """Mark the parameters that sit on a constraint (``limits[i]`` "constraint: ...", see
+    :func:`on_constraint`) as not determined, in place: no standard error (the Jacobian's
+    finite differences step past the constraint into refused trials, which gave standard
+    errors of 1e-13), not identifiable, with the reason."""
+    for i, limit in enumerate(limits):
+        if limit and limit.startswith("constraint"):
+            standard_errors[i] = np.nan
+            identifiable[i] = False
+            reasons[i] = [*reasons[i], "it sits on a constraint of the model, which set its "
+                                       "value (see the failure)"]
+
+
 def parameter_report(result, texts: dict[str, str]) -> dict:
     """The ``parameters`` table of a fit's ``report.json``: per fitted parameter its value,
     the value as written in a case file (``texts[name]``), stage, start, bounds, standard
     errors (None where infinite) and identifiability with its reasons.
 
     ``result`` is a fit outcome with ``names``, ``values``, ``standard_errors``, ``stage_of``,
-    ``initial``, ``bounds``, ``identifiable`` and ``reasons`` (friction and rotary fits alike).
+    ``initial``, ``bounds``, ``identifiable``, ``reasons`` and ``limits`` (friction and rotary
+    fits alike).  ``at_limit`` says where a value sits on a bound ("lower bound", "upper
+    bound") or on a constraint of the model ("constraint: WHY"): there the data did not
+    determine it (None elsewhere).
     """
     table = {}
     for i, name in enumerate(result.names):
@@ -137,6 +221,7 @@ def parameter_report(result, texts: dict[str, str]) -> dict:
             "relative_standard_error": (se / abs(value) if np.isfinite(se) and value
                                         else None),
             "identifiable": bool(result.identifiable[i]),
+            "at_limit": result.limits[i],
             "notes": result.reasons[i]}
     return table
 

@@ -29,11 +29,13 @@ from sealsim.calibration.friction_fit import (
     FitResult,
     PreparedRun,
     fit_friction,
+    model_inputs,
     predict_run,
     prepare_run,
     run_metrics,
     with_law_table,
 )
+from sealsim.calibration.kept import KeptEvaluations
 from sealsim.calibration.statistics import parameter_report, repeat_scatter
 from sealsim.cases import load_toml, validate_case
 from sealsim.errors import InputError
@@ -101,7 +103,8 @@ class FrictionFitStudy:
 
 def friction_fit_study(case: FrictionFitCase, base_dir: str | Path,
                        progress: Callable[[str, float, float], None] | None = None,
-                       cache_dir: str | Path | None = None) -> FrictionFitStudy:
+                       cache_dir: str | Path | None = None,
+                       kept: KeptEvaluations | None = None) -> FrictionFitStudy:
     """Fit a friction law to the measurements of a fit case and evaluate the fit.
 
     Parameters
@@ -114,6 +117,9 @@ def friction_fit_study(case: FrictionFitCase, base_dir: str | Path,
         ``progress(task, done, total)``.
     cache_dir : path, optional
         Folder of the FE map cache (default: the map's own or sealsim's default cache).
+    kept : KeptEvaluations, optional
+        Where the fit keeps its finished evaluations (and finds those of an interrupted run
+        of the same fit): started here, once the runs are prepared.
 
     Returns
     -------
@@ -127,7 +133,9 @@ def friction_fit_study(case: FrictionFitCase, base_dir: str | Path,
     for name in dict.fromkeys(m.contact for m in case.measurements):
         maps[name] = _contact_map(case, base, cache_dir, report_map, name)
     runs = [prepare_run(case, spec, maps[spec.contact], base) for spec in case.measurements]
-    result = fit_friction(case, runs, progress)
+    if kept is not None:
+        kept.start("friction fit", case, [model_inputs(r) for r in runs])
+    result = fit_friction(case, runs, progress, kept)
     law = make_law(result.params)
     # fitted roughness, film factor, ...: the friction table of the fitted values
     predictions = {r.name: predict_run(law, r) for r in with_law_table(law, runs)}

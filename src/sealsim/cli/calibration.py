@@ -8,6 +8,7 @@ errors and why a fit failed.
 
 from __future__ import annotations
 
+import contextlib
 from pathlib import Path
 
 import typer
@@ -18,6 +19,11 @@ from sealsim.cli.friction import friction_app
 from sealsim.cli.pneumatic import pneumatic_app
 from sealsim.cli.rotary import rotary_app
 
+FORCE_HELP = ("Replace an existing result folder (without --resume: also drop the finished "
+              "evaluations of an interrupted fit).")
+RESUME_HELP = ("Continue an interrupted fit: reuse its finished evaluations, compute only the "
+               "missing ones.")
+
 
 @friction_app.command("fit")
 @guarded
@@ -26,19 +32,25 @@ def fit(
                                           "tudelft_oring.toml."),
     out: Path = typer.Option(..., "--out", "-o", help="Result folder (must not hold results "
                                                       "unless --force)."),
-    force: bool = typer.Option(False, "--force", help="Replace an existing result folder."),
+    force: bool = typer.Option(False, "--force", help=FORCE_HELP),
     quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress bar."),
+    resume: bool = typer.Option(False, "--resume", help=RESUME_HELP),
 ) -> None:
-    """Fit friction-law parameters to measurements; report the error on held-out runs."""
+    """Fit friction-law parameters to measurements; report the error on held-out runs.
+
+    Finished evaluations are kept in a hidden work folder next to OUT (.OUT.fit) until the
+    results are written: after Ctrl-C or a killed process, run the same command with --resume.
+    """
     from sealsim.runs.calibration import run_friction_fit_file
 
-    with variant_progress("fit", quiet, lambda _, d, n: f"{d:g}/{n:g}") as progress:
-        summary = run_friction_fit_file(case, out, force, progress)
+    with variant_progress("fit", quiet, lambda _, d, n: f"{d:g}/{n:g}") as progress, \
+            _resumable(out):
+        summary = run_friction_fit_file(case, out, force, progress, resume=resume)
     report = summary["report"]
     for name, p in report["parameters"].items():
         value, se, unit = _in_case_unit(p)
-        console.print(f"{name} = {value:.6g} ± {se:.2g}{unit} (1 s.e.)" if se is not None
-                      else f"{name} = {value:.6g}{unit} (not determined)")
+        console.print((f"{name} = {value:.6g} ± {se:.2g}{unit} (1 s.e.)" if se is not None
+                       else f"{name} = {value:.6g}{unit} (not determined)") + _limit(p))
     for name, m in report["measurements"].items():
         error = "-" if m["rel_error"] is None else f"{100 * m['rel_error']:+.1f} %"
         r2 = "-" if m["r2"] is None else f"{m['r2']:.3f}"
@@ -63,11 +75,29 @@ def fit(
                       f"{c['F_measured_std_N']:.3f} N (1 std of a run, cv {cv}), model "
                       f"{c['F_predicted_mean_N']:.3f} N, error of the mean {error} ({in_std})")
     print_notes(summary["warnings"], indent="", label="warning")
+    if summary["evaluations"]["reused"]:
+        console.print(f"{summary['evaluations']['reused']} evaluations reused from the "
+                      "interrupted fit")
     console.print(f"results written to {out}")
     if summary["status"] != "ok":
         for text in summary["failure"]:
             err_console.print(Text("fit failed: ", style="bold red") + Text(text))
         raise typer.Exit(1)
+
+
+@contextlib.contextmanager
+def _resumable(out: Path):
+    """After Ctrl-C (or SIGTERM) during a fit: say whether evaluations were kept."""
+    from sealsim.calibration.kept import KeptEvaluations, work_folder_for
+
+    try:
+        yield
+    except KeyboardInterrupt:
+        kept = KeptEvaluations(work_folder_for(out), resume=True).count()
+        if kept:
+            err_console.print(Text(f"{kept} finished evaluations are kept; continue with the "
+                                   "same command and --resume", style="yellow"))
+        raise
 
 
 @pneumatic_app.command("compare")
@@ -109,24 +139,29 @@ def rotary_fit(
                                           "calibration/rotary_synthetic.toml."),
     out: Path = typer.Option(..., "--out", "-o", help="Result folder (must not hold results "
                                                       "unless --force)."),
-    force: bool = typer.Option(False, "--force", help="Replace an existing result folder."),
+    force: bool = typer.Option(False, "--force", help=FORCE_HELP),
     quiet: bool = typer.Option(False, "--quiet", "-q", help="No progress bar."),
+    resume: bool = typer.Option(False, "--resume", help=RESUME_HELP),
 ) -> None:
     """Fit lip seal parameters to measured speed cycles (torque, spring-groove temperature);
-    report the step-average errors, also on held-out runs."""
+    report the step-average errors, also on held-out runs.
+
+    Finished simulations are kept in a hidden work folder next to OUT (.OUT.fit) until the
+    results are written: after Ctrl-C or a killed process, run the same command with --resume.
+    """
     from sealsim.runs.calibration import run_rotary_fit_file
 
     with variant_progress("stage", quiet, lambda _, d, n: f"{d:g}/{n:g} evaluations") \
-            as progress:
-        summary = run_rotary_fit_file(case, out, force, progress)
+            as progress, _resumable(out):
+        summary = run_rotary_fit_file(case, out, force, progress, resume=resume)
     report = summary["report"]
     for name, p in report["parameters"].items():
         shown = f"{name} = {_rounded(p['text'], p['value'])}"
         if p["relative_standard_error"] is None:
-            console.print(f"{shown} (not determined)")
+            console.print(f"{shown} (not determined)" + _limit(p))
         else:
             console.print(f"{shown} ± {100 * p['relative_standard_error']:.2g} % (1 s.e.)"
-                          + ("" if p["identifiable"] else " -- not identifiable"))
+                          + ("" if p["identifiable"] else " -- not identifiable") + _limit(p))
     for name, m in report["measurements"].items():
         if m["torque_rel_error_mean"] is None:  # standstill only: no relative error
             line = f"{name} ({m['role']}): no step with the shaft turning"
@@ -140,11 +175,24 @@ def rotary_fit(
                      f"{m['T_groove_error_max_K']:.2f} K")
         console.print(line)
     print_notes(summary["warnings"], indent="", label="warning")
-    console.print(f"{summary['simulations']} simulations; results written to {out}")
+    reused = summary["evaluations"]["reused"]
+    console.print(f"{summary['simulations']} simulations"
+                  + (f" ({reused} parameter sets reused from the interrupted fit)" if reused
+                     else "") + f"; results written to {out}")
     if summary["status"] != "ok":
         for text in summary["failure"]:
             err_console.print(Text("fit failed: ", style="bold red") + Text(text))
         raise typer.Exit(1)
+
+
+def _limit(parameter) -> str:
+    """" -- at its upper bound" (or lower bound, or on a constraint) of a fitted parameter the
+    data did not determine, else ""."""
+    limit = parameter.get("at_limit")
+    if not limit:
+        return ""
+    return (" -- set by a constraint of the model, not by the data"
+            if limit.startswith("constraint") else f" -- at its {limit}")
 
 
 def _rounded(text, value: float) -> str:

@@ -465,6 +465,8 @@ def material_fit(
             value = f"{p['value'] * scale:.6g}"
             err = f" ± {se * scale:.2g}" if se is not None else " (not determined)"
             flag = "" if p["identifiable"] else "  NOT IDENTIFIABLE"
+            if p.get("at_limit"):
+                flag += f" (on its {p['at_limit']}: the model allows no better fit)"
             _say(f"  {name} = {value}{err} {shown}{flag}")
         for mode, m in report["hyperelastic"]["modes"].items():
             r2 = "-" if m["r2"] is None else f"{m['r2']:.4f}"

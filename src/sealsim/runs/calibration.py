@@ -38,14 +38,16 @@ and model).
 
 from __future__ import annotations
 
+import contextlib
 import math
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 import pandas as pd
 import tomli_w
 
+from sealsim.calibration.kept import KeptEvaluations, file_digests, work_folder_for
 from sealsim.calibration.pneumatic_compare import compare_inputs, compare_pneumatic_file
 from sealsim.calibration.rotary_study import load_rotary_fit_case, rotary_fit_study
 from sealsim.calibration.study import friction_fit_study, load_fit_case
@@ -68,7 +70,7 @@ TEMPERATURE_BAND = 2.0
 
 def run_friction_fit_file(path: str | Path, out: str | Path, force: bool = False,
                           progress: Callable[[str, float, float], None] | None = None,
-                          cache_dir: str | Path | None = None) -> dict:
+                          cache_dir: str | Path | None = None, resume: bool = False) -> dict:
     """Fit a friction law to measurements and write the result folder ``out``.
 
     Parameters
@@ -83,25 +85,32 @@ def run_friction_fit_file(path: str | Path, out: str | Path, force: bool = False
         ``progress(task, done, total)``.
     cache_dir : path, optional
         Cache folder of FE contact maps built from a structure case.
+    resume : bool
+        Continue an interrupted fit: reuse the evaluations it kept (:func:`keep_evaluations`).
 
     Returns
     -------
     dict
-        ``{"status", "failure", "warnings", "report"}``; status "failed" when a parameter ended
-        at a bound or the optimiser stopped (results are still written, with the reasons).
+        ``{"status", "failure", "warnings", "report", "evaluations"}``; status "failed" when a
+        parameter ended at a bound or the optimiser stopped (results are still written, with
+        the reasons); ``evaluations``: how many were ``computed`` and ``reused``.
     """
     path = Path(path)
     case = load_fit_case(path)
-    folder = ResultFolder(out, force, inputs=fit_case_inputs(case, path))  # before computing
-    study = friction_fit_study(case, path.parent, progress, cache_dir)
-    result = study.result
-    fit_names = ", ".join(r.name for r in study.runs if r.spec.role == "fit")
-    fitted_text = (f"# Friction parameters fitted by 'sealsim friction fit {_comment(path.name)}'"
-                   f"\n# on {_comment(fit_names)}; status {result.status}.\n"
-                   "# Use the [friction] table in a friction case, or as friction = {...} of a "
-                   "pneumatic seal.\n\n" + tomli_w.dumps(study.fitted))
-    title = case.title or path.stem
-    with folder:
+    inputs = fit_case_inputs(case, path)
+    folder = ResultFolder(out, force, inputs=inputs)  # before computing
+    kept = KeptEvaluations(work_folder_for(out), resume=resume, discard=force,
+                           source=str(path), files=file_digests(inputs))
+    with keep_evaluations(kept), folder:
+        study = friction_fit_study(case, path.parent, progress, cache_dir, kept)
+        result = study.result
+        fit_names = ", ".join(r.name for r in study.runs if r.spec.role == "fit")
+        fitted_text = (f"# Friction parameters fitted by 'sealsim friction fit "
+                       f"{_comment(path.name)}'\n# on {_comment(fit_names)}; status "
+                       f"{result.status}.\n# Use the [friction] table in a friction case, or "
+                       "as friction = {...} of a pneumatic seal.\n\n"
+                       + tomli_w.dumps(study.fitted))
+        title = case.title or path.stem
         folder.write_text("fitted_parameters.toml", fitted_text)
         folder.write_json("report.json", study.report)
         folder.write_json("fit.json", study.diagnostics)
@@ -131,11 +140,12 @@ def run_friction_fit_file(path: str | Path, out: str | Path, force: bool = False
             case, header=f"Resolved fit case of {path.name} (all defaults filled in); paths "
                          f"relative to {str(path.parent.resolve())}"))
     return {"status": result.status, "failure": result.failure, "warnings": result.warnings,
-            "report": study.report}
+            "report": study.report, "evaluations": kept.counts()}
 
 
 def run_rotary_fit_file(path: str | Path, out: str | Path, force: bool = False,
-                        progress: Callable[[str, float, float], None] | None = None) -> dict:
+                        progress: Callable[[str, float, float], None] | None = None,
+                        resume: bool = False) -> dict:
     """Fit rotary-case parameters to measured speed cycles and write the result folder ``out``.
 
     Parameters
@@ -148,29 +158,34 @@ def run_rotary_fit_file(path: str | Path, out: str | Path, force: bool = False,
         Replace existing results.
     progress : callable, optional
         ``progress(stage, evaluations, max_evaluations)``.
+    resume : bool
+        Continue an interrupted fit: reuse the simulations it kept (:func:`keep_evaluations`).
 
     Returns
     -------
     dict
-        ``{"status", "failure", "warnings", "report", "simulations"}``; status "failed" when a
-        parameter ended at a bound or the optimiser stopped (results are still written, with
-        the reasons).
+        ``{"status", "failure", "warnings", "report", "simulations", "evaluations"}``; status
+        "failed" when a parameter ended at a bound or the optimiser stopped (results are still
+        written, with the reasons); ``simulations``: those run by this call; ``evaluations``:
+        how many parameter sets were ``computed`` and ``reused``.
     """
     path = Path(path)
     case = load_rotary_fit_case(path)
     base = path.parent
     inputs = [path] + [base / m.file for m in case.measurements]
     folder = ResultFolder(out, force, inputs=inputs)   # refused before anything is computed
-    study = rotary_fit_study(case, base, progress)
-    result, runs, measurements = study.result, study.runs, study.report["measurements"]
-    fit_names = ", ".join(r.name for r in runs if r.role == "fit")
-    fitted_text = (f"# Rotary parameters fitted by 'sealsim rotary fit {_comment(path.name)}' "
-                   f"on {_comment(fit_names)}; status {result.status}.\n"
-                   "# Merge these tables into a rotary case (or put them under "
-                   "[variants.fitted]).\n\n" + tomli_w.dumps(study.overlay))
-    title = case.title or path.stem
-    step_rows = study.step_rows()
-    with folder:
+    kept = KeptEvaluations(work_folder_for(out), resume=resume, discard=force,
+                           source=str(path), files=file_digests(inputs))
+    with keep_evaluations(kept), folder:
+        study = rotary_fit_study(case, base, progress, kept)
+        result, runs, measurements = study.result, study.runs, study.report["measurements"]
+        fit_names = ", ".join(r.name for r in runs if r.role == "fit")
+        fitted_text = (f"# Rotary parameters fitted by 'sealsim rotary fit "
+                       f"{_comment(path.name)}' on {_comment(fit_names)}; status "
+                       f"{result.status}.\n# Merge these tables into a rotary case (or put "
+                       "them under [variants.fitted]).\n\n" + tomli_w.dumps(study.overlay))
+        title = case.title or path.stem
+        step_rows = study.step_rows()
         folder.write_text("fitted_parameters.toml", fitted_text)
         folder.write_json("report.json", study.report)
         folder.write_json("fit.json", study.diagnostics)
@@ -204,7 +219,8 @@ def run_rotary_fit_file(path: str | Path, out: str | Path, force: bool = False,
             case, header=f"Resolved rotary fit case of {path.name} (all defaults filled in); "
                          f"paths relative to {str(base.resolve())}"))
     return {"status": result.status, "failure": result.failure, "warnings": result.warnings,
-            "report": study.report, "simulations": result.simulations}
+            "report": study.report, "simulations": result.simulations,
+            "evaluations": kept.counts()}
 
 
 def run_pneumatic_compare_file(path: str | Path, out: str | Path, force: bool = False,
@@ -238,6 +254,22 @@ def run_pneumatic_compare_file(path: str | Path, out: str | Path, force: bool = 
         folder.savefig("comparison.png", plot_signals(comparison.time, comparison.curves,
                                                       comparison.title))
     return comparison.report
+
+
+@contextlib.contextmanager
+def keep_evaluations(kept: KeptEvaluations) -> Iterator[None]:
+    """While a fit computes (inside its result folder's lock), its finished evaluations are
+    kept in the work folder ``.OUT.fit`` next to the result folder
+    (:class:`~sealsim.calibration.kept.KeptEvaluations`): a fit interrupted by Ctrl-C, a
+    killed process or a failure continues with the same command and ``--resume``.  The work
+    folder is dropped once the results are committed, or if the fit kept nothing in it."""
+    try:
+        yield
+    except BaseException:
+        if kept.started:         # else it may be another run's (this one never held the lock)
+            kept.remove_if_empty()
+        raise
+    kept.remove()
 
 
 def _comment(text: str) -> str:
