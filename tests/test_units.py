@@ -35,6 +35,13 @@ REL = 1e-12
         ("6 bar", "pressure", 6e5),
         ("12 mPa*s", "dynamic_viscosity", 0.012),
         ("68 mm**2/s", "kinematic_viscosity", 68e-6),
+        # a length's exponent as data sheets write it: 'mm2' is mm², not an unknown unit
+        ("46 mm2/s", "kinematic_viscosity", 46e-6),
+        ("880 kg/m3", "density", 880.0),
+        ("12 W/(m2 K)", "heat_transfer_coefficient", 12.0),
+        ("2.5 N/mm2", "pressure", 2.5e6),
+        ("15 cm3", "volume", 15e-6),
+        ("100 mmH2O", "pressure", 980.665),       # a unit whose name holds a digit stays
         ("10 Hz", "frequency", 10.0),  # Hz is fine where a frequency is meant
         ("  -1.5e3 N  ", "force", -1500.0),  # sign, exponent, surrounding blanks
         ("0.3", "dimensionless", 0.3),

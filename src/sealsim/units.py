@@ -38,16 +38,32 @@ ZERO_CELSIUS_K = 273.15
 STANDARD_ATMOSPHERE_PA = 101325.0
 
 
+#: A length unit with a plain exponent digit as data sheets write it (``mm2/s``, ``kg/m3``,
+#: ``N/mm2``, ``W/(m2 K)``, ``cm3``): pint knows no unit ``mm2``; it is read as ``mm**2``.
+_PLAIN_EXPONENT = re.compile(r"(?<![A-Za-z0-9_µ])((?:[kcdmuµ]?m)|in|ft)([23])(?![0-9A-Za-z_])")
+
+
+def _plain_exponents(text: str) -> str:
+    """``mm2/s`` -> ``mm**2/s``: the exponent digit of a length unit (a pint preprocessor).
+
+    >>> _plain_exponents("W/(m2 K)"), _plain_exponents("kg/m3"), _plain_exponents("mmH2O")
+    ('W/(m**2 K)', 'kg/m**3', 'mmH2O')
+    """
+    return _PLAIN_EXPONENT.sub(r"\1**\2", text)
+
+
 @functools.cache
 def unit_registry():
     """The pint ``UnitRegistry`` of sealsim (created on first use; also ``sealsim.units.ureg``).
 
     Offset units convert to base units automatically (``"55 degC"`` -> 328.15 K); ``rev`` and
-    ``rps`` are defined.
+    ``rps`` are defined; a length unit's plain exponent digit is read as its power
+    (``"46 mm2/s"``, ``"880 kg/m3"``, as data sheets write them).
     """
     import pint
 
-    registry = pint.UnitRegistry(autoconvert_offset_to_baseunit=True)
+    registry = pint.UnitRegistry(autoconvert_offset_to_baseunit=True,
+                                 preprocessors=[_plain_exponents])
     registry.define("rev = revolution")
     registry.define("rps = revolution / second")
     return registry
