@@ -50,7 +50,7 @@ def guarded(func):
                 text = (f"{what} after the results were written: "
                         f"{', '.join(str(p) for p in written)} holds the complete new results")
             else:
-                text = f"{what}: no results were written; the output folder is unchanged"
+                text = f"{what}: no results were written; the --out folder or file is unchanged"
             err_console.print(Text(text, style="bold red"))
             raise typer.Exit(getattr(exc, "exit_code", 130)) from None
 
