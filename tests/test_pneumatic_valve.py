@@ -133,3 +133,24 @@ def test_spool_response_is_the_exact_first_order_lag():
     assert spool.scalar(0.03) == pytest.approx(expected[-1], abs=1e-14)
     jump = SpoolMotion([0.1], [1.0], 0.0, 0.0, initial=-1.0)
     assert jump([0.0999, 0.1]).tolist() == [-1.0, 1.0]
+
+
+def test_a_run_says_which_valve_data_are_estimates():
+    # b and the spool's time constant belong to the valve's data sheet: a case that leaves
+    # them out runs with the estimated defaults and its notes say so (they were silent)
+    from sealsim.cases import load_toml, validate_case
+    from sealsim.pneumatic import PneumaticCase, simulate
+
+    from pathlib import Path
+
+    data = load_toml(Path(__file__).parents[1] / "examples" / "pneumatic" / "cylinder_32.toml")
+    data.pop("variants")
+    data["controller"]["duration"] = "0.05 s"
+    given = simulate(validate_case(PneumaticCase, data))
+    assert not [n for n in given.notes if n.startswith("valve:")]
+    for field in ("critical_pressure_ratio", "time_constant"):
+        data["valve"].pop(field)
+    notes = [n for n in simulate(validate_case(PneumaticCase, data)).notes
+             if n.startswith("valve:")]
+    assert len(notes) == 1
+    assert "critical_pressure_ratio = 0.3" in notes[0] and "time_constant = 0.005 s" in notes[0]

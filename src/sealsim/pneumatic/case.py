@@ -216,17 +216,28 @@ class MeterOutModel(CaseModel):
     conductance_b: Q("flow_conductance", gt=0) | None = None
 
 
+#: Valve fields whose defaults are estimates, not data of the case's valve: a run whose case
+#: leaves them out says so (:meth:`ValveModel.assumed_notes`).
+VALVE_ESTIMATES = ("critical_pressure_ratio", "time_constant")
+
+
 class ValveModel(CaseModel):
     """Directional valve with ISO 6358 flow paths and a switching dynamics."""
 
     type: Literal["5/2", "5/3"] = "5/2"
     centre: Literal["closed", "exhaust", "pressure"] = "closed"
     conductance: Q("flow_conductance", gt=0)
-    critical_pressure_ratio: Q("dimensionless", ge=0, lt=1) = 0.3
-    subsonic_index: Q("dimensionless", gt=0, le=1) = 0.5
+    critical_pressure_ratio: Q("dimensionless", ge=0, lt=1) = Field(0.3, description=(
+        "ISO 6358 critical pressure ratio b of the valve's data sheet; default 0.3, an "
+        "estimate within the 0.2-0.5 of directional valves (a run without it says so)"))
+    subsonic_index: Q("dimensionless", gt=0, le=1) = Field(0.5, description=(
+        "ISO 6358-1:2013 subsonic index m; 0.5 where it was not measured, as the standard "
+        "takes it"))
     laminar_ratio: Q("dimensionless", gt=0, lt=1) = 0.999
-    time_constant: Q("time", ge=0) = 0.005
-    delay: Q("time", ge=0) = 0.0
+    time_constant: Q("time", ge=0) = Field(0.005, description=(
+        "first-order lag of the spool's opening; default 5 ms, an estimate (data sheets give "
+        "switching times of a few to some tens of ms; a run without it says so)"))
+    delay: Q("time", ge=0) = Field(0.0, description="dead time before the spool moves")
     meter_out: MeterOutModel | None = None
 
     @model_validator(mode="after")
@@ -235,6 +246,17 @@ class ValveModel(CaseModel):
             raise ValueError(f"laminar_ratio ({self.laminar_ratio:g}) must be larger than "
                              f"critical_pressure_ratio ({self.critical_pressure_ratio:g})")
         return self
+
+    def assumed_notes(self) -> list[str]:
+        """A note naming the fields of :data:`VALVE_ESTIMATES` the case left at their
+        estimated defaults (empty when it gives them)."""
+        left = [f"{name} = {getattr(self, name):g}" + (" s" if name == "time_constant" else "")
+                for name in VALVE_ESTIMATES if name not in self.model_fields_set]
+        if not left:
+            return []
+        return [f"valve: {', '.join(left)} are estimates, not your valve's: give them from its "
+                "data sheet ([valve] critical_pressure_ratio, the ISO 6358 b; time_constant, "
+                "the switching time)"]
 
 
 # -- controller -------------------------------------------------------------------------------

@@ -142,7 +142,8 @@ def run(system: PneumaticSystem, progress=None) -> PneumaticResult:
     system.check_chamber_volumes(frame["time_s"].to_numpy(), frame["x_m"].to_numpy())
     balances = _results.balances(system, segments)
     seals = system.seals
-    notes = ([f"seal {s.name!r}: {n}" for s in seals for n in s.notes] + system.thermal_notes
+    notes = (system.case.valve.assumed_notes()
+             + [f"seal {s.name!r}: {n}" for s in seals for n in s.notes] + system.thermal_notes
              + _results.notes(system, diag)
              + unfinished_strokes(frame["time_s"].to_numpy(), frame["x_m"].to_numpy(),
                                   system.case))
