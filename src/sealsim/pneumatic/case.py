@@ -231,8 +231,8 @@ class ValveModel(CaseModel):
         "ISO 6358 critical pressure ratio b of the valve's data sheet; default 0.3, an "
         "estimate within the 0.2-0.5 of directional valves (a run without it says so)"))
     subsonic_index: Q("dimensionless", gt=0, le=1) = Field(0.5, description=(
-        "ISO 6358-1:2013 subsonic index m; 0.5 where it was not measured, as the standard "
-        "takes it"))
+        "ISO 6358-1:2013 subsonic index m; default 0.5, the ellipse of ISO 6358:1989 that "
+        "the 2013 edition generalises"))
     laminar_ratio: Q("dimensionless", gt=0, lt=1) = 0.999
     time_constant: Q("time", ge=0) = Field(0.005, description=(
         "first-order lag of the spool's opening; default 5 ms, an estimate (data sheets give "
