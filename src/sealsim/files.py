@@ -47,8 +47,9 @@ from sealsim.errors import (
 
 __all__ = ["CF_CONVENTIONS", "JSON_DIGITS", "MAX_CASE_BYTES", "MAX_DATA_BYTES", "USER_UMASK",
            "ResultFile", "ResultTarget", "atomic_write_bytes", "atomic_write_text",
-           "check_input_file", "committed_folders", "json_ready", "netcdf_ready",
-           "os_error_reason", "raise_terminated", "read_input_bytes", "read_input_text"]
+           "check_input_file", "committed_folders", "file_digests", "interrupted_work_left",
+           "json_ready", "netcdf_ready", "os_error_reason", "raise_terminated",
+           "read_input_bytes", "read_input_text", "resume_refused"]
 
 #: The process's umask: mkstemp/mkdtemp create private (0600/0700) entries, written files get
 #: the user's normal modes (0o666 & ~USER_UMASK).
@@ -191,6 +192,50 @@ def read_input_text(path: str | Path, what: str, limit: int = MAX_CASE_BYTES,
     except UnicodeDecodeError as exc:
         raise InputError(f"{what} {str(path)!r} is not UTF-8 text (byte {exc.start}); save it "
                          "as UTF-8") from None
+
+
+# -- work folders of long work that resumes (studies, fits) -------------------------------------
+def file_digests(paths: Iterable[str | Path]) -> dict[str, str]:
+    """``{path: sha256 of its content}`` of the files a run reads, part of the fingerprint of
+    its work folder (a folder or a missing file is left out: its reader names it).
+
+    Examples
+    --------
+    >>> import tempfile, pathlib
+    >>> f = pathlib.Path(tempfile.mkdtemp()) / "cycle.csv"
+    >>> _ = f.write_text("time_s,speed_rpm")
+    >>> digests = file_digests([f, f.parent / "missing.csv"])
+    >>> list(digests) == [str(f)], len(digests[str(f)])
+    (True, 64)
+    """
+    import hashlib
+
+    return {str(p): hashlib.sha256(read_input_bytes(p, "file", MAX_DATA_BYTES)).hexdigest()
+            for p in paths if Path(p).is_file()}
+
+
+def interrupted_work_left(kind: str, items: str, found: int, folder: str | Path) \
+        -> ResultExistsError:
+    """The refusal of a run that finds the finished ``items`` of an interrupted ``kind`` (a
+    study, a fit) in its work folder without ``--resume`` or ``--force``."""
+    return ResultExistsError(
+        f"an interrupted {kind} left {found} finished {items} in {str(folder)!r}; pass "
+        f"--resume to continue it (only the missing {items} are computed) or --force to "
+        "start over")
+
+
+def resume_refused(kind: str, items: str, found: int, folder: str | Path, old: dict,
+                   files: dict[str, str], otherwise: str = "") -> InputError:
+    """The refusal of ``--resume`` when the work folder's fingerprint is not the run's: names
+    the input files whose content changed since (``old["files"]`` against ``files``, both
+    :func:`file_digests`), else says ``otherwise``."""
+    before = old.get("files") or {}
+    changed = sorted(p for p in {*before, *files} if before.get(p) != files.get(p))
+    why = f"; changed since: {', '.join(map(repr, changed))}" if changed else otherwise
+    return InputError(
+        f"cannot resume: the {found} finished {items} in {str(folder)!r} belong to another "
+        f"{kind} or to an earlier version of this one ({old.get('source', 'unknown source')})"
+        f"{why}; run it without --resume and with --force to start over")
 
 
 def json_ready(value: Any, digits: int | None = None) -> Any:

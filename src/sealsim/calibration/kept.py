@@ -31,33 +31,22 @@ import hashlib
 import json
 import shutil
 import time
-from collections.abc import Callable, Iterable
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from sealsim import __version__
-from sealsim.errors import InputError, ResultExistsError
-from sealsim.files import MAX_DATA_BYTES, atomic_write_bytes, read_input_bytes
+from sealsim.files import atomic_write_bytes, interrupted_work_left, resume_refused
 
-__all__ = ["KeptEvaluations", "file_digests", "fingerprint", "work_folder_for"]
+__all__ = ["KeptEvaluations", "fingerprint", "work_folder_for"]
 
 
 def work_folder_for(result: str | Path) -> Path:
     """The work folder of result folder ``result``: ``.NAME.fit`` next to it."""
     result = Path(result).resolve()
     return result.with_name(f".{result.name}.fit")
-
-
-def file_digests(paths: Iterable[str | Path]) -> dict[str, str]:
-    """``{path: sha256 of its content}`` of the files a fit reads (a folder or a missing file
-    is left out: its reader names it)."""
-    out = {}
-    for p in paths:
-        if Path(p).is_file():
-            out[str(p)] = hashlib.sha256(read_input_bytes(p, "file", MAX_DATA_BYTES)).hexdigest()
-    return out
 
 
 def fingerprint(*parts: Any) -> str:
@@ -119,8 +108,8 @@ class KeptEvaluations:
     source : str
         The fit case file (for the message of a refused resume).
     files : dict, optional
-        :func:`file_digests` of the files the fit reads (part of its fingerprint); a resume
-        refused because one changed names it.
+        :func:`sealsim.files.file_digests` of the files the fit reads (part of its
+        fingerprint); a resume refused because one changed names it.
 
     Raises
     ------
@@ -142,10 +131,7 @@ class KeptEvaluations:
         self._seen: dict[str, Any] = {}
         found = self.count()
         if found and not resume and not discard:
-            raise ResultExistsError(
-                f"an interrupted fit left {found} finished evaluations in {str(self.path)!r}; "
-                "pass --resume to continue it (only the missing evaluations are computed) or "
-                "--force to start over")
+            raise interrupted_work_left("fit", "evaluations", found, self.path)
 
     def count(self) -> int:
         """Number of evaluations kept in the work folder."""
@@ -170,15 +156,9 @@ class KeptEvaluations:
                 old = {}
             if self.resume and self.count():
                 if old.get("fingerprint") != key:
-                    before, now = old.get("files") or {}, self.files
-                    changed = sorted(p for p in {*before, *now} if before.get(p) != now.get(p))
-                    why = (f"; changed since: {', '.join(map(repr, changed))}" if changed
-                           else " (its case, its contact maps or sealsim changed)")
-                    raise InputError(
-                        f"cannot resume: the {self.count()} finished evaluations in "
-                        f"{str(self.path)!r} belong to another fit or to an earlier version "
-                        f"of this one ({old.get('source', 'unknown source')}){why}; run it "
-                        "without --resume and with --force to start over")
+                    raise resume_refused("fit", "evaluations", self.count(), self.path, old,
+                                         self.files, " (its case, its contact maps or sealsim "
+                                         "changed)")
                 self._key = key
                 return
             shutil.rmtree(self.path)

@@ -47,11 +47,12 @@ from pathlib import Path
 import pandas as pd
 import tomli_w
 
-from sealsim.calibration.kept import KeptEvaluations, file_digests, work_folder_for
+from sealsim.calibration.kept import KeptEvaluations, work_folder_for
 from sealsim.calibration.pneumatic_compare import compare_inputs, compare_pneumatic_file
 from sealsim.calibration.rotary_study import load_rotary_fit_case, rotary_fit_study
 from sealsim.calibration.study import friction_fit_study, load_fit_case
 from sealsim.cases import dump_case_toml
+from sealsim.files import file_digests
 from sealsim.output import ResultFolder
 from sealsim.plotting.calibration import (
     plot_overlay,

@@ -82,7 +82,7 @@ from sealsim.cases import (
     validate_case,
 )
 from sealsim.errors import InputError
-from sealsim.files import MAX_DATA_BYTES, read_input_bytes, read_input_text
+from sealsim.files import file_digests, read_input_text
 from sealsim.studies import design as doe
 from sealsim.studies import expressions
 from sealsim.studies.models import MODELS
@@ -382,8 +382,7 @@ class Study:
     def file_digests(self) -> dict[str, str]:
         """``{path: sha256 of its content}`` of every file the case references
         (:meth:`referenced_files`)."""
-        return {str(p): hashlib.sha256(read_input_bytes(p, "file", MAX_DATA_BYTES)).hexdigest()
-                for p in self.referenced_files()}
+        return file_digests(self.referenced_files())
 
     def fingerprint(self, digests: dict[str, str] | None = None) -> str:
         """Hash of everything that decides the runs' results (for ``--resume``): the case

@@ -35,8 +35,7 @@ from typing import Any
 import numpy as np
 
 from sealsim import __version__
-from sealsim.errors import InputError, ResultExistsError
-from sealsim.files import atomic_write_bytes
+from sealsim.files import atomic_write_bytes, interrupted_work_left, resume_refused
 
 __all__ = ["WorkFolder", "work_folder_for"]
 
@@ -88,21 +87,11 @@ class WorkFolder:
             if resume:
                 self._drop_unreadable()
                 if old.get("fingerprint") != fingerprint:
-                    before, now = old.get("files") or {}, files or {}
-                    changed = sorted(p for p in {*before, *now} if before.get(p) != now.get(p))
-                    why = (f"; changed since: {', '.join(map(repr, changed))}" if changed
-                           else "")
-                    raise InputError(
-                        f"cannot resume: the {finished} finished runs in {str(self.path)!r} "
-                        f"belong to another study or to an earlier version of this one "
-                        f"({old.get('source', 'unknown source')}){why}; run it without "
-                        "--resume and with --force to start over")
+                    raise resume_refused("study", "runs", finished, self.path, old,
+                                         files or {})
                 return self.indices()
             if not discard and finished:
-                raise ResultExistsError(
-                    f"an interrupted study left {finished} finished runs in "
-                    f"{str(self.path)!r}; pass --resume to continue it (only the missing runs "
-                    "are computed) or --force to start over")
+                raise interrupted_work_left("study", "runs", finished, self.path)
             shutil.rmtree(self.path)
         self.runs.mkdir(parents=True)
         atomic_write_bytes(meta, json.dumps({
