@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -38,8 +39,7 @@ from sealsim.errors import InputError
 from sealsim.files import MAX_DATA_BYTES, read_input_bytes
 from sealsim.units import cycles_per_time, rotational_speed, ureg
 
-__all__ = ["QUANTITIES", "ColumnSpec", "Measurement", "header_names", "header_unit",
-           "read_table"]
+__all__ = ["QUANTITIES", "ColumnSpec", "Measurement", "header_unit", "read_table"]
 
 #: quantity name -> SI unit it is stored in (gauge pressures: pressures relative to ambient)
 QUANTITIES: dict[str, str] = {
@@ -234,6 +234,15 @@ def header_unit(name: str) -> str | None:
     return next(u for u in match.group("b", "p", "i", "s") if u is not None)
 
 
+def _unit_of(unit: str, quantity: str) -> bool:
+    """Whether ``unit`` is a unit of ``quantity``."""
+    try:
+        _si_factor(unit, quantity, "")
+    except InputError:
+        return False
+    return True
+
+
 def _check_header_unit(name: str, spec: ColumnSpec, convert, where: str) -> None:
     """Refuse a column whose header states a unit that reads its numbers differently from the
     mapping's unit (a ``[ms]`` column mapped with ``unit = "s"``): a wrong number that looks
@@ -282,36 +291,12 @@ def _decoded(data: bytes, label: str) -> str:
                              "UTF-8 nor Windows-1252 text; save the file as UTF-8") from None
 
 
-def _content_lines(path: Path, what: str, skip_rows: int, comment: str) -> list[tuple[int, str]]:
-    """(1-based line number, text) of a table file's lines after ``skip_rows``, without blank
-    and comment lines."""
-    text = _decoded(read_input_bytes(path, what, MAX_DATA_BYTES), str(path))
-    lines = list(enumerate(text.splitlines(), start=1))[skip_rows:]
-    return [(n, s) for n, s in lines if s.strip() and not s.lstrip().startswith(comment)]
-
-
-def header_names(path: str | Path, *, delimiter: str | None = None, skip_rows: int = 0,
-                 comment: str = "#", what: str = "measurement file") -> list[str]:
-    """The names in a table file's header line (the first line :func:`read_table` reads with
-    ``header = True``), to pick units or columns by name before reading it.
-
-    Examples
-    --------
-    >>> import tempfile, pathlib
-    >>> f = pathlib.Path(tempfile.mkdtemp()) / "cycle.csv"
-    >>> _ = f.write_text('# rig 2\\n"t [s]";n [1/min]\\n0;100\\n')
-    >>> header_names(f, delimiter=";")
-    ['t [s]', 'n [1/min]']
-    """
-    lines = _content_lines(Path(path), what, skip_rows, comment)
-    return _split(lines[0][1], delimiter) if lines else []
-
-
 def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | None = None,
                header: bool = False, skip_rows: int = 0, comment: str = "#",
                name: str | None = None, index: str | None = "time",
                decimal: str = ".", min_rows: int = 3,
-               what: str = "measurement file", index_may_repeat: bool = False) -> Measurement:
+               what: str = "measurement file", index_may_repeat: bool = False,
+               header_units: Mapping[str, str] | None = None) -> Measurement:
     """Read a text table of numbers with a column mapping (see the module docstring).
 
     Parameters
@@ -343,6 +328,9 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
     index_may_repeat : bool
         The index may repeat a value (a jump of a piecewise-linear profile: two rows at one
         time); it must still not decrease.
+    header_units : mapping, optional
+        Header names that state their column's unit without brackets (``{"time_s": "s"}``),
+        for columns whose unit comes from the header (``ColumnSpec.unit`` None).
 
     Returns
     -------
@@ -368,7 +356,7 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
     """
     path = Path(path)
     label = str(path)
-    lines = _content_lines(path, what, skip_rows, comment)
+    text = _decoded(read_input_bytes(path, what, MAX_DATA_BYTES), label)
     if index is not None and index not in {c.quantity for c in columns}:
         raise InputError(f"{label}: the column mapping needs a {index} column")
     if decimal not in (".", ","):
@@ -376,6 +364,9 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
     if decimal == "," and delimiter in (None, ","):
         raise InputError(f"{label}: decimal = ',' needs another column delimiter, e.g. "
                          "delimiter = ';'")
+    lines = [(k + 1, line) for k, line in enumerate(text.splitlines())]
+    lines = lines[skip_rows:]
+    lines = [(n, s) for n, s in lines if s.strip() and not s.lstrip().startswith(comment)]
     names: list[str] = []
     header_line = ""
     if header:
@@ -439,13 +430,18 @@ def read_table(path: str | Path, columns: list[ColumnSpec], *, delimiter: str | 
     for c, spec in enumerate(columns):
         unit, from_header = spec.unit, spec.unit is None
         if from_header:  # the unit the header states
-            unit = header_unit(names[indices[c]]) if indices[c] < len(names) else None
+            named = names[indices[c]] if indices[c] < len(names) else None
+            unit = None if named is None else (
+                (header_units or {}).get(named) or header_unit(named))
             if unit is None:
-                stated = (f"its header {names[indices[c]]!r} states none"
-                          if indices[c] < len(names) else "the file has no header line")
+                stated = (f"its header {named!r} states none" if named is not None
+                          else "the file has no header line")
+                fitting = [n for n, u in (header_units or {}).items()
+                           if _unit_of(u, spec.quantity)]
+                also = f", or name the column {' or '.join(map(repr, fitting))}" if fitting else ""
                 raise InputError(f"{label}, column {indices[c] + 1} ({spec.quantity}): no unit "
                                  f"is given and {stated}; write it in the header, e.g. "
-                                 f"'{spec.quantity} [{QUANTITIES[spec.quantity]}]'")
+                                 f"'{spec.quantity} [{QUANTITIES[spec.quantity]}]'{also}")
             spec = ColumnSpec(spec.quantity, spec.column, unit, spec.scale)
         convert = _si_factor(unit, spec.quantity, f"{label}, column {spec.column!r}")
         if not from_header and indices[c] < len(names):

@@ -49,7 +49,7 @@ from sealsim.rotary.lip import (
     default_width,
 )
 from sealsim.rotary.lip_fe import LipSpec
-from sealsim.tables import ColumnSpec, header_names, read_table
+from sealsim.tables import ColumnSpec, read_table
 from sealsim.tribology.film import EHL_EXPONENT, FILM_FLOOR, film_coefficient_matching_fit
 from sealsim.tribology.rolling_bearing import DEEP_GROOVE_OIL_BATH_F0
 from sealsim.tribology.rubber_friction import DEFAULT_ASPERITY_WAVELENGTH, DEFAULT_MASTER_CURVE
@@ -541,21 +541,13 @@ def _read_duty_csv(path: Path, time_column: int | str = 1, speed_column: int | s
     column).  The columns' units are those their header names state (``t [s]``,
     ``n [1/min]``); ``time_s`` and ``speed_rpm`` are read as seconds and rpm."""
     where = f"duty.csv: {path}"
+    specs = [ColumnSpec("time", time_column, None), ColumnSpec("speed", speed_column, None)]
     try:
-        names = header_names(path, delimiter=delimiter, what="duty.csv file")
-        specs = []
-        for quantity, column in (("time", time_column), ("speed", speed_column)):
-            name = column if isinstance(column, str) else (
-                names[column - 1] if 0 < column <= len(names) else "")
-            specs.append(ColumnSpec(quantity, column, DUTY_CSV_NAMES.get(name)))
         table = read_table(path, specs, delimiter=delimiter, decimal=decimal, header=True,
-                           min_rows=2, what="duty.csv file", index_may_repeat=True)
+                           min_rows=2, what="duty.csv file", index_may_repeat=True,
+                           header_units=DUTY_CSV_NAMES)
     except InputError as exc:
-        text = str(exc)
-        if "no unit is given" in text and time_column == 1 and speed_column == 2:
-            text += ("; or name the columns time_s, speed_rpm (or set duty.time_column and "
-                     "duty.speed_column to the columns holding them)")
-        raise InputError(f"duty.csv: {text}") from None
+        raise InputError(f"duty.csv: {exc}") from None
     times, speeds = table.time, table.column("speed")
     if times[0] != 0:
         raise InputError(f"{where}: the time must start at 0 (the first row has "
