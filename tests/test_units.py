@@ -135,6 +135,17 @@ def test_a_temperature_difference_in_degc_is_that_difference(text, kelvin):
     assert parse_quantity("10 degC", "temperature") == pytest.approx(283.15, rel=REL)
 
 
+@pytest.mark.parametrize("value", ["-300 degC", "0 K", ["20 degC", "-500 degF"]])
+def test_a_temperature_at_or_below_absolute_zero_is_refused(value):
+    # '-300 degC' (a typo for -30) went on as -26.85 K into whatever model met it first
+    with pytest.raises(InputError, match=r"^T: .* is at or below absolute zero"):
+        to_si(value, "temperature", "T")
+    if isinstance(value, str):
+        with pytest.raises(InputError, match="absolute zero"):
+            parse_quantity(value, "temperature")
+    assert to_si("-5 degC", "temperature_difference") == pytest.approx(-5.0)   # a difference
+
+
 def test_a_decimal_comma_is_named():
     # '1,5 mm' (a German engineer's decimal comma) was 'unknown unit ',5 mm''
     with pytest.raises(InputError, match=re.escape("decimal point (1.5 mm)")):

@@ -39,6 +39,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from sealsim.errors import InputError, ModelError, SealsimWarning
+from sealsim.units import to_si
 
 if TYPE_CHECKING:
     from sealsim.properties.oils import Oil
@@ -497,22 +498,9 @@ def _operating_points(function: str, arguments: dict[str, tuple[Any, str]]
         raise InputError(f"{function}: {size} operating points are more than the "
                          f"{MAX_POINTS[function]} one call evaluates; split them into several "
                          "calls")
-    return shape, {name: np.broadcast_to(np.asarray(_to_si(value, dimension, name),
-                                                   dtype=float), shape).ravel()
-                   for name, (value, dimension) in arguments.items()}
-
-
-def _to_si(value, dimension: str, name: str):
-    """``to_si`` of an argument (its unit required); a temperature at or below absolute zero
-    ('-300 degC') is refused, not passed on as a negative kelvin value."""
-    from sealsim.units import ZERO_CELSIUS_K, to_si
-
-    si = to_si(value, dimension, name, plain_is_si=False)
-    if dimension == "temperature" and np.any(np.asarray(si) <= 0.0):
-        coldest = float(np.min(si))
-        raise InputError(f"{name}: {coldest - ZERO_CELSIUS_K:.6g} degC ({coldest:.6g} K) is at "
-                         "or below absolute zero (-273.15 degC)")
-    return si
+    return shape, {name: np.broadcast_to(np.asarray(
+        to_si(value, dimension, name, plain_is_si=False), dtype=float), shape).ravel()
+        for name, (value, dimension) in arguments.items()}
 
 
 def _shape(value) -> tuple:
@@ -525,7 +513,7 @@ def _shape(value) -> tuple:
 
 def _scalar(value, dimension: str, name: str) -> float:
     """One SI value of an argument that takes no array."""
-    si = _to_si(value, dimension, name)
+    si = to_si(value, dimension, name, plain_is_si=False)
     if np.ndim(si) != 0:
         raise InputError(f"{name}: one value is expected, got an array of shape {np.shape(si)}")
     return float(si)
@@ -827,11 +815,11 @@ def friction_loop(seal, velocity_amplitude, frequency, pressure="0 bar",
 
     from sealsim.friction.base import ContactInputs
 
-    v_a = _to_si(velocity_amplitude, "velocity", "velocity_amplitude")
-    v_m = _to_si(mean_velocity, "velocity", "mean_velocity")
-    f = _to_si(frequency, "frequency", "frequency")
-    dp = _to_si(pressure, "pressure", "pressure")
-    temp = _to_si(temperature, "temperature", "temperature")
+    v_a = to_si(velocity_amplitude, "velocity", "velocity_amplitude", plain_is_si=False)
+    v_m = to_si(mean_velocity, "velocity", "mean_velocity", plain_is_si=False)
+    f = to_si(frequency, "frequency", "frequency", plain_is_si=False)
+    dp = to_si(pressure, "pressure", "pressure", plain_is_si=False)
+    temp = to_si(temperature, "temperature", "temperature", plain_is_si=False)
     for name, value in (("velocity_amplitude", v_a), ("mean_velocity", v_m),
                         ("frequency", f), ("pressure", dp), ("temperature", temp)):
         if np.ndim(value) != 0 or not math.isfinite(float(value)):

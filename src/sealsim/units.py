@@ -215,7 +215,17 @@ def parse_quantity(value, dimension: str, field: str | None = None) -> float:
     if not math.isfinite(magnitude):
         raise InputError(prefix + f"{value!r} is not a finite number; expected {dim.phrase} "
                          f"such as {dim.example!r}")
+    _above_absolute_zero(magnitude, dimension, prefix)
     return magnitude
+
+
+def _above_absolute_zero(si, dimension: str, prefix: str) -> None:
+    """An absolute temperature at or below 0 K ('-300 degC', a typo) is refused: passed on, it
+    would be explained by whatever model met it first."""
+    if dimension == "temperature" and np.any(np.asarray(si) <= 0.0):
+        coldest = float(np.min(si))
+        raise InputError(prefix + f"{coldest - ZERO_CELSIUS_K:.6g} degC ({coldest:.6g} K) is at "
+                         "or below absolute zero (-273.15 degC)")
 
 
 def _parse_string(text: str, dim: Dimension, field: str | None) -> float:
@@ -504,4 +514,5 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
     if not np.all(np.isfinite(si)):
         raise InputError(prefix + f"{value!r} is not finite; expected {dim.phrase} such as "
                          f"{dim.example!r}")
+    _above_absolute_zero(si, dimension, prefix)
     return float(si) if si.ndim == 0 else si
