@@ -45,7 +45,6 @@ keyed by the resolved structure cases, like the FE maps of the pneumatic model.
 
 from __future__ import annotations
 
-import hashlib
 import math
 import os
 from dataclasses import dataclass
@@ -284,24 +283,17 @@ def lip_force_table(seal, lip: LipSpec, installation_temperature: float = 293.15
     """
     import pandas as pd
 
-    from sealsim.cases import dump_case_toml
     from sealsim.files import atomic_write_bytes
+    from sealsim.structure.fingerprint import results_key
 
     # the lip with its spring, and without it for the rubber's share (module docstring)
     paths = {spring: lip_load_paths(seal, lip, installation_temperature, spring=spring)
              for spring in (True, False)}
-    text = "\n".join(dump_case_toml(case, header="FE lip model of a rotary case")
-                     for spring in (True, False) for case, _ in paths[spring])
-    from sealsim.structure.fingerprint import model_fingerprint
-
-    # the FE model's fingerprint too: a changed FE model must not read an old table
-    from sealsim.properties.elastomers import compound_file_digest
-
-    # and the content of a compound file the seal is made of, not only its path (every load
-    # path is made of the seal's one material)
-    digest = hashlib.sha256((text + model_fingerprint()
-                             + compound_file_digest(paths[True][0][0].material.elastomer))
-                            .encode("utf-8")).hexdigest()[:16]
+    # the key of FE results: the resolved cases, the FE model's fingerprint (a changed FE
+    # model must not read an old table) and the content of a compound file the seal is made
+    # of (every load path is made of the seal's one material)
+    cases = [case for spring in (True, False) for case, _ in paths[spring]]
+    digest = results_key(cases[0], [case.model_dump(mode="json") for case in cases[1:]])[:16]
     target = _cache_dir() / f"lip-{digest}.csv"
     if cache and target.is_file():
         frame = pd.read_csv(target)
