@@ -18,8 +18,8 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["compare_signals", "constraint_failure", "drop_constrained", "on_constraint", "parameter_report", "parameter_statistics",
-           "repeat_scatter"]
+__all__ = ["compare_signals", "constraint_failure", "drop_constrained", "on_constraint",
+           "parameter_report", "parameter_statistics", "repeat_scatter"]
 
 #: Relative distance from a constraint of the model within which a fitted value sits on it: 10x
 #: the fits' finite-difference steps, which an optimum pressed against it does not get past.
