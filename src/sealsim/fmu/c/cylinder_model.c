@@ -298,6 +298,8 @@ typedef struct {
     int npending;
     int bdf_active;
     double g_old;
+    int event_pending;                      /* a stick/slip event located beyond t_end */
+    double t_event;
     double recent[MAX_SWITCHES_PER_MS + 1];
     int recent_next;
     Bdf bdf;
@@ -593,6 +595,9 @@ static FmuStatus take_inputs(Instance *c) {
         m->pending_u[m->npending] = u;
         m->npending++;
         m->last_input = u;
+        /* the integrator, ahead of c->time, stepped past the new command's arrival with the
+         * old one: it restarts from the state at c->time */
+        if (m->bdf_active && m->bdf.t > c->time + P(VALVE_DELAY)) m->bdf_active = 0;
     }
     if (commit_arrivals(m, c->time)) m->bdf_active = 0;
     if (P(F_LOAD) != m->cst[C_F0]) {
@@ -726,9 +731,19 @@ FmuStatus model_event_update(Instance *c, int *states_changed) {
 }
 #endif
 
+/* the next breakpoint of the integration: a command's arrival at the spool (the spool's
+ * motion has a kink there), or none */
+static double next_arrival(const CylinderData *m) {
+    return m->npending > 0 ? m->pending_t[0] : INFINITY;
+}
+
 /* co-simulation: BDF (bdf.c) from t to t + h with the stick/slip events inside
- * (integrate.run_interval); the integrator's history is kept between communication steps
- * while the inputs stay the same */
+ * (integrate.run_interval).  While the inputs stay the same the integrator's history is kept
+ * between communication steps and its steps are not cut at the communication points: the
+ * last step may end beyond t + h, the state there is its dense output (as the output grid of
+ * sealsim pneumatic run; cutting every step at a 20 ms communication point doubled the
+ * integration's cost), and an event located beyond t + h waits for the step that reaches it.
+ * A command's arrival at the spool and a step of F_load restart the integrator there. */
 FmuStatus model_step(Instance *c, double h) {
     CylinderData *m = DATA(c);
     Problem p;
@@ -740,39 +755,15 @@ FmuStatus model_step(Instance *c, double h) {
     read_states(c, y);
     const BdfProblem *bp = &p.bp;
     Bdf *b = &m->bdf;
-    int direction = 0;
-    while (t < t_end) {
-        /* a step of F_load restarts the integrator with the holding force beyond the
-         * break-away already: no crossing left to find, so the piston breaks away here */
-        if (!m->bdf_active && m->mode == MODE_STICK && problem_event(&p, t, y) > 0.0)
-            m->mode = p.mode = switch_mode(&p, t, y);
-        direction = (m->mode == MODE_FORWARD || m->mode == MODE_BACKWARD) ? -1
-                    : (m->mode == MODE_STICK ? 1 : 0);
-        /* the next breakpoint: the end of the step or a command's arrival at the spool */
-        double t_stop = t_end;
-        if (m->npending > 0 && m->pending_t[0] < t_stop) t_stop = m->pending_t[0];
-        if (!m->bdf_active) {
-            bdf_init(b, NSTATES, RTOL, ATOL, MAX_STEP);
-            bdf_start(b, t, y, t_stop, bp);
-            m->g_old = direction != 0 ? problem_event(&p, t, y) : 1.0;
-            m->bdf_active = 1;
-        } else {
-            b->t_bound = t_stop;
-        }
-        if (bdf_step(b, bp) != BDF_OK) {
-            fmu_log(c, FMU_ERROR, "logStatusError",
-                    "the integrator failed at t = %g s (x = %g m, v = %g m/s): the step size "
-                    "became too small", b->t, y[0], y[1]);
-            return FMU_ERROR;
-        }
-        double t_new = b->t;
-        if (direction != 0) {
-            double g_new = problem_event(&p, t_new, b->y_new);
-            if ((direction > 0 && m->g_old <= 0.0 && 0.0 <= g_new) ||
-                (direction < 0 && m->g_old >= 0.0 && 0.0 >= g_new)) {
-                double t_event = bdf_locate(b, bp, m->g_old, g_new, y_tmp);
-                bdf_dense(b, t_event, y);
-                t = t_event;
+    for (;;) {
+        if (m->bdf_active) {
+            /* what the last step, which may reach beyond t_end, left: an event, a command's
+             * arrival at its end, or t_end inside it */
+            if (m->event_pending) {
+                if (m->t_event > t_end) break;
+                bdf_dense(b, m->t_event, y);
+                t = m->t_event;
+                m->event_pending = 0;
                 m->mode = p.mode = switch_mode(&p, t, y);
                 m->bdf_active = 0;
                 /* chattering guard: more than MAX_SWITCHES_PER_MS switches within 1 ms */
@@ -787,11 +778,50 @@ FmuStatus model_step(Instance *c, double h) {
                 }
                 continue;
             }
+            if (b->t >= next_arrival(m) && next_arrival(m) <= t_end) {
+                t = b->t;
+                for (int i = 0; i < NSTATES; i++) y[i] = b->y_new[i];
+                commit_arrivals(m, t);
+                m->bdf_active = 0;
+                continue;
+            }
+            if (b->t >= t_end) break;
+        } else {
+            if (t >= t_end) break;
+            /* a step of F_load restarts the integrator with the holding force beyond the
+             * break-away already: no crossing left to find, so the piston breaks away here */
+            if (m->mode == MODE_STICK && problem_event(&p, t, y) > 0.0)
+                m->mode = p.mode = switch_mode(&p, t, y);
+            bdf_init(b, NSTATES, RTOL, ATOL, MAX_STEP);
+            bdf_start(b, t, y, next_arrival(m), bp);
+            int moving = m->mode == MODE_FORWARD || m->mode == MODE_BACKWARD;
+            m->g_old = (moving || m->mode == MODE_STICK) ? problem_event(&p, t, y) : 1.0;
+            m->event_pending = 0;
+            m->bdf_active = 1;
+        }
+        b->t_bound = next_arrival(m);
+        if (bdf_step(b, bp) != BDF_OK) {
+            fmu_log(c, FMU_ERROR, "logStatusError",
+                    "the integrator failed at t = %g s (x = %g m, v = %g m/s): the step size "
+                    "became too small", b->t, b->y_new[0], b->y_new[1]);
+            return FMU_ERROR;
+        }
+        int direction = (m->mode == MODE_FORWARD || m->mode == MODE_BACKWARD) ? -1
+                        : (m->mode == MODE_STICK ? 1 : 0);
+        if (direction != 0) {
+            double g_new = problem_event(&p, b->t, b->y_new);
+            if ((direction > 0 && m->g_old <= 0.0 && 0.0 <= g_new) ||
+                (direction < 0 && m->g_old >= 0.0 && 0.0 >= g_new)) {
+                m->t_event = bdf_locate(b, bp, m->g_old, g_new, y_tmp);
+                m->event_pending = 1;
+            }
             m->g_old = g_new;
         }
-        t = t_new;
-        for (int i = 0; i < NSTATES; i++) y[i] = b->y_new[i];
-        if (t >= t_stop && commit_arrivals(m, t)) m->bdf_active = 0;
+    }
+    /* the state at t_end: the dense output of the last step (or the restart point) */
+    if (m->bdf_active) {
+        bdf_dense(b, t_end, y);
+        t = t_end;
     }
     if (m->mode == MODE_STICK) y[1] = 0.0;
     write_states(c, y);
