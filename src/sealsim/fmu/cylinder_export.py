@@ -9,7 +9,9 @@ very tables of :class:`sealsim.pneumatic.system.PneumaticSystem` (written into `
 the friction tables in their node layout).  Co-simulation
 integrates with ``c/bdf.c``, the C port of the BDF method of :mod:`sealsim.ode.bdf` that
 ``sealsim pneumatic run`` uses, and locates the stick/slip events inside the communication
-step; model exchange offers one event indicator and switches the stick/slip mode in event
+step (while the inputs stay the same its steps run across the communication points, whose
+states are the steps' dense output: the result does not depend on the communication step);
+model exchange offers one event indicator and switches the stick/slip mode in event
 mode.
 
 Interface (SI):

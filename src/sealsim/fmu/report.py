@@ -301,7 +301,9 @@ def cylinder_documentation(spec: ModelSpec) -> None:
                  "seals with their contact maps and friction laws, end stops) with the tables "
                  "of the case. Co-simulation integrates with the variable-order BDF method "
                  "of sealsim (its C port) and locates the stick/slip transitions inside the "
-                 "communication step; model exchange switches the stick/slip mode at its event "
+                 "communication step; while the inputs stay the same it does not cut its "
+                 "steps at the communication points, so the communication step does not "
+                 "change the result; model exchange switches the stick/slip mode at its event "
                  "indicator. A valve command reaches the spool after the valve's dead time "
                  "(<code>valve_delay</code>).</p>")]
     rhs_check = spec.report.get("rhs_check")
