@@ -71,6 +71,23 @@ def test_triangular_profile_stroke_films_in_ratio_sqrt_of_gradients():
     assert stroke_transport(0.012, 0.1, h_out, h_in) < 0
 
 
+def test_inlet_gradient_does_not_depend_on_where_the_profile_lies_on_the_z_axis():
+    # A convex inlet (a lip's steep flank next to its pressure maximum): p = p0·(s/L)³ over
+    # L = 1 mm, 31 points, Δ = two spacings = 0.1 mm.  The steepest secant ends on the peak:
+    # p0·(1 − 0.9³)/Δ = 2.71 GPa/m.  The − stroke mirrors z, so a profile at z > 0 (an FE
+    # map's contact off the gland centre) is searched at negative z: the old bound
+    # z + Δ <= z_peak·(1 + 1e-15) dropped the secant ending on the peak there by rounding
+    # (2.43 GPa/m, −10 %).
+    z = np.linspace(0.0, 1.5e-3, 31)
+    s = z / 1e-3
+    p = 1e6 * np.where(s <= 1.0, s**3, (1.5 - s) / 0.5)
+    expected = 1e6 * (1.0 - 0.9**3) / 0.1e-3
+    for offset in (0.0, 2e-3, -2e-3, -5e-3):
+        assert max_inlet_gradient(z + offset, p, +1) == pytest.approx(expected, rel=1e-9)
+        mirrored = -(z + offset)[::-1]
+        assert max_inlet_gradient(mirrored, p[::-1], -1) == pytest.approx(expected, rel=1e-9)
+
+
 def test_film_shape_solves_reynolds_cubic():
     r = np.linspace(-5.0, 1.0, 61)
     for upstream in (False, True):

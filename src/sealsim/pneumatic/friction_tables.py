@@ -57,8 +57,10 @@ __all__ = ["ContactTribology", "LAW_TABLE_FIELDS", "TABLE_SPEEDS", "build_fricti
            "contact_profiles", "friction_table_for", "lubricant_viscosity", "sliding_diameter",
            "table_orientation"]
 
-#: Version of the table builder: part of the cache key (a change of the physics gives new files)
-TABLE_VERSION = 4
+#: Version of the table builder: part of the cache key (a change of the physics gives new files;
+#: 5: the inlet gradient no longer drops the secant ending on the pressure maximum for a profile
+#: at negative z, e.g. the − stroke of a contact at z > 0)
+TABLE_VERSION = 5
 #: Speeds of a table [m/s]: 1e-7 to 10 m/s, six per decade
 TABLE_SPEEDS = np.logspace(-7.0, 1.0, 49)
 #: Largest temperature step of a table [K]: FE profiles are interpolated linearly between the
