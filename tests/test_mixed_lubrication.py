@@ -193,6 +193,38 @@ def test_a_starved_inlet_passes_what_arrives_and_no_more():
     assert starved_film(flooded.full_film, h_s) == pytest.approx(starved.full_film)
 
 
+def test_a_starved_second_zone_gets_only_what_the_first_leaves():
+    # Two lobes in series (an X-ring), fed by a layer h_s = 0.5 µm on the counter surface and
+    # nothing else: the first lobe the surface reaches passes u·h*_1/2 and leaves the layer
+    # h*_1/2, all the second one gets, so h*_2 <= h*_1 (mass conservation).  The narrow lobe
+    # (steep inlet) builds the thinner film, 0.06-0.85 µm flooded from 1e-5 to 0.03 m/s
+    # against the wide lobe's 0.09-1.4 µm: sliding from the narrow lobe to the wide one, the
+    # wide lobe used to be starved to 2·h_s only and passed up to 1.7x what reached it.
+    z = np.linspace(0.0, 4e-3, 4001)
+    narrow = 1e6 * np.clip(1 - ((z - 0.8e-3) / 0.3e-3) ** 2, 0, None)
+    wide = 0.8e6 * np.clip(1 - ((z - 2.6e-3) / 1.0e-3) ** 2, 0, None)
+    p = narrow + wide
+    at_narrow, at_wide = int(np.argmax(narrow)), int(np.argmax(wide))
+    u = np.logspace(-5, -1, 9)
+    h_s = 0.5e-6
+    flooded = reciprocating_friction(z, p, u, ETA, SIGMA, MODULUS, MU_B, +1)
+    thinner = flooded.film_profile[:, at_narrow] < flooded.film_profile[:, at_wide]
+    assert thinner.all()
+    for direction, first, second in ((+1, at_narrow, at_wide), (-1, at_wide, at_narrow)):
+        r = reciprocating_friction(z, p, u, ETA, SIGMA, MODULUS, MU_B, direction,
+                                   supply_layer=h_s)
+        h_first, h_second = r.film_profile[:, first], r.film_profile[:, second]
+        assert np.all(h_first <= 2 * h_s * (1 + 1e-12))
+        assert np.all(h_second <= h_first * (1 + 1e-12))
+        # a zone that gets more than it passes keeps its own (flooded) film
+        full = flooded.film_profile[:, second] <= h_first
+        np.testing.assert_allclose(h_second[full], flooded.film_profile[full, second],
+                                   rtol=1e-12)
+    # from the narrow lobe to the wide one the wide lobe is starved by the narrow one's layer
+    r = reciprocating_friction(z, p, u, ETA, SIGMA, MODULUS, MU_B, +1, supply_layer=h_s)
+    assert np.all(r.film_profile[:, at_wide] < flooded.film_profile[:, at_wide])
+
+
 def test_asperity_pressure_is_greenwood_williamson():
     lam = np.array([-3.0, 0.0, 1.5])
     e_star = MODULUS / 0.75

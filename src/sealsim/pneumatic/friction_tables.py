@@ -59,8 +59,9 @@ __all__ = ["ContactTribology", "LAW_TABLE_FIELDS", "TABLE_SPEEDS", "build_fricti
 
 #: Version of the table builder: part of the cache key (a change of the physics gives new files;
 #: 5: the inlet gradient no longer drops the secant ending on the pressure maximum for a profile
-#: at negative z, e.g. the − stroke of a contact at z > 0)
-TABLE_VERSION = 5
+#: at negative z, e.g. the − stroke of a contact at z > 0; 6: with a limited supply, each
+#: contact zone is fed by the layer the zone before it leaves)
+TABLE_VERSION = 6
 #: Speeds of a table [m/s]: 1e-7 to 10 m/s, six per decade
 TABLE_SPEEDS = np.logspace(-7.0, 1.0, 49)
 #: Largest temperature step of a table [K]: FE profiles are interpolated linearly between the
