@@ -71,6 +71,23 @@ def test_triangular_profile_stroke_films_in_ratio_sqrt_of_gradients():
     assert stroke_transport(0.012, 0.1, h_out, h_in) < 0
 
 
+def test_inlet_gradient_does_not_depend_on_where_the_profile_lies_on_the_z_axis():
+    # A convex inlet (a lip's steep flank next to its pressure maximum): p = p0·(s/L)³ over
+    # L = 1 mm, 31 points, Δ = two spacings = 0.1 mm.  The steepest secant ends on the peak:
+    # p0·(1 − 0.9³)/Δ = 2.71 GPa/m.  The − stroke mirrors z, so a profile at z > 0 (an FE
+    # map's contact off the gland centre) is searched at negative z: the old bound
+    # z + Δ <= z_peak·(1 + 1e-15) dropped the secant ending on the peak there by rounding
+    # (2.43 GPa/m, −10 %).
+    z = np.linspace(0.0, 1.5e-3, 31)
+    s = z / 1e-3
+    p = 1e6 * np.where(s <= 1.0, s**3, (1.5 - s) / 0.5)
+    expected = 1e6 * (1.0 - 0.9**3) / 0.1e-3
+    for offset in (0.0, 2e-3, -2e-3, -5e-3):
+        assert max_inlet_gradient(z + offset, p, +1) == pytest.approx(expected, rel=1e-9)
+        mirrored = -(z + offset)[::-1]
+        assert max_inlet_gradient(mirrored, p[::-1], -1) == pytest.approx(expected, rel=1e-9)
+
+
 def test_film_shape_solves_reynolds_cubic():
     r = np.linspace(-5.0, 1.0, 61)
     for upstream in (False, True):
@@ -174,6 +191,38 @@ def test_a_starved_inlet_passes_what_arrives_and_no_more():
     wide = reciprocating_friction(z, p, u, ETA, SIGMA, MODULUS, MU_B, supply_layer=1.0)
     np.testing.assert_array_equal(wide.friction, flooded.friction)
     assert starved_film(flooded.full_film, h_s) == pytest.approx(starved.full_film)
+
+
+def test_a_starved_second_zone_gets_only_what_the_first_leaves():
+    # Two lobes in series (an X-ring), fed by a layer h_s = 0.5 µm on the counter surface and
+    # nothing else: the first lobe the surface reaches passes u·h*_1/2 and leaves the layer
+    # h*_1/2, all the second one gets, so h*_2 <= h*_1 (mass conservation).  The narrow lobe
+    # (steep inlet) builds the thinner film, 0.06-0.85 µm flooded from 1e-5 to 0.03 m/s
+    # against the wide lobe's 0.09-1.4 µm: sliding from the narrow lobe to the wide one, the
+    # wide lobe used to be starved to 2·h_s only and passed up to 1.7x what reached it.
+    z = np.linspace(0.0, 4e-3, 4001)
+    narrow = 1e6 * np.clip(1 - ((z - 0.8e-3) / 0.3e-3) ** 2, 0, None)
+    wide = 0.8e6 * np.clip(1 - ((z - 2.6e-3) / 1.0e-3) ** 2, 0, None)
+    p = narrow + wide
+    at_narrow, at_wide = int(np.argmax(narrow)), int(np.argmax(wide))
+    u = np.logspace(-5, -1, 9)
+    h_s = 0.5e-6
+    flooded = reciprocating_friction(z, p, u, ETA, SIGMA, MODULUS, MU_B, +1)
+    thinner = flooded.film_profile[:, at_narrow] < flooded.film_profile[:, at_wide]
+    assert thinner.all()
+    for direction, first, second in ((+1, at_narrow, at_wide), (-1, at_wide, at_narrow)):
+        r = reciprocating_friction(z, p, u, ETA, SIGMA, MODULUS, MU_B, direction,
+                                   supply_layer=h_s)
+        h_first, h_second = r.film_profile[:, first], r.film_profile[:, second]
+        assert np.all(h_first <= 2 * h_s * (1 + 1e-12))
+        assert np.all(h_second <= h_first * (1 + 1e-12))
+        # a zone that gets more than it passes keeps its own (flooded) film
+        full = flooded.film_profile[:, second] <= h_first
+        np.testing.assert_allclose(h_second[full], flooded.film_profile[full, second],
+                                   rtol=1e-12)
+    # from the narrow lobe to the wide one the wide lobe is starved by the narrow one's layer
+    r = reciprocating_friction(z, p, u, ETA, SIGMA, MODULUS, MU_B, +1, supply_layer=h_s)
+    assert np.all(r.film_profile[:, at_wide] < flooded.film_profile[:, at_wide])
 
 
 def test_asperity_pressure_is_greenwood_williamson():

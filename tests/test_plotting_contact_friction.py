@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from plot_checks import covered_points
@@ -43,3 +44,17 @@ def test_film_axis_reads_in_plain_micrometres(figure):
               if t.get_text()]
     assert labels
     assert not [t for t in labels if "times" in t or "^" in t], labels
+
+
+def test_film_panel_is_at_the_seal_temperature_not_at_a_table_node():
+    # The analytic table's temperatures are 9.6 K apart (14.2 and 23.8 degC around 20 degC);
+    # the film panel took the films at the nearest node, 23.8 degC, and titled them 20 degC:
+    # 11 % thinner than the table's film at 20 degC at 0 bar (1.58 against 1.77 µm).  Now
+    # viscosity, modulus and profile are those at 20 degC: the film at each pressure maximum
+    # is the table's within 2 % (the table's own interpolation between its nodes).
+    tribology = ContactTribology()
+    table = build_friction_table(ROD, tribology)
+    for dp, z, p, h_pos, h_neg in film_profiles(ROD, tribology, 293.15, 0.1):
+        peak = int(np.argmax(p))
+        _, _, film = table.evaluate([0.1, -0.1], dp, 293.15)
+        assert [h_pos[peak], h_neg[peak]] == pytest.approx(film, rel=0.02), dp

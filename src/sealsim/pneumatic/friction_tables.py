@@ -57,8 +57,11 @@ __all__ = ["ContactTribology", "LAW_TABLE_FIELDS", "TABLE_SPEEDS", "build_fricti
            "contact_profiles", "friction_table_for", "lubricant_viscosity", "sliding_diameter",
            "table_orientation"]
 
-#: Version of the table builder: part of the cache key (a change of the physics gives new files)
-TABLE_VERSION = 4
+#: Version of the table builder: part of the cache key (a change of the physics gives new files;
+#: 5: the inlet gradient no longer drops the secant ending on the pressure maximum for a profile
+#: at negative z, e.g. the − stroke of a contact at z > 0; 6: with a limited supply, each
+#: contact zone is fed by the layer the zone before it leaves)
+TABLE_VERSION = 6
 #: Speeds of a table [m/s]: 1e-7 to 10 m/s, six per decade
 TABLE_SPEEDS = np.logspace(-7.0, 1.0, 49)
 #: Largest temperature step of a table [K]: FE profiles are interpolated linearly between the
@@ -365,21 +368,31 @@ def film_profiles(contact_map, tribology: ContactTribology, temperature: float,
     """The contact pressure and film profiles of a seal at one temperature and speed, per
     pressure of its map: ``[(Δp [Pa], z [m], p_c [Pa], h_+ [m], h_− [m]), ...]`` (the films
     of the two stroke directions, inf outside the contact) -- what the friction table is made
-    of, for plots."""
+    of, for plots.  Everything at ``temperature`` itself, not at the nearest temperature of
+    the table (whose films the table interpolates between its nodes): an FE map's profiles
+    interpolated linearly in T as the table's nodes are, the analytic estimate's profile of
+    its force and width at T."""
     from sealsim.properties.elastomers import get_elastomer
 
     temps, pressures, profile = contact_profiles(contact_map)
-    i = int(np.argmin(np.abs(temps - temperature)))
-    eta = float(lubricant_viscosity(temps[i], tribology))
+    t = float(temperature)
+    k = min(max(int(np.searchsorted(temps, t, side="right")) - 1, 0), temps.size - 2)
+    w = min(max((t - temps[k]) / (temps[k + 1] - temps[k]), 0.0), 1.0)
+    eta = float(lubricant_viscosity(t, tribology))
     import warnings
 
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
         modulus = float(get_elastomer(tribology.elastomer).modulus(
-            temps[i], speed / tribology.asperity_wavelength))
+            t, speed / tribology.asperity_wavelength))
     out = []
     for j, dp in enumerate(pressures):
-        z, p = profile(i, j)
+        if isinstance(contact_map, AnalyticContactMap):
+            fn, b = (float(np.asarray(x).reshape(-1)[0]) for x in contact_map.evaluate(dp, t))
+            z, p = _energised_profile(fn / (math.pi * contact_map.sliding_diameter), b, dp)
+        else:                     # the same positions at every temperature
+            z, low = profile(k, j)
+            p = (1.0 - w) * low + w * profile(k + 1, j)[1]
         films = [reciprocating_friction(z, p, [speed], eta, tribology.roughness, modulus, 1.0,
                                         direction, film_factor=tribology.film_factor,
                                         supply_layer=tribology.supply_layer,

@@ -174,12 +174,16 @@ def max_inlet_gradient(position, pressure, direction=1, resolution=None):
         delta = float(resolution)
     if delta >= span:           # flank shorter than Δ: its mean slope
         return float((p[peak] - p[lo]) / span)
-    # candidate starts: the profile's points and the points Δ before them (the secant of a
-    # piecewise-linear function is extremal with one end on a node)
-    starts = np.concatenate([z[lo:peak + 1], z[lo:peak + 1] - delta])
-    starts = starts[(starts >= z[lo]) & (starts + delta <= z[peak] * (1 + 1e-15) + 1e-300)]
-    slope = (np.interp(starts + delta, z, p) - np.interp(starts, z, p)) / delta
-    return float(max(np.max(slope), 0.0))
+    # the secant of a piecewise-linear function is extremal with one end on a node: secants
+    # starting on a node and secants ending on one, each node's end taken exactly (a bound
+    # like z + Δ <= z[peak] drops the secant ending on the peak by rounding, depending on
+    # where the profile lies on the z axis)
+    nodes = np.arange(lo, peak + 1)
+    first = nodes[z[nodes] + delta <= z[peak]]
+    last = nodes[z[nodes] - delta >= z[lo]]
+    rise = np.concatenate([np.interp(z[first] + delta, z, p) - p[first],
+                           p[last] - np.interp(z[last] - delta, z, p)])
+    return float(max(np.max(rise) / delta, 0.0))
 
 
 def film_at_pressure_maximum(viscosity, speed, max_gradient):

@@ -50,7 +50,9 @@ The result is a Stribeck curve per stroke direction with boundary (f → μ_b·F
 mixed and hydrodynamic (f → ∫η·u/h dz + ...) branches, scaling with the circumference, and with
 the lubricant's viscosity at the contact temperature.  Several contact zones (an X-ring's two
 lobes) are treated as separate contacts, each fully flooded -- or, with a lubricant layer h_s on
-the counter surface as the only supply, each starved to h*₀ ≤ 2·h_s (mass conservation,
+the counter surface as the only supply, starved in the order the counter surface passes them:
+the first to h*₀ ≤ 2·h_s, each next one to at most the film of the one before, whose layer h*/2
+is all it gets (mass conservation,
 :func:`~sealsim.tribology.inverse_hydrodynamics.starved_film`).
 
 References
@@ -243,9 +245,11 @@ def reciprocating_friction(position, pressure, speed, viscosity, roughness, aspe
     film_factor : float
         Multiplier of the full film h*₀ [-] (1: the IHL film; a calibration may fit it).
     supply_layer : float
-        Lubricant layer on the counter surface ahead of each contact zone h_s [m]; the full
-        film is at most 2·h_s (a starved inlet,
-        :func:`~.inverse_hydrodynamics.starved_film`); ``inf``: fully flooded.
+        Lubricant layer on the counter surface ahead of the seal h_s [m], its only supply:
+        the first contact zone the counter surface reaches gets a full film of at most 2·h_s
+        (a starved inlet, :func:`~.inverse_hydrodynamics.starved_film`), each next zone at
+        most the film h* of the zone before it, which leaves the layer h*/2 (mass
+        conservation); ``inf``: every zone fully flooded.
     sealed_pressure : float
         Fluid pressure on the −z side of the profile Δp [Pa] (the pressurised side of an FE
         map's profile).  The film's pressure there starts at Δp, not at 0: Reynolds' equation
@@ -286,7 +290,11 @@ def reciprocating_friction(position, pressure, speed, viscosity, roughness, aspe
     h_profile = np.full((n, z.size), np.inf)
     main = None
     total_load = 0.0
-    for number, zone in enumerate(contact_zone_slices(p)):
+    zones = list(enumerate(contact_zone_slices(p)))
+    # in the order the counter surface passes them: with a limited supply each zone is fed
+    # by the layer h*/2 the one before leaves (the first by h_s)
+    supply = np.full(n, float(supply_layer))
+    for number, zone in (zones if direction > 0 else zones[::-1]):
         zz, pz = z[zone], p[zone]
         if zz.size < 2:
             continue
@@ -301,9 +309,11 @@ def reciprocating_friction(position, pressure, speed, viscosity, roughness, aspe
         w_max = max_inlet_gradient(zz, pz, direction, resolution)
         flooded = film_factor * film_at_pressure_maximum(eta, u, w_max) if w_max > 0 else \
             np.full(n, np.inf)
-        h0 = starved_film(flooded, supply_layer)
+        h0 = starved_film(flooded, supply)
         alpha, film = ihl_load_share(h0, pmax, roughness, modulus, *args,
-                                     film_limit=2.0 * supply_layer)
+                                     film_limit=2.0 * supply)
+        if np.isfinite(supply_layer):
+            supply = np.minimum(supply, 0.5 * film)
         shape, grad = film_shape_along(zz, pz, direction, w_max)
         h = film[:, None] * shape[None, :]
         with np.errstate(divide="ignore", invalid="ignore"):
@@ -314,7 +324,7 @@ def reciprocating_friction(position, pressure, speed, viscosity, roughness, aspe
         boundary += boundary_friction * alpha * load
         share_load += alpha * load
         h_profile[:, zone] = h
-        if main is None or pmax > main[0]:
+        if main is None or pmax > main[0] or (pmax == main[0] and direction < 0):
             main = (pmax, film, h0, w_max)
     if main is None:
         zero = np.zeros(n)
