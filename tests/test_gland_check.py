@@ -90,12 +90,37 @@ def test_flange_gland_of_a_seal_suppliers_worked_example():
         "housing": {"groove_depth": {"nominal": "2.3 mm", "upper": "0 mm", "lower": "0 mm"},
                     "groove_width": {"nominal": "4 mm", "upper": "0 mm", "lower": "0 mm"},
                     "groove_inner_diameter": {"nominal": "30 mm", "upper": "0 mm",
-                                              "lower": "0 mm"}},
+                                              "lower": "0 mm"},
+                    "gap": {"nominal": "0 mm", "upper": "0 mm", "lower": "0 mm"}},
         "service": {"temperature": ["20 degC"], "fluid_swell": 0.0}})
     r = sealsim.oring_gland(case)
     assert r["squeeze_percent"]["nominal"] == pytest.approx(100 * 0.7 / 3.0, abs=PP)
     assert r["stretch_percent"]["nominal"] == pytest.approx(0.0, abs=1e-9)
     assert r["gland_fill_percent"]["nominal"] == pytest.approx(76.83, abs=PP)
+
+
+def test_a_flange_separation_deepens_the_face_gland():
+    # The same flange gland with the flanges 0.2 mm apart: the ring is squeezed between the
+    # groove bottom and the cover flange, h = 2.3 + 0.2 = 2.5 mm (squeeze "is measured from
+    # the bottom of the groove to the mating surface and includes the clearance gap", US Seal,
+    # General design and gland dimensions).  By hand, no tolerances, at 20 degC:
+    #   squeeze (3 - 2.5) / 3 = 16.67 %;  fill pi/4 * 3^2 / (2.5 * 4.0) = 7.0686 / 10 = 70.69 %
+    # Before, the separation entered the extrusion gap only: 23.33 % and 76.83 %, as if the
+    # flanges touched.
+    exact = {"upper": "0 mm", "lower": "0 mm"}
+    case = _case("face_static.toml", {
+        "ring": {"cord_diameter": "3 mm", "inner_diameter": "30 mm", "cord_tolerance": "0 mm",
+                 "inner_diameter_tolerance": "0 mm"},
+        "housing": {"groove_depth": {"nominal": "2.3 mm", **exact},
+                    "groove_width": {"nominal": "4 mm", **exact},
+                    "groove_inner_diameter": {"nominal": "30 mm", **exact},
+                    "gap": {"nominal": "0.2 mm", **exact}},
+        "service": {"temperature": ["20 degC"], "fluid_swell": 0.0}})
+    r = sealsim.oring_gland(case)
+    for bound in ("min", "nominal", "max"):
+        assert r["squeeze_percent"][bound] == pytest.approx(100 * 0.5 / 3.0, abs=PP)
+        assert r["gland_fill_percent"][bound] == pytest.approx(70.69, abs=PP)
+    assert r["extrusion_gap_mm"]["max"] == pytest.approx(0.4, abs=1e-9)   # diametral: 2 x 0.2
 
 
 def test_rod_gland_with_thermal_contraction_by_hand():

@@ -9,7 +9,9 @@ Pure functions (SI units, numpy arrays broadcast):
   cross-section remains round when stretched");
 * :func:`squeeze`, :func:`stretch`, :func:`gland_fill` -- the definitions of the seal makers'
   handbooks (Parker, *O-Ring Handbook* ORD 5700): squeeze = (d2 - h)/d2 with h the gland depth
-  from the groove bottom to the sealing surface; stretch = (D_hardware - d1)/d1 with the
+  from the groove bottom to the sealing surface, clearance included (US Seal, *General design
+  and gland dimensions*: "squeeze is measured from the bottom of the groove to the mating
+  surface and includes the clearance gap"; a face gland's is its flange separation); stretch = (D_hardware - d1)/d1 with the
   hardware diameter the ring sits on (piston: groove bottom; rod: rod; face: groove inner
   diameter); gland fill = ring section area / (h · groove width);
 * :func:`extrusion_gap_limit` -- the largest diametral clearance against pressure and
@@ -209,7 +211,8 @@ def gland_state(housing: str, values: dict[str, Any], temperature, *,
     -------
     dict of numpy.ndarray
         ``squeeze``, ``stretch``, ``fill`` [-], ``gap`` (diametral extrusion gap; face: twice
-        the flange gap) [m], ``cord`` (installed d2') and ``depth`` (gland depth h) [m].
+        the flange gap) [m], ``cord`` (installed d2') and ``depth`` (gland depth h from the
+        groove bottom to the sealing surface; face: groove depth + flange gap) [m].
     """
     dt = np.asarray(temperature, dtype=float) - reference_temperature
     grow = {"inner": 1.0 + inner_expansion * dt, "outer": 1.0 + outer_expansion * dt}
@@ -234,7 +237,9 @@ def gland_state(housing: str, values: dict[str, Any], temperature, *,
     else:
         hardware = metal["groove_inner_diameter"]
         outer_seat = hardware + 2.0 * metal["groove_width"]
-        depth = metal["groove_depth"]
+        # from the groove bottom to the cover flange: a flange separation deepens the gland,
+        # as the radial clearance does in a piston or rod gland
+        depth = metal["groove_depth"] + metal["gap"]
         gap = 2.0 * metal["gap"]
     cord = installed_cord(d2, d1, seat_inner=hardware, seat_outer=outer_seat)
     return {"squeeze": squeeze(cord, depth), "stretch": stretch(d1, hardware),
