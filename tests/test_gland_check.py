@@ -306,6 +306,34 @@ def test_bad_gland_cases_are_refused_naming_the_field():
         sealsim.oring_gland(EXAMPLES / "piston_static.toml", fe=True)
 
 
+def test_glands_whose_parts_do_not_go_together_are_refused():
+    # before, a piston 25.2 f7 (up to 25.18 mm) in a 25 H8 bore passed every check with an
+    # extrusion gap of -0.153 ... -0.126 mm, and a groove bottom of 26 mm in that bore gave a
+    # squeeze of 115 % and a gland fill of -325 %
+    cases = (
+        ("piston_static.toml", {"piston_diameter": {"nominal": "25.2 mm", "fit": "f7"}},
+         r"housing\.piston_diameter: up to 25\.18 mm does not fit the bore from 25 mm"),
+        ("piston_static.toml", {"groove_diameter": {"nominal": "26 mm", "fit": "h9"}},
+         r"housing\.groove_diameter: up to 26 mm is not below the piston diameter"),
+        ("rod_reciprocating.toml", {"bore": {"nominal": "19.5 mm", "fit": "H8"}},
+         r"housing\.rod: up to 19\.98 mm does not fit the bore from 19\.5 mm"),
+        ("rod_reciprocating.toml", {"groove_diameter": {"nominal": "19 mm", "fit": "H8"}},
+         r"housing\.groove_diameter: from 19 mm is not above the rod bore"),
+        ("piston_static.toml", {"groove_width": {"nominal": "0 mm", "upper": "0 mm",
+                                                 "lower": "0 mm"}},
+         r"housing\.groove_width: from 0 mm; it must be > 0 mm"),
+        ("face_static.toml", {"gap": {"nominal": "0 mm", "upper": "0.02 mm",
+                                      "lower": "-0.01 mm"}},
+         r"housing\.gap: from -0\.01 mm"),
+    )
+    for name, housing, message in cases:
+        with pytest.raises(InputError, match=message):
+            _case(name, {"housing": housing})
+    # a line-to-line fit (zero clearance at a limit) is allowed
+    _case("piston_static.toml", {"housing": {"piston_diameter": {"nominal": "25 mm",
+                                                                 "fit": "h7"}}})
+
+
 def test_cli_writes_the_result_folder(tmp_path):
     out = tmp_path / "gland"
     result = CliRunner().invoke(app, ["gland", "check", str(EXAMPLES / "rod_extrusion_fails.toml"),
