@@ -338,7 +338,9 @@ def test_cli_writes_the_result_folder(tmp_path):
     out = tmp_path / "gland"
     result = CliRunner().invoke(app, ["gland", "check", str(EXAMPLES / "rod_extrusion_fails.toml"),
                                       "--out", str(out), "-q"])
-    assert result.exit_code == 0, result.output
+    # a failing gland is written and named, and exits with 1 (before: 0, so `sealsim gland
+    # check g.toml && next-step` went on with a gland that fails); a passing one with 0
+    assert result.exit_code == 1, result.output
     assert "FAILED: extrusion_gap" in " ".join(result.output.split())
     report = json.loads((out / "report.json").read_text())
     assert report["failed"] == ["extrusion_gap"]
@@ -352,6 +354,9 @@ def test_cli_writes_the_result_folder(tmp_path):
     second = CliRunner().invoke(app, ["gland", "check", str(EXAMPLES / "face_static.toml"),
                                       "--out", str(out), "-q"])
     assert second.exit_code == 2 and "--force" in second.output
+    passing = CliRunner().invoke(app, ["gland", "check", str(EXAMPLES / "face_static.toml"),
+                                       "--out", str(tmp_path / "face"), "-q"])
+    assert passing.exit_code == 0 and "all checks pass" in passing.output, passing.output
 
 
 def test_fe_at_nominal_is_the_structure_model_of_the_nominal_gland(tmp_path, monkeypatch):
