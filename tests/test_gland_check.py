@@ -286,6 +286,30 @@ def test_a_piston_ring_larger_than_its_groove_fails_the_stretch_check():
     assert "stretch_min" not in {c["name"] for c in rod["checks"]}
 
 
+def test_a_clearance_closed_by_the_metals_expansion_fails():
+    # an aluminium piston (23e-6 1/K) 25 g6 in the steel 25 H8 bore (11.5e-6 1/K) at 150 degC,
+    # 130 K above assembly.  By hand: bore from 25.000 * (1 + 11.5e-6 * 130) = 25.03738 mm,
+    # piston g6 (es -7 um, IT6 13 um) up to 24.993 * (1 + 23e-6 * 130) = 25.06773 mm:
+    # clearance -0.03035 mm, the piston seizes.  Before, every check passed (the stack's gap
+    # minimum, -0.0304 mm, was checked against nothing).
+    r = sealsim.oring_gland(_case("piston_static.toml", {
+        "housing": {"inner_expansion": "23e-6 1/K",
+                    "piston_diameter": {"nominal": "25 mm", "fit": "g6"}},
+        "service": {"temperature": ["-20 degC", "150 degC"]}}))
+    check = next(c for c in r["checks"] if c["name"] == "clearance_min")
+    assert r["failed"] == ["clearance_min"] and not check["ok"]
+    assert check["value"] == pytest.approx(-0.03035, abs=2e-5) and check["unit"] == "mm"
+    assert r["worst_case_corners"]["gap_min"]["temperature_C"] == pytest.approx(150.0)
+    assert any(n.startswith("clearance_min fails: worst case -0.0304 mm") for n in r["notes"])
+    # the example's steel piston keeps its H8/f7 clearance: 0.020 mm at assembly, shrunk with
+    # the steel at -20 degC to 0.020 * (1 - 11.5e-6 * 40) = 0.019991 mm
+    ok = sealsim.oring_gland(EXAMPLES / "piston_static.toml")
+    check = next(c for c in ok["checks"] if c["name"] == "clearance_min")
+    assert ok["ok"] and check["value"] == pytest.approx(0.020 * (1 - 11.5e-6 * 40), abs=1e-9)
+    face = sealsim.oring_gland(EXAMPLES / "face_static.toml")
+    assert "clearance_min" not in {c["name"] for c in face["checks"]}
+
+
 def test_own_limits_replace_the_published_ones_and_say_so():
     r = sealsim.oring_gland(_case("xring_piston.toml", {"limits": {"squeeze_min": 0.01}}))
     check = next(c for c in r["checks"] if c["name"] == "squeeze_min")

@@ -47,8 +47,8 @@ import numpy as np
 
 from sealsim.errors import InputError
 
-__all__ = ["DESIGN_LIMITS", "GlandGeometry", "GlandReport", "PISTON_STRETCH_MIN", "QUANTITIES",
-           "check_gland", "corner_values", "design_checks", "extrusion_gap_limit", "gland_fill",
+__all__ = ["CLEARANCE_MIN", "DESIGN_LIMITS", "GlandGeometry", "GlandReport",
+           "PISTON_STRETCH_MIN", "QUANTITIES", "check_gland", "corner_values", "design_checks", "extrusion_gap_limit", "gland_fill",
            "gland_state", "installed_cord", "squeeze", "stretch", "worst_case"]
 
 PSI = 6894.757293168361
@@ -411,6 +411,14 @@ PISTON_STRETCH_MIN = DesignLimit(
     "O-ring's inside diameter (I.D.) must be smaller than the piston groove diameter, so that "
     "the O-ring is slightly stretched' (1-5 %, 2 % ideal; floating seals, which may leak, are "
     "the exception: set limits.stretch_min below 0)")
+#: A piston or rod gland's metal parts must not interfere at any service temperature: their
+#: expansion can close a clearance that the fit (checked at assembly when the case is read)
+#: leaves, e.g. an aluminium piston in a steel bore when hot.  Geometry, not a recommendation.
+CLEARANCE_MIN = DesignLimit(
+    "clearance_min", "gap", "min", 0.0,
+    "geometry: a diametral clearance below 0 is an interference, the piston or rod is larger "
+    "than its bore and seizes (the metal parts' expansion from the assembly temperature "
+    "closes the clearance of the fit)", maker=False)
 #: Cross-sections below which the small-section squeeze limit of dynamic seals applies [m]
 #: (AS568 -0xx series, 1.78 mm: the 'small cross-sectional diameters' of the Kutz quote).
 SMALL_CORD = 2.0e-3
@@ -442,7 +450,8 @@ def design_checks(stack: dict[str, dict[str, float]], *, motion: str, cord: floa
     overrides : dict, optional
         The case's own limits (``squeeze_min`` ..., ``extrusion_gap_max`` [m]).
     housing : {"piston", "rod", "face"}, optional
-        A piston gland adds the check ``stretch_min``.
+        A piston gland adds the check ``stretch_min``, a piston or rod gland the check
+        ``clearance_min`` (:data:`CLEARANCE_MIN`).
 
     Values and limits are percent for squeeze, stretch and fill, mm for the gap (``unit``).
     """
@@ -456,6 +465,8 @@ def design_checks(stack: dict[str, dict[str, float]], *, motion: str, cord: floa
     if housing == "piston":
         limits.insert(3, PISTON_STRETCH_MIN)             # after stretch_max
     limits.append(DesignLimit("extrusion_gap", "gap", "max", gap_limit, EXTRUSION_SOURCE))
+    if housing in ("piston", "rod"):
+        limits.append(CLEARANCE_MIN)
     checks = []
     for lim in limits:
         key = "extrusion_gap_max" if lim.name == "extrusion_gap" else lim.name
@@ -649,7 +660,7 @@ def check_gland(case) -> GlandReport:
 
 
 def _failure_text(check: dict[str, Any]) -> str:
-    unit = " mm" if check["name"] == "extrusion_gap" else " %"
+    unit = f" {check['unit']}"
     word = "below the minimum" if check["bound"] == "min" else "above the maximum"
     return (f"{check['name']} fails: worst case {check['value']:.3g}{unit} is {word} "
             f"{check['limit']:.3g}{unit} ({check['source']})")
