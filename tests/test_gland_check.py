@@ -316,6 +316,29 @@ def test_own_limits_replace_the_published_ones_and_say_so():
     assert check["ok"] and check["limit"] == pytest.approx(1.0) and "your limit" in check["source"]
 
 
+def test_fractions_are_read_as_engineers_write_them(tmp_path):
+    # swell and own limits in percent ("5 %") as well as fractions (0.05); before, "5 %" was
+    # refused ("unable to parse string as a number"); a plain 5 is still refused, naming both
+    as_percent = sealsim.oring_gland(_case("piston_static.toml", {
+        "service": {"fluid_swell": "5 %"}, "limits": {"squeeze_min": "18 %"}}))
+    as_fraction = sealsim.oring_gland(_case("piston_static.toml", {
+        "service": {"fluid_swell": 0.05}, "limits": {"squeeze_min": 0.18}}))
+    assert as_percent["squeeze_percent"] == as_fraction["squeeze_percent"]
+    assert as_percent["checks"] == as_fraction["checks"]
+    check = next(c for c in as_percent["checks"] if c["name"] == "squeeze_min")
+    assert check["limit"] == pytest.approx(18.0) and not check["ok"]      # 17.0 % < 18 %
+    with pytest.raises(InputError, match=r"service\.fluid_swell: 5 is out of range.*'5 %'"):
+        _case("piston_static.toml", {"service": {"fluid_swell": 5}})
+    # the resolved case reads back
+    out = tmp_path / "g"
+    result = CliRunner().invoke(app, ["gland", "check", str(EXAMPLES / "face_static.toml"),
+                                      "--out", str(out), "-q"])
+    assert result.exit_code == 0, result.output
+    again = sealsim.oring_gland(out / "case_resolved.toml")
+    assert again["gland_fill_percent"] == pytest.approx(
+        sealsim.oring_gland(EXAMPLES / "face_static.toml")["gland_fill_percent"])
+
+
 def test_bad_gland_cases_are_refused_naming_the_field():
     data = load_toml(EXAMPLES / "piston_static.toml")
     del data["housing"]["piston_diameter"]

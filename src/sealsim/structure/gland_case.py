@@ -224,8 +224,8 @@ class ServiceSpec(CaseModel):
     assembly_temperature: Q("temperature", gt=0.0, le=673.15) = Field(293.15, description=(
         "temperature at which the dimensions are given and the gland is assembled (ISO 1: "
         "20 degC)"))
-    fluid_swell: float = Field(0.0, ge=-0.2, le=1.0, description=(
-        "volume change of the ring in the fluid, e.g. 0.05 for +5 %; the ring is checked "
+    fluid_swell: Q("dimensionless", ge=-0.2, le=1.0) = Field(0.0, description=(
+        "volume change of the ring in the fluid, e.g. '5 %' (or 0.05); the ring is checked "
         "both unswollen (at assembly) and swollen"))
 
     @model_validator(mode="after")
@@ -249,12 +249,13 @@ class FESpec(CaseModel):
 class LimitsSpec(CaseModel):
     """Your own design limits, replacing the published ones (each is reported as yours)."""
 
-    squeeze_min: float | None = Field(None, ge=0.0, le=1.0, description="e.g. 0.08 (8 %)")
-    squeeze_max: float | None = Field(None, ge=0.0, le=1.0)
-    stretch_max: float | None = Field(None, ge=0.0, le=1.0)
-    stretch_min: float | None = Field(None, ge=-1.0, le=1.0, description=(
+    squeeze_min: Q("dimensionless", ge=0.0, le=1.0) | None = Field(
+        None, description="e.g. '8 %' (or 0.08)")
+    squeeze_max: Q("dimensionless", ge=0.0, le=1.0) | None = None
+    stretch_max: Q("dimensionless", ge=0.0, le=1.0) | None = None
+    stretch_min: Q("dimensionless", ge=-1.0, le=1.0) | None = Field(None, description=(
         "piston glands, at assembly: e.g. 0.01 (1 %); below 0 allows a floating ring"))
-    gland_fill_max: float | None = Field(None, ge=0.0, le=1.2)
+    gland_fill_max: Q("dimensionless", ge=0.0, le=1.2) | None = None
     extrusion_gap_max: Q("length", ge=0.0, le=0.01) | None = Field(None, description=(
         "largest diametral extrusion gap, e.g. '0.1 mm'"))
 
