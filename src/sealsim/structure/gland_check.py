@@ -11,9 +11,10 @@ Pure functions (SI units, numpy arrays broadcast):
   handbooks (Parker, *O-Ring Handbook* ORD 5700): squeeze = (d2 - h)/d2 with h the gland depth
   from the groove bottom to the sealing surface, clearance included (US Seal, *General design
   and gland dimensions*: "squeeze is measured from the bottom of the groove to the mating
-  surface and includes the clearance gap"; a face gland's is its flange separation); stretch = (D_hardware - d1)/d1 with the
-  hardware diameter the ring sits on (piston: groove bottom; rod: rod; face: groove inner
-  diameter); gland fill = ring section area / (h · groove width);
+  surface and includes the clearance gap"; a face gland's is its flange separation);
+  stretch = (D_hardware - d1)/d1 with the hardware diameter the ring sits on (piston: groove
+  bottom; rod: rod; face: groove inner diameter); gland fill = ring section area /
+  (h · groove width);
 * :func:`extrusion_gap_limit` -- the largest diametral clearance against pressure and
   hardness (Parker ORD 5700, Figure 3-2 "Limits for extrusion", as tabulated by Seal & Design
   Inc., *Extrusion limits of O-rings*, sealanddesign.com: 70 and 90 Shore A);
@@ -48,8 +49,9 @@ import numpy as np
 from sealsim.errors import InputError
 
 __all__ = ["CLEARANCE_MIN", "DESIGN_LIMITS", "GlandGeometry", "GlandReport",
-           "PISTON_STRETCH_MIN", "QUANTITIES", "check_gland", "corner_values", "design_checks", "extrusion_gap_limit", "gland_fill",
-           "gland_state", "installed_cord", "squeeze", "stretch", "worst_case"]
+           "PISTON_STRETCH_MIN", "QUANTITIES", "check_gland", "corner_values", "design_checks",
+           "extrusion_gap_limit", "gland_fill", "gland_state", "installed_cord", "squeeze",
+           "stretch", "worst_case"]
 
 PSI = 6894.757293168361
 """Pascal per psi (NIST SP 811, B.8)."""
