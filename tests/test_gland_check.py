@@ -90,12 +90,37 @@ def test_flange_gland_of_a_seal_suppliers_worked_example():
         "housing": {"groove_depth": {"nominal": "2.3 mm", "upper": "0 mm", "lower": "0 mm"},
                     "groove_width": {"nominal": "4 mm", "upper": "0 mm", "lower": "0 mm"},
                     "groove_inner_diameter": {"nominal": "30 mm", "upper": "0 mm",
-                                              "lower": "0 mm"}},
+                                              "lower": "0 mm"},
+                    "gap": {"nominal": "0 mm", "upper": "0 mm", "lower": "0 mm"}},
         "service": {"temperature": ["20 degC"], "fluid_swell": 0.0}})
     r = sealsim.oring_gland(case)
     assert r["squeeze_percent"]["nominal"] == pytest.approx(100 * 0.7 / 3.0, abs=PP)
     assert r["stretch_percent"]["nominal"] == pytest.approx(0.0, abs=1e-9)
     assert r["gland_fill_percent"]["nominal"] == pytest.approx(76.83, abs=PP)
+
+
+def test_a_flange_separation_deepens_the_face_gland():
+    # The same flange gland with the flanges 0.2 mm apart: the ring is squeezed between the
+    # groove bottom and the cover flange, h = 2.3 + 0.2 = 2.5 mm (squeeze "is measured from
+    # the bottom of the groove to the mating surface and includes the clearance gap", US Seal,
+    # General design and gland dimensions).  By hand, no tolerances, at 20 degC:
+    #   squeeze (3 - 2.5) / 3 = 16.67 %;  fill pi/4 * 3^2 / (2.5 * 4.0) = 7.0686 / 10 = 70.69 %
+    # Before, the separation entered the extrusion gap only: 23.33 % and 76.83 %, as if the
+    # flanges touched.
+    exact = {"upper": "0 mm", "lower": "0 mm"}
+    case = _case("face_static.toml", {
+        "ring": {"cord_diameter": "3 mm", "inner_diameter": "30 mm", "cord_tolerance": "0 mm",
+                 "inner_diameter_tolerance": "0 mm"},
+        "housing": {"groove_depth": {"nominal": "2.3 mm", **exact},
+                    "groove_width": {"nominal": "4 mm", **exact},
+                    "groove_inner_diameter": {"nominal": "30 mm", **exact},
+                    "gap": {"nominal": "0.2 mm", **exact}},
+        "service": {"temperature": ["20 degC"], "fluid_swell": 0.0}})
+    r = sealsim.oring_gland(case)
+    for bound in ("min", "nominal", "max"):
+        assert r["squeeze_percent"][bound] == pytest.approx(100 * 0.5 / 3.0, abs=PP)
+        assert r["gland_fill_percent"][bound] == pytest.approx(70.69, abs=PP)
+    assert r["extrusion_gap_mm"]["max"] == pytest.approx(0.4, abs=1e-9)   # diametral: 2 x 0.2
 
 
 def test_rod_gland_with_thermal_contraction_by_hand():
@@ -261,10 +286,57 @@ def test_a_piston_ring_larger_than_its_groove_fails_the_stretch_check():
     assert "stretch_min" not in {c["name"] for c in rod["checks"]}
 
 
+def test_a_clearance_closed_by_the_metals_expansion_fails():
+    # an aluminium piston (23e-6 1/K) 25 g6 in the steel 25 H8 bore (11.5e-6 1/K) at 150 degC,
+    # 130 K above assembly.  By hand: bore from 25.000 * (1 + 11.5e-6 * 130) = 25.03738 mm,
+    # piston g6 (es -7 um, IT6 13 um) up to 24.993 * (1 + 23e-6 * 130) = 25.06773 mm:
+    # clearance -0.03035 mm, the piston seizes.  Before, every check passed (the stack's gap
+    # minimum, -0.0304 mm, was checked against nothing).
+    r = sealsim.oring_gland(_case("piston_static.toml", {
+        "housing": {"inner_expansion": "23e-6 1/K",
+                    "piston_diameter": {"nominal": "25 mm", "fit": "g6"}},
+        "service": {"temperature": ["-20 degC", "150 degC"]}}))
+    check = next(c for c in r["checks"] if c["name"] == "clearance_min")
+    assert r["failed"] == ["clearance_min"] and not check["ok"]
+    assert check["value"] == pytest.approx(-0.03035, abs=2e-5) and check["unit"] == "mm"
+    assert r["worst_case_corners"]["gap_min"]["temperature_C"] == pytest.approx(150.0)
+    assert any(n.startswith("clearance_min fails: worst case -0.0304 mm") for n in r["notes"])
+    # the example's steel piston keeps its H8/f7 clearance: 0.020 mm at assembly, shrunk with
+    # the steel at -20 degC to 0.020 * (1 - 11.5e-6 * 40) = 0.019991 mm
+    ok = sealsim.oring_gland(EXAMPLES / "piston_static.toml")
+    check = next(c for c in ok["checks"] if c["name"] == "clearance_min")
+    assert ok["ok"] and check["value"] == pytest.approx(0.020 * (1 - 11.5e-6 * 40), abs=1e-9)
+    face = sealsim.oring_gland(EXAMPLES / "face_static.toml")
+    assert "clearance_min" not in {c["name"] for c in face["checks"]}
+
+
 def test_own_limits_replace_the_published_ones_and_say_so():
     r = sealsim.oring_gland(_case("xring_piston.toml", {"limits": {"squeeze_min": 0.01}}))
     check = next(c for c in r["checks"] if c["name"] == "squeeze_min")
     assert check["ok"] and check["limit"] == pytest.approx(1.0) and "your limit" in check["source"]
+
+
+def test_fractions_are_read_as_engineers_write_them(tmp_path):
+    # swell and own limits in percent ("5 %") as well as fractions (0.05); before, "5 %" was
+    # refused ("unable to parse string as a number"); a plain 5 is still refused, naming both
+    as_percent = sealsim.oring_gland(_case("piston_static.toml", {
+        "service": {"fluid_swell": "5 %"}, "limits": {"squeeze_min": "18 %"}}))
+    as_fraction = sealsim.oring_gland(_case("piston_static.toml", {
+        "service": {"fluid_swell": 0.05}, "limits": {"squeeze_min": 0.18}}))
+    assert as_percent["squeeze_percent"] == as_fraction["squeeze_percent"]
+    assert as_percent["checks"] == as_fraction["checks"]
+    check = next(c for c in as_percent["checks"] if c["name"] == "squeeze_min")
+    assert check["limit"] == pytest.approx(18.0) and not check["ok"]      # 17.0 % < 18 %
+    with pytest.raises(InputError, match=r"service\.fluid_swell: 5 is out of range.*'5 %'"):
+        _case("piston_static.toml", {"service": {"fluid_swell": 5}})
+    # the resolved case reads back
+    out = tmp_path / "g"
+    result = CliRunner().invoke(app, ["gland", "check", str(EXAMPLES / "face_static.toml"),
+                                      "--out", str(out), "-q"])
+    assert result.exit_code == 0, result.output
+    again = sealsim.oring_gland(out / "case_resolved.toml")
+    assert again["gland_fill_percent"] == pytest.approx(
+        sealsim.oring_gland(EXAMPLES / "face_static.toml")["gland_fill_percent"])
 
 
 def test_bad_gland_cases_are_refused_naming_the_field():
@@ -281,11 +353,41 @@ def test_bad_gland_cases_are_refused_naming_the_field():
         sealsim.oring_gland(EXAMPLES / "piston_static.toml", fe=True)
 
 
+def test_glands_whose_parts_do_not_go_together_are_refused():
+    # before, a piston 25.2 f7 (up to 25.18 mm) in a 25 H8 bore passed every check with an
+    # extrusion gap of -0.153 ... -0.126 mm, and a groove bottom of 26 mm in that bore gave a
+    # squeeze of 115 % and a gland fill of -325 %
+    cases = (
+        ("piston_static.toml", {"piston_diameter": {"nominal": "25.2 mm", "fit": "f7"}},
+         r"housing\.piston_diameter: up to 25\.18 mm does not fit the bore from 25 mm"),
+        ("piston_static.toml", {"groove_diameter": {"nominal": "26 mm", "fit": "h9"}},
+         r"housing\.groove_diameter: up to 26 mm is not below the piston diameter"),
+        ("rod_reciprocating.toml", {"bore": {"nominal": "19.5 mm", "fit": "H8"}},
+         r"housing\.rod: up to 19\.98 mm does not fit the bore from 19\.5 mm"),
+        ("rod_reciprocating.toml", {"groove_diameter": {"nominal": "19 mm", "fit": "H8"}},
+         r"housing\.groove_diameter: from 19 mm is not above the rod bore"),
+        ("piston_static.toml", {"groove_width": {"nominal": "0 mm", "upper": "0 mm",
+                                                 "lower": "0 mm"}},
+         r"housing\.groove_width: from 0 mm; it must be > 0 mm"),
+        ("face_static.toml", {"gap": {"nominal": "0 mm", "upper": "0.02 mm",
+                                      "lower": "-0.01 mm"}},
+         r"housing\.gap: from -0\.01 mm"),
+    )
+    for name, housing, message in cases:
+        with pytest.raises(InputError, match=message):
+            _case(name, {"housing": housing})
+    # a line-to-line fit (zero clearance at a limit) is allowed
+    _case("piston_static.toml", {"housing": {"piston_diameter": {"nominal": "25 mm",
+                                                                 "fit": "h7"}}})
+
+
 def test_cli_writes_the_result_folder(tmp_path):
     out = tmp_path / "gland"
     result = CliRunner().invoke(app, ["gland", "check", str(EXAMPLES / "rod_extrusion_fails.toml"),
                                       "--out", str(out), "-q"])
-    assert result.exit_code == 0, result.output
+    # a failing gland is written and named, and exits with 1 (before: 0, so `sealsim gland
+    # check g.toml && next-step` went on with a gland that fails); a passing one with 0
+    assert result.exit_code == 1, result.output
     assert "FAILED: extrusion_gap" in " ".join(result.output.split())
     report = json.loads((out / "report.json").read_text())
     assert report["failed"] == ["extrusion_gap"]
@@ -299,6 +401,9 @@ def test_cli_writes_the_result_folder(tmp_path):
     second = CliRunner().invoke(app, ["gland", "check", str(EXAMPLES / "face_static.toml"),
                                       "--out", str(out), "-q"])
     assert second.exit_code == 2 and "--force" in second.output
+    passing = CliRunner().invoke(app, ["gland", "check", str(EXAMPLES / "face_static.toml"),
+                                       "--out", str(tmp_path / "face"), "-q"])
+    assert passing.exit_code == 0 and "all checks pass" in passing.output, passing.output
 
 
 def test_fe_at_nominal_is_the_structure_model_of_the_nominal_gland(tmp_path, monkeypatch):

@@ -36,8 +36,9 @@ def check(
     """Check a gland: worst-case squeeze, stretch, gland fill and extrusion gap.
 
     Writes report.json, checks.csv, stack.csv, section.png and case_resolved.toml.  A failed
-    check is a result, not an error: the command exits with 0 and names it (report.json
-    "ok": false, "failed": [...]).
+    check is a result: it is written and named (report.json "ok": false, "failed": [...]),
+    and the command exits with status 1, so a script or build step stops at a gland that
+    fails (0: all checks pass; 2: bad input).
     """
     from sealsim.plotting.gland import check_label
     from sealsim.runs.gland import check_case_file
@@ -71,3 +72,5 @@ def check(
     verdict = "all checks pass" if report["ok"] else f"FAILED: {', '.join(report['failed'])}"
     console.print(f"[bold]{verdict}[/]; results written to {out}/ (report.json, checks.csv, "
                   "stack.csv, section.png, case_resolved.toml)")
+    if not report["ok"]:
+        raise typer.Exit(1)

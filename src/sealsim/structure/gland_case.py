@@ -155,7 +155,53 @@ class HousingSpec(CaseModel):
                              f"takes {', '.join(needed)}")
         if self.type == "face" and self.motion != "static":
             raise ValueError("a face gland is static: housing.motion = 'static'")
+        self._check_fits(self.dimension_limits())
         return self
+
+    def _check_fits(self, limits: dict[str, tuple[float, float, float]]) -> None:
+        """Refuse a gland whose parts do not go together at some tolerance limit: a piston or
+        rod larger than its bore, a groove bottom outside its land, a groove without width
+        or depth, flanges closer than touching."""
+        def mm(x):
+            return f"{x * 1e3:.4g} mm"
+
+        def lo(name):
+            return limits[name][0]
+
+        def hi(name):
+            return limits[name][2]
+
+        problems = []
+        if self.type in ("piston", "rod"):
+            inner = "piston_diameter" if self.type == "piston" else "rod"
+            if hi(inner) > lo("bore"):
+                problems.append(
+                    f"housing.{inner}: up to {mm(hi(inner))} does not fit the bore from "
+                    f"{mm(lo('bore'))}: the diametral clearance must be >= 0 at every tolerance "
+                    "limit (a clearance fit, e.g. bore H8 with f7)")
+            if self.type == "piston" and hi("groove_diameter") >= lo("piston_diameter"):
+                problems.append(
+                    f"housing.groove_diameter: up to {mm(hi('groove_diameter'))} is not below "
+                    f"the piston diameter from {mm(lo('piston_diameter'))}: the groove bottom "
+                    "must lie inside the piston")
+            if self.type == "rod" and lo("groove_diameter") <= hi("bore"):
+                problems.append(
+                    f"housing.groove_diameter: from {mm(lo('groove_diameter'))} is not above "
+                    f"the rod bore up to {mm(hi('bore'))}: the groove bottom must lie outside "
+                    "the bore the rod passes through")
+        else:
+            for name in ("groove_depth", "groove_inner_diameter"):
+                if lo(name) <= 0.0:
+                    problems.append(f"housing.{name}: from {mm(lo(name))}; it must be > 0 mm")
+            if lo("gap") < 0.0:
+                problems.append(f"housing.gap: from {mm(lo('gap'))}; the flange separation "
+                                "is >= 0 mm (0: metal to metal)")
+        if lo("groove_width") <= 0.0:
+            problems.append(f"housing.groove_width: from {mm(lo('groove_width'))}; it must be "
+                            "> 0 mm")
+        if problems:
+            raise ValueError(f"a {self.type} gland whose parts do not go together: "
+                             + "; ".join(problems))
 
     def dimension_limits(self) -> dict[str, tuple[float, float, float]]:
         """{name: (smallest, middle, largest)} [m] of the housing's dimensions (the middle of
@@ -178,8 +224,8 @@ class ServiceSpec(CaseModel):
     assembly_temperature: Q("temperature", gt=0.0, le=673.15) = Field(293.15, description=(
         "temperature at which the dimensions are given and the gland is assembled (ISO 1: "
         "20 degC)"))
-    fluid_swell: float = Field(0.0, ge=-0.2, le=1.0, description=(
-        "volume change of the ring in the fluid, e.g. 0.05 for +5 %; the ring is checked "
+    fluid_swell: Q("dimensionless", ge=-0.2, le=1.0) = Field(0.0, description=(
+        "volume change of the ring in the fluid, e.g. '5 %' (or 0.05); the ring is checked "
         "both unswollen (at assembly) and swollen"))
 
     @model_validator(mode="after")
@@ -203,12 +249,13 @@ class FESpec(CaseModel):
 class LimitsSpec(CaseModel):
     """Your own design limits, replacing the published ones (each is reported as yours)."""
 
-    squeeze_min: float | None = Field(None, ge=0.0, le=1.0, description="e.g. 0.08 (8 %)")
-    squeeze_max: float | None = Field(None, ge=0.0, le=1.0)
-    stretch_max: float | None = Field(None, ge=0.0, le=1.0)
-    stretch_min: float | None = Field(None, ge=-1.0, le=1.0, description=(
+    squeeze_min: Q("dimensionless", ge=0.0, le=1.0) | None = Field(
+        None, description="e.g. '8 %' (or 0.08)")
+    squeeze_max: Q("dimensionless", ge=0.0, le=1.0) | None = None
+    stretch_max: Q("dimensionless", ge=0.0, le=1.0) | None = None
+    stretch_min: Q("dimensionless", ge=-1.0, le=1.0) | None = Field(None, description=(
         "piston glands, at assembly: e.g. 0.01 (1 %); below 0 allows a floating ring"))
-    gland_fill_max: float | None = Field(None, ge=0.0, le=1.2)
+    gland_fill_max: Q("dimensionless", ge=0.0, le=1.2) | None = None
     extrusion_gap_max: Q("length", ge=0.0, le=0.01) | None = Field(None, description=(
         "largest diametral extrusion gap, e.g. '0.1 mm'"))
 

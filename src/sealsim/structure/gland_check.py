@@ -9,9 +9,12 @@ Pure functions (SI units, numpy arrays broadcast):
   cross-section remains round when stretched");
 * :func:`squeeze`, :func:`stretch`, :func:`gland_fill` -- the definitions of the seal makers'
   handbooks (Parker, *O-Ring Handbook* ORD 5700): squeeze = (d2 - h)/d2 with h the gland depth
-  from the groove bottom to the sealing surface; stretch = (D_hardware - d1)/d1 with the
-  hardware diameter the ring sits on (piston: groove bottom; rod: rod; face: groove inner
-  diameter); gland fill = ring section area / (h · groove width);
+  from the groove bottom to the sealing surface, clearance included (US Seal, *General design
+  and gland dimensions*: "squeeze is measured from the bottom of the groove to the mating
+  surface and includes the clearance gap"; a face gland's is its flange separation);
+  stretch = (D_hardware - d1)/d1 with the hardware diameter the ring sits on (piston: groove
+  bottom; rod: rod; face: groove inner diameter); gland fill = ring section area /
+  (h · groove width);
 * :func:`extrusion_gap_limit` -- the largest diametral clearance against pressure and
   hardness (Parker ORD 5700, Figure 3-2 "Limits for extrusion", as tabulated by Seal & Design
   Inc., *Extrusion limits of O-rings*, sealanddesign.com: 70 and 90 Shore A);
@@ -45,9 +48,10 @@ import numpy as np
 
 from sealsim.errors import InputError
 
-__all__ = ["DESIGN_LIMITS", "GlandGeometry", "GlandReport", "PISTON_STRETCH_MIN", "QUANTITIES",
-           "check_gland", "corner_values", "design_checks", "extrusion_gap_limit", "gland_fill",
-           "gland_state", "installed_cord", "squeeze", "stretch", "worst_case"]
+__all__ = ["CLEARANCE_MIN", "DESIGN_LIMITS", "GlandGeometry", "GlandReport",
+           "PISTON_STRETCH_MIN", "QUANTITIES", "check_gland", "corner_values", "design_checks",
+           "extrusion_gap_limit", "gland_fill", "gland_state", "installed_cord", "squeeze",
+           "stretch", "worst_case"]
 
 PSI = 6894.757293168361
 """Pascal per psi (NIST SP 811, B.8)."""
@@ -209,7 +213,8 @@ def gland_state(housing: str, values: dict[str, Any], temperature, *,
     -------
     dict of numpy.ndarray
         ``squeeze``, ``stretch``, ``fill`` [-], ``gap`` (diametral extrusion gap; face: twice
-        the flange gap) [m], ``cord`` (installed d2') and ``depth`` (gland depth h) [m].
+        the flange gap) [m], ``cord`` (installed d2') and ``depth`` (gland depth h from the
+        groove bottom to the sealing surface; face: groove depth + flange gap) [m].
     """
     dt = np.asarray(temperature, dtype=float) - reference_temperature
     grow = {"inner": 1.0 + inner_expansion * dt, "outer": 1.0 + outer_expansion * dt}
@@ -234,7 +239,9 @@ def gland_state(housing: str, values: dict[str, Any], temperature, *,
     else:
         hardware = metal["groove_inner_diameter"]
         outer_seat = hardware + 2.0 * metal["groove_width"]
-        depth = metal["groove_depth"]
+        # from the groove bottom to the cover flange: a flange separation deepens the gland,
+        # as the radial clearance does in a piston or rod gland
+        depth = metal["groove_depth"] + metal["gap"]
         gap = 2.0 * metal["gap"]
     cord = installed_cord(d2, d1, seat_inner=hardware, seat_outer=outer_seat)
     return {"squeeze": squeeze(cord, depth), "stretch": stretch(d1, hardware),
@@ -406,6 +413,14 @@ PISTON_STRETCH_MIN = DesignLimit(
     "O-ring's inside diameter (I.D.) must be smaller than the piston groove diameter, so that "
     "the O-ring is slightly stretched' (1-5 %, 2 % ideal; floating seals, which may leak, are "
     "the exception: set limits.stretch_min below 0)")
+#: A piston or rod gland's metal parts must not interfere at any service temperature: their
+#: expansion can close a clearance that the fit (checked at assembly when the case is read)
+#: leaves, e.g. an aluminium piston in a steel bore when hot.  Geometry, not a recommendation.
+CLEARANCE_MIN = DesignLimit(
+    "clearance_min", "gap", "min", 0.0,
+    "geometry: a diametral clearance below 0 is an interference, the piston or rod is larger "
+    "than its bore and seizes (the metal parts' expansion from the assembly temperature "
+    "closes the clearance of the fit)", maker=False)
 #: Cross-sections below which the small-section squeeze limit of dynamic seals applies [m]
 #: (AS568 -0xx series, 1.78 mm: the 'small cross-sectional diameters' of the Kutz quote).
 SMALL_CORD = 2.0e-3
@@ -437,7 +452,8 @@ def design_checks(stack: dict[str, dict[str, float]], *, motion: str, cord: floa
     overrides : dict, optional
         The case's own limits (``squeeze_min`` ..., ``extrusion_gap_max`` [m]).
     housing : {"piston", "rod", "face"}, optional
-        A piston gland adds the check ``stretch_min``.
+        A piston gland adds the check ``stretch_min``, a piston or rod gland the check
+        ``clearance_min`` (:data:`CLEARANCE_MIN`).
 
     Values and limits are percent for squeeze, stretch and fill, mm for the gap (``unit``).
     """
@@ -451,6 +467,8 @@ def design_checks(stack: dict[str, dict[str, float]], *, motion: str, cord: floa
     if housing == "piston":
         limits.insert(3, PISTON_STRETCH_MIN)             # after stretch_max
     limits.append(DesignLimit("extrusion_gap", "gap", "max", gap_limit, EXTRUSION_SOURCE))
+    if housing in ("piston", "rod"):
+        limits.append(CLEARANCE_MIN)
     checks = []
     for lim in limits:
         key = "extrusion_gap_max" if lim.name == "extrusion_gap" else lim.name
@@ -644,7 +662,7 @@ def check_gland(case) -> GlandReport:
 
 
 def _failure_text(check: dict[str, Any]) -> str:
-    unit = " mm" if check["name"] == "extrusion_gap" else " %"
+    unit = f" {check['unit']}"
     word = "below the minimum" if check["bound"] == "min" else "above the maximum"
     return (f"{check['name']} fails: worst case {check['value']:.3g}{unit} is {word} "
             f"{check['limit']:.3g}{unit} ({check['source']})")
