@@ -153,7 +153,7 @@ def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] | Oil = 
     --------
     >>> r = lip_seal_torque("60 mm", "1500 rpm", "ISO VG 220", "70 degC")
     >>> round(r["torque_Nm"], 3), round(r["film_um"], 2)
-    (0.219, 0.82)
+    (0.219, 0.81)
     >>> lip_seal_torque("60 mm", ["500 rpm", "3000 rpm"], "ISO VG 220",
     ...                 "70 degC")[["speed_rpm", "torque_Nm"]].round(3)
        speed_rpm  torque_Nm
