@@ -12,6 +12,7 @@ from sealsim.cases import apply_overrides, load_toml, validate_case
 from sealsim.pneumatic import PneumaticCase, build_seals, simulate
 from sealsim.pneumatic import rhs
 from sealsim.pneumatic.seal_heating import (
+    ambient_coefficient,
     sliding_contact_coefficient,
     steady_seal_temperature,
 )
@@ -150,5 +151,35 @@ def test_rod_surface_in_the_rod_chamber_exchanges_heat_with_the_rod_node():
     q_rod = h * a_rod * (t_rod - t2)
     assert d["q1"][0] == pytest.approx(h * a_w1 * (t_tube - t1), rel=1e-12)
     assert d["q2"][0] == pytest.approx(h * (a_w2 - a_rod) * (t_tube - t2) + q_rod, rel=1e-12)
-    rod_rate = (-q_rod - c[rhs.C_ROD_G] * (t_rod - system.t_amb)) / c[rhs.C_ROD_CAP]
+    # the rod is outside the cylinder over the piston's extension x only
+    h_amb = ambient_coefficient(cyl.rod_diameter, system.t_amb + 10.0, system.t_amb, 0.1)
+    rod_rate = (-q_rod - h_amb * np.pi * cyl.rod_diameter * x * (t_rod - system.t_amb)) / c[
+        rhs.C_ROD_CAP]
     assert d["dy"][toff + 1, 0] == pytest.approx(rod_rate, rel=1e-12)
+
+
+@pytest.mark.parametrize("x_frac", [0.0, 0.5, 1.0])
+def test_rod_loses_heat_to_the_surroundings_over_its_extended_length_only(x_frac):
+    # The rod's surface outside the cylinder is π·d·x (retracted, x = 0, it is all in the
+    # rod-side chamber and the head; it was π·d·L at every position, twice the loss over a
+    # cycle).  Rod node warmer than the air around it, chamber air at the rod temperature (no
+    # heat to the air): C_rod·dT_rod/dt = −h·π·d·x·(T_rod − T_amb), h of a horizontal Ø12
+    # chromed rod (Churchill & Chu + radiation, ε = 0.1, 10 K above ambient), to round-off.
+    from sealsim.pneumatic.chambers import gas_mass, internal_energy
+
+    case = heated("cylinder_32.toml").model_copy(update={"seals": []})
+    system = PneumaticSystem(case, [])
+    cyl, c = case.cylinder, system.tables[0]
+    x, t_rod = x_frac * cyl.stroke, 318.15
+    vol1 = cyl.dead_volume_cap + system.a1 * x
+    vol2 = cyl.dead_volume_rod + system.a2 * (cyl.stroke - x)
+    y = system.initial_state()
+    m1, m2 = float(gas_mass(4e5, vol1, t_rod)), float(gas_mass(2e5, vol2, t_rod))
+    y[:6] = [x, 0.0, m1, m2, float(internal_energy(m1, t_rod)),
+             float(internal_energy(m2, t_rod))]
+    toff = system.temperature_offset
+    y[toff], y[toff + 1] = t_rod, t_rod
+    d = system.evaluate(0.0, y, rhs.FORWARD, full=True)
+    h_amb = ambient_coefficient(cyl.rod_diameter, system.t_amb + 10.0, system.t_amb, 0.1)
+    expected = -h_amb * np.pi * cyl.rod_diameter * x * (t_rod - system.t_amb)
+    assert d["dy"][toff + 1, 0] * c[rhs.C_ROD_CAP] == pytest.approx(expected, abs=1e-12)

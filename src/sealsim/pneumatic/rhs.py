@@ -92,13 +92,16 @@ THERMAL_BOOKKEEPING = ("friction_heat", "heat_to_air", "heat_to_ambient")
 (C_DEAD1, C_DEAD2, C_A1, C_A2, C_AROD, C_STROKE, C_BORE, C_PS, C_PA, C_TS, C_TA, C_C, C_B,
  C_M, C_BETA, C_CENTRE, C_H, C_TW, C_F0, C_KL, C_X0L, C_CL, C_INCL, C_MASS, C_KS, C_CS, C_DS,
  C_THR1, C_THR2, C_CU1_L, C_CU1_C, C_CU1_E, C_CU2_L, C_CU2_C, C_CU2_E,
- C_BOOK, C_HEAT, C_TOFF, C_TUBE_CAP, C_TUBE_G, C_ROD_CAP, C_ROD_G, C_TAMB,
+ C_BOOK, C_HEAT, C_TOFF, C_TUBE_CAP, C_TUBE_G, C_ROD_CAP, C_ROD_G_X, C_TAMB,
  C_SPOOL_TAU, C_SPOOL_INIT, C_PROFILE_KIND, C_HFREE,
  C_AW1, C_AW1_X, C_AW2, C_AW2_X, C_AWROD, C_AWROD_X, C_NCONST) = range(54)
 #: the chambers' wall areas A_w1, A_w2 and the rod's share of A_w2 are affine in x: their
 #: values at x = 0 (C_AW1, C_AW2, C_AWROD) [m²] and slopes dA/dx (C_*_X) [m] are those of
 #: :func:`sealsim.pneumatic.chambers.chamber_wall_areas`, the one formula of the Python model,
-#: this right-hand side and the FMU's C (:class:`.system.PneumaticSystem`)
+#: this right-hand side and the FMU's C (:class:`.system.PneumaticSystem`).
+#: C_ROD_G_X [W/(m·K)] is the rod's conductance to the surroundings per metre of rod outside
+#: the cylinder: the extension x is outside, the rest of the rod is in the rod-side chamber
+#: and the head
 
 # -- seal tables ----------------------------------------------------------------------------
 #: law codes: those of :mod:`sealsim.friction.compiled` (imported above)
@@ -434,7 +437,8 @@ def evaluate_column(t, y, col, mode, tables, dy, diag, level):
                 if full:
                     diag[r + DS_POWER, col] = power
             q_tube_amb = c[C_TUBE_G] * (t_tube - c[C_TAMB])
-            q_rod_amb = c[C_ROD_G] * (t_rod - c[C_TAMB])
+            outside = min(max(x, 0.0), c[C_STROKE])   # the extended length of the rod
+            q_rod_amb = c[C_ROD_G_X] * outside * (t_rod - c[C_TAMB])
             dy[toff + nseal, col] = (q_tube - q_tube_amb) / cap_t
             dy[toff + nseal + 1, col] = (q_rod - q_rod_amb) / c[C_ROD_CAP]
             nb = book + _NBOOK

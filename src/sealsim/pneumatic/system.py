@@ -288,14 +288,14 @@ class PneumaticSystem:
         nominal = t_body + th.nominal_temperature_rise
         c[rhs.C_TUBE_G] = ambient_coefficient(tube_od, nominal, t_amb, tube["emissivity"]) * (
             math.pi * tube_od * tube_length)
-        c[rhs.C_ROD_G] = ambient_coefficient(cyl.rod_diameter, nominal, t_amb,
-                                             rod["emissivity"]) * (
-            math.pi * cyl.rod_diameter * cyl.stroke)
+        # per metre of rod outside the cylinder (the piston's extension x: see rhs.C_ROD_G_X)
+        c[rhs.C_ROD_G_X] = ambient_coefficient(cyl.rod_diameter, nominal, t_amb,
+                                               rod["emissivity"]) * math.pi * cyl.rod_diameter
         self.thermal_constants = {
             "tube_heat_capacity_J_K": float(c[rhs.C_TUBE_CAP]),
             "rod_heat_capacity_J_K": float(c[rhs.C_ROD_CAP]),
             "tube_to_ambient_W_K": float(c[rhs.C_TUBE_G]),
-            "rod_to_ambient_W_K": float(c[rhs.C_ROD_G]),
+            "rod_to_ambient_extended_W_K": float(c[rhs.C_ROD_G_X] * cyl.stroke),
             "seals": {s.name: {"heat_capacity_J_K": float(self._seal_therm[i, rhs.ST_CAP]),
                                "to_groove_W_K": float(self._seal_therm[i, rhs.ST_GGROOVE]),
                                "static_contact_W_m2K": float(self._seal_therm[i, rhs.ST_HSTAT])}
