@@ -183,3 +183,22 @@ def test_rod_loses_heat_to_the_surroundings_over_its_extended_length_only(x_frac
     h_amb = ambient_coefficient(cyl.rod_diameter, system.t_amb + 10.0, system.t_amb, 0.1)
     expected = -h_amb * np.pi * cyl.rod_diameter * x * (t_rod - system.t_amb)
     assert d["dy"][toff + 1, 0] * c[rhs.C_ROD_CAP] == pytest.approx(expected, abs=1e-12)
+
+
+def test_rod_node_holds_the_heat_capacity_of_piston_and_rod():
+    # The rod node is the moving metal that the piston seal's groove and the rod seal heat:
+    # piston + rod, cylinder.piston_mass = 0.35 kg of steel (c = 434 J/(kg·K), Incropera
+    # Table A.1), 152 J/K; it was the rod alone (Ø12 × 150 mm, 0.13 kg, 58 J/K), so the rod
+    # and rod seal warmed 2.6 times too fast.  A rod of 0.2 kg in a 0.1 kg "piston + rod"
+    # keeps the rod's own capacity and says so.
+    case = heated("cylinder_32.toml").model_copy(update={"seals": []})
+    system = PneumaticSystem(case, [])
+    assert case.cylinder.piston_mass == pytest.approx(0.35)
+    assert system.tables[0][rhs.C_ROD_CAP] == pytest.approx(0.35 * 434.0, rel=1e-12)
+    assert system.thermal_notes == []
+    light = heated("cylinder_32.toml", {"cylinder": {"piston_mass": "0.1 kg"}}).model_copy(
+        update={"seals": []})
+    system = PneumaticSystem(light, [])
+    rod_mass = 7832.0 * np.pi / 4 * 0.012 ** 2 * (0.1 + 0.05)
+    assert system.tables[0][rhs.C_ROD_CAP] == pytest.approx(rod_mass * 434.0, rel=1e-12)
+    assert "less than the rod's own mass" in system.thermal_notes[0]

@@ -22,7 +22,8 @@ The metal parts are nodes as well, because they set the long-term temperature of
 sliding contact couples a seal to its counterface within a few kelvin, so a seal warms over a
 long duty cycle because the rod and the tube do.  The **tube** (the barrel swept by the piston
 seals, with the heads) receives the heat of the seals sliding on it and gives the chamber wall
-heat to the air (the chamber walls are at its temperature); the **rod** receives the heat of the
+heat to the air (the chamber walls are at its temperature); the **rod** -- the moving metal,
+piston and rod, of mass ``cylinder.piston_mass`` -- receives the heat of the
 rod seal and wiper and, through the groove of the piston, of the piston seals, and gives the
 air of the rod-side chamber the heat of its surface there
 (:func:`~sealsim.pneumatic.chambers.chamber_wall_areas`).  Both lose heat to the surroundings

@@ -283,8 +283,15 @@ class PneumaticSystem:
         c = self._c
         c[rhs.C_TUBE_CAP] = tube["density"] * tube["specific_heat"] * math.pi / 4.0 * (
             tube_od ** 2 - cyl.bore ** 2) * tube_length
-        c[rhs.C_ROD_CAP] = rod["density"] * rod["specific_heat"] * math.pi / 4.0 * (
-            cyl.rod_diameter ** 2) * rod_length
+        # the rod node is the moving metal, piston and rod (the piston seal's groove heats the
+        # piston): cylinder.piston_mass ("piston + rod") of the rod's metal, at least the rod
+        rod_mass = rod["density"] * math.pi / 4.0 * cyl.rod_diameter ** 2 * rod_length
+        if cyl.piston_mass < rod_mass:
+            self.thermal_notes.append(
+                f"cylinder.piston_mass ({cyl.piston_mass:.4g} kg, piston + rod) is less than the "
+                f"rod's own mass ({rod_mass:.4g} kg, {th.rod_material}, stroke + head_length "
+                "long): the rod node has the rod's heat capacity")
+        c[rhs.C_ROD_CAP] = rod["specific_heat"] * max(cyl.piston_mass, rod_mass)
         nominal = t_body + th.nominal_temperature_rise
         c[rhs.C_TUBE_G] = ambient_coefficient(tube_od, nominal, t_amb, tube["emissivity"]) * (
             math.pi * tube_od * tube_length)
