@@ -124,13 +124,15 @@ def test_contact_map_and_grease_follow_the_seal_temperature():
                                   f["F_N_test_seal_N"])
 
 
-def test_rod_surface_in_the_rod_chamber_exchanges_heat_with_the_rod_node():
-    # With seal heating the barrel and end faces are the tube node, and the rod's surface in
-    # the rod-side chamber, π·d·l2, is the rod node: chamber 2 gets
-    # q2 = h·(A_w2 − A_rod)·(T_tube − T2) + h·A_rod·(T_rod − T2), and the rod gives its part
-    # (before, the tube gave all of it and the rod none).  Chamber air and metal nodes at
-    # different temperatures, no seals; the rod node's rate against the hand balance
-    # C_rod·dT_rod/dt = −h·A_rod·(T_rod − T2) − G_rod,amb·(T_rod − T_amb), to round-off.
+def test_piston_faces_and_rod_surface_exchange_heat_with_the_moving_metal_node():
+    # With seal heating the barrel and the cap and head faces are the tube node; the piston's
+    # faces (A1 in chamber 1, the annulus A2 in chamber 2) and the rod's surface in the rod-side
+    # chamber, π·d·l2, are the piston-and-rod node:
+    #   q1 = h·(A_w1 − A1)·(T_tube − T1) + h·A1·(T_rod − T1)
+    #   q2 = h·(A_w2 − A_rod − A2)·(T_tube − T2) + h·(A_rod + A2)·(T_rod − T2)
+    # (before, the piston's faces were at the tube's temperature, the tube gave their heat).
+    # Chamber air and metal nodes at different temperatures, no seals; the two metal nodes'
+    # rates against the hand balances, to round-off.
     from sealsim.pneumatic.chambers import chamber_wall_areas, gas_mass, internal_energy
 
     case = heated("cylinder_32.toml").model_copy(update={"seals": []})
@@ -145,17 +147,23 @@ def test_rod_surface_in_the_rod_chamber_exchanges_heat_with_the_rod_node():
     toff = system.temperature_offset
     y[toff], y[toff + 1] = t_tube, t_rod
     d = system.evaluate(0.0, y, rhs.FORWARD, full=True)
-    a_w1, a_w2, a_rod = chamber_wall_areas(x, cyl.stroke, cyl.bore, cyl.rod_diameter,
-                                           system.a1, system.a2, cyl.dead_volume_cap,
-                                           cyl.dead_volume_rod)
-    q_rod = h * a_rod * (t_rod - t2)
-    assert d["q1"][0] == pytest.approx(h * a_w1 * (t_tube - t1), rel=1e-12)
-    assert d["q2"][0] == pytest.approx(h * (a_w2 - a_rod) * (t_tube - t2) + q_rod, rel=1e-12)
+    a1, a2 = system.a1, system.a2
+    a_w1, a_w2, a_rod = chamber_wall_areas(x, cyl.stroke, cyl.bore, cyl.rod_diameter, a1, a2,
+                                           cyl.dead_volume_cap, cyl.dead_volume_rod)
+    q1_tube, q1_rod = h * (a_w1 - a1) * (t_tube - t1), h * a1 * (t_rod - t1)
+    q2_tube, q2_rod = h * (a_w2 - a_rod - a2) * (t_tube - t2), h * (a_rod + a2) * (t_rod - t2)
+    assert d["q1"][0] == pytest.approx(q1_tube + q1_rod, rel=1e-12)
+    assert d["q2"][0] == pytest.approx(q2_tube + q2_rod, rel=1e-12)
     # the rod is outside the cylinder over the piston's extension x only
     h_amb = ambient_coefficient(cyl.rod_diameter, system.t_amb + 10.0, system.t_amb, 0.1)
-    rod_rate = (-q_rod - h_amb * np.pi * cyl.rod_diameter * x * (t_rod - system.t_amb)) / c[
-        rhs.C_ROD_CAP]
+    rod_rate = (-q1_rod - q2_rod - h_amb * np.pi * cyl.rod_diameter * x * (
+        t_rod - system.t_amb)) / c[rhs.C_ROD_CAP]
     assert d["dy"][toff + 1, 0] == pytest.approx(rod_rate, rel=1e-12)
+    tube_od, tube_length = cyl.bore + 2 * 4e-3, cyl.stroke + 0.05
+    h_tube = ambient_coefficient(tube_od, system.t_amb + 10.0, system.t_amb, 0.82)
+    tube_rate = (-q1_tube - q2_tube - h_tube * np.pi * tube_od * tube_length * (
+        t_tube - system.t_amb)) / c[rhs.C_TUBE_CAP]
+    assert d["dy"][toff, 0] == pytest.approx(tube_rate, rel=1e-12)
 
 
 @pytest.mark.parametrize("x_frac", [0.0, 0.5, 1.0])

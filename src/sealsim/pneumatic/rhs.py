@@ -232,8 +232,9 @@ def _seal_loads(i, dp, temp, map_int, map_data):
 def _flows_and_heat(x, p1, p2, t1, t2, s, t_wall, t_rod, c):
     """Mass flows g0..g3 [kg/s] of the paths P→A, A→R, P→B, B→R (meter-out throttles and end
     cushions in series), their enthalpy flows h0..h3 [W], the wall heat q1, q2 [W] into the
-    chambers and the part q2_rod of q2 that comes from the rod's surface (at t_rod), at spool
-    position s."""
+    chambers and the parts q1_rod, q2_rod of them that come from the moving metal at t_rod
+    (the piston's face in chamber 1; its annular face and the rod's surface in chamber 2), at
+    spool position s."""
     pa_, ar_, pb_, br_ = _openings(s, c[C_CENTRE])
     ps, pa, ts, ta = c[C_PS], c[C_PA], c[C_TS], c[C_TA]
     # restrictions on the way out of a chamber: meter-out throttle and end cushion
@@ -256,11 +257,17 @@ def _flows_and_heat(x, p1, p2, t1, t2, s, t_wall, t_rod, c):
     if c[C_HFREE] > 0.0:                          # free convection at the chamber's state
         hw1 = _free_h(p1, t1, t_wall, c[C_BORE])
         hw2 = _free_h(p2, t2, t_wall, c[C_BORE])
+    # the piston's faces (A1, A2: one of the two end faces of each chamber) and the rod's
+    # surface are the moving metal at t_rod, the rest the barrel and heads at t_wall; written
+    # as corrections h·A·(t_rod − t_wall) that are exactly 0 without seal heating
     area_rod = c[C_AWROD] + c[C_AWROD_X] * x
-    q1 = _heat(hw1, c[C_AW1] + c[C_AW1_X] * x, t_wall, t1)
-    q2_rod = _heat(hw2, area_rod, t_rod, t2)
-    q2 = _heat(hw2, c[C_AW2] + c[C_AW2_X] * x - area_rod, t_wall, t2) + q2_rod
-    return g0, g1, g2, g3, h0, h1, h2, h3, q1, q2, q2_rod
+    q1_rod = _heat(hw1, c[C_A1], t_rod, t1)
+    q1 = _heat(hw1, c[C_AW1] + c[C_AW1_X] * x, t_wall, t1) + _heat(hw1, c[C_A1], t_rod, t_wall)
+    q2_surface = _heat(hw2, area_rod, t_rod, t2)
+    q2_rod = q2_surface + _heat(hw2, c[C_A2], t_rod, t2)
+    q2 = (_heat(hw2, c[C_AW2] + c[C_AW2_X] * x - area_rod, t_wall, t2) + q2_surface
+          + _heat(hw2, c[C_A2], t_rod, t_wall))
+    return g0, g1, g2, g3, h0, h1, h2, h3, q1, q2, q1_rod, q2_rod
 
 
 @njit(cache=True)
@@ -308,9 +315,9 @@ def evaluate_column(t, y, col, mode, tables, dy, diag, level):
         t_wall = t_tube
     else:
         t_tube = t_rod = t_wall = c[C_TW]
-    g0 = g1 = g2 = g3 = h0 = h1 = h2 = h3 = q1 = q2 = q2_rod = 0.0
+    g0 = g1 = g2 = g3 = h0 = h1 = h2 = h3 = q1 = q2 = q1_rod = q2_rod = 0.0
     if rates:
-        g0, g1, g2, g3, h0, h1, h2, h3, q1, q2, q2_rod = _flows_and_heat(
+        g0, g1, g2, g3, h0, h1, h2, h3, q1, q2, q1_rod, q2_rod = _flows_and_heat(
             x, p1, p2, t1, t2, s, t_wall, t_rod, c)
     f_press = p1 * c[C_A1] - p2 * c[C_A2] - pa * c[C_AROD]
     f_load = _load(x, v, c[C_F0], c[C_KL], c[C_X0L], c[C_MASS], c[C_INCL], c[C_CL])
@@ -394,8 +401,8 @@ def evaluate_column(t, y, col, mode, tables, dy, diag, level):
         if heating:
             # seal nodes: friction heat in, heat to the counterface, groove, air and ambient
             cap_t = c[C_TUBE_CAP]
-            q_tube = -(q1 + q2 - q2_rod)           # the tube gives the chamber wall heat,
-            q_rod = -q2_rod                        # the rod that of its surface in chamber 2
+            q_tube = -(q1 - q1_rod + q2 - q2_rod)  # the tube gives the chamber wall heat,
+            q_rod = -(q1_rod + q2_rod)             # piston and rod that of their surfaces
             q_amb = 0.0
             q_heat = 0.0
             for i in range(nseal):
