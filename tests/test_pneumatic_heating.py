@@ -221,3 +221,20 @@ def test_rod_node_holds_the_heat_capacity_of_piston_and_rod():
     rod_mass = 7832.0 * np.pi / 4 * 0.012 ** 2 * (0.1 + 0.05)
     assert system.tables[0][rhs.C_ROD_CAP] == pytest.approx(rod_mass * 434.0, rel=1e-12)
     assert "less than the rod's own mass" in system.thermal_notes[0]
+
+
+def test_outer_flanks_see_the_surroundings_at_the_nominal_temperature_rise():
+    # thermal.nominal_temperature_rise sets every coefficient to the surroundings: the outer
+    # flank of the rod seal (half the cord outside its contacts) as well as the tube and rod;
+    # the flank took a fixed 10 K whatever the case said.  30 K: h of a Ø14 mm ring of rubber
+    # (ε = 0.9) 30 K above 25 °C air, Churchill & Chu + radiation, to round-off.
+    from sealsim.pneumatic.seal_heating import seal_flank_area
+
+    case = heated("cylinder_32.toml", {"thermal": {"nominal_temperature_rise": "30 K"}})
+    system = PneumaticSystem(case, build_seals(case, EXAMPLES))
+    rod = [s.name for s in system.seals].index("rod")
+    th = system.tables[5][rod]
+    ring, cord = 0.012 + 0.002, 0.002
+    h_out = ambient_coefficient(ring, 298.15 + 30.0, 298.15, 0.9)
+    assert th[rhs.ST_AMB] == pytest.approx(
+        h_out * float(seal_flank_area(ring, cord, th[rhs.ST_WIDTH])), rel=1e-12)

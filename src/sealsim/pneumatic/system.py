@@ -273,7 +273,8 @@ class PneumaticSystem:
             row[rhs.ST_GGROOVE] = float(conduction_conductance(
                 elastomer.thermal_conductivity, math.pi * ring * width0, 0.5 * cord))
             flank = float(seal_flank_area(ring, cord, width0))
-            h_out = ambient_coefficient(ring, t_body + 10.0, t_amb, 0.9)
+            # rubber (ε ≈ 0.9) at the nominal rise, as the tube and rod
+            h_out = ambient_coefficient(ring, t_body + th.nominal_temperature_rise, t_amb, 0.9)
             sides = {"piston": (h_air, h_air, 0.0), "rod": (0.0, h_air, h_out),
                      "wiper": (0.0, 0.0, 2.0 * h_out)}[seal.location]
             row[rhs.ST_AIR1], row[rhs.ST_AIR2], row[rhs.ST_AMB] = (s * flank for s in sides)
