@@ -8,7 +8,11 @@ import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from plot_checks import covered_points
 
-from sealsim.plotting.pneumatic import pressure_stroke_figure, timeseries_figure
+from sealsim.plotting.pneumatic import (
+    heating_figure,
+    pressure_stroke_figure,
+    timeseries_figure,
+)
 
 
 def run_frame(shift: float = 0.0) -> pd.DataFrame:
@@ -59,3 +63,16 @@ def test_air_temperatures_name_their_chambers():
     air, = [ax for ax in fig.axes if ax.get_ylabel() == "Air temp. [°C]"]
     assert [t.get_text() for t in air.get_legend().get_texts()] == ["T1 (cap side)",
                                                                     "T2 (rod side)"]
+
+
+def test_heating_figure_names_the_metal_nodes():
+    # the rod's thermal node is the moving metal, piston and rod (seal_heating): its curve
+    # says so ("rod" next to "seal rod" read as the seal's counterface alone)
+    t = np.linspace(0.0, 4.0, 9)
+    frame = pd.DataFrame({"time_s": t, "T_piston_C": 25 + t, "T_rod_C": 25 + 2 * t,
+                          "T_tube_metal_C": 25 + t, "T_rod_metal_C": 25 + 2 * t})
+    strokes = pd.DataFrame({"start_s": [0.0, 1.0], "direction": [1, -1],
+                            "mean_friction_N": [20.0, 21.0], "stroke_time_s": [0.3, 0.35]})
+    fig = heating_figure(frame, strokes, ["piston", "rod"])
+    labels = [text.get_text() for text in fig.axes[0].get_legend().get_texts()]
+    assert labels == ["seal piston", "seal rod", "tube", "piston + rod"]

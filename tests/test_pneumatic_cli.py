@@ -175,3 +175,11 @@ def test_structure_case_of_the_fe_example_is_valid():
     assert case.map is not None
     assert max(case.map.pressure) >= 6e5 + 1e5
     assert min(case.map.temperature) <= 298.15 and max(case.map.temperature) >= 328.15
+
+
+def test_help_names_the_thermal_table():
+    # the help is rich markup: "[thermal]" unescaped was taken for a style tag and vanished
+    # ("with seal heating () also heating_VARIANT.png")
+    result = RUNNER.invoke(pneumatic_app, ["run", "--help"], terminal_width=200)
+    assert result.exit_code == 0
+    assert "seal heating ([thermal]) also" in " ".join(result.output.split())

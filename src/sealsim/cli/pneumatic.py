@@ -45,7 +45,7 @@ def run(
     friction, air consumption, mass and energy balance errors per variant), case_resolved.toml
     and figures: pressure_stroke.png (like Heipl & Murrenhoff Fig. 10), friction_stroke.png
     (Figs. 12/13), friction_velocity.png and timeseries_VARIANT.png; with seal heating
-    ([thermal]) also heating_VARIANT.png and strokes_VARIANT.csv (temperatures, friction and
+    (\\[thermal]) also heating_VARIANT.png and strokes_VARIANT.csv (temperatures, friction and
     stroke times, stroke by stroke).
     """
     from sealsim.runs.pneumatic import run_case_file

@@ -241,7 +241,8 @@ def heating_figure(frame: pd.DataFrame, strokes: pd.DataFrame, seal_names: list[
             ax.plot(t, frame[f"T_{n}_C"], color=_colour(k), lw=1.3, label=f"seal {n}")
     # the metal on top: each seal follows its counterface within a few tenths of a kelvin
     ax.plot(t, frame["T_tube_metal_C"], color="k", lw=0.9, ls="--", label="tube", zorder=3)
-    ax.plot(t, frame["T_rod_metal_C"], color="k", lw=0.9, ls=":", label="rod", zorder=3)
+    ax.plot(t, frame["T_rod_metal_C"], color="k", lw=0.9, ls=":", label="piston + rod",
+            zorder=3)
     ax.set_ylabel("Temperature [°C]")
     for direction, name, marker in ((1, "extend", "o"), (-1, "retract", "s")):
         rows = strokes[strokes["direction"] == direction]

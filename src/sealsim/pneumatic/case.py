@@ -361,7 +361,8 @@ class ThermalModel(CaseModel):
 
     The tube and rod geometry beyond the case's cylinder are engineering estimates [R] that a
     user should replace: an aluminium profile tube ``tube_wall_thickness`` thick and ``stroke
-    + head_length`` long, a steel rod of the same length; the free convection and radiation to
+    + head_length`` long, a steel rod of the same length; piston and rod are one node of the
+    rod's metal with the mass ``cylinder.piston_mass``; the free convection and radiation to
     the surroundings are evaluated for ``nominal_temperature_rise`` above the body."""
 
     seal_heating: bool = True

@@ -92,13 +92,16 @@ THERMAL_BOOKKEEPING = ("friction_heat", "heat_to_air", "heat_to_ambient")
 (C_DEAD1, C_DEAD2, C_A1, C_A2, C_AROD, C_STROKE, C_BORE, C_PS, C_PA, C_TS, C_TA, C_C, C_B,
  C_M, C_BETA, C_CENTRE, C_H, C_TW, C_F0, C_KL, C_X0L, C_CL, C_INCL, C_MASS, C_KS, C_CS, C_DS,
  C_THR1, C_THR2, C_CU1_L, C_CU1_C, C_CU1_E, C_CU2_L, C_CU2_C, C_CU2_E,
- C_BOOK, C_HEAT, C_TOFF, C_TUBE_CAP, C_TUBE_G, C_ROD_CAP, C_ROD_G, C_TAMB,
+ C_BOOK, C_HEAT, C_TOFF, C_TUBE_CAP, C_TUBE_G, C_ROD_CAP, C_ROD_G_X, C_TAMB,
  C_SPOOL_TAU, C_SPOOL_INIT, C_PROFILE_KIND, C_HFREE,
  C_AW1, C_AW1_X, C_AW2, C_AW2_X, C_AWROD, C_AWROD_X, C_NCONST) = range(54)
 #: the chambers' wall areas A_w1, A_w2 and the rod's share of A_w2 are affine in x: their
 #: values at x = 0 (C_AW1, C_AW2, C_AWROD) [m²] and slopes dA/dx (C_*_X) [m] are those of
 #: :func:`sealsim.pneumatic.chambers.chamber_wall_areas`, the one formula of the Python model,
-#: this right-hand side and the FMU's C (:class:`.system.PneumaticSystem`)
+#: this right-hand side and the FMU's C (:class:`.system.PneumaticSystem`).
+#: C_ROD_G_X [W/(m·K)] is the rod's conductance to the surroundings per metre of rod outside
+#: the cylinder: the extension x is outside, the rest of the rod is in the rod-side chamber
+#: and the head
 
 # -- seal tables ----------------------------------------------------------------------------
 #: law codes: those of :mod:`sealsim.friction.compiled` (imported above)
@@ -229,8 +232,9 @@ def _seal_loads(i, dp, temp, map_int, map_data):
 def _flows_and_heat(x, p1, p2, t1, t2, s, t_wall, t_rod, c):
     """Mass flows g0..g3 [kg/s] of the paths P→A, A→R, P→B, B→R (meter-out throttles and end
     cushions in series), their enthalpy flows h0..h3 [W], the wall heat q1, q2 [W] into the
-    chambers and the part q2_rod of q2 that comes from the rod's surface (at t_rod), at spool
-    position s."""
+    chambers and the parts q1_rod, q2_rod of them that come from the moving metal at t_rod
+    (the piston's face in chamber 1; its annular face and the rod's surface in chamber 2), at
+    spool position s."""
     pa_, ar_, pb_, br_ = _openings(s, c[C_CENTRE])
     ps, pa, ts, ta = c[C_PS], c[C_PA], c[C_TS], c[C_TA]
     # restrictions on the way out of a chamber: meter-out throttle and end cushion
@@ -253,11 +257,17 @@ def _flows_and_heat(x, p1, p2, t1, t2, s, t_wall, t_rod, c):
     if c[C_HFREE] > 0.0:                          # free convection at the chamber's state
         hw1 = _free_h(p1, t1, t_wall, c[C_BORE])
         hw2 = _free_h(p2, t2, t_wall, c[C_BORE])
+    # the piston's faces (A1, A2: one of the two end faces of each chamber) and the rod's
+    # surface are the moving metal at t_rod, the rest the barrel and heads at t_wall; written
+    # as corrections h·A·(t_rod − t_wall) that are exactly 0 without seal heating
     area_rod = c[C_AWROD] + c[C_AWROD_X] * x
-    q1 = _heat(hw1, c[C_AW1] + c[C_AW1_X] * x, t_wall, t1)
-    q2_rod = _heat(hw2, area_rod, t_rod, t2)
-    q2 = _heat(hw2, c[C_AW2] + c[C_AW2_X] * x - area_rod, t_wall, t2) + q2_rod
-    return g0, g1, g2, g3, h0, h1, h2, h3, q1, q2, q2_rod
+    q1_rod = _heat(hw1, c[C_A1], t_rod, t1)
+    q1 = _heat(hw1, c[C_AW1] + c[C_AW1_X] * x, t_wall, t1) + _heat(hw1, c[C_A1], t_rod, t_wall)
+    q2_surface = _heat(hw2, area_rod, t_rod, t2)
+    q2_rod = q2_surface + _heat(hw2, c[C_A2], t_rod, t2)
+    q2 = (_heat(hw2, c[C_AW2] + c[C_AW2_X] * x - area_rod, t_wall, t2) + q2_surface
+          + _heat(hw2, c[C_A2], t_rod, t_wall))
+    return g0, g1, g2, g3, h0, h1, h2, h3, q1, q2, q1_rod, q2_rod
 
 
 @njit(cache=True)
@@ -305,9 +315,9 @@ def evaluate_column(t, y, col, mode, tables, dy, diag, level):
         t_wall = t_tube
     else:
         t_tube = t_rod = t_wall = c[C_TW]
-    g0 = g1 = g2 = g3 = h0 = h1 = h2 = h3 = q1 = q2 = q2_rod = 0.0
+    g0 = g1 = g2 = g3 = h0 = h1 = h2 = h3 = q1 = q2 = q1_rod = q2_rod = 0.0
     if rates:
-        g0, g1, g2, g3, h0, h1, h2, h3, q1, q2, q2_rod = _flows_and_heat(
+        g0, g1, g2, g3, h0, h1, h2, h3, q1, q2, q1_rod, q2_rod = _flows_and_heat(
             x, p1, p2, t1, t2, s, t_wall, t_rod, c)
     f_press = p1 * c[C_A1] - p2 * c[C_A2] - pa * c[C_AROD]
     f_load = _load(x, v, c[C_F0], c[C_KL], c[C_X0L], c[C_MASS], c[C_INCL], c[C_CL])
@@ -391,8 +401,8 @@ def evaluate_column(t, y, col, mode, tables, dy, diag, level):
         if heating:
             # seal nodes: friction heat in, heat to the counterface, groove, air and ambient
             cap_t = c[C_TUBE_CAP]
-            q_tube = -(q1 + q2 - q2_rod)           # the tube gives the chamber wall heat,
-            q_rod = -q2_rod                        # the rod that of its surface in chamber 2
+            q_tube = -(q1 - q1_rod + q2 - q2_rod)  # the tube gives the chamber wall heat,
+            q_rod = -(q1_rod + q2_rod)             # piston and rod that of their surfaces
             q_amb = 0.0
             q_heat = 0.0
             for i in range(nseal):
@@ -434,7 +444,8 @@ def evaluate_column(t, y, col, mode, tables, dy, diag, level):
                 if full:
                     diag[r + DS_POWER, col] = power
             q_tube_amb = c[C_TUBE_G] * (t_tube - c[C_TAMB])
-            q_rod_amb = c[C_ROD_G] * (t_rod - c[C_TAMB])
+            outside = min(max(x, 0.0), c[C_STROKE])   # the extended length of the rod
+            q_rod_amb = c[C_ROD_G_X] * outside * (t_rod - c[C_TAMB])
             dy[toff + nseal, col] = (q_tube - q_tube_amb) / cap_t
             dy[toff + nseal + 1, col] = (q_rod - q_rod_amb) / c[C_ROD_CAP]
             nb = book + _NBOOK

@@ -22,14 +22,17 @@ The metal parts are nodes as well, because they set the long-term temperature of
 sliding contact couples a seal to its counterface within a few kelvin, so a seal warms over a
 long duty cycle because the rod and the tube do.  The **tube** (the barrel swept by the piston
 seals, with the heads) receives the heat of the seals sliding on it and gives the chamber wall
-heat to the air (the chamber walls are at its temperature); the **rod** receives the heat of the
+heat to the air (the barrel and the cap and head faces are at its temperature); the **rod** --
+the moving metal, piston and rod, of mass ``cylinder.piston_mass`` -- receives the heat of the
 rod seal and wiper and, through the groove of the piston, of the piston seals, and gives the
-air of the rod-side chamber the heat of its surface there
-(:func:`~sealsim.pneumatic.chambers.chamber_wall_areas`).  Both lose heat to the surroundings
-by free convection and radiation (:func:`ambient_coefficient`)::
+chamber air the heat of the piston's two faces and of the rod's surface in the rod-side
+chamber (:func:`~sealsim.pneumatic.chambers.chamber_wall_areas`).  Both lose heat to the
+surroundings by free convection and radiation (:func:`ambient_coefficient`), the tube over its
+whole outside, the rod over the length x the piston has extended it (the rest of the rod is in
+the rod-side chamber and the head)::
 
     C_tube·dT_tube/dt = Σ heat from seals − Q_wall,air − G_amb,tube·(T_tube − T_amb)
-    C_rod·dT_rod/dt   = Σ heat from seals − Q_rod,air − G_amb,rod·(T_rod − T_amb)
+    C_rod·dT_rod/dt   = Σ heat from seals − Q_rod,air − h_amb,rod·π·d·x·(T_rod − T_amb)
 
 Not modelled: conduction along the rod into the load and along the tube into the mounting
 (both would cool the metal; they make the warming an upper estimate), temperature gradients

@@ -273,7 +273,8 @@ class PneumaticSystem:
             row[rhs.ST_GGROOVE] = float(conduction_conductance(
                 elastomer.thermal_conductivity, math.pi * ring * width0, 0.5 * cord))
             flank = float(seal_flank_area(ring, cord, width0))
-            h_out = ambient_coefficient(ring, t_body + 10.0, t_amb, 0.9)
+            # rubber (ε ≈ 0.9) at the nominal rise, as the tube and rod
+            h_out = ambient_coefficient(ring, t_body + th.nominal_temperature_rise, t_amb, 0.9)
             sides = {"piston": (h_air, h_air, 0.0), "rod": (0.0, h_air, h_out),
                      "wiper": (0.0, 0.0, 2.0 * h_out)}[seal.location]
             row[rhs.ST_AIR1], row[rhs.ST_AIR2], row[rhs.ST_AMB] = (s * flank for s in sides)
@@ -283,19 +284,26 @@ class PneumaticSystem:
         c = self._c
         c[rhs.C_TUBE_CAP] = tube["density"] * tube["specific_heat"] * math.pi / 4.0 * (
             tube_od ** 2 - cyl.bore ** 2) * tube_length
-        c[rhs.C_ROD_CAP] = rod["density"] * rod["specific_heat"] * math.pi / 4.0 * (
-            cyl.rod_diameter ** 2) * rod_length
+        # the rod node is the moving metal, piston and rod (the piston seal's groove heats the
+        # piston): cylinder.piston_mass ("piston + rod") of the rod's metal, at least the rod
+        rod_mass = rod["density"] * math.pi / 4.0 * cyl.rod_diameter ** 2 * rod_length
+        if cyl.piston_mass < rod_mass:
+            self.thermal_notes.append(
+                f"cylinder.piston_mass ({cyl.piston_mass:.4g} kg, piston + rod) is less than the "
+                f"rod's own mass ({rod_mass:.4g} kg, {th.rod_material}, stroke + head_length "
+                "long): the rod node has the rod's heat capacity")
+        c[rhs.C_ROD_CAP] = rod["specific_heat"] * max(cyl.piston_mass, rod_mass)
         nominal = t_body + th.nominal_temperature_rise
         c[rhs.C_TUBE_G] = ambient_coefficient(tube_od, nominal, t_amb, tube["emissivity"]) * (
             math.pi * tube_od * tube_length)
-        c[rhs.C_ROD_G] = ambient_coefficient(cyl.rod_diameter, nominal, t_amb,
-                                             rod["emissivity"]) * (
-            math.pi * cyl.rod_diameter * cyl.stroke)
+        # per metre of rod outside the cylinder (the piston's extension x: see rhs.C_ROD_G_X)
+        c[rhs.C_ROD_G_X] = ambient_coefficient(cyl.rod_diameter, nominal, t_amb,
+                                               rod["emissivity"]) * math.pi * cyl.rod_diameter
         self.thermal_constants = {
             "tube_heat_capacity_J_K": float(c[rhs.C_TUBE_CAP]),
             "rod_heat_capacity_J_K": float(c[rhs.C_ROD_CAP]),
             "tube_to_ambient_W_K": float(c[rhs.C_TUBE_G]),
-            "rod_to_ambient_W_K": float(c[rhs.C_ROD_G]),
+            "rod_to_ambient_extended_W_K": float(c[rhs.C_ROD_G_X] * cyl.stroke),
             "seals": {s.name: {"heat_capacity_J_K": float(self._seal_therm[i, rhs.ST_CAP]),
                                "to_groove_W_K": float(self._seal_therm[i, rhs.ST_GGROOVE]),
                                "static_contact_W_m2K": float(self._seal_therm[i, rhs.ST_HSTAT])}
