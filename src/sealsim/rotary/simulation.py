@@ -344,7 +344,8 @@ class RotaryModel:
                      free)
         if env.shaft_oil_convection == "annulus":
             # Staton & Cavagnino's h is across the gap, shaft to bore; the oil between is the
-            # sump node, so each wall gets its own boundary layer (ANNULUS_WALL_SHARE)
+            # sump node, so each wall has its own layer to it (the bore's: annulus_bore; where
+            # free convection is the floor, the same on both walls)
             across = float(rotating_annulus_coefficient(omega, d, self.oil_gap, nu_o, k_o,
                                                         nu_o / alpha_o))
             h_near = max(annulus_wall_coefficient(across, d, self.oil_gap), free)
