@@ -178,7 +178,7 @@ def test_a_torque_of_the_other_sign_is_refused_before_the_fit(tmp_path):
     data = fit_data({"a": "a.csv"}, PARAMETERS)
     case = validate_case(RotaryFitCase, data, "test case")
     with pytest.raises(InputError, match=r"measured torque is negative on 6 of 6 steps at speed "
-                                         r"\(median -0.438\d N m\).*set scale = -1 on the "
+                                         r"\(median -0.444\d N m\).*set scale = -1 on the "
                                          r"torque column"):
         prepare_rotary_run(case, case.measurements[0], tmp_path)
     data["measurements"][0]["columns"] = {**COLUMNS, "torque": {**COLUMNS["torque"],

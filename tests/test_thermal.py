@@ -16,6 +16,7 @@ from sealsim.thermal.conduction import (
 )
 from sealsim.thermal.convection import (
     air_properties,
+    annulus_wall_coefficient,
     rotating_annulus_coefficient,
     rotating_annulus_nusselt,
     rotating_cylinder_coefficient,
@@ -177,6 +178,15 @@ def test_annulus_coefficient_conduction_limit_and_branches():
     h1, h2 = (rotating_annulus_coefficient(104.7, 0.08, g, 1.47e-5, 0.127, 190.0)
               for g in (0.01, 0.02))
     assert h2 / h1 == pytest.approx(2 ** -0.25, rel=1e-12)
+
+
+@given(st.floats(1.0, 5e3), st.floats(2e-3, 0.5), st.floats(1e-4, 0.1))
+def test_annulus_walls_in_series_give_the_across_gap_conductance(across, diameter, gap):
+    # Exact identity per unit length: 1/(h_w·2πR_i) + 1/(h_w·2π(R_i + δ)) = 1/(h·2πR_i)
+    h_w = float(annulus_wall_coefficient(across, diameter, gap))
+    inner, outer = np.pi * diameter, np.pi * (diameter + 2 * gap)
+    assert 1.0 / (1.0 / (h_w * inner) + 1.0 / (h_w * outer)) == pytest.approx(across * inner,
+                                                                              rel=1e-12)
 
 
 def test_assemble_matches_a_direct_dense_assembly():

@@ -25,7 +25,7 @@ b from a contact map of :mod:`sealsim.pneumatic.contact_maps`.
 >>> r = sealsim.lip_seal_torque(shaft_diameter="60 mm", speed="1500 rpm", oil="ISO VG 220",
 ...                             sump_temperature="70 degC")
 >>> round(r["torque_Nm"], 3), round(r["power_W"], 1), round(r["T_contact_C"], 1)
-(0.219, 34.4, 84.6)
+(0.22, 34.5, 84.3)
 """
 
 from __future__ import annotations
@@ -153,12 +153,12 @@ def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] | Oil = 
     --------
     >>> r = lip_seal_torque("60 mm", "1500 rpm", "ISO VG 220", "70 degC")
     >>> round(r["torque_Nm"], 3), round(r["film_um"], 2)
-    (0.219, 0.81)
+    (0.22, 0.82)
     >>> lip_seal_torque("60 mm", ["500 rpm", "3000 rpm"], "ISO VG 220",
     ...                 "70 degC")[["speed_rpm", "torque_Nm"]].round(3)
        speed_rpm  torque_Nm
     0      500.0      0.196
-    1     3000.0      0.232
+    1     3000.0      0.234
     >>> lip_seal_torque("60 mm", 1500, "ISO VG 220")
     Traceback (most recent call last):
     ...

@@ -233,8 +233,9 @@ class ShaftSetup:
 #:   temperature is imposed there (``shaft_air_end = "housing"`` holds it at the housing
 #:   temperature, ``"insulated"`` makes the motor shaft as warm as the seal's end; the two
 #:   bracket the default).
-#:   Housing to ambient 12 W/(m² K): radiation 7.5 (grey body, ε = 0.9) + free convection 4.8
-#:   (Churchill & Chu) for a 0.3 m wall 40 K above ambient.
+#:   Housing to ambient 12 W/(m² K): radiation 6.3 (grey body, ε = 0.9, a 60 °C wall in a 20 °C
+#:   room; 7.6 at 80 °C in a 40 °C room) + free convection 5.2 (Churchill & Chu, a 0.3 m
+#:   vertical wall 40 K above ambient), :mod:`sealsim.thermal.convection`.
 #: * ``test_rig``: the friction rig of Organisciak et al. (AGMA 14FTM14, 2014): a motor-driven
 #:   shaft, the seal in a compact test head with a small oil bath, the friction measured on an
 #:   air-bearing spindle (no rolling bearing beside the seal).  30 mm of shaft on each side;
@@ -329,8 +330,9 @@ class Environment(CaseModel):
     shaft_oil_convection: Literal["annulus", "open"] = Field("annulus", description=(
         "flow around the oil-side shaft: 'annulus' (Taylor-Couette flow in the annular space "
         "between the shaft and the bore the seal sits in -- a bearing cap, a test head -- after "
-        "Staton & Cavagnino 2008) or 'open' (a shaft turning in a large quiescent oil bath, "
-        "Kays & Bjorklund)"))
+        "Staton & Cavagnino 2008; its coefficient is across the gap, so the sump's oil sits "
+        "between the shaft's and the bore's wall layers) or 'open' (a shaft turning in a large "
+        "quiescent oil bath, Kays & Bjorklund)"))
     oil_gap: Q("length", gt=0, le=1.0) | None = Field(None, description=(
         "radial width of that annulus; default: the seal's radial section (the housing bore "
         "of the seal continued on its oil side)"))
@@ -342,7 +344,10 @@ class Environment(CaseModel):
         None, description="housing to ambient; default from the setup (gearbox 12, test_rig 6 "
                           "W/(m2 K))")
     oil_housing_heat_transfer: Q("heat_transfer_coefficient", gt=0, le=10000.0) = Field(
-        100.0, description="oil to the wetted housing wall (splashed walls 1e2-1e3 W/(m2 K))")
+        100.0, description=(
+            "oil to the wetted housing wall below the oil level; 100: free convection of still "
+            "gear oil on that wall (Churchill & Chu's vertical plate, VG 68 at 75-80 degC, 6 cm "
+            "of oil, 11 K: 96-100), the lower end of the 1e2-1e3 W/(m2 K) of splashed walls"))
     shaft_length_oil_side: Q("length", gt=1e-3, le=2.0) | None = Field(
         None, description="modelled shaft from the contact into the oil side; default from the "
                           "setup (gearbox: through the bearing and a quarter diameter beyond "

@@ -55,6 +55,7 @@ from sealsim.thermal.conduction import (
 )
 from sealsim.thermal.convection import (
     air_properties,
+    annulus_wall_coefficient,
     free_convection_horizontal_cylinder,
     rotating_annulus_coefficient,
     rotating_cylinder_coefficient,
@@ -290,6 +291,15 @@ class RotaryModel:
                                        self.grid.face_groups.items()})
         faces = self.grid.face_groups["shaft_oil"]
         self.shaft_oil_z = self.grid.conduction.boundary.z[faces]
+        # the annulus's outer wall: the housing bore from the seal's oil face to the bearing
+        # (or the modelled shaft's end), radius R + oil_gap
+        in_annulus = self.shaft_oil_z < self.section.oil_face
+        if self.bearing_span is not None:
+            in_annulus &= self.shaft_oil_z >= self.bearing_span[1]
+        radius = seal.shaft_diameter / 2.0
+        self.annulus_bore_area = float(
+            self.grid.conduction.boundary.area[faces][in_annulus].sum()
+            * (radius + self.oil_gap) / radius) if env.shaft_oil_convection == "annulus" else 0.0
         self.links = [
             Link("sump", "housing", env.oil_housing_heat_transfer * wetted),
             Link("housing", "ambient", env.housing_heat_transfer * housing_area),
@@ -301,7 +311,11 @@ class RotaryModel:
 
         Shaft in oil, on the wetted fraction of the circumference: between the seal and the
         bearing, Taylor–Couette flow in the annulus between shaft and housing bore
-        (``environment.shaft_oil_convection = "annulus"``, gap ``oil_gap``) or a cylinder in a
+        (``environment.shaft_oil_convection = "annulus"``, gap ``oil_gap``; the correlation's
+        h is across the gap, so the shaft's layer to the oil is
+        :func:`~sealsim.thermal.convection.annulus_wall_coefficient` of it and the oil's layer
+        to the bore, ``annulus_bore`` [W/(m² K) of bore area, wetted fraction], links the sump
+        to the housing in :meth:`matrices`) or a cylinder in a
         quiescent bath (``"open"``, Kays & Bjorklund); from the bearing on, in the gear case,
         always the open bath; oil at the sump temperature; on the rest of the circumference
         gearbox air at sump temperature.  Shaft in air: rotating cylinder (Kays & Bjorklund) in
@@ -329,8 +343,12 @@ class RotaryModel:
         h_open = max(float(rotating_cylinder_coefficient(omega, d, nu_o, k_o, nu_o / alpha_o)),
                      free)
         if env.shaft_oil_convection == "annulus":
-            h_near = max(float(rotating_annulus_coefficient(omega, d, self.oil_gap, nu_o, k_o,
-                                                            nu_o / alpha_o)), free)
+            # Staton & Cavagnino's h is across the gap, shaft to bore; the oil between is the
+            # sump node, so each wall has its own layer to it (the bore's: annulus_bore; where
+            # free convection is the floor, the same on both walls)
+            across = float(rotating_annulus_coefficient(omega, d, self.oil_gap, nu_o, k_o,
+                                                        nu_o / alpha_o))
+            h_near = max(annulus_wall_coefficient(across, d, self.oil_gap), free)
         else:
             h_near = h_open
 
@@ -364,6 +382,7 @@ class RotaryModel:
             "seal_housing": th.seal_housing_contact,
             "shaft_pocket": h_air,
             "seal_pocket": th.seal_air_factor * h_air,
+            "annulus_bore": phi * h_near if env.shaft_oil_convection == "annulus" else 0.0,
         }
 
     def assemble(self, angular_speed: float, sump_temperature: float):
@@ -375,13 +394,16 @@ class RotaryModel:
         conductances they were assembled from (for :meth:`heat_paths`).
 
         The air pocket exchanges with the air side's air (:attr:`air_node`) through its
-        annular opening with the shaft's air-side coefficient.
+        annular opening with the shaft's air-side coefficient; the oil in the annulus with the
+        housing bore around it (``annulus_bore`` of :meth:`coefficients` times
+        :attr:`annulus_bore_area`).
         """
         h = self.coefficients(angular_speed, sump_temperature)
         pocket = Link("air_pocket", self.air_node,
                       h["shaft_air"] * self.grid.pocket_opening_area)
+        bore = Link("sump", "housing", h["annulus_bore"] * self.annulus_bore_area)
         conductances = self.network.face_conductances(h)
-        return (*self.network.assemble_faces(conductances, [*self.links, pocket]),
+        return (*self.network.assemble_faces(conductances, [*self.links, pocket, bore]),
                 conductances)
 
     def fixed_temperatures(self) -> np.ndarray:

@@ -17,6 +17,7 @@ import numpy as np
 __all__ = [
     "STEFAN_BOLTZMANN",
     "air_properties",
+    "annulus_wall_coefficient",
     "free_convection_horizontal_cylinder",
     "free_convection_vertical_plate",
     "radiation_coefficient",
@@ -198,6 +199,45 @@ def rotating_annulus_coefficient(angular_speed, inner_diameter, gap, kinematic_v
     ta = taylor_number(angular_speed, inner_diameter / 2.0, gap, kinematic_viscosity)
     return rotating_annulus_nusselt(ta, prandtl) * np.asarray(conductivity, dtype=float) / (
         2.0 * gap)
+
+
+def annulus_wall_coefficient(across, inner_diameter, gap):
+    """Heat transfer coefficient of each wall of an annulus to the oil between them.
+
+    :func:`rotating_annulus_coefficient` is the coefficient *across* the gap, from the inner
+    cylinder to the outer one (Staton & Cavagnino 2008: heat transfer across the air gap, rotor
+    to stator; its laminar Nu = 2 is conduction from wall to wall).  Where the fluid in the gap
+    is a node of its own (the sump's oil, at its bulk temperature), the heat crosses two wall
+    layers in series.  With the same coefficient h_w on both walls (the mixed core halfway
+    between them on a thin gap),
+
+    ``1/(h_w·A_i) + 1/(h_w·A_o) = 1/(h_across·A_i)``  →  ``h_w = h_across·(1 + R_i/R_o)``,
+
+    so shaft → oil → bore gives back the across-gap conductance of the correlation.
+
+    Parameters
+    ----------
+    across : array_like
+        Coefficient across the gap, per inner-cylinder area [W/(m²·K)].
+    inner_diameter : float
+        Shaft diameter D [m].
+    gap : float
+        Radial width δ of the annulus [m], > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        h_w [W/(m²·K)], of either wall to the fluid.
+
+    Examples
+    --------
+    80 mm shaft, 10.5 mm annulus: R_i/R_o = 40/50.5.
+
+    >>> round(float(annulus_wall_coefficient(380.0, 0.08, 0.0105)), 1)
+    681.0
+    """
+    radius = inner_diameter / 2.0
+    return np.asarray(across, dtype=float) * (1.0 + radius / (radius + gap))
 
 
 def rayleigh_number(length, delta_t, kinematic_viscosity, diffusivity, expansion):
