@@ -87,6 +87,14 @@ def _wait_for(condition, timeout: float, what: str):
     raise AssertionError(f"timed out waiting for {what}")
 
 
+def _scheduler_address(scheduler_file: Path) -> str | None:
+    """The address in a dask scheduler file, or None while it is missing or half written."""
+    try:
+        return json.loads(scheduler_file.read_text())["address"]
+    except (OSError, ValueError, KeyError):
+        return None
+
+
 def _stored(out: Path) -> int:
     runs = work_folder_for(out) / "runs"
     return len(list(runs.glob("*.json"))) if runs.is_dir() else 0
@@ -140,8 +148,9 @@ def test_real_scheduler_and_workers_survive_a_killed_worker(study_file, referenc
                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                               start_new_session=True)]
     try:
-        _wait_for(scheduler_file.exists, 60, "the scheduler")
-        address = json.loads(scheduler_file.read_text())["address"]
+        # the scheduler creates its file before it has written it: wait for the address
+        _wait_for(lambda: _scheduler_address(scheduler_file) is not None, 60, "the scheduler")
+        address = _scheduler_address(scheduler_file)
         for name in ("w1", "w2"):
             procs.append(subprocess.Popen(
                 [sys.executable, "-m", "distributed.cli.dask_worker", address, "--nthreads",
