@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from sealsim.tribology.contact import (
     asperity_pressure,
@@ -165,6 +167,29 @@ def test_load_share_solves_its_two_conditions():
     # a stiffer rubber needs a thinner film to lift off its asperities
     stiff, _ = ihl_load_share(h0, pmax, SIGMA, 10 * MODULUS)
     assert np.all(stiff < share)
+
+
+@settings(max_examples=200, deadline=None)
+@given(log_film=st.floats(-11.0, -4.5), log_pressure=st.floats(4.0, 7.5),
+       log_roughness=st.floats(-7.5, -5.5), log_modulus=st.floats(6.0, 9.0))
+def test_load_share_is_the_root_a_plain_bisection_finds(log_film, log_pressure, log_roughness,
+                                                        log_modulus):
+    # Eq. (1) has one root (both sides monotone in the separation): a 200-step bisection of
+    # its plain form α_asp(λ) − (1 − (h*0/h(λ))²), independent of the solver's logarithmic
+    # regula falsi, finds the same lift.  1e-9 relative: the bisection's own round-off at
+    # λ_dry ≈ −5 (the lift is a difference of two separations) stays below it.
+    h0, pmax, sigma, modulus = 10.0 ** np.array([log_film, log_pressure, log_roughness,
+                                                 log_modulus])
+    share, film = ihl_load_share(h0, pmax, sigma, modulus)
+    dry = separation_at_asperity_pressure(pmax, sigma, modulus) / sigma
+    lo, hi = dry, dry + h0 / sigma + 12.0
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        excess = (asperity_pressure(mid * sigma, sigma, modulus) / pmax
+                  - (1.0 - (h0 / ((mid - dry) * sigma)) ** 2))
+        lo, hi = (mid, hi) if excess > 0 else (lo, mid)
+    assert float(film) == pytest.approx((0.5 * (lo + hi) - dry) * sigma, rel=1e-9)
+    assert float(film) == pytest.approx(h0 / np.sqrt(1.0 - float(share)), rel=1e-9)
 
 
 def test_a_starved_inlet_passes_what_arrives_and_no_more():
