@@ -365,12 +365,12 @@ def rhs_check(system, folder: Path, samples: int = 400) -> dict:
             s0 = -u
             spool = np.array([[0.0], [u], [s0]])
             tables = (c, spool, *system.tables[2:])
-            full = np.zeros((system.n_states, samples))
+            # column-major, as the simulation's samplers pass them (one compilation)
+            full = np.zeros((system.n_states, samples), order="F")
             full[:n] = ys
-            dy_ref = np.zeros_like(full)
-            diag = np.zeros((system.n_diag, samples))
-            rhs.evaluate_many(ts, np.ascontiguousarray(full), np.full(samples, mode), tables,
-                              dy_ref, diag, rhs.FULL)
+            dy_ref = np.zeros_like(full, order="F")
+            diag = np.zeros((system.n_diag, samples), order="F")
+            rhs.evaluate_many(ts, full, np.full(samples, mode), tables, dy_ref, diag, rhs.FULL)
             dy_c = np.zeros((samples, n))
             out_c = np.zeros((samples, 10 + 4 * nseal))
             for k in range(samples):

@@ -464,14 +464,30 @@ class PneumaticSystem:
         # sampler's (k, n) samples transposed are column-major already (no copy)
         ys = np.asfortranarray(y[:, None] if column else y)
         k = ys.shape[1]
-        ts = np.ascontiguousarray(np.broadcast_to(np.asarray(t, dtype=float), (k,)))
-        modes = np.ascontiguousarray(np.broadcast_to(np.asarray(mode, dtype=np.int64), (k,)))
-        if out is None:
-            dy, diag = np.zeros_like(ys, order="F"), np.zeros((self.n_diag, k), order="F")
+        # one column is C- and F-contiguous at once, and numba types it as C: it would compile
+        # the whole right-hand side a second time (about 10 s cold); as two equal columns it
+        # takes the Fortran-ordered compilation of the samplers
+        pair = k == 1
+        if pair:
+            ys = np.asfortranarray(np.repeat(ys, 2, axis=1))
+        # writable copies: a read-only array is a type of its own to numba as well
+        ts = np.array(np.broadcast_to(np.asarray(t, dtype=float).ravel(), (ys.shape[1],)))
+        modes = np.array(np.broadcast_to(np.asarray(mode, dtype=np.int64).ravel(),
+                                         (ys.shape[1],)))
+        if out is None or pair:
+            dy = np.zeros_like(ys, order="F")
+            diag = np.zeros((self.n_diag, ys.shape[1]), order="F")
+            if out is not None:
+                dy[:, 1], diag[:, 1] = out[0][:, 0], out[1][:, 0]
         else:
             dy, diag = out
         rhs.evaluate_many(ts, ys, modes, self.tables, dy, diag,
                           rhs.OUTPUTS if outputs_only and full else rhs.FULL)
+        if pair:
+            dy, diag = dy[:, 1:], diag[:, 1:]
+            if out is not None:
+                out[0][:, :1], out[1][:, :1] = dy, diag
+                dy, diag = out
         if not full:
             return dy[:, 0] if column else dy
         return self.unpack(dy, diag)
