@@ -52,7 +52,7 @@ MAX_POINTS = {"lip_seal_torque": 10_000, "seal_friction": 1_000_000}
 
 #: Columns of :func:`lip_seal_torque` (units in the names).
 LIP_SEAL_COLUMNS = ["shaft_diameter_mm", "speed_rpm", "torque_Nm", "power_W", "T_contact_C",
-                    "T_groove_C", "T_sump_C", "film_um", "F_lub_N", "F_material_N",
+                    "T_groove_C", "T_sump_C", "T_housing_C", "film_um", "F_lub_N", "F_material_N",
                     "bearing_power_W", "heat_oil_side_W", "heat_housing_W", "heat_air_side_W",
                     "lip_note"]
 #: Columns of :func:`seal_friction` (units in the names; pressure is gauge, across the seal).
@@ -126,7 +126,8 @@ def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] | Oil = 
     -------
     dict or pandas.DataFrame
         shaft_diameter_mm, speed_rpm, torque_Nm, power_W, T_contact_C, T_groove_C,
-        T_sump_C, film_um, F_lub_N, F_material_N, bearing_power_W (the bearing beside the
+        T_sump_C, T_housing_C (the housing the seal sits in), film_um, F_lub_N, F_material_N,
+        bearing_power_W (the bearing beside the
         seal), heat_oil_side_W, heat_housing_W, heat_air_side_W (where the heat leaves shaft
         and seal: into the oil side, through the seal's outer diameter, on the air side; they
         add up to power_W plus the bearing's shaft share), lip_note (text: the lip's mounting
@@ -136,7 +137,8 @@ def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] | Oil = 
         broadcast against each other; notes in ``frame.attrs["notes"]``).  The notes (also
         issued as :class:`~sealsim.errors.SealsimWarning`, once per call) are those of
         ``sealsim rotary run``: a contact above the elastomer's service limit, films outside
-        the measured range; in a DataFrame, a point without a steady state is a row of NaN
+        the measured range, a contact below a held sump (with the housing's temperature, the
+        cause); in a DataFrame, a point without a steady state is a row of NaN
         and a note gives its reason.
 
     Raises
@@ -219,7 +221,8 @@ angular speed (rpm or rad/s?): write it with its unit, e.g. '1500 rpm'
     solved = [r for r in rows if not math.isnan(r["T_contact_C"])]
     films = [r["film_um"] for r in solved if r["speed_rpm"] != 0]
     notes = operating_notes(first, lip_seal_friction(first).elastomer,
-                            [r["T_contact_C"] for r in solved], films)
+                            [r["T_contact_C"] for r in solved], films,
+                            housing_temperatures_c=[r["T_housing_C"] for r in solved])
     if failed:
         notes.append(f"{len(failed)} of {len(rows)} points have no steady state (their rows "
                      "are NaN): " + "; ".join(failed))

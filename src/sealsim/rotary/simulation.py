@@ -87,6 +87,9 @@ END_CONTACT = 1.0e4
 #: has slowed down.
 STALE_CONTRACTION = 0.5
 STALE_SUMP_CHANGE = 2.0  # K
+#: A contact more than this below a held sump gets a note saying why [K] (0.1 K: well above
+#: the steady state's 1e-8 K tolerance, below what a thermocouple resolves).
+BELOW_HELD_SUMP = 0.1
 #: How long the temperatures must stay below duty.steady_rate before until_steady stops [s].
 STEADY_WINDOW = 60.0
 
@@ -708,7 +711,7 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
               "rel_error": abs(heat_in - stored - dissipated) / max(abs(heat_in), 1e-12)}
     sliding = frame.loc[frame["speed_rpm"] != 0, "film_um"]
     found = operating_notes(case, model.elastomer, frame["T_contact_C"], sliding,
-                            frame["T_sump_C"])
+                            frame["T_sump_C"], frame["T_housing_C"])
     notes += found
     for film in (n for n in found if n.startswith("film ")):
         warnings.warn(film, FilmRangeWarning, stacklevel=2)
@@ -722,15 +725,17 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
 
 
 def operating_notes(case: RotaryCase, elastomer, contact_temperatures_c, sliding_films_um,
-                    sump_temperatures_c=()) -> list[str]:
+                    sump_temperatures_c=(), housing_temperatures_c=()) -> list[str]:
     """Where a run left the range of its models: a contact above the elastomer's service
     limit or outside the FE lip table's temperatures (``lip.force`` or ``lip.contact_width =
     "fe"``: held at its end values), a sump below the oil's lowest usable temperature (its
     viscosity law extrapolated),
     films outside the measured range of lip seal films
-    (:func:`~sealsim.tribology.film.film_range_note`).  The notes of ``sealsim rotary run`` and
-    of :func:`sealsim.lip_seal_torque` (one set per call, over all its points); the lip's
-    mounting path has its own note (:func:`lip_note`).
+    (:func:`~sealsim.tribology.film.film_range_note`); and a result that looks wrong but is
+    not: a contact below a held sump, with the cause (the housing colder than the oil that
+    the held sump's heat leaves through, :data:`BELOW_HELD_SUMP`).  The notes of
+    ``sealsim rotary run`` and of :func:`sealsim.lip_seal_torque` (one set per call, over all
+    its points); the lip's mounting path has its own note (:func:`lip_note`).
 
     Parameters
     ----------
@@ -743,11 +748,25 @@ def operating_notes(case: RotaryCase, elastomer, contact_temperatures_c, sliding
         Films of the samples with the shaft turning [µm] (may be empty).
     sump_temperatures_c : array_like
         Sump temperatures of the run [°C] (may be empty).
+    housing_temperatures_c : array_like
+        Housing temperatures of the run [°C] (may be empty).
     """
     contact = np.asarray(contact_temperatures_c, dtype=float)
     films = np.asarray(sliding_films_um, dtype=float)
     sump = np.asarray(sump_temperatures_c, dtype=float)
+    housing = np.asarray(housing_temperatures_c, dtype=float)
     notes = []
+    held = case.environment.sump_temperature
+    if held is not None and contact.size and \
+            contact.min() < held - ZERO_CELSIUS_K - BELOW_HELD_SUMP:
+        held_c = held - ZERO_CELSIUS_K
+        where = (f" (down to {housing.min():.1f} degC)" if housing.size else "")
+        notes.append(
+            f"contact down to {contact.min():.1f} degC, {held_c - contact.min():.1f} K below the "
+            f"sump held at {held_c:.1f} degC: the heat that holds the sump leaves through the "
+            f"housing{where}, so the housing and the air side are colder than the oil, and a "
+            "seal with little friction runs between them; environment.housing_temperature "
+            "holds the housing (a gear case whose walls are at the oil's temperature)")
     oil = case.oil.build()
     if sump.size and oil.min_temperature is not None and \
             sump.min() < oil.min_temperature - ZERO_CELSIUS_K:

@@ -137,6 +137,10 @@ def rotating_annulus_nusselt(taylor, prandtl):
 
     sealsim applies it to gear oil (Pr 10²–10³); the Pr^0.27 factor is the correlation's
     own fluid dependence, extrapolated beyond the gases and liquids it was measured with.
+    Taylor's annuli were long (length ≫ gap); the ``gearbox`` set-up's annulus between seal
+    and bearing is half as long as its gap, an end-wall cavity, where it is an extrapolation
+    too (there of little weight: its coefficient ×¼ … ×4 moves the 80 mm contact at 1000 rpm
+    by +0.3 … −0.8 K; docs/guide/validation_rotary.md, finding 1).
 
     Parameters
     ----------
