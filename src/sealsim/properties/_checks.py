@@ -6,6 +6,7 @@ A value that is not a finite number in the allowed range raises one
 
 from __future__ import annotations
 
+import math
 from typing import Any
 
 import numpy as np
@@ -53,6 +54,11 @@ def _array(
         raise InputError(
             f"{name} must be a number or an array of numbers [{unit}]; got {value!r}"
         ) from exc
+    if arr.ndim == 0:       # the common scalar call of a time step: no array reductions
+        v = float(arr)
+        if (math.isfinite(v) and (lo is None or (v > lo if lo_open else v >= lo))
+                and (hi is None or (v < hi if hi_open else v <= hi))):
+            return arr
     bad = _outside(arr, lo, hi, lo_open, hi_open)
     if np.any(bad):
         first = arr[bad].flat[0]

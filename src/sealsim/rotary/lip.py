@@ -49,6 +49,7 @@ heat over an axial band b + 2A.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 
@@ -257,16 +258,25 @@ class AnalyticLipForce:
                                   e.thermal_expansion, self.shaft_expansion,
                                   e.glassy_expansion, e.glass_transition)
 
+    # the two constants of Eq. (1)-(2), computed once: a transient run asks for the lip force
+    # at every time step
+    @cached_property
+    def _reference_modulus(self) -> float:
+        return float(self.elastomer.held_modulus(self.reference_temperature))
+
+    @cached_property
+    def _mounted_interference(self) -> float:
+        return float(self.interference(self.mounted_at))
+
     def stress_ratio(self, temperature):
         """σ(T)/σ_ref of Eq. (1)-(2)."""
         e = self.elastomer
         t = np.asarray(temperature, dtype=float)
-        reference = float(e.held_modulus(self.reference_temperature))
         # lip force on the reference lip of the case (mounted at T_ref): mounted_interference 1
         # when T_m = T_ref; the held stress at T_m otherwise
-        return lip_stress_ratio(self.interference(t), self.interference(self.mounted_at),
+        return lip_stress_ratio(self.interference(t), self._mounted_interference,
                                 e.held_modulus(t, mounting_temperature=self.mounted_at),
-                                e.held_modulus(t), reference)
+                                e.held_modulus(t), self._reference_modulus)
 
     def __call__(self, temperature):
         return lip_force(self.reference_force, self.spring_share, self.stress_ratio(temperature))
