@@ -4,7 +4,9 @@ For the analytic contact maps, the FE map of the rod seal and seal heating: ``si
 end and its stages measured one by one (set-up of the system, integration with the output
 grid, the diagnostics at the output samples, the result table), the solver's counts (steps,
 right-hand sides in the Newton iteration, Jacobians and the right-hand sides of their
-forward-difference columns, LU factorisations, segments and steps at rest) and the cost of one
+forward-difference columns, renewals of the velocity's column by the growth limit, LU
+factorisations, segments and steps at rest; per phase of the cycle -- stroke, cap and head end
+stop -- and mode: segments, steps, RHS and Jacobians) and the cost of one
 compiled call of each part, timed in a compiled loop: the right-hand side, the Jacobian, an LU
 factorisation of the Newton matrix, the diagnostics of one output sample.  From those, the
 integration's estimated split (evaluations × cost; the remainder is the BDF bookkeeping,
@@ -87,6 +89,25 @@ def _integrate_counting(system):
     return sampler, segments, made[-1][1]
 
 
+def phases(segments, stroke) -> dict:
+    """Segments, steps, RHS and Jacobians per phase of the cycle -- in a stroke, or in the
+    cap or head end stop (the piston inside the elastic stop: x < 0 or x > stroke at the
+    segment's midpoint) -- and per mode."""
+    out = {}
+    for s in segments:
+        x = 0.5 * (s.y0[0] + s.y1[0])
+        key = ("cap" if x < 0.0 else "head" if x > stroke else "stroke") + " " \
+            + rhs.MODES[s.mode]
+        row = out.setdefault(key, {"segments": 0, "steps": 0, "rhs": 0, "jacobians": 0,
+                                   "time_s": 0.0})
+        row["segments"] += 1
+        row["steps"] += int(s.steps)
+        row["rhs"] += int(s.nfev)
+        row["jacobians"] += int(s.njev)
+        row["time_s"] += s.t1 - s.t0
+    return dict(sorted(out.items()))
+
+
 def profile(case, base_dir) -> dict:
     seals = build_seals(case, base_dir)
     simulate(case, seals)                             # compiled code loaded
@@ -123,12 +144,14 @@ def profile(case, base_dir) -> dict:
     lu_us = _best(lambda: _lu_loop(count, matrix, lu_work, ndyn, pivots), 5) / count * 1e6
     steps, nfev = int(counters[bdf.I_NSTEPS]), int(counters[bdf.I_NFEV])
     njev, nlu = int(counters[bdf.I_NJEV]), int(counters[bdf.I_NLU])
+    nrenew = int(counters[bdf.I_NRENEW])
     return {
         "total_ms": total * 1e3, "realtime_factor": SIMULATED / total,
         "setup_ms": setup * 1e3, "integration_ms": integration * 1e3,
         "outputs_ms": outputs * 1e3, "table_ms": table * 1e3,
         "steps": steps, "rhs_newton": nfev, "jacobians": njev,
         "rhs_jacobian_columns": njev * ndyn, "lu_factorisations": nlu,
+        "velocity_column_renewals": nrenew, "phases": phases(segments, system.stroke),
         "segments": len(segments),
         "segments_at_rest": sum(1 for s in segments if s.mode == rhs.STICK),
         "steps_at_rest": sum(s.steps for s in segments if s.mode == rhs.STICK),
@@ -146,7 +169,8 @@ def main() -> None:
     out = {}
     for label, case in cases.items():
         p = profile(case, EXAMPLE.parent)
-        out[label] = {k: round(v, 3) if isinstance(v, float) else v for k, v in p.items()}
+        out[label] = {k: round(v, 3) if isinstance(v, float) else v for k, v in p.items()
+                      if k != "phases"}
         rest = p["total_ms"] - p["setup_ms"] - p["integration_ms"] - p["outputs_ms"] \
             - p["table_ms"]
         est = {"RHS (Newton)": p["rhs_newton"] * p["rhs_us"] / 1e3,
@@ -160,8 +184,13 @@ def main() -> None:
               f"{rest:.2f} ms")
         print(f"  {p['steps']} steps, {p['rhs_newton']} RHS in the Newton iteration, "
               f"{p['jacobians']} Jacobians ({p['rhs_jacobian_columns']} RHS, {p['n_dynamic']}"
-              f" columns), {p['lu_factorisations']} LU, {p['segments']} segments "
+              f" columns), {p['velocity_column_renewals']} renewals of the velocity's column,"
+              f" {p['lu_factorisations']} LU, {p['segments']} segments "
               f"({p['segments_at_rest']} at rest, {p['steps_at_rest']} steps at rest)")
+        for key, row in p["phases"].items():
+            print(f"    {key:14s}: {row['segments']:4d} segments, {row['steps']:5d} steps, "
+                  f"{row['rhs']:6d} RHS, {row['jacobians']:5d} Jacobians, "
+                  f"{row['time_s']:.3f} s simulated")
         print(f"  per call: RHS {p['rhs_us']:.3f} us, Jacobian {p['jacobian_us']:.3f} us, LU "
               f"{p['lu_us']:.3f} us; integration estimated as "
               + ", ".join(f"{k} {v:.2f} ms ({v / p['integration_ms'] * 100:.0f} %)"

@@ -159,3 +159,29 @@ def test_breakaways_start_forwards(example, tmp_path):
         breakaways = sum(1 for s in segments[:-1] if s.mode == rhs.STICK and s.status == 1)
         assert breakaways >= 4, method       # the 4 s cycle breaks away at each of its strokes
         assert backward_breakaways(segments) == [], method
+
+
+@pytest.mark.parametrize("heating", [False, True])
+def test_velocity_column_is_the_jacobians(heating):
+    # the BDF's growth limit renews ∂f/∂v alone in a break-away (integrate._renew): the
+    # column must be the whole Jacobian's, bit for bit (the same difference, the contact
+    # loads of the evaluation at y kept -- v changes no Δp and no seal temperature), in a slip
+    # mode just after a break-away and with the seal heating's extra states
+    c = case(1.0)
+    if heating:
+        c = c.model_copy(update={"thermal": ThermalModel()})
+    system = PneumaticSystem(c, build_seals(c, EXAMPLES))
+    y = system.initial_state()
+    y[0], y[1] = 0.03, 2e-6
+    n, ndyn = system.n_states, system.n_dynamic
+    scale = system.tolerances(1.0)[:ndyn].copy()
+    diag = np.zeros((system.n_diag, 1))
+    f0, whole, column = np.zeros(n), np.zeros((n, ndyn)), np.full((n, ndyn), np.nan)
+    rhs.jacobian(0.5, y, rhs.FORWARD, system.tables, scale, np.zeros(n), np.zeros(n), f0,
+                 diag, whole)
+    rhs.derivatives(0.5, y, rhs.FORWARD, system.tables, np.zeros(n), diag)
+    rate = rhs.velocity_column_at(0.5, y, f0, rhs.FORWARD, system.tables, scale, np.zeros(n),
+                                  np.zeros(n), diag, column)
+    assert np.array_equal(column[:, 1], whole[:, 1])
+    assert np.isnan(np.delete(column, 1, axis=1)).all()      # no other column touched
+    assert rate == whole[1, 1]

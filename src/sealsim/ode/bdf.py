@@ -29,10 +29,17 @@ Three additions for the models here:
   a Jacobian limits one step: where the limit would bind again, the Jacobian is renewed at
   the current state first, since λ⁺ changes as the motion grows (for v' ∝ √v it falls as
   1/(2t): the limited steps grow geometrically).  Problems without one (``GROWTH`` = 0, the default
-  :func:`no_growth`) take scipy's steps unchanged.
+  :func:`no_growth`) take scipy's steps unchanged.  A problem whose growth sits in a few
+  columns of J (the pneumatic piston: ∂f/∂v) may renew only those (``RENEW``, one FUN
+  evaluation instead of one per dynamic state): a break-away renews λ⁺ at almost every one of
+  its first steps, and the other columns, which change slowly, serve the simplified Newton
+  iteration as they are.  With a RENEW, a Newton iteration that stalls while λ⁺ > 0 renews
+  those columns first (the whole Jacobian if it stalls again), and a renewed λ⁺ that the
+  step's c·λ⁺ exceeds the limit of shrinks the step to the limit instead of halving it.
+  Problems without a RENEW (the default :func:`no_renewal`) take the steps they took before.
 
-**Generic over the problem.**  The step functions call four problem functions by the global
-names ``FUN``, ``JAC``, ``EVENT`` and ``GROWTH``::
+**Generic over the problem.**  The step functions call five problem functions by the global
+names ``FUN``, ``JAC``, ``EVENT``, ``GROWTH`` and ``RENEW``::
 
     FUN(t, y, args, dy)        # dy/dt into dy (shape (n,))
     JAC(t, y, f, args, J)      # ∂f/∂y_j of all states by the dynamic ones j (n × ndyn);
@@ -40,6 +47,9 @@ names ``FUN``, ``JAC``, ``EVENT`` and ``GROWTH``::
     EVENT(t, y, args) -> g     # the event function (any float; unused problems return 1)
     GROWTH(t, y, J, args) -> λ⁺  # growth rate [1/time] of the Jacobian J (n × ndyn) at
                                # (t, y), >= 0 (optional, default 0: see the growth limit)
+    RENEW(t, y, f, args, J) -> λ⁺  # renews the columns of J that GROWTH reads at (t, y),
+                               # f = FUN(t, y), with one FUN evaluation, and returns GROWTH
+                               # (optional, default -1: the whole Jacobian is renewed)
 
 ``args`` is any tuple the problem needs (its tables, its mode); the integrator passes it
 through.  :func:`compile_bdf` makes a copy of the step functions with the problem's compiled
@@ -88,9 +98,10 @@ ERROR_CONST = _KAPPA * GAMMA + 1.0 / np.arange(1, MAX_ORDER + 2)
 (S_T, S_T_OLD, S_H_ABS, S_RTOL, S_MAX_STEP, S_NEWTON_TOL, S_T_BOUND, S_C_LU, S_GROWTH,
  S_NS) = range(10)
 #: integer slots: order, equal steps since the last change, LU valid, counters, ndyn, the
-#: Jacobian's growth rate has limited a step
-(I_ORDER, I_NEQ, I_LU_OK, I_NFEV, I_NJEV, I_NLU, I_NSTEPS, I_NDYN, I_LIMITED,
- I_NI) = range(10)
+#: Jacobian's growth rate has limited a step, growth columns renewed (RENEW; each one FUN
+#: evaluation, also counted in I_NFEV)
+(I_ORDER, I_NEQ, I_LU_OK, I_NFEV, I_NJEV, I_NLU, I_NSTEPS, I_NDYN, I_LIMITED, I_NRENEW,
+ I_NI) = range(11)
 #: step results
 OK, TOO_SMALL_STEP = 0, -1
 
@@ -332,6 +343,21 @@ def _jacobian(w, iv, t, y, f, args, n, ndyn):
     iv[I_NJEV] += 1
 
 
+def _renew_growth(w, iv, t, y, f, args, n, ndyn):
+    """λ⁺ renewed at (t, y), f = FUN(t, y): the columns of J that GROWTH reads (RENEW, one
+    FUN evaluation) or, without a RENEW, the whole Jacobian."""
+    oj = _offsets(n, ndyn)[2]
+    jac = w[oj:oj + n * ndyn].reshape(n, ndyn)
+    growth = RENEW(t, y, f, args, jac)  # noqa: F821
+    if growth < 0.0:
+        _jacobian(w, iv, t, y, f, args, n, ndyn)
+        return
+    w[S_GROWTH] = growth
+    iv[I_LIMITED] = 0
+    iv[I_NRENEW] += 1
+    iv[I_NFEV] += 1
+
+
 def start(ws, t0, y0, t_bound, args):
     """Start (or restart) at (t0, y0) towards t_bound: order 1, the initial step of scipy's
     ``select_initial_step``, a fresh Jacobian."""
@@ -411,7 +437,7 @@ def step(ws, args):
                 dy[i] = w[od + i]
             FUN(t, dy, args, f)  # noqa: F821
             iv[I_NFEV] += 1
-            _jacobian(w, iv, t, dy, f, args, n, ndyn)
+            _renew_growth(w, iv, t, dy, f, args, n, ndyn)
             iv[I_LU_OK] = 0
             h_growth = GROWTH_LIMIT * ALPHA[order] / w[S_GROWTH] if w[S_GROWTH] > 0.0 \
                 else np.inf
@@ -422,6 +448,7 @@ def step(ws, args):
             iv[I_LU_OK] = 0
             iv[I_LIMITED] = 1
     current_jac = False
+    renewed = False
     n_iter = 0
     error_norm = 0.0
     safety = 0.0
@@ -465,12 +492,26 @@ def step(ws, args):
                 for i in range(n):
                     dy[i] = w[opred + i]
                     f[i] = w[ofp + i]
-                _jacobian(w, iv, t_new, dy, f, args, n, ndyn)
                 iv[I_LU_OK] = 0
-                current_jac = True
+                if RENEWS and w[S_GROWTH] > 0.0 and not renewed:  # noqa: F821
+                    # a growing state (a break-away) stalls the iteration: its columns
+                    # first; the step stays within the growth limit of the renewed λ⁺
+                    _renew_growth(w, iv, t_new, dy, f, args, n, ndyn)
+                    renewed = True
+                    if c * w[S_GROWTH] > GROWTH_LIMIT:
+                        h_growth = GROWTH_LIMIT * ALPHA[order] / w[S_GROWTH]
+                        if h_growth >= min_step:
+                            break
+                else:
+                    _jacobian(w, iv, t_new, dy, f, args, n, ndyn)
+                    current_jac = True
         if not converged:
-            h_abs *= 0.5
-            change_differences(w, od, n, order, 0.5, o_r)
+            factor = 0.5
+            if RENEWS and renewed and c * w[S_GROWTH] > GROWTH_LIMIT:  # noqa: F821
+                factor = min(0.5, GROWTH_LIMIT * ALPHA[order] / w[S_GROWTH] / h_abs)
+                iv[I_LIMITED] = 1
+            h_abs *= factor
+            change_differences(w, od, n, order, factor, o_r)
             iv[I_NEQ] = 0
             iv[I_LU_OK] = 0
             continue
@@ -616,13 +657,20 @@ def no_growth(t, y, jac, args):
     return 0.0
 
 
-def compile_bdf(name: str, fun, jac, event, growth=no_growth) -> BdfSolver:
-    """The BDF step functions for one problem: ``fun``, ``jac``, ``event`` and ``growth``
-    are numba-compiled functions with the signatures of the module docstring; ``name`` (a
-    Python identifier) names the compiled copies in numba's disk cache."""
+@njit(cache=True)
+def no_renewal(t, y, f, args, jac):
+    """The RENEW of a problem without its own: -1 (the whole Jacobian is renewed)."""
+    return -1.0
+
+
+def compile_bdf(name: str, fun, jac, event, growth=no_growth, renew=no_renewal) -> BdfSolver:
+    """The BDF step functions for one problem: ``fun``, ``jac``, ``event``, ``growth`` and
+    ``renew`` are numba-compiled functions with the signatures of the module docstring;
+    ``name`` (a Python identifier) names the compiled copies in numba's disk cache."""
     env = dict(globals())
-    env.update(FUN=fun, JAC=jac, EVENT=event, GROWTH=growth)
-    for func in (_newton, _jacobian, start, step, locate):
+    env.update(FUN=fun, JAC=jac, EVENT=event, GROWTH=growth, RENEW=renew,
+               RENEWS=renew is not no_renewal)
+    for func in (_newton, _jacobian, _renew_growth, start, step, locate):
         copy = types.FunctionType(func.__code__, env, func.__name__, func.__defaults__,
                                   func.__closure__)
         copy.__qualname__ = f"{func.__qualname__}__{name}"

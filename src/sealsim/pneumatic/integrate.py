@@ -294,7 +294,17 @@ def _growth(t, y, jac, args):
     return max(jac[1, 1], 0.0)
 
 
-_SOLVER = bdf.compile_bdf("pneumatic", _fun, _jac, _event, _growth)
+@njit(cache=True)
+def _renew(t, y, f, args, jac):
+    """The growth rate renewed with the velocity's column of the Jacobian alone (the
+    :func:`_growth` the BDF's growth limit needs at almost every early step of a break-away;
+    :mod:`sealsim.ode.bdf`): one right-hand side instead of one per dynamic state."""
+    work = args[2]
+    return max(rhs.velocity_column_at(t, y, f, args[0], args[1], work[1], work[2], work[3],
+                                      work[0], jac), 0.0)
+
+
+_SOLVER = bdf.compile_bdf("pneumatic", _fun, _jac, _event, _growth, _renew)
 _bdf_start, _bdf_step, _bdf_locate = _SOLVER.start, _SOLVER.step, _SOLVER.locate
 
 #: results of :func:`run_interval`

@@ -539,7 +539,6 @@ def jacobian_at(t, y, f0, mode, tables, scale, work_y, work_dy, diag, jac):
     loads up, the rest take them from it (:data:`RATES_KEPT_LOADS`) -- the same numbers, a
     map lookup per seal less for half the columns (cylinder_32_fe.toml: 5.0-5.2 µs per
     Jacobian instead of 5.8-6.2 µs)."""
-    n = y.shape[0]
     ndyn = scale.shape[0]
     zero = _plain(y)
     c = tables[0]
@@ -552,16 +551,36 @@ def jacobian_at(t, y, f0, mode, tables, scale, work_y, work_dy, diag, jac):
             new_loads = j == 0 or j == 4 or j == 5 or toff <= j < toff + nseal
             if new_loads != (sweep == 1):
                 continue
-            h = 1.5e-8 * max(abs(y[j]), scale[j])
-            for i in range(n):
-                work_y[i] = y[i]
-            work_y[j] = y[j] + h
             level = RATES if new_loads or not looked_up else RATES_KEPT_LOADS
             looked_up = True
-            _evaluate_column_inlined(t, shifted, zero, mode + zero, tables, rates, diag,
-                                     zero + level)
-            for i in range(n):
-                jac[i, j] = (work_dy[i] - f0[i]) / h
+            _difference_column(t, y, f0, j, mode + zero, tables, scale, work_y, work_dy,
+                               shifted, rates, diag, jac, zero + level)
+
+
+@njit(inline="always")
+def _difference_column(t, y, f0, j, mode, tables, scale, work_y, work_dy, shifted, rates,
+                       diag, jac, level):
+    """Column j of ∂f/∂y by a forward difference from f0 = f(t, y), h_j =
+    1.5e-8·max(|y_j|, scale_j) (``shifted``, ``rates``: column views of work_y, work_dy)."""
+    n = y.shape[0]
+    h = 1.5e-8 * max(abs(y[j]), scale[j])
+    for i in range(n):
+        work_y[i] = y[i]
+    work_y[j] = y[j] + h
+    _evaluate_column_inlined(t, shifted, 0 * n, mode, tables, rates, diag, level)
+    for i in range(n):
+        jac[i, j] = (work_dy[i] - f0[i]) / h
+
+
+@njit(cache=True)
+def velocity_column_at(t, y, f0, mode, tables, scale, work_y, work_dy, diag, jac):
+    """Column 1 of ∂f/∂y, ∂f/∂v, as :func:`jacobian_at` computes it, from f0 = f(t, y) --
+    the evaluation just before at (t, y), whose contact loads it keeps (v changes no Δp and
+    no seal temperature).  Returns ∂(dv/dt)/∂v [1/s]."""
+    zero = _plain(y)
+    _difference_column(t, y, f0, 1 + zero, mode + zero, tables, scale, work_y, work_dy,
+                       work_y[:, None], work_dy[:, None], diag, jac, zero + RATES_KEPT_LOADS)
+    return jac[1, 1]
 
 
 @njit(inline="always")

@@ -152,6 +152,17 @@ static void jacobian(Bdf *b, const BdfProblem *p, double t, const double *y) {
     b->limited = 0;
 }
 
+/* the growth rate renewed at (t, y): the columns it reads (p->renew) or the whole Jacobian */
+static void renew_growth(Bdf *b, const BdfProblem *p, double t, const double *y) {
+    if (!p->renew) {
+        jacobian(b, p, t, y);
+        return;
+    }
+    b->growth = p->renew(p->ctx, t, y, b->J);
+    b->nrenew++;
+    b->limited = 0;
+}
+
 void bdf_start(Bdf *b, double t0, const double *y0, double t_bound, const BdfProblem *p) {
     int n = b->n;
     double *f0 = b->f, *y1 = b->dy, *f1 = b->d, *scale = b->scale;
@@ -234,7 +245,7 @@ int bdf_step(Bdf *b, const BdfProblem *p) {
     int n = b->n, order = b->order, n_iter = 0;
     double t = b->t, h_abs = b->h_abs, error_norm = 0.0, safety = 0.0;
     double min_step = 10.0 * fabs(nextafter(t, INFINITY) - t);
-    int current_jac = 0;
+    int current_jac = 0, renewed = 0;
     if (h_abs > b->max_step) {
         change_differences(b, order, b->max_step / h_abs);
         h_abs = b->max_step;
@@ -249,7 +260,7 @@ int bdf_step(Bdf *b, const BdfProblem *p) {
     if (b->growth > 0.0) {
         double h_growth = BDF_GROWTH_LIMIT * alpha_k(order) / b->growth;
         if (h_abs > h_growth && b->limited) {
-            jacobian(b, p, t, b->D);
+            renew_growth(b, p, t, b->D);
             b->lu_ok = 0;
             h_growth = b->growth > 0.0 ? BDF_GROWTH_LIMIT * alpha_k(order) / b->growth
                                        : INFINITY;
@@ -298,14 +309,29 @@ int bdf_step(Bdf *b, const BdfProblem *p) {
             converged = newton(b, p, t_new, c, &n_iter);
             if (!converged) {
                 if (current_jac) break;
-                jacobian(b, p, t_new, b->y_pred);
                 b->lu_ok = 0;
-                current_jac = 1;
+                if (p->renew && b->growth > 0.0 && !renewed) {
+                    /* a growing state stalls the iteration: its columns first, the step
+                     * within the growth limit of the renewed lambda+ (sealsim.ode.bdf) */
+                    renew_growth(b, p, t_new, b->y_pred);
+                    renewed = 1;
+                    if (c * b->growth > BDF_GROWTH_LIMIT
+                        && BDF_GROWTH_LIMIT * alpha_k(order) / b->growth >= min_step)
+                        break;
+                } else {
+                    jacobian(b, p, t_new, b->y_pred);
+                    current_jac = 1;
+                }
             }
         }
         if (!converged) {
-            h_abs *= 0.5;
-            change_differences(b, order, 0.5);
+            double factor = 0.5;
+            if (p->renew && renewed && c * b->growth > BDF_GROWTH_LIMIT) {
+                factor = fmin(0.5, BDF_GROWTH_LIMIT * alpha_k(order) / b->growth / h_abs);
+                b->limited = 1;
+            }
+            h_abs *= factor;
+            change_differences(b, order, factor);
             b->n_equal = 0;
             b->lu_ok = 0;
             continue;

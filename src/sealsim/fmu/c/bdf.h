@@ -21,11 +21,14 @@ typedef struct {
     /* the growth rate (>= 0) of a Jacobian J, which limits the step (sealsim.ode.bdf); NULL:
      * none */
     double (*growth)(void *ctx, double t, const double *y, const double *J);
+    /* renews the columns of J that growth reads at (t, y) and returns the growth rate
+     * (sealsim.ode.bdf's RENEW); NULL: the whole Jacobian is renewed */
+    double (*renew)(void *ctx, double t, const double *y, double *J);
 } BdfProblem;
 
 typedef struct {
     int n, order, n_equal, lu_ok, limited;
-    long nfev, njev, nlu, nsteps;
+    long nfev, njev, nlu, nsteps, nrenew;
     double t, t_old, h_abs, rtol, max_step, newton_tol, t_bound, growth;
     double atol[BDF_MAXN];
     double D[(BDF_MAX_ORDER + 3) * BDF_MAXN];

@@ -506,6 +506,19 @@ static void problem_jac(void *ctx, double t, const double *y, double *J) {
     }
 }
 
+/* integrate._renew: the growth rate from the velocity's column alone (rhs.velocity_column_at:
+ * the column of problem_jac, the contact loads of the evaluation at y kept) */
+static double problem_renew(void *ctx, double t, const double *y, double *J) {
+    Problem *p = (Problem *)ctx;
+    problem_fun(ctx, t, y, p->f0);
+    double h = 1.5e-8 * fmax(fabs(y[1]), JAC_SCALE[1]);
+    for (int i = 0; i < NSTATES; i++) p->shifted[i] = y[i];
+    p->shifted[1] = y[1] + h;
+    evaluate(p->m, t, p->shifted, p->mode, RATES_KEPT_LOADS, p->f1, &p->o);
+    for (int i = 0; i < NSTATES; i++) J[i * BDF_MAXN + 1] = (p->f1[i] - p->f0[i]) / h;
+    return fmax(J[1 * BDF_MAXN + 1], 0.0);
+}
+
 /* integrate._growth: the piston's own velocity feedback where positive */
 static double problem_growth(void *ctx, double t, const double *y, const double *J) {
     (void)ctx;
@@ -562,6 +575,7 @@ static void problem_init(Problem *p, CylinderData *m) {
     p->bp.jac = problem_jac;
     p->bp.event = problem_event;
     p->bp.growth = problem_growth;
+    p->bp.renew = problem_renew;
 }
 
 /* -- the inputs ----------------------------------------------------------------------------- */
