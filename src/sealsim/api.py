@@ -127,10 +127,10 @@ def lip_seal_torque(shaft_diameter, speed, oil: str | Mapping[str, Any] | Oil = 
     dict or pandas.DataFrame
         shaft_diameter_mm, speed_rpm, torque_Nm, power_W, T_contact_C, T_groove_C,
         T_sump_C, T_housing_C (the housing the seal sits in), film_um, F_lub_N, F_material_N,
-        bearing_power_W (the bearing beside the
-        seal), heat_oil_side_W, heat_housing_W, heat_air_side_W (where the heat leaves shaft
-        and seal: into the oil side, through the seal's outer diameter, on the air side; they
-        add up to power_W plus the bearing's shaft share), lip_note (text: the lip's mounting
+        bearing_power_W (the bearing beside the seal), heat_oil_side_W, heat_housing_W,
+        heat_air_side_W (where the heat leaves shaft and seal: into the oil side, through the
+        seal's outer diameter, on the air side; they add up to power_W plus the bearing's
+        shaft share), lip_note (text: the lip's mounting
         case when it runs colder than it was mounted, else ""): a dict for scalar arguments (with
         ``notes``, a list of str), a DataFrame with one row per point when any of
         shaft_diameter, speed, sump_temperature, ambient_temperature is an array (they

@@ -26,10 +26,11 @@ def _range_text(lo: float | None, hi: float | None, lo_open: bool, hi_open: bool
     return "finite"
 
 
-def _outside(arr: np.ndarray, lo: float | None, hi: float | None, lo_open: bool,
-             hi_open: bool) -> np.ndarray:
-    """Mask of the values that are not finite or lie outside the (open or closed) range."""
-    bad = ~np.isfinite(arr)
+def _outside(arr: np.ndarray | float, lo: float | None, hi: float | None, lo_open: bool,
+             hi_open: bool) -> np.ndarray | bool:
+    """Mask of the values that are not finite or lie outside the (open or closed) range; for a
+    float, one bool (without numpy: the scalar check of every time step)."""
+    bad = not math.isfinite(arr) if isinstance(arr, float) else ~np.isfinite(arr)
     if lo is not None:
         bad |= (arr <= lo) if lo_open else (arr < lo)
     if hi is not None:
@@ -54,11 +55,8 @@ def _array(
         raise InputError(
             f"{name} must be a number or an array of numbers [{unit}]; got {value!r}"
         ) from exc
-    if arr.ndim == 0:       # the common scalar call of a time step: no array reductions
-        v = float(arr)
-        if (math.isfinite(v) and (lo is None or (v > lo if lo_open else v >= lo))
-                and (hi is None or (v < hi if hi_open else v <= hi))):
-            return arr
+    if arr.ndim == 0 and not _outside(float(arr), lo, hi, lo_open, hi_open):
+        return arr          # the common scalar call of a time step: no array reductions
     bad = _outside(arr, lo, hi, lo_open, hi_open)
     if np.any(bad):
         first = arr[bad].flat[0]
