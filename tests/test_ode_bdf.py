@@ -22,6 +22,8 @@ from sealsim.ode import compile_bdf, workspace
 from sealsim.ode.bdf import (I_NFEV, I_NJEV, I_NRENEW, I_NSTEPS, OK, S_T, dense, lu_factor,
                              lu_solve)
 
+pytestmark = pytest.mark.xdist_group("compiled_bdf")   # one worker compiles the solvers
+
 MU = 50.0     # van der Pol: stiff, with relaxation jumps the step control must follow
 
 
