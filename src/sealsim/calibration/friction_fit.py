@@ -285,8 +285,11 @@ def with_law_table(law: FrictionLaw, runs: list[PreparedRun]) -> list[PreparedRu
 
 def model_inputs(run: PreparedRun) -> dict[str, Any]:
     """Everything the model of a run is computed from besides the law's parameters: the
-    fingerprint of a kept fit (:class:`~sealsim.calibration.kept.KeptEvaluations`)."""
-    return {"name": run.name, "role": run.spec.role, "time": run.time,
+    fingerprint of a kept fit (:class:`~sealsim.calibration.kept.KeptEvaluations`), and how
+    it meets the measurement (``comparison``: a kept fit whose residuals compared the model with
+    its offset left in is not resumed)."""
+    return {"name": run.name, "role": run.spec.role, "comparison": "offset-free model",
+            "time": run.time,
             "velocity": run.velocity, "friction": run.friction, "pressure": run.pressure,
             "pressure_difference": run.pressure_difference, "temperature": run.temperature,
             "normal_force": run.normal_force, "contact_width": run.contact_width,
