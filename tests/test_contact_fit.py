@@ -15,7 +15,7 @@ from rig_strokes import stroke_velocity
 
 import sealsim
 from sealsim.calibration.case import FrictionFitCase
-from sealsim.calibration.friction_fit import predict_run, with_law_table
+from sealsim.calibration.friction_fit import offset_free, predict_run, with_law_table
 from sealsim.calibration.study import friction_fit_study
 from sealsim.cases import validate_case
 from sealsim.errors import InputError, SealsimWarning
@@ -74,15 +74,17 @@ def test_fitted_roughness_gets_the_friction_table_of_each_value(tmp_path):
     assert study.result.values[0] == pytest.approx(0.6e-6, rel=0.01)
     assert study.result.identifiable.all()
     # the predictions written after the fit (the law driven by the measured velocity, Θ from
-    # rest) use the table of the fitted σ: equal to the true law's within 1 % (σ within 1 %);
-    # the start table would give a visibly different signal
+    # rest; offset-free, as the measurement is) use the table of the fitted σ: equal to the
+    # true law's within 1 % (σ within 1 %); the start table would give a visibly different
+    # signal
     fitted_law = make_law(study.result.params)
     true_law = make_law(study.result.params.model_copy(update={"roughness": 0.6e-6}))
     run = study.runs[0]
-    expected = predict_run(true_law, with_law_table(true_law, [run])[0])
+    expected = offset_free(predict_run(true_law, with_law_table(true_law, [run])[0]),
+                           run.phases)
     scale = np.abs(expected).max()
     assert np.abs(study.predictions["sweep"] - expected).max() < 0.01 * scale
-    stale = predict_run(fitted_law, run)           # the table built with the start value
+    stale = offset_free(predict_run(fitted_law, run), run.phases)   # the start value's table
     assert np.abs(stale - expected).max() > 0.05 * scale
 
 

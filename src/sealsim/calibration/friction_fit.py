@@ -6,8 +6,12 @@ force F_N(t) and contact width b(t) come from the contact map at the measured pr
 difference; the friction law is integrated along v(t) with its exact per-step update
 (:meth:`sealsim.friction.FrictionLaw.trajectory`) and gives F(t).  Measured friction carries an
 offset (load-cell zero, the area the pressure acts on); every comparison is offset-free: the
-offset of the sliding phases (:func:`sealsim.measurements.friction_level`) is removed from the
-measured signal.
+offset of the sliding phases (:func:`sealsim.measurements.friction_level`, the mean of the two
+directions' medians) is removed from the measured signal, and the same offset of the model's
+signal from the model's (:func:`offset_free`).  Removing the measured offset makes the two
+directions' friction equal by construction, so a difference between them (a model slower in
+one stroke, or with a steeper inlet flank) is not in the data: compared with the model's own
+offset left in, it would be fitted as an error that no parameter should remove.
 
 Fit (scipy.optimize.least_squares, trust-region reflective with bounds, robust loss):
 
@@ -66,7 +70,7 @@ from sealsim.pneumatic.friction_tables import (
 from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["FitResult", "PreparedRun", "fit_friction", "friction_from_rod_force", "model_inputs",
-           "predict_run", "prepare_run", "run_metrics", "with_law_table"]
+           "offset_free", "predict_run", "prepare_run", "run_metrics", "with_law_table"]
 
 #: friction tables of the tribology values a fit tried last, kept per contact map (in memory)
 _FIT_TABLES = 16
@@ -281,8 +285,11 @@ def with_law_table(law: FrictionLaw, runs: list[PreparedRun]) -> list[PreparedRu
 
 def model_inputs(run: PreparedRun) -> dict[str, Any]:
     """Everything the model of a run is computed from besides the law's parameters: the
-    fingerprint of a kept fit (:class:`~sealsim.calibration.kept.KeptEvaluations`)."""
-    return {"name": run.name, "role": run.spec.role, "time": run.time,
+    fingerprint of a kept fit (:class:`~sealsim.calibration.kept.KeptEvaluations`), and how
+    it meets the measurement (``comparison``: a kept fit whose residuals compared the model with
+    its offset left in is not resumed)."""
+    return {"name": run.name, "role": run.spec.role, "comparison": "offset-free model",
+            "time": run.time,
             "velocity": run.velocity, "friction": run.friction, "pressure": run.pressure,
             "pressure_difference": run.pressure_difference, "temperature": run.temperature,
             "normal_force": run.normal_force, "contact_width": run.contact_width,
@@ -337,13 +344,34 @@ def predict_run(law: FrictionLaw, run: PreparedRun) -> np.ndarray:
     return law.force(states, v, _inputs(run))
 
 
+def offset_free(force, phases) -> np.ndarray:
+    """A friction signal [N] less its offset, the mean of its two directions' medians over the
+    sliding phases (:func:`sealsim.measurements.friction_level`): what the measured signal of
+    a run is compared as, so the model's is too.
+
+    Examples
+    --------
+    A model 1 N stronger in the forward stroke than in the backward one: the data, whose
+    offset was removed the same way, cannot tell that from an offset of 0.5 N.
+
+    >>> from sealsim.measurements import SlidingPhase
+    >>> ph = [SlidingPhase(0, 2, 1, 0, 1, 0.01), SlidingPhase(2, 4, -1, 1, 2, -0.01)]
+    >>> offset_free([5.0, 5.0, -4.0, -4.0], ph).tolist()
+    [4.5, 4.5, -4.5, -4.5]
+    """
+    f = np.asarray(force, dtype=float)
+    return f - friction_level(f, phases)[1]
+
+
 def steady_phase_forces(law: FrictionLaw, run: PreparedRun) -> np.ndarray:
-    """Median steady friction of the model over each sliding phase [N]."""
-    out = []
+    """Median steady friction of the model over each sliding phase, offset-free as the
+    measurement is (:func:`offset_free`) [N]."""
+    steady = np.zeros(run.velocity.size)
     for ph in run.phases:
         sel = slice(ph.start, ph.stop)
-        out.append(float(np.median(law.steady_force(run.velocity[sel], _inputs(run, sel)))))
-    return np.array(out)
+        steady[sel] = law.steady_force(run.velocity[sel], _inputs(run, sel))
+    steady = offset_free(steady, run.phases)
+    return np.array([float(np.median(steady[ph.start:ph.stop])) for ph in run.phases])
 
 
 def measured_phase_forces(run: PreparedRun) -> np.ndarray:
@@ -356,10 +384,11 @@ def run_metrics(run: PreparedRun, predicted: np.ndarray) -> dict[str, Any]:
 
     ``F_measured_N`` / ``F_predicted_N``: offset-free friction level of the sliding phases
     (half the difference of the medians in the two directions); ``rmse_N`` and ``r2`` over all
-    samples of the offset-free friction time series.
+    samples of the offset-free friction time series, measured and model
+    (:func:`offset_free`).
     """
     f_pred, _ = friction_level(predicted, run.phases)
-    agreement = compare_signals(run.friction, predicted)
+    agreement = compare_signals(run.friction, offset_free(predicted, run.phases))
     return {"role": run.spec.role,
             "pressure_bar": (float(np.median(run.pressure)) / 1e5 if run.pressure_known
                              else None),
@@ -494,7 +523,8 @@ def fit_friction(case: FrictionFitCase, runs: list[PreparedRun], progress=None,
                     if stage == "steady":
                         parts.append(measured_phase_forces(r) - steady_phase_forces(law, r))
                     else:
-                        parts.append((r.friction - predict_run(law, r))[r.samples])
+                        model = offset_free(predict_run(law, r), r.phases)
+                        parts.append((r.friction - model)[r.samples])
                 res = np.concatenate(parts)
                 return np.where(np.isfinite(res), res, 1e6)
 

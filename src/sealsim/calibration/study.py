@@ -12,7 +12,8 @@ writes the result folder).
   "conditions": {CONDITION: {"measurements", "roles", ...}}}`` (``conditions``: the runs
   that repeat one test, :func:`repeat_conditions`);
 * ``diagnostics`` -- status, reasons of a failed fit, stages, correlation matrix, warnings;
-* ``predictions`` -- measured (offset-free) and model friction of every run.
+* ``predictions`` -- measured and model friction of every run (the frame and the plots
+  show both offset-free, :func:`~sealsim.calibration.friction_fit.offset_free`).
 """
 
 from __future__ import annotations
@@ -30,6 +31,7 @@ from sealsim.calibration.friction_fit import (
     PreparedRun,
     fit_friction,
     model_inputs,
+    offset_free,
     predict_run,
     prepare_run,
     run_metrics,
@@ -138,7 +140,9 @@ def friction_fit_study(case: FrictionFitCase, base_dir: str | Path,
     result = fit_friction(case, runs, progress, kept)
     law = make_law(result.params)
     # fitted roughness, film factor, ...: the friction table of the fitted values
-    predictions = {r.name: predict_run(law, r) for r in with_law_table(law, runs)}
+    # offset-free as the measured signals are: the model's own offset is not in the data
+    predictions = {r.name: offset_free(predict_run(law, r), r.phases)
+                   for r in with_law_table(law, runs)}
     report = {"parameters": parameter_report(result, result.params.model_dump(mode="json")),
               "measurements": {r.name: run_metrics(r, predictions[r.name]) for r in runs}}
     # the starting parameters' prediction: how far the law is off before any fitting
