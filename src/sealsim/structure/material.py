@@ -310,6 +310,72 @@ def _mr_tangent_points(F, c10, c01, out, reduced=False):
     return out
 
 
+def _ve_stress_points(F, P_inf, statevars, decay, half, gamma, P, new):
+    """Viscoelastic stress P and new state variables (n + 1, 3, 3, points) of F (3, 3, points)
+    from the equilibrium stress P_inf, point by point (see :meth:`ViscoelasticMooneyRivlin.
+    gradient`); the state: the previous isochoric stress S^n and the branch stresses Q_i^n."""
+    nterms = decay.shape[0]
+    Fp = np.empty((3, 3))
+    C = np.empty((3, 3))
+    b = np.empty((3, 3))
+    iFT = np.empty((3, 3))
+    S = np.empty((3, 3))
+    H = np.empty((3, 3))
+    for q in range(F.shape[2]):
+        for i in range(3):
+            for j in range(3):
+                Fp[i, j] = F[i, j, q]
+        _point_kinematics(Fp, C, b, iFT)
+        for i in range(3):
+            for j in range(3):
+                s = 0.0  # S = F^-1 P_inf
+                for k in range(3):
+                    s += iFT[k, i] * P_inf[k, j, q]
+                S[i, j] = s
+                h = 0.0  # H = sum_i exp(-xi_i) Q_i^n - beta_i exp(-xi_i / 2) S^n
+                s_old = statevars[0, i, j, q]
+                for t in range(nterms):
+                    h += decay[t] * statevars[t + 1, i, j, q] - half[t] * s_old
+                    new[t + 1, i, j, q] = (decay[t] * statevars[t + 1, i, j, q]
+                                           + half[t] * (S[i, j] - s_old))
+                H[i, j] = h
+                new[0, i, j, q] = S[i, j]
+        for i in range(3):
+            for j in range(3):
+                s = 0.0  # F H
+                for k in range(3):
+                    s += Fp[i, k] * H[k, j]
+                P[i, j, q] = gamma * P_inf[i, j, q] + s
+    return P, new
+
+
+def _ve_tangent_points(A, statevars, decay, half, gamma, reduced):
+    """Viscoelastic tangent γ A_inf + δ_ik H_LJ (written into A_inf, (3, 3, 3, 3, points));
+    ``reduced``: only the components :func:`mr_tangent` keeps (the others stay zero)."""
+    nterms = decay.shape[0]
+    H = np.empty((3, 3))
+    for q in range(A.shape[4]):
+        for i in range(3):
+            for j in range(3):
+                h = 0.0
+                s_old = statevars[0, i, j, q]
+                for t in range(nterms):
+                    h += decay[t] * statevars[t + 1, i, j, q] - half[t] * s_old
+                H[i, j] = h
+        for i in range(3):
+            for J in range(3):
+                for k in range(3):
+                    for L in range(3):
+                        a = gamma * A[i, J, k, L, q]
+                        if i == k:
+                            a += H[L, J]
+                        if reduced and not (((i < 2 and J < 2) or (i == 2 and J == 2))
+                                            and ((k < 2 and L < 2) or (k == 2 and L == 2))):
+                            a = 0.0
+                        A[i, J, k, L, q] = a
+    return A
+
+
 HAVE_COMPILED_TANGENT = numba is not None
 #: Use the compiled kernels when a umat is not told otherwise: numba installed and the
 #: environment variable ``SEALSIM_FE_COMPILED`` not "0" (benchmarks set False for their
@@ -320,6 +386,8 @@ if HAVE_COMPILED_TANGENT:  # pragma: no branch
     _point_FC = numba.njit(cache=True)(_point_FC)
     _mr_stress_points = numba.njit(cache=True)(_mr_stress_points)
     _mr_tangent_points = numba.njit(cache=True)(_mr_tangent_points)
+    _ve_stress_points = numba.njit(cache=True)(_ve_stress_points)
+    _ve_tangent_points = numba.njit(cache=True)(_ve_tangent_points)
 
 
 def _flat_out(out, shape):
@@ -441,9 +509,28 @@ class ViscoelasticMooneyRivlin:
         gamma = self.theta + float(np.sum(self.betas * np.exp(-0.5 * self.xi)))
         return s_old, q_old, decay, half, H, gamma
 
-    def gradient(self, x):
+    def _compiled(self):
+        return USE_COMPILED if self.compiled is None else self.compiled
+
+    def _factors(self):
+        """exp(-ξ_i), β_i exp(-ξ_i/2) and γ = θ + Σ β_i exp(-ξ_i/2) of the increment."""
+        decay = np.exp(-self.xi)
+        half = self.betas * np.exp(-0.5 * self.xi)
+        return decay, half, self.theta + float(np.sum(half))
+
+    def gradient(self, x, out=None):
         F, statevars = x[0], x[-1]
         shape = F.shape[2:]
+        if self._compiled():
+            flat = np.ascontiguousarray(F, dtype=float).reshape(3, 3, -1)
+            n = flat.shape[2]
+            sv = np.ascontiguousarray(statevars, dtype=float).reshape(self.nterms + 1, 3, 3, n)
+            P_inf = _mr_stress_points(flat, self.c10, self.c01, np.empty((3, 3, n)))
+            P = _flat_out(out if len(shape) == 2 else None, (3, 3, n))
+            new = np.empty_like(sv)
+            decay, half, gamma = self._factors()
+            _ve_stress_points(flat, P_inf, sv, decay, half, gamma, P, new)
+            return [P.reshape(3, 3, *shape), new.reshape(statevars.shape)]
         P_inf = mr_stress(F, self.c10, self.c01, self.compiled)
         iF = np.moveaxis(np.linalg.inv(np.moveaxis(F, (0, 1), (-2, -1))), (-2, -1), (0, 1))
         S_new = np.einsum("iK...,Kj...->ij...", iF, P_inf)
@@ -453,9 +540,17 @@ class ViscoelasticMooneyRivlin:
         new = np.concatenate([S_new[None], q_new], axis=0).reshape(statevars.shape)
         return [P, new]
 
-    def hessian(self, x):
+    def hessian(self, x, out=None, reduced=False):
+        """dP/dF; ``reduced`` (compiled only): the components of :func:`mr_tangent`'s."""
         F, statevars = x[0], x[-1]
         shape = F.shape[2:]
+        if self._compiled():
+            A = mr_tangent(F, self.c10, self.c01, True, out, reduced)
+            n = A.reshape(3, 3, 3, 3, -1).shape[4]
+            sv = np.ascontiguousarray(statevars, dtype=float).reshape(self.nterms + 1, 3, 3, n)
+            decay, half, gamma = self._factors()
+            _ve_tangent_points(A.reshape(3, 3, 3, 3, n), sv, decay, half, gamma, bool(reduced))
+            return [A]
         _, _, _, _, H, gamma = self._history(statevars, shape)
         A = gamma * mr_tangent(F, self.c10, self.c01, self.compiled)
         A = A + np.einsum("ik,LJ...->iJkL...", np.eye(3), H)
