@@ -146,11 +146,12 @@ def test_compiled_viscoelastic_umat_equals_einsum_reference():
     assert not reduced[~mask].any() and not np.isnan(out).any()
 
 
-@pytest.mark.parametrize("backend", ["superlu", "pardiso"])
+@pytest.mark.parametrize("backend", ["superlu", "pardiso", "compiled"])
 def test_linear_solvers_reuse_the_analysis_and_match_spsolve(backend):
     """Non-symmetric matrices of one sparsity pattern (a stiffness-like 2-d Laplacian plus a
     small skew part, like the follower pressure): every backend gives scipy's ``spsolve``
-    solution to round-off (1e-12), and PARDISO analyses the pattern once."""
+    solution to round-off (1e-12), and PARDISO and the compiled LU analyse the pattern
+    once."""
     import scipy.sparse as sp
 
     from sealsim.structure.solver import LinearSolver, _pypardiso
@@ -168,8 +169,39 @@ def test_linear_solvers_reuse_the_analysis_and_match_spsolve(backend):
         x = solver(A, b)
         ref = spsolve(A, b)
         assert np.abs(x - ref).max() <= 1e-12 * np.abs(ref).max()
-    assert solver.analyses == (1 if backend == "pardiso" else 0)
+    assert solver.analyses == (0 if backend == "superlu" else 1)
     solver.release()
+
+
+def test_compiled_lu_keeps_the_analysis_per_pattern_and_falls_back_on_a_bad_pivot():
+    """The compiled LU (sealsim.structure.sparse_lu) against scipy's ``spsolve`` (1e-12 of
+    the solution, round-off): its fill equals SuperLU's with the same ordering (same symbolic
+    factorisation), a second pattern gets its own analysis and the first is reused when it
+    comes back; a matrix with a zero diagonal (a pivot no diagonal-pivoting LU can take) is
+    solved by SuperLU with partial pivoting instead, and counted."""
+    import scipy.sparse as sp
+
+    from sealsim.structure.solver import LinearSolver
+    from sealsim.structure.sparse_lu import PatternLU, superlu_factor
+
+    n = 20
+    lap = sp.diags([-1.0, 2.0, -1.0], [-1, 0, 1], shape=(n, n))
+    base = (sp.kron(lap, sp.eye(n)) + sp.kron(sp.eye(n), lap)
+            + sp.diags([0.05, -0.05], [-1, 1], shape=(n * n, n * n))).tocsr()
+    lu = PatternLU(base)
+    superlu = superlu_factor(base)
+    assert lu.fill == superlu.L.nnz + superlu.U.nnz - n * n
+    other = (base + sp.diags([0.3], [7], shape=(n * n, n * n))).tocsr()  # a new entry
+    solver = LinearSolver("compiled")
+    for A in (base, other, base * 2.0):
+        b = RNG.standard_normal(n * n)
+        ref = spsolve(A, b)
+        assert np.abs(solver(A, b) - ref).max() <= 1e-12 * np.abs(ref).max()
+    assert solver.analyses == 2 and solver.fallbacks == 0
+    swap = sp.csr_matrix(np.array([[0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]))
+    x = solver(swap, np.array([1.0, 2.0, 3.0]))
+    assert x.tolist() == [2.0, 1.0, 3.0] and solver.fallbacks == 1
+    assert not PatternLU(swap).factorize(swap)
 
 
 def test_viscoelastic_material_expansion_follows_the_fictive_temperature():

@@ -310,69 +310,76 @@ def _mr_tangent_points(F, c10, c01, out, reduced=False):
     return out
 
 
+def _ve_history(statevars, decay, half, H, S, new, update):
+    """H = Σ_i e^{-ξ_i} Q_i^n − β_i e^{-ξ_i/2} S^n (3, 3, points) of the state variables
+    (n + 1, 3, 3, points): S^n, Q_1^n ... Q_n^n; with ``update`` also the branch stresses
+    Q_i^{n+1} = e^{-ξ_i} Q_i^n + β_i e^{-ξ_i/2} (S − S^n) of the new isochoric stress S into
+    ``new[1:]`` (one pass over the state; the loops run along the points: contiguous)."""
+    npoints = statevars.shape[3]
+    for i in range(3):
+        for j in range(3):
+            for q in range(npoints):
+                H[i, j, q] = 0.0
+            for t in range(decay.shape[0]):
+                d = decay[t]
+                e = half[t]
+                for q in range(npoints):
+                    q_old = statevars[t + 1, i, j, q]
+                    s_old = statevars[0, i, j, q]
+                    H[i, j, q] += d * q_old - e * s_old
+                    if update:
+                        new[t + 1, i, j, q] = d * q_old + e * (S[i, j, q] - s_old)
+    return H
+
+
 def _ve_stress_points(F, P_inf, statevars, decay, half, gamma, P, new):
-    """Viscoelastic stress P and new state variables (n + 1, 3, 3, points) of F (3, 3, points)
-    from the equilibrium stress P_inf, point by point (see :meth:`ViscoelasticMooneyRivlin.
-    gradient`); the state: the previous isochoric stress S^n and the branch stresses Q_i^n."""
-    nterms = decay.shape[0]
+    """Viscoelastic stress P = γ P_inf + F H and the new state variables (n + 1, 3, 3,
+    points) of F (3, 3, points) and the equilibrium stress P_inf (see
+    :meth:`ViscoelasticMooneyRivlin.gradient`)."""
+    npoints = F.shape[2]
     Fp = np.empty((3, 3))
     C = np.empty((3, 3))
     b = np.empty((3, 3))
     iFT = np.empty((3, 3))
-    S = np.empty((3, 3))
-    H = np.empty((3, 3))
-    for q in range(F.shape[2]):
+    S = new[0]
+    for q in range(npoints):  # S^{n+1} = F^-1 P_inf
         for i in range(3):
             for j in range(3):
                 Fp[i, j] = F[i, j, q]
         _point_kinematics(Fp, C, b, iFT)
         for i in range(3):
             for j in range(3):
-                s = 0.0  # S = F^-1 P_inf
-                for k in range(3):
-                    s += iFT[k, i] * P_inf[k, j, q]
-                S[i, j] = s
-                h = 0.0  # H = sum_i exp(-xi_i) Q_i^n - beta_i exp(-xi_i / 2) S^n
-                s_old = statevars[0, i, j, q]
-                for t in range(nterms):
-                    h += decay[t] * statevars[t + 1, i, j, q] - half[t] * s_old
-                    new[t + 1, i, j, q] = (decay[t] * statevars[t + 1, i, j, q]
-                                           + half[t] * (S[i, j] - s_old))
-                H[i, j] = h
-                new[0, i, j, q] = S[i, j]
-        for i in range(3):
-            for j in range(3):
-                s = 0.0  # F H
-                for k in range(3):
-                    s += Fp[i, k] * H[k, j]
-                P[i, j, q] = gamma * P_inf[i, j, q] + s
+                S[i, j, q] = (iFT[0, i] * P_inf[0, j, q] + iFT[1, i] * P_inf[1, j, q]
+                              + iFT[2, i] * P_inf[2, j, q])
+    H = _ve_history(statevars, decay, half, np.empty((3, 3, npoints)), S, new, True)
+    for i in range(3):
+        for j in range(3):
+            for q in range(npoints):
+                P[i, j, q] = gamma * P_inf[i, j, q] + (F[i, 0, q] * H[0, j, q]
+                                                       + F[i, 1, q] * H[1, j, q]
+                                                       + F[i, 2, q] * H[2, j, q])
     return P, new
 
 
 def _ve_tangent_points(A, statevars, decay, half, gamma, reduced):
     """Viscoelastic tangent γ A_inf + δ_ik H_LJ (written into A_inf, (3, 3, 3, 3, points));
     ``reduced``: only the components :func:`mr_tangent` keeps (the others stay zero)."""
-    nterms = decay.shape[0]
-    H = np.empty((3, 3))
-    for q in range(A.shape[4]):
-        for i in range(3):
-            for j in range(3):
-                h = 0.0
-                s_old = statevars[0, i, j, q]
-                for t in range(nterms):
-                    h += decay[t] * statevars[t + 1, i, j, q] - half[t] * s_old
-                H[i, j] = h
-        for i in range(3):
-            for J in range(3):
-                for k in range(3):
-                    for L in range(3):
-                        a = gamma * A[i, J, k, L, q]
-                        if i == k:
-                            a += H[L, J]
-                        if reduced and not (((i < 2 and J < 2) or (i == 2 and J == 2))
-                                            and ((k < 2 and L < 2) or (k == 2 and L == 2))):
-                            a = 0.0
-                        A[i, J, k, L, q] = a
+    npoints = A.shape[4]
+    H = np.empty((3, 3, npoints))
+    _ve_history(statevars, decay, half, H, H, statevars, False)
+    for i in range(3):
+        for J in range(3):
+            for k in range(3):
+                for L in range(3):
+                    if reduced and not (((i < 2 and J < 2) or (i == 2 and J == 2))
+                                        and ((k < 2 and L < 2) or (k == 2 and L == 2))):
+                        continue  # zero already
+                    if i == k:
+                        for q in range(npoints):
+                            A[i, J, k, L, q] = gamma * A[i, J, k, L, q] + H[L, J, q]
+                    else:
+                        for q in range(npoints):
+                            A[i, J, k, L, q] = gamma * A[i, J, k, L, q]
     return A
 
 
@@ -386,6 +393,7 @@ if HAVE_COMPILED_TANGENT:  # pragma: no branch
     _point_FC = numba.njit(cache=True)(_point_FC)
     _mr_stress_points = numba.njit(cache=True)(_mr_stress_points)
     _mr_tangent_points = numba.njit(cache=True)(_mr_tangent_points)
+    _ve_history = numba.njit(cache=True)(_ve_history)
     _ve_stress_points = numba.njit(cache=True)(_ve_stress_points)
     _ve_tangent_points = numba.njit(cache=True)(_ve_tangent_points)
 
