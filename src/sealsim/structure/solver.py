@@ -108,15 +108,16 @@ class LinearSolver:
     perturbation 1e-13) except that iterative refinement runs only when pivots were perturbed
     (pypardiso's implicit defaults refine twice in every solve: 15 % of the time, the same
     solution to 1e-12). A matrix with the pattern arrays of the previous call (the
-    :class:`~.assembly.SystemAssembly` keeps them) skips hashing its pattern. SuperLU (scipy) is
-    used without PARDISO: minimum-degree ordering of A + Aᵀ with symmetric-mode diagonal
+    :class:`~.assembly.SystemAssembly` keeps them) skips hashing its pattern. SuperLU (scipy,
+    backend ``superlu``): minimum-degree ordering of A + Aᵀ with symmetric-mode diagonal
     pivoting (threshold 0.1), about 3× faster than ``spsolve``'s default COLAMD ordering on
     these matrices; scipy cannot keep a SuperLU symbolic factorisation, and re-using the
     ordering alone gained nothing (measured). The compiled LU (``compiled``, the default
     without PARDISO) keeps that ordering and the symbolic factorisation per pattern and runs
-    the numerical LU with the same diagonal pivot threshold, about 3× faster than SuperLU
-    (4552 dofs of a lip seal: 5 ms against 16 ms); a matrix whose diagonal pivot fails the
-    threshold is given to SuperLU (counted in :attr:`fallbacks`).
+    the numerical LU with the same diagonal pivot threshold, about 2.5× faster than SuperLU
+    (4552 dofs of a lip seal, medians of 15 alternating runs on a shared machine: 28 ms
+    against 70 ms per factorisation); a matrix whose diagonal pivot fails the
+    threshold is given to SuperLU (counted in ``fallbacks``).
 
     Parameters
     ----------
