@@ -17,10 +17,10 @@ tangent, FElupe's assembly, scipy ``spsolve`` in every Newton iteration; the map
 (squeeze, temperature) path solving its own installation: the former code, kept as the
 reference the tests compare against) and for the current one (compiled Mooney–Rivlin and
 assembly kernels into a cached sparsity pattern, PARDISO with the symbolic analysis kept per
-pattern if pypardiso is installed, else SuperLU with the symmetric-pattern ordering; the map
+pattern if pypardiso is installed, else the compiled LU of sealsim.structure.sparse_lu, which
+keeps SuperLU's symmetric-pattern ordering and the symbolic factorisation per pattern; the map
 solving the installation once per squeeze and worker process). The squeeze also runs with
-SuperLU in every iteration and with the compiled LU (sealsim.structure.sparse_lu, the default
-without pypardiso); each squeeze is the best of three runs. The results must agree to 1e-9
+SuperLU in every iteration and with the compiled LU; each squeeze is the best of three runs. The results must agree to 1e-9
 (checked here too). Ratios are same-run: a busy machine slows both sides; the load average
 and the squeeze's CPU time are printed to judge a shared machine.
 
