@@ -116,7 +116,8 @@ class LinearSolver:
     without PARDISO) keeps that ordering and the symbolic factorisation per pattern and runs
     the numerical LU with the same diagonal pivot threshold, about 2.5× faster than SuperLU
     (4552 dofs of a lip seal, medians of 15 alternating runs on a shared machine: 28 ms
-    against 70 ms per factorisation); a matrix whose diagonal pivot fails the
+    against 70 ms per factorisation; 1.1-1.3× on the medium O-ring's denser factors); a
+    matrix whose diagonal pivot fails the
     threshold is given to SuperLU (counted in ``fallbacks``).
 
     Parameters

@@ -2,7 +2,8 @@ r"""Sparse LU factorisation of matrices of one sparsity pattern, with the orderi
 symbolic analysis kept between factorisations (the Newton systems of the FE solver).
 
 scipy's SuperLU orders and analyses the matrix again in every call (a lip seal's 4552 dofs:
-7 MFlop in 16 ms per factorisation; this LU is about 2.5× faster).
+7 MFlop in 16 ms per factorisation; this LU is about 2.5× faster there, 1.1-1.3× on the
+medium O-ring's 14.6 MFlop, where SuperLU's supernodes pay off).
 :class:`PatternLU` does the analysis once per pattern:
 
 1. the fill-reducing column ordering is SuperLU's own (minimum degree on the pattern of
