@@ -202,6 +202,13 @@ def test_compiled_lu_keeps_the_analysis_per_pattern_and_falls_back_on_a_bad_pivo
     x = solver(swap, np.array([1.0, 2.0, 3.0]))
     assert x.tolist() == [2.0, 1.0, 3.0] and solver.fallbacks == 1
     assert not PatternLU(swap).factorize(swap)
+    # factors dense enough for SuperLU's supernodes (a full block): left to SuperLU
+    block = sp.csr_matrix(np.eye(150) * 160.0 + RNG.random((150, 150)))  # 15000 flops/dof
+    b = RNG.standard_normal(150)
+    assert PatternLU(block).dense and not lu.dense
+    ref = spsolve(block, b)
+    assert np.abs(solver(block, b) - ref).max() <= 1e-12 * np.abs(ref).max()
+    assert solver.fallbacks == 1
 
 
 def test_viscoelastic_material_expansion_follows_the_fictive_temperature():

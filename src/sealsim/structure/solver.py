@@ -117,8 +117,10 @@ class LinearSolver:
     the numerical LU with the same diagonal pivot threshold, about 2.5× faster than SuperLU
     (4552 dofs of a lip seal, medians of 15 alternating runs on a shared machine: 28 ms
     against 70 ms per factorisation; 1.1-1.3× on the medium O-ring's denser factors); a
-    matrix whose diagonal pivot fails the
-    threshold is given to SuperLU (counted in ``fallbacks``).
+    matrix whose diagonal pivot fails the threshold is given to SuperLU (counted in
+    ``fallbacks``), and so is every matrix of a pattern whose factors are dense enough for
+    SuperLU's supernodes to be faster (:data:`~.sparse_lu.DENSE_FLOPS_PER_DOF`: the
+    anti-rolling spring's dense block).
 
     Parameters
     ----------
@@ -186,9 +188,9 @@ class LinearSolver:
                 self._analyses.popitem(last=False)
         else:
             self._analyses.move_to_end(key)
-        if lu.factorize(A):
+        if not lu.dense and lu.factorize(A):
             return lu.solve(b)
-        self.fallbacks += 1
+        self.fallbacks += not lu.dense
         return superlu_factor(A).solve(b)
 
     def _solve_pardiso(self, A, b):
