@@ -7,15 +7,20 @@
 3. Lip seal: the U-cup rod seal of examples/structure/ucup_rod.toml on its default
    ("medium", gmsh) mesh, squeeze 10 % in 5 increments, then 0 -> 10 bar in 10 increments;
    target <= 10 s wall (current implementation only).
+4. Thermo-viscoelastic O-ring (examples/structure/oring_cooling.toml, catalogue NBR with its
+   19 Prony terms, coarse mesh): installation, an hour's hold, cooling 20 -> -20 degC at
+   1 K/min in 20 increments; best of two, reference and current (the viscoelastic umat's
+   kernels and the linear solver are the difference).
 
 Each is measured in this process for the reference implementation (einsum Mooney–Rivlin
 tangent, FElupe's assembly, scipy ``spsolve`` in every Newton iteration; the map with every
 (squeeze, temperature) path solving its own installation: the former code, kept as the
 reference the tests compare against) and for the current one (compiled Mooney–Rivlin and
 assembly kernels into a cached sparsity pattern, PARDISO with the symbolic analysis kept per
-pattern if pypardiso is installed, else SuperLU with the symmetric-pattern ordering; the map
-solving the installation once per squeeze and worker process). The squeeze also runs with the
-SuperLU fallback; each squeeze is the best of three runs. The results must agree to 1e-9
+pattern if pypardiso is installed, else the compiled LU of sealsim.structure.sparse_lu, which
+keeps SuperLU's symmetric-pattern ordering and the symbolic factorisation per pattern; the map
+solving the installation once per squeeze and worker process). The squeeze also runs with
+SuperLU in every iteration and with the compiled LU; each squeeze is the best of three runs. The results must agree to 1e-9
 (checked here too). Ratios are same-run: a busy machine slows both sides; the load average
 and the squeeze's CPU time are printed to judge a shared machine.
 
@@ -114,18 +119,42 @@ def bench_lip_seal() -> tuple[float, int, float]:
     return time.perf_counter() - t0, model.ndofs, states[-1].F_N
 
 
+def bench_viscoelastic(repeat: int = 2):
+    """Best wall and CPU time of ``repeat`` runs of the viscoelastic O-ring, dofs, F_N at
+    -20 degC."""
+    import tomllib
+    from pathlib import Path
+
+    from sealsim.cases import apply_overrides
+    from sealsim.structure.run import run_case
+
+    example = Path(__file__).resolve().parents[1] / "examples/structure/oring_cooling.toml"
+    case = validate_case(StructureCase, apply_overrides(
+        tomllib.loads(example.read_text()),
+        {"load": {"temperature": ["-20 degC"], "temperature_increments": 20}}))
+    best = None
+    for _ in range(repeat):
+        t0, c0 = time.perf_counter(), time.process_time()
+        result = run_case(case)
+        run = (time.perf_counter() - t0, time.process_time() - c0)
+        best = run if best is None or run[0] < best[0] else best
+    return (*best, result.ndofs, result.states[-1].F_N)
+
+
 def main() -> None:
     load_start = os.getloadavg()[0]
     # warm-up: numba kernels (compiled once, then read from numba's disk cache), imports
-    use("auto")
+    current = use("auto")
     bench_squeeze(increments=2)
     results = {}
-    for name in ("reference", "superlu", "auto"):
+    names = ["reference", "superlu", "compiled"] + (["pardiso"] if current == "pardiso" else [])
+    for name in names:
         backend = use(name)
         wall, cpu, dofs, force, width = bench_squeeze(repeat=3)
         results[name] = (wall, force, width, cpu)
         print(f"squeeze 0 -> 20 % in 20 increments, {name} ({backend}): {wall:.2f} s "
               f"(CPU {cpu:.2f} s) on {dofs} dofs (F_N = {force:.4f} N)")
+    results["auto"] = results[current]
     ref_wall, ref_force, ref_width, ref_cpu = results["reference"]
     deviation = max(max(abs(r[1] - ref_force) / ref_force, abs(r[2] - ref_width) / ref_width)
                     for r in results.values())
@@ -139,13 +168,24 @@ def main() -> None:
     print(f"map, current ({backend}): {map_new:.1f} s")
     squeeze_new, squeeze_cpu = results["auto"][0], results["auto"][3]
     print(f"squeeze {squeeze_new:.2f} s (target <= 1.6 s), {ref_wall / squeeze_new:.2f}x the "
-          f"reference; SuperLU fallback {results['superlu'][0]:.2f} s "
-          f"({ref_wall / results['superlu'][0]:.2f}x); map {map_new:.1f} s (target <= 8 s), "
+          f"reference; SuperLU in every iteration {results['superlu'][0]:.2f} s "
+          f"({ref_wall / results['superlu'][0]:.2f}x), compiled LU "
+          f"{results['compiled'][0]:.2f} s ({ref_wall / results['compiled'][0]:.2f}x); "
+          f"map {map_new:.1f} s (target <= 8 s), "
           f"{map_ref / map_new:.2f}x; largest deviation from the reference: F_N, b "
           f"{deviation:.1e} (squeeze), F_N {map_deviation:.1e} (map)")
     lip_wall, lip_dofs, lip_force = bench_lip_seal()
     print(f"U-cup lip seal, squeeze 10 % + 0 -> 10 bar: {lip_wall:.2f} s on {lip_dofs} dofs "
           f"(F_N = {lip_force:.1f} N at 10 bar; target <= 10 s)")
+    use("reference")
+    ve_ref = bench_viscoelastic()
+    use("auto")
+    ve_new = bench_viscoelastic()
+    ve_deviation = abs(ve_new[3] - ve_ref[3]) / abs(ve_ref[3])
+    print(f"viscoelastic O-ring, hold and cooling to -20 degC: {ve_new[0]:.2f} s (CPU "
+          f"{ve_new[1]:.2f} s) on {ve_new[2]} dofs, {ve_ref[0] / ve_new[0]:.2f}x the reference's "
+          f"{ve_ref[0]:.2f} s (CPU {ve_ref[1]:.2f} s); F_N = {ve_new[3]:.4f} N, deviation "
+          f"{ve_deviation:.1e}")
     load_end = os.getloadavg()[0]
     print(f"load average (1 min) {load_start:.1f} at the start, {load_end:.1f} at the end "
           f"(2 cores: above 2 the times are those of a shared machine)")
@@ -157,10 +197,15 @@ def main() -> None:
         "squeeze_speedup": round(ref_wall / squeeze_new, 2),
         "squeeze_superlu_wall_s": round(results["superlu"][0], 3),
         "squeeze_superlu_speedup": round(ref_wall / results["superlu"][0], 2),
+        "squeeze_compiled_lu_wall_s": round(results["compiled"][0], 3),
+        "squeeze_compiled_lu_speedup": round(ref_wall / results["compiled"][0], 2),
         "map_wall_s": round(map_new, 2), "map_reference_wall_s": round(map_ref, 2),
         "map_speedup": round(map_ref / map_new, 2), "map_points": int(ds_new["F_N"].size),
-        "max_rel_deviation": max(deviation, map_deviation),
+        "max_rel_deviation": max(deviation, map_deviation, ve_deviation),
         "lip_wall_s": round(lip_wall, 3), "lip_dofs": lip_dofs,
+        "viscoelastic_wall_s": round(ve_new[0], 3),
+        "viscoelastic_reference_wall_s": round(ve_ref[0], 3),
+        "viscoelastic_speedup": round(ve_ref[0] / ve_new[0], 2),
         "load_average_start": round(load_start, 2), "load_average_end": round(load_end, 2),
     }))
 

@@ -130,7 +130,7 @@ def test_ucup_is_pressure_activated():
     assert dfdp > np.pi * 20e-3 * 1.0e-3
 
 
-@session_build("lip_fe", cost=64)
+@session_build("lip_fe", cost=30)
 def build_lip_fe(folder):
     """The shortened FE speed-cycle example (lip table at 20 and 100 °C, coarse mesh) and the
     cache folder in which its FE lip table was built."""

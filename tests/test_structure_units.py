@@ -66,10 +66,11 @@ def test_mooney_rivlin_small_strain_shear_modulus():
     assert P[0, 1, 0, 0] == pytest.approx(2 * (0.8e6 + 0.2e6) * g, rel=1e-6)
 
 
-def test_viscoelastic_tangent_and_limits():
-    # consistent tangent (finite differences, tolerance as above)
+@pytest.mark.parametrize("compiled", [False, HAVE_COMPILED_TANGENT])
+def test_viscoelastic_tangent_and_limits(compiled):
+    # consistent tangent (finite differences, tolerance as above), einsum and compiled kernels
     F = np.eye(3)[..., None, None] + 0.1 * RNG.standard_normal((3, 3, 1, 2))
-    u = ViscoelasticMooneyRivlin(0.5, 0.1, [3.0, 10.0])
+    u = ViscoelasticMooneyRivlin(0.5, 0.1, [3.0, 10.0], compiled=compiled)
     u.xi = np.array([0.2, 2.0])
     u.theta = 0.9
     sv = RNG.standard_normal((27, 1, 2))
@@ -116,11 +117,41 @@ def test_compiled_mooney_rivlin_equals_einsum_reference(c01):
     assert np.abs(out - _mr_tangent(F, 0.8e6, c01)).max() <= 1e-12 * np.abs(out).max()
 
 
-@pytest.mark.parametrize("backend", ["superlu", "pardiso"])
+@pytest.mark.skipif(not HAVE_COMPILED_TANGENT, reason="numba not installed")
+def test_compiled_viscoelastic_umat_equals_einsum_reference():
+    """The viscoelastic umat's compiled kernels (stress, state update, tangent; the tangent
+    reduced to the components of an axisymmetric field and written into FElupe's previous
+    result, as the compiled solid asks for it) against its einsum reference, 19 Prony terms
+    like the catalogue NBR: equal to round-off (1e-12 of the largest entry; measured 6e-16).
+    The reference inverts F with LAPACK, the kernel with the cofactor matrix."""
+    F = np.eye(3)[..., None, None] + 0.15 * RNG.standard_normal((3, 3, 4, 30))
+    F[2, :2] = F[:2, 2] = 0.0  # axisymmetric layout
+    betas = RNG.uniform(0.1, 30.0, 19)
+    sv = 1e6 * RNG.standard_normal((9 * 20, 4, 30))
+    ref, fast = (ViscoelasticMooneyRivlin(0.4e6, 0.1e6, betas, compiled=c) for c in (False, True))
+    for u in (ref, fast):
+        u.xi, u.theta = np.geomspace(1e-3, 50.0, 19), 1.1
+    (P, new), A = ref.gradient([F, sv]), ref.hessian([F, sv])[0]
+    out = np.full_like(P, np.nan)
+    P_fast, new_fast = fast.gradient([F, sv], out=out)
+    assert P_fast is not None and new_fast.shape == sv.shape and not np.isnan(out).any()
+    for a, b in ((P, P_fast), (new, new_fast), (A, fast.hessian([F, sv])[0])):
+        assert np.abs(b - a).max() <= 1e-12 * np.abs(a).max()
+    kept = np.zeros((3, 3), bool)
+    kept[:2, :2] = kept[2, 2] = True  # the δF components of an axisymmetric field
+    mask = kept[:, :, None, None] & kept[None, None, :, :]
+    out = np.full_like(A, np.nan)
+    reduced = fast.hessian([F, sv], out=out, reduced=True)[0]
+    assert np.abs(reduced[mask] - A[mask]).max() <= 1e-12 * np.abs(A).max()
+    assert not reduced[~mask].any() and not np.isnan(out).any()
+
+
+@pytest.mark.parametrize("backend", ["superlu", "pardiso", "compiled"])
 def test_linear_solvers_reuse_the_analysis_and_match_spsolve(backend):
     """Non-symmetric matrices of one sparsity pattern (a stiffness-like 2-d Laplacian plus a
     small skew part, like the follower pressure): every backend gives scipy's ``spsolve``
-    solution to round-off (1e-12), and PARDISO analyses the pattern once."""
+    solution to round-off (1e-12), and PARDISO and the compiled LU analyse the pattern
+    once."""
     import scipy.sparse as sp
 
     from sealsim.structure.solver import LinearSolver, _pypardiso
@@ -138,8 +169,46 @@ def test_linear_solvers_reuse_the_analysis_and_match_spsolve(backend):
         x = solver(A, b)
         ref = spsolve(A, b)
         assert np.abs(x - ref).max() <= 1e-12 * np.abs(ref).max()
-    assert solver.analyses == (1 if backend == "pardiso" else 0)
+    assert solver.analyses == (0 if backend == "superlu" else 1)
     solver.release()
+
+
+def test_compiled_lu_keeps_the_analysis_per_pattern_and_falls_back_on_a_bad_pivot():
+    """The compiled LU (sealsim.structure.sparse_lu) against scipy's ``spsolve`` (1e-12 of
+    the solution, round-off): its fill equals SuperLU's with the same ordering (same symbolic
+    factorisation), a second pattern gets its own analysis and the first is reused when it
+    comes back; a matrix with a zero diagonal (a pivot no diagonal-pivoting LU can take) is
+    solved by SuperLU with partial pivoting instead, and counted."""
+    import scipy.sparse as sp
+
+    from sealsim.structure.solver import LinearSolver
+    from sealsim.structure.sparse_lu import PatternLU, superlu_factor
+
+    n = 20
+    lap = sp.diags([-1.0, 2.0, -1.0], [-1, 0, 1], shape=(n, n))
+    base = (sp.kron(lap, sp.eye(n)) + sp.kron(sp.eye(n), lap)
+            + sp.diags([0.05, -0.05], [-1, 1], shape=(n * n, n * n))).tocsr()
+    lu = PatternLU(base)
+    superlu = superlu_factor(base)
+    assert lu.fill == superlu.L.nnz + superlu.U.nnz - n * n
+    other = (base + sp.diags([0.3], [7], shape=(n * n, n * n))).tocsr()  # a new entry
+    solver = LinearSolver("compiled")
+    for A in (base, other, base * 2.0):
+        b = RNG.standard_normal(n * n)
+        ref = spsolve(A, b)
+        assert np.abs(solver(A, b) - ref).max() <= 1e-12 * np.abs(ref).max()
+    assert solver.analyses == 2 and solver.fallbacks == 0
+    swap = sp.csr_matrix(np.array([[0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]))
+    x = solver(swap, np.array([1.0, 2.0, 3.0]))
+    assert x.tolist() == [2.0, 1.0, 3.0] and solver.fallbacks == 1
+    assert not PatternLU(swap).factorize(swap)
+    # factors dense enough for SuperLU's supernodes (a full block): left to SuperLU
+    block = sp.csr_matrix(np.eye(150) * 160.0 + RNG.random((150, 150)))  # 15000 flops/dof
+    b = RNG.standard_normal(150)
+    assert PatternLU(block).dense and not lu.dense
+    ref = spsolve(block, b)
+    assert np.abs(solver(block, b) - ref).max() <= 1e-12 * np.abs(ref).max()
+    assert solver.fallbacks == 1
 
 
 def test_viscoelastic_material_expansion_follows_the_fictive_temperature():

@@ -245,7 +245,7 @@ def test_speed_ups_do_not_change_results():
     steps = [LoadStep("squeeze", squeeze=0.2, increments=1, record="end"),
              LoadStep("temperature", temperature=330.0, increments=1, record="end"),
              LoadStep("pressure", pressure=10e5, increments=2, record="all")]
-    backends = ["superlu"] + (["pardiso"] if _pypardiso() is not None else [])
+    backends = ["superlu", "compiled"] + (["pardiso"] if _pypardiso() is not None else [])
     runs = {}
     for backend in ["reference", *backends]:
         reference = backend == "reference"

@@ -310,6 +310,79 @@ def _mr_tangent_points(F, c10, c01, out, reduced=False):
     return out
 
 
+def _ve_history(statevars, decay, half, H, S, new, update):
+    """H = Σ_i e^{-ξ_i} Q_i^n − β_i e^{-ξ_i/2} S^n (3, 3, points) of the state variables
+    (n + 1, 3, 3, points): S^n, Q_1^n ... Q_n^n; with ``update`` also the branch stresses
+    Q_i^{n+1} = e^{-ξ_i} Q_i^n + β_i e^{-ξ_i/2} (S − S^n) of the new isochoric stress S into
+    ``new[1:]`` (one pass over the state; the loops run along the points: contiguous)."""
+    npoints = statevars.shape[3]
+    for i in range(3):
+        for j in range(3):
+            for q in range(npoints):
+                H[i, j, q] = 0.0
+            for t in range(decay.shape[0]):
+                d = decay[t]
+                e = half[t]
+                for q in range(npoints):
+                    q_old = statevars[t + 1, i, j, q]
+                    s_old = statevars[0, i, j, q]
+                    H[i, j, q] += d * q_old - e * s_old
+                    if update:
+                        new[t + 1, i, j, q] = d * q_old + e * (S[i, j, q] - s_old)
+    return H
+
+
+def _ve_stress_points(F, P_inf, statevars, decay, half, gamma, P, new):
+    """Viscoelastic stress P = γ P_inf + F H and the new state variables (n + 1, 3, 3,
+    points) of F (3, 3, points) and the equilibrium stress P_inf (see
+    :meth:`ViscoelasticMooneyRivlin.gradient`)."""
+    npoints = F.shape[2]
+    Fp = np.empty((3, 3))
+    C = np.empty((3, 3))
+    b = np.empty((3, 3))
+    iFT = np.empty((3, 3))
+    S = new[0]
+    for q in range(npoints):  # S^{n+1} = F^-1 P_inf
+        for i in range(3):
+            for j in range(3):
+                Fp[i, j] = F[i, j, q]
+        _point_kinematics(Fp, C, b, iFT)
+        for i in range(3):
+            for j in range(3):
+                S[i, j, q] = (iFT[0, i] * P_inf[0, j, q] + iFT[1, i] * P_inf[1, j, q]
+                              + iFT[2, i] * P_inf[2, j, q])
+    H = _ve_history(statevars, decay, half, np.empty((3, 3, npoints)), S, new, True)
+    for i in range(3):
+        for j in range(3):
+            for q in range(npoints):
+                P[i, j, q] = gamma * P_inf[i, j, q] + (F[i, 0, q] * H[0, j, q]
+                                                       + F[i, 1, q] * H[1, j, q]
+                                                       + F[i, 2, q] * H[2, j, q])
+    return P, new
+
+
+def _ve_tangent_points(A, statevars, decay, half, gamma, reduced):
+    """Viscoelastic tangent γ A_inf + δ_ik H_LJ (written into A_inf, (3, 3, 3, 3, points));
+    ``reduced``: only the components :func:`mr_tangent` keeps (the others stay zero)."""
+    npoints = A.shape[4]
+    H = np.empty((3, 3, npoints))
+    _ve_history(statevars, decay, half, H, H, statevars, False)
+    for i in range(3):
+        for J in range(3):
+            for k in range(3):
+                for L in range(3):
+                    if reduced and not (((i < 2 and J < 2) or (i == 2 and J == 2))
+                                        and ((k < 2 and L < 2) or (k == 2 and L == 2))):
+                        continue  # zero already
+                    if i == k:
+                        for q in range(npoints):
+                            A[i, J, k, L, q] = gamma * A[i, J, k, L, q] + H[L, J, q]
+                    else:
+                        for q in range(npoints):
+                            A[i, J, k, L, q] = gamma * A[i, J, k, L, q]
+    return A
+
+
 HAVE_COMPILED_TANGENT = numba is not None
 #: Use the compiled kernels when a umat is not told otherwise: numba installed and the
 #: environment variable ``SEALSIM_FE_COMPILED`` not "0" (benchmarks set False for their
@@ -320,6 +393,9 @@ if HAVE_COMPILED_TANGENT:  # pragma: no branch
     _point_FC = numba.njit(cache=True)(_point_FC)
     _mr_stress_points = numba.njit(cache=True)(_mr_stress_points)
     _mr_tangent_points = numba.njit(cache=True)(_mr_tangent_points)
+    _ve_history = numba.njit(cache=True)(_ve_history)
+    _ve_stress_points = numba.njit(cache=True)(_ve_stress_points)
+    _ve_tangent_points = numba.njit(cache=True)(_ve_tangent_points)
 
 
 def _flat_out(out, shape):
@@ -441,9 +517,28 @@ class ViscoelasticMooneyRivlin:
         gamma = self.theta + float(np.sum(self.betas * np.exp(-0.5 * self.xi)))
         return s_old, q_old, decay, half, H, gamma
 
-    def gradient(self, x):
+    def _compiled(self):
+        return USE_COMPILED if self.compiled is None else self.compiled
+
+    def _factors(self):
+        """exp(-ξ_i), β_i exp(-ξ_i/2) and γ = θ + Σ β_i exp(-ξ_i/2) of the increment."""
+        decay = np.exp(-self.xi)
+        half = self.betas * np.exp(-0.5 * self.xi)
+        return decay, half, self.theta + float(np.sum(half))
+
+    def gradient(self, x, out=None):
         F, statevars = x[0], x[-1]
         shape = F.shape[2:]
+        if self._compiled():
+            flat = np.ascontiguousarray(F, dtype=float).reshape(3, 3, -1)
+            n = flat.shape[2]
+            sv = np.ascontiguousarray(statevars, dtype=float).reshape(self.nterms + 1, 3, 3, n)
+            P_inf = _mr_stress_points(flat, self.c10, self.c01, np.empty((3, 3, n)))
+            P = _flat_out(out if len(shape) == 2 else None, (3, 3, n))
+            new = np.empty_like(sv)
+            decay, half, gamma = self._factors()
+            _ve_stress_points(flat, P_inf, sv, decay, half, gamma, P, new)
+            return [P.reshape(3, 3, *shape), new.reshape(statevars.shape)]
         P_inf = mr_stress(F, self.c10, self.c01, self.compiled)
         iF = np.moveaxis(np.linalg.inv(np.moveaxis(F, (0, 1), (-2, -1))), (-2, -1), (0, 1))
         S_new = np.einsum("iK...,Kj...->ij...", iF, P_inf)
@@ -453,9 +548,17 @@ class ViscoelasticMooneyRivlin:
         new = np.concatenate([S_new[None], q_new], axis=0).reshape(statevars.shape)
         return [P, new]
 
-    def hessian(self, x):
+    def hessian(self, x, out=None, reduced=False):
+        """dP/dF; ``reduced`` (compiled only): the components of :func:`mr_tangent`'s."""
         F, statevars = x[0], x[-1]
         shape = F.shape[2:]
+        if self._compiled():
+            A = mr_tangent(F, self.c10, self.c01, True, out, reduced)
+            n = A.reshape(3, 3, 3, 3, -1).shape[4]
+            sv = np.ascontiguousarray(statevars, dtype=float).reshape(self.nterms + 1, 3, 3, n)
+            decay, half, gamma = self._factors()
+            _ve_tangent_points(A.reshape(3, 3, 3, 3, n), sv, decay, half, gamma, bool(reduced))
+            return [A]
         _, _, _, _, H, gamma = self._history(statevars, shape)
         A = gamma * mr_tangent(F, self.c10, self.c01, self.compiled)
         A = A + np.einsum("ik,LJ...->iJkL...", np.eye(3), H)
