@@ -12,11 +12,20 @@ import numpy as np
 import pytest
 from pydantic import TypeAdapter
 
-from sealsim.friction import ContactInputs, LuGre, Theta
+from sealsim.friction import ContactInputs, LuGre, Theta, kernels
 from sealsim.friction.bench import profile_type, simulate_mass, summarize
-from sealsim.friction.compiled import LAW_CODES, NO_TABLE, law_parameters, law_rates, law_step
+from sealsim.friction.compiled import (
+    LAW_CODES,
+    NO_TABLE,
+    TH_NU_REF,
+    _theta_gamma,
+    law_parameters,
+    law_rates,
+    law_step,
+)
 from sealsim.friction.hybrid import compiled_law
 from sealsim.friction.profiles import profile_integral, profile_value
+from sealsim.properties.oils import walther_viscosity
 
 V = TypeAdapter(profile_type("velocity"))
 DWELL = V.validate_python({"kind": "piecewise", "times": [0, 2, 2.001, 3, 3.001],
@@ -157,3 +166,27 @@ def test_compiled_stepper_carries_the_contact_table(contact_seal):
     np.testing.assert_array_equal(res.stuck, ref.stuck)
     np.testing.assert_allclose(res.force, ref.force, rtol=1e-9, atol=1e-9)
     np.testing.assert_allclose(res.position, ref.position, rtol=1e-9, atol=1e-12)
+
+
+def test_theta_viscosity_at_the_reference_temperature_is_a_parameter():
+    # γ(T) = γ·ν(T)/ν(T_ref) is evaluated at every right-hand side of a heated seal: ν(T_ref)
+    # (two powers and a logarithm, half of the ASTM D341 work) is a constant of the law, in its
+    # parameter vector (before: evaluated again at every call, 100 ns of a 0.8 µs cylinder
+    # right-hand side with two Θ seals).  The same kernel computes it: γ(T) is the number of
+    # the ratio kernel bit for bit, and ν(T_ref) the base oil's viscosity of the oil module.
+    law = Theta.from_parameter_set("pneumatic_demo")
+    par = law_parameters(law)
+    a, b = law.walther
+    assert b > 0.0
+    assert par[TH_NU_REF] == pytest.approx(
+        float(walther_viscosity(law.params.reference_temperature, a, b)) * 1e6, rel=1e-12)
+    for t in (253.15, par[9], 330.0, 393.15):
+        assert _theta_gamma(par, t) == par[4] * kernels.walther_viscosity_ratio(
+            t, par[9], par[10], par[11])
+    assert _theta_gamma(par, 330.0) == pytest.approx(
+        float(law.gamma(ContactInputs(temperature=330.0))), rel=1e-12)
+    # without base-oil data γ is constant and the slot is 0
+    plain = Theta.from_parameter_set("pneumatic_demo", base_oil_nu40=None, base_oil_nu100=None)
+    par = law_parameters(plain)
+    assert par[11] == 0.0 and par[TH_NU_REF] == 0.0
+    assert _theta_gamma(par, 330.0) == plain.params.gamma

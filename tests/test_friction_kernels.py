@@ -124,6 +124,15 @@ def test_walther_kernel_is_astm_d341_of_the_oil_module():
                                rtol=1e-12)
 
 
+def test_walther_viscosity_kernel_is_the_oil_modules_in_mm2_per_s():
+    a, b = walther_constants(313.15, 110e-6, 373.15, 11e-6)
+    for t in (253.15, 298.15, 313.15, 373.15, 413.15):
+        assert k.walther_viscosity(t, a, b) == pytest.approx(
+            float(walther_viscosity(t, a, b)) * 1e6, rel=1e-12)
+    assert k.walther_viscosity(313.15, a, b) == pytest.approx(110.0, rel=1e-12)  # the points
+    assert k.walther_viscosity(373.15, a, b) == pytest.approx(11.0, rel=1e-12)   # it is fitted to
+
+
 def test_demo_gamma_follows_the_cited_base_oil():
     law = Theta.from_parameter_set("pneumatic_demo")
     assert "LGMT 2" in parameter_set_source("theta", "pneumatic_demo")

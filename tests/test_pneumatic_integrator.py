@@ -185,3 +185,54 @@ def test_velocity_column_is_the_jacobians(heating):
     assert np.array_equal(column[:, 1], whole[:, 1])
     assert np.isnan(np.delete(column, 1, axis=1)).all()      # no other column touched
     assert rate == whole[1, 1]
+
+
+def test_velocity_column_takes_no_loads_of_another_state():
+    # after a failed Newton iteration the BDF renews ∂f/∂v at the predicted state y while the
+    # last evaluation was at the last iterate, with other pressures and so other contact
+    # loads: the column must still be the Jacobian's at y (it took the iterate's loads, and
+    # its difference quotient was the iterate's change of the friction force over h_v)
+    c = case(1.0)
+    system = PneumaticSystem(c, build_seals(c, EXAMPLES))
+    y = system.initial_state()
+    y[0], y[1] = 0.03, 2e-6
+    iterate = y.copy()
+    iterate[4] *= 1.001                      # 0.1 % more internal energy: another p1 and Δp
+    n, ndyn = system.n_states, system.n_dynamic
+    scale = system.tolerances(1.0)[:ndyn].copy()
+    diag = np.zeros((system.n_diag, 1))
+    f0, whole, column = np.zeros(n), np.zeros((n, ndyn)), np.zeros((n, ndyn))
+    rhs.jacobian(0.5, y, rhs.FORWARD, system.tables, scale, np.zeros(n), np.zeros(n), f0,
+                 diag, whole)
+    rhs.derivatives(0.5, iterate, rhs.FORWARD, system.tables, np.zeros(n), diag)
+    rate = rhs.velocity_column_at(0.5, y, f0, rhs.FORWARD, system.tables, scale, np.zeros(n),
+                                  np.zeros(n), diag, column)
+    assert np.array_equal(column[:, 1], whole[:, 1])
+    assert rate == whole[1, 1]
+
+
+def test_a_seal_without_a_thermal_node_has_a_zero_temperature_column():
+    # seal heating: the wiper (no cord diameter) is no thermal node; its temperature slot is
+    # read by nothing, and its Jacobian column is 0 exactly -- the forward difference of the
+    # full evaluation would give 0 as well, at the cost of one right-hand side
+    c = case(1.0).model_copy(update={"thermal": ThermalModel()})
+    system = PneumaticSystem(c, build_seals(c, EXAMPLES))
+    heated = system.tables[3][:, rhs.SI_HEATED]
+    assert list(heated) == [1, 1, 0]
+    y = system.initial_state()
+    y[0], y[1] = 0.03, 0.2
+    n, ndyn = system.n_states, system.n_dynamic
+    scale = system.tolerances(1.0)[:ndyn].copy()
+    jac = np.full((n, ndyn), np.nan)
+    rhs.jacobian(0.5, y, rhs.FORWARD, system.tables, scale, np.zeros(n), np.zeros(n),
+                 np.zeros(n), np.zeros((system.n_diag, 1)), jac)
+    wiper = system.temperature_offset + 2
+    assert (jac[:, wiper] == 0.0).all()
+    # the forward difference itself: the same zeros
+    h = 1.5e-8 * max(abs(y[wiper]), scale[wiper])
+    shifted = y.copy()
+    shifted[wiper] += h
+    f0, f1 = system.evaluate(0.5, y, rhs.FORWARD).copy(), system.evaluate(0.5, shifted,
+                                                                           rhs.FORWARD)
+    assert np.array_equal(f1, f0)
+    assert np.isfinite(jac).all() and (jac[:, system.temperature_offset] != 0.0).any()

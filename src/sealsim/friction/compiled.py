@@ -45,7 +45,7 @@ STEP_OK, STEP_NOT_CONVERGED = 0, 1
 NO_TABLE = (np.zeros(4, dtype=np.int64), np.zeros(1))
 #: columns of the Θ law's parameters: steady curve from the contact table (1/0), μ_b, the
 #: dwell drop d, the circumference π·D [m]
-TH_CONTACT, TH_MU_B, TH_DROP, TH_CIRCUMFERENCE = 12, 13, 14, 15
+TH_CONTACT, TH_MU_B, TH_DROP, TH_CIRCUMFERENCE, TH_NU_REF = 12, 13, 14, 15, 16
 
 
 def law_parameters(law, sliding_diameter: float = 0.0) -> np.ndarray:
@@ -58,8 +58,12 @@ def law_parameters(law, sliding_diameter: float = 0.0) -> np.ndarray:
     * gms: N, C, σ2, F_C, F_S, v_S, δ, k_1..k_N, α_1..α_N;
     * theta: τ, α, f_a, f_b, γ, F_ref, n, σ0 (0 without bristles), σ1, T_ref, A, B (ASTM D341
       constants of the base oil, B = 0: γ constant), then 1 if the steady curve comes from the
-      seal's contact table (else 0), μ_b, the dwell drop d and the circumference π·D of the
-      ``sliding_diameter`` D [m] (the table is per unit circumference).
+      seal's contact table (else 0), μ_b, the dwell drop d, the circumference π·D of the
+      ``sliding_diameter`` D [m] (the table is per unit circumference) and the base oil's
+      viscosity ν(T_ref) [mm²/s] (ASTM D341, 0 without base-oil data): γ(T) = γ·ν(T)/ν(T_ref)
+      at every evaluation of a seal whose temperature changes, with ν(T_ref) computed once
+      here (by the same compiled kernel: the same number as before, two powers and a
+      logarithm less per evaluation).
 
     Examples
     --------
@@ -88,7 +92,8 @@ def law_parameters(law, sliding_diameter: float = 0.0) -> np.ndarray:
                   p.reference_normal_force, p.load_exponent, p.bristle_stiffness or 0.0,
                   p.bristle_damping, p.reference_temperature, a, b,
                   1.0 if p.steady == "contact" else 0.0, p.boundary_friction, p.dwell_drop,
-                  math.pi * sliding_diameter]
+                  math.pi * sliding_diameter,
+                  fk.walther_viscosity(p.reference_temperature, a, b) if b != 0.0 else 0.0]
     else:  # pragma: no cover - every law of sealsim.friction is listed
         raise InputError(f"no compiled form of the {name!r} law")
     return np.asarray(values, dtype=float)
@@ -186,7 +191,7 @@ def law_rates(law, par, z, off, vv, fn, b, pa, pb, temp, dy, col, frow, fdata, d
 def _theta_gamma(par, temp):
     """γ(T) of the Θ law (γ_ref without base-oil data)."""
     if par[11] != 0.0:                          # γ(T) from the base oil (ASTM D341)
-        return par[4] * fk.walther_viscosity_ratio(temp, par[9], par[10], par[11])
+        return par[4] * (fk.walther_viscosity(temp, par[10], par[11]) / par[TH_NU_REF])
     return par[4]
 
 

@@ -46,6 +46,7 @@ kernel (arguments)                                 returns
 ``theta_contact_level(th, v, fss, ...)``           level of the Θ law on a contact table:
                                                    max(fss + d·fb·(Θ_ss − Θ), fv), at rest
                                                    fb·(1 − d·Θ)
+``walther_viscosity(t, wa, wb)``                   ν(T) [mm²/s], ASTM D341 (Walther)
 ``walther_viscosity_ratio(t, tref, wa, wb)``       ν(T)/ν(T_ref), ASTM D341 (Walther)
 =================================================  ===============================================
 
@@ -326,15 +327,20 @@ def theta_contact_level(th, v, fss, fb, d, thss, fv):
 
 
 @kernel
-def walther_viscosity_ratio(t, tref, wa, wb):
-    """ν(T)/ν(T_ref) [-] with the ASTM D341 (Walther) equation
-    log10 log10(ν + 0.7) = A − B·log10 T (ν in mm²/s, T in K): wa = A, wb = B.
+def walther_viscosity(t, wa, wb):
+    """ν(T) [mm²/s] with the ASTM D341 (Walther) equation log10 log10(ν + 0.7) = A − B·log10 T
+    (T in K): wa = A, wb = B.
 
-    The same equation as :func:`sealsim.properties.oils.walther_viscosity` (a test checks
-    that they agree), in scalar compiled form for the Θ law's viscous coefficient γ(T)."""
-    nu = 10.0 ** (10.0 ** (wa - wb * math.log10(t))) - 0.7
-    nu_ref = 10.0 ** (10.0 ** (wa - wb * math.log10(tref))) - 0.7
-    return nu / nu_ref
+    The same equation as :func:`sealsim.properties.oils.walther_viscosity` (which returns
+    m²/s; a test checks that they agree), in scalar compiled form."""
+    return 10.0 ** (10.0 ** (wa - wb * math.log10(t))) - 0.7
+
+
+@kernel
+def walther_viscosity_ratio(t, tref, wa, wb):
+    """ν(T)/ν(T_ref) [-] with the ASTM D341 (Walther) equation (:func:`walther_viscosity`),
+    for the Θ law's viscous coefficient γ(T)."""
+    return walther_viscosity(t, wa, wb) / walther_viscosity(tref, wa, wb)
 
 
 # --------------------------------------------------------------------------------------------

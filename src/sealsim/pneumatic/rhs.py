@@ -538,7 +538,8 @@ def jacobian_at(t, y, f0, mode, tables, scale, work_y, work_dy, diag, jac):
     states, the tube and rod temperatures) are evaluated first, the first of them looks the
     loads up, the rest take them from it (:data:`RATES_KEPT_LOADS`) -- the same numbers, a
     map lookup per seal less for half the columns (cylinder_32_fe.toml: 5.0-5.2 µs per
-    Jacobian instead of 5.8-6.2 µs)."""
+    Jacobian instead of 5.8-6.2 µs).  The temperature of a seal that is no thermal node is
+    read by nothing: its column is 0, not evaluated."""
     ndyn = scale.shape[0]
     zero = _plain(y)
     c = tables[0]
@@ -546,10 +547,17 @@ def jacobian_at(t, y, f0, mode, tables, scale, work_y, work_dy, diag, jac):
     nseal = tables[3].shape[0]
     shifted, rates = work_y[:, None], work_dy[:, None]      # column views, made once
     looked_up = False
+    seal_int = tables[3]
     for sweep in range(2):              # the columns without, then those with new loads
         for j in range(ndyn):
             new_loads = j == 0 or j == 4 or j == 5 or toff <= j < toff + nseal
             if new_loads != (sweep == 1):
+                continue
+            if toff <= j < toff + nseal and seal_int[j - toff, SI_HEATED] == 0:
+                # the temperature slot of a seal that is no thermal node (no cord diameter:
+                # seal_heating) is read by nothing: its column is 0, without an evaluation
+                for i in range(y.shape[0]):
+                    jac[i, j] = 0.0
                 continue
             level = RATES if new_loads or not looked_up else RATES_KEPT_LOADS
             looked_up = True
@@ -574,12 +582,16 @@ def _difference_column(t, y, f0, j, mode, tables, scale, work_y, work_dy, shifte
 
 @njit(cache=True)
 def velocity_column_at(t, y, f0, mode, tables, scale, work_y, work_dy, diag, jac):
-    """Column 1 of ∂f/∂y, ∂f/∂v, as :func:`jacobian_at` computes it, from f0 = f(t, y) --
-    the evaluation just before at (t, y), whose contact loads it keeps (v changes no Δp and
-    no seal temperature).  Returns ∂(dv/dt)/∂v [1/s]."""
+    """Column 1 of ∂f/∂y, ∂f/∂v, as :func:`jacobian_at` computes it, from f0 = f(t, y).
+    Returns ∂(dv/dt)/∂v [1/s].
+
+    The shifted evaluation looks the contact loads up at (t, y) itself, as the first column
+    of :func:`jacobian_at` does: the evaluation before it need not have been at y (the BDF
+    renews the column at the predicted state after a failed Newton iteration, whose last
+    evaluation was at the last iterate, with other pressures)."""
     zero = _plain(y)
     _difference_column(t, y, f0, 1 + zero, mode + zero, tables, scale, work_y, work_dy,
-                       work_y[:, None], work_dy[:, None], diag, jac, zero + RATES_KEPT_LOADS)
+                       work_y[:, None], work_dy[:, None], diag, jac, zero + RATES)
     return jac[1, 1]
 
 

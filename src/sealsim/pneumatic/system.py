@@ -42,7 +42,7 @@ from sealsim.units import ZERO_CELSIUS_K
 
 __all__ = ["PneumaticSystem", "law_parameters", "stick_tolerance"]
 
-_LAW_WIDTH = 16          # columns of law_par (GMS needs 7 + 2·N)
+_LAW_WIDTH = 17          # columns of law_par (Θ: 17; GMS needs 7 + 2·N)
 
 
 def stick_tolerance(breakaway_force):

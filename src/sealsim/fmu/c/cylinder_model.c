@@ -60,10 +60,9 @@ static double theta_steady(double v, double tau, double al, double fn, double fr
     return 0.0;
 }
 
-static double walther_viscosity_ratio(double t, double tref, double wa, double wb) {
-    double nu = pow(10.0, pow(10.0, wa - wb * log10(t))) - 0.7;
-    double nu_ref = pow(10.0, pow(10.0, wa - wb * log10(tref))) - 0.7;
-    return nu / nu_ref;
+/* kernels.walther_viscosity: nu(T) [mm2/s] (ASTM D341); nu(T_ref) is par[16] of the law */
+static double walther_viscosity(double t, double wa, double wb) {
+    return pow(10.0, pow(10.0, wa - wb * log10(t))) - 0.7;
 }
 
 static double gms_element_rate(double z, double v, double k, double frac, double cc,
@@ -111,7 +110,7 @@ static double law_rates(long law, const double *par, const double *z, double vv,
         int contact = par[12] > 0.0;
         double gamma = par[4];
         if (contact) gamma = 0.0;           /* the table holds the viscous part */
-        else if (par[11] != 0.0) gamma *= walther_viscosity_ratio(temp, par[9], par[10], par[11]);
+        else if (par[11] != 0.0) gamma *= walther_viscosity(temp, par[10], par[11]) / par[16];
         double th = z[0], level;
         fn = fmax(fn, 1e-9);
         if (contact) {                      /* compiled._theta_level on the contact table */
