@@ -2,7 +2,7 @@
 
 import pytest
 
-from session_builds import prebuild
+from session_builds import await_builds, prebuild
 
 
 def pytest_itemcollected(item):
@@ -36,10 +36,18 @@ def pytest_configure(config):
 
 @pytest.fixture(scope="session", autouse=True)
 def _session_builds(request, tmp_path_factory, worker_id):
-    """Under pytest-xdist, make the expensive builds the selected tests need once, spread over
-    the workers, before the first test (without xdist each fixture builds on first use)."""
+    """Under pytest-xdist, start the expensive builds the selected tests need, once, spread
+    over the workers (without xdist each fixture builds on first use)."""
     if worker_id != "master":
         prebuild(tmp_path_factory, worker_id, {item.path for item in request.session.items})
+
+
+@pytest.fixture(scope="module", autouse=True)
+def _builds_of_this_module(request, tmp_path_factory, worker_id):
+    """Under pytest-xdist, hold a test module (before its module fixtures) until the builds of
+    its file are complete: a worker runs other tests while the other worker still builds."""
+    if worker_id != "master":
+        await_builds(tmp_path_factory, worker_id, request.path)
 
 
 @pytest.fixture

@@ -5,9 +5,10 @@ to both workers at once, so each worker built its own copy (the FE lip table abo
 cold numba compile of the cylinder model about 60 s, FMUs 10-60 s), or one worker waited idle
 on a lock while the other built. A build registered here with ``@session_build(name)`` is
 made once per session: tests/conftest.py starts the builds the selected tests need when the
-session starts, spread over the workers (each worker takes a build nobody has started; the
-workers then wait for the rest), and the fixtures read the results back with
-:func:`built`. Without xdist a fixture builds on first use.
+session starts, spread over the workers (each worker takes the builds nobody has started, then
+runs tests; a test module waits for the builds of its file, :func:`await_builds`), and the
+fixtures read the results back with :func:`built`. Without xdist a fixture builds on first
+use.
 
 A build is ``build(folder) -> JSON-able result`` (paths become strings); it writes its files
 into ``folder``, which the session keeps until it ends.
@@ -110,25 +111,46 @@ def _done(tmp_path_factory, name: str) -> bool:
     return name in _results or (_shared_root(tmp_path_factory) / f"{name}.json").exists()
 
 
+def builds_for(test_file) -> list[str]:
+    """The builds the tests of ``test_file`` use (their ``used_by`` patterns), the costliest
+    first."""
+    name = Path(test_file).name
+    return [b.name for b in sorted(BUILDS.values(), key=lambda b: -b.cost)
+            if any(fnmatch.fnmatch(name, pattern) for pattern in b.used_by)]
+
+
 def prebuild(tmp_path_factory, worker_id: str, test_files) -> None:
-    """Make the builds the tests in ``test_files`` need, shared among the xdist workers: first
-    those no other worker has started (each worker starts at another build), then wait for the
-    rest. A build that fails is left to its fixture, which builds again and reports it."""
-    names = {Path(f).name for f in test_files}
-    wanted = [b.name for b in sorted(BUILDS.values(), key=lambda b: -b.cost)
-              if any(fnmatch.fnmatch(n, pattern) for n in names for pattern in b.used_by)]
+    """Start the builds the tests in ``test_files`` need, shared among the xdist workers: each
+    worker starts at another build and takes every build nobody has started whose needs are
+    complete, until none is left; then it runs tests (:func:`await_builds` holds a test until
+    the builds of its file are complete). A build that fails is left to its fixture, which
+    builds again and reports it."""
+    wanted = list(dict.fromkeys(n for f in sorted(map(str, test_files)) for n in builds_for(f)))
+    wanted.sort(key=lambda n: -BUILDS[n].cost)
     if not wanted:
         return
     index = int(worker_id[2:]) if worker_id[2:].isdigit() else 0
     start = index % len(wanted)
-    order = wanted[start:] + wanted[:start]
-    for name in order:           # builds nobody has started whose needs are complete
-        if all(_done(tmp_path_factory, n) for n in BUILDS[name].needs):
-            with contextlib.suppress(Exception):
-                built(tmp_path_factory, worker_id, name, wait=False)
-    for name in order:           # then wait for the others' (or make what is left)
-        with contextlib.suppress(Exception):
-            built(tmp_path_factory, worker_id, name)
+    pending = wanted[start:] + wanted[:start]
+    started = True
+    while started:               # builds nobody has started whose needs are complete
+        started = False
+        for name in list(pending):
+            if all(_done(tmp_path_factory, n) for n in BUILDS[name].needs):
+                with contextlib.suppress(Exception):
+                    built(tmp_path_factory, worker_id, name, wait=False)
+                pending.remove(name)      # made here, or being made by another worker
+                started = True
+
+
+def await_builds(tmp_path_factory, worker_id: str, test_file) -> None:
+    """Wait for the builds of ``test_file`` (made by another worker, or here if nobody has
+    started one), and for the cylinder's numba compile in any case: a test that runs the
+    cylinder while the compile is under way would compile it again (about 60 s)."""
+    for name in dict.fromkeys(("pneumatic_numba", *builds_for(test_file))):
+        if name in BUILDS:
+            with contextlib.suppress(Exception):  # a failed build: the fixture reports it
+                built(tmp_path_factory, worker_id, name)
 
 
 @session_build("pneumatic_numba", cost=60, used_by=(

@@ -161,6 +161,21 @@ def test_breakaways_start_forwards(example, tmp_path):
         assert backward_breakaways(segments) == [], method
 
 
+def _jacobian_and_velocity_column(system, y, last_evaluated):
+    """The whole Jacobian at y, and the velocity's column renewed at y (NaN elsewhere) and its
+    growth rate after the right-hand side was last evaluated at ``last_evaluated``."""
+    n, ndyn = system.n_states, system.n_dynamic
+    scale = system.tolerances(1.0)[:ndyn].copy()
+    diag = np.zeros((system.n_diag, 1))
+    f0, whole, column = np.zeros(n), np.zeros((n, ndyn)), np.full((n, ndyn), np.nan)
+    rhs.jacobian(0.5, y, rhs.FORWARD, system.tables, scale, np.zeros(n), np.zeros(n), f0,
+                 diag, whole)
+    rhs.derivatives(0.5, last_evaluated, rhs.FORWARD, system.tables, np.zeros(n), diag)
+    rate = rhs.velocity_column_at(0.5, y, f0, rhs.FORWARD, system.tables, scale, np.zeros(n),
+                                  np.zeros(n), diag, column)
+    return whole, column, rate
+
+
 @pytest.mark.parametrize("heating", [False, True])
 def test_velocity_column_is_the_jacobians(heating):
     # the BDF's growth limit renews ∂f/∂v alone in a break-away (integrate._renew): the
@@ -173,15 +188,7 @@ def test_velocity_column_is_the_jacobians(heating):
     system = PneumaticSystem(c, build_seals(c, EXAMPLES))
     y = system.initial_state()
     y[0], y[1] = 0.03, 2e-6
-    n, ndyn = system.n_states, system.n_dynamic
-    scale = system.tolerances(1.0)[:ndyn].copy()
-    diag = np.zeros((system.n_diag, 1))
-    f0, whole, column = np.zeros(n), np.zeros((n, ndyn)), np.full((n, ndyn), np.nan)
-    rhs.jacobian(0.5, y, rhs.FORWARD, system.tables, scale, np.zeros(n), np.zeros(n), f0,
-                 diag, whole)
-    rhs.derivatives(0.5, y, rhs.FORWARD, system.tables, np.zeros(n), diag)
-    rate = rhs.velocity_column_at(0.5, y, f0, rhs.FORWARD, system.tables, scale, np.zeros(n),
-                                  np.zeros(n), diag, column)
+    whole, column, rate = _jacobian_and_velocity_column(system, y, last_evaluated=y)
     assert np.array_equal(column[:, 1], whole[:, 1])
     assert np.isnan(np.delete(column, 1, axis=1)).all()      # no other column touched
     assert rate == whole[1, 1]
@@ -198,15 +205,7 @@ def test_velocity_column_takes_no_loads_of_another_state():
     y[0], y[1] = 0.03, 2e-6
     iterate = y.copy()
     iterate[4] *= 1.001                      # 0.1 % more internal energy: another p1 and Δp
-    n, ndyn = system.n_states, system.n_dynamic
-    scale = system.tolerances(1.0)[:ndyn].copy()
-    diag = np.zeros((system.n_diag, 1))
-    f0, whole, column = np.zeros(n), np.zeros((n, ndyn)), np.zeros((n, ndyn))
-    rhs.jacobian(0.5, y, rhs.FORWARD, system.tables, scale, np.zeros(n), np.zeros(n), f0,
-                 diag, whole)
-    rhs.derivatives(0.5, iterate, rhs.FORWARD, system.tables, np.zeros(n), diag)
-    rate = rhs.velocity_column_at(0.5, y, f0, rhs.FORWARD, system.tables, scale, np.zeros(n),
-                                  np.zeros(n), diag, column)
+    whole, column, rate = _jacobian_and_velocity_column(system, y, last_evaluated=iterate)
     assert np.array_equal(column[:, 1], whole[:, 1])
     assert rate == whole[1, 1]
 
