@@ -39,6 +39,7 @@ class SessionBuild:
 
 BUILDS: dict[str, SessionBuild] = {}
 _results: dict[str, object] = {}      # this process's results (read or built)
+_session_wants: list[str] = []        # the builds of this session's tests (prebuild)
 
 
 def session_build(name: str, *, cost: float, used_by: tuple[str, ...] = (),
@@ -127,6 +128,7 @@ def prebuild(tmp_path_factory, worker_id: str, test_files) -> None:
     builds again and reports it."""
     wanted = list(dict.fromkeys(n for f in sorted(map(str, test_files)) for n in builds_for(f)))
     wanted.sort(key=lambda n: -BUILDS[n].cost)
+    _session_wants[:] = wanted
     if not wanted:
         return
     index = int(worker_id[2:]) if worker_id[2:].isdigit() else 0
@@ -145,9 +147,10 @@ def prebuild(tmp_path_factory, worker_id: str, test_files) -> None:
 
 def await_builds(tmp_path_factory, worker_id: str, test_file) -> None:
     """Wait for the builds of ``test_file`` (made by another worker, or here if nobody has
-    started one), and for the cylinder's numba compile in any case: a test that runs the
-    cylinder while the compile is under way would compile it again (about 60 s)."""
-    for name in dict.fromkeys(("pneumatic_numba", *builds_for(test_file))):
+    started one), and for the cylinder's numba compile whenever the session makes it: a test
+    that runs the cylinder while the compile is under way would compile it again (~60 s)."""
+    first = ("pneumatic_numba",) if "pneumatic_numba" in _session_wants else ()
+    for name in dict.fromkeys((*first, *builds_for(test_file))):
         if name in BUILDS:
             with contextlib.suppress(Exception):  # a failed build: the fixture reports it
                 built(tmp_path_factory, worker_id, name)
