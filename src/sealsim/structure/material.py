@@ -511,10 +511,10 @@ class ViscoelasticMooneyRivlin:
         sv = statevars.reshape(self.nterms + 1, 3, 3, *shape)
         s_old = sv[0]
         q_old = sv[1:]
-        decay = np.exp(-self.xi).reshape(-1, *([1] * (q_old.ndim - 1)))
-        half = (self.betas * np.exp(-0.5 * self.xi)).reshape(-1, *([1] * (q_old.ndim - 1)))
+        decay, half, gamma = self._factors()
+        decay = decay.reshape(-1, *([1] * (q_old.ndim - 1)))
+        half = half.reshape(-1, *([1] * (q_old.ndim - 1)))
         H = np.sum(decay * q_old - half * s_old[None], axis=0)
-        gamma = self.theta + float(np.sum(self.betas * np.exp(-0.5 * self.xi)))
         return s_old, q_old, decay, half, H, gamma
 
     def _compiled(self):
