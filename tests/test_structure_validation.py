@@ -95,10 +95,10 @@ def test_pressure_raises_normal_force(pressurised):
     Reference: hydrostatic transmission ("the O-ring acts like a fluid": contact stress =
     squeeze stress + system pressure, Parker O-Ring Handbook ORD 5700, §1).  A uniform stress
     −Δp·I added to the squeezed state keeps the body in equilibrium with Δp on its wetted
-    surface and on its contacts, so the peak contact pressure rises by Δp (the ring is also pushed into the groove corner: measured 1.006-1.027 Δp per
-    2.5 bar step, asserted within 5 %), and F_N by at least Δp·2πR_rod·b over the contact
-    width b at the start of a step (measured 1.18-1.23 times that: the contact also widens;
-    asserted 1 to 1.5).  A fluid load that stops short of the contact edges or misses a
+    surface and on its contacts, so the peak contact pressure rises by Δp (the ring is also
+    pushed into the groove corner: measured 1.006-1.027 Δp per 2.5 bar step, asserted within
+    5 %), and F_N by at least Δp·2πR_rod·b over the contact width b at the start of a step
+    (measured 1.18-1.23 times that: the contact also widens; asserted 1 to 1.5).  A fluid load that stops short of the contact edges or misses a
     part of the wetted surface gives less.
     """
     _, states = pressurised
