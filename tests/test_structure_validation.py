@@ -98,8 +98,9 @@ def test_pressure_raises_normal_force(pressurised):
     surface and on its contacts, so the peak contact pressure rises by Δp (the ring is also
     pushed into the groove corner: measured 1.006-1.027 Δp per 2.5 bar step, asserted within
     5 %), and F_N by at least Δp·2πR_rod·b over the contact width b at the start of a step
-    (measured 1.18-1.23 times that: the contact also widens; asserted 1 to 1.5).  A fluid load that stops short of the contact edges or misses a
-    part of the wetted surface gives less.
+    (measured 1.18-1.23 times that: the contact also widens; asserted 1 to 1.5).  A fluid
+    load that stops short of the contact edges or misses a part of the wetted surface gives
+    less.
     """
     _, states = pressurised
     forces = np.array([s.F_N for s in states])
