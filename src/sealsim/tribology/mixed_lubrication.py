@@ -232,7 +232,9 @@ class ContactFriction(NamedTuple):
     film : numpy.ndarray
         Film at the pressure maximum h* of the main zone (largest peak pressure) [m].
     full_film : numpy.ndarray
-        Its full-film IHL value h*₀ [m].
+        Its full-film IHL value h*₀ [m], before the asperities take a share (the flooded
+        film of the module's item 1, or the starved one, at most 2·h_s, when ``supply_layer`` is
+        finite).
     flow : numpy.ndarray
         Flow through the main zone per unit circumference q = u·h*/2 [m²/s].
     max_gradient : float
