@@ -274,9 +274,9 @@ class AnalyticLipForce:
         t = np.asarray(temperature, dtype=float)
         # lip force on the reference lip of the case (mounted at T_ref): mounted_interference 1
         # when T_m = T_ref; the held stress at T_m otherwise
-        return lip_stress_ratio(self.interference(t), self._mounted_interference,
-                                e.held_modulus(t, mounting_temperature=self.mounted_at),
-                                e.held_modulus(t), self._reference_modulus)
+        mounted, held = e.mounted_and_held_modulus(t, self.mounted_at)
+        return lip_stress_ratio(self.interference(t), self._mounted_interference, mounted, held,
+                                self._reference_modulus)
 
     def __call__(self, temperature):
         return lip_force(self.reference_force, self.spring_share, self.stress_ratio(temperature))

@@ -521,6 +521,8 @@ class BackwardEulerStepper:
         self.network = network
         self._cache: dict[Hashable, tuple] = {}
         self._responses: dict[Hashable, np.ndarray] = {}
+        # what a step needs of a cached system besides its LU, computed once per system
+        self._step_data: dict[Hashable, dict] = {}
         self.max_cache = max_cache
         self.factorisations = 0
         self.payload = None
@@ -542,6 +544,7 @@ class BackwardEulerStepper:
                 oldest = next(iter(self._cache))
                 self._cache.pop(oldest)
                 self._responses.pop(oldest, None)
+                self._step_data.pop(oldest, None)
             self._cache[full_key] = entry
             self.factorisations += 1
         return entry
@@ -560,20 +563,34 @@ class BackwardEulerStepper:
             Heat that left to the fixed nodes during the step [J].
         """
         lu, k, f, self.payload = self.system(key, dt, build)
-        rhs = self.network.capacity / dt * temperatures + f @ fixed_temperatures + source
+        data = self._step_data.get((key, dt))
+        if data is None:
+            # each unknown's conductance to the fixed nodes, F·1: the heat to them is
+            # Σ_ij F_ij·(T_i − T_fixed,j) (= Σ(K·T) − Σ(F·T_fixed) for a network's K, whose
+            # other couplings conserve heat), a dense product instead of a sparse one
+            data = {"capacity_dt": self.network.capacity / dt,
+                    "fixed_conductance": np.asarray(f.sum(axis=1)).ravel(), "fixed": None}
+            self._step_data[(key, dt)] = data
+        fixed = np.asarray(fixed_temperatures, dtype=float)
+        if data["fixed"] is None or not np.array_equal(data["fixed"][0], fixed):
+            flux = f @ fixed
+            data["fixed"] = (fixed.copy(), flux, float(np.sum(flux)))
+        _, fixed_flux, fixed_flux_sum = data["fixed"]
+        rhs = data["capacity_dt"] * temperatures + fixed_flux + source
         t1 = lu.solve(rhs)
         self.feedback_heat = np.zeros_like(self.feedback_heat)
         if slopes is not None and np.any(slopes != 0.0):
-            responses = self._responses.get((key, dt))
-            if responses is None:
+            probes = self.feedback_probes
+            cached = self._responses.get((key, dt))
+            if cached is None:
                 responses = np.stack([lu.solve(column) for column in self.feedback_sources.T],
                                      axis=1)
-                self._responses[(key, dt)] = responses
-            probes = self.feedback_probes
-            system = np.eye(slopes.size) - (probes.T @ responses) * slopes[None, :]
+                cached = self._responses[(key, dt)] = (responses, probes.T @ responses)
+            responses, coupling = cached
+            system = np.eye(slopes.size) - coupling * slopes[None, :]
             if np.linalg.det(system) > 0.1:  # else a source outruns the network within the step
                 self.feedback_heat = slopes * np.linalg.solve(system,
                                                               probes.T @ (t1 - temperatures))
                 t1 = t1 + responses @ self.feedback_heat
-        heat_out = dt * float(np.sum(k @ t1) - np.sum(f @ fixed_temperatures))
+        heat_out = dt * (float(data["fixed_conductance"] @ t1) - fixed_flux_sum)
         return t1, heat_out
