@@ -321,6 +321,9 @@ class ThermalNetwork:
             if node not in self.node_index and node not in self.fixed_names:
                 raise ValueError(f"face group {g!r} links to unknown node {node!r}")
         self._k_cond = conduction.conduction_matrix()
+        # the cell behind each face of a group (group_heat, every output row of a transient)
+        self._group_cells = {g: conduction.boundary.cell[f] for g, (f, _) in
+                             self.face_groups.items()}
         self._plans: dict[tuple, dict] = {}  # assembly plans per set of link end nodes
 
     def group_area(self, group: str) -> float:
@@ -410,11 +413,11 @@ class ThermalNetwork:
             raise ValueError(f"{len(fixed_temperatures)} fixed temperatures for the "
                              f"{len(self.fixed_names)} fixed nodes {self.fixed_names}")
         fixed = dict(zip(self.fixed_names, fixed_temperatures))
-        cells = self.conduction.boundary.cell
         out = {}
-        for group, (faces, node) in self.face_groups.items():
+        for group, (_, node) in self.face_groups.items():
             t_node = fixed[node] if node in fixed else temperatures[self.node_index[node]]
-            out[group] = float(conductances[group] @ (temperatures[cells[faces]] - t_node))
+            out[group] = float(conductances[group] @ (temperatures[self._group_cells[group]]
+                                                      - t_node))
         return out
 
     def _plan(self, link_nodes: tuple[tuple[str, str], ...]) -> dict:
