@@ -575,9 +575,9 @@ class BackwardEulerStepper:
                     "fixed_conductance": np.asarray(f.sum(axis=1)).ravel(), "fixed": None}
             self._step_data[(key, dt)] = data
         fixed = np.asarray(fixed_temperatures, dtype=float)
-        if data["fixed"] is None or not np.array_equal(data["fixed"][0], fixed):
+        if data["fixed"] is None or data["fixed"][0] != fixed.tobytes():
             flux = f @ fixed
-            data["fixed"] = (fixed.copy(), flux, float(np.sum(flux)))
+            data["fixed"] = (fixed.tobytes(), flux, float(np.sum(flux)))
         _, fixed_flux, fixed_flux_sum = data["fixed"]
         rhs = data["capacity_dt"] * temperatures + fixed_flux + source
         t1 = lu.solve(rhs)
