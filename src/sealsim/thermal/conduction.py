@@ -581,8 +581,8 @@ class BackwardEulerStepper:
         _, fixed_flux, fixed_flux_sum = data["fixed"]
         rhs = data["capacity_dt"] * temperatures + fixed_flux + source
         t1 = lu.solve(rhs)
-        self.feedback_heat = np.zeros_like(self.feedback_heat)
-        if slopes is not None and np.any(slopes != 0.0):
+        self.feedback_heat = np.zeros(self.feedback_heat.shape)
+        if slopes is not None and (slopes != 0.0).any():
             probes = self.feedback_probes
             cached = self._responses.get((key, dt))
             if cached is None:
