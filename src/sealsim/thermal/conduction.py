@@ -563,7 +563,8 @@ class BackwardEulerStepper:
         T1 : numpy.ndarray
             Temperatures after the step [K].
         heat_out : float
-            Heat that left to the fixed nodes during the step [J].
+            Heat that left to the fixed nodes during the step [J]: Δt·Σ_ij F_ij·(T¹_i −
+            T_fixed,j), through the conductances F that link the unknowns to them.
         """
         lu, k, f, self.payload = self.system(key, dt, build)
         data = self._step_data.get((key, dt))
