@@ -10,21 +10,33 @@
    former solver, which factorised the network matrix in every fixed-point iteration; that
    solver, kept in tests/rotary_reference.py, is the baseline measured in the same run].
 
+4. What users and the CI run on the transient model, CPU time and wall (best of ``--repeat``):
+   the speed cycle of ``examples/rotary/speed_cycle.toml`` (variant plain, 2.25 h) and the
+   thermal-lag step responses of the rotary FMU, :func:`~sealsim.fmu.rotary_maps.thermal_lag`
+   at two speeds and two sump temperatures as in ``tests/test_fmu_rotary.py`` (4 steady states,
+   4 transient runs until settled).  No target: compare two versions by running this file
+   alternately with each on ``PYTHONPATH`` (the machine's speed drifts over minutes);
+   ``--transient`` runs this part only.
+
 The last line is one JSON object with wall_s, simulated_s, realtime_factor, thermal_nodes,
 steady_points_per_s (the friction map), thermal_steady_points_per_s,
 thermal_steady_baseline_points_per_s, thermal_steady_speedup and thermal_steady_max_torque_diff
-(relative torque difference to the baseline run to convergence).
+(relative torque difference to the baseline run to convergence), speed_cycle_cpu_s,
+speed_cycle_wall_s, thermal_lag_cpu_s and thermal_lag_wall_s (``--transient``: the last four).
 """
 
+import argparse
 import json
 import math
 import sys
 import time
+import warnings
 from pathlib import Path
 
 import numpy as np
 
-from sealsim.cases import validate_case
+from sealsim.cases import expand_variants, load_toml, validate_case
+from sealsim.fmu.rotary_maps import thermal_lag
 from sealsim.rotary.case import RotaryCase
 from sealsim.rotary.simulation import RotaryModel, friction_map, simulate, steady_state
 
@@ -52,7 +64,46 @@ def timed(function, repeat=3):
     return best, result
 
 
+def timed_cpu(function, repeat):
+    """Best CPU time and best wall time [s] of ``repeat`` calls, and the last result."""
+    cpu = wall = np.inf
+    for _ in range(repeat):
+        start_cpu, start = time.process_time(), time.perf_counter()
+        result = function()
+        cpu = min(cpu, time.process_time() - start_cpu)
+        wall = min(wall, time.perf_counter() - start)
+    return cpu, wall, result
+
+
+def transient_runs(repeat: int) -> dict:
+    """Part 4: the speed-cycle example and the rotary FMU's thermal-lag step responses."""
+    example = Path(__file__).resolve().parents[1] / "examples" / "rotary" / "speed_cycle.toml"
+    plain = expand_variants(RotaryCase, load_toml(example), "speed cycle")["plain"]
+    sumps = np.array([20.0, 70.0]) + 273.15
+    speeds = np.array([[100.0, 100.0], [1000.0, 1000.0]]) * math.pi / 30.0
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        simulate(plain)  # warm-up
+        cycle_cpu, cycle_wall, cycle = timed_cpu(lambda: simulate(plain), repeat)
+        lag_cpu, lag_wall, lag = timed_cpu(lambda: thermal_lag(plain, speeds, sumps), repeat)
+    print(f"speed cycle example (plain, {cycle.statistics['time_steps']} steps, "
+          f"{cycle.statistics['factorisations']} factorisations): CPU {cycle_cpu:.2f} s, "
+          f"wall {cycle_wall:.2f} s")
+    print(f"thermal lag of the rotary FMU (2 speeds x 2 sump temperatures, "
+          f"{sum(len(t) for t, _ in lag.responses.values())} steps): CPU {lag_cpu:.2f} s, "
+          f"wall {lag_wall:.2f} s")
+    return {"speed_cycle_cpu_s": round(cycle_cpu, 3), "speed_cycle_wall_s": round(cycle_wall, 3),
+            "thermal_lag_cpu_s": round(lag_cpu, 3), "thermal_lag_wall_s": round(lag_wall, 3)}
+
+
 def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--transient", action="store_true", help="part 4 only")
+    parser.add_argument("--repeat", type=int, default=3, help="runs of part 4 (best of)")
+    args = parser.parse_args()
+    if args.transient:
+        print(json.dumps(transient_runs(args.repeat)))
+        return
     adaptive = case()
     simulate(adaptive)  # warm-up: imports, first-call overheads
     wall, result = timed(lambda: simulate(adaptive))
@@ -98,13 +149,14 @@ def main():
     print(f"  torque vs the former solver run to convergence (tol 1e-9 K): max relative "
           f"difference {diff:.1e} (the former solver at its default tol 1e-4 K: "
           f"{diff_default:.1e})")
+    transient = transient_runs(args.repeat)
     print(json.dumps({"wall_s": round(wall, 4), "simulated_s": simulated,
                       "realtime_factor": round(simulated / wall, 1), "thermal_nodes": nodes,
                       "steady_points_per_s": round(points / map_wall),
                       "thermal_steady_points_per_s": round(rate, 2),
                       "thermal_steady_baseline_points_per_s": round(base_rate, 2),
                       "thermal_steady_speedup": round(rate / base_rate, 2),
-                      "thermal_steady_max_torque_diff": float(f"{diff:.2e}")}))
+                      "thermal_steady_max_torque_diff": float(f"{diff:.2e}"), **transient}))
 
 
 if __name__ == "__main__":

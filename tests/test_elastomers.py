@@ -131,6 +131,18 @@ def test_wlf_diverges_without_continuation():
         wlf_log10_shift(196.55, 248.15)  # exactly at the pole
 
 
+def test_log10_shift_of_one_temperature_is_that_of_an_array():
+    # the scalar path of a time step takes one branch in float arithmetic: the same numbers,
+    # bit for bit, as the array path, on both branches and at T_g itself
+    tg = 248.15
+    t = np.concatenate([np.linspace(150.0, 450.0, 601), [tg, np.nextafter(tg, 0.0)]])
+    array = wlf_log10_shift(t, tg, arrhenius_below=tg)
+    one_by_one = np.array([wlf_log10_shift(x, tg, arrhenius_below=tg) for x in t])
+    assert np.array_equal(array, one_by_one)
+    assert np.array_equal(wlf_log10_shift(t[t > 200.0], tg),
+                          [wlf_log10_shift(x, tg) for x in t[t > 200.0]])
+
+
 def test_arrhenius_continuation_is_finite_continuous_and_monotone():
     tg = 248.15
     t = np.linspace(100.0, 400.0, 3001)
@@ -765,6 +777,22 @@ def test_entropic_modulus_and_modulus_ratio():
     assert 0.5 <= dyn <= 0.7
     with pytest.raises(InputError, match="temperature scaling"):
         nbr.modulus_ratio(300.0, scaling="dynamic")
+
+
+def test_mounted_and_held_modulus_are_the_two_held_moduli():
+    # the lip force's pair (Eq. 1-2 of rotary/lip.py), evaluated together, is exactly the two
+    # held_modulus calls it replaces: cooled below, at and above the mounting temperature,
+    # for one temperature and for an array
+    nbr = get_elastomer("NBR")
+    t = np.array([233.15, 253.15, 293.15, 333.15, 393.15])
+    mounted, held = nbr.mounted_and_held_modulus(t, 293.15)
+    assert np.array_equal(mounted, nbr.held_modulus(t, mounting_temperature=293.15))
+    assert np.array_equal(held, nbr.held_modulus(t))
+    for x in t:
+        assert nbr.mounted_and_held_modulus(x, 293.15) == (
+            nbr.held_modulus(x, mounting_temperature=293.15), nbr.held_modulus(x))
+    with pytest.raises(InputError, match="hold_time"):
+        nbr.mounted_and_held_modulus(293.15, 293.15, hold_time=0.0)
 
 
 def test_held_modulus_is_the_relaxation_modulus_of_the_master_curve():

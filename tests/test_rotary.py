@@ -286,6 +286,26 @@ def test_friction_takes_any_lip_force_source():
         float(state.mu_dry * state.asperity_share) * 20.0, rel=1e-12)
 
 
+def test_analytic_lip_force_gives_its_held_modulus_with_the_force():
+    # The friction takes F_tip and the film law's held modulus E_h(T) from one evaluation of
+    # the analytic lip force (Eq. 1 meets E_h on the way): exactly the separate values, and a
+    # friction model whose lip-force source is any other callable of the same law (which has
+    # to ask the elastomer for E_h) gives the same state, bit for bit, cooled below the
+    # mounting temperature and warmed above it, for one point and for a map.
+    base = lip_seal_friction(_case())
+    force = base.lip_force
+    for temperature in (253.15, 293.15, 353.15):
+        f_tip, held = force.force_and_held_modulus(temperature)
+        assert f_tip == force(temperature)
+        assert held == base.elastomer.held_modulus(temperature)
+    other = LipSealFriction(base.parameters, base.oil, base.elastomer, lambda t: force(t))
+    for omega, temperature in ((100 * RPM, 253.15), (1500 * RPM, 353.15),
+                               (np.array([10.0, 100.0]), np.array([[280.0], [330.0]]))):
+        for a, b in zip(base.evaluate(omega, temperature), other.evaluate(omega, temperature),
+                        strict=True):
+            assert np.array_equal(a, b)
+
+
 def test_effective_friction_coefficient_in_measured_range_for_the_right_reason():
     # Finding 3.  Measured lip seal μ_eff = F_friction/F_radial: 0.2-0.6 (issue; typical
     # literature values are 0.1-0.6, not checked against a primary source).  Checked from 10 to 3000 rpm at 40-120 °C.  The right reason:

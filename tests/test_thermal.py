@@ -121,6 +121,23 @@ def test_backward_euler_conserves_energy(power, dt, steps):
     assert generated - stored - out == pytest.approx(0.0, abs=1e-8 * (1 + abs(stored)))
 
 
+def test_heat_to_fixed_nodes_is_that_through_their_links():
+    # the heat a step reports to the fixed nodes is the link's g·(T_sump − T_ambient)·Δt,
+    # the only path to ambient here (independent reference); a warm cylinder (350 K) over a
+    # sump 1 mK above ambient: 2 mW.  Taken as Σ(K·T) − Σ(F·T_fixed), it was a difference of
+    # W-sized terms, off by 2.4e-9; from the fixed links' conductances, round-off (1e-12).
+    net = _small_network()
+    sump = net.node_index["sump"]
+    for dt in (0.01, 1.0, 100.0):
+        stepper = BackwardEulerStepper(net)
+        temps = np.full(net.n, 350.0)
+        temps[sump] = 290.001
+        t1, heat_out = stepper.step(temps, dt, np.zeros(net.n), np.array([290.0]), "k",
+                                    lambda: net.assemble({"surface": 100.0},
+                                                         [Link("sump", "ambient", 2.0)]))
+        assert heat_out == pytest.approx(2.0 * (t1[sump] - 290.0) * dt, rel=1e-12)
+
+
 @settings(max_examples=30, deadline=None)
 @given(q0=st.floats(0, 500), slope=st.floats(-50, 0), dt=st.floats(0.01, 100))
 def test_linearly_implicit_source_is_backward_euler_of_a_linear_source(q0, slope, dt):

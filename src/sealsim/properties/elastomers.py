@@ -77,6 +77,7 @@ from sealsim.properties.rubber_modulus import (
     DEFAULT_TRANSITION_ASYMMETRY,
     DEFAULT_TRANSITION_LOCATION,
     DEFAULT_TRANSITION_WIDTH,
+    _entropic_modulus,
     _master_log10,
     entropic_modulus,
     master_curve_modulus,
@@ -664,15 +665,19 @@ class Elastomer:
         """
         return _out(10.0 ** self._shift_checked(temperature, reference_temperature))
 
-    def _modulus(self, t: np.ndarray, f: np.ndarray) -> np.ndarray:
-        """E [Pa] for validated, broadcast t [K] and f [Hz] (no warnings)."""
+    def _modulus(self, t: np.ndarray, f: np.ndarray,
+                 log10_shift: np.ndarray | None = None) -> np.ndarray:
+        """E [Pa] for validated, broadcast t [K] and f [Hz] (no warnings); ``log10_shift``:
+        :meth:`_log10_shift` of t when the caller has it already."""
         if self.dma_table is not None:
             t_tab, e_tab = self.dma_table
             if np.all(f == self.dma_frequency):
                 t_eq = t
             else:
                 # time–temperature superposition: the table temperature with the same f·a_T
-                y = self._log10_shift(t) + np.log10(f / self.dma_frequency)
+                if log10_shift is None:
+                    log10_shift = self._log10_shift(t)
+                y = log10_shift + np.log10(f / self.dma_frequency)
                 t_eq = _inverse_log10_shift(
                     y,
                     self.wlf_reference_temperature,
@@ -693,8 +698,11 @@ class Elastomer:
                     f"{self.dma_frequency:g} Hz; the requested temperature/frequency maps outside "
                     f"it ({exc})"
                 ) from None
-        x = np.log10(f) + self._log10_shift(t)
-        log_er = np.log10(entropic_modulus(self.rubbery_modulus, t, self.reference_temperature))
+        if log10_shift is None:
+            log10_shift = self._log10_shift(t)
+        x = np.log10(f) + log10_shift
+        # the material's fields and t are validated: the law without its input checks
+        log_er = np.log10(_entropic_modulus(self.rubbery_modulus, t, self.reference_temperature))
         return 10.0 ** _master_log10(
             x,
             math.log10(self.glassy_modulus),
@@ -787,13 +795,54 @@ class Elastomer:
         """
         t_h = _scalar(hold_time, "hold_time", "s", lo=0.0, lo_open=True)
         t = self._check(temperature, False, stacklevel=3)
-        f = np.full(t.shape, held_frequency(t_h))
-        if mounting_temperature is not None:
-            t_m = self._check(mounting_temperature, False, stacklevel=3)
-            t, t_m = _broadcast(t, t_m, names="temperature and mounting_temperature")
-            f = held_frequency(t_h) * 10.0 ** np.minimum(
-                self._log10_shift(t_m) - self._log10_shift(t), 0.0)
-        return _out(self._modulus(t, f))
+        if mounting_temperature is None:
+            return _out(self._modulus(t, np.full(t.shape, held_frequency(t_h))))
+        t_m = self._check(mounting_temperature, False, stacklevel=3)
+        t, t_m = _broadcast(t, t_m, names="temperature and mounting_temperature")
+        shift = self._log10_shift(t)
+        return _out(self._modulus(t, self._mounted_frequency(t_h, t_m, shift), shift))
+
+    def _mounted_frequency(self, hold_time: float, mounting_temperature: np.ndarray,
+                           log10_shift: np.ndarray) -> np.ndarray:
+        """Reduced frequency [Hz] of a stress installed at T_m and held at T (log10 a_T(T) =
+        ``log10_shift``): min(a_T(T_m), a_T(T))/(2π t_h), see :meth:`held_modulus`."""
+        return held_frequency(hold_time) * 10.0 ** np.minimum(
+            self._log10_shift(mounting_temperature) - log10_shift, 0.0)
+
+    def mounted_and_held_modulus(self, temperature: Any, mounting_temperature: Any,
+                                 hold_time: float = HELD_SEAL_TIME) -> tuple:
+        """Both moduli of a lip mounted at T_m and brought to T [Pa]: that of the stress
+        installed at T_m, ``held_modulus(T, mounting_temperature=T_m)``, and that of the
+        increment since, ``held_modulus(T)`` (the two of :func:`sealsim.rotary.lip.
+        lip_stress_ratio`), evaluated together: the checks and the shift factor at T once.
+
+        Parameters
+        ----------
+        temperature : array_like
+            T [K].
+        mounting_temperature : array_like
+            T_m [K].
+        hold_time : float
+            t_h [s], > 0.
+
+        Returns
+        -------
+        tuple of float or numpy.ndarray
+            (E_m, E_h) [Pa].
+
+        Examples
+        --------
+        >>> e_m, e_h = get_elastomer("NBR").mounted_and_held_modulus(253.15, 293.15)
+        >>> round(e_m / 1e6, 2), round(e_h / 1e6, 1)
+        (3.57, 16.5)
+        """
+        t_h = _scalar(hold_time, "hold_time", "s", lo=0.0, lo_open=True)
+        t = self._check(temperature, False, stacklevel=3)
+        t_m = self._check(mounting_temperature, False, stacklevel=3)
+        t, t_m = _broadcast(t, t_m, names="temperature and mounting_temperature")
+        shift = self._log10_shift(t)
+        return (_out(self._modulus(t, self._mounted_frequency(t_h, t_m, shift), shift)),
+                _out(self._modulus(t, np.full(t.shape, held_frequency(t_h)), shift)))
 
     def shear_modulus(self, temperature: Any, frequency: Any = None) -> np.ndarray | float:
         """Small-strain shear modulus G = E/3 [Pa] (incompressible).

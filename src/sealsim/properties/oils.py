@@ -49,6 +49,7 @@ unit in the key name: ``nu40_mm2_s = 68.0``) are still read.
 from __future__ import annotations
 
 import difflib
+import math
 import re
 import warnings
 from collections.abc import Mapping
@@ -167,6 +168,11 @@ def _array(value: Any, name: str, unit: str, *, lo: float | None = None,
         arr = np.asarray(value, dtype=float)
     except (TypeError, ValueError):
         raise InputError(f"{name} = {value!r} is not a number; give a value in {unit}") from None
+    if arr.ndim == 0:  # the scalar call of every time step: checked without array reductions
+        x = float(arr)
+        if math.isfinite(x) and (lo is None or (x > lo if lo_open else x >= lo)) and (
+                hi is None or x <= hi):
+            return arr
     finite = np.isfinite(arr)
     if not finite.all():
         bad = arr[~finite].flat[0] if arr.ndim else arr

@@ -414,4 +414,9 @@ def entropic_modulus(
     e0 = _array(modulus, "modulus", "Pa", lo=0.0, lo_open=True)
     t = _array(temperature, "temperature", "K", lo=0.0, lo_open=True)
     t0 = _array(reference_temperature, "reference_temperature", "K", lo=0.0, lo_open=True)
-    return _out(e0 * t / t0)
+    return _out(_entropic_modulus(e0, t, t0))
+
+
+def _entropic_modulus(modulus, temperature, reference_temperature):
+    """:func:`entropic_modulus` of validated inputs."""
+    return modulus * temperature / reference_temperature

@@ -105,16 +105,23 @@ def _log10_shift(
     t: np.ndarray, t_ref: float, c1: float, c2: float, t_a: float | None
 ) -> np.ndarray:
     """WLF with optional slope-continuous Arrhenius branch below ``t_a`` (inputs validated)."""
-    if t_a is None:
-        d = t - t_ref
+    def wlf(d):
         return -c1 * d / (c2 + d)
+
+    if t_a is None:
+        return wlf(t - t_ref)
     d_a = t_a - t_ref
-    y_a = -c1 * d_a / (c2 + d_a)
+    y_a = wlf(d_a)
     b = c1 * c2 * t_a**2 / (c2 + d_a) ** 2  # K; slope continuity at t_a
+
+    def arrhenius(temperature):
+        return y_a + b * (1.0 / temperature - 1.0 / t_a)
+
+    if np.ndim(t) == 0:  # one temperature (a time step): its branch only, in float arithmetic
+        x = float(t)
+        return np.asarray(wlf(x - t_ref) if x >= t_a else arrhenius(x))
     d = np.where(t >= t_a, t - t_ref, d_a)  # keep the unused branch finite
-    wlf = -c1 * d / (c2 + d)
-    arr = y_a + b * (1.0 / t - 1.0 / t_a)
-    return np.where(t >= t_a, wlf, arr)
+    return np.where(t >= t_a, wlf(d), arrhenius(t))
 
 
 def wlf_log10_shift(

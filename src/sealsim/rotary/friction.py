@@ -156,9 +156,9 @@ class LipSealFriction:
         u = omega * p.shaft_diameter / 2.0
         speed = np.abs(u)
         eta = self.oil.dynamic_viscosity(temp)
-        f_tip = np.asarray(self.lip_force(temp), dtype=float)
+        f_tip, held_modulus = self._lip_force_and_held_modulus(temp)
         scale = soft_ehl_load_modulus_factor(
-            f_tip / (np.pi * p.shaft_diameter), self.elastomer.held_modulus(temp),
+            f_tip / (np.pi * p.shaft_diameter), held_modulus,
             p.film_reference_load, p.film_reference_modulus)
         h = film_thickness(eta, speed, p.film_coefficient, p.film_exponent,
                            p.film_factor * scale, p.film_floor)
@@ -173,6 +173,17 @@ class LipSealFriction:
         torque = np.sign(omega) * (f_lub + f_mat) * p.shaft_diameter / 2.0
         power = torque * omega
         return FrictionState(u, eta, h, lam, f_tip, mu, share, f_lub, f_mat, torque, power)
+
+    def _lip_force_and_held_modulus(self, temp: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """F_tip [N] and the lip's held modulus [Pa] at the temperatures: both from one
+        evaluation of a lip-force source that computes the held modulus of this elastomer
+        anyway (:meth:`~sealsim.rotary.lip.AnalyticLipForce.force_and_held_modulus`)."""
+        both = getattr(self.lip_force, "force_and_held_modulus", None)
+        if both is not None and getattr(self.lip_force, "elastomer", None) is self.elastomer:
+            f_tip, held = both(temp)
+        else:
+            f_tip, held = self.lip_force(temp), self.elastomer.held_modulus(temp)
+        return np.asarray(f_tip, dtype=float), held
 
     def duty_parameter(self, state: FrictionState, angular_speed):
         """Duty parameter G = η·ω·b/W' of operating points (for Stribeck-type plots)."""

@@ -270,16 +270,25 @@ class AnalyticLipForce:
 
     def stress_ratio(self, temperature):
         """σ(T)/σ_ref of Eq. (1)-(2)."""
-        e = self.elastomer
+        return self._stress_ratio_and_held_modulus(temperature)[0]
+
+    def _stress_ratio_and_held_modulus(self, temperature):
         t = np.asarray(temperature, dtype=float)
         # lip force on the reference lip of the case (mounted at T_ref): mounted_interference 1
         # when T_m = T_ref; the held stress at T_m otherwise
-        return lip_stress_ratio(self.interference(t), self._mounted_interference,
-                                e.held_modulus(t, mounting_temperature=self.mounted_at),
-                                e.held_modulus(t), self._reference_modulus)
+        mounted, held = self.elastomer.mounted_and_held_modulus(t, self.mounted_at)
+        return lip_stress_ratio(self.interference(t), self._mounted_interference, mounted, held,
+                                self._reference_modulus), held
 
     def __call__(self, temperature):
         return lip_force(self.reference_force, self.spring_share, self.stress_ratio(temperature))
+
+    def force_and_held_modulus(self, temperature):
+        """F_tip(T) [N] and the held modulus E_h(T) [Pa] of the elastomer that Eq. (1) met on
+        the way: a friction model that needs both (the film law's lip modulus) takes them from
+        one evaluation."""
+        ratio, held = self._stress_ratio_and_held_modulus(temperature)
+        return lip_force(self.reference_force, self.spring_share, ratio), held
 
 
 def lip_mounting_note(lowest_temperature: float, mounting_temperature: float,

@@ -655,7 +655,7 @@ def simulate(case: RotaryCase, base_dir: Path | None = None, progress=None) -> R
             bearing_slope = bearing_heat(case, model.oil, omega, t_bearing + 1.0) - bearing_w
         last_bearing = (omega, t_bearing, bearing_w)
         key = (round(math.log1p(abs(omega)) / 0.02), round(t_sump / 2.0))
-        before = watched(temps)
+        before = watched(temps) if extend else None
         bearing = model.bearing_source(bearing_w)
         # the face conductances ride with the factorisation: the heat paths of the row are
         # those of the matrices the step was solved with

@@ -321,6 +321,9 @@ class ThermalNetwork:
             if node not in self.node_index and node not in self.fixed_names:
                 raise ValueError(f"face group {g!r} links to unknown node {node!r}")
         self._k_cond = conduction.conduction_matrix()
+        # the cell behind each face of a group (group_heat, every output row of a transient)
+        self._group_cells = {g: conduction.boundary.cell[f] for g, (f, _) in
+                             self.face_groups.items()}
         self._plans: dict[tuple, dict] = {}  # assembly plans per set of link end nodes
 
     def group_area(self, group: str) -> float:
@@ -410,11 +413,11 @@ class ThermalNetwork:
             raise ValueError(f"{len(fixed_temperatures)} fixed temperatures for the "
                              f"{len(self.fixed_names)} fixed nodes {self.fixed_names}")
         fixed = dict(zip(self.fixed_names, fixed_temperatures))
-        cells = self.conduction.boundary.cell
         out = {}
-        for group, (faces, node) in self.face_groups.items():
+        for group, (_, node) in self.face_groups.items():
             t_node = fixed[node] if node in fixed else temperatures[self.node_index[node]]
-            out[group] = float(conductances[group] @ (temperatures[cells[faces]] - t_node))
+            out[group] = float(conductances[group] @ (temperatures[self._group_cells[group]]
+                                                      - t_node))
         return out
 
     def _plan(self, link_nodes: tuple[tuple[str, str], ...]) -> dict:
@@ -521,6 +524,8 @@ class BackwardEulerStepper:
         self.network = network
         self._cache: dict[Hashable, tuple] = {}
         self._responses: dict[Hashable, np.ndarray] = {}
+        # what a step needs of a cached system besides its LU, computed once per system
+        self._step_data: dict[Hashable, dict] = {}
         self.max_cache = max_cache
         self.factorisations = 0
         self.payload = None
@@ -542,6 +547,7 @@ class BackwardEulerStepper:
                 oldest = next(iter(self._cache))
                 self._cache.pop(oldest)
                 self._responses.pop(oldest, None)
+                self._step_data.pop(oldest, None)
             self._cache[full_key] = entry
             self.factorisations += 1
         return entry
@@ -557,23 +563,38 @@ class BackwardEulerStepper:
         T1 : numpy.ndarray
             Temperatures after the step [K].
         heat_out : float
-            Heat that left to the fixed nodes during the step [J].
+            Heat that left to the fixed nodes during the step [J]: Δt·Σ_ij F_ij·(T¹_i −
+            T_fixed,j), through the conductances F that link the unknowns to them.
         """
         lu, k, f, self.payload = self.system(key, dt, build)
-        rhs = self.network.capacity / dt * temperatures + f @ fixed_temperatures + source
+        data = self._step_data.get((key, dt))
+        if data is None:
+            # each unknown's conductance to the fixed nodes, F·1: the heat to them is
+            # Σ_ij F_ij·(T_i − T_fixed,j) (= Σ(K·T) − Σ(F·T_fixed) for a network's K, whose
+            # other couplings conserve heat), a dense product instead of a sparse one
+            data = {"capacity_dt": self.network.capacity / dt,
+                    "fixed_conductance": np.asarray(f.sum(axis=1)).ravel(), "fixed": None}
+            self._step_data[(key, dt)] = data
+        fixed = np.asarray(fixed_temperatures, dtype=float)
+        if data["fixed"] is None or data["fixed"][0] != fixed.tobytes():
+            flux = f @ fixed
+            data["fixed"] = (fixed.tobytes(), flux, float(np.sum(flux)))
+        _, fixed_flux, fixed_flux_sum = data["fixed"]
+        rhs = data["capacity_dt"] * temperatures + fixed_flux + source
         t1 = lu.solve(rhs)
-        self.feedback_heat = np.zeros_like(self.feedback_heat)
-        if slopes is not None and np.any(slopes != 0.0):
-            responses = self._responses.get((key, dt))
-            if responses is None:
+        self.feedback_heat = np.zeros(self.feedback_heat.shape)
+        if slopes is not None and (slopes != 0.0).any():
+            probes = self.feedback_probes
+            cached = self._responses.get((key, dt))
+            if cached is None:
                 responses = np.stack([lu.solve(column) for column in self.feedback_sources.T],
                                      axis=1)
-                self._responses[(key, dt)] = responses
-            probes = self.feedback_probes
-            system = np.eye(slopes.size) - (probes.T @ responses) * slopes[None, :]
+                cached = self._responses[(key, dt)] = (responses, probes.T @ responses)
+            responses, coupling = cached
+            system = np.eye(slopes.size) - coupling * slopes[None, :]
             if np.linalg.det(system) > 0.1:  # else a source outruns the network within the step
                 self.feedback_heat = slopes * np.linalg.solve(system,
                                                               probes.T @ (t1 - temperatures))
                 t1 = t1 + responses @ self.feedback_heat
-        heat_out = dt * float(np.sum(k @ t1) - np.sum(f @ fixed_temperatures))
+        heat_out = dt * (float(data["fixed_conductance"] @ t1) - fixed_flux_sum)
         return t1, heat_out
