@@ -52,6 +52,7 @@ __all__ = [
     "series_conductance",
     "series_pair",
     "SpoolMotion",
+    "subsonic_power",
     "spool_response",
 ]
 
