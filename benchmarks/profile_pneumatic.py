@@ -10,15 +10,22 @@ stop -- and mode: segments, steps, RHS and Jacobians) and the cost of one
 compiled call of each part, timed in a compiled loop: the right-hand side, the Jacobian, an LU
 factorisation of the Newton matrix, the diagnostics of one output sample.  From those, the
 integration's estimated split (evaluations × cost; the remainder is the BDF bookkeeping,
-events and the dense output).  Every time is the best of several runs in this process (7 for
-the stages, 5 for the loops): on a shared machine the best run is the least disturbed one.
+events and the dense output).  And which state limits the steps: the analytic case is run
+once more by a Python copy of the compiled driver's loop (:func:`limiting_states`: the same
+compiled ``start``/``step``/``locate`` calls, checked to take the driver's steps), which
+records per accepted step the state with the largest term of the error norm, by phase --
+strokes, the 40 ms after each impact on an end stop (the bounce), the rest in the stops --
+with the steps at ``solver.max_step``.  Every time is the best of several runs in this
+process (7 for the stages, 5 for the loops): on a shared machine the best run is the least
+disturbed one.
 The per-call costs in a loop at one fixed state are lower bounds (warm caches and branch
 predictors).
 
     .venv/bin/python benchmarks/profile_pneumatic.py
 
 The last line is one JSON object: per case (``analytic``, ``fe_map``, ``heating``) the stage
-times [ms], the counts and the per-call costs [µs].
+times [ms], the counts and the per-call costs [µs]; ``analytic_limiting_states`` per phase
+the steps, RHS, Jacobians, steps at the largest step and the counts of the limiting states.
 """
 from __future__ import annotations
 
@@ -108,6 +115,96 @@ def phases(segments, stroke) -> dict:
     return dict(sorted(out.items()))
 
 
+STATE_NAMES = ("x", "v", "m1", "m2", "U1", "U2")
+#: how long after an impact a step counts as the bounce [s]
+BOUNCE = 0.04
+
+
+def limiting_states(system) -> dict:
+    """Per phase (stroke; bounce: the ``BOUNCE`` after the piston enters an end stop from a
+    stroke; rest: the rest of the time in the stops and before the first stroke) the steps,
+    right-hand sides, Jacobians, steps at ``solver.max_step`` and how often each dynamic state
+    has the largest term |ERROR_CONST·d_i/scale_i| of the error norm of an accepted step.
+
+    The loop is :func:`sealsim.pneumatic.integrate.run_interval`'s, in Python, calling the
+    same compiled start/step/locate/event functions (so the same steps; the caller checks the
+    totals against the compiled driver's); d (the step's Newton correction) and the scale
+    are read from the solver's workspace after each step."""
+    case = system.case
+    rtol = case.solver.rtol
+    atol = system.tolerances(rtol)
+    n, ndyn = system.n_states, system.n_dynamic
+    ws = bdf.workspace(n, ndyn, rtol, atol, case.solver.max_step)
+    work = (np.zeros((system.n_diag, 1)), system.tolerances(1.0)[:ndyn].copy(), np.zeros(n),
+            np.zeros(n), np.array([0.1 * atol[1]]), np.zeros(n))
+    o_d, o_scale = bdf._offsets(n, ndyn)[6:8]
+    w, iv = ws[0], ws[1]
+    names = list(STATE_NAMES) + [f"state {j}" for j in range(len(STATE_NAMES), ndyn)]
+    y, t = system.initial_state(), 0.0
+    mode = integrate._initial_mode(system, t, y)
+    end = system.duration
+    breaks = sorted({float(a) for a in system.spool.arrivals if 0.0 < a < end} | {end})
+    stroke, max_step = system.stroke, float(case.solver.max_step)
+    out: dict = {}
+    impact, was_in_stroke = -np.inf, None
+    for t_next in breaks:
+        while t < t_next:
+            args = (mode, system.tables, work)
+            integrate._bdf_start(ws, t, y, t_next, args)
+            direction = -1.0 if mode in (rhs.FORWARD, rhs.BACKWARD) else \
+                (1.0 if mode == rhs.STICK else 0.0)
+            g_old = integrate._event(t, y, args) if direction else 1.0
+            event = False
+            while True:
+                order, nfev, njev = iv[bdf.I_ORDER], iv[bdf.I_NFEV], iv[bdf.I_NJEV]
+                if integrate._bdf_step(ws, args) != bdf.OK:
+                    raise RuntimeError("step failed")
+                t_new, y_new = w[bdf.S_T], ws[2]
+                terms = np.abs(bdf.ERROR_CONST[order] * w[o_d:o_d + ndyn]
+                               / w[o_scale:o_scale + ndyn])
+                in_stroke = 0.0 <= y_new[0] <= stroke
+                if was_in_stroke and not in_stroke:
+                    impact = t_new
+                was_in_stroke = in_stroke
+                phase = "stroke" if in_stroke else (
+                    "bounce" if t_new <= impact + BOUNCE else "rest")
+                row = out.setdefault(phase, {"steps": 0, "rhs": 0, "jacobians": 0,
+                                             "at_max_step": 0, "limited_by": {}})
+                row["steps"] += 1
+                row["rhs"] += int(iv[bdf.I_NFEV] - nfev)
+                row["jacobians"] += int(iv[bdf.I_NJEV] - njev)
+                row["at_max_step"] += int(abs(w[bdf.S_T] - w[bdf.S_T_OLD] - max_step)
+                                          <= 1e-12 * max_step)
+                name = names[int(np.argmax(terms))]
+                row["limited_by"][name] = row["limited_by"].get(name, 0) + 1
+                if direction:
+                    g_new = integrate._event(t_new, y_new, args)
+                    if (direction > 0 and g_old <= 0.0 <= g_new) or (
+                            direction < 0 and g_old >= 0.0 >= g_new):
+                        t_stop = integrate._bdf_locate(ws, args, g_old, g_new, work[5])
+                        event = True
+                    g_old = g_new
+                if event:
+                    bdf.dense(ws, t_stop, y)
+                    t = t_stop
+                    break
+                if t_new >= t_next:
+                    y[:] = y_new
+                    t = t_new
+                    break
+            if event:
+                if mode in (rhs.FORWARD, rhs.BACKWARD):
+                    y[1] = 0.0
+                    mode = integrate._next_mode_at_rest(t, y, (mode, system.tables, work))
+                else:
+                    hold, _ = integrate._margin(t, y, args)
+                    mode = rhs.FORWARD if hold > 0 else rhs.BACKWARD
+    for row in out.values():
+        row["limited_by"] = dict(sorted(row["limited_by"].items(), key=lambda kv: -kv[1]))
+    totals = (sum(r["steps"] for r in out.values()), int(iv[bdf.I_NFEV]), int(iv[bdf.I_NJEV]))
+    return {"phases": out, "totals": totals}
+
+
 def profile(case, base_dir) -> dict:
     seals = build_seals(case, base_dir)
     simulate(case, seals)                             # compiled code loaded
@@ -167,6 +264,23 @@ def main() -> None:
              "fe_map": _case(SIMULATED, FE_EXAMPLE),
              "heating": _case(SIMULATED, thermal=ThermalModel())}
     out = {}
+    seals = build_seals(cases["analytic"], EXAMPLE.parent)
+    system = PneumaticSystem(cases["analytic"], seals)
+    limits = limiting_states(system)
+    _, _, counters = _integrate_counting(system)
+    compiled = (int(counters[bdf.I_NSTEPS]), int(counters[bdf.I_NFEV]),
+                int(counters[bdf.I_NJEV]))
+    if limits["totals"] != compiled:
+        raise RuntimeError(f"the Python copy of the driver took {limits['totals']} (steps, "
+                           f"RHS, Jacobians), the compiled driver {compiled}")
+    print(f"analytic: the state with the largest error term per accepted step ({compiled[0]} "
+          f"steps, the compiled driver's), by phase (bounce: {BOUNCE * 1e3:.0f} ms after an "
+          "impact on an end stop):")
+    for phase, row in limits["phases"].items():
+        print(f"    {phase:7s}: {row['steps']:5d} steps, {row['rhs']:5d} RHS, "
+              f"{row['jacobians']:4d} Jacobians, {row['at_max_step']:3d} at max_step; "
+              "limited by " + ", ".join(f"{k} {v}" for k, v in row["limited_by"].items()))
+    out["analytic_limiting_states"] = limits["phases"]
     for label, case in cases.items():
         p = profile(case, EXAMPLE.parent)
         out[label] = {k: round(v, 3) if isinstance(v, float) else v for k, v in p.items()

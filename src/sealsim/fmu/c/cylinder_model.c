@@ -231,7 +231,8 @@ static double iso6358_mass_flow(double p1, double p2, double t1, double cond, do
                                 double m, double beta) {
     double r = fmin(fmax(p2 / p1, 0.0), 1.0);
     double e = (fmin(fmax(r, bcrit), beta) - bcrit) / (1.0 - bcrit);
-    double phi = pow(1.0 - e * e, m) * fmin((1.0 - r) / (1.0 - beta), 1.0);
+    double q = 1.0 - e * e;        /* valve.subsonic_power: sqrt for m = 0.5, as numba */
+    double phi = (m == 0.5 ? sqrt(q) : pow(q, m)) * fmin((1.0 - r) / (1.0 - beta), 1.0);
     double g = cond * ANR_DENSITY * p1 * sqrt(ANR_TEMPERATURE / t1) * phi;
     return g * (p1 > p2);
 }
