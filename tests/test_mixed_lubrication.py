@@ -192,6 +192,20 @@ def test_load_share_is_the_root_a_plain_bisection_finds(log_film, log_pressure, 
     assert float(film) == pytest.approx(h0 / np.sqrt(1.0 - float(share)), rel=1e-9)
 
 
+def test_compiled_interpolation_is_numpys():
+    # the compiled root finder reads F_3/2 from the table as asperity_pressure does with
+    # np.interp: the same value to the last bit (grid points, cells, both ends, beyond them)
+    from sealsim.tribology.contact import _GW_GRID, _LOG_F32
+    from sealsim.tribology.mixed_lubrication import _interp
+
+    rng = np.random.default_rng(7)
+    x = np.concatenate([rng.uniform(-31.0, 13.0, 20000), _GW_GRID[::97], _GW_GRID[[0, -1]],
+                        np.nextafter(_GW_GRID[1:50], -np.inf), [-1e9, 1e9]])
+    ours = np.array([_interp(v, _GW_GRID, _LOG_F32) for v in x])
+    assert np.array_equal(ours, np.interp(x, _GW_GRID, _LOG_F32))
+    assert np.isnan(_interp(np.nan, _GW_GRID, _LOG_F32))
+
+
 def test_a_starved_inlet_passes_what_arrives_and_no_more():
     # Mass conservation: a layer h_s on the counter surface brings u·h_s; the contact passes
     # u·h*/2.  Where the flooded film would pass more, the starved contact passes exactly the

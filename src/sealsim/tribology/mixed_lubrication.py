@@ -72,11 +72,15 @@ References
 
 from __future__ import annotations
 
+import math
 from typing import NamedTuple
 
 import numpy as np
+from numba import njit
 
 from sealsim.tribology.contact import (
+    _GW_GRID,
+    _LOG_F32,
     DEFAULT_ROUGHNESS_DENSITY,
     DEFAULT_ROUGHNESS_SLOPE,
     asperity_pressure,
@@ -104,41 +108,84 @@ def _lift_at_load_share(film_ratio, dry, roughness, modulus, peak_pressure, args
 
     G strictly increasing and nearly linear in t (slope >= 2: α falls as s grows), bracketed
     by ln k (α >= 0) and ln(k + 12) (α ≈ 0 twelve σ above the dry position).  Bracketed regula
-    falsi with the Illinois modification (Dowell & Jarratt, BIT 11 (1971) 168), vectorised:
-    superlinear on the nearly linear G, and never leaves its bracket.  k = 0 gives s = 0."""
-    k = np.asarray(film_ratio, dtype=float)
-    positive = k > 0.0
-    with np.errstate(divide="ignore"):
-        target = 2.0 * np.log(k)
+    falsi with the Illinois modification (Dowell & Jarratt, BIT 11 (1971) 168): superlinear on
+    the nearly linear G, and never leaves its bracket.  k = 0 gives s = 0.  Compiled, one root
+    per point (:func:`_lift_points`): as numpy array operations over the points the friction
+    table of a fit spent most of its time in numpy's per-call overhead."""
+    poisson, roughness_density, roughness_slope = args
+    k, dry, sigma, e, pmax = np.broadcast_arrays(
+        *(np.asarray(a, dtype=float) for a in (film_ratio, dry, roughness, modulus,
+                                               peak_pressure)))
+    # asperity_pressure's factor of F_3/2, its operations in its order
+    stiffness = 4.0 / 3.0 * (e / (1.0 - poisson**2)) * roughness_density * np.sqrt(
+        roughness_slope)
+    out = np.empty(k.size)
+    _lift_points(k.ravel(), dry.ravel(), sigma.ravel(), stiffness.ravel(), pmax.ravel(),
+                 _GW_GRID, _LOG_F32, _MAX_ITERATIONS, out)
+    return out.reshape(k.shape)
 
-    def excess(t):
-        share = asperity_pressure((dry + np.exp(t)) * roughness, roughness, modulus,
-                                  *args) / peak_pressure
-        with np.errstate(divide="ignore", invalid="ignore"):
-            return 2.0 * t + np.log1p(-np.minimum(share, 1.0)) - target
 
-    with np.errstate(divide="ignore"):
-        lo, hi = np.log(k), np.log(np.maximum(k, 0.0) + 12.0)
-    f_lo, f_hi = excess(lo), excess(hi)
-    side = np.zeros(k.shape, dtype=np.int8)     # which end was kept last time (Illinois)
-    for _ in range(_MAX_ITERATIONS):
-        open_ = positive & np.isfinite(lo) & (hi - lo > 1e-13) & (f_lo != 0.0) & (f_hi != 0.0)
-        if not open_.any():
-            break
-        with np.errstate(invalid="ignore", divide="ignore"):
+@njit(cache=True)
+def _interp(x, grid, values):
+    """np.interp(x, grid, values) of one x on an increasing, equally spaced grid."""
+    n = grid.size
+    if x != x:
+        return x
+    if x <= grid[0]:
+        return values[0]
+    if x >= grid[n - 1]:
+        return values[n - 1]
+    j = min(max(int((x - grid[0]) / (grid[1] - grid[0])), 0), n - 2)
+    while j < n - 2 and grid[j + 1] <= x:      # the cell np.interp's search finds
+        j += 1
+    while j > 0 and grid[j] > x:
+        j -= 1
+    slope = (values[j + 1] - values[j]) / (grid[j + 1] - grid[j])
+    return slope * (x - grid[j]) + values[j]
+
+
+@njit(cache=True)
+def _excess(t, target, dry, sigma, stiffness, pmax, grid, log_f32):
+    """G(t) of :func:`_lift_at_load_share` with α from :func:`~.contact.asperity_pressure`."""
+    lam = (dry + math.exp(t)) * sigma / sigma
+    f32 = 0.0 if lam > grid[grid.size - 1] else math.exp(_interp(lam, grid, log_f32))
+    share = stiffness * f32 / pmax
+    if share >= 1.0:
+        share = 1.0
+    return 2.0 * t + math.log1p(-share) - target
+
+
+@njit(cache=True)
+def _lift_points(k, dry, sigma, stiffness, pmax, grid, log_f32, max_iterations, out):
+    """The lift of :func:`_lift_at_load_share` point by point into ``out``."""
+    for i in range(k.size):
+        if not k[i] > 0.0:
+            out[i] = 0.0
+            continue
+        target = 2.0 * math.log(k[i])
+        lo, hi = math.log(k[i]), math.log(k[i] + 12.0)
+        f_lo = _excess(lo, target, dry[i], sigma[i], stiffness[i], pmax[i], grid, log_f32)
+        f_hi = _excess(hi, target, dry[i], sigma[i], stiffness[i], pmax[i], grid, log_f32)
+        side = 0                    # which end was kept last time (Illinois)
+        for _ in range(max_iterations):
+            if not (math.isfinite(lo) and hi - lo > 1e-13 and f_lo != 0.0 and f_hi != 0.0):
+                break
             t = lo - f_lo * (hi - lo) / (f_hi - f_lo)
-        t = np.where(np.isfinite(t) & (t > lo) & (t < hi), t, 0.5 * (lo + hi))
-        f = excess(t)
-        below = open_ & (f < 0.0)
-        above = open_ & ~below
-        lo, f_lo = np.where(below, t, lo), np.where(below, f, f_lo)
-        hi, f_hi = np.where(above, t, hi), np.where(above, f, f_hi)
-        # an end kept twice in a row has its value halved, so the next point moves past it
-        f_hi = np.where(below & (side == 1), 0.5 * f_hi, f_hi)
-        f_lo = np.where(above & (side == -1), 0.5 * f_lo, f_lo)
-        side = np.where(below, 1, np.where(above, -1, side)).astype(np.int8)
-    t = np.where(f_lo == 0.0, lo, np.where(f_hi == 0.0, hi, 0.5 * (lo + hi)))
-    return np.where(positive, np.exp(t), 0.0)
+            if not (math.isfinite(t) and lo < t < hi):
+                t = 0.5 * (lo + hi)
+            f = _excess(t, target, dry[i], sigma[i], stiffness[i], pmax[i], grid, log_f32)
+            if f < 0.0:
+                lo, f_lo = t, f
+                if side == 1:       # an end kept twice in a row has its value halved
+                    f_hi *= 0.5
+                side = 1
+            else:
+                hi, f_hi = t, f
+                if side == -1:
+                    f_lo *= 0.5
+                side = -1
+        t = lo if f_lo == 0.0 else (hi if f_hi == 0.0 else 0.5 * (lo + hi))
+        out[i] = math.exp(t)
 
 
 def ihl_load_share(full_film, peak_pressure, roughness, asperity_modulus, poisson=0.5,
