@@ -131,12 +131,8 @@ def limiting_states(system) -> dict:
     totals against the compiled driver's); d (the step's Newton correction) and the scale
     are read from the solver's workspace after each step."""
     case = system.case
-    rtol = case.solver.rtol
-    atol = system.tolerances(rtol)
     n, ndyn = system.n_states, system.n_dynamic
-    ws = bdf.workspace(n, ndyn, rtol, atol, case.solver.max_step)
-    work = (np.zeros((system.n_diag, 1)), system.tolerances(1.0)[:ndyn].copy(), np.zeros(n),
-            np.zeros(n), np.array([0.1 * atol[1]]), np.zeros(n))
+    ws, work = integrate.solver_workspace(system)
     o_d, o_scale = bdf._offsets(n, ndyn)[6:8]
     w, iv = ws[0], ws[1]
     names = list(STATE_NAMES) + [f"state {j}" for j in range(len(STATE_NAMES), ndyn)]
@@ -224,9 +220,7 @@ def profile(case, base_dir) -> dict:
     y = seg.y0.copy()
     y[1] = 0.05 * seg.mode
     t = 0.5 * (seg.t0 + seg.t1)
-    atol = system.tolerances(case.solver.rtol)
-    work = (np.zeros((system.n_diag, 1)), system.tolerances(1.0)[:ndyn].copy(), np.zeros(n),
-            np.zeros(n), np.array([0.1 * atol[1]]), np.zeros(n))
+    _, work = integrate.solver_workspace(system)
     args = (seg.mode, system.tables, work)
     dy, jac = np.zeros(n), np.zeros((n, ndyn))
     count = 20000

@@ -423,6 +423,18 @@ def run_interval(t, t_end, y, mode, tables, work, ws, grid, k, samples, sample_m
     return DONE, t, mode, k, nseg
 
 
+def solver_workspace(system) -> tuple[tuple, tuple]:
+    """The BDF workspace (:func:`sealsim.ode.bdf.workspace`) and the right-hand side's work
+    arrays of a run of ``system``: the ``ws`` and ``work`` of :func:`run_interval`."""
+    rtol = system.case.solver.rtol
+    atol = system.tolerances(rtol)
+    n, ndyn = system.n_states, system.n_dynamic
+    ws = bdf.workspace(n, ndyn, rtol, atol, system.case.solver.max_step)
+    work = (np.zeros((system.n_diag, 1)), system.tolerances(1.0)[:ndyn].copy(), np.zeros(n),
+            np.zeros(n), np.array([0.1 * atol[1]]), np.zeros(n))
+    return ws, work
+
+
 def _integrate_compiled(system, progress, sampler) -> list[Segment]:
     """All valve intervals with :func:`run_interval`; fills ``sampler`` (a
     :class:`.results.Sampler`) with the samples on its grid; any other ``on_segment`` callable
@@ -433,14 +445,9 @@ def _integrate_compiled(system, progress, sampler) -> list[Segment]:
             for seg in segments:
                 sampler(seg)
         return segments
-    case = system.case
     end = system.duration
-    rtol = case.solver.rtol
-    atol = system.tolerances(rtol)
-    n, ndyn = system.n_states, system.n_dynamic
-    ws = bdf.workspace(n, ndyn, rtol, atol, case.solver.max_step)
-    work = (np.zeros((system.n_diag, 1)), system.tolerances(1.0)[:ndyn].copy(), np.zeros(n),
-            np.zeros(n), np.array([0.1 * atol[1]]), np.zeros(n))
+    n = system.n_states
+    ws, work = solver_workspace(system)
     grid = sampler.grid
     samples = sampler.buffer(n)
     sample_modes = np.zeros(grid.size, dtype=np.int64)
