@@ -55,15 +55,6 @@ def case(max_step="4 s", min_step="0.25 s"):
         "numerics": {"max_time_step": max_step, "min_time_step": min_step}})
 
 
-def timed(function, repeat=3):
-    best = np.inf
-    for _ in range(repeat):
-        start = time.perf_counter()
-        result = function()
-        best = min(best, time.perf_counter() - start)
-    return best, result
-
-
 def timed_cpu(function, repeat):
     """Best CPU time and best wall time [s] of ``repeat`` calls, and the last result."""
     cpu = wall = np.inf
@@ -73,6 +64,12 @@ def timed_cpu(function, repeat):
         cpu = min(cpu, time.process_time() - start_cpu)
         wall = min(wall, time.perf_counter() - start)
     return cpu, wall, result
+
+
+def timed(function, repeat=3):
+    """Best wall time [s] of ``repeat`` calls, and the last result."""
+    _, wall, result = timed_cpu(function, repeat)
+    return wall, result
 
 
 def transient_runs(repeat: int) -> dict:
