@@ -57,10 +57,12 @@ from sealsim.friction.base import ContactInputs, FrictionLaw, validate_parameter
 from sealsim.measurements import (
     Measurement,
     friction_level,
+    level_drift,
     position_velocity_ratio,
     read_measurement,
     sliding_phases,
     smooth_derivative,
+    stroke_levels,
 )
 from sealsim.pneumatic.friction_tables import (
     LAW_TABLE_FIELDS,
@@ -385,16 +387,30 @@ def run_metrics(run: PreparedRun, predicted: np.ndarray) -> dict[str, Any]:
     ``F_measured_N`` / ``F_predicted_N``: offset-free friction level of the sliding phases
     (half the difference of the medians in the two directions); ``rmse_N`` and ``r2`` over all
     samples of the offset-free friction time series, measured and model
-    (:func:`offset_free`).
+    (:func:`offset_free`); ``F_measured_first_N`` / ``F_measured_last_N``: the mean level of
+    the first and the last quarter of the stroke pairs, and ``drift_measured_rel`` /
+    ``drift_predicted_rel`` the relative change between them, measured and model
+    (:func:`~sealsim.measurements.stroke_levels`, :func:`~sealsim.measurements.level_drift`;
+    None with fewer than two stroke pairs). A steady contact law drifts only as the run's
+    pressure and speed do; a measured friction that climbs from stroke to stroke (grease wiped
+    off, wear, heating, creep) is compared by its median with the model's steady level.
     """
     f_pred, _ = friction_level(predicted, run.phases)
     agreement = compare_signals(run.friction, offset_free(predicted, run.phases))
+    pairs = stroke_levels(run.friction, run.phases)[1]
+    drifts = pairs.size >= 2
+    measured = level_drift(pairs)
+    model = level_drift(stroke_levels(predicted, run.phases)[1])
     return {"role": run.spec.role,
             "pressure_bar": (float(np.median(run.pressure)) / 1e5 if run.pressure_known
                              else None),
             "F_measured_N": run.level, "F_predicted_N": f_pred,
             "rel_error": (f_pred - run.level) / run.level if run.level else None,
-            "rmse_N": agreement["rmse"], "r2": agreement["r2"]}
+            "rmse_N": agreement["rmse"], "r2": agreement["r2"],
+            "F_measured_first_N": measured[0] if drifts else None,
+            "F_measured_last_N": measured[1] if drifts else None,
+            "drift_measured_rel": measured[2] if drifts else None,
+            "drift_predicted_rel": model[2] if drifts else None}
 
 
 # -- the fit ------------------------------------------------------------------------------------

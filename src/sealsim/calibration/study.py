@@ -44,7 +44,7 @@ from sealsim.errors import InputError
 from sealsim.friction import make_law
 from sealsim.measurements import friction_level
 
-__all__ = ["FrictionFitStudy", "fit_run_warnings", "friction_fit_study", "load_fit_case",
+__all__ = ["FrictionFitStudy", "drift_warnings", "fit_run_warnings", "friction_fit_study", "load_fit_case",
            "repeat_conditions"]
 
 _LOADS = {"theta"}     # laws that need F_N and b from a contact map
@@ -155,6 +155,7 @@ def friction_fit_study(case: FrictionFitCase, base_dir: str | Path,
     proportional_baseline(runs, report["measurements"])
     report["conditions"] = repeat_conditions(case, report["measurements"])
     result.warnings.extend(fit_run_warnings(report["conditions"], report["measurements"]))
+    result.warnings.extend(drift_warnings(report["measurements"]))
     diagnostics = {
         "status": result.status, "failure": result.failure, "warnings": result.warnings,
         "stages": result.stages, "parameter_names": result.names,
@@ -222,6 +223,43 @@ def repeat_conditions(case: FrictionFitCase, measurements: dict) -> dict:
                        **repeat_scatter([e["F_measured_N"] for e in entries],
                                         [e["F_predicted_N"] for e in entries])}
     return table
+
+
+def drift_warnings(measurements: dict, limit: float = 0.10) -> list[str]:
+    """A warning naming the runs whose measured friction level changes over the run by more
+    than ``limit`` (relative, first to last quarter of the stroke pairs, report.json
+    ``drift_measured_rel``) and by more than ``limit`` more than the model's does: such a run
+    is not at one steady level, and its median is what the model's steady level is compared
+    with (on the TU Delft rig the X-ring's 7 bar run climbs by 18 %, its 1 and 3 bar runs
+    stay within 0.3 %; docs/guide/calibration.md, "Time dependence").
+
+    Examples
+    --------
+    >>> runs = {"7 bar": {"F_measured_first_N": 14.5, "F_measured_last_N": 17.1,
+    ...                   "drift_measured_rel": 0.18, "drift_predicted_rel": 0.008},
+    ...         "1 bar": {"F_measured_first_N": 4.56, "F_measured_last_N": 4.57,
+    ...                   "drift_measured_rel": 0.003, "drift_predicted_rel": 0.0}}
+    >>> print(drift_warnings(runs)[0][:81])
+    1 measured run changes its friction level by more than 10 % from its first to its
+    """
+    drifting = []
+    for name, m in measurements.items():
+        measured, model = m.get("drift_measured_rel"), m.get("drift_predicted_rel")
+        if measured is None or model is None or not np.isfinite(measured):
+            continue
+        if abs(measured) > limit and abs(measured - model) > limit:
+            drifting.append(f"{name!r} {round(100 * measured):+d} % "
+                            f"({m['F_measured_first_N']:.3g} → {m['F_measured_last_N']:.3g} N; "
+                            f"model {round(100 * model):+d} %)")
+    if not drifting:
+        return []
+    runs = ("run changes its", "its") if len(drifting) == 1 else ("runs change their", "their")
+    return [f"{len(drifting)} measured {runs[0]} friction level by more than "
+            f"{100 * limit:.0f} % from {runs[1]} first to {runs[1]} last strokes, the model's "
+            f"steady contact does not: "
+            f"{'; '.join(drifting)}. Not one steady level (grease wiped off, wear, heating or "
+            "creep): the median over all strokes is what the model is compared with "
+            "(report.json: drift_measured_rel)"]
 
 
 def fit_run_warnings(conditions: dict, measurements: dict, limit: float = 1.0) -> list[str]:

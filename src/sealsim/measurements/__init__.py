@@ -28,11 +28,13 @@ from sealsim.measurements.readers import (
 from sealsim.measurements.signals import (
     SlidingPhase,
     friction_level,
+    level_drift,
     phase_mask,
     position_velocity_ratio,
     sliding_phases,
     smooth_derivative,
     step_averages,
+    stroke_levels,
 )
 
 __all__ = [
@@ -42,6 +44,7 @@ __all__ = [
     "Measurement",
     "SlidingPhase",
     "friction_level",
+    "level_drift",
     "phase_mask",
     "position_velocity_ratio",
     "read_measurement",
@@ -50,4 +53,5 @@ __all__ = [
     "sliding_phases",
     "smooth_derivative",
     "step_averages",
+    "stroke_levels",
 ]

@@ -19,6 +19,7 @@ from typing import Any
 
 from sealsim.errors import InputError
 from sealsim.tables import QUANTITIES, ColumnSpec, Measurement, read_table
+from sealsim.units import to_si
 
 __all__ = [
     "FORMATS",
@@ -96,7 +97,8 @@ def read_measurement(path: str | Path, *, format: str | None = None,  # noqa: A0
     columns : list of ColumnSpec, optional
         Column mapping for :func:`read_table` (when no format is given).
     options : dict, optional
-        Options of the named format, e.g. ``{"bore": 0.025}``.
+        Options of the named format, quantities with their unit or SI numbers, e.g.
+        ``{"bore": "25 mm"}`` or ``{"bore": 0.025}``.
     name : str, optional
         Label of the run.
     **table_options
@@ -115,6 +117,8 @@ def read_measurement(path: str | Path, *, format: str | None = None,  # noqa: A0
         if missing:
             raise InputError(f"measurement {str(path)!r}: format {format!r} needs "
                              f"{', '.join(missing)} (e.g. bore = '25 mm')")
+        for key, dimension in required.items():
+            options[key] = to_si(options[key], dimension, f"measurement {str(path)!r}: {key}")
         return reader(path, name=name, **options,
                       **{k: v for k, v in table_options.items() if k == "skip_rows"})
     return read_table(path, columns, name=name, **table_options)

@@ -16,11 +16,13 @@ from sealsim.errors import InputError
 __all__ = [
     "SlidingPhase",
     "friction_level",
+    "level_drift",
     "phase_mask",
     "position_velocity_ratio",
     "sliding_phases",
     "smooth_derivative",
     "step_averages",
+    "stroke_levels",
 ]
 
 
@@ -248,6 +250,92 @@ def friction_level(friction, phases):
     hi = float(np.median(np.concatenate(up)))
     lo = float(np.median(np.concatenate(down)))
     return 0.5 * (hi - lo), 0.5 * (hi + lo)
+
+
+def stroke_levels(friction, phases):
+    """Offset-free friction level of each pair of consecutive strokes.
+
+    Consecutive sliding phases of one direction form a stroke (a stroke that slows below the
+    sliding threshold on the way is split into phases); each pair of neighbouring strokes in
+    opposite directions gives a level as :func:`friction_level` does for the whole run::
+
+        F_k = (median F over the forward stroke − median F over the backward stroke) / 2
+
+    so an offset of the force signal cancels in every pair, and a level that changes from
+    stroke to stroke (grease wiped off, wear, heating, creep) shows as a trend of F_k.
+
+    Parameters
+    ----------
+    friction : array_like
+        Friction force [N], sealsim's sign (the sign of the velocity when sliding).
+    phases : list of SlidingPhase
+        From :func:`sliding_phases`, in time order.
+
+    Returns
+    -------
+    (times, levels) : tuple of numpy.ndarray
+        Mid-time of each pair [s] and its level [N]; empty without a stroke in each direction.
+
+    Examples
+    --------
+    Two strokes each way on an offset of 1 N, the level growing from 4 to 5 N:
+
+    >>> f = np.array([5.0, 5.0, -3.0, -3.0, 5.5, 5.5, -3.5, -3.5])
+    >>> ph = [SlidingPhase(2 * k, 2 * k + 2, (-1) ** k, k, k + 1, 0.01 * (-1) ** k)
+    ...       for k in range(4)]
+    >>> stroke_levels(f, ph)[1].tolist()
+    [4.0, 4.25, 4.5]
+    """
+    f = np.asarray(friction, dtype=float)
+    strokes = []  # (direction, median friction, mid-time)
+    group: list = []
+    for phase in [*phases, None]:
+        if group and (phase is None or phase.direction != group[0].direction):
+            samples = np.concatenate([f[p.start:p.stop] for p in group])
+            strokes.append((group[0].direction, float(np.median(samples)),
+                            0.5 * (group[0].t_start + group[-1].t_stop)))
+            group = []
+        if phase is not None:
+            group.append(phase)
+    pairs = [(0.5 * (a[2] + b[2]), 0.5 * (a[1] - b[1]) * a[0])
+             for a, b in zip(strokes, strokes[1:])]
+    times = np.array([t for t, _ in pairs], dtype=float)
+    return times, np.array([level for _, level in pairs], dtype=float)
+
+
+def level_drift(levels, share=0.25):
+    """How much a run's friction level changes from its first strokes to its last.
+
+    The mean of the first and of the last ``share`` of the stroke-pair levels
+    (:func:`stroke_levels`; at least one pair each) and their relative change
+    ``(last − first) / first``: +0.29 means the run ends 29 % above where it started.
+
+    Parameters
+    ----------
+    levels : array_like
+        Stroke-pair levels [N] in time order.
+    share : float
+        Fraction of the pairs at each end, 0 < share <= 0.5.
+
+    Returns
+    -------
+    (first, last, relative) : tuple of float
+        [N], [N], [-]; NaN for all three without levels, ``relative`` NaN when ``first`` is 0.
+
+    Examples
+    --------
+    >>> first, last, relative = level_drift([4.0, 4.1, 4.9, 5.0], share=0.5)
+    >>> round(first, 2), round(last, 2), round(relative, 4)
+    (4.05, 4.95, 0.2222)
+    """
+    if not 0.0 < share <= 0.5:
+        raise InputError(f"level_drift: share must be in (0, 0.5], got {share!r}")
+    values = np.asarray(levels, dtype=float)
+    if values.size == 0:
+        return float("nan"), float("nan"), float("nan")
+    n = max(int(round(share * values.size)), 1)
+    first, last = float(np.mean(values[:n])), float(np.mean(values[-n:]))
+    return first, last, (last - first) / first if first else float("nan")
 
 
 def step_averages(time, setpoint, signals, window=30.0, tolerance=0.02):
