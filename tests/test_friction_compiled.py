@@ -154,10 +154,10 @@ def test_contact_law_rates_and_step_are_the_law_objects(contact_seal, bristles):
 
 
 def test_contact_steady_is_three_table_lookups_to_the_bit(contact_seal):
-    # contact_steady sums the sliding speed's cell and the slowest speed's node of both
-    # directions in one pass (steady_sums); each sum keeps the order of the kernel's own
-    # lookup (contact_table_point), so the three numbers are those lookups bit for bit: inside
-    # and outside the axes (clamped), below the slowest speed, at rest, both orientations
+    # the compiled contact_steady shares one cell search between its three sums; each is
+    # the kernel's own lookup (contact_table_point, what the law object's contact_steady
+    # calls three times) bit for bit: inside and outside the axes (clamped), below the
+    # slowest speed, at rest, both orientations
     from sealsim.friction.compiled import contact_steady
     from sealsim.friction.contact_table import contact_table_point
     from sealsim.friction.hybrid import contact_values

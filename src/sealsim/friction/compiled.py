@@ -30,7 +30,7 @@ from numba import njit
 
 from sealsim.errors import InputError
 from sealsim.friction import kernels as fk
-from sealsim.friction.contact_table import _ON_NODE, speed_cell, steady_sums, table_cell
+from sealsim.friction.contact_table import _ON_NODE, cell_sums, speed_cell, table_cell
 
 __all__ = ["LAW_CODES", "NO_TABLE", "contact_steady", "law_parameters", "law_rates", "law_step",
            "mass_step"]
@@ -105,15 +105,16 @@ def contact_steady(par, frow, fdata, temp, dp, orient, vv):
     (:meth:`sealsim.friction.theta.Theta.contact_steady`): π·D·(μ_b·L + V) in the stroke
     direction of orient·v, and π·D·μ_b times the larger asperity load of both directions at
     the table's slowest speed (its first node) -- the table lookups of
-    :func:`~sealsim.friction.contact_table.contact_table_point` sharing one cell search
-    and one pass over the cell (:func:`~sealsim.friction.contact_table.steady_sums`)."""
+    :func:`~sealsim.friction.contact_table.contact_table_point` sharing one cell search."""
     i, wa, j, wb = table_cell(frow, fdata, temp, dp)       # one cell search for all three
     speed = orient * vv
-    k, wc = 0, _ON_NODE
+    load = visc = 0.0
     if speed != 0.0:
         k, wc = speed_cell(frow, fdata, speed)
-    load, visc, up, down = steady_sums(frow, fdata, i, wa, j, wb, k, wc,
-                                       0 if speed > 0.0 else 2, speed != 0.0)
+        load, visc, _ = cell_sums(frow, fdata, i, wa, j, wb, k, wc, 0 if speed > 0.0 else 2,
+                                  False)
+    up, _, _ = cell_sums(frow, fdata, i, wa, j, wb, 0, _ON_NODE, 0, False)
+    down, _, _ = cell_sums(frow, fdata, i, wa, j, wb, 0, _ON_NODE, 2, False)
     circumference, mu = par[TH_CIRCUMFERENCE], par[TH_MU_B]
     return (circumference * (mu * load + visc), circumference * mu * max(up, down),
             circumference * visc)

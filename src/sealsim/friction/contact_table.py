@@ -46,7 +46,7 @@ from numba import njit
 from sealsim.errors import InputError
 
 __all__ = ["TABLE_VARIABLES", "SteadyFrictionTable", "cell_sums", "contact_table_point",
-           "hermite_basis", "locate_on_axis", "speed_cell", "steady_sums", "table_cell"]
+           "hermite_basis", "locate_on_axis", "speed_cell", "table_cell"]
 
 #: variables of the table, in the order of its last axis (see the module docstring)
 TABLE_VARIABLES = ("asperity_load_pos", "viscous_pos", "asperity_load_neg", "viscous_neg",
@@ -125,47 +125,6 @@ def cell_sums(row, data, i, wa, j, wb, k, wc, off, film):
                 if film:
                     thick += w * data[cell + 4 + off // 2]
     return load, visc, thick
-
-
-@njit(cache=True)
-def steady_sums(row, data, i, wa, j, wb, k, wc, off, sliding):
-    """(asperity load, viscous friction) of the stroke direction ``off`` (0: "+", 2: "−") in
-    cell (i, j, k) with the axis weights wa, wb, wc -- 0, 0 unless ``sliding`` -- and the
-    asperity loads of both directions at the slowest speed (its first node) in cell (i, j):
-    (load, viscous, load "+" at rest, load "−" at rest), what :func:`contact_steady
-    <sealsim.friction.compiled.contact_steady>` needs, in one pass over the cell.
-
-    Each sum takes its terms in the order of :func:`cell_sums` (the three sums of that
-    function give the same bits); in one pass the four sums' additions, each waiting for the
-    one before, overlap instead of running one after the other (contact_steady 2.3× faster in
-    a loop)."""
-    npr, nu, nv = row[1], row[2], row[3]
-    first = row[0] + npr + nu + (((i * (npr - 1) + j) * (nu - 1)) * 64) * nv  # speed cell 0
-    base = first + (k * 64) * nv
-    load = 0.0
-    visc = 0.0
-    up = 0.0
-    down = 0.0
-    for q0 in range(4):
-        w0 = wa[q0]
-        if w0 == 0.0:
-            continue
-        for q1 in range(4):
-            w01 = w0 * wb[q1]
-            if w01 == 0.0:
-                continue
-            node = first + ((q0 * 4 + q1) * 4) * nv        # the slowest speed: basis q2 = 0
-            up += w01 * data[node]
-            down += w01 * data[node + 2]
-            if sliding:
-                for q2 in range(4):
-                    w = w01 * wc[q2]
-                    if w == 0.0:
-                        continue
-                    cell = base + ((q0 * 4 + q1) * 4 + q2) * nv + off
-                    load += w * data[cell]
-                    visc += w * data[cell + 1]
-    return load, visc, up, down
 
 
 @njit(cache=True)

@@ -11,10 +11,9 @@
  * and forms each coefficient as HermiteGrid does -- the corner node's entry times the cell
  * widths of the differentiated axes, in axis order -- then sums in the kernel's order
  * (contact_table.cell_sums, terms of weight 0 skipped): the same operations, the same bits.
- * contact_steady (one cell search and one pass over the cell for the sliding speed and the
- * boundary level at the slowest speed) and theta_contact_level are the ports of
- * sealsim.friction.compiled.contact_steady and the kernel theta_contact_level of
- * sealsim.friction.kernels.  A test compares all three
+ * contact_steady (one cell search for the sliding speed and the boundary level at the slowest
+ * speed) and theta_contact_level are the ports of sealsim.friction.compiled.contact_steady
+ * and the kernel theta_contact_level of sealsim.friction.kernels.  A test compares all three
  * with the numba functions. */
 #include <math.h>
 
@@ -82,55 +81,6 @@ static void table_cell_sums(const long *row, const double *data, long i, const d
     }
 }
 
-/* contact_table.steady_sums on the node layout: the sliding speed's sums (load, viscous) of
- * direction off in cell (i, j, k) -- only if sliding -- and the asperity loads of both
- * directions at the slowest speed (speed cell 0, basis q2 = 0) in one pass, each sum in the
- * order of table_cell_sums (the same bits as three calls of it) */
-static void table_steady_sums(const long *row, const double *data, long i, const double *wa,
-                              long j, const double *wb, long k, const double *wc, long off,
-                              int sliding, double *load, double *visc, double *up,
-                              double *down) {
-    long nt = row[0], npr = row[1], nu = row[2], nv = row[3];
-    double h0 = data[i + 1] - data[i];
-    double h1 = data[nt + j + 1] - data[nt + j];
-    double h2 = data[nt + npr + k + 1] - data[nt + npr + k];
-    const double *nodes = data + nt + npr + nu;
-    double sl = 0.0, sv = 0.0, su = 0.0, sd = 0.0;
-    for (int q0 = 0; q0 < 4; q0++) {
-        double w0 = wa[q0];
-        if (w0 == 0.0) continue;
-        for (int q1 = 0; q1 < 4; q1++) {
-            double w01 = w0 * wb[q1];
-            if (w01 == 0.0) continue;
-            int mask01 = (q0 & 1) | (q1 & 1) << 1;
-            long corner = ((i + (q0 >> 1)) * npr + j + (q1 >> 1)) * nu;
-            const double *slow = nodes + (corner * 8 + mask01) * nv;
-            double cu = slow[0], cd = slow[2];
-            if (q0 & 1) { cu *= h0; cd *= h0; }
-            if (q1 & 1) { cu *= h1; cd *= h1; }
-            su += w01 * cu;
-            sd += w01 * cd;
-            if (!sliding) continue;
-            for (int q2 = 0; q2 < 4; q2++) {
-                double w = w01 * wc[q2];
-                if (w == 0.0) continue;
-                int mask = mask01 | (q2 & 1) << 2;
-                const double *node = nodes + ((corner + k + (q2 >> 1)) * 8 + mask) * nv;
-                double cl = node[off], cv = node[off + 1];
-                if (q0 & 1) { cl *= h0; cv *= h0; }
-                if (q1 & 1) { cl *= h1; cv *= h1; }
-                if (q2 & 1) { cl *= h2; cv *= h2; }
-                sl += w * cl;
-                sv += w * cv;
-            }
-        }
-    }
-    *load = sl;
-    *visc = sv;
-    *up = su;
-    *down = sd;
-}
-
 void contact_table_point(const long *row, const double *data, double temperature,
                          double pressure, double speed, double *load, double *visc,
                          double *film) {
@@ -149,19 +99,21 @@ void contact_table_point(const long *row, const double *data, double temperature
 void contact_steady(const long *row, const double *data, double temperature, double pressure,
                     double oriented_speed, double circumference, double boundary_friction,
                     double *steady, double *boundary, double *viscous) {
-    double a, b, wa[4], wb[4], wc[4] = {1.0, 0.0, 0.0, 0.0}, load, visc, up, down;
-    long k = 0;
+    static const double on_node[4] = {1.0, 0.0, 0.0, 0.0};
+    double a, b, wa[4], wb[4], load = 0.0, visc = 0.0, up, down, unused0, unused1;
     long i = table_locate(data, 0, row[0], temperature, &a);       /* one cell search */
     long j = table_locate(data, row[0], row[1], pressure, &b);
     table_basis(a, wa);
     table_basis(b, wb);
     if (oriented_speed != 0.0) {
-        double c;
-        k = table_locate(data, row[0] + row[1], row[2], log10(fabs(oriented_speed)), &c);
+        double c, wc[4];
+        long k = table_locate(data, row[0] + row[1], row[2], log10(fabs(oriented_speed)), &c);
         table_basis(c, wc);
+        table_cell_sums(row, data, i, wa, j, wb, k, wc, oriented_speed > 0.0 ? 0 : 2, 0, &load,
+                        &visc, &unused0);
     }
-    table_steady_sums(row, data, i, wa, j, wb, k, wc, oriented_speed > 0.0 ? 0 : 2,
-                      oriented_speed != 0.0, &load, &visc, &up, &down);
+    table_cell_sums(row, data, i, wa, j, wb, 0, on_node, 0, 0, &up, &unused0, &unused1);
+    table_cell_sums(row, data, i, wa, j, wb, 0, on_node, 2, 0, &down, &unused0, &unused1);
     *steady = circumference * (boundary_friction * load + visc);
     *boundary = circumference * boundary_friction * fmax(up, down);   /* see contact_steady */
     *viscous = circumference * visc;
