@@ -26,6 +26,14 @@ predictors).
 The last line is one JSON object: per case (``analytic``, ``fe_map``, ``heating``) the stage
 times [ms], the counts and the per-call costs [µs]; ``analytic_limiting_states`` per phase
 the steps, RHS, Jacobians, steps at the largest step and the counts of the limiting states.
+
+    .venv/bin/python benchmarks/profile_pneumatic.py --swap-laws
+
+adds two cases that separate the FE map from the friction law: cylinder_32_fe.toml differs
+from cylinder_32.toml in the rod seal's map *and* in both O-rings' friction (the contact
+friction tables of ``seal_contact`` instead of the lumped Θ law of ``pneumatic_demo``), so
+``fe_map_lumped_law`` is the FE map with the analytic example's friction laws and
+``analytic_map_contact_law`` the analytic maps with the FE example's.
 """
 from __future__ import annotations
 
@@ -252,11 +260,27 @@ def profile(case, base_dir) -> dict:
     }
 
 
+def swapped_law_cases() -> dict:
+    """The FE example with the analytic example's friction laws and the other way round: each
+    seal takes the ``friction`` of the seal of the same name in the other example (the law
+    with its parameters as loaded), keeping its own contact map."""
+    analytic, fe = _case(SIMULATED), _case(SIMULATED, FE_EXAMPLE)
+
+    def swap(case, donor):
+        friction = {s.name: s.friction for s in donor.seals}
+        return case.model_copy(update={"seals": [
+            s.model_copy(update={"friction": friction[s.name]}) for s in case.seals]})
+    return {"fe_map_lumped_law": swap(fe, analytic),
+            "analytic_map_contact_law": swap(analytic, fe)}
+
+
 def main() -> None:
     print(f"load average (1 min) {os.getloadavg()[0]:.2f} on {os.cpu_count()} cores")
     cases = {"analytic": _case(SIMULATED),
              "fe_map": _case(SIMULATED, FE_EXAMPLE),
              "heating": _case(SIMULATED, thermal=ThermalModel())}
+    if "--swap-laws" in sys.argv[1:]:
+        cases.update(swapped_law_cases())
     out = {}
     seals = build_seals(cases["analytic"], EXAMPLE.parent)
     system = PneumaticSystem(cases["analytic"], seals)

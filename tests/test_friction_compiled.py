@@ -153,6 +153,35 @@ def test_contact_law_rates_and_step_are_the_law_objects(contact_seal, bristles):
                                    rtol=1e-12, atol=1e-18)
 
 
+def test_contact_steady_is_three_table_lookups_to_the_bit(contact_seal):
+    # the compiled contact_steady shares one cell search between its three sums; each is
+    # the kernel's own lookup (contact_table_point, what the law object's contact_steady
+    # calls three times) bit for bit: inside and outside the axes (clamped), below the
+    # slowest speed, at rest, both orientations
+    from sealsim.friction.compiled import contact_steady
+    from sealsim.friction.contact_table import contact_table_point
+    from sealsim.friction.hybrid import contact_values
+
+    law, inputs = contact_seal
+    par, _, frow, fdata = contact_values(law, inputs)
+    table = inputs.contact_table
+    slow = table.speed[0]
+    circumference, mu = par[15], par[13]
+    rng = np.random.default_rng(11)
+    (t_lo, t_hi), (p_lo, p_hi) = table.ranges["temperature"], table.ranges["pressure"]
+    for k in range(400):
+        temp = rng.uniform(t_lo - 20.0, t_hi + 20.0)
+        dp = rng.uniform(p_lo - 1e5, p_hi + 1e5) if k % 5 else table.pressure[k % 3]
+        v = 0.0 if k % 17 == 0 else rng.choice([-1.0, 1.0]) * 10.0 ** rng.uniform(-9.0, 1.5)
+        orient = rng.choice([-1.0, 1.0])
+        load, visc, _ = contact_table_point(frow, fdata, temp, dp, orient * v)
+        up = contact_table_point(frow, fdata, temp, dp, slow)[0]
+        down = contact_table_point(frow, fdata, temp, dp, -slow)[0]
+        want = (circumference * (mu * load + visc), circumference * mu * max(up, down),
+                circumference * visc)
+        assert contact_steady(par, frow, fdata, temp, dp, orient, v) == want
+
+
 def test_compiled_stepper_carries_the_contact_table(contact_seal):
     # the stick/slip stepper on the seal's own contact: the compiled stepper and the
     # vectorised one of sealsim.friction.hybrid (law object, table.evaluate) agree; the
