@@ -11,6 +11,7 @@ import tomllib
 from pathlib import Path
 
 import numpy as np
+import pandas as pd
 import pytest
 import tomli_w
 from hypothesis import assume, given
@@ -462,6 +463,12 @@ def test_tudelft_example_runs_through_the_cli(example_run):
     report = json.loads((out / "report.json").read_text())
     assert set(report) == {"parameters", "measurements", "conditions"}
     assert report["conditions"] == {}          # no repeated tests in this case
+    # the per-run numbers as a table too, row for row
+    table = pd.read_csv(out / "measurements.csv").set_index("measurement")
+    for name, m in report["measurements"].items():
+        assert table.loc[name, "drift_measured_rel"] == pytest.approx(m["drift_measured_rel"],
+                                                                      rel=1e-5)
+        assert table.loc[name, "F_measured_N"] == pytest.approx(m["F_measured_N"], rel=1e-5)
     assert set(report["measurements"]) == {"1 bar", "7 bar"}
     for m in report["measurements"].values():
         assert set(m) == {"role", "pressure_bar", "F_measured_N", "F_predicted_N",

@@ -116,6 +116,9 @@ def run_friction_fit_file(path: str | Path, out: str | Path, force: bool = False
         folder.write_json("report.json", study.report)
         folder.write_json("fit.json", study.diagnostics)
         folder.write_csv("predictions.csv", study.predictions_frame(), float_format="%.8g")
+        folder.write_csv("measurements.csv", pd.DataFrame(
+            [{"measurement": name, **m} for name, m in study.report["measurements"].items()]),
+            float_format="%.6g")
         for r, slug in zip(study.runs, _unique_slugs([r.name for r in study.runs])):
             folder.savefig(f"overlay_{slug}.png",
                            plot_overlay(r.name, r.spec.role, r.time, r.position, r.friction,
