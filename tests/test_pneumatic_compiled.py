@@ -186,9 +186,9 @@ def test_hermite_kernel_is_the_structure_packages_interpolant():
 
 def test_the_column_evaluation_is_compiled_once_and_called():
     """The Jacobian's compiled functions call :func:`rhs.evaluate_column` instead of inlining
-    a copy of it: numba types, lowers and optimises every inlined copy again, 28-34 s of CPU
-    each on an empty cache (every CI run); the three copies were 84 s of the cylinder chain's
-    166 s (numba's compile events, cylinder_32.toml, 2026-11-28).  Only
+    a copy of it: numba types, lowers and optimises every inlined copy again, 18-28 s of CPU
+    each on an empty cache (every CI run); the three copies were 70 s of the cylinder chain's
+    133 s (``benchmarks/compile_pneumatic.py``, 2026-11-28).  Only
     :func:`rhs.evaluate_many` (the output samples, where a call costs ~250 ns per column)
     keeps one.  Checked on uncached copies of the callers (cached code has no LLVM IR): their
     code calls the function (an inlined copy has no call of it)."""
