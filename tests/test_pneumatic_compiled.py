@@ -182,3 +182,35 @@ def test_hermite_kernel_is_the_structure_packages_interpolant():
     fn_v, b_v = m.evaluate(np.array([0.0, 3e5, 2e6]), 300.0)
     assert fn_v[1] == pytest.approx(ref.evaluate(3e5, 300.0, 0.1)[0], rel=1e-13)
     assert fn_v[2] == pytest.approx(ref.evaluate(1e6, 300.0, 0.1)[0], rel=1e-13)
+
+
+def test_the_column_evaluation_is_compiled_once_and_called():
+    """The Jacobian's compiled functions call :func:`rhs.evaluate_column` instead of inlining
+    a copy of it: numba types, lowers and optimises every inlined copy again, 18-28 s of CPU
+    each on an empty cache (every CI run); the three copies were 70 s of the cylinder chain's
+    133 s (``benchmarks/compile_pneumatic.py``, 2026-11-28).  Only
+    :func:`rhs.evaluate_many` (the output samples, where a call costs ~250 ns per column)
+    keeps one.  Checked on uncached copies of the callers (cached code has no LLVM IR): their
+    code calls the function (an inlined copy has no call of it)."""
+    import re
+
+    import numba
+
+    from sealsim.cases import load_toml
+    from sealsim.pneumatic import build_seals, rhs
+    from sealsim.pneumatic.case import load_pneumatic_cases
+    from sealsim.pneumatic.simulation import PneumaticSystem
+
+    example = ROOT / "examples" / "pneumatic" / "cylinder_32.toml"
+    c = load_pneumatic_cases(load_toml(example))["T25C"]
+    system = PneumaticSystem(c, build_seals(c, example.parent))
+    n, ndyn = system.n_states, system.n_dynamic
+    args = (0.0, system.initial_state(), np.zeros(n), rhs.FORWARD, system.tables,
+            system.tolerances(1.0)[:ndyn].copy(), np.zeros(n), np.zeros(n),
+            np.zeros((system.n_diag, 1)), np.zeros((n, ndyn)))
+    call = re.compile(r"call [^\n]*@\"?_ZN7sealsim9pneumatic3rhs15evaluate_column")
+    for dispatcher in (rhs.jacobian_at, rhs.velocity_column_at):
+        copy = numba.njit(dispatcher.py_func)
+        copy(*args)
+        llvm = copy.inspect_llvm(copy.signatures[0])
+        assert call.search(llvm), f"{dispatcher.__name__} inlines the column evaluation"
