@@ -30,7 +30,7 @@ import xarray as xr
 
 from sealsim.cases import CASE_KINDS, MAX_TOML_DEPTH, detect_case_kind, parse_toml
 from sealsim.cli.schema import SCHEMA_KINDS, kind_schema
-from sealsim.errors import InputError
+from sealsim.errors import InputError, Terminated
 from sealsim.files import MAX_CASE_BYTES, read_input_bytes
 from sealsim.output import ResultFolder
 from sealsim.studies import load_study
@@ -415,6 +415,31 @@ def test_sigterm_during_fmu_build_removes_its_scratch_folder(tmp_path):
     _, err = proc.communicate(timeout=120)
     assert proc.returncode == 143, err.decode()
     assert "terminated (SIGTERM)" in err.decode()
+    assert list(scratch.iterdir()) == [] and not (tmp_path / "tiny.fmu").exists()
+
+
+def test_sigterm_just_after_the_scratch_folder_is_made_leaves_none(tmp_path, monkeypatch):
+    # The test above sends SIGTERM once the folder appears; about once in 40 CI runs it landed
+    # between the folder's creation and tempfile.TemporaryDirectory registering its clean-up,
+    # and the folder stayed.  Here the signal's exception is raised exactly there: right
+    # after the mkdir of the build's scratch folder.  With TemporaryDirectory the folder
+    # stays (checked); with sealsim.files.scratch_folder it is removed.
+    from sealsim.fmu import build_fmu
+
+    scratch = tmp_path / "tmp"
+    scratch.mkdir()
+    monkeypatch.setattr("tempfile.tempdir", str(scratch))
+    real_mkdir = os.mkdir
+
+    def mkdir_then_sigterm(path, *args, **kwargs):
+        real_mkdir(path, *args, **kwargs)
+        if Path(path).name.startswith("sealsim-fmu-"):
+            raise Terminated("SIGTERM")
+
+    monkeypatch.setattr(os, "mkdir", mkdir_then_sigterm)
+    (tmp_path / "tiny.toml").write_text(TINY_FRICTION)
+    with pytest.raises(Terminated):
+        build_fmu(tmp_path / "tiny.toml", tmp_path / "tiny.fmu")
     assert list(scratch.iterdir()) == [] and not (tmp_path / "tiny.fmu").exists()
 
 

@@ -31,7 +31,6 @@ import os
 import platform
 import shutil
 import subprocess
-import tempfile
 import uuid
 import zipfile
 from collections.abc import Callable, Iterable
@@ -41,7 +40,7 @@ from pathlib import Path
 
 from sealsim.errors import InputError, ModelError, SealsimError
 from sealsim.fmu.model_description import ModelSpec, c_variables, model_description_xml
-from sealsim.files import ResultFile, json_ready
+from sealsim.files import ResultFile, json_ready, scratch_folder
 
 __all__ = ["FMI_KINDS", "BuildResult", "FMUCompileError", "FMUDependencyError",
            "build_archive", "check_output", "find_compiler", "platform_folder"]
@@ -293,7 +292,7 @@ def build_archive(spec: ModelSpec, out: str | Path, *, fmi_version: int = 2,
     target = result_file.requested
     generated = _dt.datetime.now(_dt.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
     # locked until written; SIGTERM raises like Ctrl-C, so the scratch folder is removed
-    with result_file, tempfile.TemporaryDirectory(prefix="sealsim-fmu-") as scratch:
+    with result_file, scratch_folder("sealsim-fmu-") as scratch:
         folder = Path(scratch) / "fmu"
         folder.mkdir()
         token = _write_sources(folder, spec, fmi_version, kinds)

@@ -49,12 +49,12 @@ from __future__ import annotations
 
 import ctypes
 import subprocess
-import tempfile
 from pathlib import Path
 
 import numpy as np
 
 from sealsim.errors import InputError, ModelError
+from sealsim.files import scratch_folder
 from sealsim.fmu.model_description import ModelSpec, Variable
 from sealsim.pneumatic import rhs
 from sealsim.pneumatic.chambers import AIR_CP, AIR_CV, AIR_HEAT_CAPACITY_RATIO
@@ -340,7 +340,7 @@ def rhs_check(system, folder: Path, samples: int = 400) -> dict:
     n = system.n_dynamic
     nseal = len(system.seals)
     rng = np.random.default_rng(27)
-    with tempfile.TemporaryDirectory(prefix="sealsim-rhs-") as scratch:
+    with scratch_folder("sealsim-rhs-") as scratch:
         harness = Path(scratch) / "harness.c"
         harness.write_text(_TEST_HARNESS, "utf-8")
         lib_path = Path(scratch) / "harness.so"
