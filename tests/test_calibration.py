@@ -458,8 +458,8 @@ def test_tudelft_example_runs_through_the_cli(example_run):
     assert result.exit_code == 0, result.output
     names = {p.name for p in out.iterdir()}
     assert {"fitted_parameters.toml", "report.json", "fit.json", "predictions.csv",
-            "overlay_1_bar.png", "overlay_7_bar.png", "parity.png",
-            "case_resolved.toml"} <= names
+            "overlay_1_bar.png", "overlay_7_bar.png", "parity.png", "stroke_levels.png",
+            "measurements.csv", "case_resolved.toml"} <= names
     report = json.loads((out / "report.json").read_text())
     assert set(report) == {"parameters", "measurements", "conditions"}
     assert report["conditions"] == {}          # no repeated tests in this case

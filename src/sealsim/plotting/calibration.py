@@ -80,6 +80,50 @@ def plot_repeats(conditions: dict, measurements: dict, title: str = ""):
     return fig
 
 
+def plot_stroke_levels(runs: dict, title: str = "", limit: float = 0.10):
+    """Friction level per pair of strokes along each run, each line relative to its own median
+    (measured: solid, the model on the same run: dashed; the level itself is the parity
+    plot's), so that a run whose friction climbs or falls over its strokes stands out from the
+    steady ones. The runs whose measured level
+    changes by more than ``limit`` from their first to their last quarter of pairs are drawn
+    in colour and named; the others are grey.
+
+    Parameters
+    ----------
+    runs : dict
+        ``{name: (measured levels [N], model levels [N], drift_measured [-])}`` per run, the
+        levels of :func:`sealsim.measurements.stroke_levels` in time order.
+    """
+    fig, ax = new_figure(1, 1, width=6.5, height=4.5)
+    colour = 0
+    for name, (measured, model, drift) in runs.items():
+        measured, model = np.asarray(measured, float), np.asarray(model, float)
+        if measured.size < 2 or not np.median(measured):
+            continue
+        scale = np.median(measured)
+        pairs = np.arange(1, measured.size + 1)
+        drifting = drift is not None and abs(drift) > limit
+        style = {"color": f"C{colour % 10}", "lw": 1.5, "zorder": 3} if drifting else \
+            {"color": "0.7", "lw": 0.8, "zorder": 2}
+        ax.plot(pairs, measured / scale, "-", **style,
+                label=f"{name} ({100 * drift:+.0f} %)" if drifting else None)
+        if model.size == measured.size and np.median(model):
+            ax.plot(pairs, model / np.median(model), "--", **{**style, "lw": 0.8})
+        colour += drifting
+    ax.plot([], [], "-", color="0.7", lw=0.8,
+            label=f"runs within ±{100 * limit:.0f} % (measured)")
+    ax.plot([], [], "--", color="0.4", lw=0.8, label="model on the same run")
+    ax.axhline(1.0, color="0.3", lw=0.6)
+    ax.xaxis.get_major_locator().set_params(integer=True)
+    ax.set_xlabel("pair of strokes")
+    ax.set_ylabel("friction level / its median over the run [-]")
+    ax.grid(alpha=0.3)
+    ax.legend(loc="best", fontsize=7)
+    head = "friction level along each run (offset-free per pair of strokes)"
+    ax.set_title(f"{title}\n{head}" if title else head, fontsize=10)
+    return fig
+
+
 def _labelled(points, band: float, absolute_band: float | None, most: int = 6) -> list:
     """The points of a parity plot worth a label: all of up to ``most``; beyond that those
     outside the band, the ``most`` farthest from it first (more labels would cover each other;
