@@ -42,7 +42,7 @@ from sealsim.calibration.statistics import parameter_report, repeat_scatter
 from sealsim.cases import load_toml, validate_case
 from sealsim.errors import InputError
 from sealsim.friction import make_law
-from sealsim.measurements import friction_level
+from sealsim.measurements import friction_level, stroke_levels
 
 __all__ = ["FrictionFitStudy", "drift_warnings", "fit_run_warnings", "friction_fit_study", "load_fit_case",
            "repeat_conditions"]
@@ -101,6 +101,14 @@ class FrictionFitStudy:
             "normal_force_N": r.normal_force if r.normal_force is not None else np.nan,
             "friction_measured_N": r.friction, "friction_model_N": self.predictions[r.name]})
             for r in self.runs], ignore_index=True)
+
+    def stroke_levels(self) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+        """Offset-free friction level per pair of strokes of every run, measured and model
+        (:func:`~sealsim.measurements.stroke_levels`; their drifts are report.json's
+        ``drift_measured_rel`` and ``drift_predicted_rel``)."""
+        return {r.name: (stroke_levels(r.friction, r.phases)[1],
+                         stroke_levels(self.predictions[r.name], r.phases)[1])
+                for r in self.runs}
 
 
 def friction_fit_study(case: FrictionFitCase, base_dir: str | Path,

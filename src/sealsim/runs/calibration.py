@@ -53,7 +53,6 @@ from sealsim.calibration.rotary_study import load_rotary_fit_case, rotary_fit_st
 from sealsim.calibration.study import friction_fit_study, load_fit_case
 from sealsim.cases import dump_case_toml
 from sealsim.files import file_digests
-from sealsim.measurements import stroke_levels
 from sealsim.output import ResultFolder
 from sealsim.plotting.calibration import (
     plot_overlay,
@@ -126,10 +125,8 @@ def run_friction_fit_file(path: str | Path, out: str | Path, force: bool = False
                            plot_overlay(r.name, r.spec.role, r.time, r.position, r.friction,
                                         study.predictions[r.name], title))
         folder.savefig("stroke_levels.png", plot_stroke_levels(
-            {r.name: (stroke_levels(r.friction, r.phases)[1],
-                      stroke_levels(study.predictions[r.name], r.phases)[1],
-                      study.report["measurements"][r.name]["drift_measured_rel"])
-             for r in study.runs}, title))
+            {name: (*levels, study.report["measurements"][name]["drift_measured_rel"])
+             for name, levels in study.stroke_levels().items()}, title))
         points = [(name, m["role"], m["F_measured_N"], m["F_predicted_N"])
                   for name, m in study.report["measurements"].items()]
         proportional = [(m["F_measured_N"], m["F_proportional_N"])
