@@ -44,10 +44,15 @@ from sealsim.errors import InputError
 from sealsim.friction import make_law
 from sealsim.measurements import friction_level, stroke_levels
 
-__all__ = ["FrictionFitStudy", "drift_warnings", "fit_run_warnings", "friction_fit_study", "load_fit_case",
-           "repeat_conditions"]
+__all__ = ["FrictionFitStudy", "drift_warnings", "fit_run_warnings", "fitted_steady_curves",
+           "friction_fit_study", "load_fit_case", "repeat_conditions",
+           "speed_extrapolation_warnings"]
 
 _LOADS = {"theta"}     # laws that need F_N and b from a contact map
+
+#: Speeds of the fitted law's steady curve [m/s]: 0.1 mm/s to 1 m/s, about the range of
+#: standard pneumatic cylinders (ISO 15552 catalogues rate them up to 1-1.5 m/s)
+STEADY_CURVE_SPEEDS = np.logspace(-4.0, 0.0, 41)
 
 
 def load_fit_case(path: str | Path) -> FrictionFitCase:
@@ -91,6 +96,8 @@ class FrictionFitStudy:
     report: dict
     diagnostics: dict
     fitted: dict
+    steady_curves: pd.DataFrame      # :func:`fitted_steady_curves`
+    run_speeds: pd.DataFrame
 
     def predictions_frame(self) -> pd.DataFrame:
         """Measured and model signals of every run, one row per sample (engineering units)."""
@@ -162,8 +169,10 @@ def friction_fit_study(case: FrictionFitCase, base_dir: str | Path,
                                                                else None)
     proportional_baseline(runs, report["measurements"])
     report["conditions"] = repeat_conditions(case, report["measurements"])
+    steady_curves, run_speeds = fitted_steady_curves(law, with_law_table(law, runs))
     result.warnings.extend(fit_run_warnings(report["conditions"], report["measurements"]))
     result.warnings.extend(drift_warnings(report["measurements"]))
+    result.warnings.extend(speed_extrapolation_warnings(steady_curves, run_speeds, law))
     diagnostics = {
         "status": result.status, "failure": result.failure, "warnings": result.warnings,
         "stages": result.stages, "parameter_names": result.names,
@@ -175,7 +184,119 @@ def friction_fit_study(case: FrictionFitCase, base_dir: str | Path,
         "sliding_phases": {r.name: len(r.phases) for r in runs}}
     fitted = {"friction": _drop_none(result.params.model_dump(
         mode="json", exclude={"parameter_set"}))}
-    return FrictionFitStudy(case, runs, result, predictions, report, diagnostics, fitted)
+    return FrictionFitStudy(case, runs, result, predictions, report, diagnostics, fitted,
+                            steady_curves, run_speeds)
+
+
+def fitted_steady_curves(law, runs: list[PreparedRun],
+                         speeds=STEADY_CURVE_SPEEDS) -> tuple[pd.DataFrame, pd.DataFrame]:
+    """The fitted law's steady friction over speed at each seal and pressure the runs measured,
+    and the speed each run was measured at: what the fit implies beyond the rig's speeds.
+
+    For a Θ law on the seal's own contact (``steady = "contact"``; other laws give two empty
+    frames): per contact and run pressure (rounded to 0.5 bar; the median Δp and the temperature
+    of its runs) the steady friction F_ss(±u) of both stroke directions
+    (:meth:`~sealsim.friction.theta.Theta.contact_steady`), its viscous part, and
+    F_ss/F_N with the contact force F_N of the map at that pressure (the median over the
+    runs' sliding samples).
+
+    Parameters
+    ----------
+    law : FrictionLaw
+        The fitted law.
+    runs : list of PreparedRun
+        The runs, with the friction tables of ``law``'s tribology
+        (:func:`~sealsim.calibration.friction_fit.with_law_table`).
+    speeds : array_like
+        Sliding speeds [m/s], > 0.
+
+    Returns
+    -------
+    curves : pandas.DataFrame
+        ``contact, pressure_bar, temperature_C, speed_m_s, F_plus_N, F_minus_N,
+        F_viscous_plus_N, F_viscous_minus_N, F_normal_N, mu_eff`` (μ_eff: the larger
+        direction's |F_ss| / F_N).
+    run_speeds : pandas.DataFrame
+        ``measurement, contact, pressure_bar, speed_m_s`` (the run's median |v| while
+        sliding).
+    """
+    from sealsim.friction import ContactInputs
+
+    curve_columns = ["contact", "pressure_bar", "temperature_C", "speed_m_s", "F_plus_N",
+                     "F_minus_N", "F_viscous_plus_N", "F_viscous_minus_N", "F_normal_N",
+                     "mu_eff"]
+    empty = (pd.DataFrame(columns=curve_columns),
+             pd.DataFrame(columns=["measurement", "contact", "pressure_bar", "speed_m_s"]))
+    runs = [r for r in runs if r.contact_table is not None and r.normal_force is not None]
+    if not getattr(law, "contact", False) or not runs:
+        return empty
+    u = np.asarray(speeds, dtype=float)
+    groups: dict[tuple, list[PreparedRun]] = {}
+    speed_rows = []
+    for r in runs:
+        sliding = np.concatenate([np.arange(p.start, p.stop) for p in r.phases])
+        contact = r.spec.contact or "contact"
+        # to 0.5 bar: repeats of one test (the rig's 6.99-7.04 bar) share a curve
+        bar = round(2.0 * float(np.median(r.pressure_difference[sliding])) / 1e5) / 2.0
+        groups.setdefault((contact, bar), []).append((r, sliding))
+        speed_rows.append({"measurement": r.name, "contact": contact, "pressure_bar": bar,
+                           "speed_m_s": float(np.median(np.abs(r.velocity[sliding])))})
+    rows = []
+    for (contact, bar), members in groups.items():
+        first = members[0][0]
+        dp = float(np.median(np.concatenate([r.pressure_difference[s] for r, s in members])))
+        normal = float(np.median(np.concatenate([r.normal_force[s] for r, s in members])))
+        inputs = ContactInputs(pressure_difference=dp, temperature=first.temperature,
+                               contact_table=first.contact_table,
+                               sliding_diameter=first.sliding_diameter,
+                               table_orientation=first.orientation)
+        plus, _, viscous_plus = law.contact_steady(u, inputs)
+        minus, _, viscous_minus = law.contact_steady(-u, inputs)
+        mu = np.maximum(np.abs(plus), np.abs(minus)) / normal
+        rows.append(pd.DataFrame({
+            "contact": contact, "pressure_bar": bar,
+            "temperature_C": first.temperature - 273.15, "speed_m_s": u,
+            "F_plus_N": np.abs(plus), "F_minus_N": np.abs(minus),
+            "F_viscous_plus_N": viscous_plus, "F_viscous_minus_N": viscous_minus,
+            "F_normal_N": normal, "mu_eff": mu}))
+    return pd.concat(rows, ignore_index=True)[curve_columns], pd.DataFrame(speed_rows)
+
+
+def speed_extrapolation_warnings(curves: pd.DataFrame, run_speeds: pd.DataFrame, law,
+                                 limit: float = 1.0) -> list[str]:
+    """A warning when the fitted law's steady friction exceeds ``limit`` times the contact
+    force at a speed up to 1 m/s (:func:`fitted_steady_curves`): a lubricated rubber seal's
+    friction stays below its contact force (boundary friction coefficients of lubricated
+    rubber 0.05-0.3, plus a viscous part; issue 23's criterion μ_eff < 1), so such a law
+    holds only near the speeds it was fitted at.
+
+    Examples
+    --------
+    >>> curves = pd.DataFrame({"contact": "ring", "pressure_bar": 1.0,
+    ...                        "speed_m_s": [0.01, 0.1, 1.0], "mu_eff": [0.07, 0.4, 3.7]})
+    >>> speeds = pd.DataFrame({"speed_m_s": [0.010, 0.014]})
+    >>> print(speed_extrapolation_warnings(curves, speeds, None)[0][:80])
+    the fitted law's steady friction exceeds the contact force (F/F_N up to 3.7 at 1
+    """
+    if curves.empty:
+        return []
+    over = curves[curves["mu_eff"] > limit]
+    if over.empty:
+        return []
+    worst = curves.loc[curves["mu_eff"].idxmax()]
+    first = float(over["speed_m_s"].min())
+    measured = run_speeds["speed_m_s"]
+    layer = getattr(getattr(law, "params", None), "supply_layer", None)
+    cause = ("its viscous shear grows with the speed, in proportion to it at the film that "
+             f"the fitted grease layer of {layer * 1e6:.3g} µm caps (supply_layer)"
+             if layer is not None and np.isfinite(layer) else
+             "its viscous shear grows with the speed")
+    return [f"the fitted law's steady friction exceeds the contact force (F/F_N up to "
+            f"{worst['mu_eff']:.2g} at {worst['speed_m_s']:.3g} m/s, {worst['contact']} at "
+            f"{worst['pressure_bar']:g} bar; above {first:.2g} m/s) while the runs were measured "
+            f"at {1e3 * measured.min():.3g}-{1e3 * measured.max():.3g} mm/s: {cause}. Use the "
+            "fitted parameters only near the measured speeds (stribeck_fitted.png, "
+            "stribeck_fitted.csv)"]
 
 
 def proportional_baseline(runs: list[PreparedRun], measurements: dict) -> float | None:

@@ -124,6 +124,50 @@ def plot_stroke_levels(runs: dict, title: str = "", limit: float = 0.10):
     return fig
 
 
+def plot_fitted_steady_curves(curves, run_speeds, measured_levels: dict, title: str = ""):
+    """The fitted law's steady friction over speed, one panel per seal, one colour per pressure
+    (solid: + stroke, dashed: − stroke), the contact force F_N as a dotted line of the same
+    colour (F = F_N, μ_eff = 1), the measured runs' levels as points at their speeds, and the
+    measured speed range shaded: how far the fitted curve is carried beyond the data.
+
+    Parameters
+    ----------
+    curves, run_speeds : pandas.DataFrame
+        :func:`sealsim.calibration.study.fitted_steady_curves`.
+    measured_levels : dict
+        ``{measurement: friction level [N]}``.
+    """
+    contacts = list(dict.fromkeys(curves["contact"]))
+    fig, axes = new_figure(len(contacts), 1, width=4.2 * len(contacts) + 0.6, height=4.4,
+                           squeeze=False, sharey=True)
+    lo, hi = run_speeds["speed_m_s"].min(), run_speeds["speed_m_s"].max()
+    for ax, contact in zip(axes[0], contacts):
+        ax.axvspan(lo, hi, color="0.9", zorder=0)
+        own = curves[curves["contact"] == contact]
+        for k, (bar, c) in enumerate(own.groupby("pressure_bar", sort=True)):
+            colour = f"C{k}"
+            ax.plot(c["speed_m_s"], c["F_plus_N"], "-", color=colour, label=f"{bar:g} bar")
+            ax.plot(c["speed_m_s"], c["F_minus_N"], "--", color=colour, lw=0.9)
+            ax.axhline(c["F_normal_N"].iloc[0], color=colour, ls=":", lw=0.8)
+            runs = run_speeds[(run_speeds["contact"] == contact)
+                              & (run_speeds["pressure_bar"] == bar)]
+            ax.plot(runs["speed_m_s"], [measured_levels[m] for m in runs["measurement"]],
+                    "o", color=colour, ms=4, mec="k", mew=0.5)
+        ax.set(xscale="log", yscale="log", xlabel="sliding speed [m/s]", title=contact)
+        ax.grid(alpha=0.3, which="both")
+    axes[0][0].set_ylabel("steady friction [N]")
+    axes[0][0].plot([], [], "k-", label="fitted law, + stroke")
+    axes[0][0].plot([], [], "k--", lw=0.9, label="fitted law, − stroke")
+    axes[0][0].plot([], [], "k:", lw=0.8, label="contact force F_N (F/F_N = 1)")
+    axes[0][0].plot([], [], "o", color="0.5", mec="k", mew=0.5, ms=4,
+                    label="measured level at the run's speed")
+    axes[0][0].fill_between([], [], color="0.9", label="measured speeds")
+    axes[0][0].legend(loc="upper left", fontsize=7)
+    head = "the fitted law's steady friction beyond the measured speeds"
+    fig.suptitle(f"{title}\n{head}" if title else head, fontsize=10)
+    return fig
+
+
 def _labelled(points, band: float, absolute_band: float | None, most: int = 6) -> list:
     """The points of a parity plot worth a label: all of up to ``most``; beyond that those
     outside the band, the ``most`` farthest from it first (more labels would cover each other;

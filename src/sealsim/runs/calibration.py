@@ -55,6 +55,7 @@ from sealsim.cases import dump_case_toml
 from sealsim.files import file_digests
 from sealsim.output import ResultFolder
 from sealsim.plotting.calibration import (
+    plot_fitted_steady_curves,
     plot_overlay,
     plot_parity,
     plot_repeats,
@@ -135,6 +136,12 @@ def run_friction_fit_file(path: str | Path, out: str | Path, force: bool = False
         folder.savefig("parity.png", plot_parity(
             points, title, reference=proportional,
             reference_label="friction ∝ F_N (μ from the fitted runs)"))
+        if not study.steady_curves.empty:
+            folder.write_csv("stribeck_fitted.csv", study.steady_curves, float_format="%.6g")
+            folder.savefig("stribeck_fitted.png", plot_fitted_steady_curves(
+                study.steady_curves, study.run_speeds,
+                {name: m["F_measured_N"] for name, m in study.report["measurements"].items()},
+                title))
         conditions = study.report["conditions"]
         if conditions:
             folder.write_csv("conditions.csv", pd.DataFrame(
