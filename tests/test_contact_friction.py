@@ -582,3 +582,55 @@ def test_a_supply_layer_of_the_law_starves_its_friction_table():
     thin = starved_table.steady_force(speeds, 6e5, 293.15, 0.012, 0.2)
     assert thin[0] == pytest.approx(flooded[0], rel=1e-3)
     assert np.all(thin[1:] > 1.05 * flooded[1:])
+
+
+def _cylinder_with_contact_seals(piston_friction):
+    """cylinder_32.toml with its piston and rod O-rings on the seal_contact law (analytic maps,
+    no FE), the piston's friction table given."""
+    import tomllib
+
+    from sealsim.pneumatic.case import load_pneumatic_cases
+
+    path = Path(__file__).resolve().parents[1] / "examples" / "pneumatic" / "cylinder_32.toml"
+    data = tomllib.loads(path.read_text())
+    data.pop("variants", None)
+    data["seals"][0]["friction"] = piston_friction
+    data["seals"][1]["friction"] = {"law": "theta", "parameter_set": "seal_contact"}
+    (case,) = load_pneumatic_cases(data).values()
+    return case, path.parent
+
+
+def test_a_seal_whose_friction_passes_its_contact_force_says_so():
+    # The TU Delft three-ring fit's law (a grease layer of 0.068 µm capping the film,
+    # μ_b = 0.029; docs/guide/calibration.md, "Beyond the rig's speeds") taken into a cylinder:
+    # its viscous shear of the capped film grows in proportion to the speed and passes the
+    # contact force below 1 m/s (a lubricated rubber seal stays below it), which the run must
+    # say; the flooded default law does not (its film grows like √u).
+    from sealsim.pneumatic import build_seals
+    from sealsim.pneumatic.friction_tables import friction_over_contact_force
+
+    fitted = {"law": "theta", "parameter_set": "seal_contact", "boundary_friction": 0.0293,
+              "supply_layer": "0.0684 um", "roughness": "0.3 um"}
+    case, base = _cylinder_with_contact_seals(fitted)
+    piston, rod, _ = build_seals(case, base)
+    (note,) = [n for n in piston.notes if "passes its contact force" in n]
+    assert "supply_layer of 0.0684 µm" in note and "at 1 m/s" in note
+    assert not [n for n in rod.notes if "passes its contact force" in n]
+    ratio, speed, dp = friction_over_contact_force(piston.friction_table, piston.contact_map,
+                                                   0.0293, piston.temperature)
+    assert ratio > 1.0 and speed == pytest.approx(1.0, rel=0.2)
+    # the ratio is F_ss/F_N of the table and the map at that point, both strokes
+    diameter = friction_tables.sliding_diameter(piston.contact_map)
+    force = max(abs(float(piston.friction_table.steady_force(s * speed, dp, piston.temperature,
+                                                             diameter, 0.0293)))
+                for s in (1, -1))
+    normal = float(piston.contact_map.evaluate(dp, piston.temperature)[0])
+    assert ratio == pytest.approx(force / normal, rel=1e-12)
+    # Physical bound at the table's slowest speed (1e-7 m/s): the film has vanished, the
+    # asperities carry the whole load, so F/F_N -> μ_b (the Hertz profile carries the
+    # estimate's F_N to its discretisation, 1 %; the asperity share at 1e-7 m/s > 0.97).
+    for seal, mu_b in ((piston, 0.0293), (rod, 0.2)):
+        slow, _, _ = friction_over_contact_force(seal.friction_table, seal.contact_map, mu_b,
+                                                 seal.temperature,
+                                                 max_speed=seal.friction_table.speed[0])
+        assert 0.97 * mu_b < slow < 1.01 * mu_b

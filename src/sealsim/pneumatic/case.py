@@ -573,7 +573,9 @@ def build_seals(case: PneumaticCase, base_dir: str | Path = ".", progress=None,
         if temperature is None:
             temperature = body_temperature(case)
         table = seal_friction_table(law, contact_map, f"{where}.map")
-        seals.append(Seal(spec.name, spec.location, law, contact_map, temperature, notes,
+        seal_notes = notes + ([] if table is None else
+                              contact_friction_notes(table, contact_map, law, temperature))
+        seals.append(Seal(spec.name, spec.location, law, contact_map, temperature, seal_notes,
                           table))
     return seals
 
@@ -591,6 +593,28 @@ def seal_friction_table(law, contact_map, where: str = "map"):
                          "contact map (its contact pressure profile)")
     return friction_table_for(contact_map,
                               ContactTribology.from_law(law, map_elastomer(contact_map)))
+
+
+def contact_friction_notes(table, contact_map, law, temperature: float) -> list[str]:
+    """A note when a seal's steady friction from its contact passes its contact force at the
+    seal's temperature at a speed up to 1 m/s
+    (:func:`~sealsim.pneumatic.friction_tables.friction_over_contact_force`): the table's
+    viscous shear is then outside what its film model holds for, and the cylinder's friction
+    with it."""
+    from sealsim.pneumatic.friction_tables import friction_over_contact_force
+
+    ratio, speed, dp = friction_over_contact_force(table, contact_map,
+                                                   law.params.boundary_friction, temperature)
+    if ratio <= 1.0:
+        return []
+    layer = law.params.supply_layer
+    cause = (f"the film that its supply_layer of {layer * 1e6:.3g} µm caps, sheared "
+             "in proportion to the speed" if layer is not None and math.isfinite(layer) else
+             "the viscous shear of its film")
+    return [f"its steady friction passes its contact force (F/F_N up to {ratio:.2g} at "
+            f"{speed:.2g} m/s, Δp {dp / 1e5:.3g} bar, {temperature - 273.15:.4g} °C): "
+            f"{cause}, beyond what a lubricated rubber seal shows (F/F_N < 1); its friction "
+            "at such speeds is not to be trusted"]
 
 
 def map_elastomer(contact_map) -> str:

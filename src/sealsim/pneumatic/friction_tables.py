@@ -54,8 +54,8 @@ from sealsim.tribology.mixed_lubrication import reciprocating_friction
 from sealsim.tribology.rubber_friction import DEFAULT_ASPERITY_WAVELENGTH
 
 __all__ = ["ContactTribology", "LAW_TABLE_FIELDS", "TABLE_SPEEDS", "build_friction_table",
-           "contact_profiles", "friction_table_for", "lubricant_viscosity", "sliding_diameter",
-           "table_orientation"]
+           "contact_profiles", "friction_over_contact_force", "friction_table_for",
+           "lubricant_viscosity", "sliding_diameter", "table_orientation"]
 
 #: Version of the table builder: part of the cache key (a change of the physics gives new files;
 #: 5: the inlet gradient no longer drops the secant ending on the pressure maximum for a profile
@@ -174,6 +174,43 @@ def sliding_diameter(contact_map) -> float:
         per_length = float(ds["F_N_per_length"].values.reshape(-1)[0])
         return fn / (math.pi * per_length)
     return float(contact_map.sliding_diameter)
+
+
+def friction_over_contact_force(table: SteadyFrictionTable, contact_map, boundary_friction,
+                                temperature, max_speed=1.0) -> tuple[float, float, float]:
+    """The largest steady friction over contact force F_ss/F_N [-] of a seal at a temperature,
+    over its table's pressure nodes and speeds up to ``max_speed``, both strokes, and where:
+    ``(ratio, speed [m/s], pressure difference [Pa])``.
+
+    F_ss = π·D·(μ_b·L + V) of the table (:meth:`SteadyFrictionTable.steady_force`), F_N the
+    contact map's force at the same Δp and temperature.  A lubricated rubber seal's friction
+    stays below its contact force (boundary friction coefficients of lubricated rubber
+    0.05-0.3 plus a viscous part): a ratio above 1 says the table's viscous shear has left the
+    range the film model holds in (a film capped by a thin ``supply_layer`` sheared at high
+    speed, or a very cold, viscous lubricant).
+
+    Parameters
+    ----------
+    table : SteadyFrictionTable
+        The seal's friction table (per unit circumference).
+    contact_map : FEContactMap or AnalyticContactMap
+        The map the table was built from (F_N).
+    boundary_friction : float
+        μ_b [-].
+    temperature : float
+        Seal temperature [K] (clamped to the table's range).
+    max_speed : float
+        Largest sliding speed considered [m/s].
+    """
+    speeds = table.speed[table.speed <= max_speed]
+    uu, pp = np.meshgrid(speeds, table.pressure, indexing="ij")
+    diameter = sliding_diameter(contact_map)
+    force = np.maximum(*(np.abs(table.steady_force(sign * uu, pp, temperature, diameter,
+                                                   boundary_friction)) for sign in (1, -1)))
+    normal = np.asarray(contact_map.evaluate(table.pressure, temperature)[0], dtype=float)
+    ratio = force / normal[None, :]
+    i, j = np.unravel_index(int(np.argmax(ratio)), ratio.shape)
+    return float(ratio[i, j]), float(speeds[i]), float(table.pressure[j])
 
 
 def _energised_profile(force_per_length, width, pressure_difference):
