@@ -634,3 +634,27 @@ def test_a_seal_whose_friction_passes_its_contact_force_says_so():
                                                  seal.temperature,
                                                  max_speed=seal.friction_table.speed[0])
         assert 0.97 * mu_b < slow < 1.01 * mu_b
+
+
+def test_seal_friction_says_where_its_friction_passes_the_contact_force():
+    # the same law through sealsim.seal_friction: the points above the contact force are
+    # counted and the worst named; the flooded default at the same points has none
+    import warnings
+
+    import sealsim
+
+    oring = {"cord_diameter": "2 mm", "squeeze": 0.10}
+    speeds = ["0.01 m/s", "0.1 m/s", "1 m/s"]
+    starved = {"law": "theta", "parameter_set": "seal_contact", "boundary_friction": 0.0293,
+               "supply_layer": "0.0684 um", "roughness": "0.3 um"}
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        frame = sealsim.seal_friction(oring, speeds, "1 bar", law=starved, diameter="32 mm")
+        default = sealsim.seal_friction(oring, speeds, "1 bar", diameter="32 mm")
+    ratio = (frame["friction_N"] / frame["normal_force_N"]).to_numpy()
+    assert ratio[0] < 1.0 < ratio[2]
+    (note,) = [n for n in frame.attrs["notes"] if "passes the contact force" in n]
+    assert note.startswith(f"{int((ratio > 1).sum())} of 3 points") and "at 1 m/s" in note
+    assert f"{ratio.max():.2g}" in note and "supply_layer of 0.0684 µm" in note
+    assert (default["friction_N"] < default["normal_force_N"]).all()
+    assert not [n for n in default.attrs["notes"] if "passes the contact force" in n]

@@ -398,7 +398,15 @@ def seal_friction(seal, velocity, pressure="0 bar", temperature="20 degC", law=N
         notes = [*notes, *_contact_unused_note(friction_law, v, inputs, force)]
     film = share = transport = np.full(v.size, np.nan)
     if table is not None:
+        from sealsim.pneumatic.case import excess_friction_cause
         from sealsim.tribology.inverse_hydrodynamics import stroke_transport
+
+        ratio = np.abs(force) / normal_force
+        if np.any(ratio > 1.0):
+            worst = int(np.argmax(ratio))
+            notes = [*notes, f"{int(np.sum(ratio > 1.0))} of {v.size} points: the steady "
+                     f"friction passes the contact force (F/F_N up to {ratio[worst]:.2g} at "
+                     f"{abs(v[worst]):.3g} m/s): {excess_friction_cause(friction_law)}"]
 
         load, _, film = table.evaluate(v, dp, t)
         share = np.pi * diameter_m * load / normal_force

@@ -607,14 +607,21 @@ def contact_friction_notes(table, contact_map, law, temperature: float) -> list[
                                                    law.params.boundary_friction, temperature)
     if ratio <= 1.0:
         return []
+    return [f"its steady friction passes its contact force (F/F_N up to {ratio:.2g} at "
+            f"{speed:.2g} m/s, Δp {dp / 1e5:.3g} bar, {temperature - 273.15:.4g} °C): "
+            f"{excess_friction_cause(law)}"]
+
+
+def excess_friction_cause(law) -> str:
+    """Why a Θ law on its seal's contact gives more friction than the contact force, and what
+    that means (the end of the notes of :func:`contact_friction_notes` and
+    :func:`sealsim.seal_friction`)."""
     layer = law.params.supply_layer
     cause = (f"the film that its supply_layer of {layer * 1e6:.3g} µm caps, sheared "
              "in proportion to the speed" if layer is not None and math.isfinite(layer) else
              "the viscous shear of its film")
-    return [f"its steady friction passes its contact force (F/F_N up to {ratio:.2g} at "
-            f"{speed:.2g} m/s, Δp {dp / 1e5:.3g} bar, {temperature - 273.15:.4g} °C): "
-            f"{cause}, beyond what a lubricated rubber seal shows (F/F_N < 1); its friction "
-            "at such speeds is not to be trusted"]
+    return (f"{cause}, beyond what a lubricated rubber seal shows (F/F_N < 1); its friction "
+            "at such speeds is not to be trusted")
 
 
 def map_elastomer(contact_map) -> str:
