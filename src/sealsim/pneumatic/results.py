@@ -245,9 +245,9 @@ def _frame(system, diag) -> pd.DataFrame:
         else:
             _CONVERT[unit[0]](values, unit[1], out=row)
     frame = pd.DataFrame(block.T, columns=[c[0] for c in floats], copy=False)
-    # the mode names as pandas' string array (the column's dtype, ``str``), built here from the
-    # five names: the frame need not infer it from 10^4 Python strings
-    modes = pd.array(_MODE_NAMES, dtype="str").take(np.searchsorted(_MODE_CODES, diag["mode"]))
+    # the column of pandas' type for the five names (str with pandas 3, object before),
+    # inferred from them once, not from the 10^4 samples
+    modes = pd.Series(_MODE_NAMES).array.take(np.searchsorted(_MODE_CODES, diag["mode"]))
     frame.insert([c[0] for c in cols].index("mode"), "mode", modes)
     return frame
 
