@@ -2,7 +2,9 @@
 
 For the analytic contact maps, the FE map of the rod seal and seal heating: ``simulate`` end to
 end and its stages measured one by one (set-up of the system, integration with the output
-grid, the diagnostics at the output samples, the result table), the solver's counts (steps,
+grid, the diagnostics at the output samples, the result table) and inside the run
+(:func:`stages_in_run`: the rest of ``run`` -- volume check, balances, notes -- is the run
+minus them), the solver's counts (steps,
 right-hand sides in the Newton iteration, Jacobians and the right-hand sides of their
 forward-difference columns, renewals of the velocity's column by the growth limit, LU
 factorisations, segments and steps at rest; per phase of the cycle -- stroke, cap and head end
@@ -209,11 +211,47 @@ def limiting_states(system) -> dict:
     return {"phases": out, "totals": totals}
 
 
+def stages_in_run(case, seals, repeat=7) -> dict:
+    """The stages of ``simulate`` timed inside the run [s] -- set-up, integration, outputs at
+    the samples, result table, and the rest of ``run`` (volume check, balances, notes,
+    statistics) as the run minus them -- each the best of ``repeat`` runs: inside a run, after
+    the integration, a stage can cost more than alone."""
+    from sealsim.pneumatic import simulation
+
+    timed: dict = {}
+
+    def timer(name, fn):
+        def timed_call(*args, **kwargs):
+            t0 = time.perf_counter()
+            out = fn(*args, **kwargs)
+            timed[name] = timed.get(name, 0.0) + time.perf_counter() - t0
+            return out
+        return timed_call
+
+    best: dict = {}
+    with mock.patch.object(simulation, "PneumaticSystem",
+                           timer("setup", simulation.PneumaticSystem)), \
+            mock.patch.object(simulation, "integrate", timer("integration",
+                                                             simulation.integrate)), \
+            mock.patch.object(_results, "_diagnostics", timer("outputs",
+                                                              _results._diagnostics)), \
+            mock.patch.object(_results, "_frame", timer("table", _results._frame)):
+        for _ in range(repeat):
+            timed.clear()
+            t0 = time.perf_counter()
+            simulate(case, seals)
+            timed["rest"] = time.perf_counter() - t0 - sum(timed.values())
+            for name, value in timed.items():
+                best[name] = min(best.get(name, np.inf), value)
+    return best
+
+
 def profile(case, base_dir) -> dict:
     seals = build_seals(case, base_dir)
     simulate(case, seals)                             # compiled code loaded
     system = PneumaticSystem(case, seals)
     total = _best(lambda: simulate(case, seals))
+    in_run = stages_in_run(case, seals)
     setup = _best(lambda: PneumaticSystem(case, seals))
     integration = _best(lambda: integrate.integrate(system, None, _results.Sampler(system)))
     sampler, segments, counters = _integrate_counting(system)
@@ -248,6 +286,7 @@ def profile(case, base_dir) -> dict:
         "total_ms": total * 1e3, "realtime_factor": SIMULATED / total,
         "setup_ms": setup * 1e3, "integration_ms": integration * 1e3,
         "outputs_ms": outputs * 1e3, "table_ms": table * 1e3,
+        "in_run_ms": {k: round(v * 1e3, 3) for k, v in in_run.items()},
         "steps": steps, "rhs_newton": nfev, "jacobians": njev,
         "rhs_jacobian_columns": njev * ndyn, "lu_factorisations": nlu,
         "velocity_column_renewals": nrenew, "phases": phases(segments, system.stroke),
@@ -314,6 +353,11 @@ def main() -> None:
               f"+ output diagnostics {p['outputs_ms']:.2f} ({p['output_samples']} samples, "
               f"{p['output_sample_us']:.3f} us each) + table {p['table_ms']:.2f} + rest "
               f"{rest:.2f} ms")
+        r = p["in_run_ms"]
+        print(f"  inside a run (each the best of 7): set-up {r['setup']:.2f} + integration "
+              f"{r['integration']:.2f} + output diagnostics {r['outputs']:.2f} + table "
+              f"{r['table']:.2f} + the rest of run (volume check, balances, notes) "
+              f"{r['rest']:.2f} ms")
         print(f"  {p['steps']} steps, {p['rhs_newton']} RHS in the Newton iteration, "
               f"{p['jacobians']} Jacobians ({p['rhs_jacobian_columns']} RHS, {p['n_dynamic']}"
               f" columns), {p['velocity_column_renewals']} renewals of the velocity's column,"

@@ -86,3 +86,36 @@ def test_friction_velocity_lines_do_not_cross_an_impact(strokes):
     # the sliding samples are all still on the line
     xs = np.asarray(line.get_data()[0], dtype=float)
     assert np.sum(np.isclose(xs, 0.4)) == np.sum(np.isclose(frame["v_m_s"], 0.4))
+
+
+def test_unfinished_strokes_takes_each_command_window_from_its_start_up_to_the_next():
+    """The samples of a command are those from its issue time up to, not including, the next
+    command's (found by binary search of the ascending times): a piston that reaches the end
+    only at the sample of the next command did not finish its stroke, one that is there at the
+    sample of its own command did; checked against the comparison of every sample."""
+    from types import SimpleNamespace
+
+    from sealsim.pneumatic.controller import command_schedule
+    from sealsim.pneumatic.summary import END_TOLERANCE, unfinished_strokes
+
+    steps = [SimpleNamespace(command="extend", duration=1.0),
+             SimpleNamespace(command="retract", duration=1.0)]
+    case = SimpleNamespace(cylinder=SimpleNamespace(stroke=STROKE), controller=SimpleNamespace(
+        mode="cycle", steps=steps, duration=4.0, initial_command="retract"))
+    t = np.linspace(0.0, 4.0, 401)                   # samples on every command time
+    x = np.where(t < 2.0, 0.3 * STROKE, 0.6 * STROKE)
+    x[t == 1.0] = STROKE                             # extended at the next command's sample only
+    x[t == 2.0] = STROKE * (1.0 - END_TOLERANCE)     # second extend: there at its own sample
+    notes = unfinished_strokes(t, x, case)
+
+    def brute_force(target, sign):
+        reached = x >= STROKE * (1 - END_TOLERANCE) if target == "extend" else \
+            x <= STROKE * END_TOLERANCE
+        return sum(1 for start, end in command_schedule(case).windows(sign)
+                   if ((t >= start) & (t < end)).any()
+                   and not reached[(t >= start) & (t < end)].any())
+
+    assert brute_force("extend", 1.0) == 1 and brute_force("retract", -1.0) == 2
+    assert notes[0].startswith("1 of 2 extend commands did not reach the extended end: the "
+                               "piston got no further than 30 mm")
+    assert notes[1].startswith("2 of 2 retract commands did not reach the retracted end")

@@ -209,43 +209,50 @@ def _diagnostics(system, ts, ys, modes, reuse: bool = False) -> dict[str, np.nda
 
 
 _MODE_CODES = np.array(sorted(rhs.MODES))
-# an object array: indexing it hands pandas the five str objects themselves (half the time of
-# converting a numpy unicode array to the str column)
 _MODE_NAMES = np.array([rhs.MODES[k] for k in _MODE_CODES], dtype=object)
 
 
 def _frame(system, diag) -> pd.DataFrame:
-    cols = {
-        "time_s": diag["time"], "x_m": diag["x"], "v_m_s": diag["v"],
-        "p1_bar_abs": diag["p1"] / 1e5, "p2_bar_abs": diag["p2"] / 1e5,
-        "T1_C": diag["T1"] - ZERO_CELSIUS_K, "T2_C": diag["T2"] - ZERO_CELSIUS_K,
-        "valve_command": diag["command"], "spool": diag["spool"],
-        "mode": _MODE_NAMES[np.searchsorted(_MODE_CODES, diag["mode"])],
-        "F_friction_N": diag["f_fric"], "F_pressure_N": diag["f_press"],
-    }
+    # (name, values, conversion to the column's unit: a divisor, a subtrahend or a factor)
+    cols = [("time_s", diag["time"], None), ("x_m", diag["x"], None),
+            ("v_m_s", diag["v"], None), ("p1_bar_abs", diag["p1"], ("/", 1e5)),
+            ("p2_bar_abs", diag["p2"], ("/", 1e5)), ("T1_C", diag["T1"], ("-", ZERO_CELSIUS_K)),
+            ("T2_C", diag["T2"], ("-", ZERO_CELSIUS_K)), ("valve_command", diag["command"], None),
+            ("spool", diag["spool"], None), ("mode", None, None),
+            ("F_friction_N", diag["f_fric"], None), ("F_pressure_N", diag["f_press"], None)]
     for i, (s, name) in enumerate(zip(system.seals, seal_columns(s.name for s in
                                                                  system.seals))):
-        cols[f"F_{name}_N"] = diag["f_seal"][i]
+        cols.append((f"F_{name}_N", diag["f_seal"][i], None))
         if s.contact_map is not None:          # F_N and b exist where a map gives them
-            cols[f"F_N_{name}_N"] = diag[f"fn{i}"]
-            cols[f"b_{name}_mm"] = diag[f"b{i}"] * 1e3
-        cols[f"dp_{name}_bar"] = diag[f"dp{i}"] / 1e5
+            cols.append((f"F_N_{name}_N", diag[f"fn{i}"], None))
+            cols.append((f"b_{name}_mm", diag[f"b{i}"], ("*", 1e3)))
+        cols.append((f"dp_{name}_bar", diag[f"dp{i}"], ("/", 1e5)))
         if f"theta{i}" in diag:
-            cols[f"theta_{name}"] = diag[f"theta{i}"]
+            cols.append((f"theta_{name}", diag[f"theta{i}"], None))
         if system.heating and system.tables[3][i, rhs.SI_HEATED]:
-            cols[f"T_{name}_C"] = diag[f"tseal{i}"] - ZERO_CELSIUS_K
+            cols.append((f"T_{name}_C", diag[f"tseal{i}"], ("-", ZERO_CELSIUS_K)))
     if system.heating:
-        cols["T_tube_metal_C"] = diag["T_tube"] - ZERO_CELSIUS_K
-        cols["T_rod_metal_C"] = diag["T_rod"] - ZERO_CELSIUS_K
+        cols.append(("T_tube_metal_C", diag["T_tube"], ("-", ZERO_CELSIUS_K)))
+        cols.append(("T_rod_metal_C", diag["T_rod"], ("-", ZERO_CELSIUS_K)))
     # the float columns as one block that the frame keeps without a copy (a frame built from a
-    # dict of columns copies them all into a new block once more)
-    floats = [name for name in cols if name != "mode"]
+    # dict of columns copies them all into a new block once more); each converted straight
+    # into its row (the same IEEE operation as ``values / 1e5``, no temporary array)
+    floats = [c for c in cols if c[0] != "mode"]
     block = np.empty((len(floats), diag["time"].size))
-    for row, name in zip(block, floats):
-        row[:] = cols[name]
-    frame = pd.DataFrame(block.T, columns=floats, copy=False)
-    frame.insert(list(cols).index("mode"), "mode", cols["mode"])
+    for row, (_, values, unit) in zip(block, floats):
+        if unit is None:
+            row[:] = values
+        else:
+            _CONVERT[unit[0]](values, unit[1], out=row)
+    frame = pd.DataFrame(block.T, columns=[c[0] for c in floats], copy=False)
+    # the column of pandas' type for the five names (str with pandas 3, object before),
+    # inferred from them once, not from the 10^4 samples
+    modes = pd.Series(_MODE_NAMES).array.take(np.searchsorted(_MODE_CODES, diag["mode"]))
+    frame.insert([c[0] for c in cols].index("mode"), "mode", modes)
     return frame
+
+
+_CONVERT = {"/": np.divide, "-": np.subtract, "*": np.multiply}
 
 
 def balances(system, segments) -> dict[str, float]:

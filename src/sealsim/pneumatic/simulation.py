@@ -139,14 +139,15 @@ def run(system: PneumaticSystem, progress=None) -> PneumaticResult:
     segments = integrate(system, progress, sampler)
     wall = _time.perf_counter() - wall0
     frame, diag = _results.sample(system, sampler)
-    system.check_chamber_volumes(frame["time_s"].to_numpy(), frame["x_m"].to_numpy())
+    # the sampled times and positions, of which the frame's columns are copies
+    time, position = diag["time"], diag["x"]
+    system.check_chamber_volumes(time, position)
     balances = _results.balances(system, segments)
     seals = system.seals
     notes = (system.case.valve.assumed_notes()
              + [f"seal {s.name!r}: {n}" for s in seals for n in s.notes] + system.thermal_notes
              + _results.notes(system, diag)
-             + unfinished_strokes(frame["time_s"].to_numpy(), frame["x_m"].to_numpy(),
-                                  system.case))
+             + unfinished_strokes(time, position, system.case))
     stats = {
         "segments": len(segments),
         "steps": int(sum(s.steps for s in segments)),

@@ -136,10 +136,27 @@ def end_position_times(time, position, stroke, windows, target):
     return out
 
 
+def _samples_between(time, windows) -> list[slice]:
+    """Per window (start, end) the samples with start <= t < end of the ascending times
+    ``time``, as slices: binary searches of all windows at once instead of two comparisons of
+    every sample per window.
+
+    Examples
+    --------
+    >>> _samples_between(np.array([0.0, 0.5, 1.0, 1.5]), [(0.5, 1.5), (1.5, np.inf)])
+    [slice(1, 3, None), slice(3, 4, None)]
+    """
+    if not windows:
+        return []
+    bounds = np.searchsorted(time, np.asarray(windows, dtype=float).ravel(), side="left")
+    return [slice(int(a), int(b)) for a, b in bounds.reshape(-1, 2)]
+
+
 def unfinished_strokes(time, position, case) -> list[str]:
     """Notes on the commands of a ``cycle`` case after which the piston did not reach its end
     position (within :data:`END_TOLERANCE` of the stroke) before the next command: a load or
     friction the supply pressure cannot overcome, or a command too short for the stroke.
+    ``time`` ascending (the samples of a run).
 
     Examples
     --------
@@ -164,9 +181,8 @@ def unfinished_strokes(time, position, case) -> list[str]:
         windows = schedule.windows(sign)
         _, reached = _end_reached(position, stroke, target)
         missed = []
-        for start, end in windows:
-            inside = (time >= start) & (time < end)
-            if inside.any() and not reached[inside].any():
+        for inside in _samples_between(time, windows):
+            if inside.start < inside.stop and not reached[inside].any():
                 x = position[inside]
                 missed.append(float(x.max() if target == "extend" else x.min()))
         if missed:
