@@ -167,7 +167,8 @@ def test_cycling_increment_of_the_xring_map_converges(installed_xring, monkeypat
     # 0 -> 0.5 bar in one increment: the ring's lobe at the downstream land's rounded edge
     # has one point flipping in and out of contact and its neighbour between stick and slip,
     # Newton's residual alternating between 0.95 and 0.15 of the reactions for 25 iterations
-    # (the map cut this increment back twice); holding the state it converges
+    # (in the map the second cutback of its 0 -> 2 bar step, failing as well); with the
+    # cycling state frozen it converges
     with pytest.raises(ConvergenceError):
         _pressurise(installed_xring, 1, monkeypatch, hold=False)
     model, state = _pressurise(installed_xring, 1, monkeypatch, hold=True)
