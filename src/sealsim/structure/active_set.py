@@ -20,20 +20,20 @@ Both laws switch branch at a kink (:math:`g = 0`, :math:`|\mathbf e| = s`); Newt
 such a semismooth system is an active set method (Hintermüller, Ito & Kunisch, *SIAM J.
 Optim.* 13 (2002) 865-888), convergent only locally, and it cycles when a point's solution
 lies at the kink: with the point in contact the next iterate separates it, without it the
-next iterate penetrates; a point at :math:`|\mathbf e| \approx s` likewise flips between stick and slip,
-and the iterates repeat with period 2 or 3 without converging.
+next iterate penetrates; a point at :math:`|\mathbf e| \approx s` likewise flips between
+stick and slip, and the iterates repeat with period 2 or 3 without converging.
 
-The standard remedy of active set strategies (Wriggers 2006): once the state still
-changes after a few iterations, freeze it -- every point keeps its branch whatever its gap
-or slip -- and finish Newton on the frozen system, which is smooth (:meth:`frozen_trial`): a
-point held in contact keeps the penalty force :math:`-\lambda_n g` also at :math:`g > 0` (a
-tension, with the friction of its branch continued, :math:`\propto f_n`; a point that comes
-into contact within the increment has none before its first contact), a point held out of
-contact carries nothing, a point held in stick or slip keeps that branch's force
-and tangent. The converged frozen state is then checked (:meth:`inconsistent_points`): a
-point whose branch disagrees with its gap or slip by more than a tolerance (see
-:meth:`inconsistent_points`) is switched to the branch its gap or slip asks for and Newton
-goes on; the state is accepted when no point disagrees.
+The remedy of active set strategies: once the state cycles (the solver detects it,
+:func:`sealsim.structure.solver._newton`), freeze it -- every point keeps its branch whatever
+its gap or slip -- and finish Newton on the frozen system, which is smooth
+(:meth:`frozen_trial`): a point held in contact keeps the penalty force
+:math:`-\lambda_n g` also at :math:`g > 0` (a tension, with the friction of its branch
+continued, :math:`\propto f_n`; a point that comes into contact within the increment has none
+before its first contact), a point held out of contact carries nothing, a point held in
+stick or slip keeps that branch's force and tangent. The converged frozen state is then
+checked (:meth:`inconsistent_points`): a point whose branch disagrees with its gap or slip
+by more than a tolerance is switched to the branch its gap or slip asks for and Newton goes
+on; the state is accepted when no point disagrees.
 """
 
 from __future__ import annotations
