@@ -265,21 +265,46 @@ def change_differences(w, od, n, order, factor, o_r):
 @njit(cache=True, inline="always")
 def dense(ws, t, out):
     """The solution at ``t`` (within the last step) from the BDF interpolant (scipy's
-    ``BdfDenseOutput``); inlined into compiled callers (it runs at every output sample)."""
+    ``BdfDenseOutput``); inlined into compiled callers (it runs at every output sample).
+
+    The products p_k = Π_{j<k} (t − (t_end − j·h))/((j + 1)·h) first, then each state summed
+    in a register, D_0 + D_1·p_1 + D_2·p_2 + ... (the operations and their order of the
+    running sum in ``out``, so the same numbers): a read-modify-write of ``out`` per order
+    cost more than the arithmetic, since the compiler cannot keep ``out[i]`` in a register
+    while ``out`` might share memory with the workspace."""
     w, iv = ws[0], ws[1]
     n = out.shape[0]
     od = S_NS + n
     order = iv[I_ORDER]
     h = w[S_H_ABS]
     t_end = w[S_T]
-    for i in range(n):
-        out[i] = w[od + i]
+    p1 = p2 = p3 = p4 = p5 = 0.0
     p = 1.0
     for k in range(order):
         p *= (t - (t_end - h * k)) / (h * (1 + k))
-        row = od + (k + 1) * n
-        for i in range(n):
-            out[i] += w[row + i] * p
+        if k == 0:
+            p1 = p
+        elif k == 1:
+            p2 = p
+        elif k == 2:
+            p3 = p
+        elif k == 3:
+            p4 = p
+        else:
+            p5 = p
+    for i in range(n):
+        acc = w[od + i]
+        if order >= 1:
+            acc += w[od + n + i] * p1
+            if order >= 2:
+                acc += w[od + 2 * n + i] * p2
+                if order >= 3:
+                    acc += w[od + 3 * n + i] * p3
+                    if order >= 4:
+                        acc += w[od + 4 * n + i] * p4
+                        if order >= 5:
+                            acc += w[od + 5 * n + i] * p5
+        out[i] = acc
 
 
 # -- the problem-dependent functions (copied per problem by compile_bdf) --------------------
