@@ -11,8 +11,12 @@ factorisations, segments and steps at rest; per phase of the cycle -- stroke, ca
 stop -- and mode: segments, steps, RHS and Jacobians) and the cost of one
 compiled call of each part, timed in a compiled loop: the right-hand side, the Jacobian, an LU
 factorisation of the Newton matrix, the diagnostics of one output sample.  From those, the
-integration's estimated split (evaluations × cost; the remainder is the BDF bookkeeping,
-events and the dense output).  And which state limits the steps: the analytic case is run
+integration's estimated split (evaluations × cost; the remainder is not the BDF bookkeeping
+alone: it also holds the Newton iteration's LU solves, what the evaluations cost in the run
+above their cost in a loop at one state -- a lower bound --, and the Python around the
+compiled calls; a ``perf`` profile of the analytic case put the driver's own compiled code
+at about 45 % of the integration's samples, the Python around it at 17 %: see
+docs/guide/layout.md).  And which state limits the steps: the analytic case is run
 once more by a Python copy of the compiled driver's loop (:func:`limiting_states`: the same
 compiled ``start``/``step``/``locate`` calls, checked to take the driver's steps), which
 records per accepted step the state with the largest term of the error norm, by phase --
@@ -371,7 +375,7 @@ def main() -> None:
               f"{p['lu_us']:.3f} us; integration estimated as "
               + ", ".join(f"{k} {v:.2f} ms ({v / p['integration_ms'] * 100:.0f} %)"
                           for k, v in est.items())
-              + f", steps/events/dense output {driver:.2f} ms "
+              + f", rest (steps, LU solves, events, dense output, Python) {driver:.2f} ms "
               f"({driver / p['integration_ms'] * 100:.0f} %)")
     print(json.dumps(out))
 

@@ -175,10 +175,12 @@ def lu_factor_at(a, o, m, piv, po):
     return True
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def lu_solve_at(a, o, m, piv, po, b):
     """Solve with the factors of :func:`lu_factor_at`; b (length >= m) overwritten in its
-    first m entries."""
+    first m entries.  Inlined into the Newton iteration, which solves at every iteration: as a
+    call it took and released a reference to each of its three arrays (8 % of the Ø32
+    cylinder's integration in lu_solve_at, its substitutions being a few dozen flops)."""
     for k in range(m):
         p = piv[po + k]
         if p != k:
@@ -230,27 +232,40 @@ def _rms_vec(x, w, scale_o, m):
     return math.sqrt(acc) / math.sqrt(m)
 
 
+def _r_one() -> np.ndarray:
+    """U = R(1) of :func:`change_differences` for every order (6 × 6; the top-left
+    (order + 1)² block is that order's): the cumulative products of M with factor 1, computed
+    with the operations of R(factor) in floating point, so the same numbers."""
+    u = np.zeros((MAX_ORDER + 1, MAX_ORDER + 1))
+    u[0, :] = 1.0
+    for i in range(1, MAX_ORDER + 1):
+        for j in range(1, MAX_ORDER + 1):
+            u[i, j] = u[i - 1, j] * ((i - 1 - 1.0 * j) / i)
+    return u
+
+
+#: R(1) of scipy's ``change_D``, a constant of the compiled code (:func:`_r_one`)
+R_ONE = _r_one()
+
+
 @njit(cache=True)
 def change_differences(w, od, n, order, factor, o_r):
     """Re-express the differences D = w[od:] (rows of n) for a step size changed by
-    ``factor`` (scipy's ``change_D``: D[:order+1] = (R(factor)·R(1))ᵀ·D[:order+1]); scratch
-    w[o_r:o_r + 108]."""
+    ``factor`` (scipy's ``change_D``: D[:order+1] = (R(factor)·U)ᵀ·D[:order+1], U = R(1):
+    :data:`R_ONE`); scratch w[o_r:o_r + 108]."""
     m = order + 1
-    r, u, ru = o_r, o_r + 36, o_r + 72        # three 6 × 6 matrices
-    for j in range(m):             # R(factor) and U = R(1): cumulative products of M
+    r, ru = o_r, o_r + 72        # two 6 × 6 matrices
+    for j in range(m):             # R(factor): cumulative products of M
         w[r + j] = 1.0
-        w[u + j] = 1.0
     for i in range(1, m):
         w[r + 6 * i] = 0.0
-        w[u + 6 * i] = 0.0
         for j in range(1, m):
             w[r + 6 * i + j] = w[r + 6 * (i - 1) + j] * ((i - 1 - factor * j) / i)
-            w[u + 6 * i + j] = w[u + 6 * (i - 1) + j] * ((i - 1 - 1.0 * j) / i)
     for i in range(m):
         for j in range(m):
             acc = 0.0
             for k in range(m):
-                acc += w[r + 6 * i + k] * w[u + 6 * k + j]
+                acc += w[r + 6 * i + k] * R_ONE[k, j]
             w[ru + 6 * i + j] = acc
     for c in range(n):
         for i in range(m):
@@ -265,21 +280,46 @@ def change_differences(w, od, n, order, factor, o_r):
 @njit(cache=True, inline="always")
 def dense(ws, t, out):
     """The solution at ``t`` (within the last step) from the BDF interpolant (scipy's
-    ``BdfDenseOutput``); inlined into compiled callers (it runs at every output sample)."""
+    ``BdfDenseOutput``); inlined into compiled callers (it runs at every output sample).
+
+    The products p_k = Π_{j<k} (t − (t_end − j·h))/((j + 1)·h) first, then each state summed
+    in a register, D_0 + D_1·p_1 + D_2·p_2 + ... (the operations and their order of the
+    running sum in ``out``, so the same numbers): a read-modify-write of ``out`` per order
+    cost more than the arithmetic, since the compiler cannot keep ``out[i]`` in a register
+    while ``out`` might share memory with the workspace."""
     w, iv = ws[0], ws[1]
     n = out.shape[0]
     od = S_NS + n
     order = iv[I_ORDER]
     h = w[S_H_ABS]
     t_end = w[S_T]
-    for i in range(n):
-        out[i] = w[od + i]
+    p1 = p2 = p3 = p4 = p5 = 0.0
     p = 1.0
     for k in range(order):
         p *= (t - (t_end - h * k)) / (h * (1 + k))
-        row = od + (k + 1) * n
-        for i in range(n):
-            out[i] += w[row + i] * p
+        if k == 0:
+            p1 = p
+        elif k == 1:
+            p2 = p
+        elif k == 2:
+            p3 = p
+        elif k == 3:
+            p4 = p
+        else:
+            p5 = p
+    for i in range(n):
+        acc = w[od + i]
+        if order >= 1:
+            acc += w[od + n + i] * p1
+            if order >= 2:
+                acc += w[od + 2 * n + i] * p2
+                if order >= 3:
+                    acc += w[od + 3 * n + i] * p3
+                    if order >= 4:
+                        acc += w[od + 4 * n + i] * p4
+                        if order >= 5:
+                            acc += w[od + 5 * n + i] * p5
+        out[i] = acc
 
 
 # -- the problem-dependent functions (copied per problem by compile_bdf) --------------------

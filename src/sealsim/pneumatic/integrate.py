@@ -460,9 +460,11 @@ def _integrate_compiled(system, progress, sampler) -> list[Segment]:
     t = 0.0
     mode = _initial_mode(system, t, y)
     breaks = sorted({float(a) for a in system.spool.arrivals if 0.0 < a < end} | {end})
-    segments: list[Segment] = []
+    # the segments of every call, made Segments once at the end: per call, the numpy steps of
+    # their assembly cost about as much as the Segments themselves
+    chunks: list[tuple] = []
     k = 0
-    y_start = y.copy()
+    y_first = y.copy()
     for t_next in breaks:
         if t_next <= t + 1e-12 * max(end, 1.0):
             continue
@@ -471,27 +473,11 @@ def _integrate_compiled(system, progress, sampler) -> list[Segment]:
                                                     grid, k, samples, sample_modes, seg_t,
                                                     seg_i, seg_y, recent)
             if nseg:
-                # the states at the ends and the starts (a segment starts where the one before
-                # ended, at rest after a slip that ended by an event), one copy for all
-                ends = seg_y[:nseg].copy()
-                starts = np.empty_like(ends)
-                starts[0] = y_start
-                starts[1:] = ends[:-1]
-                info = seg_i[:nseg]
-                slip_end = (info[:, 4] != 0) & ((info[:, 0] == rhs.FORWARD)
-                                                | (info[:, 0] == rhs.BACKWARD))
-                starts[1:, 1][slip_end[:-1]] = 0.0
-                times, info = seg_t[:nseg].tolist(), info.tolist()
-                segments.extend(Segment(times[j][0], times[j][1], info[j][0], starts[j],
-                                        ends[j], info[j][1], info[j][2], info[j][3],
-                                        info[j][4]) for j in range(nseg))
-                y_start = ends[-1].copy()
-                if slip_end[-1]:                    # the next segment starts after the switch
-                    y_start[1] = 0.0
+                chunks.append((seg_t[:nseg].copy(), seg_i[:nseg].copy(), seg_y[:nseg].copy()))
             if result == DONE:
                 break
             if result == STEP_FAILED or not np.all(np.isfinite(y)):
-                y_fail = y if np.all(np.isfinite(y)) else y_start
+                y_fail = y if np.all(np.isfinite(y)) else _next_start(chunks, y_first)
                 raise ConvergenceError(
                     f"pneumatic simulation: the integrator (compiled BDF) failed at "
                     f"{_where(system, float(t), y_fail, mode)}: the step size became too "
@@ -504,6 +490,7 @@ def _integrate_compiled(system, progress, sampler) -> list[Segment]:
                     "and sliding -- check the friction parameters")
         if progress is not None:
             progress(t, end)
+    segments = _segments(chunks, y_first)
     # the last grid point (the end) from the final state
     while k < grid.size:
         samples[k] = y
@@ -513,6 +500,37 @@ def _integrate_compiled(system, progress, sampler) -> list[Segment]:
         k += 1
     sampler.store(grid, samples.T, sample_modes)
     return segments
+
+
+def _next_start(chunks, y_first) -> np.ndarray:
+    """The state the segment after the recorded ones (``chunks`` of :func:`_segments`) starts
+    from."""
+    if not chunks:
+        return y_first
+    _, info, ends = chunks[-1]
+    y = ends[-1].copy()
+    if info[-1, 4] != 0 and info[-1, 0] in (rhs.FORWARD, rhs.BACKWARD):
+        y[1] = 0.0                    # the next segment starts at rest after the slip's end
+    return y
+
+
+def _segments(chunks, y_first) -> list[Segment]:
+    """The :class:`Segment` s of :func:`run_interval`'s records ``chunks`` (per call: times,
+    info, end states) in order; ``y_first`` is the state the first one starts from.  A
+    segment starts where the one before ended, at rest after a slip that ended by an event."""
+    if not chunks:
+        return []
+    times = np.concatenate([c[0] for c in chunks])
+    info = np.concatenate([c[1] for c in chunks])
+    ends = np.concatenate([c[2] for c in chunks])
+    starts = np.empty_like(ends)
+    starts[0] = y_first
+    starts[1:] = ends[:-1]
+    slip_end = (info[:, 4] != 0) & ((info[:, 0] == rhs.FORWARD) | (info[:, 0] == rhs.BACKWARD))
+    starts[1:, 1][slip_end[:-1]] = 0.0
+    times, info = times.tolist(), info.tolist()
+    return [Segment(times[j][0], times[j][1], info[j][0], starts[j], ends[j], info[j][1],
+                    info[j][2], info[j][3], info[j][4]) for j in range(len(times))]
 
 
 class _EndOnly:
