@@ -112,7 +112,7 @@ static double law_rates(long law, const double *par, const double *z, double vv,
         if (contact) gamma = 0.0;           /* the table holds the viscous part */
         else if (par[11] != 0.0) gamma *= walther_viscosity(temp, par[10], par[11]) / par[16];
         double th = z[0], level;
-        fn = fmax(fn, 1e-9);
+        fn = fmax_inline(fn, 1e-9);
         if (contact) {                      /* compiled._theta_level on the contact table */
             double fss, fb, fv;
             contact_steady(frow, fdata, temp, dp, orient * vv, par[15], par[13], &fss, &fb, &fv);
@@ -144,11 +144,11 @@ static void analytic_loads(double dp, double f0, double modulus, double d, doubl
     const double pi = 3.141592653589793;
     double e_star = modulus / (1.0 - 0.5 * 0.5);
     double k = 2.0 * sqrt(2.0 * d / (pi * e_star));
-    double kdp = k * fmax(dp, 0.0);
+    double kdp = k * fmax_inline(dp, 0.0);
     double root = 0.5 * (kdp + sqrt(kdp * kdp + 4.0 * f0));
     double force = root * root;
     *fn = pi * diameter * force;
-    *b = 2.0 * sqrt(4.0 * fmax(force, 0.0) * (0.5 * d) / (pi * e_star));
+    *b = 2.0 * sqrt(4.0 * fmax_inline(force, 0.0) * (0.5 * d) / (pi * e_star));
 }
 
 static double grid_basis(double u, int j) {       /* contact_maps._basis */
@@ -175,8 +175,9 @@ static void hermite_grid_point(const long *row, double pressure, double temperat
     const double *data = MAP_DATA;
     long o = row[1], d = row[2];
     double plo = data[o + 1], phi = data[o + 2], tlo = data[o + 3], thi = data[o + 4];
-    double p = fmin(fmax(pressure, plo), phi), t = fmin(fmax(temperature, tlo), thi);
-    *clipped = fabs(t - temperature) > 1e-9 * fmax(fabs(temperature), 1.0) ? 1.0 : 0.0;
+    double p = fmin_inline(fmax_inline(pressure, plo), phi);
+    double t = fmin_inline(fmax_inline(temperature, tlo), thi);
+    *clipped = fabs(t - temperature) > 1e-9 * fmax_inline(fabs(temperature), 1.0) ? 1.0 : 0.0;
     long pos = o + 5, cell = 0;
     double u[3] = {0.0, 0.0, 0.0};
     for (long k = 0; k < d; k++) {
@@ -221,18 +222,18 @@ static void seal_loads(int i, double dp, double temp, double *fn, double *b, dou
 
 /* -- valve, chambers, cylinder (sealsim.pneumatic.valve, .chambers, .cylinder) --------------- */
 static double series_pair(double c1, double c2) {
-    double small = fmin(c1, c2), large = fmax(c1, c2);
-    double s = fmin(small, 1e100), l = fmin(large, 1e100);
+    double small = fmin_inline(c1, c2), large = fmax_inline(c1, c2);
+    double s = fmin_inline(small, 1e100), l = fmin_inline(large, 1e100);
     double ratio = s / (l + (l == 0.0));
     return small / sqrt(1.0 + ratio * ratio);
 }
 
 static double iso6358_mass_flow(double p1, double p2, double t1, double cond, double bcrit,
                                 double m, double beta) {
-    double r = fmin(fmax(p2 / p1, 0.0), 1.0);
-    double e = (fmin(fmax(r, bcrit), beta) - bcrit) / (1.0 - bcrit);
+    double r = fmin_inline(fmax_inline(p2 / p1, 0.0), 1.0);
+    double e = (fmin_inline(fmax_inline(r, bcrit), beta) - bcrit) / (1.0 - bcrit);
     double q = 1.0 - e * e;        /* valve.subsonic_power: sqrt for m = 0.5, as numba */
-    double phi = (m == 0.5 ? sqrt(q) : pow(q, m)) * fmin((1.0 - r) / (1.0 - beta), 1.0);
+    double phi = (m == 0.5 ? sqrt(q) : pow(q, m)) * fmin_inline((1.0 - r) / (1.0 - beta), 1.0);
     double g = cond * ANR_DENSITY * p1 * sqrt(ANR_TEMPERATURE / t1) * phi;
     return g * (p1 > p2);
 }
@@ -240,21 +241,22 @@ static double iso6358_mass_flow(double p1, double p2, double t1, double cond, do
 static double iso6358_flow(double pa, double ta, double pb, double tb, double cond,
                            double bcrit, double m, double beta) {
     int forward = pa >= pb;
-    double g = iso6358_mass_flow(fmax(pa, pb), fmin(pa, pb), forward * ta + (1 - forward) * tb,
-                                 cond, bcrit, m, beta);
+    double g = iso6358_mass_flow(fmax_inline(pa, pb), fmin_inline(pa, pb),
+                                 forward * ta + (1 - forward) * tb, cond, bcrit, m, beta);
     return g * (2 * forward - 1);
 }
 
 static double cushion_conductance(double distance, double length, double conductance,
                                   double entry) {
     if (length <= 0.0) return INFINITY;
-    double u = fmin(fmax((distance - (length - entry)) / entry, 0.0), 1.0);
+    double u = fmin_inline(fmax_inline((distance - (length - entry)) / entry, 0.0), 1.0);
     double closed = 1.0 - u * u * (3.0 - 2.0 * u);
     return closed <= 0.0 ? INFINITY : conductance / closed;
 }
 
 static void openings(double s, double centre, double *o) {
-    double forward = fmin(fmax(s, 0.0), 1.0), back = fmin(fmax(-s, 0.0), 1.0);
+    double forward = fmin_inline(fmax_inline(s, 0.0), 1.0);
+    double back = fmin_inline(fmax_inline(-s, 0.0), 1.0);
     double middle = 1.0 - forward - back;
     double exhaust = middle * (centre == 1.0), pressure = middle * (centre == 2.0);
     o[0] = forward + pressure;
@@ -265,9 +267,9 @@ static void openings(double s, double centre, double *o) {
 
 static double end_stop_force(double x, double v, double stroke, double k, double cd,
                              double depth) {
-    double d_cap = fmax(-x, 0.0), d_head = fmax(x - stroke, 0.0);
-    double f_cap = fmax(k * d_cap - cd * v * d_cap / (d_cap + depth), 0.0);
-    double f_head = fmax(k * d_head + cd * v * d_head / (d_head + depth), 0.0);
+    double d_cap = fmax_inline(-x, 0.0), d_head = fmax_inline(x - stroke, 0.0);
+    double f_cap = fmax_inline(k * d_cap - cd * v * d_cap / (d_cap + depth), 0.0);
+    double f_head = fmax_inline(k * d_head + cd * v * d_head / (d_head + depth), 0.0);
     return f_cap - f_head;
 }
 
@@ -311,7 +313,7 @@ typedef struct {
 static double spool_lag(const CylinderData *m, double u, double s0, double a, double t) {
     double tau = m->cst[C_SPOOL_TAU];
     if (tau <= 0.0) return u;
-    return u + (s0 - u) * exp(-fmax(t - a, 0.0) / tau);
+    return u + (s0 - u) * exp(-fmax_inline(t - a, 0.0) / tau);
 }
 
 /* the spool at t, with the commands that arrive until t */
@@ -347,16 +349,17 @@ static int commit_arrivals(CylinderData *m, double t) {
  * changes no pressure difference) */
 enum { OUTPUTS_ONLY = 0, RATES = 1, RATES_KEPT_LOADS = 2 };
 
-static void evaluate(const CylinderData *m, double t, const double *y, int mode, int level,
+/* the model at the states y with the spool at s (spool_position at the time; the time enters
+ * nowhere else) */
+static void evaluate(const CylinderData *m, double s, const double *y, int mode, int level,
                      double *dy, Outputs *o) {
     const double *c = m->cst;
     const double gm1 = AIR_GAMMA - 1.0;
     double x = y[0], v = y[1], m1 = y[2], m2 = y[3], u1 = y[4], u2 = y[5];
     double vol1 = c[C_DEAD1] + c[C_A1] * x, vol2 = c[C_DEAD2] + c[C_A2] * (c[C_STROKE] - x);
     double p1 = gm1 * u1 / vol1, p2 = gm1 * u2 / vol2;
-    double t1 = fmin(fmax(u1 / (fmax(m1, 1e-12) * AIR_CV), 20.0), 3000.0);
-    double t2 = fmin(fmax(u2 / (fmax(m2, 1e-12) * AIR_CV), 20.0), 3000.0);
-    double s = spool_position(m, t);
+    double t1 = fmin_inline(fmax_inline(u1 / (fmax_inline(m1, 1e-12) * AIR_CV), 20.0), 3000.0);
+    double t2 = fmin_inline(fmax_inline(u2 / (fmax_inline(m2, 1e-12) * AIR_CV), 20.0), 3000.0);
     double ps = c[C_PS], pa = c[C_PA], ts = c[C_TS], ta = c[C_TA], t_wall = c[C_TW];
     double g[4] = {0, 0, 0, 0}, h[4] = {0, 0, 0, 0}, q1 = 0.0, q2 = 0.0;
     if (level != OUTPUTS_ONLY) {
@@ -394,7 +397,8 @@ static void evaluate(const CylinderData *m, double t, const double *y, int mode,
         long law = SEAL_INT[i][SI_LAW], loc = SEAL_INT[i][SI_LOC], off = SEAL_INT[i][SI_OFF];
         int sticky = SEAL_INT[i][SI_STICKY] != 0;
         double temp = SEAL_THERM[i][ST_TCONST];
-        double dp = (loc == 0) * smooth_abs(p1 - p2, 1e3) + (loc == 1) * smooth_abs(p2 - pa, 1e3);
+        double dp = loc == 0 ? smooth_abs(p1 - p2, 1e3)
+                             : (loc == 1 ? smooth_abs(p2 - pa, 1e3) : 0.0);
         double side_a = (loc == 0) * (p1 - pa) + (loc == 1) * (p2 - pa);
         double side_b = (loc == 0) * (p2 - pa);
         double fn, b, clipped, vv, brk;
@@ -409,7 +413,7 @@ static void evaluate(const CylinderData *m, double t, const double *y, int mode,
         else if (mode == MODE_STICK) vv = 0.0;
         else {
             double d = (double)mode;
-            vv = d * fmax(d * v, TINY_SPEED);
+            vv = d * fmax_inline(d * v, TINY_SPEED);
         }
         double force = law_rates(law, LAW_PAR[i], y + off, vv, fn, b, side_a, side_b, temp, dz,
                                  &brk, FRIC_INT[i] + 1, FRIC_DATA + FRIC_INT[i][0], dp,
@@ -476,47 +480,58 @@ typedef struct {
     int mode;
     Outputs o;
     BdfProblem bp;
-    double shifted[NSTATES], f0[NSTATES], f1[NSTATES], rest[NSTATES];
+    double spool_t, spool_s;         /* the spool position spool_s at the time spool_t */
+    double shifted[NSTATES], f1[NSTATES], rest[NSTATES];
 } Problem;
+
+/* the spool at t: the Newton iterations of a step and the columns of its Jacobian all
+ * evaluate at the same time, so the last one is kept (an exp() per right-hand side less) */
+static double problem_spool(Problem *p, double t) {
+    if (t != p->spool_t) {
+        p->spool_s = spool_position(p->m, t);
+        p->spool_t = t;
+    }
+    return p->spool_s;
+}
 
 static void problem_fun(void *ctx, double t, const double *y, double *dy) {
     Problem *p = (Problem *)ctx;
-    evaluate(p->m, t, y, p->mode, RATES, dy, &p->o);
+    evaluate(p->m, problem_spool(p, t), y, p->mode, RATES, dy, &p->o);
 }
 
-/* rhs.jacobian: forward differences, h_j = 1.5e-8 max(|y_j|, scale_j); as rhs.jacobian_at,
- * the columns that change no pressure (all but x, U1, U2) first, the first of them looks the
- * contact loads up, the others keep them */
-static void problem_jac(void *ctx, double t, const double *y, double *J) {
+/* rhs.jacobian_at: forward differences from f = f(t, y), which the integrator has evaluated,
+ * h_j = 1.5e-8 max(|y_j|, scale_j); the columns that change no pressure (all but x, U1, U2)
+ * first, the first of them looks the contact loads up, the others keep them */
+static void problem_jac(void *ctx, double t, const double *y, const double *f, double *J) {
     Problem *p = (Problem *)ctx;
-    problem_fun(ctx, t, y, p->f0);
+    double s = problem_spool(p, t);
     int looked_up = 0;
     for (int sweep = 0; sweep < 2; sweep++) {
         for (int j = 0; j < NSTATES; j++) {
             int new_loads = j == 0 || j == 4 || j == 5;
             if (new_loads != (sweep == 1)) continue;
-            double h = 1.5e-8 * fmax(fabs(y[j]), JAC_SCALE[j]);
+            double h = 1.5e-8 * fmax_inline(fabs(y[j]), JAC_SCALE[j]);
             for (int i = 0; i < NSTATES; i++) p->shifted[i] = y[i];
             p->shifted[j] = y[j] + h;
-            evaluate(p->m, t, p->shifted, p->mode,
+            evaluate(p->m, s, p->shifted, p->mode,
                      new_loads || !looked_up ? RATES : RATES_KEPT_LOADS, p->f1, &p->o);
             looked_up = 1;
-            for (int i = 0; i < NSTATES; i++) J[i * BDF_MAXN + j] = (p->f1[i] - p->f0[i]) / h;
+            for (int i = 0; i < NSTATES; i++) J[i * BDF_MAXN + j] = (p->f1[i] - f[i]) / h;
         }
     }
 }
 
-/* integrate._renew: the growth rate from the velocity's column alone (rhs.velocity_column_at:
- * the column of problem_jac, the contact loads of the evaluation at y kept) */
-static double problem_renew(void *ctx, double t, const double *y, double *J) {
+/* integrate._renew: the growth rate from the velocity's column alone, from f = f(t, y)
+ * (rhs.velocity_column_at: the column of problem_jac; it looks the contact loads up, as the
+ * evaluation before need not have been at y) */
+static double problem_renew(void *ctx, double t, const double *y, const double *f, double *J) {
     Problem *p = (Problem *)ctx;
-    problem_fun(ctx, t, y, p->f0);
-    double h = 1.5e-8 * fmax(fabs(y[1]), JAC_SCALE[1]);
+    double h = 1.5e-8 * fmax_inline(fabs(y[1]), JAC_SCALE[1]);
     for (int i = 0; i < NSTATES; i++) p->shifted[i] = y[i];
     p->shifted[1] = y[1] + h;
-    evaluate(p->m, t, p->shifted, p->mode, RATES_KEPT_LOADS, p->f1, &p->o);
-    for (int i = 0; i < NSTATES; i++) J[i * BDF_MAXN + 1] = (p->f1[i] - p->f0[i]) / h;
-    return fmax(J[1 * BDF_MAXN + 1], 0.0);
+    evaluate(p->m, problem_spool(p, t), p->shifted, p->mode, RATES, p->f1, &p->o);
+    for (int i = 0; i < NSTATES; i++) J[i * BDF_MAXN + 1] = (p->f1[i] - f[i]) / h;
+    return fmax_inline(J[1 * BDF_MAXN + 1], 0.0);
 }
 
 /* integrate._growth: the piston's own velocity feedback where positive */
@@ -524,14 +539,14 @@ static double problem_growth(void *ctx, double t, const double *y, const double 
     (void)ctx;
     (void)t;
     (void)y;
-    return fmax(J[1 * BDF_MAXN + 1], 0.0);
+    return fmax_inline(J[1 * BDF_MAXN + 1], 0.0);
 }
 
 /* integrate._margin: (F_req, F_brk + stick_tolerance) with the body held at rest */
 static void stick_margin(Problem *p, double t, const double *y, double *hold, double *brk) {
     for (int i = 0; i < NSTATES; i++) p->rest[i] = y[i];
     p->rest[1] = 0.0;
-    evaluate(p->m, t, p->rest, MODE_STICK, OUTPUTS_ONLY, NULL, &p->o);
+    evaluate(p->m, problem_spool(p, t), p->rest, MODE_STICK, OUTPUTS_ONLY, NULL, &p->o);
     *hold = p->o.hold;
     *brk = p->o.brk + (1e-4 * fabs(p->o.brk) + 1e-3);
 }
@@ -576,6 +591,7 @@ static void problem_init(Problem *p, CylinderData *m) {
     p->bp.event = problem_event;
     p->bp.growth = problem_growth;
     p->bp.renew = problem_renew;
+    p->spool_t = NAN;
 }
 
 /* -- the inputs ----------------------------------------------------------------------------- */
@@ -663,7 +679,7 @@ FmuStatus model_outputs(Instance *c) {
     if (take_inputs(c) > FMU_WARNING) return FMU_ERROR;
     problem_init(&p, m);
     read_states(c, y);
-    evaluate(m, c->time, y, m->mode, OUTPUTS_ONLY, NULL, &p.o);
+    evaluate(m, problem_spool(&p, c->time), y, m->mode, OUTPUTS_ONLY, NULL, &p.o);
     const Outputs *o = &p.o;
     P(P1) = o->p1;
     P(P2) = o->p2;
@@ -711,7 +727,7 @@ void model_derivatives(Instance *c, double *dx) {
     Outputs o;
     double y[NSTATES];
     read_states(c, y);
-    evaluate(m, c->time, y, m->mode, RATES, dx, &o);
+    evaluate(m, spool_position(m, c->time), y, m->mode, RATES, dx, &o);
 }
 
 /* the next time event: the arrival of a command at the spool (model exchange) */
