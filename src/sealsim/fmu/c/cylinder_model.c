@@ -287,6 +287,9 @@ static double table_orientation(long code, double p1, double p2, double pa) {
 typedef struct {
     double x, v, p1, p2, t1, t2, spool, f_press, f_load, f_stop, f_fric, hold, brk;
     double f[NSEAL], fn[NSEAL], b[NSEAL], dp[NSEAL], clip[NSEAL], brk_seal[NSEAL];
+    /* per chamber (cap, rod): the valve's net mass flow into it [kg/s], the net enthalpy
+     * flow [W] and the heat from the wall [W] (rates only) */
+    double flow_mass[2], flow_enthalpy[2], flow_heat[2];
 } Outputs;
 
 #define MAX_PENDING 16
@@ -349,10 +352,14 @@ static int commit_arrivals(CylinderData *m, double t) {
  * changes no pressure difference) */
 enum { OUTPUTS_ONLY = 0, RATES = 1, RATES_KEPT_LOADS = 2 };
 
+/* the chambers whose flows (Outputs.flow_...) an evaluation of the rates takes from o instead
+ * of computing them: what a Jacobian column that changes no state of that chamber keeps */
+enum { KEEP_CAP_FLOWS = 1, KEEP_ROD_FLOWS = 2 };
+
 /* the model at the states y with the spool at s (spool_position at the time; the time enters
- * nowhere else) */
+ * nowhere else); kept_flows: the chambers whose flows o holds (KEEP_..._FLOWS, 0: none) */
 static void evaluate(const CylinderData *m, double s, const double *y, int mode, int level,
-                     double *dy, Outputs *o) {
+                     int kept_flows, double *dy, Outputs *o) {
     const double *c = m->cst;
     const double gm1 = AIR_GAMMA - 1.0;
     double x = y[0], v = y[1], m1 = y[2], m2 = y[3], u1 = y[4], u2 = y[5];
@@ -361,30 +368,35 @@ static void evaluate(const CylinderData *m, double s, const double *y, int mode,
     double t1 = fmin_inline(fmax_inline(u1 / (fmax_inline(m1, 1e-12) * AIR_CV), 20.0), 3000.0);
     double t2 = fmin_inline(fmax_inline(u2 / (fmax_inline(m2, 1e-12) * AIR_CV), 20.0), 3000.0);
     double ps = c[C_PS], pa = c[C_PA], ts = c[C_TS], ta = c[C_TA], t_wall = c[C_TW];
-    double g[4] = {0, 0, 0, 0}, h[4] = {0, 0, 0, 0}, q1 = 0.0, q2 = 0.0;
-    if (level != OUTPUTS_ONLY) {
-        double op[4];
+    double op[4];
+    if (level != OUTPUTS_ONLY && (kept_flows & (KEEP_CAP_FLOWS | KEEP_ROD_FLOWS)) !=
+                                     (KEEP_CAP_FLOWS | KEEP_ROD_FLOWS))
         openings(s, c[C_CENTRE], op);
+    if (level != OUTPUTS_ONLY && !(kept_flows & KEEP_CAP_FLOWS)) {
         double line1 = series_pair(c[C_THR1], cushion_conductance(x, c[C_CU1_L], c[C_CU1_C],
                                                                   c[C_CU1_E]));
-        double line2 = series_pair(c[C_THR2], cushion_conductance(c[C_STROKE] - x, c[C_CU2_L],
-                                                                  c[C_CU2_C], c[C_CU2_E]));
         double k0 = series_pair(c[C_C] * op[0], p1 > ps ? line1 : INFINITY);
         double k1 = series_pair(c[C_C] * op[1], p1 > pa ? line1 : INFINITY);
-        double k2 = series_pair(c[C_C] * op[2], p2 > ps ? line2 : INFINITY);
-        double k3 = series_pair(c[C_C] * op[3], p2 > pa ? line2 : INFINITY);
-        g[0] = iso6358_flow(ps, ts, p1, t1, k0, c[C_B], c[C_M], c[C_BETA]);
-        g[1] = iso6358_flow(p1, t1, pa, ta, k1, c[C_B], c[C_M], c[C_BETA]);
-        g[2] = iso6358_flow(ps, ts, p2, t2, k2, c[C_B], c[C_M], c[C_BETA]);
-        g[3] = iso6358_flow(p2, t2, pa, ta, k3, c[C_B], c[C_M], c[C_BETA]);
-        h[0] = AIR_CP * (ps >= p1 ? ts : t1) * g[0];
-        h[1] = AIR_CP * (p1 >= pa ? t1 : ta) * g[1];
-        h[2] = AIR_CP * (ps >= p2 ? ts : t2) * g[2];
-        h[3] = AIR_CP * (p2 >= pa ? t2 : ta) * g[3];
+        double g0 = iso6358_flow(ps, ts, p1, t1, k0, c[C_B], c[C_M], c[C_BETA]);
+        double g1 = iso6358_flow(p1, t1, pa, ta, k1, c[C_B], c[C_M], c[C_BETA]);
+        o->flow_mass[0] = g0 - g1;
+        o->flow_enthalpy[0] = AIR_CP * (ps >= p1 ? ts : t1) * g0 -
+                              AIR_CP * (p1 >= pa ? t1 : ta) * g1;
         /* wall areas: affine in x, from chambers.chamber_wall_areas (no seal heating here:
          * the rod's surface is at t_wall too) */
-        q1 = c[C_H] * (c[C_AW1] + c[C_AW1_X] * x) * (t_wall - t1);
-        q2 = c[C_H] * (c[C_AW2] + c[C_AW2_X] * x) * (t_wall - t2);
+        o->flow_heat[0] = c[C_H] * (c[C_AW1] + c[C_AW1_X] * x) * (t_wall - t1);
+    }
+    if (level != OUTPUTS_ONLY && !(kept_flows & KEEP_ROD_FLOWS)) {
+        double line2 = series_pair(c[C_THR2], cushion_conductance(c[C_STROKE] - x, c[C_CU2_L],
+                                                                  c[C_CU2_C], c[C_CU2_E]));
+        double k2 = series_pair(c[C_C] * op[2], p2 > ps ? line2 : INFINITY);
+        double k3 = series_pair(c[C_C] * op[3], p2 > pa ? line2 : INFINITY);
+        double g2 = iso6358_flow(ps, ts, p2, t2, k2, c[C_B], c[C_M], c[C_BETA]);
+        double g3 = iso6358_flow(p2, t2, pa, ta, k3, c[C_B], c[C_M], c[C_BETA]);
+        o->flow_mass[1] = g2 - g3;
+        o->flow_enthalpy[1] = AIR_CP * (ps >= p2 ? ts : t2) * g2 -
+                              AIR_CP * (p2 >= pa ? t2 : ta) * g3;
+        o->flow_heat[1] = c[C_H] * (c[C_AW2] + c[C_AW2_X] * x) * (t_wall - t2);
     }
     double f_press = p1 * c[C_A1] - p2 * c[C_A2] - pa * c[C_AROD];
     double f_load = c[C_F0] + c[C_KL] * (x - c[C_X0L]) + c[C_MASS] * GRAVITY * sin(c[C_INCL]) +
@@ -451,10 +463,10 @@ static void evaluate(const CylinderData *m, double s, const double *y, int mode,
         dy[1] = (mode == MODE_FORWARD || mode == MODE_BACKWARD || mode == MODE_FREE)
                     ? (f_drive - f_fric) / c[C_MASS] : 0.0;
         double dvol1 = c[C_A1] * v, dvol2 = -c[C_A2] * v;
-        dy[2] = g[0] - g[1];
-        dy[3] = g[2] - g[3];
-        dy[4] = h[0] - h[1] - p1 * dvol1 + q1;
-        dy[5] = h[2] - h[3] - p2 * dvol2 + q2;
+        dy[2] = o->flow_mass[0];
+        dy[3] = o->flow_mass[1];
+        dy[4] = o->flow_enthalpy[0] - p1 * dvol1 + o->flow_heat[0];
+        dy[5] = o->flow_enthalpy[1] - p2 * dvol2 + o->flow_heat[1];
     }
     o->x = x;
     o->v = v;
@@ -496,16 +508,28 @@ static double problem_spool(Problem *p, double t) {
 
 static void problem_fun(void *ctx, double t, const double *y, double *dy) {
     Problem *p = (Problem *)ctx;
-    evaluate(p->m, problem_spool(p, t), y, p->mode, RATES, dy, &p->o);
+    evaluate(p->m, problem_spool(p, t), y, p->mode, RATES, 0, dy, &p->o);
+}
+
+/* the chambers whose air a change of state j leaves as it is: x moves both volumes, m1 and U1
+ * are the cap-end air, m2 and U2 the rod-end air, v and the friction states neither */
+static int chambers_kept(int j) {
+    if (j == 0) return 0;
+    if (j == 2 || j == 4) return KEEP_ROD_FLOWS;
+    if (j == 3 || j == 5) return KEEP_CAP_FLOWS;
+    return KEEP_CAP_FLOWS | KEEP_ROD_FLOWS;
 }
 
 /* rhs.jacobian_at: forward differences from f = f(t, y), which the integrator has evaluated,
  * h_j = 1.5e-8 max(|y_j|, scale_j); the columns that change no pressure (all but x, U1, U2)
- * first, the first of them looks the contact loads up, the others keep them */
+ * first, the first of them looks the contact loads up, the others keep them.  The valve and
+ * wall flows of a chamber whose air a column leaves as it is are those at y, from the first
+ * column that changes no chamber (v): the same numbers, half of the columns' flows */
 static void problem_jac(void *ctx, double t, const double *y, const double *f, double *J) {
     Problem *p = (Problem *)ctx;
     double s = problem_spool(p, t);
-    int looked_up = 0;
+    double flow_mass[2], flow_enthalpy[2], flow_heat[2];     /* the flows at y */
+    int looked_up = 0, flows_at_y = 0;
     for (int sweep = 0; sweep < 2; sweep++) {
         for (int j = 0; j < NSTATES; j++) {
             int new_loads = j == 0 || j == 4 || j == 5;
@@ -513,9 +537,23 @@ static void problem_jac(void *ctx, double t, const double *y, const double *f, d
             double h = 1.5e-8 * fmax_inline(fabs(y[j]), JAC_SCALE[j]);
             for (int i = 0; i < NSTATES; i++) p->shifted[i] = y[i];
             p->shifted[j] = y[j] + h;
+            int kept = flows_at_y ? chambers_kept(j) : 0;
+            for (int k = 0; kept && k < 2; k++) {
+                p->o.flow_mass[k] = flow_mass[k];
+                p->o.flow_enthalpy[k] = flow_enthalpy[k];
+                p->o.flow_heat[k] = flow_heat[k];
+            }
             evaluate(p->m, s, p->shifted, p->mode,
-                     new_loads || !looked_up ? RATES : RATES_KEPT_LOADS, p->f1, &p->o);
+                     new_loads || !looked_up ? RATES : RATES_KEPT_LOADS, kept, p->f1, &p->o);
             looked_up = 1;
+            if (!flows_at_y && chambers_kept(j) == (KEEP_CAP_FLOWS | KEEP_ROD_FLOWS)) {
+                for (int k = 0; k < 2; k++) {
+                    flow_mass[k] = p->o.flow_mass[k];
+                    flow_enthalpy[k] = p->o.flow_enthalpy[k];
+                    flow_heat[k] = p->o.flow_heat[k];
+                }
+                flows_at_y = 1;
+            }
             for (int i = 0; i < NSTATES; i++) J[i * BDF_MAXN + j] = (p->f1[i] - f[i]) / h;
         }
     }
@@ -529,7 +567,7 @@ static double problem_renew(void *ctx, double t, const double *y, const double *
     double h = 1.5e-8 * fmax_inline(fabs(y[1]), JAC_SCALE[1]);
     for (int i = 0; i < NSTATES; i++) p->shifted[i] = y[i];
     p->shifted[1] = y[1] + h;
-    evaluate(p->m, problem_spool(p, t), p->shifted, p->mode, RATES, p->f1, &p->o);
+    evaluate(p->m, problem_spool(p, t), p->shifted, p->mode, RATES, 0, p->f1, &p->o);
     for (int i = 0; i < NSTATES; i++) J[i * BDF_MAXN + 1] = (p->f1[i] - f[i]) / h;
     return fmax_inline(J[1 * BDF_MAXN + 1], 0.0);
 }
@@ -546,7 +584,7 @@ static double problem_growth(void *ctx, double t, const double *y, const double 
 static void stick_margin(Problem *p, double t, const double *y, double *hold, double *brk) {
     for (int i = 0; i < NSTATES; i++) p->rest[i] = y[i];
     p->rest[1] = 0.0;
-    evaluate(p->m, problem_spool(p, t), p->rest, MODE_STICK, OUTPUTS_ONLY, NULL, &p->o);
+    evaluate(p->m, problem_spool(p, t), p->rest, MODE_STICK, OUTPUTS_ONLY, 0, NULL, &p->o);
     *hold = p->o.hold;
     *brk = p->o.brk + (1e-4 * fabs(p->o.brk) + 1e-3);
 }
@@ -679,7 +717,7 @@ FmuStatus model_outputs(Instance *c) {
     if (take_inputs(c) > FMU_WARNING) return FMU_ERROR;
     problem_init(&p, m);
     read_states(c, y);
-    evaluate(m, problem_spool(&p, c->time), y, m->mode, OUTPUTS_ONLY, NULL, &p.o);
+    evaluate(m, problem_spool(&p, c->time), y, m->mode, OUTPUTS_ONLY, 0, NULL, &p.o);
     const Outputs *o = &p.o;
     P(P1) = o->p1;
     P(P2) = o->p2;
@@ -727,7 +765,7 @@ void model_derivatives(Instance *c, double *dx) {
     Outputs o;
     double y[NSTATES];
     read_states(c, y);
-    evaluate(m, spool_position(m, c->time), y, m->mode, RATES, dx, &o);
+    evaluate(m, spool_position(m, c->time), y, m->mode, RATES, 0, dx, &o);
 }
 
 /* the next time event: the arrival of a command at the spool (model exchange) */
