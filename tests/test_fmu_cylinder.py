@@ -93,6 +93,140 @@ def test_c_right_hand_side_is_the_compiled_one(cylinders):
         assert max(worst.values()) <= 1e-9
 
 
+_COUNTING_HARNESS = r"""
+#include <math.h>
+/* calls of the C library functions the right-hand side uses: sin once per evaluation (the
+ * load's weight on the incline), exp per spool position, tanh per seal pressure difference,
+ * sqrt 7 per chamber's flows (valve and cushion lines, ISO 6358) and 3 per analytic contact
+ * map lookup */
+static long n_sin, n_exp, n_tanh, n_minmax, n_sqrt;
+static double counted_sin(double x) { n_sin++; return (sin)(x); }
+static double counted_exp(double x) { n_exp++; return (exp)(x); }
+static double counted_tanh(double x) { n_tanh++; return (tanh)(x); }
+static double counted_fmin(double a, double b) { n_minmax++; return (fmin)(a, b); }
+static double counted_fmax(double a, double b) { n_minmax++; return (fmax)(a, b); }
+static double counted_sqrt(double x) { n_sqrt++; return (sqrt)(x); }
+#define sin(x) counted_sin(x)
+#define exp(x) counted_exp(x)
+#define tanh(x) counted_tanh(x)
+#define fmin(a, b) counted_fmin(a, b)
+#define fmax(a, b) counted_fmax(a, b)
+#define sqrt(x) counted_sqrt(x)
+#include "all.c"
+
+static CylinderData m;
+static Problem p;
+
+static void setup(int mode) {
+    memset(&m, 0, sizeof m);
+    for (int i = 0; i < C_NCONST; i++) m.cst[i] = CYL_C[i];
+    m.command = 1.0;                /* the spool moving from -1 towards +1 since t = 0 */
+    m.s_command = -1.0;
+    problem_init(&p, &m);
+    p.mode = mode;
+}
+
+static void take(long *counts) {
+    counts[0] = n_sin;
+    counts[1] = n_exp;
+    counts[2] = n_tanh;
+    counts[3] = n_minmax;
+    counts[4] = n_sqrt;
+    n_sin = n_exp = n_tanh = n_minmax = n_sqrt = 0;
+}
+
+/* the integrator's calls at (t, y): f = fun(t, y), the Jacobian from it, the velocity's column
+ * renewed from it; the library calls of each in counts[0:5], [5:10], [10:15] */
+__attribute__((visibility("default")))
+void sealsim_jacobian(double t, const double *y, int mode, double *f, double *jac,
+                      double *renewed, long *counts) {
+    setup(mode);
+    take(counts);
+    p.bp.fun(&p, t, y, f);
+    take(counts);
+    p.bp.jac(&p, t, y, f, jac);
+    take(counts + 5);
+    p.bp.renew(&p, t, y, f, renewed);
+    take(counts + 10);
+}
+
+/* the right-hand side at (t, y) in a fresh problem */
+__attribute__((visibility("default")))
+void sealsim_rates(double t, const double *y, int mode, double *f) {
+    setup(mode);
+    p.bp.fun(&p, t, y, f);
+}
+"""
+
+
+def test_a_jacobian_costs_one_right_hand_side_per_state(cylinders, tmp_path):
+    # The integrator hands the Jacobian f(t, y), which its Newton iteration has evaluated
+    # (sealsim.ode.bdf does the same): 8 evaluations for the 8 states, one for a renewal of
+    # the velocity's column -- the C core evaluated f(t, y) again for each (9 and 2).  Within
+    # them the spool's position (an exp) is computed once per time, not per evaluation; fmin
+    # and fmax are inlined, not 76 calls into libm per evaluation; each seal's pressure
+    # difference is the smoothed |dp| of its own side only (2 tanh per evaluation, not 6);
+    # and a column keeps the valve and wall flows at y of the chambers whose air it leaves as
+    # it is (v and the friction states: both, m1 and U1: the rod end's, m2 and U2: the cap
+    # end's): 8 chambers' flows per Jacobian instead of 18.  Together with the BDF's
+    # constants (no sums per use) the 10 s cycle of the benchmark took 41.8 million
+    # instructions before, 31.0 million after (valgrind --tool=callgrind), with bitwise the
+    # same states.  The columns are the forward differences of f itself, to the bit.
+    import ctypes
+    import subprocess
+    import zipfile
+
+    from sealsim.fmu.builder import find_compiler
+    from sealsim.pneumatic import rhs
+
+    folder = tmp_path / "unpacked"
+    zipfile.ZipFile(cylinders["fmi2"]["path"]).extractall(folder)
+    (folder / "sources" / "harness.c").write_text(_COUNTING_HARNESS, "utf-8")
+    lib_path = tmp_path / "harness.so"
+    subprocess.run([find_compiler(), "-shared", "-fPIC", "-O2", "-std=c99",
+                    "-ffp-contract=off", "-fvisibility=hidden", "-DFMI_VERSION=2", "-I",
+                    str(folder / "sources"), str(folder / "sources" / "harness.c"), "-o",
+                    str(lib_path), "-lm"], check=True, capture_output=True, timeout=300)
+    lib = ctypes.CDLL(str(lib_path))
+    dbl, lng = ctypes.POINTER(ctypes.c_double), ctypes.POINTER(ctypes.c_long)
+    lib.sealsim_jacobian.argtypes = [ctypes.c_double, dbl, ctypes.c_int, dbl, dbl, dbl, lng]
+    lib.sealsim_rates.argtypes = [ctypes.c_double, dbl, ctypes.c_int, dbl]
+
+    system = cylinder_system(example_case(), PNEUMATIC)
+    n = system.n_dynamic
+    y = np.ascontiguousarray(system.initial_state()[:n])
+    y[0], y[1] = 0.03, 0.2                      # mid-stroke, extending
+    t = 0.012                                   # the spool on its way (6 ms dead time)
+    f = np.zeros(n)
+    jac, renewed = np.zeros((n, n)), np.zeros((n, n))
+    counts = np.zeros(15, dtype=np.int64)
+    lib.sealsim_jacobian(t, y.ctypes.data_as(dbl), rhs.FORWARD, f.ctypes.data_as(dbl),
+                         jac.ctypes.data_as(dbl), renewed.ctypes.data_as(dbl),
+                         counts.ctypes.data_as(lng))
+    rate_seals = sum(1 for s in system.seals if s.location in ("piston", "rod"))
+    assert n == 8 and rate_seals == 2
+    # (sin, exp, tanh, fmin + fmax, sqrt): f(t, y) itself is one evaluation, one spool
+    # position, both chambers' flows and both maps looked up (7 + 7 + 3 + 3 square roots)
+    assert counts[:5].tolist() == [1, 1, rate_seals, 0, 20]
+    # the Jacobian: 8 evaluations, 8 chambers' flows (the v column's 2, x's 2 and one for
+    # each of m1, m2, U1, U2), the maps looked up in 4 columns (v, x, U1, U2); was
+    # (9, 9, 54, 676, 156)
+    assert counts[5:10].tolist() == [n, 0, rate_seals * n, 0, 7 * 8 + 3 * rate_seals * 4]
+    # the renewal of the velocity's column: one evaluation (was (2, 2, 12, 150, 34))
+    assert counts[10:15].tolist() == [1, 0, rate_seals, 0, 20]
+    # the columns: (f(y + h e_j) - f(y)) / h, h = 1.5e-8 max(|y_j|, scale_j), to the bit
+    scale = system.tolerances(1.0)[:n]
+    shifted_f = np.zeros(n)
+    for j in range(n):
+        h = 1.5e-8 * max(abs(y[j]), scale[j])
+        shifted = y.copy()
+        shifted[j] = y[j] + h
+        lib.sealsim_rates(t, shifted.ctypes.data_as(dbl), rhs.FORWARD,
+                          shifted_f.ctypes.data_as(dbl))
+        np.testing.assert_array_equal(jac[:, j], (shifted_f - f) / h)
+    np.testing.assert_array_equal(renewed[:, 1], jac[:, 1])
+
+
 def test_rhs_check_finds_a_wrong_c_model(tmp_path):
     # the check can fail: sources with a changed constant (the end-stop stiffness) differ
     import zipfile

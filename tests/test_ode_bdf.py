@@ -356,10 +356,10 @@ static void fun(void *ctx, double t, const double *y, double *dy) {
     dy[0] = y[1];
     dy[1] = p->a0 + p->c * sqrt(fmax(y[1], 0.0));
 }
-static void jac(void *ctx, double t, const double *y, double *J) {
+/* forward differences from f = fun(t, y), which the integrator hands over (as the numba JAC) */
+static void jac(void *ctx, double t, const double *y, const double *f0, double *J) {
     const Par *p = (const Par *)ctx;
-    double f0[2], f1[2], z[2];
-    fun(ctx, t, y, f0);
+    double f1[2], z[2];
     for (int j = 0; j < 2; j++) {
         double h = 1.5e-8 * fmax(fabs(y[j]), p->scale[j]);
         z[0] = y[0];
@@ -373,11 +373,10 @@ static double event(void *ctx, double t, const double *y) { return 1.0; }
 static double growth(void *ctx, double t, const double *y, const double *J) {
     return fmax(J[1 * BDF_MAXN + 1], 0.0);
 }
-static double renew(void *ctx, double t, const double *y, double *J) {
+static double renew(void *ctx, double t, const double *y, const double *f0, double *J) {
     const Par *p = (const Par *)ctx;
-    double f0[2], f1[2], z[2] = {y[0], y[1]};
+    double f1[2], z[2] = {y[0], y[1]};
     double h = 1.5e-8 * fmax(fabs(y[1]), p->scale[1]);
-    fun(ctx, t, y, f0);
     z[1] += h;
     fun(ctx, t, z, f1);
     for (int i = 0; i < 2; i++) J[i * BDF_MAXN + 1] = (f1[i] - f0[i]) / h;

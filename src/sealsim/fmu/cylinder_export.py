@@ -286,7 +286,7 @@ void sealsim_rhs(double t, const double *y, int mode, double u, double s0, int r
     m.s_command = s0;
     m.t_command = 0.0;
     m.npending = 0;
-    evaluate(&m, t, y, mode, rates, dy, &o);
+    evaluate(&m, spool_position(&m, t), y, mode, rates, 0, dy, &o);
     double fixed[10] = {o.x, o.v, o.p1, o.p2, o.t1, o.t2, o.spool, o.f_fric, o.hold, o.brk};
     for (int i = 0; i < 10; i++) out[i] = fixed[i];
     for (int i = 0; i < NSEAL; i++) {

@@ -16,18 +16,26 @@
 #define BDF_GROWTH_LIMIT 0.5
 #define BDF_EPS 2.220446049250313e-16
 
-/* kappa, gamma = cumsum(1/k), alpha = (1 - kappa) gamma, error constants */
-static const double KAPPA[6] = {0.0, -0.1850, -1.0 / 9.0, -0.0823, -0.0415, 0.0};
-
-static double gamma_k(int k) {
-    double g = 0.0;
-    for (int j = 1; j <= k; j++) g += 1.0 / j;
-    return g;
-}
-
-static double alpha_k(int k) { return (1.0 - KAPPA[k]) * gamma_k(k); }
-
-static double error_const(int k) { return KAPPA[k] * gamma_k(k) + 1.0 / (k + 1); }
+/* kappa, gamma = cumsum(1/k), alpha = (1 - kappa) gamma, error constants kappa gamma +
+ * 1/(k + 1) (sealsim.ode.bdf's KAPPA, GAMMA, ALPHA, ERROR_CONST): constant expressions, folded
+ * by the compiler with the rounding of each operation, so the same numbers as the sums
+ * computed at run time (they were, 25 times per step) */
+#define KAPPA1 (-0.1850)
+#define KAPPA2 (-1.0 / 9.0)
+#define KAPPA3 (-0.0823)
+#define KAPPA4 (-0.0415)
+#define GAMMA1 (0.0 + 1.0 / 1)
+#define GAMMA2 (GAMMA1 + 1.0 / 2)
+#define GAMMA3 (GAMMA2 + 1.0 / 3)
+#define GAMMA4 (GAMMA3 + 1.0 / 4)
+#define GAMMA5 (GAMMA4 + 1.0 / 5)
+static const double GAMMA[6] = {0.0, GAMMA1, GAMMA2, GAMMA3, GAMMA4, GAMMA5};
+static const double ALPHA[6] = {
+    (1.0 - 0.0) * 0.0, (1.0 - KAPPA1) * GAMMA1, (1.0 - KAPPA2) * GAMMA2,
+    (1.0 - KAPPA3) * GAMMA3, (1.0 - KAPPA4) * GAMMA4, (1.0 - 0.0) * GAMMA5};
+static const double ERROR_CONST[6] = {
+    0.0 * 0.0 + 1.0 / 1, KAPPA1 * GAMMA1 + 1.0 / 2, KAPPA2 * GAMMA2 + 1.0 / 3,
+    KAPPA3 * GAMMA3 + 1.0 / 4, KAPPA4 * GAMMA4 + 1.0 / 5, 0.0 * GAMMA5 + 1.0 / 6};
 
 #define D_(b, k, i) ((b)->D[(k) * BDF_MAXN + (i)])
 
@@ -144,21 +152,23 @@ void bdf_init(Bdf *b, int n, double rtol, const double *atol, double max_step) {
     for (int i = 0; i < n; i++) b->atol[i] = atol[i];
 }
 
-/* the Jacobian at (t, y) and its growth rate */
-static void jacobian(Bdf *b, const BdfProblem *p, double t, const double *y) {
-    p->jac(p->ctx, t, y, b->J);
+/* the Jacobian at (t, y), f = fun(t, y), and its growth rate */
+static void jacobian(Bdf *b, const BdfProblem *p, double t, const double *y, const double *f) {
+    p->jac(p->ctx, t, y, f, b->J);
     b->njev++;
     b->growth = p->growth ? p->growth(p->ctx, t, y, b->J) : 0.0;
     b->limited = 0;
 }
 
-/* the growth rate renewed at (t, y): the columns it reads (p->renew) or the whole Jacobian */
-static void renew_growth(Bdf *b, const BdfProblem *p, double t, const double *y) {
+/* the growth rate renewed at (t, y), f = fun(t, y): the columns it reads (p->renew) or the
+ * whole Jacobian */
+static void renew_growth(Bdf *b, const BdfProblem *p, double t, const double *y,
+                         const double *f) {
     if (!p->renew) {
-        jacobian(b, p, t, y);
+        jacobian(b, p, t, y, f);
         return;
     }
-    b->growth = p->renew(p->ctx, t, y, b->J);
+    b->growth = p->renew(p->ctx, t, y, f, b->J);
     b->nrenew++;
     b->limited = 0;
 }
@@ -194,7 +204,7 @@ void bdf_start(Bdf *b, double t0, const double *y0, double t_bound, const BdfPro
         b->D[i] = y0[i];
         b->D[BDF_MAXN + i] = f0[i] * h_abs;
     }
-    jacobian(b, p, t0, y0);
+    jacobian(b, p, t0, y0, f0);
     b->order = 1;
     b->n_equal = 0;
     b->lu_ok = 0;
@@ -213,6 +223,9 @@ static int newton(Bdf *b, const BdfProblem *p, double t_new, double c, int *iter
         *iters = k + 1;
         p->fun(p->ctx, t_new, b->y_new, b->f);
         b->nfev++;
+        if (k == 0) {                   /* f(y_pred): what a new Jacobian at y_pred starts from */
+            for (int i = 0; i < n; i++) b->f_pred[i] = b->f[i];
+        }
         int finite = 1;
         for (int i = 0; i < n; i++) {
             if (!isfinite(b->f[i])) finite = 0;
@@ -258,11 +271,13 @@ int bdf_step(Bdf *b, const BdfProblem *p) {
     /* the growth limit c lambda+ <= BDF_GROWTH_LIMIT (sealsim.ode.bdf); a Jacobian limits one
      * step: where the limit would bind again, lambda+ is renewed at the current state first */
     if (b->growth > 0.0) {
-        double h_growth = BDF_GROWTH_LIMIT * alpha_k(order) / b->growth;
+        double h_growth = BDF_GROWTH_LIMIT * ALPHA[order] / b->growth;
         if (h_abs > h_growth && b->limited) {
-            renew_growth(b, p, t, b->D);
+            p->fun(p->ctx, t, b->D, b->f);
+            b->nfev++;
+            renew_growth(b, p, t, b->D, b->f);
             b->lu_ok = 0;
-            h_growth = b->growth > 0.0 ? BDF_GROWTH_LIMIT * alpha_k(order) / b->growth
+            h_growth = b->growth > 0.0 ? BDF_GROWTH_LIMIT * ALPHA[order] / b->growth
                                        : INFINITY;
         }
         if (h_abs > h_growth && h_growth >= min_step) {
@@ -290,10 +305,10 @@ int bdf_step(Bdf *b, const BdfProblem *p) {
             b->y_pred[i] = acc;
             b->scale[i] = b->atol[i] + b->rtol * fabs(acc);
             acc = 0.0;
-            for (int k = 1; k <= order; k++) acc += D_(b, k, i) * gamma_k(k);
-            b->psi[i] = acc / alpha_k(order);
+            for (int k = 1; k <= order; k++) acc += D_(b, k, i) * GAMMA[k];
+            b->psi[i] = acc / ALPHA[order];
         }
-        double c = h / alpha_k(order);
+        double c = h / ALPHA[order];
         int converged = 0;
         while (!converged) {
             if (!b->lu_ok) {
@@ -313,13 +328,13 @@ int bdf_step(Bdf *b, const BdfProblem *p) {
                 if (p->renew && b->growth > 0.0 && !renewed) {
                     /* a growing state stalls the iteration: its columns first, the step
                      * within the growth limit of the renewed lambda+ (sealsim.ode.bdf) */
-                    renew_growth(b, p, t_new, b->y_pred);
+                    renew_growth(b, p, t_new, b->y_pred, b->f_pred);
                     renewed = 1;
                     if (c * b->growth > BDF_GROWTH_LIMIT
-                        && BDF_GROWTH_LIMIT * alpha_k(order) / b->growth >= min_step)
+                        && BDF_GROWTH_LIMIT * ALPHA[order] / b->growth >= min_step)
                         break;
                 } else {
-                    jacobian(b, p, t_new, b->y_pred);
+                    jacobian(b, p, t_new, b->y_pred, b->f_pred);
                     current_jac = 1;
                 }
             }
@@ -327,7 +342,7 @@ int bdf_step(Bdf *b, const BdfProblem *p) {
         if (!converged) {
             double factor = 0.5;
             if (p->renew && renewed && c * b->growth > BDF_GROWTH_LIMIT) {
-                factor = fmin(0.5, BDF_GROWTH_LIMIT * alpha_k(order) / b->growth / h_abs);
+                factor = fmin(0.5, BDF_GROWTH_LIMIT * ALPHA[order] / b->growth / h_abs);
                 b->limited = 1;
             }
             h_abs *= factor;
@@ -339,7 +354,7 @@ int bdf_step(Bdf *b, const BdfProblem *p) {
         safety = 0.9 * (2 * BDF_NEWTON_MAXITER + 1) / (2 * BDF_NEWTON_MAXITER + n_iter);
         for (int i = 0; i < n; i++) {
             b->scale[i] = b->atol[i] + b->rtol * fabs(b->y_new[i]);
-            b->err[i] = error_const(order) * b->d[i];
+            b->err[i] = ERROR_CONST[order] * b->d[i];
         }
         error_norm = rms(b->err, b->scale, n);
         if (error_norm > 1.0) {
@@ -366,11 +381,11 @@ int bdf_step(Bdf *b, const BdfProblem *p) {
     if (b->n_equal < order + 1) return BDF_OK;
     double error_m = INFINITY, error_p = INFINITY;
     if (order > 1) {
-        for (int i = 0; i < n; i++) b->err[i] = error_const(order - 1) * D_(b, order, i);
+        for (int i = 0; i < n; i++) b->err[i] = ERROR_CONST[order - 1] * D_(b, order, i);
         error_m = rms(b->err, b->scale, n);
     }
     if (order < BDF_MAX_ORDER) {
-        for (int i = 0; i < n; i++) b->err[i] = error_const(order + 1) * D_(b, order + 2, i);
+        for (int i = 0; i < n; i++) b->err[i] = ERROR_CONST[order + 1] * D_(b, order + 2, i);
         error_p = rms(b->err, b->scale, n);
     }
     double f_m = order_factor(error_m, order), f_0 = order_factor(error_norm, order + 1);

@@ -15,15 +15,16 @@
 typedef struct {
     void *ctx;
     void (*fun)(void *ctx, double t, const double *y, double *dy);
-    /* J[i * BDF_MAXN + j] = df_i/dy_j */
-    void (*jac)(void *ctx, double t, const double *y, double *J);
+    /* J[i * BDF_MAXN + j] = df_i/dy_j at (t, y); f = fun(t, y), which the integrator has
+     * already evaluated (sealsim.ode.bdf's JAC) */
+    void (*jac)(void *ctx, double t, const double *y, const double *f, double *J);
     double (*event)(void *ctx, double t, const double *y);
     /* the growth rate (>= 0) of a Jacobian J, which limits the step (sealsim.ode.bdf); NULL:
      * none */
     double (*growth)(void *ctx, double t, const double *y, const double *J);
-    /* renews the columns of J that growth reads at (t, y) and returns the growth rate
-     * (sealsim.ode.bdf's RENEW); NULL: the whole Jacobian is renewed */
-    double (*renew)(void *ctx, double t, const double *y, double *J);
+    /* renews the columns of J that growth reads at (t, y), f = fun(t, y), and returns the
+     * growth rate (sealsim.ode.bdf's RENEW); NULL: the whole Jacobian is renewed */
+    double (*renew)(void *ctx, double t, const double *y, const double *f, double *J);
 } BdfProblem;
 
 typedef struct {
@@ -36,6 +37,7 @@ typedef struct {
     int piv[BDF_MAXN];
     double y_pred[BDF_MAXN], psi[BDF_MAXN], y_new[BDF_MAXN], d[BDF_MAXN], f[BDF_MAXN];
     double dy[BDF_MAXN], scale[BDF_MAXN], err[BDF_MAXN];
+    double f_pred[BDF_MAXN];        /* fun at the predicted state: where a new Jacobian starts */
 } Bdf;
 
 void bdf_init(Bdf *b, int n, double rtol, const double *atol, double max_step);

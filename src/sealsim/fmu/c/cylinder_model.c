@@ -112,7 +112,7 @@ static double law_rates(long law, const double *par, const double *z, double vv,
         if (contact) gamma = 0.0;           /* the table holds the viscous part */
         else if (par[11] != 0.0) gamma *= walther_viscosity(temp, par[10], par[11]) / par[16];
         double th = z[0], level;
-        fn = fmax(fn, 1e-9);
+        fn = fmax_inline(fn, 1e-9);
         if (contact) {                      /* compiled._theta_level on the contact table */
             double fss, fb, fv;
             contact_steady(frow, fdata, temp, dp, orient * vv, par[15], par[13], &fss, &fb, &fv);
@@ -144,11 +144,11 @@ static void analytic_loads(double dp, double f0, double modulus, double d, doubl
     const double pi = 3.141592653589793;
     double e_star = modulus / (1.0 - 0.5 * 0.5);
     double k = 2.0 * sqrt(2.0 * d / (pi * e_star));
-    double kdp = k * fmax(dp, 0.0);
+    double kdp = k * fmax_inline(dp, 0.0);
     double root = 0.5 * (kdp + sqrt(kdp * kdp + 4.0 * f0));
     double force = root * root;
     *fn = pi * diameter * force;
-    *b = 2.0 * sqrt(4.0 * fmax(force, 0.0) * (0.5 * d) / (pi * e_star));
+    *b = 2.0 * sqrt(4.0 * fmax_inline(force, 0.0) * (0.5 * d) / (pi * e_star));
 }
 
 static double grid_basis(double u, int j) {       /* contact_maps._basis */
@@ -175,8 +175,9 @@ static void hermite_grid_point(const long *row, double pressure, double temperat
     const double *data = MAP_DATA;
     long o = row[1], d = row[2];
     double plo = data[o + 1], phi = data[o + 2], tlo = data[o + 3], thi = data[o + 4];
-    double p = fmin(fmax(pressure, plo), phi), t = fmin(fmax(temperature, tlo), thi);
-    *clipped = fabs(t - temperature) > 1e-9 * fmax(fabs(temperature), 1.0) ? 1.0 : 0.0;
+    double p = fmin_inline(fmax_inline(pressure, plo), phi);
+    double t = fmin_inline(fmax_inline(temperature, tlo), thi);
+    *clipped = fabs(t - temperature) > 1e-9 * fmax_inline(fabs(temperature), 1.0) ? 1.0 : 0.0;
     long pos = o + 5, cell = 0;
     double u[3] = {0.0, 0.0, 0.0};
     for (long k = 0; k < d; k++) {
@@ -221,18 +222,18 @@ static void seal_loads(int i, double dp, double temp, double *fn, double *b, dou
 
 /* -- valve, chambers, cylinder (sealsim.pneumatic.valve, .chambers, .cylinder) --------------- */
 static double series_pair(double c1, double c2) {
-    double small = fmin(c1, c2), large = fmax(c1, c2);
-    double s = fmin(small, 1e100), l = fmin(large, 1e100);
+    double small = fmin_inline(c1, c2), large = fmax_inline(c1, c2);
+    double s = fmin_inline(small, 1e100), l = fmin_inline(large, 1e100);
     double ratio = s / (l + (l == 0.0));
     return small / sqrt(1.0 + ratio * ratio);
 }
 
 static double iso6358_mass_flow(double p1, double p2, double t1, double cond, double bcrit,
                                 double m, double beta) {
-    double r = fmin(fmax(p2 / p1, 0.0), 1.0);
-    double e = (fmin(fmax(r, bcrit), beta) - bcrit) / (1.0 - bcrit);
+    double r = fmin_inline(fmax_inline(p2 / p1, 0.0), 1.0);
+    double e = (fmin_inline(fmax_inline(r, bcrit), beta) - bcrit) / (1.0 - bcrit);
     double q = 1.0 - e * e;        /* valve.subsonic_power: sqrt for m = 0.5, as numba */
-    double phi = (m == 0.5 ? sqrt(q) : pow(q, m)) * fmin((1.0 - r) / (1.0 - beta), 1.0);
+    double phi = (m == 0.5 ? sqrt(q) : pow(q, m)) * fmin_inline((1.0 - r) / (1.0 - beta), 1.0);
     double g = cond * ANR_DENSITY * p1 * sqrt(ANR_TEMPERATURE / t1) * phi;
     return g * (p1 > p2);
 }
@@ -240,21 +241,22 @@ static double iso6358_mass_flow(double p1, double p2, double t1, double cond, do
 static double iso6358_flow(double pa, double ta, double pb, double tb, double cond,
                            double bcrit, double m, double beta) {
     int forward = pa >= pb;
-    double g = iso6358_mass_flow(fmax(pa, pb), fmin(pa, pb), forward * ta + (1 - forward) * tb,
-                                 cond, bcrit, m, beta);
+    double g = iso6358_mass_flow(fmax_inline(pa, pb), fmin_inline(pa, pb),
+                                 forward * ta + (1 - forward) * tb, cond, bcrit, m, beta);
     return g * (2 * forward - 1);
 }
 
 static double cushion_conductance(double distance, double length, double conductance,
                                   double entry) {
     if (length <= 0.0) return INFINITY;
-    double u = fmin(fmax((distance - (length - entry)) / entry, 0.0), 1.0);
+    double u = fmin_inline(fmax_inline((distance - (length - entry)) / entry, 0.0), 1.0);
     double closed = 1.0 - u * u * (3.0 - 2.0 * u);
     return closed <= 0.0 ? INFINITY : conductance / closed;
 }
 
 static void openings(double s, double centre, double *o) {
-    double forward = fmin(fmax(s, 0.0), 1.0), back = fmin(fmax(-s, 0.0), 1.0);
+    double forward = fmin_inline(fmax_inline(s, 0.0), 1.0);
+    double back = fmin_inline(fmax_inline(-s, 0.0), 1.0);
     double middle = 1.0 - forward - back;
     double exhaust = middle * (centre == 1.0), pressure = middle * (centre == 2.0);
     o[0] = forward + pressure;
@@ -265,9 +267,9 @@ static void openings(double s, double centre, double *o) {
 
 static double end_stop_force(double x, double v, double stroke, double k, double cd,
                              double depth) {
-    double d_cap = fmax(-x, 0.0), d_head = fmax(x - stroke, 0.0);
-    double f_cap = fmax(k * d_cap - cd * v * d_cap / (d_cap + depth), 0.0);
-    double f_head = fmax(k * d_head + cd * v * d_head / (d_head + depth), 0.0);
+    double d_cap = fmax_inline(-x, 0.0), d_head = fmax_inline(x - stroke, 0.0);
+    double f_cap = fmax_inline(k * d_cap - cd * v * d_cap / (d_cap + depth), 0.0);
+    double f_head = fmax_inline(k * d_head + cd * v * d_head / (d_head + depth), 0.0);
     return f_cap - f_head;
 }
 
@@ -285,6 +287,9 @@ static double table_orientation(long code, double p1, double p2, double pa) {
 typedef struct {
     double x, v, p1, p2, t1, t2, spool, f_press, f_load, f_stop, f_fric, hold, brk;
     double f[NSEAL], fn[NSEAL], b[NSEAL], dp[NSEAL], clip[NSEAL], brk_seal[NSEAL];
+    /* per chamber (cap, rod): the valve's net mass flow into it [kg/s], the net enthalpy
+     * flow [W] and the heat from the wall [W] (rates only) */
+    double flow_mass[2], flow_enthalpy[2], flow_heat[2];
 } Outputs;
 
 #define MAX_PENDING 16
@@ -311,7 +316,7 @@ typedef struct {
 static double spool_lag(const CylinderData *m, double u, double s0, double a, double t) {
     double tau = m->cst[C_SPOOL_TAU];
     if (tau <= 0.0) return u;
-    return u + (s0 - u) * exp(-fmax(t - a, 0.0) / tau);
+    return u + (s0 - u) * exp(-fmax_inline(t - a, 0.0) / tau);
 }
 
 /* the spool at t, with the commands that arrive until t */
@@ -347,41 +352,51 @@ static int commit_arrivals(CylinderData *m, double t) {
  * changes no pressure difference) */
 enum { OUTPUTS_ONLY = 0, RATES = 1, RATES_KEPT_LOADS = 2 };
 
-static void evaluate(const CylinderData *m, double t, const double *y, int mode, int level,
-                     double *dy, Outputs *o) {
+/* the chambers whose flows (Outputs.flow_...) an evaluation of the rates takes from o instead
+ * of computing them: what a Jacobian column that changes no state of that chamber keeps */
+enum { KEEP_CAP_FLOWS = 1, KEEP_ROD_FLOWS = 2 };
+
+/* the model at the states y with the spool at s (spool_position at the time; the time enters
+ * nowhere else); kept_flows: the chambers whose flows o holds (KEEP_..._FLOWS, 0: none) */
+static void evaluate(const CylinderData *m, double s, const double *y, int mode, int level,
+                     int kept_flows, double *dy, Outputs *o) {
     const double *c = m->cst;
     const double gm1 = AIR_GAMMA - 1.0;
     double x = y[0], v = y[1], m1 = y[2], m2 = y[3], u1 = y[4], u2 = y[5];
     double vol1 = c[C_DEAD1] + c[C_A1] * x, vol2 = c[C_DEAD2] + c[C_A2] * (c[C_STROKE] - x);
     double p1 = gm1 * u1 / vol1, p2 = gm1 * u2 / vol2;
-    double t1 = fmin(fmax(u1 / (fmax(m1, 1e-12) * AIR_CV), 20.0), 3000.0);
-    double t2 = fmin(fmax(u2 / (fmax(m2, 1e-12) * AIR_CV), 20.0), 3000.0);
-    double s = spool_position(m, t);
+    double t1 = fmin_inline(fmax_inline(u1 / (fmax_inline(m1, 1e-12) * AIR_CV), 20.0), 3000.0);
+    double t2 = fmin_inline(fmax_inline(u2 / (fmax_inline(m2, 1e-12) * AIR_CV), 20.0), 3000.0);
     double ps = c[C_PS], pa = c[C_PA], ts = c[C_TS], ta = c[C_TA], t_wall = c[C_TW];
-    double g[4] = {0, 0, 0, 0}, h[4] = {0, 0, 0, 0}, q1 = 0.0, q2 = 0.0;
-    if (level != OUTPUTS_ONLY) {
-        double op[4];
+    double op[4];
+    if (level != OUTPUTS_ONLY && (kept_flows & (KEEP_CAP_FLOWS | KEEP_ROD_FLOWS)) !=
+                                     (KEEP_CAP_FLOWS | KEEP_ROD_FLOWS))
         openings(s, c[C_CENTRE], op);
+    if (level != OUTPUTS_ONLY && !(kept_flows & KEEP_CAP_FLOWS)) {
         double line1 = series_pair(c[C_THR1], cushion_conductance(x, c[C_CU1_L], c[C_CU1_C],
                                                                   c[C_CU1_E]));
-        double line2 = series_pair(c[C_THR2], cushion_conductance(c[C_STROKE] - x, c[C_CU2_L],
-                                                                  c[C_CU2_C], c[C_CU2_E]));
         double k0 = series_pair(c[C_C] * op[0], p1 > ps ? line1 : INFINITY);
         double k1 = series_pair(c[C_C] * op[1], p1 > pa ? line1 : INFINITY);
-        double k2 = series_pair(c[C_C] * op[2], p2 > ps ? line2 : INFINITY);
-        double k3 = series_pair(c[C_C] * op[3], p2 > pa ? line2 : INFINITY);
-        g[0] = iso6358_flow(ps, ts, p1, t1, k0, c[C_B], c[C_M], c[C_BETA]);
-        g[1] = iso6358_flow(p1, t1, pa, ta, k1, c[C_B], c[C_M], c[C_BETA]);
-        g[2] = iso6358_flow(ps, ts, p2, t2, k2, c[C_B], c[C_M], c[C_BETA]);
-        g[3] = iso6358_flow(p2, t2, pa, ta, k3, c[C_B], c[C_M], c[C_BETA]);
-        h[0] = AIR_CP * (ps >= p1 ? ts : t1) * g[0];
-        h[1] = AIR_CP * (p1 >= pa ? t1 : ta) * g[1];
-        h[2] = AIR_CP * (ps >= p2 ? ts : t2) * g[2];
-        h[3] = AIR_CP * (p2 >= pa ? t2 : ta) * g[3];
+        double g0 = iso6358_flow(ps, ts, p1, t1, k0, c[C_B], c[C_M], c[C_BETA]);
+        double g1 = iso6358_flow(p1, t1, pa, ta, k1, c[C_B], c[C_M], c[C_BETA]);
+        o->flow_mass[0] = g0 - g1;
+        o->flow_enthalpy[0] = AIR_CP * (ps >= p1 ? ts : t1) * g0 -
+                              AIR_CP * (p1 >= pa ? t1 : ta) * g1;
         /* wall areas: affine in x, from chambers.chamber_wall_areas (no seal heating here:
          * the rod's surface is at t_wall too) */
-        q1 = c[C_H] * (c[C_AW1] + c[C_AW1_X] * x) * (t_wall - t1);
-        q2 = c[C_H] * (c[C_AW2] + c[C_AW2_X] * x) * (t_wall - t2);
+        o->flow_heat[0] = c[C_H] * (c[C_AW1] + c[C_AW1_X] * x) * (t_wall - t1);
+    }
+    if (level != OUTPUTS_ONLY && !(kept_flows & KEEP_ROD_FLOWS)) {
+        double line2 = series_pair(c[C_THR2], cushion_conductance(c[C_STROKE] - x, c[C_CU2_L],
+                                                                  c[C_CU2_C], c[C_CU2_E]));
+        double k2 = series_pair(c[C_C] * op[2], p2 > ps ? line2 : INFINITY);
+        double k3 = series_pair(c[C_C] * op[3], p2 > pa ? line2 : INFINITY);
+        double g2 = iso6358_flow(ps, ts, p2, t2, k2, c[C_B], c[C_M], c[C_BETA]);
+        double g3 = iso6358_flow(p2, t2, pa, ta, k3, c[C_B], c[C_M], c[C_BETA]);
+        o->flow_mass[1] = g2 - g3;
+        o->flow_enthalpy[1] = AIR_CP * (ps >= p2 ? ts : t2) * g2 -
+                              AIR_CP * (p2 >= pa ? t2 : ta) * g3;
+        o->flow_heat[1] = c[C_H] * (c[C_AW2] + c[C_AW2_X] * x) * (t_wall - t2);
     }
     double f_press = p1 * c[C_A1] - p2 * c[C_A2] - pa * c[C_AROD];
     double f_load = c[C_F0] + c[C_KL] * (x - c[C_X0L]) + c[C_MASS] * GRAVITY * sin(c[C_INCL]) +
@@ -394,7 +409,8 @@ static void evaluate(const CylinderData *m, double t, const double *y, int mode,
         long law = SEAL_INT[i][SI_LAW], loc = SEAL_INT[i][SI_LOC], off = SEAL_INT[i][SI_OFF];
         int sticky = SEAL_INT[i][SI_STICKY] != 0;
         double temp = SEAL_THERM[i][ST_TCONST];
-        double dp = (loc == 0) * smooth_abs(p1 - p2, 1e3) + (loc == 1) * smooth_abs(p2 - pa, 1e3);
+        double dp = loc == 0 ? smooth_abs(p1 - p2, 1e3)
+                             : (loc == 1 ? smooth_abs(p2 - pa, 1e3) : 0.0);
         double side_a = (loc == 0) * (p1 - pa) + (loc == 1) * (p2 - pa);
         double side_b = (loc == 0) * (p2 - pa);
         double fn, b, clipped, vv, brk;
@@ -409,7 +425,7 @@ static void evaluate(const CylinderData *m, double t, const double *y, int mode,
         else if (mode == MODE_STICK) vv = 0.0;
         else {
             double d = (double)mode;
-            vv = d * fmax(d * v, TINY_SPEED);
+            vv = d * fmax_inline(d * v, TINY_SPEED);
         }
         double force = law_rates(law, LAW_PAR[i], y + off, vv, fn, b, side_a, side_b, temp, dz,
                                  &brk, FRIC_INT[i] + 1, FRIC_DATA + FRIC_INT[i][0], dp,
@@ -447,10 +463,10 @@ static void evaluate(const CylinderData *m, double t, const double *y, int mode,
         dy[1] = (mode == MODE_FORWARD || mode == MODE_BACKWARD || mode == MODE_FREE)
                     ? (f_drive - f_fric) / c[C_MASS] : 0.0;
         double dvol1 = c[C_A1] * v, dvol2 = -c[C_A2] * v;
-        dy[2] = g[0] - g[1];
-        dy[3] = g[2] - g[3];
-        dy[4] = h[0] - h[1] - p1 * dvol1 + q1;
-        dy[5] = h[2] - h[3] - p2 * dvol2 + q2;
+        dy[2] = o->flow_mass[0];
+        dy[3] = o->flow_mass[1];
+        dy[4] = o->flow_enthalpy[0] - p1 * dvol1 + o->flow_heat[0];
+        dy[5] = o->flow_enthalpy[1] - p2 * dvol2 + o->flow_heat[1];
     }
     o->x = x;
     o->v = v;
@@ -476,47 +492,84 @@ typedef struct {
     int mode;
     Outputs o;
     BdfProblem bp;
-    double shifted[NSTATES], f0[NSTATES], f1[NSTATES], rest[NSTATES];
+    double spool_t, spool_s;         /* the spool position spool_s at the time spool_t */
+    double shifted[NSTATES], f1[NSTATES], rest[NSTATES];
 } Problem;
+
+/* the spool at t: the Newton iterations of a step and the columns of its Jacobian all
+ * evaluate at the same time, so the last one is kept (an exp() per right-hand side less) */
+static double problem_spool(Problem *p, double t) {
+    if (t != p->spool_t) {
+        p->spool_s = spool_position(p->m, t);
+        p->spool_t = t;
+    }
+    return p->spool_s;
+}
 
 static void problem_fun(void *ctx, double t, const double *y, double *dy) {
     Problem *p = (Problem *)ctx;
-    evaluate(p->m, t, y, p->mode, RATES, dy, &p->o);
+    evaluate(p->m, problem_spool(p, t), y, p->mode, RATES, 0, dy, &p->o);
 }
 
-/* rhs.jacobian: forward differences, h_j = 1.5e-8 max(|y_j|, scale_j); as rhs.jacobian_at,
- * the columns that change no pressure (all but x, U1, U2) first, the first of them looks the
- * contact loads up, the others keep them */
-static void problem_jac(void *ctx, double t, const double *y, double *J) {
+/* the chambers whose air a change of state j leaves as it is: x moves both volumes, m1 and U1
+ * are the cap-end air, m2 and U2 the rod-end air, v and the friction states neither */
+static int chambers_kept(int j) {
+    if (j == 0) return 0;
+    if (j == 2 || j == 4) return KEEP_ROD_FLOWS;
+    if (j == 3 || j == 5) return KEEP_CAP_FLOWS;
+    return KEEP_CAP_FLOWS | KEEP_ROD_FLOWS;
+}
+
+/* rhs.jacobian_at: forward differences from f = f(t, y), which the integrator has evaluated,
+ * h_j = 1.5e-8 max(|y_j|, scale_j); the columns that change no pressure (all but x, U1, U2)
+ * first, the first of them looks the contact loads up, the others keep them.  The valve and
+ * wall flows of a chamber whose air a column leaves as it is are those at y, from the first
+ * column that changes no chamber (v): the same numbers, half of the columns' flows */
+static void problem_jac(void *ctx, double t, const double *y, const double *f, double *J) {
     Problem *p = (Problem *)ctx;
-    problem_fun(ctx, t, y, p->f0);
-    int looked_up = 0;
+    double s = problem_spool(p, t);
+    double flow_mass[2], flow_enthalpy[2], flow_heat[2];     /* the flows at y */
+    int looked_up = 0, flows_at_y = 0;
     for (int sweep = 0; sweep < 2; sweep++) {
         for (int j = 0; j < NSTATES; j++) {
             int new_loads = j == 0 || j == 4 || j == 5;
             if (new_loads != (sweep == 1)) continue;
-            double h = 1.5e-8 * fmax(fabs(y[j]), JAC_SCALE[j]);
+            double h = 1.5e-8 * fmax_inline(fabs(y[j]), JAC_SCALE[j]);
             for (int i = 0; i < NSTATES; i++) p->shifted[i] = y[i];
             p->shifted[j] = y[j] + h;
-            evaluate(p->m, t, p->shifted, p->mode,
-                     new_loads || !looked_up ? RATES : RATES_KEPT_LOADS, p->f1, &p->o);
+            int kept = flows_at_y ? chambers_kept(j) : 0;
+            for (int k = 0; kept && k < 2; k++) {
+                p->o.flow_mass[k] = flow_mass[k];
+                p->o.flow_enthalpy[k] = flow_enthalpy[k];
+                p->o.flow_heat[k] = flow_heat[k];
+            }
+            evaluate(p->m, s, p->shifted, p->mode,
+                     new_loads || !looked_up ? RATES : RATES_KEPT_LOADS, kept, p->f1, &p->o);
             looked_up = 1;
-            for (int i = 0; i < NSTATES; i++) J[i * BDF_MAXN + j] = (p->f1[i] - p->f0[i]) / h;
+            if (!flows_at_y && chambers_kept(j) == (KEEP_CAP_FLOWS | KEEP_ROD_FLOWS)) {
+                for (int k = 0; k < 2; k++) {
+                    flow_mass[k] = p->o.flow_mass[k];
+                    flow_enthalpy[k] = p->o.flow_enthalpy[k];
+                    flow_heat[k] = p->o.flow_heat[k];
+                }
+                flows_at_y = 1;
+            }
+            for (int i = 0; i < NSTATES; i++) J[i * BDF_MAXN + j] = (p->f1[i] - f[i]) / h;
         }
     }
 }
 
-/* integrate._renew: the growth rate from the velocity's column alone (rhs.velocity_column_at:
- * the column of problem_jac, the contact loads of the evaluation at y kept) */
-static double problem_renew(void *ctx, double t, const double *y, double *J) {
+/* integrate._renew: the growth rate from the velocity's column alone, from f = f(t, y)
+ * (rhs.velocity_column_at: the column of problem_jac; it looks the contact loads up, as the
+ * evaluation before need not have been at y) */
+static double problem_renew(void *ctx, double t, const double *y, const double *f, double *J) {
     Problem *p = (Problem *)ctx;
-    problem_fun(ctx, t, y, p->f0);
-    double h = 1.5e-8 * fmax(fabs(y[1]), JAC_SCALE[1]);
+    double h = 1.5e-8 * fmax_inline(fabs(y[1]), JAC_SCALE[1]);
     for (int i = 0; i < NSTATES; i++) p->shifted[i] = y[i];
     p->shifted[1] = y[1] + h;
-    evaluate(p->m, t, p->shifted, p->mode, RATES_KEPT_LOADS, p->f1, &p->o);
-    for (int i = 0; i < NSTATES; i++) J[i * BDF_MAXN + 1] = (p->f1[i] - p->f0[i]) / h;
-    return fmax(J[1 * BDF_MAXN + 1], 0.0);
+    evaluate(p->m, problem_spool(p, t), p->shifted, p->mode, RATES, 0, p->f1, &p->o);
+    for (int i = 0; i < NSTATES; i++) J[i * BDF_MAXN + 1] = (p->f1[i] - f[i]) / h;
+    return fmax_inline(J[1 * BDF_MAXN + 1], 0.0);
 }
 
 /* integrate._growth: the piston's own velocity feedback where positive */
@@ -524,14 +577,14 @@ static double problem_growth(void *ctx, double t, const double *y, const double 
     (void)ctx;
     (void)t;
     (void)y;
-    return fmax(J[1 * BDF_MAXN + 1], 0.0);
+    return fmax_inline(J[1 * BDF_MAXN + 1], 0.0);
 }
 
 /* integrate._margin: (F_req, F_brk + stick_tolerance) with the body held at rest */
 static void stick_margin(Problem *p, double t, const double *y, double *hold, double *brk) {
     for (int i = 0; i < NSTATES; i++) p->rest[i] = y[i];
     p->rest[1] = 0.0;
-    evaluate(p->m, t, p->rest, MODE_STICK, OUTPUTS_ONLY, NULL, &p->o);
+    evaluate(p->m, problem_spool(p, t), p->rest, MODE_STICK, OUTPUTS_ONLY, 0, NULL, &p->o);
     *hold = p->o.hold;
     *brk = p->o.brk + (1e-4 * fabs(p->o.brk) + 1e-3);
 }
@@ -576,6 +629,7 @@ static void problem_init(Problem *p, CylinderData *m) {
     p->bp.event = problem_event;
     p->bp.growth = problem_growth;
     p->bp.renew = problem_renew;
+    p->spool_t = NAN;
 }
 
 /* -- the inputs ----------------------------------------------------------------------------- */
@@ -663,7 +717,7 @@ FmuStatus model_outputs(Instance *c) {
     if (take_inputs(c) > FMU_WARNING) return FMU_ERROR;
     problem_init(&p, m);
     read_states(c, y);
-    evaluate(m, c->time, y, m->mode, OUTPUTS_ONLY, NULL, &p.o);
+    evaluate(m, problem_spool(&p, c->time), y, m->mode, OUTPUTS_ONLY, 0, NULL, &p.o);
     const Outputs *o = &p.o;
     P(P1) = o->p1;
     P(P2) = o->p2;
@@ -711,7 +765,7 @@ void model_derivatives(Instance *c, double *dx) {
     Outputs o;
     double y[NSTATES];
     read_states(c, y);
-    evaluate(m, c->time, y, m->mode, RATES, dx, &o);
+    evaluate(m, spool_position(m, c->time), y, m->mode, RATES, 0, dx, &o);
 }
 
 /* the next time event: the arrival of a command at the spool (model exchange) */

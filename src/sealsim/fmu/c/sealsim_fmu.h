@@ -53,6 +53,13 @@ typedef struct {
     double upper;
 } VariableInfo;
 
+/* fmin and fmax inlined, with the C library's results (glibc: a NaN operand gives the other
+ * one, equal operands -- +0 and -0 too -- the first): a compiler inlines the library's only
+ * with -ffinite-math-only -fno-signed-zeros, so each was a call into libm, 76 per right-hand
+ * side of the cylinder */
+static inline double fmin_inline(double a, double b) { return (b < a || a != a) ? b : a; }
+static inline double fmax_inline(double a, double b) { return (b > a || a != a) ? b : a; }
+
 /* a C1 piecewise-cubic Hermite table on a rectilinear 2-D grid (hermite.c) */
 typedef struct {
     int n0, n1, nvars;
