@@ -39,8 +39,6 @@ import felupe as fem
 import numpy as np
 from scipy.sparse import csr_matrix
 
-from sealsim.structure.active_set import FreezableContact
-
 __all__ = ["CompiledSolidBody", "ContactRigidPlaneOnce", "SystemAssembly", "TrialOnce",
            "csr_pattern"]
 
@@ -377,15 +375,14 @@ class CompiledSolidBody(fem.SolidBodyNearlyIncompressible):
         return K
 
 
-class TrialOnce(FreezableContact):
+class TrialOnce:
     """Mixin for FElupe's rigid contacts (:class:`felupe.mechanics.ContactRigidBase`): the
-    trial state is evaluated once per configuration, on the frozen active set when the
-    solver has set one (:class:`~.active_set.FreezableContact`).
+    trial state is evaluated once per configuration.
 
     FElupe evaluates the contact (gaps, penalty and friction return mapping) for the
     residual and again for the tangent; here the tangent reuses the trial of the residual
-    when the gap vectors, the converged state variables, the multipliers and the frozen set
-    are the same objects/values -- the same trial FElupe would compute again.
+    when the gap vectors, the converged state variables and the multipliers are the same
+    objects/values -- the same trial FElupe would compute again.
     """
 
     _trial = None
@@ -397,14 +394,11 @@ class TrialOnce(FreezableContact):
         cached = self._trial
         if cached is not None and cached[1] is self.results.statevars \
                 and cached[2] is self._multipliers_statevars and cached[3] is self.multipliers \
-                and cached[5] is self.frozen and cached[6] is self.frozen_slip \
                 and np.array_equal(cached[0], dx):
             return cached[4]
         trial = super()._evaluate()
-        if self.frozen is not None:
-            trial = self.frozen_trial(trial)
         self._trial = (dx, self.results.statevars, self._multipliers_statevars,
-                       self.multipliers, trial, self.frozen, self.frozen_slip)
+                       self.multipliers, trial)
         return trial
 
     def stiffness_entries(self):

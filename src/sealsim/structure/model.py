@@ -177,6 +177,7 @@ class SealModel:
         if elastic_slip is None:
             seal = assembly.seal
             elastic_slip = 1e-3 * getattr(seal, "contact_scale", seal.radial_extent)
+        plane = ContactRigidPlaneOnce if self.compiled else fem.ContactRigidPlane
 
         def contact(line):
             options = {"multiplier": penalty, "items": [self.solid],
@@ -186,9 +187,9 @@ class SealModel:
                 return ContactRigidLand(self.field, candidates, self.centerpoints[line.name],
                                         line.normal, line.edge_direction, line.edge_radius,
                                         **options)
-            return ContactRigidPlaneOnce(self.field, points=candidates,
-                                         centerpoint=self.centerpoints[line.name],
-                                         normal=line.normal, **options)
+            return plane(self.field, points=candidates,
+                         centerpoint=self.centerpoints[line.name], normal=line.normal,
+                         **options)
 
         self.contacts = {line.name: contact(line) for line in lines}
         self._candidates = candidates

@@ -17,10 +17,6 @@ symmetric pattern and the symbolic factorisation per pattern (the stiffness matr
 structurally symmetric and nearly symmetric: only the follower pressure is not), or scipy's
 SuperLU in every iteration; all give the reference solution (``spsolve``) to round-off.
 
-Newton's iterations switch the contacts' active set (points in or out of contact) and their
-stick/slip state with the gaps and slips; a state that cycles between iterations is frozen
-and checked once Newton has converged on it (:mod:`.active_set`, :func:`_newton`).
-
 Every converged increment is logged in ``model.increment_log`` (step, load fraction,
 increment, Newton iterations, cutbacks before it).
 """
@@ -42,7 +38,6 @@ import numpy as np
 from scipy.sparse.linalg import spsolve
 
 from sealsim.errors import ConvergenceError
-from sealsim.structure.active_set import FreezableContact
 from sealsim.structure.model import LoadState, SealModel
 from sealsim.structure.sparse_lu import HAVE_COMPILED_LU, PatternLU, superlu_factor
 from sealsim.units import ZERO_CELSIUS_K
@@ -288,47 +283,6 @@ def _solve_partitioned(field, K11, system, f, ext0, linear):
     return du.reshape(u.shape)
 
 
-#: Freeze the contacts' state (in contact, sliding) when it cycles between Newton iterations
-#: and finish on the frozen state, then check it (:mod:`.active_set`); False: Newton on the
-#: state the gaps and slips decide in every iteration (the solver before the freeze; for
-#: comparisons).
-FREEZE_CYCLING_CONTACT = True
-
-#: Tolerance of the check of a frozen contact state
-#: (:meth:`.active_set.FreezableContact.inconsistent_points`): 1 % of the largest nodal
-#: normal force of a contact, 1 % of a point's Coulomb limit.
-FREEZE_TOLERANCE = 1e-2
-
-
-def _contact_state(contacts):
-    """The contact and slip flags of every point as the gaps and slips decide them."""
-    return [(c.results.active.copy(), c.results.slip.copy()) for c in contacts]
-
-
-def _same_state(a, b) -> bool:
-    return all((x == y).all() and (s == t).all() for (x, s), (y, t) in zip(a, b))
-
-
-def _cycle(history, state):
-    """The states of a cycle that ``state`` closes -- it is the state of two or three
-    iterations ago but not of the last one --, or None."""
-    if not history or _same_state(history[-1], state):
-        return None
-    for period in (2, 3):
-        if len(history) >= period and _same_state(history[-period], state):
-            return [*history[-period + 1:], state]
-    return None
-
-
-def _returns(positions, u, period: int) -> bool:
-    """True if the displacements ``u`` are back where they were ``period`` iterations ago
-    (closer to them than 1e-3 of the last step): a Newton iteration in a cycle."""
-    if len(positions) < period:
-        return False
-    step = np.linalg.norm(u - positions[-1])
-    return bool(step > 0.0 and np.linalg.norm(u - positions[-period]) <= 1e-3 * step)
-
-
 def _newton(model: SealModel, ext0, tol: float, maxiter: int, update_wetting: bool,
             linear: LinearSolver) -> int:
     """Newton–Raphson iterations with FElupe's partitioned solver.
@@ -336,85 +290,43 @@ def _newton(model: SealModel, ext0, tol: float, maxiter: int, update_wetting: bo
     The wetted surface of the fluid pressure (its edges follow the contact edges) is
     re-evaluated before every iteration until it has settled -- its length changes by less
     than 1e-4 of the cord diameter -- and is then frozen, so that an edge node flickering in
-    and out of contact cannot keep Newton from converging. Likewise the contacts' active set
-    and stick/slip state: when it cycles -- an iteration's state is that of two or three
-    iterations before, not of the last one -- every point is frozen in the union of its
-    states of the cycle (in contact, sliding), Newton finishes on that smooth system, and the
-    converged state is checked against the gaps and slips (:mod:`.active_set`); points that
-    disagree are switched and Newton goes on. A frozen system whose iterates cycle as well
-    (back within 1e-3 of a step where they were two or three iterations before) is given up
-    at once. Convergence: settled wetted surface, a consistent contact state and a residual
-    of the free dofs below ``tol`` relative to the reactions. Raises NewtonConvergenceError
-    otherwise (the caller cuts the increment back).
+    and out of contact cannot keep Newton from converging. Convergence: settled wetted surface
+    and a residual of the free dofs below ``tol`` relative to the reactions. Raises
+    NewtonConvergenceError otherwise (the caller cuts the increment back).
     """
     scale = 1e-6 * model.force_scale
     field = model.field
     wet_tol = 1e-4 * model.assembly.seal.cord_diameter
     frozen = not update_wetting
-    contacts = [c for c in model.contacts.values() if isinstance(c, FreezableContact)]
-    history = []
-    positions = []
-    contact_frozen = False
-    try:
-        for iteration in range(maxiter):
-            if not frozen and iteration > 0:
-                # once the wetted surface has settled (or after 8 iterations) it is frozen, so
-                # that a flickering edge node cannot keep Newton from converging
-                frozen = model.update_wetting() <= wet_tol or iteration >= 8
-            with np.errstate(all="ignore"):
-                if model.system is not None:
-                    f, K11 = model.system.assemble(model.items, field)
-                else:
-                    f, K = _assemble(model)
-            if not np.all(np.isfinite(f)):
-                raise fem.NewtonConvergenceError(
-                    f"non-finite residual in iteration {iteration}")
-            state = _contact_state(contacts)
-            if iteration > 0:
-                fnorm = np.linalg.norm(f[model.dof1]) / max(np.linalg.norm(f[model.dof0]),
-                                                            scale)
-                if fnorm < tol and frozen:
-                    switched = 0
-                    if contact_frozen:
-                        for c in contacts:
-                            normal, slip = c.inconsistent_points(FREEZE_TOLERANCE)
-                            if normal.any() or slip.any():
-                                c.refreeze(normal, slip)
-                                switched += int(normal.sum() + slip.sum())
-                    if not switched:
-                        for item in model.items:
-                            item.results.update_statevars()
-                        return iteration
-                    continue  # assemble the switched state before the next step
-                if contact_frozen and any(_returns(positions, field[0].values, period)
-                                          for period in (2, 3)):
-                    # the frozen (smooth) system cycles too: it will not converge
-                    raise fem.NewtonConvergenceError(
-                        f"the frozen contact state cycles (iteration {iteration})")
-                if not contact_frozen and FREEZE_CYCLING_CONTACT:
-                    cycle = _cycle(history, state)
-                    if cycle:
-                        # freeze every point in the union of its states of the cycle
-                        for k, c in enumerate(contacts):
-                            c.freeze(np.any([s[k][0] for s in cycle], axis=0),
-                                     np.any([s[k][1] for s in cycle], axis=0))
-                        contact_frozen = True
-            history.append(state)
-            positions.append(field[0].values.copy())
-            with np.errstate(all="ignore"), warnings.catch_warnings():
-                warnings.simplefilter("ignore")
-                if model.system is not None:
-                    du = _solve_partitioned(field, K11, model.system, f, ext0, linear)
-                else:
-                    system = fem.solve.partition(field, K, model.dof1, model.dof0, f)
-                    du = fem.solve.solve(*system, ext0, solver=linear)
-            if not np.all(np.isfinite(du)):
-                raise fem.NewtonConvergenceError(f"singular system in iteration {iteration}")
-            field[0].values[:] += du.reshape(field[0].values.shape)
-        raise fem.NewtonConvergenceError(f"not converged in {maxiter} iterations")
-    finally:
-        for c in contacts:
-            c.release()
+    for iteration in range(maxiter):
+        if not frozen and iteration > 0:
+            # once the wetted surface has settled (or after 8 iterations) it is frozen, so
+            # that a flickering edge node cannot keep Newton from converging
+            frozen = model.update_wetting() <= wet_tol or iteration >= 8
+        with np.errstate(all="ignore"):
+            if model.system is not None:
+                f, K11 = model.system.assemble(model.items, field)
+            else:
+                f, K = _assemble(model)
+        if not np.all(np.isfinite(f)):
+            raise fem.NewtonConvergenceError(f"non-finite residual in iteration {iteration}")
+        if iteration > 0:
+            fnorm = np.linalg.norm(f[model.dof1]) / max(np.linalg.norm(f[model.dof0]), scale)
+            if fnorm < tol and frozen:
+                for item in model.items:
+                    item.results.update_statevars()
+                return iteration
+        with np.errstate(all="ignore"), warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            if model.system is not None:
+                du = _solve_partitioned(field, K11, model.system, f, ext0, linear)
+            else:
+                system = fem.solve.partition(field, K, model.dof1, model.dof0, f)
+                du = fem.solve.solve(*system, ext0, solver=linear)
+        if not np.all(np.isfinite(du)):
+            raise fem.NewtonConvergenceError(f"singular system in iteration {iteration}")
+        field[0].values[:] += du.reshape(field[0].values.shape)
+    raise fem.NewtonConvergenceError(f"not converged in {maxiter} iterations")
 
 
 def _increment(model: SealModel, target: LoadState, tol, maxiter, linear):
