@@ -352,6 +352,23 @@ static int commit_arrivals(CylinderData *m, double t) {
  * changes no pressure difference) */
 enum { OUTPUTS_ONLY = 0, RATES = 1, RATES_KEPT_LOADS = 2 };
 
+/* chamber k's (0 cap, 1 rod) air flows at pressure p and temperature t into o: from the
+ * supply through the valve opening op_in and to the atmosphere through op_out, each in series
+ * with the chamber's line (its throttle and end cushion, conductance `line`) where the air
+ * leaves the chamber (ISO 6358), the enthalpy they carry, and the heat from its wall of area
+ * wall_area at the wall temperature */
+static void chamber_flows(const double *c, int k, double p, double t, double line,
+                          double op_in, double op_out, double wall_area, Outputs *o) {
+    double ps = c[C_PS], pa = c[C_PA], ts = c[C_TS], ta = c[C_TA];
+    double k_in = series_pair(c[C_C] * op_in, p > ps ? line : INFINITY);
+    double k_out = series_pair(c[C_C] * op_out, p > pa ? line : INFINITY);
+    double g_in = iso6358_flow(ps, ts, p, t, k_in, c[C_B], c[C_M], c[C_BETA]);
+    double g_out = iso6358_flow(p, t, pa, ta, k_out, c[C_B], c[C_M], c[C_BETA]);
+    o->flow_mass[k] = g_in - g_out;
+    o->flow_enthalpy[k] = AIR_CP * (ps >= p ? ts : t) * g_in - AIR_CP * (p >= pa ? t : ta) * g_out;
+    o->flow_heat[k] = c[C_H] * wall_area * (c[C_TW] - t);
+}
+
 /* the chambers whose flows (Outputs.flow_...) an evaluation of the rates takes from o instead
  * of computing them: what a Jacobian column that changes no state of that chamber keeps */
 enum { KEEP_CAP_FLOWS = 1, KEEP_ROD_FLOWS = 2 };
@@ -367,37 +384,21 @@ static void evaluate(const CylinderData *m, double s, const double *y, int mode,
     double p1 = gm1 * u1 / vol1, p2 = gm1 * u2 / vol2;
     double t1 = fmin_inline(fmax_inline(u1 / (fmax_inline(m1, 1e-12) * AIR_CV), 20.0), 3000.0);
     double t2 = fmin_inline(fmax_inline(u2 / (fmax_inline(m2, 1e-12) * AIR_CV), 20.0), 3000.0);
-    double ps = c[C_PS], pa = c[C_PA], ts = c[C_TS], ta = c[C_TA], t_wall = c[C_TW];
+    double pa = c[C_PA];
     double op[4];
     if (level != OUTPUTS_ONLY && (kept_flows & (KEEP_CAP_FLOWS | KEEP_ROD_FLOWS)) !=
                                      (KEEP_CAP_FLOWS | KEEP_ROD_FLOWS))
         openings(s, c[C_CENTRE], op);
-    if (level != OUTPUTS_ONLY && !(kept_flows & KEEP_CAP_FLOWS)) {
-        double line1 = series_pair(c[C_THR1], cushion_conductance(x, c[C_CU1_L], c[C_CU1_C],
-                                                                  c[C_CU1_E]));
-        double k0 = series_pair(c[C_C] * op[0], p1 > ps ? line1 : INFINITY);
-        double k1 = series_pair(c[C_C] * op[1], p1 > pa ? line1 : INFINITY);
-        double g0 = iso6358_flow(ps, ts, p1, t1, k0, c[C_B], c[C_M], c[C_BETA]);
-        double g1 = iso6358_flow(p1, t1, pa, ta, k1, c[C_B], c[C_M], c[C_BETA]);
-        o->flow_mass[0] = g0 - g1;
-        o->flow_enthalpy[0] = AIR_CP * (ps >= p1 ? ts : t1) * g0 -
-                              AIR_CP * (p1 >= pa ? t1 : ta) * g1;
-        /* wall areas: affine in x, from chambers.chamber_wall_areas (no seal heating here:
-         * the rod's surface is at t_wall too) */
-        o->flow_heat[0] = c[C_H] * (c[C_AW1] + c[C_AW1_X] * x) * (t_wall - t1);
-    }
-    if (level != OUTPUTS_ONLY && !(kept_flows & KEEP_ROD_FLOWS)) {
-        double line2 = series_pair(c[C_THR2], cushion_conductance(c[C_STROKE] - x, c[C_CU2_L],
-                                                                  c[C_CU2_C], c[C_CU2_E]));
-        double k2 = series_pair(c[C_C] * op[2], p2 > ps ? line2 : INFINITY);
-        double k3 = series_pair(c[C_C] * op[3], p2 > pa ? line2 : INFINITY);
-        double g2 = iso6358_flow(ps, ts, p2, t2, k2, c[C_B], c[C_M], c[C_BETA]);
-        double g3 = iso6358_flow(p2, t2, pa, ta, k3, c[C_B], c[C_M], c[C_BETA]);
-        o->flow_mass[1] = g2 - g3;
-        o->flow_enthalpy[1] = AIR_CP * (ps >= p2 ? ts : t2) * g2 -
-                              AIR_CP * (p2 >= pa ? t2 : ta) * g3;
-        o->flow_heat[1] = c[C_H] * (c[C_AW2] + c[C_AW2_X] * x) * (t_wall - t2);
-    }
+    /* wall areas: affine in x, from chambers.chamber_wall_areas (no seal heating here: the
+     * rod's surface is at the wall temperature too) */
+    if (level != OUTPUTS_ONLY && !(kept_flows & KEEP_CAP_FLOWS))
+        chamber_flows(c, 0, p1, t1, series_pair(c[C_THR1], cushion_conductance(
+                          x, c[C_CU1_L], c[C_CU1_C], c[C_CU1_E])),
+                      op[0], op[1], c[C_AW1] + c[C_AW1_X] * x, o);
+    if (level != OUTPUTS_ONLY && !(kept_flows & KEEP_ROD_FLOWS))
+        chamber_flows(c, 1, p2, t2, series_pair(c[C_THR2], cushion_conductance(
+                          c[C_STROKE] - x, c[C_CU2_L], c[C_CU2_C], c[C_CU2_E])),
+                      op[2], op[3], c[C_AW2] + c[C_AW2_X] * x, o);
     double f_press = p1 * c[C_A1] - p2 * c[C_A2] - pa * c[C_AROD];
     double f_load = c[C_F0] + c[C_KL] * (x - c[C_X0L]) + c[C_MASS] * GRAVITY * sin(c[C_INCL]) +
                     c[C_CL] * v;
