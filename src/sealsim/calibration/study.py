@@ -156,8 +156,8 @@ def friction_fit_study(case: FrictionFitCase, base_dir: str | Path,
     law = make_law(result.params)
     # fitted roughness, film factor, ...: the friction table of the fitted values
     # offset-free as the measured signals are: the model's own offset is not in the data
-    predictions = {r.name: offset_free(predict_run(law, r), r.phases)
-                   for r in with_law_table(law, runs)}
+    fitted_runs = with_law_table(law, runs)
+    predictions = {r.name: offset_free(predict_run(law, r), r.phases) for r in fitted_runs}
     report = {"parameters": parameter_report(result, result.params.model_dump(mode="json")),
               "measurements": {r.name: run_metrics(r, predictions[r.name]) for r in runs}}
     # the starting parameters' prediction: how far the law is off before any fitting
@@ -169,7 +169,7 @@ def friction_fit_study(case: FrictionFitCase, base_dir: str | Path,
                                                                else None)
     proportional_baseline(runs, report["measurements"])
     report["conditions"] = repeat_conditions(case, report["measurements"])
-    steady_curves, run_speeds = fitted_steady_curves(law, with_law_table(law, runs))
+    steady_curves, run_speeds = fitted_steady_curves(law, fitted_runs)
     result.warnings.extend(fit_run_warnings(report["conditions"], report["measurements"]))
     result.warnings.extend(drift_warnings(report["measurements"]))
     result.warnings.extend(speed_extrapolation_warnings(steady_curves, run_speeds, law))
@@ -285,18 +285,15 @@ def speed_extrapolation_warnings(curves: pd.DataFrame, run_speeds: pd.DataFrame,
         return []
     worst = curves.loc[curves["mu_eff"].idxmax()]
     first = float(over["speed_m_s"].min())
+    from sealsim.pneumatic.case import excess_friction_cause
+
     measured = run_speeds["speed_m_s"]
-    layer = getattr(getattr(law, "params", None), "supply_layer", None)
-    cause = ("its viscous shear grows with the speed, in proportion to it at the film that "
-             f"the fitted grease layer of {layer * 1e6:.3g} µm caps (supply_layer)"
-             if layer is not None and np.isfinite(layer) else
-             "its viscous shear grows with the speed")
     return [f"the fitted law's steady friction exceeds the contact force (F/F_N up to "
             f"{worst['mu_eff']:.2g} at {worst['speed_m_s']:.3g} m/s, {worst['contact']} at "
             f"{worst['pressure_bar']:g} bar; above {first:.2g} m/s) while the runs were measured "
-            f"at {1e3 * measured.min():.3g}-{1e3 * measured.max():.3g} mm/s: {cause}. Use the "
-            "fitted parameters only near the measured speeds (stribeck_fitted.png, "
-            "stribeck_fitted.csv)"]
+            f"at {1e3 * measured.min():.3g}-{1e3 * measured.max():.3g} mm/s: "
+            f"{excess_friction_cause(law)}. Use the fitted parameters only near the measured "
+            "speeds (stribeck_fitted.png, stribeck_fitted.csv)"]
 
 
 def proportional_baseline(runs: list[PreparedRun], measurements: dict) -> float | None:

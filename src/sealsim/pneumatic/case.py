@@ -615,8 +615,8 @@ def contact_friction_notes(table, contact_map, law, temperature: float) -> list[
 def excess_friction_cause(law) -> str:
     """Why a Θ law on its seal's contact gives more friction than the contact force, and what
     that means (the end of the notes of :func:`contact_friction_notes` and
-    :func:`sealsim.seal_friction`)."""
-    layer = law.params.supply_layer
+    :func:`sealsim.seal_friction`, and of a friction fit's warning)."""
+    layer = getattr(getattr(law, "params", None), "supply_layer", None)
     cause = (f"the film that its supply_layer of {layer * 1e6:.3g} µm caps, sheared "
              "in proportion to the speed" if layer is not None and math.isfinite(layer) else
              "the viscous shear of its film")
