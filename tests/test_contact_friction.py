@@ -101,14 +101,14 @@ def test_theta_on_the_contact_table_keeps_the_steady_curve_and_the_dwell(table):
     fn = inputs.normal_force
     slowest = np.max([table.evaluate(s * table.speed[0], 3e5, 293.15)[0] for s in (1, -1)])
     boundary = 0.2 * np.pi * 0.012 * float(slowest)
-    rested = law.breakaway_force(np.zeros((1, 1)), inputs)[0]
+    rested = law.breakaway_force(np.zeros((2, 1)), inputs)[0]
     assert rested == pytest.approx(boundary, rel=1e-9)
     assert 0.97 * 0.2 * fn < rested < 0.2 * fn
     # just after sliding (Θ = 1) it is lower by the dwell drop d = 0.5
-    assert law.breakaway_force(np.ones((1, 1)), inputs)[0] == pytest.approx(0.5 * boundary,
-                                                                              rel=1e-9)
+    assert law.breakaway_force(np.array([[1.0], [0.05]]), inputs)[0] == pytest.approx(
+        0.5 * boundary, rel=1e-9)
     # accelerating from rest (Θ below Θ_ss): more friction than steady
-    assert law.force(np.zeros((1, 1)), [0.05], inputs)[0] > steady[3]
+    assert law.force(np.zeros((2, 1)), [0.05], inputs)[0] > steady[3]
     # bristles: the same steady curve
     bristle = Theta.from_parameter_set("seal_contact", bristle_stiffness=5e4)
     z = bristle.steady_state(v, inputs)
@@ -126,9 +126,10 @@ def test_a_lagging_film_takes_load_off_the_asperities_not_its_own_shear(table):
     _, viscous, _ = table.evaluate(v, 3e5, 293.15)
     film_shear = np.pi * 0.012 * viscous
     steady = law.steady_force(v, inputs)
-    drop = 0.5 * law.breakaway_force(np.zeros((1, 1)), inputs)[0]      # ΔF = d·F_ss(0⁺)
+    drop = 0.5 * law.breakaway_force(np.zeros((2, 1)), inputs)[0]      # ΔF = d·F_ss(0⁺)
     theta_ss = law.steady_state(v, inputs)[0]
-    lagging = law.force(np.ones((1, v.size)), v, inputs)               # Θ = 1: a full film
+    full = np.stack([np.ones(v.size), v])            # Θ = 1: a full film; φ = |v|: steady
+    lagging = law.force(full, v, inputs)
     expected = np.maximum(steady + drop * (theta_ss - 1.0), film_shear)
     assert lagging == pytest.approx(expected, rel=1e-12)
     # at 30 and 40 mm/s the steady force minus the lag falls below the film's shear (it would
@@ -137,23 +138,34 @@ def test_a_lagging_film_takes_load_off_the_asperities_not_its_own_shear(table):
     assert lagging[2:] == pytest.approx(film_shear[2:], rel=1e-12)
     assert np.all(film_shear > 1e-3)
     # the partials see the floor: no Θ sensitivity on it, −ΔF off it
-    part = law.partials(np.ones((1, v.size)), v, inputs)
+    part = law.partials(full, v, inputs)
     assert part.dforce_dz[0, 2:] == pytest.approx([0.0, 0.0])
     assert part.dforce_dz[0, :2] == pytest.approx([-drop, -drop], rel=1e-12)
 
 
-def test_theta_contact_partials_match_finite_differences(table):
-    law = Theta.from_parameter_set("seal_contact", bristle_stiffness=5e4)
+@pytest.mark.parametrize("bristles", [None, 5e4])
+def test_theta_contact_partials_match_finite_differences(table, bristles):
+    # every partial derivative of force and state rates, the film's speed (last state) among
+    # them, against central differences (relative 1e-3: the differences' truncation on the
+    # Hermite table; 1e-6 absolute where a derivative is 0)
+    law = Theta.from_parameter_set("seal_contact", bristle_stiffness=bristles)
     inputs = inputs_for(table)
-    z = np.array([[0.3], [2e-5]])
+    z = np.array([[0.3], [2e-5], [0.012]]) if bristles else np.array([[0.3], [0.012]])
     v = np.array([0.02])
     part = law.partials(z, v, inputs)
     h = 1e-7
     num = (law.force(z, v + h, inputs) - law.force(z, v - h, inputs)) / (2 * h)
     assert part.dforce_dv[0] == pytest.approx(num[0], rel=1e-3)
-    dz = np.array([[0.0], [1e-9]])
-    num_z = (law.force(z + dz, v, inputs) - law.force(z - dz, v, inputs)) / 2e-9
-    assert part.dforce_dz[1, 0] == pytest.approx(num_z[0], rel=1e-4)
+    num = (law.derivatives(z, v + h, inputs) - law.derivatives(z, v - h, inputs)) / (2 * h)
+    assert part.dzdot_dv[:, 0] == pytest.approx(num[:, 0], rel=1e-3, abs=1e-6)
+    for j, step in enumerate([1e-6, 1e-9, 1e-6][:law.n_states]):
+        dz = np.zeros_like(z)
+        dz[j] = step
+        num_z = (law.force(z + dz, v, inputs) - law.force(z - dz, v, inputs)) / (2 * step)
+        assert part.dforce_dz[j, 0] == pytest.approx(num_z[0], rel=1e-3, abs=1e-6), j
+        num_z = (law.derivatives(z + dz, v, inputs) - law.derivatives(z - dz, v, inputs)) / (
+            2 * step)
+        assert part.dzdot_dz[:, j, 0] == pytest.approx(num_z[:, 0], rel=1e-3, abs=1e-6), j
 
 
 def test_per_circumference_friction_does_not_depend_on_the_diameter():

@@ -137,7 +137,9 @@ def test_contact_law_rates_and_step_are_the_law_objects(contact_seal, bristles):
     assert par[12] == 1.0 and par[15] == pytest.approx(np.pi * 0.012)
     rng = np.random.default_rng(5)
     for v in np.concatenate([[0.0, 1e-8, -1e-8], rng.normal(0, 0.3, 20)]):
-        z = np.array([rng.uniform(0, 1), rng.uniform(-1e-5, 1e-5)][:law.n_states])
+        # Θ, the bristles' z, the film's speed φ (last): lagging behind |v|, ahead, none
+        z = np.array([rng.uniform(0, 1), rng.uniform(-1e-5, 1e-5)][:law.n_states - 1]
+                     + [rng.choice([0.0, abs(v), rng.uniform(0.0, 0.5)])])
         dy = np.zeros((law.n_states, 1))
         force, brk = law_rates(LAW_CODES["theta"], par, z.reshape(-1, 1), 0, v, *contact[:5],
                                dy, 0, frow, fdata, contact[5], contact[6])
@@ -174,12 +176,17 @@ def test_contact_steady_is_three_table_lookups_to_the_bit(contact_seal):
         dp = rng.uniform(p_lo - 1e5, p_hi + 1e5) if k % 5 else table.pressure[k % 3]
         v = 0.0 if k % 17 == 0 else rng.choice([-1.0, 1.0]) * 10.0 ** rng.uniform(-9.0, 1.5)
         orient = rng.choice([-1.0, 1.0])
+        # the film's speed: steady (|v|), none (the slowest node), or any other
+        film = [abs(v), 0.0, 10.0 ** rng.uniform(-9.0, 1.5)][k % 3]
         load, visc, _ = contact_table_point(frow, fdata, temp, dp, orient * v)
+        if v != 0.0:         # the asperities carry the load of the film's speed
+            load = contact_table_point(frow, fdata, temp, dp,
+                                       np.sign(orient * v) * max(film, slow))[0]
         up = contact_table_point(frow, fdata, temp, dp, slow)[0]
         down = contact_table_point(frow, fdata, temp, dp, -slow)[0]
         want = (circumference * (mu * load + visc), circumference * mu * max(up, down),
                 circumference * visc)
-        assert contact_steady(par, frow, fdata, temp, dp, orient, v) == want
+        assert contact_steady(par, frow, fdata, temp, dp, orient, v, film) == want
 
 
 def test_compiled_stepper_carries_the_contact_table(contact_seal):

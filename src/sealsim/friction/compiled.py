@@ -100,19 +100,28 @@ def law_parameters(law, sliding_diameter: float = 0.0) -> np.ndarray:
 
 
 @njit(cache=True)
-def contact_steady(par, frow, fdata, temp, dp, orient, vv):
-    """(|F_ss(v)| [N], F_ss(0⁺) [N]) of a Θ law on its seal's contact table
-    (:meth:`sealsim.friction.theta.Theta.contact_steady`): π·D·(μ_b·L + V) in the stroke
-    direction of orient·v, and π·D·μ_b times the larger asperity load of both directions at
-    the table's slowest speed (its first node) -- the table lookups of
-    :func:`~sealsim.friction.contact_table.contact_table_point` sharing one cell search."""
-    i, wa, j, wb = table_cell(frow, fdata, temp, dp)       # one cell search for all three
+def contact_steady(par, frow, fdata, temp, dp, orient, vv, film):
+    """(|F_ss| [N], F_ss(0⁺) [N], π·D·V(|v|) [N]) of a Θ law on its seal's contact table
+    (:meth:`sealsim.friction.theta.Theta.contact_steady`): π·D·(μ_b·L(φ) + V(|v|)) in the
+    stroke direction of orient·v, the asperity load L at the speed ``film`` = φ [m/s] the
+    film has formed for (:func:`~sealsim.friction.kernels.film_speed_rate`; φ = |v| in steady
+    sliding), the viscous shear V at the sliding speed; and π·D·μ_b times the larger
+    asperity load of both directions at the table's slowest speed (its first node) -- the
+    table lookups of :func:`~sealsim.friction.contact_table.contact_table_point` sharing one
+    cell search."""
+    i, wa, j, wb = table_cell(frow, fdata, temp, dp)       # one cell search for all
     speed = orient * vv
     load = visc = 0.0
     if speed != 0.0:
+        direction = 0 if speed > 0.0 else 2
         k, wc = speed_cell(frow, fdata, speed)
-        load, visc, _ = cell_sums(frow, fdata, i, wa, j, wb, k, wc, 0 if speed > 0.0 else 2,
-                                  False)
+        load, visc, _ = cell_sums(frow, fdata, i, wa, j, wb, k, wc, direction, False)
+        if film != abs(speed):
+            if film > 0.0:
+                k, wc = speed_cell(frow, fdata, film)
+            else:
+                k, wc = 0, _ON_NODE
+            load, _, _ = cell_sums(frow, fdata, i, wa, j, wb, k, wc, direction, False)
     up, _, _ = cell_sums(frow, fdata, i, wa, j, wb, 0, _ON_NODE, 0, False)
     down, _, _ = cell_sums(frow, fdata, i, wa, j, wb, 0, _ON_NODE, 2, False)
     circumference, mu = par[TH_CIRCUMFERENCE], par[TH_MU_B]
@@ -121,11 +130,11 @@ def contact_steady(par, frow, fdata, temp, dp, orient, vv):
 
 
 @njit(cache=True)
-def _theta_level(par, th, vv, fn, temp, frow, fdata, dp, orient):
-    """Friction level of the Θ law [N]: lumped g_Θ, or on the contact table
-    (:func:`sealsim.friction.kernels.theta_contact_level`)."""
+def _theta_level(par, th, vv, fn, temp, frow, fdata, dp, orient, film):
+    """Friction level of the Θ law [N]: lumped g_Θ, or on the contact table with the film
+    formed for the speed ``film`` [m/s] (:func:`sealsim.friction.kernels.theta_contact_level`)."""
     if par[TH_CONTACT] > 0.0:
-        fss, fb, fv = contact_steady(par, frow, fdata, temp, dp, orient, vv)
+        fss, fb, fv = contact_steady(par, frow, fdata, temp, dp, orient, vv, film)
         return fk.theta_contact_level(th, vv, fss, fb, par[TH_DROP],
                                       fk.theta_steady(vv, par[0], par[1], fn, par[5], par[6]),
                                       fv)
@@ -172,7 +181,12 @@ def law_rates(law, par, z, off, vv, fn, b, pa, pb, temp, dy, col, frow, fdata, d
         gamma = 0.0 if contact else _theta_gamma(par, temp)   # the table holds the viscous part
         th = z[off, col]
         fn = max(fn, 1e-9)
-        level = _theta_level(par, th, vv, fn, temp, frow, fdata, dp, orient)
+        film = 0.0
+        if contact:                             # the film's speed, the law's last state
+            last = off + (2 if par[7] > 0.0 else 1)
+            film = z[last, col]
+            dy[last, col] = fk.film_speed_rate(film, vv, b, par[0])
+        level = _theta_level(par, th, vv, fn, temp, frow, fdata, dp, orient, film)
         dy[off, col] = fk.theta_rate(th, vv, par[0], par[1], fn, par[5], par[6])
         if par[7] > 0.0:                        # bristles
             zdot = fk.lugre_bristle_rate(z[off + 1, col], vv, par[7], level)
@@ -219,9 +233,15 @@ def law_step(law, par, z0, v, dt, contact, frow, fdata, z1):
         fn = contact[K_FN]
         a, b = fk.theta_affine(v, dt, par[0], par[1], fn, par[5], par[6])
         th1 = a * z0[0] + b
+        film_mid = 0.0
+        if par[TH_CONTACT] > 0.0:               # the film's speed (the law's last state)
+            last = 2 if par[7] > 0.0 else 1
+            a, b = fk.film_speed_affine(v, dt, contact[K_WIDTH], par[0])
+            z1[last] = a * z0[last] + b
+            film_mid = 0.5 * (z0[last] + z1[last])
         if par[7] > 0.0:        # bristles: the exact step with the level of the mid-state
             g_mid = _theta_level(par, 0.5 * (z0[0] + th1), v, max(fn, 1e-9), contact[K_TEMP],
-                                 frow, fdata, contact[K_DP], contact[K_ORIENT])
+                                 frow, fdata, contact[K_DP], contact[K_ORIENT], film_mid)
             a, b = fk.lugre_affine(v, dt, par[7], g_mid)
             z1[1] = a * z0[1] + b
         z1[0] = th1

@@ -46,6 +46,9 @@ kernel (arguments)                                 returns
 ``theta_contact_level(th, v, fss, ...)``           level of the Θ law on a contact table:
                                                    max(fss + d·fb·(Θ_ss − Θ), fv), at rest
                                                    fb·(1 − d·Θ)
+``film_speed_rate(phi, v, b, tau)``                dφ/dt = (|v| − φ)·(|v|/b + 1/τ): the speed
+                                                   the contact's film has formed for
+``film_speed_affine(v, dt, b, tau)``               (a, c): φ(t+dt) = a·φ + c, exact for constant v
 ``walther_viscosity(t, wa, wb)``                   ν(T) [mm²/s], ASTM D341 (Walther)
 ``walther_viscosity_ratio(t, tref, wa, wb)``       ν(T)/ν(T_ref), ASTM D341 (Walther)
 =================================================  ===============================================
@@ -59,6 +62,10 @@ References
 .. [3] P. R. Dahl, "A solid friction model", Aerospace Corp. TOR-0158(3107-18)-1, 1968.
 .. [4] F. Al-Bender, V. Lampaert, J. Swevers, IEEE TAC 50(11), 1883-1887, 2005.
 .. [5] ASTM D341-20, viscosity-temperature equations (Ubbelohde-Walther).
+.. [6] J. Sugimura, W. R. Jones, H. A. Spikes, "EHD film thickness in non-steady state
+   conditions", J. Tribol. 120(3), 442-452, 1998 (the film in a contact is the one formed
+   for the entrainment speed of the time its fluid entered the inlet: a delay of the transit
+   time of the contact).
 """
 
 from __future__ import annotations
@@ -326,6 +333,32 @@ def theta_contact_level(th, v, fss, fb, d, thss, fv):
     return level if level > floor else floor
 
 
+#: shortest length [m] over which a contact's film follows the sliding speed: a contact
+#: narrower than 1 µm (lost contact, b = 0) lets the film follow at once instead of dividing by 0
+FILM_MIN_LENGTH = 1e-6
+
+
+@kernel
+def film_speed_rate(phi, v, b, tau):
+    """dφ/dt = (|v| − φ)·(|v|/b + 1/τ) [m/s²]: the speed φ [m/s] that the contact's film has
+    formed for follows the sliding speed |v| [m/s] over a sliding distance of the contact width
+    b [m] (at least :data:`FILM_MIN_LENGTH`; the fluid at the contact's pressure maximum
+    entered its inlet one contact width earlier, Sugimura, Jones & Spikes 1998 [6]_: a
+    first-order lag over that distance is sealsim's simplest form of their delay) and decays
+    at rest with the Θ law's τ [s] (the film squeezed out during a dwell).  Steady: φ = |v|."""
+    speed = abs(v)
+    return (speed - phi) * (speed / max(b, FILM_MIN_LENGTH) + 1.0 / tau)
+
+
+@kernel
+def film_speed_affine(v, dt, b, tau):
+    """(a, c) with φ(t + dt) = a·φ(t) + c for v and b held over dt [s] (exact solution of
+    :func:`film_speed_rate`): a = exp(−(|v|/b + 1/τ)·dt), c = |v|·(1 − a)."""
+    speed = abs(v)
+    decay = -math.expm1(-(speed / max(b, FILM_MIN_LENGTH) + 1.0 / tau) * dt)
+    return 1.0 - decay, speed * decay
+
+
 @kernel
 def walther_viscosity(t, wa, wb):
     """ν(T) [mm²/s] with the ASTM D341 (Walther) equation log10 log10(ν + 0.7) = A − B·log10 T
@@ -520,6 +553,18 @@ def _loop_theta_contact_level(th, v, fss, fb, d, thss, fv, out):
     for i in range(out.shape[0]):
         out[i] = theta_contact_level(_at(th, i), _at(v, i), _at(fss, i), _at(fb, i), _at(d, i),
                                      _at(thss, i), _at(fv, i))
+
+
+@kernel
+def _loop_film_speed_rate(phi, v, b, tau, out):
+    for i in range(out.shape[0]):
+        out[i] = film_speed_rate(_at(phi, i), _at(v, i), _at(b, i), _at(tau, i))
+
+
+@kernel
+def _loop_film_speed_affine(v, dt, b, tau, a, c):
+    for i in range(a.shape[0]):
+        a[i], c[i] = film_speed_affine(_at(v, i), _at(dt, i), _at(b, i), _at(tau, i))
 
 
 @kernel

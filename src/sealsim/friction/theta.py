@@ -539,7 +539,8 @@ class ThetaParameters(LawParameters):
 class Theta(FrictionLaw):
     """The Θ rate-and-state law of Heipl & Murrenhoff (see the module docstring for the equations).
 
-    States: ``("theta",)``, or ``("theta", "z")`` with bristles (``bristle_stiffness``).
+    States: ``("theta",)``, or ``("theta", "z")`` with bristles (``bristle_stiffness``); with
+    ``steady = "contact"`` the film's speed φ [m/s] last (``"film_speed"``).
     Inputs: ``normal_force`` F_N [N] (> 0) and ``contact_width`` b [m] (>= 0).
 
     Parameters
@@ -600,7 +601,8 @@ class Theta(FrictionLaw):
 
     @property
     def state_names(self):  # type: ignore[override]
-        return ("theta", "z") if self.bristles else ("theta",)
+        names = ("theta", "z") if self.bristles else ("theta",)
+        return names + ("film_speed",) if self.contact else names
 
     @property
     def has_stiction(self) -> bool:  # type: ignore[override]
@@ -629,10 +631,12 @@ class Theta(FrictionLaw):
         return theta_viscous_coefficient(temperature, p.gamma, p.reference_temperature,
                                          *self.walther)
 
-    def contact_steady(self, v, inputs: ContactInputs):
+    def contact_steady(self, v, inputs: ContactInputs, film=None):
         """(|F_ss(v)| [N], boundary level F_ss(0⁺) [N], viscous part π·D·V(|v|) [N]) from the
-        contact table of ``inputs`` (``steady = "contact"``): F_ss = π·D·(μ_b·L + V) in the
-        stroke direction of v, and μ_b times the asperity load at the table's slowest speed,
+        contact table of ``inputs`` (``steady = "contact"``): F_ss = π·D·(μ_b·L(φ) + V(|v|))
+        in the stroke direction of v, the asperity load at the speed ``film`` = φ [m/s] the
+        film has formed for (the state ``film_speed``; not given: the steady film, φ = |v|),
+        and μ_b times the asperity load at the table's slowest speed,
         the larger of both directions': sliding from rest then never starts with more
         friction than held the seal at rest (with the mean, a pressurised analytic O-ring,
         whose low-pressure inlet is steeper, chattered between stick and slip in its
@@ -650,7 +654,11 @@ class Theta(FrictionLaw):
                                                                            float))
         orient = np.asarray(inputs.table_orientation, dtype=float)
         mu = self.params.boundary_friction
-        load, viscous, _ = table.evaluate(orient * np.asarray(v, dtype=float), dp, temperature)
+        speed = orient * np.asarray(v, dtype=float)
+        load, viscous, _ = table.evaluate(speed, dp, temperature)
+        if film is not None:           # the asperities carry the load of the film's speed
+            film_speed = np.where(speed < 0.0, -1.0, 1.0) * np.maximum(film, table.speed[0])
+            load = np.where(speed != 0.0, table.evaluate(film_speed, dp, temperature)[0], load)
         slow = table.speed[0]
         up, _, _ = table.evaluate(slow, dp, temperature)
         down, _, _ = table.evaluate(-slow, dp, temperature)
@@ -658,18 +666,19 @@ class Theta(FrictionLaw):
         return (circumference * (mu * load + viscous),
                 circumference * mu * np.maximum(up, down), circumference * viscous)
 
-    def level(self, theta, inputs: ContactInputs, v=None):
+    def level(self, theta, inputs: ContactInputs, v=None, film=None):
         """Friction level [N] without the sign: the break-away force at rest.
 
         Lumped: g_Θ = F_N·[f_a(1 − Θ) + f_b·Θ] (the viscous γ·b·v comes on top).  Contact:
-        |F_ss(v)| + ΔF·(Θ_ss(v) − Θ), not below the film's viscous part π·D·V(|v|), at rest
+        |F_ss(v)| + ΔF·(Θ_ss(v) − Θ) with the asperity load of the film's speed ``film``
+        (:meth:`contact_steady`), not below the film's viscous part π·D·V(|v|), at rest
         F_ss(0⁺) − ΔF·Θ, ΔF = d·F_ss(0⁺).
         """
         p = self.params
         if not self.contact:
             return theta_friction_level(theta, self._fn(inputs), p.f_a, p.f_b)
         v = np.zeros(np.shape(theta)) if v is None else np.asarray(v, dtype=float)
-        steady, boundary, viscous = self.contact_steady(v, inputs)
+        steady, boundary, viscous = self.contact_steady(v, inputs, film)
         theta_ss = theta_steady(v, *self._rate_args(inputs))
         return apply(_k._loop_theta_contact_level, theta, v, steady, boundary, p.dwell_drop,
                      theta_ss, viscous)
@@ -681,7 +690,7 @@ class Theta(FrictionLaw):
         return 0.5 * self.params.bristle_stiffness * z[1] ** 2
 
     def initial_state(self, n: int = 1):
-        """Dry, relaxed contacts (Θ = 0 after a long rest; z = 0)."""
+        """Dry, relaxed contacts (Θ = 0 after a long rest; z = 0; no film, φ = 0)."""
         return np.zeros((self.n_states, n))
 
     def _viscous(self, v, inputs):
@@ -691,15 +700,23 @@ class Theta(FrictionLaw):
         return self.gamma(inputs) * self._b(inputs) * v
 
     # -- interface -----------------------------------------------------------------------
+    def _film(self, z):
+        """The film's speed φ [m/s] of states z (the last state), None for the lumped law."""
+        return z[-1] if self.contact else None
+
+    def _film_rate(self, z, v, inputs):
+        return apply(_k._loop_film_speed_rate, z[-1], v, self._b(inputs), self.params.tau)
+
     def derivatives(self, z, v, inputs: ContactInputs = NO_INPUTS):
         v = as_velocity(v)
         z = as_state(z, self.n_states)
-        dtheta = theta_rate(z[0], v, *self._rate_args(inputs))
-        if not self.bristles:
-            return dtheta[None, :]
-        dz = lugre_bristle_rate(z[1], v, self.params.bristle_stiffness,
-                                self.level(z[0], inputs, v))
-        return np.stack(np.broadcast_arrays(dtheta, dz))
+        rates = [theta_rate(z[0], v, *self._rate_args(inputs))]
+        if self.bristles:
+            rates.append(lugre_bristle_rate(z[1], v, self.params.bristle_stiffness,
+                                            self.level(z[0], inputs, v, self._film(z))))
+        if self.contact:
+            rates.append(self._film_rate(z, v, inputs))
+        return np.stack(np.broadcast_arrays(*rates))
 
     def force(self, z, v, inputs: ContactInputs = NO_INPUTS):
         p = self.params
@@ -707,10 +724,11 @@ class Theta(FrictionLaw):
         z = as_state(z, self.n_states)
         if not self.bristles:
             if self.contact:
-                return self.level(z[0], inputs, v) * np.sign(v)
+                return self.level(z[0], inputs, v, z[1]) * np.sign(v)
             return theta_force(z[0], v, self._fn(inputs), self._b(inputs), p.f_a, p.f_b,
                                self.gamma(inputs))
-        zdot = lugre_bristle_rate(z[1], v, p.bristle_stiffness, self.level(z[0], inputs, v))
+        zdot = lugre_bristle_rate(z[1], v, p.bristle_stiffness,
+                                  self.level(z[0], inputs, v, self._film(z)))
         return (p.bristle_stiffness * z[1] + p.bristle_damping * zdot
                 + self._viscous(v, inputs))
 
@@ -722,71 +740,108 @@ class Theta(FrictionLaw):
         load = _load_factor(fn, p.reference_normal_force, p.load_exponent)
         r = np.abs(v) / (p.alpha * load)
         shape = np.broadcast_shapes(v.shape, z.shape[1:], np.shape(fn))
-        d_tt = np.broadcast_to(-1.0 / p.tau - r, shape)
-        d_tv = np.broadcast_to(np.sign(v) / (p.alpha * load) * (1.0 - z[0]), shape)
+        n = self.n_states
+        jac = np.zeros((n, n) + shape)
+        dzdv = np.zeros((n,) + shape)
+        dfdz = np.zeros((n,) + shape)
+        jac[0, 0] = -1.0 / p.tau - r
+        dzdv[0] = np.sign(v) / (p.alpha * load) * (1.0 - z[0])
+        film = self._film(z)
         if self.contact:
-            # ∂g/∂Θ = −ΔF (0 where the level rests on the film's viscous part); ∂g/∂v by
-            # central differences of the tabulated curve
-            steady, boundary, viscous = self.contact_steady(v, inputs)
+            # ∂g/∂Θ = −ΔF (0 where the level rests on the film's viscous part); ∂g/∂v (film
+            # held) and ∂g/∂φ by central differences of the tabulated curve
+            steady, boundary, viscous = self.contact_steady(v, inputs, film)
             theta_ss = theta_steady(v, *self._rate_args(inputs))
             free = np.where(v != 0.0, steady + p.dwell_drop * boundary * (theta_ss - z[0])
                             > np.maximum(viscous, 1e-9), True)
             dlevel = np.where(free, -p.dwell_drop * boundary, 0.0)
             h = 1e-6 * np.maximum(np.abs(v), 1e-6)
-            dg_dv = (self.level(z[0], inputs, v + h) - self.level(z[0], inputs, v - h)) / (2 * h)
+            dg_dv = (self.level(z[0], inputs, v + h, film)
+                     - self.level(z[0], inputs, v - h, film)) / (2 * h)
             viscous_dv = np.broadcast_to(np.where(v != 0.0, dg_dv * np.sign(v), 0.0), shape)
+            hf = 1e-6 * np.maximum(film, 1e-6)
+            dg_df = (self.level(z[0], inputs, v, film + hf)
+                     - self.level(z[0], inputs, v, np.maximum(film - hf, 0.0))) / (
+                         film + hf - np.maximum(film - hf, 0.0))
+            # the film's speed: dφ/dt = (|v| − φ)·(|v|/b + 1/τ)
+            rate = np.abs(v) / np.maximum(self._b(inputs), _k.FILM_MIN_LENGTH) + 1.0 / p.tau
+            jac[-1, -1] = -rate
+            dzdv[-1] = np.sign(v) * (rate + (np.abs(v) - film)
+                                     / np.maximum(self._b(inputs), _k.FILM_MIN_LENGTH))
         else:
             dlevel = fn * (p.f_b - p.f_a)                       # ∂g_Θ/∂Θ
+            dg_df = 0.0
             viscous_dv = np.broadcast_to(self.gamma(inputs) * self._b(inputs), shape)
         if not self.bristles:
-            return Partials(d_tt[None, None], d_tv[None],
-                            np.broadcast_to(dlevel * np.sign(v), shape)[None].copy(),
-                            np.array(viscous_dv, dtype=float))
+            dfdz[0] = dlevel * np.sign(v)
+            if self.contact:
+                dfdz[-1] = dg_df * np.sign(v)
+            return Partials(jac, dzdv, dfdz, np.array(viscous_dv, dtype=float))
         s0, s1 = p.bristle_stiffness, p.bristle_damping
-        g = self.level(z[0], inputs, v)
+        g = self.level(z[0], inputs, v, film)
         d_zt = s0 * np.abs(v) * z[1] * dlevel / g ** 2
         d_zz = -s0 * np.abs(v) / g
         d_zv = 1.0 - s0 * np.sign(v) * z[1] / g
-        if self.contact:       # the level moves with v, and with it the bristles' target
+        if self.contact:       # the level moves with v and φ, and with it the bristles' target
             d_zv = d_zv + s0 * np.abs(v) * z[1] / g ** 2 * viscous_dv * np.sign(v)
+            jac[1, -1] = s0 * np.abs(v) * z[1] * dg_df / g ** 2
+            dfdz[-1] = s1 * jac[1, -1]
             viscous_dv = np.zeros(shape)
-        jac = np.zeros((2, 2) + shape)
-        jac[0, 0] = d_tt
         jac[1, 0] = d_zt
         jac[1, 1] = d_zz
-        dzdv = np.stack([d_tv, np.broadcast_to(d_zv, shape)])
-        dfdz = np.stack([np.broadcast_to(s1 * d_zt, shape),
-                         np.broadcast_to(s0 + s1 * d_zz, shape)])
+        dzdv[1] = d_zv
+        dfdz[0] = s1 * d_zt
+        dfdz[1] = s0 + s1 * d_zz
         return Partials(jac, dzdv, dfdz, np.broadcast_to(s1 * d_zv + viscous_dv, shape).copy())
+
+    def _film_step(self, z_film, v, dt, inputs):
+        a, c = apply(_k._loop_film_speed_affine, v, dt, self._b(inputs), self.params.tau,
+                     outputs=2)
+        return a * z_film + c
 
     def step(self, z, v, dt, inputs: ContactInputs = NO_INPUTS):
         v = as_velocity(v)
         z = as_state(z, self.n_states)
-        theta1 = theta_step(z[0], v, dt, *self._rate_args(inputs))
-        if not self.bristles:
-            return theta1[None, :]
-        g_mid = self.level(0.5 * (z[0] + theta1), inputs, v)
-        a, b = _lugre_affine(v, dt, self.params.bristle_stiffness, g_mid)
-        z1 = a * z[1] + b
-        return np.stack(np.broadcast_arrays(theta1, z1))
+        new = [theta_step(z[0], v, dt, *self._rate_args(inputs))]
+        film_mid = None
+        if self.contact:
+            film1 = self._film_step(z[-1], v, dt, inputs)
+            film_mid = 0.5 * (z[-1] + film1)
+        if self.bristles:
+            g_mid = self.level(0.5 * (z[0] + new[0]), inputs, v, film_mid)
+            a, b = _lugre_affine(v, dt, self.params.bristle_stiffness, g_mid)
+            new.append(a * z[1] + b)
+        if self.contact:
+            new.append(film1)
+        return np.stack(np.broadcast_arrays(*new))
 
     def _affine_trajectory(self, z0, v, dt, inputs):
         a, b = _theta_affine(v, dt[:, None], *self._rate_args(inputs))
         theta = affine_scan(a, b, z0[0])
-        if not self.bristles:
-            return theta[:, None, :]
-        g_mid = self.level(0.5 * (theta[:-1] + theta[1:]), inputs, v)
-        a_z, b_z = _lugre_affine(v, dt[:, None], self.params.bristle_stiffness, g_mid)
-        zb = affine_scan(a_z, b_z, z0[1])
-        return np.stack(np.broadcast_arrays(theta, zb), axis=1)
+        states = [theta]
+        film = film_mid = None
+        if self.contact:
+            a_f, c_f = apply(_k._loop_film_speed_affine, v, dt[:, None], self._b(inputs),
+                             self.params.tau, outputs=2)
+            film = affine_scan(a_f, c_f, z0[-1])
+            film_mid = 0.5 * (film[:-1] + film[1:])
+        if self.bristles:
+            g_mid = self.level(0.5 * (theta[:-1] + theta[1:]), inputs, v, film_mid)
+            a_z, b_z = _lugre_affine(v, dt[:, None], self.params.bristle_stiffness, g_mid)
+            states.append(affine_scan(a_z, b_z, z0[1]))
+        if self.contact:
+            states.append(film)
+        return np.stack(np.broadcast_arrays(*states), axis=1)
 
     def steady_state(self, v, inputs: ContactInputs = NO_INPUTS):
         v = as_velocity(v)
         theta = theta_steady(v, *self._rate_args(inputs))
-        if not self.bristles:
-            return np.atleast_2d(theta)
-        z = np.sign(v) * self.level(theta, inputs, v) / self.params.bristle_stiffness
-        return np.stack(np.broadcast_arrays(theta, z))
+        states = [theta]
+        if self.bristles:
+            states.append(np.sign(v) * self.level(theta, inputs, v) / self.params.bristle_stiffness)
+        if self.contact:
+            states.append(np.abs(v))
+        return np.atleast_2d(np.stack(np.broadcast_arrays(*states)))
 
     def steady_force(self, v, inputs: ContactInputs = NO_INPUTS):
         p = self.params

@@ -43,6 +43,8 @@ from sealsim.units import ZERO_CELSIUS_K
 __all__ = ["PneumaticSystem", "law_parameters", "stick_tolerance"]
 
 _LAW_WIDTH = 17          # columns of law_par (Θ: 17; GMS needs 7 + 2·N)
+#: error scales of friction-law states by name (see PneumaticSystem.tolerances); others 1 mm
+_STATE_SCALES = {"theta": 10.0, "film_speed": 30.0}
 
 
 def stick_tolerance(breakaway_force):
@@ -405,7 +407,8 @@ class PneumaticSystem:
         stroke and the energy balance within 0.02 % (LSODA) and 0.12 % (the compiled BDF) even
         for a piston that only settles into its stop: its deflection δ is resolved to 1 µm),
         the chamber mass and energy at supply pressure, 10 for Θ, 1 mm for bristle
-        deflections, 100 K for temperatures."""
+        deflections, the speed's 30 m/s for the speed a contact's film has formed for (it
+        enters the friction as the speed does), 100 K for temperatures."""
         case = self.case
         volume = case.cylinder.dead_volume_cap + self.a1 * self.stroke
         m_scale = float(gas_mass(self.p_supply, volume, self.t_amb))
@@ -414,7 +417,7 @@ class PneumaticSystem:
         atol[:6] = [0.1, 30.0, m_scale, m_scale, u_scale, u_scale]
         for seal, off in zip(self.seals, self.offsets):
             for j, name in enumerate(seal.law.state_names):
-                atol[off + j] = 10.0 if name == "theta" else 1e-3
+                atol[off + j] = _STATE_SCALES.get(name, 1e-3)
         atol[self.temperature_offset:self.n_dynamic] = 100.0
         atol[self.n_dynamic:] = 1e3       # bookkeeping: not error controlled (see module doc)
         return atol * rtol
