@@ -30,7 +30,7 @@ from numba import njit
 
 from sealsim.errors import InputError
 from sealsim.friction import kernels as fk
-from sealsim.friction.contact_table import _ON_NODE, cell_sums, speed_cell, table_cell
+from sealsim.friction.contact_table import _ON_NODE, cell_sum, speed_cell, table_cell
 
 __all__ = ["LAW_CODES", "NO_TABLE", "contact_steady", "law_parameters", "law_rates", "law_step",
            "mass_step"]
@@ -113,17 +113,16 @@ def contact_steady(par, frow, fdata, temp, dp, orient, vv, film):
     speed = orient * vv
     load = visc = 0.0
     if speed != 0.0:
-        direction = 0 if speed > 0.0 else 2
+        direction = 0 if speed > 0.0 else 2                # columns of the stroke direction
         k, wc = speed_cell(frow, fdata, speed)
-        load, visc, _ = cell_sums(frow, fdata, i, wa, j, wb, k, wc, direction, False)
-        if film != abs(speed):
-            if film > 0.0:
-                k, wc = speed_cell(frow, fdata, film)
-            else:
-                k, wc = 0, _ON_NODE
-            load, _, _ = cell_sums(frow, fdata, i, wa, j, wb, k, wc, direction, False)
-    up, _, _ = cell_sums(frow, fdata, i, wa, j, wb, 0, _ON_NODE, 0, False)
-    down, _, _ = cell_sums(frow, fdata, i, wa, j, wb, 0, _ON_NODE, 2, False)
+        visc = cell_sum(frow, fdata, i, wa, j, wb, k, wc, direction + 1)
+        if film > 0.0 and film != abs(speed):
+            k, wc = speed_cell(frow, fdata, film)
+        elif film <= 0.0:
+            k, wc = 0, _ON_NODE
+        load = cell_sum(frow, fdata, i, wa, j, wb, k, wc, direction)
+    up = cell_sum(frow, fdata, i, wa, j, wb, 0, _ON_NODE, 0)
+    down = cell_sum(frow, fdata, i, wa, j, wb, 0, _ON_NODE, 2)
     circumference, mu = par[TH_CIRCUMFERENCE], par[TH_MU_B]
     return (circumference * (mu * load + visc), circumference * mu * max(up, down),
             circumference * visc)

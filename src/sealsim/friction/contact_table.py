@@ -45,7 +45,8 @@ from numba import njit
 
 from sealsim.errors import InputError
 
-__all__ = ["TABLE_VARIABLES", "SteadyFrictionTable", "cell_sums", "contact_table_point",
+__all__ = ["TABLE_VARIABLES", "SteadyFrictionTable", "cell_sum", "cell_sums",
+           "contact_table_point",
            "hermite_basis", "locate_on_axis", "speed_cell", "table_cell"]
 
 #: variables of the table, in the order of its last axis (see the module docstring)
@@ -125,6 +126,30 @@ def cell_sums(row, data, i, wa, j, wb, k, wc, off, film):
                 if film:
                     thick += w * data[cell + 4 + off // 2]
     return load, visc, thick
+
+
+@njit(cache=True)
+def cell_sum(row, data, i, wa, j, wb, k, wc, var):
+    """Σ w·coefficient of one variable ``var`` (its index in :data:`TABLE_VARIABLES`) over the
+    cell (i, j, k): the same terms in the same order as :func:`cell_sums`, so the same bits,
+    at half the work where one variable is wanted."""
+    npr, nu, nv = row[1], row[2], row[3]
+    base = row[0] + npr + nu + (((i * (npr - 1) + j) * (nu - 1) + k) * 64) * nv + var
+    total = 0.0
+    for q0 in range(4):
+        w0 = wa[q0]
+        if w0 == 0.0:
+            continue
+        for q1 in range(4):
+            w01 = w0 * wb[q1]
+            if w01 == 0.0:
+                continue
+            for q2 in range(4):
+                w = w01 * wc[q2]
+                if w == 0.0:
+                    continue
+                total += w * data[base + ((q0 * 4 + q1) * 4 + q2) * nv]
+    return total
 
 
 @njit(cache=True)

@@ -74,11 +74,28 @@ temperature, pressure difference, speed and stroke direction
     F_ss(v) = π·D·[μ_b·L(|v|) + V(|v|)]·sgn(v)
 
 (L the asperity-carried load, V the viscous friction, per unit circumference; μ_b the boundary
-friction coefficient of the lubricated rubber).  The Θ state keeps the dynamics on top of it::
+friction coefficient of the lubricated rubber).  The film does not form at once: the fluid at
+the contact's pressure maximum entered its inlet about one contact width earlier (Sugimura,
+Jones & Spikes [6]: in a speed transient the film is the one of the entrainment speed at the
+time its fluid entered the contact), so the asperities carry the load of the speed φ [m/s]
+that the film has formed for, a state (``film_speed``, the law's last) that follows the
+sliding speed over a sliding distance of the contact width b and decays at rest with τ (the
+film squeezed out in a dwell)::
 
-    F = max(F_ss(|v|) + ΔF·(Θ_ss(v) − Θ), π·D·V(|v|))·sgn(v),   ΔF = d·μ_b·F_N
+    dφ/dt = (|v| − φ)·(|v|/b + 1/τ),    F_ss,φ(v) = π·D·[μ_b·L(φ) + V(|v|)]·sgn(v)
 
-with the same state equation: in steady sliding Θ = Θ_ss and F = F_ss exactly; Θ lagging
+(a first-order lag is sealsim's simplest form of that delay [M]).  In steady sliding φ = |v|.
+Without the lag the friction fell the instant the speed rose, dF/dv → −∞ as the film
+h* ∝ √|v| (inverse hydrodynamics) lifted the asperities: a piston creeping into its end stop
+chattered between stick and slip at µm/s; with it the friction's instant response to the
+speed is the film's viscous shear and Θ's rate term, both rising with speed -- the positive
+direct effect that makes steady sliding stable against a stiff spring (Rice & Ruina [7]),
+while the steady curve still falls through the mixed regime.  The Θ state keeps the dynamics
+on top of it::
+
+    F = max(F_ss,φ(v) + ΔF·(Θ_ss(v) − Θ), π·D·V(|v|))·sgn(v),   ΔF = d·μ_b·F_N
+
+with the same state equation: in steady sliding Θ = Θ_ss, φ = |v| and F = F_ss exactly; Θ lagging
 behind Θ_ss while the speed rises gives more friction than steady (less while it falls: the
 film, thicker than steady, takes load off the asperities -- at most all of it, so the friction
 does not fall below the film's own viscous shear π·D·V, which an unbounded lag took to zero
@@ -100,6 +117,11 @@ References
 .. [4] ASTM D341-20, viscosity-temperature equations (Walther).
 .. [5] G. W. Stachowiak, A. W. Batchelor, Engineering Tribology, 3rd ed., Elsevier 2005,
    Table 2.3 (viscosities of mineral oils at 30, 60, 100 °C).
+.. [6] J. Sugimura, W. R. Jones, H. A. Spikes, "EHD film thickness in non-steady state
+   conditions", J. Tribol. 120(3), 442-452, 1998.
+.. [7] J. R. Rice, A. L. Ruina, "Stability of steady frictional slipping", J. Appl. Mech. 50,
+   343-349, 1983 (steady sliding against a spring is stable above a critical stiffness only
+   with a positive instantaneous velocity dependence).
 """
 
 from __future__ import annotations

@@ -163,7 +163,7 @@ _law_rates = jit(law_rates.py_func, inline=True, _theta_level=jit(
     contact_steady=jit(_compiled_laws.contact_steady.py_func, inline=True,
                        table_cell=jit(_compiled_laws.table_cell.py_func, inline=True),
                        speed_cell=jit(_compiled_laws.speed_cell.py_func, inline=True),
-                       cell_sums=jit(_compiled_laws.cell_sums.py_func, inline=True))))
+                       cell_sum=jit(_compiled_laws.cell_sum.py_func, inline=True))))
 #: gridded contact maps, inlined into :func:`_seal_loads`
 _grid_point = jit(hermite_grid_point.py_func, inline=True)
 
