@@ -13,6 +13,10 @@ __all__ = ["BenchResult", "breakaway_forces", "cycle_work", "loop_areas", "motio
            "stick_slip_period", "summarize"]
 
 
+#: column-name units of friction states (bristle deflections z, z_i are lengths)
+_STATE_UNITS = {"theta": "", "film_speed": "_m_s"}
+
+
 @dataclass
 class BenchResult:
     """Time series of one bench run (one contact).
@@ -54,8 +58,7 @@ class BenchResult:
         cols = {"time_s": self.time, "position_m": self.position,
                 "velocity_m_s": self.velocity, "friction_force_N": self.force}
         for i, name in enumerate(self.state_names):
-            unit = "" if name == "theta" else "_m"
-            cols[f"{name}{unit}"] = self.states[:, i]
+            cols[f"{name}{_STATE_UNITS.get(name, '_m')}"] = self.states[:, i]
         if self.drive_position is not None:
             cols["drive_position_m"] = self.drive_position
         if self.applied_force is not None:

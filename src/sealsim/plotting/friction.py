@@ -224,7 +224,8 @@ def plot_timeseries(results, title: str | None = None):
     axes[2].set_ylabel(f"x [{xl}]")
     for k, state in enumerate(any_states):
         label = {"theta": "film state Θ [-]", "z": "bristles z [µm]",
-                 "z_i": "bristles z_i [µm]"}.get(state, state)
+                 "z_i": "bristles z_i [µm]",
+                 "film_speed": "film formed for φ [m/s]"}.get(state, state)
         axes[3 + k].set_ylabel(label)
     axes[-1].set_xlabel("time t [s]")
     for ax in axes:
