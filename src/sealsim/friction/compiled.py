@@ -116,10 +116,10 @@ def contact_steady(par, frow, fdata, temp, dp, orient, vv, film):
         direction = 0 if speed > 0.0 else 2                # columns of the stroke direction
         k, wc = speed_cell(frow, fdata, speed)
         visc = cell_sum(frow, fdata, i, wa, j, wb, k, wc, direction + 1)
-        if film > 0.0 and film != abs(speed):
-            k, wc = speed_cell(frow, fdata, film)
-        elif film <= 0.0:
+        if not film > 0.0:                                # no film (or not a number)
             k, wc = 0, _ON_NODE
+        elif film != abs(speed):
+            k, wc = speed_cell(frow, fdata, film)
         load = cell_sum(frow, fdata, i, wa, j, wb, k, wc, direction)
     up = cell_sum(frow, fdata, i, wa, j, wb, 0, _ON_NODE, 0)
     down = cell_sum(frow, fdata, i, wa, j, wb, 0, _ON_NODE, 2)
