@@ -275,6 +275,27 @@ def test_friction_fmu_film_state_follows_the_kernels(contact_fmus, bench_case):
                                   rel=1e-9)
 
 
+def test_friction_fmu_with_bristles_on_the_contact(tmp_path):
+    # the Θ law on its contact with bristles: states theta, z, film_speed; the bristle step
+    # takes the level of the step's mid-state, the film's speed at mid-step included
+    # (Theta.step).  The build check runs the FMU (co-simulation and model exchange) against
+    # sealsim's law through rest, sliding, reversal and dwells: 1e-9 relative (measured:
+    # equal; the level at the start film speed instead of the mid-step one gave 0.15 in F)
+    import tomli_w
+
+    data = load_toml(BENCH)
+    data["friction"].update(bristle_stiffness="1e5 N/m", bristle_damping="30 N*s/m")
+    case = tmp_path / "bristles.toml"
+    case.write_text(tomli_w.dumps(data))
+    result = build_fmu(case, tmp_path / "bristles.fmu", variant="fast_sweep_4s")
+    assert max(result.report["build_check"]["max_relative_difference"][k]
+               for k in ("force", "states", "derivatives")) <= 1e-9
+    with LoadedFMU(result.path, "me") as fmu:
+        fmu.initialize()
+        assert len(fmu.derivatives()) == 3             # theta, z, film_speed
+        assert fmu.get("film_speed") == [0.0]            # no film at the start
+
+
 def test_friction_fmu_refuses_a_negative_film_speed(contact_fmus):
     # the film's speed is a speed it formed for: a negative start value is named, not run
     with LoadedFMU(contact_fmus["friction"]["path"]) as fmu:

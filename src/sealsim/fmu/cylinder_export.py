@@ -69,7 +69,7 @@ __all__ = ["cylinder_check", "cylinder_spec", "cylinder_system", "rhs_check"]
 _GT0 = (">", 0.0)
 #: friction states: (unit, text); others are deflections [m]
 _STATE_UNITS = {"theta": (None, "lubrication state Theta"), "z": ("m", "bristle deflection"),
-                "film_speed": ("m/s", "speed the contact's film has formed for")}
+                "film_speed": ("m/s", "speed the film has formed for in the contact")}
 #: the unit of a friction state's time derivative
 _PER_SECOND = {None: None, "m": "m/s", "m/s": "m/s2"}
 
