@@ -307,7 +307,8 @@ void sealsim_rhs(double t, const double *y, int mode, double u, double s0, int r
 def _random_states(system, rng, k: int) -> np.ndarray:
     """k states around the operating range: positions in and beyond the stroke (end stops),
     speeds of both signs and zero, chamber masses and temperatures between ambient and supply,
-    friction states over their range."""
+    friction states over their range (a film's speed 0, the sliding speed, or up to 1 m/s:
+    each branch of the contact table's lookup)."""
     n = system.n_dynamic
     ys = np.tile(system.initial_state()[:n, None], (1, k))
     case = system.case

@@ -69,9 +69,8 @@ from sealsim.fmu.tables import HermiteTable, pchip_table, smooth_table
 from sealsim.units import STANDARD_ATMOSPHERE_PA
 
 __all__ = ["C_LAWS", "PRESSURE_ROUNDING", "STATE_NAMES", "ContactTable", "SteadyTable",
-           "c_parameters",
-           "contact_table", "friction_check", "friction_spec", "model_identifier",
-           "steady_table"]
+           "c_parameters", "contact_table", "friction_check", "friction_spec",
+           "model_identifier", "steady_table"]
 
 #: laws with a C implementation (friction_model.c)
 C_LAWS = ("coulomb", "stribeck", "lugre", "theta")
