@@ -52,9 +52,12 @@ def c_table(tmp_path_factory):
     so = ctypes.CDLL(str(lib))
     dbl, lng = ctypes.POINTER(ctypes.c_double), ctypes.POINTER(ctypes.c_long)
     so.contact_table_point.argtypes = [lng, dbl] + [ctypes.c_double] * 3 + [dbl] * 3
-    so.contact_steady.argtypes = [lng, dbl] + [ctypes.c_double] * 5 + [dbl] * 3
+    so.contact_steady.argtypes = [lng, dbl] + [ctypes.c_double] * 6 + [dbl] * 3
     so.theta_contact_level.argtypes = [ctypes.c_double] * 7
     so.theta_contact_level.restype = ctypes.c_double
+    so.film_speed_rate.argtypes = [ctypes.c_double] * 4
+    so.film_speed_rate.restype = ctypes.c_double
+    so.film_speed_affine.argtypes = [ctypes.c_double] * 4 + [dbl] * 2
     return so
 
 
@@ -91,9 +94,13 @@ def test_c_table_lookup_is_the_numba_kernel(c_table):
                     abs(out[2].value - want[2]) / np.max(values[..., 4:]))
         par = np.zeros(16)
         par[13], par[15] = 0.3, np.pi * 0.02                 # mu_b, pi D
-        steady, boundary, viscous = contact_steady(par, row, data, temp, pressure, -1.0, speed)
+        # the film formed for: none, the steady film |v|, any speed (inside and beyond the
+        # speed axis, and a negative one: the slowest node as none)
+        film = (0.0, abs(speed), 10.0 ** rng.uniform(-9, 2), -1e-3)[k % 4]
+        steady, boundary, viscous = contact_steady(par, row, data, temp, pressure, -1.0, speed,
+                                                   film)
         fss, fb, fv = ctypes.c_double(), ctypes.c_double(), ctypes.c_double()
-        c_table.contact_steady(row_c, data_c, temp, pressure, -speed, par[15], par[13],
+        c_table.contact_steady(row_c, data_c, temp, pressure, -speed, film, par[15], par[13],
                                ctypes.byref(fss), ctypes.byref(fb), ctypes.byref(fv))
         worst = max(worst, abs(fss.value - steady) / (scale * par[15]),
                     abs(fb.value - boundary) / (scale * par[15]),
@@ -101,6 +108,56 @@ def test_c_table_lookup_is_the_numba_kernel(c_table):
         args = (rng.uniform(0, 1), speed, steady, boundary, 0.5, rng.uniform(0, 1), viscous)
         level = c_table.theta_contact_level(*args)
         worst = max(worst, abs(level - theta_contact_level(*args)) / (scale * par[15]))
+    assert worst <= 1e-14
+
+
+def test_c_table_reads_the_load_at_the_film_speed(c_table):
+    # the independent check of the film in contact_steady: a table whose asperity load is
+    # linear in log10 u (cubic Hermite reproduces it exactly) and whose viscous part is
+    # another linear function -- F_ss = pi D (mu_b L(phi) + V(|v|)), L at the film's speed,
+    # V at the sliding speed, phi = 0 the slowest node (1e-12: rounding of the sums)
+    t, p, u = np.array([280.0, 320.0]), np.array([0.0, 5e5]), np.logspace(-6.0, 1.0, 8)
+    log_u = np.log10(u)[None, None, :]
+    values = np.zeros((t.size, p.size, u.size, 6))
+    values[..., 0] = values[..., 2] = 100.0 - 10.0 * log_u          # load [N/m], both ways
+    values[..., 1] = values[..., 3] = 5.0 + 2.0 * log_u             # viscous [N/m]
+    table = SteadyFrictionTable(t, p, u, values)
+    nodes_row, nodes = table.node_tables()
+    row_c = np.ascontiguousarray(nodes_row, dtype=np.int64).ctypes.data_as(ctypes.POINTER(
+        ctypes.c_long))
+    data_c = nodes.ctypes.data_as(ctypes.POINTER(ctypes.c_double))
+    circumference, mu = np.pi * 0.02, 0.3
+    out = [ctypes.c_double() for _ in range(3)]
+    for speed, film in ((0.1, 0.1), (-0.1, 1e-3), (0.1, 0.0), (2.0, 1e-8), (1e-3, 5.0)):
+        c_table.contact_steady(row_c, data_c, 300.0, 2e5, speed, film, circumference, mu,
+                               *(ctypes.byref(o) for o in out))
+        phi = np.clip(film, u[0], u[-1])                 # the table clamped to its speeds
+        load = 100.0 - 10.0 * np.log10(phi)
+        viscous = 5.0 + 2.0 * np.log10(abs(speed))
+        assert out[0].value == pytest.approx(circumference * (mu * load + viscous), rel=1e-12)
+        assert out[1].value == pytest.approx(circumference * mu * 160.0, rel=1e-12)  # 1 µm
+        assert out[2].value == pytest.approx(circumference * viscous, rel=1e-12)
+
+
+def test_c_film_speed_is_the_numba_kernel(c_table):
+    # film_speed_rate and film_speed_affine in C against the kernels over random inputs
+    # (contact widths down to 0: the 1 µm floor), same formulas in the same order: rounding
+    # only, 1e-14 relative to the terms' scale (measured: equal)
+    from sealsim.friction.kernels import film_speed_affine, film_speed_rate
+
+    rng = np.random.default_rng(5)
+    a, c = ctypes.c_double(), ctypes.c_double()
+    worst = 0.0
+    for k in range(2000):
+        v = 0.0 if k % 20 == 0 else rng.choice([-1.0, 1.0]) * 10.0 ** rng.uniform(-8, 1)
+        b = 0.0 if k % 17 == 0 else 10.0 ** rng.uniform(-7, -2)
+        tau, dt, phi = 10.0 ** rng.uniform(-2, 1), 10.0 ** rng.uniform(-6, 0), rng.uniform(0, 3)
+        scale = (abs(v) + phi) * (abs(v) / max(b, 1e-6) + 1.0 / tau)
+        worst = max(worst, abs(c_table.film_speed_rate(phi, v, b, tau)
+                               - film_speed_rate(phi, v, b, tau)) / scale)
+        c_table.film_speed_affine(v, dt, b, tau, ctypes.byref(a), ctypes.byref(c))
+        want_a, want_c = film_speed_affine(v, dt, b, tau)
+        worst = max(worst, abs(a.value - want_a), abs(c.value - want_c) / max(abs(v), 1e-300))
     assert worst <= 1e-14
 
 
@@ -147,9 +204,9 @@ def test_friction_fmu_carries_the_friction_table(contact_fmus):
 
 
 def test_friction_fmu_runs_the_bench_of_sealsim(contact_fmus, bench_case):
-    # the fast Stribeck sweep (-1 ... 1 ... -1 m/s in 4 s, 0.1 ms steps): the FMU's Θ state
-    # and force against sealsim's bench with the same exact step, 1e-9 relative (the same
-    # formulas on the same table)
+    # the fast Stribeck sweep (-1 ... 1 ... -1 m/s in 4 s, 0.1 ms steps): the FMU's Θ state,
+    # film speed and force against sealsim's bench with the same exact step, 1e-9 relative
+    # (the same formulas on the same table)
     case, law, inputs = bench_case
     b = case.bench
     native = simulate_velocity(law, b.velocity, b.duration, b.time_step, inputs=inputs,
@@ -157,12 +214,94 @@ def test_friction_fmu_runs_the_bench_of_sealsim(contact_fmus, bench_case):
                                    np.array([b.velocity.value(0.0)]), inputs))
     t = native.time
     v_step = np.diff(b.velocity.integral(t)) / np.diff(t)
+    assert law.state_names == ("theta", "film_speed")
     with LoadedFMU(contact_fmus["friction"]["path"]) as fmu:
-        fmu.set(theta=float(native.states[0, 0]))
+        fmu.set(theta=float(native.states[0, 0]), film_speed=float(native.states[0, 1]))
         out = run_velocity(fmu, t, v_step, native.velocity, inputs)
     scale = np.max(np.abs(native.force))
     assert np.max(np.abs(out["F"] - native.force)) <= 1e-9 * scale
     assert np.max(np.abs(out["theta"] - native.states[:, 0])) <= 1e-9
+    assert np.max(np.abs(out["film_speed"] - native.states[:, 1])) <= 1e-9 * np.max(
+        np.abs(native.velocity))
+
+
+def test_friction_fmu_film_state_follows_the_kernels(contact_fmus, bench_case):
+    # the friction FMU's state film_speed φ against the kernels at random states and inputs:
+    # the co-simulation step is film_speed_affine (exact for v held), the model-exchange
+    # derivative film_speed_rate, and the force that of sealsim's law with that φ -- the same
+    # formulas on the same table, 1e-9 relative (rounding)
+    from dataclasses import replace
+
+    from sealsim.fmu.cosim import _contact_inputs
+    from sealsim.friction.kernels import film_speed_affine, film_speed_rate
+
+    case, law, inputs = bench_case
+    tau = law.params.tau
+    rng = np.random.default_rng(11)
+    path = contact_fmus["friction"]["path"]
+    with LoadedFMU(path) as cs, LoadedFMU(path, "me") as me:
+        for k in range(40):
+            v = 0.0 if k % 10 == 0 else rng.choice([-1.0, 1.0]) * 10.0 ** rng.uniform(-5, 0)
+            dt = 10.0 ** rng.uniform(-5, 0)
+            theta, film = rng.uniform(0.0, 1.0), (0.0, abs(v), rng.uniform(0.0, 1.0))[k % 3]
+            z = np.array([[theta], [film]])
+            for fmu in (cs, me):
+                fmu.reset()
+                fmu.set(v=v, theta=theta, film_speed=film, **_contact_inputs(inputs))
+                fmu.initialize()
+            force, fn, b, dp = cs.get("F", "F_N", "b", "dp")
+            assert b == pytest.approx(float(inputs.contact_width), rel=1e-3)   # the map table
+            fmu_inputs = replace(inputs, normal_force=fn, contact_width=b,
+                                 pressure_difference=dp)       # the FMU's contact table
+            want = float(law.force(z, np.array([v]), fmu_inputs)[0])
+            assert force == pytest.approx(want, rel=1e-9, abs=1e-12)
+            me.set_continuous_states([theta, film])
+            assert me.derivatives()[1] == pytest.approx(film_speed_rate(film, v, b, tau),
+                                                        rel=1e-9, abs=1e-300)
+            cs.do_step(0.0, dt)
+            a, c = film_speed_affine(v, dt, b, tau)
+            assert cs.get("film_speed")[0] == pytest.approx(a * film + c, rel=1e-9, abs=1e-300)
+        # sliding at a constant speed the film forms for it (φ → |v|) and the force reaches
+        # sealsim's steady curve (independent: Theta.steady_force, 1e-9)
+        cs.reset()
+        cs.set(v=0.05, **_contact_inputs(inputs))
+        cs.initialize()
+        for _ in range(20):
+            cs.do_step(0.0, 100.0 * tau)
+        film, force, fn, b, dp = cs.get("film_speed", "F", "F_N", "b", "dp")
+    assert film == pytest.approx(0.05, rel=1e-12)
+    fmu_inputs = replace(inputs, normal_force=fn, contact_width=b, pressure_difference=dp)
+    assert force == pytest.approx(float(law.steady_force(np.array([0.05]), fmu_inputs)[0]),
+                                  rel=1e-9)
+
+
+def test_friction_fmu_with_bristles_on_the_contact(tmp_path):
+    # the Θ law on its contact with bristles: states theta, z, film_speed; the bristle step
+    # takes the level of the step's mid-state, the film's speed at mid-step included
+    # (Theta.step).  The build check runs the FMU (co-simulation and model exchange) against
+    # sealsim's law through rest, sliding, reversal and dwells: 1e-9 relative (measured:
+    # equal; the level at the start film speed instead of the mid-step one gave 0.15 in F)
+    import tomli_w
+
+    data = load_toml(BENCH)
+    data["friction"].update(bristle_stiffness="1e5 N/m", bristle_damping="30 N*s/m")
+    case = tmp_path / "bristles.toml"
+    case.write_text(tomli_w.dumps(data))
+    result = build_fmu(case, tmp_path / "bristles.fmu", variant="fast_sweep_4s")
+    assert max(result.report["build_check"]["max_relative_difference"][k]
+               for k in ("force", "states", "derivatives")) <= 1e-9
+    with LoadedFMU(result.path, "me") as fmu:
+        fmu.initialize()
+        assert len(fmu.derivatives()) == 3             # theta, z, film_speed
+        assert fmu.get("film_speed") == [0.0]            # no film at the start
+
+
+def test_friction_fmu_refuses_a_negative_film_speed(contact_fmus):
+    # the film's speed is a speed it formed for: a negative start value is named, not run
+    with LoadedFMU(contact_fmus["friction"]["path"]) as fmu:
+        fmu.set(film_speed=-0.1)
+        with pytest.raises(ModelError, match=r"film_speed \(-0.1 m/s\).*must be >= 0"):
+            fmu.initialize()
 
 
 def test_friction_check_finds_a_wrong_table(tmp_path, bench_case):

@@ -19,6 +19,7 @@ import numpy as np
 
 from sealsim.errors import InputError
 from sealsim.friction.base import NO_INPUTS, ContactInputs, FrictionLaw, Partials
+from sealsim.fmu.friction_export import STATE_NAMES
 from sealsim.fmu.instance import LoadedFMU
 
 __all__ = ["FMUFrictionLaw", "run_rotary", "run_velocity"]
@@ -53,10 +54,10 @@ def run_velocity(fmu: LoadedFMU, time, velocity_step, velocity_sample,
     Returns
     -------
     dict
-        ``F`` and every exposed state (``theta``, ``z``), shape (N + 1,).
+        ``F`` and every exposed state (``theta``, ``z``, ``film_speed``), shape (N + 1,).
     """
     time = np.asarray(time, dtype=float)
-    names = ["F"] + [n for n in ("theta", "z") if n in fmu.vr]
+    names = ["F"] + [n for n in STATE_NAMES if n in fmu.vr]
     out = {n: np.empty(time.size) for n in names}
     fmu.set(v=float(velocity_sample[0]), **_contact_inputs(inputs))
     fmu.initialize(float(time[0]))
@@ -93,7 +94,7 @@ class FMUFrictionLaw(FrictionLaw):
             raise InputError("FMUFrictionLaw needs the co-simulation interface of the FMU")
         self.fmu = fmu
         self.name = "fmu"
-        self._states = tuple(n for n in ("theta", "z") if n in fmu.vr)
+        self._states = tuple(n for n in STATE_NAMES if n in fmu.vr)
         self._stiction = "F_breakaway" in fmu.vr
         self._saved: dict[bytes, object] = {}
         self._times: dict[bytes, float] = {}       # communication point of each state

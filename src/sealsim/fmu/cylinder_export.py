@@ -29,6 +29,8 @@ x, v                   m, m/s    states/outputs: piston position (0 retracted) a
 m_cap, m_rod           kg        states: air mass in the cap-end and rod-end chamber
 U_cap, U_rod           J         states: internal energy of the air in them
 theta_<seal>, z_<...>  -, m      states: friction states of the seals
+film_speed_<seal>      m/s       state of a Θ law on its contact: the speed its film has
+                                 formed for
 p_cap, p_rod           Pa        outputs: absolute chamber pressures
 T_cap, T_rod           K         outputs: air temperatures
 spool                  1         output: spool position
@@ -65,7 +67,11 @@ from sealsim.pneumatic.valve import ANR_DENSITY, ANR_TEMPERATURE
 __all__ = ["cylinder_check", "cylinder_spec", "cylinder_system", "rhs_check"]
 
 _GT0 = (">", 0.0)
-_STATE_UNITS = {"theta": (None, "lubrication state Theta"), "z": ("m", "bristle deflection")}
+#: friction states: (unit, text); others are deflections [m]
+_STATE_UNITS = {"theta": (None, "lubrication state Theta"), "z": ("m", "bristle deflection"),
+                "film_speed": ("m/s", "speed the film has formed for in the contact")}
+#: the unit of a friction state's time derivative
+_PER_SECOND = {None: None, "m": "m/s", "m/s": "m/s2"}
 
 
 def cylinder_system(case, base_dir: str | Path = "."):
@@ -132,10 +138,9 @@ def cylinder_spec(system, identifier: str, *, title: str = "", source: str = "")
     units = {"x": "m/s", "v": "m/s2", "m_cap": "kg/s", "m_rod": "kg/s", "U_cap": "W",
              "U_rod": "W"}
     for st in states:
+        unit = units[st.name] if st.name in units else _PER_SECOND[st.unit]   # friction states
         variables.append(Variable(f"der({st.name})", f"DER_{st.macro}", "local",
-                                  f"time derivative of {st.name}",
-                                  units.get(st.name, None if st.unit is None else "m/s"),
-                                  derivative_of=st.name))
+                                  f"time derivative of {st.name}", unit, derivative_of=st.name))
     variables += [
         Variable("p_cap", "P1", "output", "absolute pressure in the cap-end chamber", "Pa"),
         Variable("p_rod", "P2", "output", "absolute pressure in the rod-end chamber", "Pa"),
@@ -302,7 +307,8 @@ void sealsim_rhs(double t, const double *y, int mode, double u, double s0, int r
 def _random_states(system, rng, k: int) -> np.ndarray:
     """k states around the operating range: positions in and beyond the stroke (end stops),
     speeds of both signs and zero, chamber masses and temperatures between ambient and supply,
-    friction states over their range."""
+    friction states over their range (a film's speed 0, the sliding speed, or up to 1 m/s:
+    each branch of the contact table's lookup)."""
     n = system.n_dynamic
     ys = np.tile(system.initial_state()[:n, None], (1, k))
     case = system.case
@@ -322,8 +328,14 @@ def _random_states(system, rng, k: int) -> np.ndarray:
         ys[4 + j] = internal_energy(m, temp)
     for seal, off in zip(system.seals, system.offsets):
         for j, name in enumerate(seal.law.state_names):
-            ys[off + j] = rng.uniform(0.0, 1.0, k) if name == "theta" else \
-                rng.uniform(-2e-5, 2e-5, k)
+            if name == "theta":
+                ys[off + j] = rng.uniform(0.0, 1.0, k)
+            elif name == "film_speed":       # no film, the steady film (|v|), and any other
+                pick = rng.random(k)
+                ys[off + j] = np.select([pick < 0.1, pick < 0.2],
+                                        [np.zeros(k), np.abs(ys[1])], rng.uniform(0.0, 1.0, k))
+            else:
+                ys[off + j] = rng.uniform(-2e-5, 2e-5, k)
     return ys
 
 

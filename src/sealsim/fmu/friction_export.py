@@ -14,6 +14,7 @@ F_N, b        N, m      outputs: normal force and contact width (Θ law, or a ta
 dp            Pa        output: pressure difference across the seal (with a table)
 map_clipped   -         output: true while dp or T_seal lies outside the table
 theta, z      -, m      states: lubrication state Θ, bristle deflection z
+film_speed    m/s       state (Θ law on its contact): the speed φ the film has formed for
 ============  ========  ===========================================================
 
 plus every parameter of the law (the field names of the case files, with units) and, for a
@@ -39,7 +40,10 @@ circumference) and ``velocity_direction``: +1 if a positive v slides the counter
 side A to side B of the seal (a rod seal with A the chamber), −1 the other way (a piston seal
 with A the cap-end chamber); with it the table's stroke direction is
 ``velocity_direction·(p_A >= p_B ? 1 : −1)·sgn(v)`` ("+": from the pressurised side to the
-other, :func:`sealsim.pneumatic.friction_tables.table_orientation`).
+other, :func:`sealsim.pneumatic.friction_tables.table_orientation`).  Its asperity load is
+read at the speed φ the contact's film has formed for, the state ``film_speed``
+(dφ/dt = (|v| − φ)·(|v|/b + 1/τ), :func:`sealsim.friction.kernels.film_speed_rate`; start
+value 0: no film), stepped exactly (:func:`~sealsim.friction.kernels.film_speed_affine`).
 
 A new law parameter needs its entry (unit, description, bounds) in ``_PARAMETERS`` and
 ``_LAW_PARAMETERS`` below, which makes it an FMU parameter ``VR_<NAME>``, and its use in
@@ -64,13 +68,18 @@ from sealsim.fmu.model_description import ModelSpec, Variable
 from sealsim.fmu.tables import HermiteTable, pchip_table, smooth_table
 from sealsim.units import STANDARD_ATMOSPHERE_PA
 
-__all__ = ["C_LAWS", "PRESSURE_ROUNDING", "ContactTable", "SteadyTable", "c_parameters",
-           "contact_table", "friction_check", "friction_spec", "model_identifier",
-           "steady_table"]
+__all__ = ["C_LAWS", "PRESSURE_ROUNDING", "STATE_NAMES", "ContactTable", "SteadyTable",
+           "c_parameters", "contact_table", "friction_check", "friction_spec",
+           "model_identifier", "steady_table"]
 
 #: laws with a C implementation (friction_model.c)
 C_LAWS = ("coulomb", "stribeck", "lugre", "theta")
 _LAW_CODE = {"coulomb": 1, "stribeck": 2, "lugre": 3, "theta": 4}
+
+#: the friction FMU's possible states, in state order (that of the laws' ``state_names``)
+STATE_NAMES = ("theta", "z", "film_speed")
+#: units of the states' time derivatives
+_DERIVATIVE_UNITS = {"theta": None, "z": "m/s", "film_speed": "m/s2"}
 
 #: rounding width of |p_A - p_B| (sealsim.pneumatic.seals.seal_pressure_difference) [Pa]
 PRESSURE_ROUNDING = 1e3
@@ -429,11 +438,13 @@ def friction_spec(law: FrictionLaw, identifier: str, *, table: ContactTable | No
         Variable("z", "Z", "output", "bristle deflection", "m", 0.0, state=True,
                  nominal=_deflection_scale(name, params, normal_force, table) if has_z
                  else None, exposed=has_z),
+        Variable("film_speed", "FILM_SPEED", "output",
+                 "speed the contact's film has formed for (0: no film)", "m/s", 0.0,
+                 state=True, exposed=contact),
     ]
     states = [v.name for v in variables if v.state and v.exposed]
     variables += [Variable(f"der({s})", f"DER_{s.upper()}", "local", f"time derivative of {s}",
-                           {"theta": None, "z": "m/s"}[s], derivative_of=s) for s in
-                  ("theta", "z")]
+                           _DERIVATIVE_UNITS[s], derivative_of=s) for s in STATE_NAMES]
     bounds = _LAW_PARAMETERS[name]
     for pname, (unit, text) in _PARAMETERS.items():
         lower, upper = bounds.get(pname, (None, None))
@@ -547,7 +558,7 @@ def friction_check(law: FrictionLaw, spec: ModelSpec, contact_map=None,
     def check(folder: Path, token: str) -> None:
         worst = {"force": 0.0, "states": 0.0, "derivatives": 0.0, "contact": 0.0}
         v, dt, pa, pb, temp = _test_signal(table)
-        names_out = ["F"] + [n for n in ("F_breakaway", "F_N", "b", "dp", "theta", "z")
+        names_out = ["F"] + [n for n in ("F_breakaway", "F_N", "b", "dp", *STATE_NAMES)
                              if _exposed(spec, n)]
         if "cs" in kinds:
             with LoadedFMU(folder, "cs", "build_check") as fmu:

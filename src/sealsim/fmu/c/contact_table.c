@@ -11,10 +11,12 @@
  * and forms each coefficient as HermiteGrid does -- the corner node's entry times the cell
  * widths of the differentiated axes, in axis order -- then sums in the kernel's order
  * (contact_table.cell_sums, terms of weight 0 skipped): the same operations, the same bits.
- * contact_steady (one cell search for the sliding speed and the boundary level at the slowest
- * speed) and theta_contact_level are the ports of sealsim.friction.compiled.contact_steady
- * and the kernel theta_contact_level of sealsim.friction.kernels.  A test compares all three
- * with the numba functions. */
+ * contact_steady (one cell search for the sliding speed, the speed the film has formed for
+ * and the boundary level at the slowest speed) and theta_contact_level are the ports of
+ * sealsim.friction.compiled.contact_steady and the kernel theta_contact_level of
+ * sealsim.friction.kernels; film_speed_rate and film_speed_affine those of the kernels of the
+ * same names (the film state of the Theta law on its contact).  Tests compare them all with
+ * the numba functions. */
 #include <math.h>
 
 /* the cubic Hermite basis functions (h00, h10, h01, h11) at t in [0, 1] (contact_table.hermite_basis) */
@@ -97,8 +99,9 @@ void contact_table_point(const long *row, const double *data, double temperature
 }
 
 void contact_steady(const long *row, const double *data, double temperature, double pressure,
-                    double oriented_speed, double circumference, double boundary_friction,
-                    double *steady, double *boundary, double *viscous) {
+                    double oriented_speed, double film, double circumference,
+                    double boundary_friction, double *steady, double *boundary,
+                    double *viscous) {
     static const double on_node[4] = {1.0, 0.0, 0.0, 0.0};
     double a, b, wa[4], wb[4], load = 0.0, visc = 0.0, up, down, unused0, unused1;
     long i = table_locate(data, 0, row[0], temperature, &a);       /* one cell search */
@@ -107,10 +110,21 @@ void contact_steady(const long *row, const double *data, double temperature, dou
     table_basis(b, wb);
     if (oriented_speed != 0.0) {
         double c, wc[4];
+        long direction = oriented_speed > 0.0 ? 0 : 2;
         long k = table_locate(data, row[0] + row[1], row[2], log10(fabs(oriented_speed)), &c);
         table_basis(c, wc);
-        table_cell_sums(row, data, i, wa, j, wb, k, wc, oriented_speed > 0.0 ? 0 : 2, 0, &load,
-                        &visc, &unused0);
+        table_cell_sums(row, data, i, wa, j, wb, k, wc, direction, 0, &load, &visc, &unused0);
+        if (film != fabs(oriented_speed)) {   /* the asperity load of the film's speed */
+            if (film > 0.0) {
+                k = table_locate(data, row[0] + row[1], row[2], log10(film), &c);
+                table_basis(c, wc);
+                table_cell_sums(row, data, i, wa, j, wb, k, wc, direction, 0, &load, &unused0,
+                                &unused1);
+            } else {                          /* no film: the table's slowest speed */
+                table_cell_sums(row, data, i, wa, j, wb, 0, on_node, direction, 0, &load,
+                                &unused0, &unused1);
+            }
+        }
     }
     table_cell_sums(row, data, i, wa, j, wb, 0, on_node, 0, 0, &up, &unused0, &unused1);
     table_cell_sums(row, data, i, wa, j, wb, 0, on_node, 2, 0, &down, &unused0, &unused1);
@@ -129,4 +143,24 @@ double theta_contact_level(double th, double v, double fss, double fb, double d,
         level = fb - drop * th;
     }
     return level > floor ? level : floor;
+}
+
+/* kernels.FILM_MIN_LENGTH: the shortest length [m] over which the film follows the speed */
+#define FILM_MIN_LENGTH 1e-6
+
+/* the larger of b and FILM_MIN_LENGTH as Python's max(b, FILM_MIN_LENGTH) */
+static double film_length(double b) {
+    return FILM_MIN_LENGTH > b ? FILM_MIN_LENGTH : b;
+}
+
+double film_speed_rate(double phi, double v, double b, double tau) {
+    double speed = fabs(v);
+    return (speed - phi) * (speed / film_length(b) + 1.0 / tau);
+}
+
+void film_speed_affine(double v, double dt, double b, double tau, double *a, double *c) {
+    double speed = fabs(v);
+    double decay = -expm1(-(speed / film_length(b) + 1.0 / tau) * dt);
+    *a = 1.0 - decay;
+    *c = speed * decay;
 }

@@ -114,8 +114,11 @@ static double law_rates(long law, const double *par, const double *z, double vv,
         double th = z[0], level;
         fn = fmax_inline(fn, 1e-9);
         if (contact) {                      /* compiled._theta_level on the contact table */
-            double fss, fb, fv;
-            contact_steady(frow, fdata, temp, dp, orient * vv, par[15], par[13], &fss, &fb, &fv);
+            int last = par[7] > 0.0 ? 2 : 1;        /* the film's speed: the law's last state */
+            double film = z[last], fss, fb, fv;
+            dz[last] = film_speed_rate(film, vv, b, par[0]);
+            contact_steady(frow, fdata, temp, dp, orient * vv, film, par[15], par[13], &fss,
+                           &fb, &fv);
             level = theta_contact_level(th, vv, fss, fb, par[14],
                                         theta_steady(vv, par[0], par[1], fn, par[5], par[6]), fv);
         } else {

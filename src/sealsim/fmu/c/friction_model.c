@@ -17,7 +17,10 @@
  * velocity_direction * (p_A >= p_B ? 1 : -1) (velocity_direction +1: a positive v slides the
  * counter surface from side A to side B of the seal; the table's "+" is from the pressurised
  * side to the other), and the level F_ss(|v|) + dF (theta_ss(v) - theta), at rest
- * F_ss(0+) - dF theta, dF = d F_ss(0+) (sealsim.friction.theta, Theta.level). */
+ * F_ss(0+) - dF theta, dF = d F_ss(0+) (sealsim.friction.theta, Theta.level).  The asperity
+ * load L is read at the speed phi the contact's film has formed for, the law's last state
+ * film_speed: dphi/dt = (|v| - phi)(|v|/b + 1/tau) (kernels.film_speed_rate), so F_ss depends
+ * on a state and is computed at each evaluation, not cached with the inputs. */
 #include "sealsim_fmu.h"
 
 #define LAW_COULOMB 1
@@ -36,8 +39,7 @@ static double sgn(double x) {
 typedef struct {
     double v, normal_force, contact_width, dp;
     double gamma;      /* viscous coefficient of the Theta law at T_seal [N s/m^2] */
-    double steady, boundary, viscous;   /* THETA_CONTACT: |F_ss(v)|, F_ss(0+), its viscous
-                                          part [N] */
+    double orient;     /* THETA_CONTACT: the friction table's direction of a positive v */
 } Contact;
 
 static double viscous_coefficient(Instance *c);
@@ -51,9 +53,7 @@ static Contact contact(Instance *c) {
         k.contact_width = c->cache[2];
         k.dp = c->cache[3];
         k.gamma = c->cache[4];
-        k.steady = c->cache[5];
-        k.boundary = c->cache[6];
-        k.viscous = c->cache[7];
+        k.orient = c->cache[5];
         return k;
     }
     double x = P(P_A) - P(P_B);
@@ -78,18 +78,11 @@ static Contact contact(Instance *c) {
     k.gamma = viscous_coefficient(c);
     c->cache[3] = k.dp;
     c->cache[4] = k.gamma;
-    k.steady = k.boundary = k.viscous = 0.0;
+    k.orient = 0.0;
 #if FRICTION_LAW == LAW_THETA && THETA_CONTACT
-    {
-        double orient = P(VELOCITY_DIRECTION) * (P(P_A) >= P(P_B) ? 1.0 : -1.0);
-        contact_steady(FRIC_ROW, FRIC_DATA, P(T_SEAL), k.dp, orient * k.v,
-                       3.141592653589793 * P(SLIDING_DIAMETER), P(BOUNDARY_FRICTION),
-                       &k.steady, &k.boundary, &k.viscous);
-    }
+    k.orient = P(VELOCITY_DIRECTION) * (P(P_A) >= P(P_B) ? 1.0 : -1.0);
 #endif
-    c->cache[5] = k.steady;
-    c->cache[6] = k.boundary;
-    c->cache[7] = k.viscous;
+    c->cache[5] = k.orient;
     c->cache_valid = 1;
     return k;
 }
@@ -151,21 +144,28 @@ static double theta_steady(Instance *c, const Contact *k) {
 #endif
 
 /* the friction level at theta: theta_friction_level g = F_N [f_a (1 - theta) + f_b theta],
- * or on the contact table theta_contact_level (compiled._theta_level) at the contact's v */
-static double theta_level(Instance *c, double theta, const Contact *k) {
+ * or on the contact table theta_contact_level (compiled._theta_level) at the contact's v
+ * with the film formed for the speed film [m/s] (compiled.contact_steady; unused without
+ * the table) */
+static double theta_level(Instance *c, double theta, double film, const Contact *k) {
 #if THETA_CONTACT
-    return theta_contact_level(theta, k->v, k->steady, k->boundary, P(DWELL_DROP),
-                               theta_steady(c, k), k->viscous);
+    double steady, boundary, viscous;
+    contact_steady(FRIC_ROW, FRIC_DATA, P(T_SEAL), k->dp, k->orient * k->v, film,
+                   3.141592653589793 * P(SLIDING_DIAMETER), P(BOUNDARY_FRICTION), &steady,
+                   &boundary, &viscous);
+    return theta_contact_level(theta, k->v, steady, boundary, P(DWELL_DROP),
+                               theta_steady(c, k), viscous);
 #else
+    (void)film;
     return k->normal_force * (P(F_A) * (1.0 - theta) + P(F_B) * theta);
 #endif
 }
 
-/* the level at rest (the break-away force) */
-static double theta_rest_level(Instance *c, double theta, const Contact *k) {
+/* the level at rest (the break-away force; at rest it does not depend on the film) */
+static double theta_rest_level(Instance *c, double theta, double film, const Contact *k) {
     Contact rest = *k;
     rest.v = 0.0;
-    return theta_level(c, theta, &rest);
+    return theta_level(c, theta, film, &rest);
 }
 
 
@@ -283,13 +283,21 @@ FmuStatus model_initialize(Instance *c) {
     }
     c->nominals[STATE_THETA] = 1.0;
 #endif
+#if FRICTION_LAW == LAW_THETA && THETA_CONTACT
+    if (!(P(FILM_SPEED) >= 0.0)) {
+        fmu_log(c, FMU_ERROR, "logStatusError",
+                "the start value of film_speed (%g m/s), the speed the contact's film has "
+                "formed for, must be >= 0 m/s", P(FILM_SPEED));
+        return FMU_ERROR;
+    }
+#endif
 #if FRICTION_LAW == LAW_LUGRE
     c->nominals[STATE_Z] = P(STATIC_FORCE) / P(SIGMA0);
 #endif
 #if FRICTION_LAW == LAW_THETA && THETA_BRISTLES
     {
         Contact k = contact(c);
-        double z_scale = theta_rest_level(c, 0.0, &k) / P(BRISTLE_STIFFNESS);
+        double z_scale = theta_rest_level(c, 0.0, P(FILM_SPEED), &k) / P(BRISTLE_STIFFNESS);
         c->nominals[STATE_Z] = z_scale > 0.0 ? z_scale : 1e-6;
     }
 #endif
@@ -325,7 +333,7 @@ FmuStatus model_outputs(Instance *c) {
     double zdot = bristle_rate(P(Z), k.v, P(SIGMA0), g);
     force = P(SIGMA0) * P(Z) + P(SIGMA1) * zdot + P(SIGMA2) * k.v;   /* lugre_force */
 #elif FRICTION_LAW == LAW_THETA
-    double level = theta_level(c, P(THETA), &k);
+    double level = theta_level(c, P(THETA), P(FILM_SPEED), &k);
     double gamma = k.gamma;
 #if THETA_VISCOSITY
     if (!(P(T_SEAL) > 0.0)) {
@@ -341,7 +349,7 @@ FmuStatus model_outputs(Instance *c) {
             gamma * k.contact_width * k.v;
 #elif THETA_CONTACT
     force = level * sgn(k.v);                                      /* Theta.force */
-    breakaway = theta_rest_level(c, P(THETA), &k);
+    breakaway = theta_rest_level(c, P(THETA), P(FILM_SPEED), &k);
 #else
     force = level * sgn(k.v) + gamma * k.contact_width * k.v;      /* theta_force */
     breakaway = level;
@@ -372,7 +380,11 @@ void model_derivatives(Instance *c, double *dx) {
 #elif FRICTION_LAW == LAW_THETA
     dx[STATE_THETA] = theta_rate(c, P(THETA), &k);
 #if THETA_BRISTLES
-    dx[STATE_Z] = bristle_rate(P(Z), k.v, P(BRISTLE_STIFFNESS), theta_level(c, P(THETA), &k));
+    dx[STATE_Z] = bristle_rate(P(Z), k.v, P(BRISTLE_STIFFNESS),
+                               theta_level(c, P(THETA), P(FILM_SPEED), &k));
+#endif
+#if THETA_CONTACT
+    dx[STATE_FILM_SPEED] = film_speed_rate(P(FILM_SPEED), k.v, k.contact_width, P(TAU));
 #endif
 #endif
 #else
@@ -391,12 +403,24 @@ FmuStatus model_step(Instance *c, double h) {
 #elif FRICTION_LAW == LAW_THETA
     double theta0 = P(THETA);
     double theta1 = theta_step(c, theta0, &k, h);
+    double film_mid = P(FILM_SPEED);
+#if THETA_CONTACT
+    /* the film's speed: film_speed_affine, exact for v and b held (Theta.step) */
+    double a, b;
+    film_speed_affine(k.v, h, k.contact_width, P(TAU), &a, &b);
+    double film1 = a * P(FILM_SPEED) + b;
+    film_mid = 0.5 * (P(FILM_SPEED) + film1);
+#endif
 #if THETA_BRISTLES
     /* the bristle step with the friction level of the step's mid-state (Theta.step) */
-    double g_mid = theta_level(c, 0.5 * (theta0 + theta1), &k);
+    double g_mid = theta_level(c, 0.5 * (theta0 + theta1), film_mid, &k);
     P(Z) = bristle_step(P(Z), k.v, h, P(BRISTLE_STIFFNESS), g_mid);
 #endif
+    (void)film_mid;
     P(THETA) = theta1;
+#if THETA_CONTACT
+    P(FILM_SPEED) = film1;
+#endif
 #endif
 #else
     (void)c;

@@ -72,16 +72,21 @@ void hermite_evaluate(const HermiteTable *t, double a, double b, double *out);
 
 /* a seal's steady friction table from its contact (contact_table.c): the interpolant of
  * sealsim.friction.contact_table (asperity load [N/m], viscous friction [N/m], film [m] of the
- * stroke direction of speed), the Theta law's steady curve |F_ss(v)| and boundary level
- * F_ss(0+) [N] on it, and its friction level */
+ * stroke direction of speed), the Theta law's steady curve |F_ss(v)| (the asperity load at
+ * the speed film [m/s] the contact's film has formed for) and boundary level F_ss(0+) [N] on
+ * it, its friction level, and the film's speed: dphi/dt = (|v| - phi)(|v|/b + 1/tau), its
+ * exact step phi(t + dt) = a phi + c for v, b held */
 void contact_table_point(const long *row, const double *data, double temperature,
                          double pressure, double speed, double *load, double *visc,
                          double *film);
 void contact_steady(const long *row, const double *data, double temperature, double pressure,
-                    double oriented_speed, double circumference, double boundary_friction,
-                    double *steady, double *boundary, double *viscous);
+                    double oriented_speed, double film, double circumference,
+                    double boundary_friction, double *steady, double *boundary,
+                    double *viscous);
 double theta_contact_level(double th, double v, double fss, double fb, double d,
                            double thss, double fv);
+double film_speed_rate(double phi, double v, double b, double tau);
+void film_speed_affine(double v, double dt, double b, double tau, double *a, double *c);
 
 #include "config.h"
 
