@@ -16,13 +16,16 @@ This script solves that map's load path (in one process) up to its converged sta
 
     .venv/bin/python benchmarks/gland_fe_path.py
 
-Nothing is written; the map cache is not used.
+Nothing is written; the map cache is not used.  The last line is one JSON object: per number
+of increments to 50 bar the pressure [bar] the path reached (100: through), and for the stuck
+increment whether Newton converged with the wetted surface re-evaluated and held.
 """
 
 from __future__ import annotations
 
 import copy
 import dataclasses
+import json
 import shutil
 import tempfile
 import warnings
@@ -140,6 +143,7 @@ def main() -> None:
             start = state_on_map_path(case, START)
             print(f"map path at {START / 1e5} bar: F_N {extract(start).F_N:.2f} N")
             stuck = None
+            summary = {"reached_bar": {}, "stuck_increment_converges": {}}
             for n in (6, 12, 24, 48):
                 model = copy.deepcopy(start)
                 line = []
@@ -153,14 +157,18 @@ def main() -> None:
                     if n == 48:
                         stuck = model
                 print(f"{START / 1e5} -> 50 bar in {n:2d} increments: " + "; ".join(line))
+                summary["reached_bar"][n] = round(model.state.pressure / 1e5, 4)
             if stuck is not None:
                 print(f"\nfrom the 48-increment path's last state ({stuck.state.pressure / 1e5:.4g}"
                       " bar), +100 Pa:")
                 for held in (False, True):
                     print("  wetted surface " + ("held at the increment's start" if held
                                                  else "re-evaluated in iterations 1-8") + ":")
-                    print("\n".join(newton_log(copy.deepcopy(stuck), 100.0,
-                                               update_wetting=not held)))
+                    log = newton_log(copy.deepcopy(stuck), 100.0, update_wetting=not held)
+                    print("\n".join(log))
+                    summary["stuck_increment_converges"]["held" if held else "re-evaluated"] = \
+                        "converged" in log[-1]
+            print(json.dumps(summary))
     finally:
         shutil.rmtree(folder, ignore_errors=True)
 
