@@ -45,8 +45,7 @@ from numba import njit
 
 from sealsim.errors import InputError
 
-__all__ = ["TABLE_VARIABLES", "SteadyFrictionTable", "cell_sum", "cell_sums",
-           "contact_table_point",
+__all__ = ["TABLE_VARIABLES", "SteadyFrictionTable", "cell_sum", "contact_table_point",
            "hermite_basis", "locate_on_axis", "speed_cell", "table_cell"]
 
 #: variables of the table, in the order of its last axis (see the module docstring)
@@ -98,41 +97,11 @@ def table_cell(row, data, temperature, pressure):
 
 
 @njit(cache=True)
-def cell_sums(row, data, i, wa, j, wb, k, wc, off, film):
-    """Σ w·coefficient over the 64 basis terms of cell (i, j, k) with the axis weights wa,
-    wb, wc: (asperity load, viscous friction, film -- with ``film``, else 0) of the stroke
-    direction ``off`` (0: "+", 2: "−").  Terms of weight 0 (a coordinate on a node, e.g.
-    clamped below the slowest speed) add exactly 0 and are skipped."""
-    npr, nu, nv = row[1], row[2], row[3]
-    base = row[0] + npr + nu + (((i * (npr - 1) + j) * (nu - 1) + k) * 64) * nv
-    load = 0.0
-    visc = 0.0
-    thick = 0.0
-    for q0 in range(4):
-        w0 = wa[q0]
-        if w0 == 0.0:
-            continue
-        for q1 in range(4):
-            w01 = w0 * wb[q1]
-            if w01 == 0.0:
-                continue
-            for q2 in range(4):
-                w = w01 * wc[q2]
-                if w == 0.0:
-                    continue
-                cell = base + ((q0 * 4 + q1) * 4 + q2) * nv
-                load += w * data[cell + off]
-                visc += w * data[cell + off + 1]
-                if film:
-                    thick += w * data[cell + 4 + off // 2]
-    return load, visc, thick
-
-
-@njit(cache=True)
 def cell_sum(row, data, i, wa, j, wb, k, wc, var):
     """Σ w·coefficient of one variable ``var`` (its index in :data:`TABLE_VARIABLES`) over the
-    cell (i, j, k): the same terms in the same order as :func:`cell_sums`, so the same bits,
-    at half the work where one variable is wanted."""
+    64 basis terms of cell (i, j, k) with the axis weights wa, wb, wc.  Terms of weight 0 (a
+    coordinate on a node, e.g. clamped below the slowest speed) add exactly 0 and are
+    skipped."""
     npr, nu, nv = row[1], row[2], row[3]
     base = row[0] + npr + nu + (((i * (npr - 1) + j) * (nu - 1) + k) * 64) * nv + var
     total = 0.0
@@ -168,7 +137,10 @@ def contact_table_point(row, data, temperature, pressure, speed):
         return 0.0, 0.0, 0.0
     i, wa, j, wb = table_cell(row, data, temperature, pressure)
     k, wc = speed_cell(row, data, speed)
-    return cell_sums(row, data, i, wa, j, wb, k, wc, 0 if speed > 0.0 else 2, True)
+    off = 0 if speed > 0.0 else 2                       # the stroke direction's columns
+    return (cell_sum(row, data, i, wa, j, wb, k, wc, off),
+            cell_sum(row, data, i, wa, j, wb, k, wc, off + 1),
+            cell_sum(row, data, i, wa, j, wb, k, wc, 4 + off // 2))
 
 
 @njit(cache=True)
