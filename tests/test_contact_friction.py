@@ -104,8 +104,8 @@ def test_theta_on_the_contact_table_keeps_the_steady_curve_and_the_dwell(table):
     rested = law.breakaway_force(np.zeros((2, 1)), inputs)[0]
     assert rested == pytest.approx(boundary, rel=1e-9)
     assert 0.97 * 0.2 * fn < rested < 0.2 * fn
-    # just after sliding (Θ = 1) it is lower by the dwell drop d = 0.5
-    assert law.breakaway_force(np.array([[1.0], [0.05]]), inputs)[0] == pytest.approx(
+    # after a full film (Θ = 1) squeezed out (φ = 0) it is lower by the dwell drop d = 0.5
+    assert law.breakaway_force(np.array([[1.0], [0.0]]), inputs)[0] == pytest.approx(
         0.5 * boundary, rel=1e-9)
     # accelerating from rest (Θ below Θ_ss): more friction than steady
     assert law.force(np.zeros((2, 1)), [0.05], inputs)[0] > steady[3]
@@ -159,6 +159,30 @@ def test_the_asperities_carry_the_load_of_the_film_formed_not_of_the_instant_spe
     assert force == pytest.approx(np.pi * 0.012 * (0.2 * load + viscous), rel=1e-12)
     assert force[1] == pytest.approx(law.steady_force([v], inputs)[0], rel=1e-12)
     assert force[0] > force[1] > force[2]
+
+
+def test_breaking_away_after_a_short_dwell_does_not_drop_the_friction_by_a_step(table):
+    # Stopped after sliding steadily at 10 mm/s and held 0.1 s (τ = 2 s): the film is still
+    # there (φ = 9.5 mm/s).  The break-away force (the level at rest, the stick logic's
+    # threshold) is the sliding level's limit v → 0± at that state, the larger direction
+    # (rel 1e-3: the viscous shear at the table's slowest speed and Θ_ss(0⁺) on top, measured
+    # 1e-4), and less than half the one after the film is squeezed out (φ = 0): what the
+    # film leaves the asperities.  Before, the level at rest ignored φ: 3.88 N held the seal
+    # and the instant it slid the friction fell to 0.50 N (now 0.50 N both) -- a negative
+    # direct effect, the stick-slip the film's state was made to remove.
+    law = Theta.from_parameter_set("seal_contact")
+    inputs = inputs_for(table)
+    z = law.step(law.steady_state([0.01], inputs), [0.0], 0.1, inputs)
+    assert z[1, 0] == pytest.approx(0.01 * np.exp(-0.05), rel=1e-12)
+    rest = law.breakaway_force(z, inputs)[0]
+    creep = np.abs(law.force(np.repeat(z, 2, axis=1), [1e-9, -1e-9], inputs))
+    assert rest == pytest.approx(creep.max(), rel=1e-3)
+    squeezed = law.breakaway_force(np.array([z[0], [0.0]]), inputs)[0]
+    assert rest < 0.5 * squeezed
+    # with bristles the same threshold: their steady deflection at rest is the level / σ0
+    bristle = Theta.from_parameter_set("seal_contact", bristle_stiffness=5e4)
+    zb = np.array([z[0], [0.0], z[1]])
+    assert bristle.breakaway_force(zb, inputs)[0] == pytest.approx(rest, rel=1e-12)
 
 
 def test_the_film_forms_over_the_contact_width_and_is_squeezed_out_at_rest(table):

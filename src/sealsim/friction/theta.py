@@ -662,7 +662,11 @@ class Theta(FrictionLaw):
         the larger of both directions': sliding from rest then never starts with more
         friction than held the seal at rest (with the mean, a pressurised analytic O-ring,
         whose low-pressure inlet is steeper, chattered between stick and slip in its
-        stronger direction)."""
+        stronger direction).  At rest (v = 0) the first is the level F_ss,φ(0⁺) that the
+        film leaves: π·D·μ_b times the larger asperity load of both directions at φ (at
+        least the slowest speed; φ not given: the slowest, the second value) -- the
+        sliding level's limit v → 0±, so breaking away after a short dwell, the film still
+        there, does not drop the friction by a step."""
         table = inputs.contact_table
         if table is None:
             raise InputError("inputs.contact_table: the theta law with steady = 'contact' needs "
@@ -679,14 +683,24 @@ class Theta(FrictionLaw):
         speed = orient * np.asarray(v, dtype=float)
         load, viscous, _ = table.evaluate(speed, dp, temperature)
         if film is not None:           # the asperities carry the load of the film's speed
-            film_speed = np.where(speed < 0.0, -1.0, 1.0) * np.maximum(film, table.speed[0])
+            film = np.asarray(film, dtype=float)
+            # below the table's slowest speed (or NaN, as the compiled law): that speed
+            formed = np.where(film > table.speed[0], film, table.speed[0])
+            film_speed = np.where(speed < 0.0, -1.0, 1.0) * formed
             load = np.where(speed != 0.0, table.evaluate(film_speed, dp, temperature)[0], load)
         slow = table.speed[0]
         up, _, _ = table.evaluate(slow, dp, temperature)
         down, _, _ = table.evaluate(-slow, dp, temperature)
         circumference = np.pi * diameter
-        return (circumference * (mu * load + viscous),
-                circumference * mu * np.maximum(up, down), circumference * viscous)
+        steady = circumference * (mu * load + viscous)
+        boundary = circumference * mu * np.maximum(up, down)
+        if film is not None:           # at rest: the load the film leaves the asperities
+            rest = np.maximum(table.evaluate(formed, dp, temperature)[0],
+                              table.evaluate(-formed, dp, temperature)[0])
+            steady = np.where(speed != 0.0, steady, circumference * mu * rest)
+        else:
+            steady = np.where(speed != 0.0, steady, boundary)
+        return steady, boundary, circumference * viscous
 
     def level(self, theta, inputs: ContactInputs, v=None, film=None):
         """Friction level [N] without the sign: the break-away force at rest.
@@ -694,7 +708,8 @@ class Theta(FrictionLaw):
         Lumped: g_Θ = F_N·[f_a(1 − Θ) + f_b·Θ] (the viscous γ·b·v comes on top).  Contact:
         |F_ss(v)| + ΔF·(Θ_ss(v) − Θ) with the asperity load of the film's speed ``film``
         (:meth:`contact_steady`), not below the film's viscous part π·D·V(|v|), at rest
-        F_ss(0⁺) − ΔF·Θ, ΔF = d·F_ss(0⁺).
+        F_ss,φ(0⁺) − ΔF·Θ (the boundary friction of the asperity load the film φ leaves: the
+        sliding level's limit v → 0±), ΔF = d·F_ss(0⁺) (F_ss(0⁺) at the slowest speed).
         """
         p = self.params
         if not self.contact:
@@ -877,4 +892,4 @@ class Theta(FrictionLaw):
 
     def breakaway_force(self, z, inputs: ContactInputs = NO_INPUTS):
         z = as_state(z, self.n_states)
-        return self.level(z[0], inputs)
+        return self.level(z[0], inputs, film=self._film(z))
