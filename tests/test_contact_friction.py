@@ -185,6 +185,27 @@ def test_breaking_away_after_a_short_dwell_does_not_drop_the_friction_by_a_step(
     assert bristle.breakaway_force(zb, inputs)[0] == pytest.approx(rest, rel=1e-12)
 
 
+def test_the_film_speed_in_bench_results_carries_its_unit(table):
+    # The bench's table column and summary keys of the film's speed end in _m_s: a study reads
+    # an output's unit from its key's end (unit_from_key), which made film_speed_max "1".
+    from pydantic import TypeAdapter
+
+    from sealsim.friction.bench import profile_type, simulate_velocity
+    from sealsim.friction.bench_results import summarize
+    from sealsim.studies.spec import unit_from_key
+
+    law = Theta.from_parameter_set("seal_contact")
+    drive = TypeAdapter(profile_type("velocity")).validate_python(
+        {"kind": "piecewise", "times": [0, 0.01], "values": [0.0, 0.1]})
+    res = simulate_velocity(law, drive, 0.01, 1e-3, inputs_for(table))
+    summary = summarize(res)
+    assert summary["film_speed_max_m_s"] == pytest.approx(np.max(res.states[:, -1]), rel=0)
+    assert summary["film_speed_min_m_s"] == 0.0                # from rest: no film yet
+    assert 0.0 < summary["film_speed_max_m_s"] < 0.1           # lags the speed's ramp
+    assert unit_from_key("film_speed_max_m_s") == "m/s"
+    assert "theta_max" in summary and "film_speed_max" not in summary
+
+
 def test_the_film_forms_over_the_contact_width_and_is_squeezed_out_at_rest(table):
     # dφ/dt = (|v| − φ)·(|v|/b + 1/τ) integrated by solve_ivp (RK45, rtol 1e-10) against the
     # law's exact step, sliding at 0.1 m/s from rest and resting after it; after sliding one
