@@ -63,9 +63,11 @@ References
 .. [4] F. Al-Bender, V. Lampaert, J. Swevers, IEEE TAC 50(11), 1883-1887, 2005.
 .. [5] ASTM D341-20, viscosity-temperature equations (Ubbelohde-Walther).
 .. [6] J. Sugimura, W. R. Jones, H. A. Spikes, "EHD film thickness in non-steady state
-   conditions", J. Tribol. 120(3), 442-452, 1998 (the film in a contact is the one formed
-   for the entrainment speed of the time its fluid entered the inlet: a delay of the transit
-   time of the contact).
+   contacts", J. Tribol. 120(3), 442-452, 1998; J. Sugimura, T. Okumura, Y. Yamamoto,
+   H. A. Spikes, "Simple equation for elastohydrodynamic film thickness under acceleration",
+   Tribol. Int. 32(2), 117-123, 1999 (the film formed at the inlet moves through the contact
+   with little change: the film is the one of the entrainment speed of the time its fluid
+   entered the inlet, a delay of the contact's transit time; hard EHD contacts).
 """
 
 from __future__ import annotations
@@ -345,7 +347,7 @@ def film_speed_rate(phi, v, b, tau):
     """dφ/dt = (|v| − φ)·(|v|/b + 1/τ) [m/s²]: the speed φ [m/s] that the contact's film has
     formed for follows the sliding speed |v| [m/s] over a sliding distance of the contact width
     b [m] (at least :data:`FILM_MIN_LENGTH`; the fluid at the contact's pressure maximum
-    entered its inlet one contact width earlier, Sugimura, Jones & Spikes 1998 [6]_: a
+    entered its inlet one contact width earlier, Sugimura et al. 1998, 1999 [6]_: a
     first-order lag over that distance is sealsim's simplest form of their delay) and decays
     at rest with the Θ law's τ [s] (the film squeezed out during a dwell).  Steady: φ = |v|."""
     speed = abs(v)

@@ -76,8 +76,10 @@ temperature, pressure difference, speed and stroke direction
 (L the asperity-carried load, V the viscous friction, per unit circumference; μ_b the boundary
 friction coefficient of the lubricated rubber).  The film does not form at once: the fluid at
 the contact's pressure maximum entered its inlet about one contact width earlier (Sugimura,
-Jones & Spikes [6]: in a speed transient the film is the one of the entrainment speed at the
-time its fluid entered the contact), so the asperities carry the load of the speed φ [m/s]
+Jones & Spikes [6] measured such film transients; Sugimura et al. [8]: the film formed at the
+inlet moves through the contact with little change, so it is the one of the entrainment speed
+at the time its fluid entered -- both on hard EHD contacts, for a seal's soft contact an
+assumption), so the asperities carry the load of the speed φ [m/s]
 that the film has formed for, a state (``film_speed``, the law's last) that follows the
 sliding speed over a sliding distance of the contact width b and decays at rest with τ (the
 film squeezed out in a dwell)::
@@ -100,8 +102,10 @@ behind Θ_ss while the speed rises gives more friction than steady (less while i
 film, thicker than steady, takes load off the asperities -- at most all of it, so the friction
 does not fall below the film's own viscous shear π·D·V, which an unbounded lag took to zero
 after a quick deceleration); at
-rest the break-away force F_ss(0⁺) − ΔF·Θ grows with the dwell time to the boundary level
-μ_b·F_N (F_ss(0⁺): the asperities carry the whole load).  d = ``dwell_drop`` is the fraction by
+rest the break-away force F_ss,φ(0⁺) − ΔF·Θ (F_ss,φ(0⁺) = π·D·μ_b·L(φ), the larger direction:
+the sliding level's limit v → 0±, so breaking away after a short dwell, the film still there,
+does not drop the friction by a step) grows with the dwell time, as Θ and φ decay, to the
+boundary level F_ss(0⁺) ≈ μ_b·F_N (the asperities carry the whole load; ΔF = d·F_ss(0⁺)).  d = ``dwell_drop`` is the fraction by
 which the break-away force just after sliding (Θ = 1) lies below the one after a long dwell --
 1 − f_b/f_a of the lumped law.  With bristles the same level g is the LuGre bristles'
 saturation level.
@@ -118,10 +122,14 @@ References
 .. [5] G. W. Stachowiak, A. W. Batchelor, Engineering Tribology, 3rd ed., Elsevier 2005,
    Table 2.3 (viscosities of mineral oils at 30, 60, 100 °C).
 .. [6] J. Sugimura, W. R. Jones, H. A. Spikes, "EHD film thickness in non-steady state
-   conditions", J. Tribol. 120(3), 442-452, 1998.
+   contacts", J. Tribol. 120(3), 442-452, 1998 (film transients in acceleration, stop-start
+   and reciprocation).
 .. [7] J. R. Rice, A. L. Ruina, "Stability of steady frictional slipping", J. Appl. Mech. 50,
-   343-349, 1983 (steady sliding against a spring is stable above a critical stiffness only
-   with a positive instantaneous velocity dependence).
+   343-349, 1983 (for laws with a positive instantaneous velocity dependence, steady sliding
+   against a spring is stable above a critical stiffness, which inertia raises).
+.. [8] J. Sugimura, T. Okumura, Y. Yamamoto, H. A. Spikes, "Simple equation for
+   elastohydrodynamic film thickness under acceleration", Tribol. Int. 32(2), 117-123, 1999
+   (the film formed at the inlet moves through the contact with little change).
 """
 
 from __future__ import annotations
