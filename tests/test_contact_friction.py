@@ -206,6 +206,35 @@ def test_the_film_speed_in_bench_results_carries_its_unit(table):
     assert "theta_max" in summary and "film_speed_max" not in summary
 
 
+def test_the_film_speed_panel_reads_in_the_velocity_panels_unit(table):
+    # Creeping at 50 µm/s the velocity panel reads in µm/s; the film's speed φ, which follows
+    # |v|, is drawn in the same unit (it was in m/s: 5e-5 under an offset label)
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from pydantic import TypeAdapter
+
+    from sealsim.friction.bench import profile_type, simulate_velocity
+    from sealsim.plotting.friction import plot_timeseries
+
+    law = Theta.from_parameter_set("seal_contact")
+    drive = TypeAdapter(profile_type("velocity")).validate_python(
+        {"kind": "piecewise", "times": [0, 1], "values": [5e-5, 5e-5]})
+    res = simulate_velocity(law, drive, 1.0, 1e-2, inputs_for(table))
+    fig = plot_timeseries({"creep": res})
+    labels = [ax.get_ylabel() for ax in fig.axes]
+    assert labels[0] == "v [µm/s]"
+    film_axis = fig.axes[labels.index("film formed for φ [µm/s]")]
+    drawn = film_axis.get_lines()[0].get_ydata()
+    assert drawn == pytest.approx(res.states[:, -1] * 1e6, rel=1e-12)
+    # φ = |v|·(1 − e^(−k t)), k = |v|/b + 1/τ (exact steps of a constant speed): 21.5 µm/s at 1 s
+    rate = 5e-5 / inputs_for(table).contact_width + 1.0 / law.params.tau
+    assert drawn[-1] == pytest.approx(50.0 * -np.expm1(-rate * res.time[-1]), rel=1e-9)
+    import matplotlib.pyplot as plt
+
+    plt.close(fig)
+
+
 def test_the_film_forms_over_the_contact_width_and_is_squeezed_out_at_rest(table):
     # dφ/dt = (|v| − φ)·(|v|/b + 1/τ) integrated by solve_ivp (RK45, rtol 1e-10) against the
     # law's exact step, sliding at 0.1 m/s from rest and resting after it; after sliding one
