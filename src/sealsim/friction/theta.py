@@ -105,9 +105,10 @@ after a quick deceleration); at
 rest the break-away force F_ss,φ(0⁺) − ΔF·Θ (F_ss,φ(0⁺) = π·D·μ_b·L(φ), the larger direction:
 the sliding level's limit v → 0±, so breaking away after a short dwell, the film still there,
 does not drop the friction by a step) grows with the dwell time, as Θ and φ decay, to the
-boundary level F_ss(0⁺) ≈ μ_b·F_N (the asperities carry the whole load; ΔF = d·F_ss(0⁺)).  d = ``dwell_drop`` is the fraction by
-which the break-away force just after sliding (Θ = 1) lies below the one after a long dwell --
-1 − f_b/f_a of the lumped law.  With bristles the same level g is the LuGre bristles'
+boundary level F_ss(0⁺) ≈ μ_b·F_N (the asperities carry the whole load; ΔF = d·F_ss(0⁺)).
+d = ``dwell_drop`` is the fraction by which the break-away force just after sliding (Θ = 1,
+the film squeezed out, φ = 0) lies below the one after a long dwell -- 1 − f_b/f_a of the
+lumped law.  With bristles the same level g is the LuGre bristles'
 saturation level.
 
 References
