@@ -104,8 +104,8 @@ def test_theta_on_the_contact_table_keeps_the_steady_curve_and_the_dwell(table):
     rested = law.breakaway_force(np.zeros((2, 1)), inputs)[0]
     assert rested == pytest.approx(boundary, rel=1e-9)
     assert 0.97 * 0.2 * fn < rested < 0.2 * fn
-    # just after sliding (Θ = 1) it is lower by the dwell drop d = 0.5
-    assert law.breakaway_force(np.array([[1.0], [0.05]]), inputs)[0] == pytest.approx(
+    # after a full film (Θ = 1) squeezed out (φ = 0) it is lower by the dwell drop d = 0.5
+    assert law.breakaway_force(np.array([[1.0], [0.0]]), inputs)[0] == pytest.approx(
         0.5 * boundary, rel=1e-9)
     # accelerating from rest (Θ below Θ_ss): more friction than steady
     assert law.force(np.zeros((2, 1)), [0.05], inputs)[0] > steady[3]
@@ -159,6 +159,80 @@ def test_the_asperities_carry_the_load_of_the_film_formed_not_of_the_instant_spe
     assert force == pytest.approx(np.pi * 0.012 * (0.2 * load + viscous), rel=1e-12)
     assert force[1] == pytest.approx(law.steady_force([v], inputs)[0], rel=1e-12)
     assert force[0] > force[1] > force[2]
+
+
+def test_breaking_away_after_a_short_dwell_does_not_drop_the_friction_by_a_step(table):
+    # Stopped after sliding steadily at 10 mm/s and held 0.1 s (τ = 2 s): the film is still
+    # there (φ = 9.5 mm/s).  The break-away force (the level at rest, the stick logic's
+    # threshold) is the sliding level's limit v → 0± at that state, the larger direction
+    # (rel 1e-3: the viscous shear at the table's slowest speed and Θ_ss(0⁺) on top, measured
+    # 1e-4), and less than half the one after the film is squeezed out (φ = 0): what the
+    # film leaves the asperities.  Before, the level at rest ignored φ: 3.88 N held the seal
+    # and the instant it slid the friction fell to 0.50 N (now 0.50 N both) -- a negative
+    # direct effect, the stick-slip the film's state was made to remove.
+    law = Theta.from_parameter_set("seal_contact")
+    inputs = inputs_for(table)
+    z = law.step(law.steady_state([0.01], inputs), [0.0], 0.1, inputs)
+    assert z[1, 0] == pytest.approx(0.01 * np.exp(-0.05), rel=1e-12)
+    rest = law.breakaway_force(z, inputs)[0]
+    creep = np.abs(law.force(np.repeat(z, 2, axis=1), [1e-9, -1e-9], inputs))
+    assert rest == pytest.approx(creep.max(), rel=1e-3)
+    squeezed = law.breakaway_force(np.array([z[0], [0.0]]), inputs)[0]
+    assert rest < 0.5 * squeezed
+    # with bristles the same threshold: their steady deflection at rest is the level / σ0
+    bristle = Theta.from_parameter_set("seal_contact", bristle_stiffness=5e4)
+    zb = np.array([z[0], [0.0], z[1]])
+    assert bristle.breakaway_force(zb, inputs)[0] == pytest.approx(rest, rel=1e-12)
+
+
+def test_the_film_speed_in_bench_results_carries_its_unit(table):
+    # The bench's table column and summary keys of the film's speed end in _m_s: a study reads
+    # an output's unit from its key's end (unit_from_key), which made film_speed_max "1".
+    from pydantic import TypeAdapter
+
+    from sealsim.friction.bench import profile_type, simulate_velocity
+    from sealsim.friction.bench_results import summarize
+    from sealsim.studies.spec import unit_from_key
+
+    law = Theta.from_parameter_set("seal_contact")
+    drive = TypeAdapter(profile_type("velocity")).validate_python(
+        {"kind": "piecewise", "times": [0, 0.01], "values": [0.0, 0.1]})
+    res = simulate_velocity(law, drive, 0.01, 1e-3, inputs_for(table))
+    summary = summarize(res)
+    assert summary["film_speed_max_m_s"] == pytest.approx(np.max(res.states[:, -1]), rel=0)
+    assert summary["film_speed_min_m_s"] == 0.0                # from rest: no film yet
+    assert 0.0 < summary["film_speed_max_m_s"] < 0.1           # lags the speed's ramp
+    assert unit_from_key("film_speed_max_m_s") == "m/s"
+    assert "theta_max" in summary and "film_speed_max" not in summary
+
+
+def test_the_film_speed_panel_reads_in_the_velocity_panels_unit(table):
+    # Creeping at 50 µm/s the velocity panel reads in µm/s; the film's speed φ, which follows
+    # |v|, is drawn in the same unit (it was in m/s: 5e-5 under an offset label)
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from pydantic import TypeAdapter
+
+    from sealsim.friction.bench import profile_type, simulate_velocity
+    from sealsim.plotting.friction import plot_timeseries
+
+    law = Theta.from_parameter_set("seal_contact")
+    drive = TypeAdapter(profile_type("velocity")).validate_python(
+        {"kind": "piecewise", "times": [0, 1], "values": [5e-5, 5e-5]})
+    res = simulate_velocity(law, drive, 1.0, 1e-2, inputs_for(table))
+    fig = plot_timeseries({"creep": res})
+    labels = [ax.get_ylabel() for ax in fig.axes]
+    assert labels[0] == "v [µm/s]"
+    film_axis = fig.axes[labels.index("film formed for φ [µm/s]")]
+    drawn = film_axis.get_lines()[0].get_ydata()
+    assert drawn == pytest.approx(res.states[:, -1] * 1e6, rel=1e-12)
+    # φ = |v|·(1 − e^(−k t)), k = |v|/b + 1/τ (exact steps of a constant speed): 21.5 µm/s at 1 s
+    rate = 5e-5 / inputs_for(table).contact_width + 1.0 / law.params.tau
+    assert drawn[-1] == pytest.approx(50.0 * -np.expm1(-rate * res.time[-1]), rel=1e-9)
+    import matplotlib.pyplot as plt
+
+    plt.close(fig)
 
 
 def test_the_film_forms_over_the_contact_width_and_is_squeezed_out_at_rest(table):

@@ -94,6 +94,12 @@ def test_example_runs_through_the_cli(example, tmp_path):
         assert " " not in name and f"F_{name}_N" in table
         if seal["friction"]["law"] == "theta":
             assert f"F_N_{name}_N" in table and f"theta_{name}" in table
+            # the contact law's film state with its unit (not in the table before)
+            contact = (seal["friction"].get("parameter_set") == "seal_contact"
+                       or seal["friction"].get("steady") == "contact")
+            assert (f"film_speed_{name}_m_s" in table) == contact
+            if contact:
+                assert table[f"film_speed_{name}_m_s"].max() > 0.0
     assert set(table["variant"]) == set(variants)
     assert np.all(np.isfinite(table.select_dtypes("number").to_numpy()))
     for png in out.glob("*.png"):

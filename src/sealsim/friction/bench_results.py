@@ -207,7 +207,10 @@ def summarize(result: BenchResult) -> dict[str, Any]:
             out["stuck_fraction"] = float(np.mean(result.stuck))
     for name in result.state_names:
         i = result.state_names.index(name)
-        out[f"{name}_min"] = float(np.min(result.states[:, i]))
-        out[f"{name}_max"] = float(np.max(result.states[:, i]))
+        # the film's speed carries its unit (studies read units from the keys' ends);
+        # theta is dimensionless, and z_min / z_max stay as study files name them
+        unit = "_m_s" if name == "film_speed" else ""
+        out[f"{name}_min{unit}"] = float(np.min(result.states[:, i]))
+        out[f"{name}_max{unit}"] = float(np.max(result.states[:, i]))
     out.update({k: v for k, v in result.extra.items()})
     return out

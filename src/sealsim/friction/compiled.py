@@ -105,7 +105,9 @@ def contact_steady(par, frow, fdata, temp, dp, orient, vv, film):
     (:meth:`sealsim.friction.theta.Theta.contact_steady`): π·D·(μ_b·L(φ) + V(|v|)) in the
     stroke direction of orient·v, the asperity load L at the speed ``film`` = φ [m/s] the
     film has formed for (:func:`~sealsim.friction.kernels.film_speed_rate`; φ = |v| in steady
-    sliding), the viscous shear V at the sliding speed; and π·D·μ_b times the larger
+    sliding), the viscous shear V at the sliding speed, at rest (v = 0) π·D·μ_b times the
+    larger asperity load of both directions at φ (the level the film leaves, the sliding
+    level's limit v → 0±); and π·D·μ_b times the larger
     asperity load of both directions at the table's slowest speed (its first node) -- the
     table lookups of :func:`~sealsim.friction.contact_table.contact_table_point` sharing one
     cell search."""
@@ -123,6 +125,12 @@ def contact_steady(par, frow, fdata, temp, dp, orient, vv, film):
         load = cell_sum(frow, fdata, i, wa, j, wb, k, wc, direction)
     up = cell_sum(frow, fdata, i, wa, j, wb, 0, _ON_NODE, 0)
     down = cell_sum(frow, fdata, i, wa, j, wb, 0, _ON_NODE, 2)
+    if speed == 0.0:                # at rest: the larger load the film leaves of both directions
+        load = max(up, down)
+        if film > 0.0:
+            k, wc = speed_cell(frow, fdata, film)
+            load = max(cell_sum(frow, fdata, i, wa, j, wb, k, wc, 0),
+                       cell_sum(frow, fdata, i, wa, j, wb, k, wc, 2))
     circumference, mu = par[TH_CIRCUMFERENCE], par[TH_MU_B]
     return (circumference * (mu * load + visc), circumference * mu * max(up, down),
             circumference * visc)

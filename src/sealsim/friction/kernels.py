@@ -45,7 +45,7 @@ kernel (arguments)                                 returns
 ``theta_force(th, v, fn, b, fa, fb, gamma)``       g_Θ·sgn(v) + γ·b·v                (H&M Eq. 5)
 ``theta_contact_level(th, v, fss, ...)``           level of the Θ law on a contact table:
                                                    max(fss + d·fb·(Θ_ss − Θ), fv), at rest
-                                                   fb·(1 − d·Θ)
+                                                   fss − d·fb·Θ
 ``film_speed_rate(phi, v, b, tau)``                dφ/dt = (|v| − φ)·(|v|/b + 1/τ): the speed
                                                    the contact's film has formed for
 ``film_speed_affine(v, dt, b, tau)``               (a, c): φ(t+dt) = a·φ + c, exact for constant v
@@ -63,9 +63,11 @@ References
 .. [4] F. Al-Bender, V. Lampaert, J. Swevers, IEEE TAC 50(11), 1883-1887, 2005.
 .. [5] ASTM D341-20, viscosity-temperature equations (Ubbelohde-Walther).
 .. [6] J. Sugimura, W. R. Jones, H. A. Spikes, "EHD film thickness in non-steady state
-   conditions", J. Tribol. 120(3), 442-452, 1998 (the film in a contact is the one formed
-   for the entrainment speed of the time its fluid entered the inlet: a delay of the transit
-   time of the contact).
+   contacts", J. Tribol. 120(3), 442-452, 1998; J. Sugimura, T. Okumura, Y. Yamamoto,
+   H. A. Spikes, "Simple equation for elastohydrodynamic film thickness under acceleration",
+   Tribol. Int. 32(2), 117-123, 1999 (the film formed at the inlet moves through the contact
+   with little change: the film is the one of the entrainment speed of the time its fluid
+   entered the inlet, a delay of the contact's transit time; hard EHD contacts).
 """
 
 from __future__ import annotations
@@ -318,9 +320,11 @@ def theta_force(th, v, fn, b, fa, fb, gamma):
 def theta_contact_level(th, v, fss, fb, d, thss, fv):
     """Friction level [N] of the Θ law whose steady curve is a contact table
     (:mod:`sealsim.friction.theta`, ``steady = "contact"``): |F_ss(v)| + ΔF·(Θ_ss − Θ) while
-    sliding, but not below the film's viscous shear fv, F_ss(0⁺) − ΔF·Θ at rest,
-    ΔF = d·F_ss(0⁺); at least 1e-9 N.  fss = |F_ss(v)|, fb = F_ss(0⁺), fv = π·D·V(|v|) the
-    viscous part of fss [N], d = dwell drop [-], thss = Θ_ss(v).  The lag of Θ acts on the
+    sliding, but not below the film's viscous shear fv, F_ss,φ(0⁺) − ΔF·Θ at rest,
+    ΔF = d·F_ss(0⁺); at least 1e-9 N.  fss = |F_ss(v)|, at rest (v = 0) F_ss,φ(0⁺) the
+    boundary level the film leaves (the sliding level's limit v → 0±), fb = F_ss(0⁺) at the
+    table's slowest speed, fv = π·D·V(|v|) the viscous part of fss [N], d = dwell drop [-],
+    thss = Θ_ss(v) (:func:`sealsim.friction.compiled.contact_steady`).  The lag of Θ acts on the
     asperity-carried part: a film thicker than steady (Θ > Θ_ss, while the speed falls) takes
     load off the asperities, at most all of it, not its own shear."""
     drop = d * fb
@@ -329,7 +333,7 @@ def theta_contact_level(th, v, fss, fb, d, thss, fv):
         level = fss + drop * (thss - th)
         floor = fv if fv > floor else floor
     else:
-        level = fb - drop * th
+        level = fss - drop * th
     return level if level > floor else floor
 
 
@@ -343,7 +347,7 @@ def film_speed_rate(phi, v, b, tau):
     """dφ/dt = (|v| − φ)·(|v|/b + 1/τ) [m/s²]: the speed φ [m/s] that the contact's film has
     formed for follows the sliding speed |v| [m/s] over a sliding distance of the contact width
     b [m] (at least :data:`FILM_MIN_LENGTH`; the fluid at the contact's pressure maximum
-    entered its inlet one contact width earlier, Sugimura, Jones & Spikes 1998 [6]_: a
+    entered its inlet one contact width earlier, Sugimura et al. 1998, 1999 [6]_: a
     first-order lag over that distance is sealsim's simplest form of their delay) and decays
     at rest with the Θ law's τ [s] (the film squeezed out during a dwell).  Steady: φ = |v|."""
     speed = abs(v)

@@ -76,8 +76,10 @@ temperature, pressure difference, speed and stroke direction
 (L the asperity-carried load, V the viscous friction, per unit circumference; μ_b the boundary
 friction coefficient of the lubricated rubber).  The film does not form at once: the fluid at
 the contact's pressure maximum entered its inlet about one contact width earlier (Sugimura,
-Jones & Spikes [6]: in a speed transient the film is the one of the entrainment speed at the
-time its fluid entered the contact), so the asperities carry the load of the speed φ [m/s]
+Jones & Spikes [6] measured such film transients; Sugimura et al. [8]: the film formed at the
+inlet moves through the contact with little change, so it is the one of the entrainment speed
+at the time its fluid entered -- both on hard EHD contacts, for a seal's soft contact an
+assumption), so the asperities carry the load of the speed φ [m/s]
 that the film has formed for, a state (``film_speed``, the law's last) that follows the
 sliding speed over a sliding distance of the contact width b and decays at rest with τ (the
 film squeezed out in a dwell)::
@@ -100,10 +102,13 @@ behind Θ_ss while the speed rises gives more friction than steady (less while i
 film, thicker than steady, takes load off the asperities -- at most all of it, so the friction
 does not fall below the film's own viscous shear π·D·V, which an unbounded lag took to zero
 after a quick deceleration); at
-rest the break-away force F_ss(0⁺) − ΔF·Θ grows with the dwell time to the boundary level
-μ_b·F_N (F_ss(0⁺): the asperities carry the whole load).  d = ``dwell_drop`` is the fraction by
-which the break-away force just after sliding (Θ = 1) lies below the one after a long dwell --
-1 − f_b/f_a of the lumped law.  With bristles the same level g is the LuGre bristles'
+rest the break-away force F_ss,φ(0⁺) − ΔF·Θ (F_ss,φ(0⁺) = π·D·μ_b·L(φ), the larger direction:
+the sliding level's limit v → 0±, so breaking away after a short dwell, the film still there,
+does not drop the friction by a step) grows with the dwell time, as Θ and φ decay, to the
+boundary level F_ss(0⁺) ≈ μ_b·F_N (the asperities carry the whole load; ΔF = d·F_ss(0⁺)).
+d = ``dwell_drop`` is the fraction by which the break-away force just after sliding (Θ = 1,
+the film squeezed out, φ = 0) lies below the one after a long dwell -- 1 − f_b/f_a of the
+lumped law.  With bristles the same level g is the LuGre bristles'
 saturation level.
 
 References
@@ -118,10 +123,14 @@ References
 .. [5] G. W. Stachowiak, A. W. Batchelor, Engineering Tribology, 3rd ed., Elsevier 2005,
    Table 2.3 (viscosities of mineral oils at 30, 60, 100 °C).
 .. [6] J. Sugimura, W. R. Jones, H. A. Spikes, "EHD film thickness in non-steady state
-   conditions", J. Tribol. 120(3), 442-452, 1998.
+   contacts", J. Tribol. 120(3), 442-452, 1998 (film transients in acceleration, stop-start
+   and reciprocation).
 .. [7] J. R. Rice, A. L. Ruina, "Stability of steady frictional slipping", J. Appl. Mech. 50,
-   343-349, 1983 (steady sliding against a spring is stable above a critical stiffness only
-   with a positive instantaneous velocity dependence).
+   343-349, 1983 (for laws with a positive instantaneous velocity dependence, steady sliding
+   against a spring is stable above a critical stiffness, which inertia raises).
+.. [8] J. Sugimura, T. Okumura, Y. Yamamoto, H. A. Spikes, "Simple equation for
+   elastohydrodynamic film thickness under acceleration", Tribol. Int. 32(2), 117-123, 1999
+   (the film formed at the inlet moves through the contact with little change).
 """
 
 from __future__ import annotations
@@ -662,7 +671,11 @@ class Theta(FrictionLaw):
         the larger of both directions': sliding from rest then never starts with more
         friction than held the seal at rest (with the mean, a pressurised analytic O-ring,
         whose low-pressure inlet is steeper, chattered between stick and slip in its
-        stronger direction)."""
+        stronger direction).  At rest (v = 0) the first is the level F_ss,φ(0⁺) that the
+        film leaves: π·D·μ_b times the larger asperity load of both directions at φ (at
+        least the slowest speed; φ not given: the slowest, the second value) -- the
+        sliding level's limit v → 0±, so breaking away after a short dwell, the film still
+        there, does not drop the friction by a step."""
         table = inputs.contact_table
         if table is None:
             raise InputError("inputs.contact_table: the theta law with steady = 'contact' needs "
@@ -679,14 +692,24 @@ class Theta(FrictionLaw):
         speed = orient * np.asarray(v, dtype=float)
         load, viscous, _ = table.evaluate(speed, dp, temperature)
         if film is not None:           # the asperities carry the load of the film's speed
-            film_speed = np.where(speed < 0.0, -1.0, 1.0) * np.maximum(film, table.speed[0])
+            film = np.asarray(film, dtype=float)
+            # below the table's slowest speed (or NaN, as the compiled law): that speed
+            formed = np.where(film > table.speed[0], film, table.speed[0])
+            film_speed = np.where(speed < 0.0, -1.0, 1.0) * formed
             load = np.where(speed != 0.0, table.evaluate(film_speed, dp, temperature)[0], load)
         slow = table.speed[0]
         up, _, _ = table.evaluate(slow, dp, temperature)
         down, _, _ = table.evaluate(-slow, dp, temperature)
         circumference = np.pi * diameter
-        return (circumference * (mu * load + viscous),
-                circumference * mu * np.maximum(up, down), circumference * viscous)
+        steady = circumference * (mu * load + viscous)
+        boundary = circumference * mu * np.maximum(up, down)
+        if film is not None:           # at rest: the load the film leaves the asperities
+            rest = np.maximum(table.evaluate(formed, dp, temperature)[0],
+                              table.evaluate(-formed, dp, temperature)[0])
+            steady = np.where(speed != 0.0, steady, circumference * mu * rest)
+        else:
+            steady = np.where(speed != 0.0, steady, boundary)
+        return steady, boundary, circumference * viscous
 
     def level(self, theta, inputs: ContactInputs, v=None, film=None):
         """Friction level [N] without the sign: the break-away force at rest.
@@ -694,7 +717,8 @@ class Theta(FrictionLaw):
         Lumped: g_Θ = F_N·[f_a(1 − Θ) + f_b·Θ] (the viscous γ·b·v comes on top).  Contact:
         |F_ss(v)| + ΔF·(Θ_ss(v) − Θ) with the asperity load of the film's speed ``film``
         (:meth:`contact_steady`), not below the film's viscous part π·D·V(|v|), at rest
-        F_ss(0⁺) − ΔF·Θ, ΔF = d·F_ss(0⁺).
+        F_ss,φ(0⁺) − ΔF·Θ (the boundary friction of the asperity load the film φ leaves: the
+        sliding level's limit v → 0±), ΔF = d·F_ss(0⁺) (F_ss(0⁺) at the slowest speed).
         """
         p = self.params
         if not self.contact:
@@ -877,4 +901,4 @@ class Theta(FrictionLaw):
 
     def breakaway_force(self, z, inputs: ContactInputs = NO_INPUTS):
         z = as_state(z, self.n_states)
-        return self.level(z[0], inputs)
+        return self.level(z[0], inputs, film=self._film(z))

@@ -217,7 +217,8 @@ def plot_timeseries(results, title: str | None = None):
                     ax.plot(r.time, r.states[:, c] * 1e6, lw=0.8, color=line.get_color())
             elif state in r.state_names:
                 i = r.state_names.index(state)
-                scale = 1e6 if state == "z" else 1.0
+                # the film's speed in the velocity panel's unit, so φ reads against |v|
+                scale = {"z": 1e6, "film_speed": vf}.get(state, 1.0)
                 ax.plot(r.time, r.states[:, i] * scale, lw=1.0, color=line.get_color())
     axes[0].set_ylabel(f"v [{vl}]")
     axes[1].set_ylabel("force [N]")
@@ -225,7 +226,7 @@ def plot_timeseries(results, title: str | None = None):
     for k, state in enumerate(any_states):
         label = {"theta": "film state Θ [-]", "z": "bristles z [µm]",
                  "z_i": "bristles z_i [µm]",
-                 "film_speed": "film formed for φ [m/s]"}.get(state, state)
+                 "film_speed": f"film formed for φ [{vl}]"}.get(state, state)
         axes[3 + k].set_ylabel(label)
     axes[-1].set_xlabel("time t [s]")
     for ax in axes:

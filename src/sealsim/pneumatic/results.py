@@ -205,6 +205,8 @@ def _diagnostics(system, ts, ys, modes, reuse: bool = False) -> dict[str, np.nda
         names = s.law.state_names
         if "theta" in names:
             out[f"theta{i}"] = ys[system.offsets[i] + names.index("theta")]
+        if "film_speed" in names:                # the contact law's film state [m/s]
+            out[f"film{i}"] = ys[system.offsets[i] + names.index("film_speed")]
     return out
 
 
@@ -229,6 +231,8 @@ def _frame(system, diag) -> pd.DataFrame:
         cols.append((f"dp_{name}_bar", diag[f"dp{i}"], ("/", 1e5)))
         if f"theta{i}" in diag:
             cols.append((f"theta_{name}", diag[f"theta{i}"], None))
+        if f"film{i}" in diag:
+            cols.append((f"film_speed_{name}_m_s", diag[f"film{i}"], None))
         if system.heating and system.tables[3][i, rhs.SI_HEATED]:
             cols.append((f"T_{name}_C", diag[f"tseal{i}"], ("-", ZERO_CELSIUS_K)))
     if system.heating:

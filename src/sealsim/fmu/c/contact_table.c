@@ -128,6 +128,19 @@ void contact_steady(const long *row, const double *data, double temperature, dou
     }
     table_cell_sums(row, data, i, wa, j, wb, 0, on_node, 0, 0, &up, &unused0, &unused1);
     table_cell_sums(row, data, i, wa, j, wb, 0, on_node, 2, 0, &down, &unused0, &unused1);
+    if (oriented_speed == 0.0) {   /* at rest: the larger load the film leaves of both ways */
+        load = fmax(up, down);
+        if (film > 0.0) {
+            double c, wc[4], film_up, film_down;
+            long k = table_locate(data, row[0] + row[1], row[2], log10(film), &c);
+            table_basis(c, wc);
+            table_cell_sums(row, data, i, wa, j, wb, k, wc, 0, 0, &film_up, &unused0,
+                            &unused1);
+            table_cell_sums(row, data, i, wa, j, wb, k, wc, 2, 0, &film_down, &unused0,
+                            &unused1);
+            load = fmax(film_up, film_down);
+        }
+    }
     *steady = circumference * (boundary_friction * load + visc);
     *boundary = circumference * boundary_friction * fmax(up, down);   /* see contact_steady */
     *viscous = circumference * visc;
@@ -139,8 +152,8 @@ double theta_contact_level(double th, double v, double fss, double fb, double d,
     if (v != 0.0) {            /* not below the film's viscous shear fv */
         level = fss + drop * (thss - th);
         floor = fv > floor ? fv : floor;
-    } else {
-        level = fb - drop * th;
+    } else {                   /* fss: the level the film leaves (contact_steady at rest) */
+        level = fss - drop * th;
     }
     return level > floor ? level : floor;
 }

@@ -161,7 +161,7 @@ static double theta_level(Instance *c, double theta, double film, const Contact 
 #endif
 }
 
-/* the level at rest (the break-away force; at rest it does not depend on the film) */
+/* the level at rest (the break-away force; the asperities carry the load the film leaves) */
 static double theta_rest_level(Instance *c, double theta, double film, const Contact *k) {
     Contact rest = *k;
     rest.v = 0.0;
