@@ -209,7 +209,7 @@ def summarize(result: BenchResult) -> dict[str, Any]:
         i = result.state_names.index(name)
         # the film's speed carries its unit (studies read units from the keys' ends);
         # theta is dimensionless, and z_min / z_max stay as study files name them
-        unit = "_m_s" if name == "film_speed" else ""
+        unit = _STATE_UNITS.get(name, "")
         out[f"{name}_min{unit}"] = float(np.min(result.states[:, i]))
         out[f"{name}_max{unit}"] = float(np.max(result.states[:, i]))
     out.update({k: v for k, v in result.extra.items()})

@@ -695,8 +695,9 @@ class Theta(FrictionLaw):
             film = np.asarray(film, dtype=float)
             # below the table's slowest speed (or NaN, as the compiled law): that speed
             formed = np.where(film > table.speed[0], film, table.speed[0])
-            film_speed = np.where(speed < 0.0, -1.0, 1.0) * formed
-            load = np.where(speed != 0.0, table.evaluate(film_speed, dp, temperature)[0], load)
+            formed_up = table.evaluate(formed, dp, temperature)[0]
+            formed_down = table.evaluate(-formed, dp, temperature)[0]
+            load = np.where(speed > 0.0, formed_up, np.where(speed < 0.0, formed_down, load))
         slow = table.speed[0]
         up, _, _ = table.evaluate(slow, dp, temperature)
         down, _, _ = table.evaluate(-slow, dp, temperature)
@@ -704,9 +705,8 @@ class Theta(FrictionLaw):
         steady = circumference * (mu * load + viscous)
         boundary = circumference * mu * np.maximum(up, down)
         if film is not None:           # at rest: the load the film leaves the asperities
-            rest = np.maximum(table.evaluate(formed, dp, temperature)[0],
-                              table.evaluate(-formed, dp, temperature)[0])
-            steady = np.where(speed != 0.0, steady, circumference * mu * rest)
+            steady = np.where(speed != 0.0, steady,
+                              circumference * mu * np.maximum(formed_up, formed_down))
         else:
             steady = np.where(speed != 0.0, steady, boundary)
         return steady, boundary, circumference * viscous
@@ -810,10 +810,10 @@ class Theta(FrictionLaw):
                      - self.level(z[0], inputs, v, np.maximum(film - hf, 0.0))) / (
                          film + hf - np.maximum(film - hf, 0.0))
             # the film's speed: dφ/dt = (|v| − φ)·(|v|/b + 1/τ)
-            rate = np.abs(v) / np.maximum(self._b(inputs), _k.FILM_MIN_LENGTH) + 1.0 / p.tau
+            length = np.maximum(self._b(inputs), _k.FILM_MIN_LENGTH)
+            rate = np.abs(v) / length + 1.0 / p.tau
             jac[-1, -1] = -rate
-            dzdv[-1] = np.sign(v) * (rate + (np.abs(v) - film)
-                                     / np.maximum(self._b(inputs), _k.FILM_MIN_LENGTH))
+            dzdv[-1] = np.sign(v) * (rate + (np.abs(v) - film) / length)
         else:
             dlevel = fn * (p.f_b - p.f_a)                       # ∂g_Θ/∂Θ
             dg_df = 0.0
