@@ -101,39 +101,41 @@ def law_parameters(law, sliding_diameter: float = 0.0) -> np.ndarray:
 
 @njit(cache=True)
 def contact_steady(par, frow, fdata, temp, dp, orient, vv, film):
-    """(|F_ss| [N], F_ss(0⁺) [N], π·D·V(|v|) [N]) of a Θ law on its seal's contact table
-    (:meth:`sealsim.friction.theta.Theta.contact_steady`): π·D·(μ_b·L(φ) + V(|v|)) in the
-    stroke direction of orient·v, the asperity load L at the speed ``film`` = φ [m/s] the
-    film has formed for (:func:`~sealsim.friction.kernels.film_speed_rate`; φ = |v| in steady
-    sliding), the viscous shear V at the sliding speed, at rest (v = 0) π·D·μ_b times the
-    larger asperity load of both directions at φ (the level the film leaves, the sliding
-    level's limit v → 0±); and π·D·μ_b times the larger
-    asperity load of both directions at the table's slowest speed (its first node) -- the
-    table lookups of :func:`~sealsim.friction.contact_table.contact_table_point` sharing one
-    cell search."""
+    """(|F_ss| [N], its boundary part π·D·μ_b·L(φ) [N], π·D·V(|v|) [N]) of a Θ law on its
+    seal's contact table (:meth:`sealsim.friction.theta.Theta.contact_steady`):
+    π·D·(μ_b·L(φ) + V(|v|)) in the stroke direction of orient·v, the asperity load L at the
+    speed ``film`` = φ [m/s] the film has formed for
+    (:func:`~sealsim.friction.kernels.film_speed_rate`; φ = |v| in steady sliding; no film,
+    φ = 0: the table's slowest speed, its first node), the viscous shear V at the sliding
+    speed; at rest (v = 0) π·D·μ_b times the larger asperity load of both directions at φ
+    (the level the film leaves, the sliding level's limit v → 0±) -- the table lookups of
+    :func:`~sealsim.friction.contact_table.contact_table_point` sharing one cell search."""
     i, wa, j, wb = table_cell(frow, fdata, temp, dp)       # one cell search for all
     speed = orient * vv
-    load = visc = 0.0
+    visc = 0.0
     if speed != 0.0:
         direction = 0 if speed > 0.0 else 2                # columns of the stroke direction
         k, wc = speed_cell(frow, fdata, speed)
         visc = cell_sum(frow, fdata, i, wa, j, wb, k, wc, direction + 1)
-        if not film > 0.0:                                # no film (or not a number)
-            k, wc = 0, _ON_NODE
-        elif film != abs(speed):
-            k, wc = speed_cell(frow, fdata, film)
+        if film != abs(speed):
+            k, wc = _film_cell(frow, fdata, film)
         load = cell_sum(frow, fdata, i, wa, j, wb, k, wc, direction)
-    up = cell_sum(frow, fdata, i, wa, j, wb, 0, _ON_NODE, 0)
-    down = cell_sum(frow, fdata, i, wa, j, wb, 0, _ON_NODE, 2)
-    if speed == 0.0:                # at rest: the larger load the film leaves of both directions
-        load = max(up, down)
-        if film > 0.0:
-            k, wc = speed_cell(frow, fdata, film)
-            load = max(cell_sum(frow, fdata, i, wa, j, wb, k, wc, 0),
-                       cell_sum(frow, fdata, i, wa, j, wb, k, wc, 2))
+    else:                           # at rest: the larger load the film leaves of both directions
+        k, wc = _film_cell(frow, fdata, film)
+        load = max(cell_sum(frow, fdata, i, wa, j, wb, k, wc, 0),
+                   cell_sum(frow, fdata, i, wa, j, wb, k, wc, 2))
     circumference, mu = par[TH_CIRCUMFERENCE], par[TH_MU_B]
-    return (circumference * (mu * load + visc), circumference * mu * max(up, down),
+    return (circumference * (mu * load + visc), circumference * mu * load,
             circumference * visc)
+
+
+@njit(cache=True)
+def _film_cell(frow, fdata, film):
+    """Speed cell of the film's speed φ [m/s] in a contact table; no film (φ ≤ 0 or not a
+    number): the table's slowest speed, its first node."""
+    if film > 0.0:
+        return speed_cell(frow, fdata, film)
+    return 0, _ON_NODE
 
 
 @njit(cache=True)

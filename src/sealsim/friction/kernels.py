@@ -320,13 +320,15 @@ def theta_force(th, v, fn, b, fa, fb, gamma):
 def theta_contact_level(th, v, fss, fb, d, thss, fv):
     """Friction level [N] of the Θ law whose steady curve is a contact table
     (:mod:`sealsim.friction.theta`, ``steady = "contact"``): |F_ss(v)| + ΔF·(Θ_ss − Θ) while
-    sliding, but not below the film's viscous shear fv, F_ss,φ(0⁺) − ΔF·Θ at rest,
-    ΔF = d·F_ss(0⁺); at least 1e-9 N.  fss = |F_ss(v)|, at rest (v = 0) F_ss,φ(0⁺) the
-    boundary level the film leaves (the sliding level's limit v → 0±), fb = F_ss(0⁺) at the
-    table's slowest speed, fv = π·D·V(|v|) the viscous part of fss [N], d = dwell drop [-],
-    thss = Θ_ss(v) (:func:`sealsim.friction.compiled.contact_steady`).  The lag of Θ acts on the
-    asperity-carried part: a film thicker than steady (Θ > Θ_ss, while the speed falls) takes
-    load off the asperities, at most all of it, not its own shear."""
+    sliding, but not below the film's viscous shear fv, F_ss,φ(0⁺)·(1 − d·Θ) at rest;
+    ΔF = d·fb, the dwell drop d [-] of the boundary part fb = π·D·μ_b·L(φ) [N] of the level
+    (the asperity load L at the speed φ the film has formed for): Θ scales the boundary
+    friction of the asperities, the film φ sets the load they carry.  fss = |F_ss(v)| [N], at
+    rest (v = 0) F_ss,φ(0⁺) = fb, the boundary level the film leaves (the sliding level's
+    limit v → 0±); fv = π·D·V(|v|) the viscous part of fss [N]; thss = Θ_ss(v)
+    (:func:`sealsim.friction.compiled.contact_steady`); at least 1e-9 N.  Θ above Θ_ss
+    (while the speed falls) lowers the asperities' friction by at most the fraction d, so a
+    quick reversal keeps (1 − d) of the boundary friction at the film it carries."""
     drop = d * fb
     floor = 1e-9
     if v != 0.0:

@@ -93,19 +93,21 @@ chattered between stick and slip at µm/s; with it the friction's instant respon
 speed is the film's viscous shear and Θ's rate term, both rising with speed -- the positive
 direct effect that makes steady sliding stable against a stiff spring (Rice & Ruina [7]),
 while the steady curve still falls through the mixed regime.  The Θ state keeps the dynamics
-on top of it::
+on top of it, scaling the boundary friction of the asperities (the film φ sets the load they
+carry)::
 
-    F = max(F_ss,φ(v) + ΔF·(Θ_ss(v) − Θ), π·D·V(|v|))·sgn(v),   ΔF = d·μ_b·F_N
+    F = max(F_ss,φ(v) + ΔF·(Θ_ss(v) − Θ), π·D·V(|v|))·sgn(v),   ΔF = d·π·D·μ_b·L(φ)
 
 with the same state equation: in steady sliding Θ = Θ_ss, φ = |v| and F = F_ss exactly; Θ lagging
-behind Θ_ss while the speed rises gives more friction than steady (less while it falls: the
-film, thicker than steady, takes load off the asperities -- at most all of it, so the friction
-does not fall below the film's own viscous shear π·D·V, which an unbounded lag took to zero
-after a quick deceleration); at
-rest the break-away force F_ss,φ(0⁺) − ΔF·Θ (F_ss,φ(0⁺) = π·D·μ_b·L(φ), the larger direction:
-the sliding level's limit v → 0±, so breaking away after a short dwell, the film still there,
-does not drop the friction by a step) grows with the dwell time, as Θ and φ decay, to the
-boundary level F_ss(0⁺) ≈ μ_b·F_N (the asperities carry the whole load; ΔF = d·F_ss(0⁺)).
+behind Θ_ss while the speed rises gives more friction than steady, less while it falls (by at
+most the fraction d of the asperities' friction: a quick reversal keeps (1 − d) of the boundary
+friction at the film it carries through zero speed; with ΔF the long dwell's d·μ_b·F_N on top
+of a film that had already lifted the asperities, the friction after a 1 m/s² reversal of a
+2 mm O-ring fell to its film's viscous shear, 0.001 N instead of 0.14 N); at rest the
+break-away force F_ss,φ(0⁺)·(1 − d·Θ) (F_ss,φ(0⁺) = π·D·μ_b·L(φ), the larger direction: the
+sliding level's limit v → 0±, so breaking away after a short dwell, the film still there, does
+not drop the friction by a step) grows with the dwell time, as Θ and φ decay, to the boundary
+level F_ss(0⁺) ≈ μ_b·F_N (the asperities carry the whole load).
 d = ``dwell_drop`` is the fraction by which the break-away force just after sliding (Θ = 1,
 the film squeezed out, φ = 0) lies below the one after a long dwell -- 1 − f_b/f_a of the
 lumped law.  With bristles the same level g is the LuGre bristles'
@@ -508,7 +510,8 @@ class ThetaParameters(LawParameters):
         "load"))
     dwell_drop: Q("dimensionless", ge=0, lt=1) = Field(0.5, description=(
         "contact: break-away force just after sliding (Theta = 1) below the long-dwell one, "
-        "as a fraction of mu_b*F_N"))
+        "as a fraction of the asperities' boundary friction (mu_b*F_N after a long dwell); "
+        "a Theta above its steady value lowers that friction by at most this fraction"))
     roughness: Q("length", gt=0) = Field(0.3e-6, description=(
         "contact: combined RMS roughness of counter surface and seal"))
     film_factor: Q("dimensionless", gt=0) = Field(1.0, description=(
@@ -663,19 +666,18 @@ class Theta(FrictionLaw):
                                          *self.walther)
 
     def contact_steady(self, v, inputs: ContactInputs, film=None):
-        """(|F_ss(v)| [N], boundary level F_ss(0⁺) [N], viscous part π·D·V(|v|) [N]) from the
-        contact table of ``inputs`` (``steady = "contact"``): F_ss = π·D·(μ_b·L(φ) + V(|v|))
-        in the stroke direction of v, the asperity load at the speed ``film`` = φ [m/s] the
-        film has formed for (the state ``film_speed``; not given: the steady film, φ = |v|),
-        and μ_b times the asperity load at the table's slowest speed,
-        the larger of both directions': sliding from rest then never starts with more
-        friction than held the seal at rest (with the mean, a pressurised analytic O-ring,
-        whose low-pressure inlet is steeper, chattered between stick and slip in its
-        stronger direction).  At rest (v = 0) the first is the level F_ss,φ(0⁺) that the
-        film leaves: π·D·μ_b times the larger asperity load of both directions at φ (at
-        least the slowest speed; φ not given: the slowest, the second value) -- the
-        sliding level's limit v → 0±, so breaking away after a short dwell, the film still
-        there, does not drop the friction by a step."""
+        """(|F_ss(v)| [N], its boundary part π·D·μ_b·L(φ) [N], its viscous part π·D·V(|v|)
+        [N]) from the contact table of ``inputs`` (``steady = "contact"``):
+        F_ss = π·D·(μ_b·L(φ) + V(|v|)) in the stroke direction of v, the asperity load at the
+        speed ``film`` = φ [m/s] the film has formed for (the state ``film_speed``; φ = 0:
+        the table's slowest speed; not given: the steady film, φ = |v|).  At rest (v = 0) the
+        level F_ss,φ(0⁺) that the film leaves: π·D·μ_b times the larger asperity load of both
+        directions at φ (φ not given: at the slowest speed) -- the sliding level's limit
+        v → 0±, so breaking away after a short dwell, the film still there, does not drop the
+        friction by a step; the larger direction, so sliding from rest never starts with more
+        friction than held the seal (with the mean, a pressurised analytic O-ring, whose
+        low-pressure inlet is steeper, chattered between stick and slip in its stronger
+        direction)."""
         table = inputs.contact_table
         if table is None:
             raise InputError("inputs.contact_table: the theta law with steady = 'contact' needs "
@@ -691,25 +693,19 @@ class Theta(FrictionLaw):
         mu = self.params.boundary_friction
         speed = orient * np.asarray(v, dtype=float)
         load, viscous, _ = table.evaluate(speed, dp, temperature)
+        # the film's speed; below the table's slowest speed (or NaN, as the compiled law) and
+        # at rest without a film given: that speed
+        formed = table.speed[0] if film is None else np.asarray(film, dtype=float)
+        formed = np.where(formed > table.speed[0], formed, table.speed[0])
+        formed_up = table.evaluate(formed, dp, temperature)[0]
+        formed_down = table.evaluate(-formed, dp, temperature)[0]
         if film is not None:           # the asperities carry the load of the film's speed
-            film = np.asarray(film, dtype=float)
-            # below the table's slowest speed (or NaN, as the compiled law): that speed
-            formed = np.where(film > table.speed[0], film, table.speed[0])
-            formed_up = table.evaluate(formed, dp, temperature)[0]
-            formed_down = table.evaluate(-formed, dp, temperature)[0]
             load = np.where(speed > 0.0, formed_up, np.where(speed < 0.0, formed_down, load))
-        slow = table.speed[0]
-        up, _, _ = table.evaluate(slow, dp, temperature)
-        down, _, _ = table.evaluate(-slow, dp, temperature)
+        load = np.where(speed != 0.0, load, np.maximum(formed_up, formed_down))
+        viscous = np.where(speed != 0.0, viscous, 0.0)
         circumference = np.pi * diameter
-        steady = circumference * (mu * load + viscous)
-        boundary = circumference * mu * np.maximum(up, down)
-        if film is not None:           # at rest: the load the film leaves the asperities
-            steady = np.where(speed != 0.0, steady,
-                              circumference * mu * np.maximum(formed_up, formed_down))
-        else:
-            steady = np.where(speed != 0.0, steady, boundary)
-        return steady, boundary, circumference * viscous
+        return (circumference * (mu * load + viscous), circumference * mu * load,
+                circumference * viscous)
 
     def level(self, theta, inputs: ContactInputs, v=None, film=None):
         """Friction level [N] without the sign: the break-away force at rest.
@@ -717,8 +713,9 @@ class Theta(FrictionLaw):
         Lumped: g_Θ = F_N·[f_a(1 − Θ) + f_b·Θ] (the viscous γ·b·v comes on top).  Contact:
         |F_ss(v)| + ΔF·(Θ_ss(v) − Θ) with the asperity load of the film's speed ``film``
         (:meth:`contact_steady`), not below the film's viscous part π·D·V(|v|), at rest
-        F_ss,φ(0⁺) − ΔF·Θ (the boundary friction of the asperity load the film φ leaves: the
-        sliding level's limit v → 0±), ΔF = d·F_ss(0⁺) (F_ss(0⁺) at the slowest speed).
+        F_ss,φ(0⁺)·(1 − d·Θ) (the boundary friction of the asperity load the film φ leaves:
+        the sliding level's limit v → 0±); ΔF = d·π·D·μ_b·L(φ), the dwell drop of the
+        boundary part (:func:`~sealsim.friction.kernels.theta_contact_level`).
         """
         p = self.params
         if not self.contact:

@@ -155,6 +155,7 @@ _sides = jit(side_pressures)
 _orient = njit(cache=True)(table_orientation)
 
 
+_speed_cell = jit(_compiled_laws.speed_cell.py_func, inline=True)
 #: the friction laws and the contact friction tables, inlined into the right-hand side (a
 #: call takes and releases a reference to every array it is passed: with three seals a
 #: tenth of an evaluation)
@@ -162,7 +163,9 @@ _law_rates = jit(law_rates.py_func, inline=True, _theta_level=jit(
     _compiled_laws._theta_level.py_func, inline=True,
     contact_steady=jit(_compiled_laws.contact_steady.py_func, inline=True,
                        table_cell=jit(_compiled_laws.table_cell.py_func, inline=True),
-                       speed_cell=jit(_compiled_laws.speed_cell.py_func, inline=True),
+                       speed_cell=_speed_cell,
+                       _film_cell=jit(_compiled_laws._film_cell.py_func, inline=True,
+                                      speed_cell=_speed_cell),
                        cell_sum=jit(_compiled_laws.cell_sum.py_func, inline=True))))
 #: gridded contact maps, inlined into :func:`_seal_loads`
 _grid_point = jit(hermite_grid_point.py_func, inline=True)

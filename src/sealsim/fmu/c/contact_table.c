@@ -11,8 +11,8 @@
  * and forms each coefficient as HermiteGrid does -- the corner node's entry times the cell
  * widths of the differentiated axes, in axis order -- then sums in the kernel's order
  * (contact_table.cell_sums, terms of weight 0 skipped): the same operations, the same bits.
- * contact_steady (one cell search for the sliding speed, the speed the film has formed for
- * and the boundary level at the slowest speed) and theta_contact_level are the ports of
+ * contact_steady (one cell search for the sliding speed and the speed the film has formed
+ * for) and theta_contact_level are the ports of
  * sealsim.friction.compiled.contact_steady and the kernel theta_contact_level of
  * sealsim.friction.kernels; film_speed_rate and film_speed_affine those of the kernels of the
  * same names (the film state of the Theta law on its contact).  Tests compare them all with
@@ -98,51 +98,50 @@ void contact_table_point(const long *row, const double *data, double temperature
     table_cell_sums(row, data, i, wa, j, wb, k, wc, speed > 0.0 ? 0 : 2, 1, load, visc, film);
 }
 
+/* the speed cell of the film's speed film [m/s]; no film (film <= 0 or not a number): the
+ * table's slowest speed, its first node (compiled._film_cell) */
+static long film_cell(const long *row, const double *data, double film, double *wc) {
+    if (film > 0.0) {
+        double c;
+        long k = table_locate(data, row[0] + row[1], row[2], log10(film), &c);
+        table_basis(c, wc);
+        return k;
+    }
+    wc[0] = 1.0;
+    wc[1] = wc[2] = wc[3] = 0.0;
+    return 0;
+}
+
 void contact_steady(const long *row, const double *data, double temperature, double pressure,
                     double oriented_speed, double film, double circumference,
                     double boundary_friction, double *steady, double *boundary,
                     double *viscous) {
-    static const double on_node[4] = {1.0, 0.0, 0.0, 0.0};
-    double a, b, wa[4], wb[4], load = 0.0, visc = 0.0, up, down, unused0, unused1;
+    double a, b, wa[4], wb[4], wc[4], load, visc = 0.0, unused0, unused1;
     long i = table_locate(data, 0, row[0], temperature, &a);       /* one cell search */
     long j = table_locate(data, row[0], row[1], pressure, &b);
+    long k;
     table_basis(a, wa);
     table_basis(b, wb);
     if (oriented_speed != 0.0) {
-        double c, wc[4];
+        double c;
         long direction = oriented_speed > 0.0 ? 0 : 2;
-        long k = table_locate(data, row[0] + row[1], row[2], log10(fabs(oriented_speed)), &c);
+        k = table_locate(data, row[0] + row[1], row[2], log10(fabs(oriented_speed)), &c);
         table_basis(c, wc);
         table_cell_sums(row, data, i, wa, j, wb, k, wc, direction, 0, &load, &visc, &unused0);
         if (film != fabs(oriented_speed)) {   /* the asperity load of the film's speed */
-            if (film > 0.0) {
-                k = table_locate(data, row[0] + row[1], row[2], log10(film), &c);
-                table_basis(c, wc);
-                table_cell_sums(row, data, i, wa, j, wb, k, wc, direction, 0, &load, &unused0,
-                                &unused1);
-            } else {                          /* no film: the table's slowest speed */
-                table_cell_sums(row, data, i, wa, j, wb, 0, on_node, direction, 0, &load,
-                                &unused0, &unused1);
-            }
+            k = film_cell(row, data, film, wc);
+            table_cell_sums(row, data, i, wa, j, wb, k, wc, direction, 0, &load, &unused0,
+                            &unused1);
         }
-    }
-    table_cell_sums(row, data, i, wa, j, wb, 0, on_node, 0, 0, &up, &unused0, &unused1);
-    table_cell_sums(row, data, i, wa, j, wb, 0, on_node, 2, 0, &down, &unused0, &unused1);
-    if (oriented_speed == 0.0) {   /* at rest: the larger load the film leaves of both ways */
+    } else {                   /* at rest: the larger load the film leaves of both ways */
+        double up, down;
+        k = film_cell(row, data, film, wc);
+        table_cell_sums(row, data, i, wa, j, wb, k, wc, 0, 0, &up, &unused0, &unused1);
+        table_cell_sums(row, data, i, wa, j, wb, k, wc, 2, 0, &down, &unused0, &unused1);
         load = fmax(up, down);
-        if (film > 0.0) {
-            double c, wc[4], film_up, film_down;
-            long k = table_locate(data, row[0] + row[1], row[2], log10(film), &c);
-            table_basis(c, wc);
-            table_cell_sums(row, data, i, wa, j, wb, k, wc, 0, 0, &film_up, &unused0,
-                            &unused1);
-            table_cell_sums(row, data, i, wa, j, wb, k, wc, 2, 0, &film_down, &unused0,
-                            &unused1);
-            load = fmax(film_up, film_down);
-        }
     }
     *steady = circumference * (boundary_friction * load + visc);
-    *boundary = circumference * boundary_friction * fmax(up, down);   /* see contact_steady */
+    *boundary = circumference * boundary_friction * load;
     *viscous = circumference * visc;
 }
 
