@@ -408,7 +408,10 @@ class PneumaticSystem:
         for a piston that only settles into its stop: its deflection δ is resolved to 1 µm),
         the chamber mass and energy at supply pressure, 10 for Θ, 1 mm for bristle
         deflections, the speed's 30 m/s for the speed a contact's film has formed for (it
-        enters the friction as the speed does), 100 K for temperatures."""
+        enters the friction as the speed does; the table reads it on a log scale, but 1000×
+        and 1e6× tighter changed the FE example's stroke times by 0.015 %, its friction by
+        0.04 N at the 99th percentile and 0.3 N at most of its 37.6 N range, for 66 and 75 %
+        more steps), 100 K for temperatures."""
         case = self.case
         volume = case.cylinder.dead_volume_cap + self.a1 * self.stroke
         m_scale = float(gas_mass(self.p_supply, volume, self.t_amb))
