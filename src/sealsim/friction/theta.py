@@ -103,7 +103,7 @@ behind Θ_ss while the speed rises gives more friction than steady, less while i
 most the fraction d of the asperities' friction: a quick reversal keeps (1 − d) of the boundary
 friction at the film it carries through zero speed; with ΔF the long dwell's d·μ_b·F_N on top
 of a film that had already lifted the asperities, the friction after a 1 m/s² reversal of a
-2 mm O-ring fell to its film's viscous shear, 0.001 N instead of 0.14 N); at rest the
+2 mm O-ring fell to its film's viscous shear, 0.002 N instead of 0.14 N); at rest the
 break-away force F_ss,φ(0⁺)·(1 − d·Θ) (F_ss,φ(0⁺) = π·D·μ_b·L(φ), the larger direction: the
 sliding level's limit v → 0±, so breaking away after a short dwell, the film still there, does
 not drop the friction by a step) grows with the dwell time, as Θ and φ decay, to the boundary
