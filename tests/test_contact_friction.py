@@ -169,6 +169,30 @@ def test_a_quick_reversal_keeps_the_boundary_friction_of_the_film_it_carries(tab
     assert -force > 0.1
 
 
+def test_a_building_theta_adds_at_most_the_dwell_drop_of_the_asperities_friction(table):
+    # Accelerating, Θ lags below Θ_ss (it builds up over α = 0.1 m, the film over b = 0.8 mm):
+    # with the film formed (φ = |v|) and Θ = 0 the level is the steady one plus
+    # d·π·D·μ_b·L(φ)·Θ_ss -- at most d of the asperities' friction: 0.12 N at 30 mm/s (the
+    # asperities carry 7 % of the load), nothing at 0.3 m/s, where the film carries it.  With
+    # the long dwell's ΔF = d·F_ss(0⁺) it was 2.46 N·Θ_ss on top of the film's shear at any
+    # speed (1.7 and 2.4 N), which kept heipl_rod_seal.toml's rod seal at 1.58 N mean
+    # friction at 25 °C (0.96 N now)
+    law = Theta.from_parameter_set("seal_contact")
+    inputs = inputs_for(table)
+    v = np.array([0.03, 0.3])
+    load, viscous, _ = table.evaluate(v, 3e5, 293.15)
+    boundary = np.pi * 0.012 * 0.2 * load
+    steady = law.steady_force(v, inputs)
+    theta_ss = law.steady_state(v, inputs)[0]
+    building = law.force(np.stack([np.zeros(v.size), v]), v, inputs)
+    assert building == pytest.approx(steady + 0.5 * boundary * theta_ss, rel=1e-12)
+    assert np.all(building - steady <= 0.5 * boundary)
+    assert building[1] - steady[1] < 1e-3
+    # the partials see it: ∂F/∂Θ = −d·π·D·μ_b·L(φ)
+    part = law.partials(np.stack([np.zeros(v.size), v]), v, inputs)
+    assert part.dforce_dz[0] == pytest.approx(-0.5 * boundary, rel=1e-12)
+
+
 def test_the_asperities_carry_the_load_of_the_film_formed_not_of_the_instant_speed(table):
     # At 50 mm/s with the film formed for 5, 50 and 500 mm/s (state film_speed, last): the
     # asperity load is the table's at the film's speed, the viscous shear the one of the
