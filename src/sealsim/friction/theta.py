@@ -99,11 +99,13 @@ carry)::
     F = max(F_ss,φ(v) + ΔF·(Θ_ss(v) − Θ), π·D·V(|v|))·sgn(v),   ΔF = d·π·D·μ_b·L(φ)
 
 with the same state equation: in steady sliding Θ = Θ_ss, φ = |v| and F = F_ss exactly; Θ lagging
-behind Θ_ss while the speed rises gives more friction than steady, less while it falls (by at
-most the fraction d of the asperities' friction: a quick reversal keeps (1 − d) of the boundary
-friction at the film it carries through zero speed; with ΔF the long dwell's d·μ_b·F_N on top
-of a film that had already lifted the asperities, the friction after a 1 m/s² reversal of a
-2 mm O-ring fell to its film's viscous shear, 0.001 N instead of 0.14 N); at rest the
+behind Θ_ss while the speed rises gives more friction than steady, less while it falls, either
+way by at most the fraction d of the asperities' friction, so nothing once the film carries the
+load (a Θ still building up over α adds nothing in full film; a quick reversal keeps (1 − d) of
+the boundary friction at the film it carries through zero speed; with ΔF the long dwell's
+d·μ_b·F_N on top of a film that had already lifted the asperities, the friction after a
+1 m/s² reversal of a 2 mm O-ring fell to its film's viscous shear, 0.002 N instead of 0.14 N,
+and a Θ building up added up to d·μ_b·F_N in full film); at rest the
 break-away force F_ss,φ(0⁺)·(1 − d·Θ) (F_ss,φ(0⁺) = π·D·μ_b·L(φ), the larger direction: the
 sliding level's limit v → 0±, so breaking away after a short dwell, the film still there, does
 not drop the friction by a step) grows with the dwell time, as Θ and φ decay, to the boundary

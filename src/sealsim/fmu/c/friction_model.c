@@ -17,7 +17,8 @@
  * velocity_direction * (p_A >= p_B ? 1 : -1) (velocity_direction +1: a positive v slides the
  * counter surface from side A to side B of the seal; the table's "+" is from the pressurised
  * side to the other), and the level F_ss(|v|) + dF (theta_ss(v) - theta), at rest
- * F_ss(0+) - dF theta, dF = d F_ss(0+) (sealsim.friction.theta, Theta.level).  The asperity
+ * F_ss(0+) (1 - d theta), dF = d pi D mu_b L: the dwell drop d of the boundary part at the
+ * film's speed (sealsim.friction.theta, Theta.level).  The asperity
  * load L is read at the speed phi the contact's film has formed for, the law's last state
  * film_speed: dphi/dt = (|v| - phi)(|v|/b + 1/tau) (kernels.film_speed_rate), so F_ss depends
  * on a state and is computed at each evaluation, not cached with the inputs. */

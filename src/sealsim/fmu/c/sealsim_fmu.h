@@ -73,9 +73,10 @@ void hermite_evaluate(const HermiteTable *t, double a, double b, double *out);
 /* a seal's steady friction table from its contact (contact_table.c): the interpolant of
  * sealsim.friction.contact_table (asperity load [N/m], viscous friction [N/m], film [m] of the
  * stroke direction of speed), the Theta law's steady curve |F_ss(v)| (the asperity load at
- * the speed film [m/s] the contact's film has formed for) and boundary level F_ss(0+) [N] on
- * it, its friction level, and the film's speed: dphi/dt = (|v| - phi)(|v|/b + 1/tau), its
- * exact step phi(t + dt) = a phi + c for v, b held */
+ * the speed film [m/s] the contact's film has formed for) with its boundary part
+ * pi D mu_b L [N] (the base of the dwell drop), its friction level, and the film's speed:
+ * dphi/dt = (|v| - phi)(|v|/b + 1/tau), its exact step phi(t + dt) = a phi + c for v, b
+ * held */
 void contact_table_point(const long *row, const double *data, double temperature,
                          double pressure, double speed, double *load, double *visc,
                          double *film);
