@@ -146,9 +146,10 @@ def test_a_quick_reversal_keeps_the_boundary_friction_of_the_film_it_carries(tab
     # Reversing from 0.1 m/s at 1 m/s² (the 2 mm O-ring at 3 bar, stepped exactly at 20 µs):
     # the film crosses zero speed formed for ~35 mm/s (√(a·b) with its lag over b) and Θ at
     # 0.87, so just after the reversal the asperities carry L(φ) and their friction is lowered
-    # by d·(Θ − Θ_ss): |F| = (1 − d·(Θ − Θ_ss))·π·D·μ_b·L(φ) + π·D·V(|v|), 0.14 N -- below steady at that speed, the
-    # frictional memory of a reversal, but not gone: with the long dwell's drop d·F_ss(0⁺)
-    # on top of the film's lift it was 0.002 N, the film's viscous shear at 20 µm/s
+    # by d·(Θ − Θ_ss): |F| = (1 − d·(Θ − Θ_ss))·π·D·μ_b·L(φ) + π·D·V(|v|), 0.14 N -- below
+    # steady at that speed, the frictional memory of a reversal, but not gone: with the long
+    # dwell's drop d·F_ss(0⁺) on top of the film's lift it was 0.002 N, the film's viscous
+    # shear at 20 µm/s
     law = Theta.from_parameter_set("seal_contact")
     inputs = inputs_for(table)
     z = law.steady_state([0.1], inputs)
