@@ -52,7 +52,7 @@ def c_table(tmp_path_factory):
     so = ctypes.CDLL(str(lib))
     dbl, lng = ctypes.POINTER(ctypes.c_double), ctypes.POINTER(ctypes.c_long)
     so.contact_table_point.argtypes = [lng, dbl] + [ctypes.c_double] * 3 + [dbl] * 3
-    so.contact_steady.argtypes = [lng, dbl] + [ctypes.c_double] * 6 + [dbl] * 3
+    so.contact_steady.argtypes = [lng, dbl] + [ctypes.c_double] * 6 + [dbl] * 4
     so.theta_contact_level.argtypes = [ctypes.c_double] * 7
     so.theta_contact_level.restype = ctypes.c_double
     so.film_speed_rate.argtypes = [ctypes.c_double] * 4
@@ -70,8 +70,9 @@ def test_c_table_lookup_is_the_numba_kernel(c_table):
     t = np.sort(rng.uniform(250.0, 380.0, 5))
     p = np.concatenate([[0.0], np.sort(rng.uniform(1e4, 8e5, 4))])
     u = np.logspace(-7.0, 1.0, 9)
-    values = rng.uniform(0.0, 500.0, (t.size, p.size, u.size, 6))
-    values[..., 4:] *= 1e-8                                  # films [m]
+    values = rng.uniform(0.0, 500.0, (t.size, p.size, u.size, 8))
+    values[..., 4:6] *= 1e-8                                 # films [m]
+    values[..., 6:] *= 2.0                                   # films' decay rates [1/s]
     table = SteadyFrictionTable(t, p, u, values)
     row, data = table.tables()                       # numba: cell coefficients
     nodes_row, nodes = table.node_tables()           # C: node values and derivatives
@@ -91,20 +92,22 @@ def test_c_table_lookup_is_the_numba_kernel(c_table):
         c_table.contact_table_point(row_c, data_c, temp, pressure, speed,
                                     *(ctypes.byref(o) for o in out))
         worst = max(worst, max(abs(o.value - w) for o, w in zip(out[:2], want[:2])) / scale,
-                    abs(out[2].value - want[2]) / np.max(values[..., 4:]))
+                    abs(out[2].value - want[2]) / np.max(values[..., 4:6]))
         par = np.zeros(16)
         par[13], par[15] = 0.3, np.pi * 0.02                 # mu_b, pi D
         # the film formed for: none, the steady film |v|, any speed (inside and beyond the
         # speed axis, and a negative one: the slowest node as none)
         film = (0.0, abs(speed), 10.0 ** rng.uniform(-9, 2), -1e-3)[k % 4]
-        steady, boundary, viscous = contact_steady(par, row, data, temp, pressure, -1.0, speed,
-                                                   film)
-        fss, fb, fv = ctypes.c_double(), ctypes.c_double(), ctypes.c_double()
+        steady, boundary, viscous, decay = contact_steady(par, row, data, temp, pressure,
+                                                          -1.0, speed, film)
+        fss, fb, fv, kappa = (ctypes.c_double() for _ in range(4))
         c_table.contact_steady(row_c, data_c, temp, pressure, -speed, film, par[15], par[13],
-                               ctypes.byref(fss), ctypes.byref(fb), ctypes.byref(fv))
+                               ctypes.byref(fss), ctypes.byref(fb), ctypes.byref(fv),
+                               ctypes.byref(kappa))
         worst = max(worst, abs(fss.value - steady) / (scale * par[15]),
                     abs(fb.value - boundary) / (scale * par[15]),
-                    abs(fv.value - viscous) / (scale * par[15]))
+                    abs(fv.value - viscous) / (scale * par[15]),
+                    abs(kappa.value - decay) / np.max(values[..., 6:]))
         args = (rng.uniform(0, 1), speed, steady, boundary, 0.5, rng.uniform(0, 1), viscous)
         level = c_table.theta_contact_level(*args)
         worst = max(worst, abs(level - theta_contact_level(*args)) / (scale * par[15]))
@@ -119,16 +122,18 @@ def test_c_table_reads_the_load_at_the_film_speed(c_table):
     # base of the dwell drop), at rest no viscous part (1e-12: rounding of the sums)
     t, p, u = np.array([280.0, 320.0]), np.array([0.0, 5e5]), np.logspace(-6.0, 1.0, 8)
     log_u = np.log10(u)[None, None, :]
-    values = np.zeros((t.size, p.size, u.size, 6))
+    values = np.zeros((t.size, p.size, u.size, 8))
     values[..., 0] = values[..., 2] = 100.0 - 10.0 * log_u          # load [N/m], both ways
     values[..., 1] = values[..., 3] = 5.0 + 2.0 * log_u             # viscous [N/m]
+    values[..., 6] = 30.0 + 3.0 * log_u                              # decay rates [1/s]
+    values[..., 7] = 20.0 + 1.0 * log_u
     table = SteadyFrictionTable(t, p, u, values)
     nodes_row, nodes = table.node_tables()
     row_c = np.ascontiguousarray(nodes_row, dtype=np.int64).ctypes.data_as(ctypes.POINTER(
         ctypes.c_long))
     data_c = nodes.ctypes.data_as(ctypes.POINTER(ctypes.c_double))
     circumference, mu = np.pi * 0.02, 0.3
-    out = [ctypes.c_double() for _ in range(3)]
+    out = [ctypes.c_double() for _ in range(4)]
     for speed, film in ((0.1, 0.1), (-0.1, 1e-3), (0.1, 0.0), (2.0, 1e-8), (1e-3, 5.0),
                         (0.0, 1e-3), (0.0, 0.0)):
         c_table.contact_steady(row_c, data_c, 300.0, 2e5, speed, film, circumference, mu,
@@ -139,6 +144,10 @@ def test_c_table_reads_the_load_at_the_film_speed(c_table):
         assert out[0].value == pytest.approx(circumference * (mu * load + viscous), rel=1e-12)
         assert out[1].value == pytest.approx(circumference * mu * load, rel=1e-12)
         assert out[2].value == pytest.approx(circumference * viscous, abs=1e-12)
+        # the film's decay rate at φ: of the stroke direction, at rest the mean of both
+        up, down = 30.0 + 3.0 * np.log10(phi), 20.0 + 1.0 * np.log10(phi)
+        decay = up if speed > 0 else down if speed < 0 else 0.5 * (up + down)
+        assert out[3].value == pytest.approx(decay, rel=1e-12)
 
 
 def test_c_film_speed_is_the_numba_kernel(c_table):
@@ -153,12 +162,14 @@ def test_c_film_speed_is_the_numba_kernel(c_table):
     for k in range(2000):
         v = 0.0 if k % 20 == 0 else rng.choice([-1.0, 1.0]) * 10.0 ** rng.uniform(-8, 1)
         b = 0.0 if k % 17 == 0 else 10.0 ** rng.uniform(-7, -2)
-        tau, dt, phi = 10.0 ** rng.uniform(-2, 1), 10.0 ** rng.uniform(-6, 0), rng.uniform(0, 3)
-        scale = (abs(v) + phi) * (abs(v) / max(b, 1e-6) + 1.0 / tau)
-        worst = max(worst, abs(c_table.film_speed_rate(phi, v, b, tau)
-                               - film_speed_rate(phi, v, b, tau)) / scale)
-        c_table.film_speed_affine(v, dt, b, tau, ctypes.byref(a), ctypes.byref(c))
-        want_a, want_c = film_speed_affine(v, dt, b, tau)
+        # κ, the film's decay rate at rest [1/s]: 0 (no film) and the tables' range
+        decay = 0.0 if k % 13 == 0 else 10.0 ** rng.uniform(-5, 3)
+        dt, phi = 10.0 ** rng.uniform(-6, 0), rng.uniform(0, 3)
+        scale = (abs(v) + phi) * (abs(v) / max(b, 1e-6) + decay) + 1e-300
+        worst = max(worst, abs(c_table.film_speed_rate(phi, v, b, decay)
+                               - film_speed_rate(phi, v, b, decay)) / scale)
+        c_table.film_speed_affine(v, dt, b, decay, ctypes.byref(a), ctypes.byref(c))
+        want_a, want_c = film_speed_affine(v, dt, b, decay)
         worst = max(worst, abs(a.value - want_a), abs(c.value - want_c) / max(abs(v), 1e-300))
     assert worst <= 1e-14
 
@@ -229,16 +240,16 @@ def test_friction_fmu_runs_the_bench_of_sealsim(contact_fmus, bench_case):
 
 def test_friction_fmu_film_state_follows_the_kernels(contact_fmus, bench_case):
     # the friction FMU's state film_speed φ against the kernels at random states and inputs:
-    # the co-simulation step is film_speed_affine (exact for v held), the model-exchange
-    # derivative film_speed_rate, and the force that of sealsim's law with that φ -- the same
-    # formulas on the same table, 1e-9 relative (rounding)
+    # the co-simulation step is film_speed_affine (exact for v and the film's decay rate κ
+    # held, κ at the step's start), the model-exchange derivative film_speed_rate, with κ and
+    # the force those of sealsim's law with that φ -- the same formulas on the same table,
+    # 1e-9 relative (rounding)
     from dataclasses import replace
 
     from sealsim.fmu.cosim import _contact_inputs
     from sealsim.friction.kernels import film_speed_affine, film_speed_rate
 
     case, law, inputs = bench_case
-    tau = law.params.tau
     rng = np.random.default_rng(11)
     path = contact_fmus["friction"]["path"]
     with LoadedFMU(path) as cs, LoadedFMU(path, "me") as me:
@@ -258,10 +269,12 @@ def test_friction_fmu_film_state_follows_the_kernels(contact_fmus, bench_case):
             want = float(law.force(z, np.array([v]), fmu_inputs)[0])
             assert force == pytest.approx(want, rel=1e-9, abs=1e-12)
             me.set_continuous_states([theta, film])
-            assert me.derivatives()[1] == pytest.approx(film_speed_rate(film, v, b, tau),
+            decay = float(law.film_decay(np.array([v]), fmu_inputs, np.array([film]))[0])
+            assert decay > 0.0
+            assert me.derivatives()[1] == pytest.approx(film_speed_rate(film, v, b, decay),
                                                         rel=1e-9, abs=1e-300)
             cs.do_step(0.0, dt)
-            a, c = film_speed_affine(v, dt, b, tau)
+            a, c = film_speed_affine(v, dt, b, decay)
             assert cs.get("film_speed")[0] == pytest.approx(a * film + c, rel=1e-9, abs=1e-300)
         # sliding at a constant speed the film forms for it (φ → |v|) and the force reaches
         # sealsim's steady curve (independent: Theta.steady_force, 1e-9)
@@ -269,7 +282,7 @@ def test_friction_fmu_film_state_follows_the_kernels(contact_fmus, bench_case):
         cs.set(v=0.05, **_contact_inputs(inputs))
         cs.initialize()
         for _ in range(20):
-            cs.do_step(0.0, 100.0 * tau)
+            cs.do_step(0.0, 1.0)
         film, force, fn, b, dp = cs.get("film_speed", "F", "F_N", "b", "dp")
     assert film == pytest.approx(0.05, rel=1e-12)
     fmu_inputs = replace(inputs, normal_force=fn, contact_width=b, pressure_difference=dp)

@@ -42,8 +42,9 @@ with A the cap-end chamber); with it the table's stroke direction is
 ``velocity_direction·(p_A >= p_B ? 1 : −1)·sgn(v)`` ("+": from the pressurised side to the
 other, :func:`sealsim.pneumatic.friction_tables.table_orientation`).  Its asperity load is
 read at the speed φ the contact's film has formed for, the state ``film_speed``
-(dφ/dt = (|v| − φ)·(|v|/b + 1/τ), :func:`sealsim.friction.kernels.film_speed_rate`; start
-value 0: no film), stepped exactly (:func:`~sealsim.friction.kernels.film_speed_affine`).
+(dφ/dt = (|v| − φ)·(|v|/b + κ(φ)), :func:`sealsim.friction.kernels.film_speed_rate`, κ the
+film's decay rate at rest from the table; start value 0: no film), stepped exactly for κ held
+at the step's start (:func:`~sealsim.friction.kernels.film_speed_affine`).
 
 A new law parameter needs its entry (unit, description, bounds) in ``_PARAMETERS`` and
 ``_LAW_PARAMETERS`` below, which makes it an FMU parameter ``VR_<NAME>``, and its use in

@@ -30,7 +30,8 @@ from numba import njit
 
 from sealsim.errors import InputError
 from sealsim.friction import kernels as fk
-from sealsim.friction.contact_table import _ON_NODE, cell_sum, speed_cell, table_cell
+from sealsim.friction.contact_table import (FILM_DECAY, _ON_NODE, cell_sum, speed_cell,
+                                            table_cell)
 
 __all__ = ["LAW_CODES", "NO_TABLE", "contact_steady", "law_parameters", "law_rates", "law_step",
            "mass_step"]
@@ -101,14 +102,16 @@ def law_parameters(law, sliding_diameter: float = 0.0) -> np.ndarray:
 
 @njit(cache=True)
 def contact_steady(par, frow, fdata, temp, dp, orient, vv, film):
-    """(|F_ss| [N], its boundary part π·D·μ_b·L(φ) [N], π·D·V(|v|) [N]) of a Θ law on its
-    seal's contact table (:meth:`sealsim.friction.theta.Theta.contact_steady`):
-    π·D·(μ_b·L(φ) + V(|v|)) in the stroke direction of orient·v, the asperity load L at the
-    speed ``film`` = φ [m/s] the film has formed for
+    """(|F_ss| [N], its boundary part π·D·μ_b·L(φ) [N], π·D·V(|v|) [N], the film's decay rate
+    κ(φ) [1/s]) of a Θ law on its seal's contact table
+    (:meth:`sealsim.friction.theta.Theta.contact_steady` and ``film_decay``):
+    π·D·(μ_b·L(φ) + V(|v|)) in the stroke direction of orient·v, the asperity load L and the
+    decay rate κ at the speed ``film`` = φ [m/s] the film has formed for
     (:func:`~sealsim.friction.kernels.film_speed_rate`; φ = |v| in steady sliding; no film,
     φ = 0: the table's slowest speed, its first node), the viscous shear V at the sliding
     speed; at rest (v = 0) π·D·μ_b times the larger asperity load of both directions at φ
-    (the level the film leaves, the sliding level's limit v → 0±) -- the table lookups of
+    (the level the film leaves, the sliding level's limit v → 0±) and the mean κ of both
+    directions -- the table lookups of
     :func:`~sealsim.friction.contact_table.contact_table_point` sharing one cell search."""
     i, wa, j, wb = table_cell(frow, fdata, temp, dp)       # one cell search for all
     speed = orient * vv
@@ -120,13 +123,16 @@ def contact_steady(par, frow, fdata, temp, dp, orient, vv, film):
         if film != abs(speed):
             k, wc = _film_cell(frow, fdata, film)
         load = cell_sum(frow, fdata, i, wa, j, wb, k, wc, direction)
+        decay = cell_sum(frow, fdata, i, wa, j, wb, k, wc, FILM_DECAY + direction // 2)
     else:                           # at rest: the larger load the film leaves of both directions
         k, wc = _film_cell(frow, fdata, film)
         load = max(cell_sum(frow, fdata, i, wa, j, wb, k, wc, 0),
                    cell_sum(frow, fdata, i, wa, j, wb, k, wc, 2))
+        decay = 0.5 * (cell_sum(frow, fdata, i, wa, j, wb, k, wc, FILM_DECAY)
+                       + cell_sum(frow, fdata, i, wa, j, wb, k, wc, FILM_DECAY + 1))
     circumference, mu = par[TH_CIRCUMFERENCE], par[TH_MU_B]
     return (circumference * (mu * load + visc), circumference * mu * load,
-            circumference * visc)
+            circumference * visc, decay)
 
 
 @njit(cache=True)
@@ -143,11 +149,18 @@ def _theta_level(par, th, vv, fn, temp, frow, fdata, dp, orient, film):
     """Friction level of the Θ law [N]: lumped g_Θ, or on the contact table with the film
     formed for the speed ``film`` [m/s] (:func:`sealsim.friction.kernels.theta_contact_level`)."""
     if par[TH_CONTACT] > 0.0:
-        fss, fb, fv = contact_steady(par, frow, fdata, temp, dp, orient, vv, film)
-        return fk.theta_contact_level(th, vv, fss, fb, par[TH_DROP],
-                                      fk.theta_steady(vv, par[0], par[1], fn, par[5], par[6]),
-                                      fv)
+        return _theta_contact(par, th, vv, fn, temp, frow, fdata, dp, orient, film)[0]
     return fk.theta_friction_level(th, fn, par[2], par[3])
+
+
+@njit(cache=True)
+def _theta_contact(par, th, vv, fn, temp, frow, fdata, dp, orient, film):
+    """(friction level [N], the film's decay rate κ [1/s]) of the Θ law on its contact table
+    (:func:`contact_steady`, :func:`sealsim.friction.kernels.theta_contact_level`)."""
+    fss, fb, fv, decay = contact_steady(par, frow, fdata, temp, dp, orient, vv, film)
+    return fk.theta_contact_level(th, vv, fss, fb, par[TH_DROP],
+                                  fk.theta_steady(vv, par[0], par[1], fn, par[5], par[6]),
+                                  fv), decay
 
 
 @njit(cache=True)
@@ -190,12 +203,13 @@ def law_rates(law, par, z, off, vv, fn, b, pa, pb, temp, dy, col, frow, fdata, d
         gamma = 0.0 if contact else _theta_gamma(par, temp)   # the table holds the viscous part
         th = z[off, col]
         fn = max(fn, 1e-9)
-        film = 0.0
         if contact:                             # the film's speed, the law's last state
             last = off + (2 if par[7] > 0.0 else 1)
             film = z[last, col]
-            dy[last, col] = fk.film_speed_rate(film, vv, b, par[0])
-        level = _theta_level(par, th, vv, fn, temp, frow, fdata, dp, orient, film)
+            level, decay = _theta_contact(par, th, vv, fn, temp, frow, fdata, dp, orient, film)
+            dy[last, col] = fk.film_speed_rate(film, vv, b, decay)
+        else:
+            level = fk.theta_friction_level(th, fn, par[2], par[3])
         dy[off, col] = fk.theta_rate(th, vv, par[0], par[1], fn, par[5], par[6])
         if par[7] > 0.0:                        # bristles
             zdot = fk.lugre_bristle_rate(z[off + 1, col], vv, par[7], level)
@@ -245,7 +259,10 @@ def law_step(law, par, z0, v, dt, contact, frow, fdata, z1):
         film_mid = 0.0
         if par[TH_CONTACT] > 0.0:               # the film's speed (the law's last state)
             last = 2 if par[7] > 0.0 else 1
-            a, b = fk.film_speed_affine(v, dt, contact[K_WIDTH], par[0])
+            # the film's decay rate frozen at the step's start
+            decay = contact_steady(par, frow, fdata, contact[K_TEMP], contact[K_DP],
+                                   contact[K_ORIENT], v, z0[last])[3]
+            a, b = fk.film_speed_affine(v, dt, contact[K_WIDTH], decay)
             z1[last] = a * z0[last] + b
             film_mid = 0.5 * (z0[last] + z1[last])
         if par[7] > 0.0:        # bristles: the exact step with the level of the mid-state

@@ -18,6 +18,9 @@ viscous_pos         N/m     viscous friction ∫ η·u/h + h/2·(1 − α)·dp/d
 asperity_load_neg   N/m     the same for the other direction
 viscous_neg         N/m
 film_pos, film_neg  m       film at the pressure maximum h*
+film_decay_pos      1/s     decay rate κ of the speed φ the film stands for when the seal
+film_decay_neg              stops, dφ/dt = −κ·φ: the film squeezed out by the load it
+                            carries (:func:`sealsim.tribology.squeeze_film.film_speed_decay_rate`)
 ==================  ======  ==========================================================
 
 over the axes temperature [K], pressure difference [Pa] and log10 of the speed [m/s].  The
@@ -50,7 +53,9 @@ __all__ = ["TABLE_VARIABLES", "SteadyFrictionTable", "cell_sum", "contact_table_
 
 #: variables of the table, in the order of its last axis (see the module docstring)
 TABLE_VARIABLES = ("asperity_load_pos", "viscous_pos", "asperity_load_neg", "viscous_neg",
-                   "film_pos", "film_neg")
+                   "film_pos", "film_neg", "film_decay_pos", "film_decay_neg")
+#: index of the film-decay column of the + direction (the − direction's is the next)
+FILM_DECAY = 6
 #: layout row: n_T, n_p, n_u, n_vars (the data array holds the three axes, then the cell
 #: coefficients, shape (n_T - 1, n_p - 1, n_u - 1, 4, 4, 4, n_vars), C order)
 _ROW = 4
@@ -150,6 +155,22 @@ def _table_many(row, data, temperature, pressure, speed, load, visc, film):
                                                         speed[n])
 
 
+@njit(cache=True)
+def _decay_many(row, data, temperature, pressure, speed, out):
+    """The film-decay rate κ [1/s] of the stroke direction of each speed (at rest: the mean of
+    both directions) at the film's speed |speed| (clamped to the axes)."""
+    for n in range(speed.shape[0]):
+        i, wa, j, wb = table_cell(row, data, temperature[n], pressure[n])
+        if speed[n] != 0.0:
+            k, wc = speed_cell(row, data, speed[n])
+            out[n] = cell_sum(row, data, i, wa, j, wb, k, wc,
+                              FILM_DECAY + (0 if speed[n] > 0.0 else 1))
+        else:
+            k, wc = 0, _ON_NODE
+            out[n] = 0.5 * (cell_sum(row, data, i, wa, j, wb, k, wc, FILM_DECAY)
+                            + cell_sum(row, data, i, wa, j, wb, k, wc, FILM_DECAY + 1))
+
+
 @dataclass
 class SteadyFrictionTable:
     """A seal's steady friction per unit circumference over (T, Δp, log10 u) and direction.
@@ -163,14 +184,14 @@ class SteadyFrictionTable:
     speed : array_like
         Speed axis [m/s], > 0, ascending (>= 2 values; interpolated in log10 u).
     values : numpy.ndarray
-        Shape (n_T, n_p, n_u, 6): :data:`TABLE_VARIABLES` per unit circumference.
+        Shape (n_T, n_p, n_u, 8): :data:`TABLE_VARIABLES` per unit circumference.
     attrs : dict
         Where the table came from (JSON-friendly), stored with it.
 
     Examples
     --------
     >>> t, p, u = [290.0, 300.0], [0.0, 1e5], [1e-3, 1e-2, 1e-1]
-    >>> values = np.zeros((2, 2, 3, 6))
+    >>> values = np.zeros((2, 2, 3, 8))
     >>> values[..., 0] = values[..., 2] = 100.0        # asperities carry 100 N/m
     >>> values[..., 1] = values[..., 3] = np.array(u) * 50.0
     >>> table = SteadyFrictionTable(t, p, u, values)
@@ -250,6 +271,18 @@ class SteadyFrictionTable:
                     *(o.reshape(-1) for o in out))
         return tuple(out)
 
+    def film_decay(self, speed, pressure, temperature):
+        """Decay rate κ [1/s] at rest of the film formed for the signed speed [m/s] (its
+        stroke direction; speed 0: the mean of both directions at the slowest speed) at
+        pressure differences [Pa] and temperatures [K] (broadcast; clamped to the axes)."""
+        row, data = self.tables()
+        u, p, t = (np.array(a, dtype=float) for a in np.broadcast_arrays(
+            np.asarray(speed, dtype=float), np.asarray(pressure, dtype=float),
+            np.asarray(temperature, dtype=float)))
+        out = np.empty(u.shape)
+        _decay_many(row, data, t.reshape(-1), p.reshape(-1), u.reshape(-1), out.reshape(-1))
+        return out
+
     def steady_force(self, speed, pressure, temperature, diameter, boundary_friction):
         """Steady friction force F = π·D·(μ_b·load + viscous)·sgn(v) [N]."""
         load, viscous, _ = self.evaluate(speed, pressure, temperature)
@@ -263,7 +296,7 @@ class SteadyFrictionTable:
         import xarray as xr
 
         dims = ("temperature", "pressure", "speed")
-        units = {"asperity_load": "N/m", "viscous": "N/m", "film": "m"}
+        units = {"asperity_load": "N/m", "viscous": "N/m", "film": "m", "film_decay": "1/s"}
         variables = {name: (dims, self.values[..., k],
                             {"units": units[name.rsplit("_", 1)[0]]})
                      for k, name in enumerate(TABLE_VARIABLES)}

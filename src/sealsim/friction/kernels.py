@@ -46,9 +46,10 @@ kernel (arguments)                                 returns
 ``theta_contact_level(th, v, fss, ...)``           level of the Θ law on a contact table:
                                                    max(fss + d·fb·(Θ_ss − Θ), fv), at rest
                                                    fss − d·fb·Θ
-``film_speed_rate(phi, v, b, tau)``                dφ/dt = (|v| − φ)·(|v|/b + 1/τ): the speed
+``film_speed_rate(phi, v, b, decay)``              dφ/dt = (|v| − φ)·(|v|/b + κ): the speed
                                                    the contact's film has formed for
-``film_speed_affine(v, dt, b, tau)``               (a, c): φ(t+dt) = a·φ + c, exact for constant v
+``film_speed_affine(v, dt, b, decay)``             (a, c): φ(t+dt) = a·φ + c, exact for constant
+                                                   v and κ
 ``walther_viscosity(t, wa, wb)``                   ν(T) [mm²/s], ASTM D341 (Walther)
 ``walther_viscosity_ratio(t, tref, wa, wb)``       ν(T)/ν(T_ref), ASTM D341 (Walther)
 =================================================  ===============================================
@@ -68,6 +69,9 @@ References
    Tribol. Int. 32(2), 117-123, 1999 (the film formed at the inlet moves through the contact
    with little change: the film is the one of the entrainment speed of the time its fluid
    entered the inlet, a delay of the contact's transit time; hard EHD contacts).
+.. [7] O. Reynolds, Phil. Trans. R. Soc. Lond. 177 (1886) 157-234; B. J. Hamrock,
+   S. R. Schmid, B. O. Jacobson, Fundamentals of Fluid Film Lubrication, 2nd ed., 2004
+   (squeeze film between parallel surfaces).
 """
 
 from __future__ import annotations
@@ -345,24 +349,29 @@ FILM_MIN_LENGTH = 1e-6
 
 
 @kernel
-def film_speed_rate(phi, v, b, tau):
-    """dφ/dt = (|v| − φ)·(|v|/b + 1/τ) [m/s²]: the speed φ [m/s] that the contact's film has
+def film_speed_rate(phi, v, b, decay):
+    """dφ/dt = (|v| − φ)·(|v|/b + κ) [m/s²]: the speed φ [m/s] that the contact's film has
     formed for follows the sliding speed |v| [m/s] over a sliding distance of the contact width
     b [m] (at least :data:`FILM_MIN_LENGTH`; the fluid at the contact's pressure maximum
     entered its inlet one contact width earlier, Sugimura et al. 1998, 1999 [6]_: a
-    first-order lag over that distance is sealsim's simplest form of their delay) and decays
-    at rest with the Θ law's τ [s] (the film squeezed out during a dwell).  Steady: φ = |v|."""
+    first-order lag over that distance is sealsim's simplest form of their delay) and, at rest,
+    falls as the seal squeezes the film out: dφ/dt = −κ·φ with the decay rate κ [1/s] of the
+    film formed for φ (Reynolds' squeeze film, :mod:`sealsim.tribology.squeeze_film` [7]_; read
+    from the seal's friction table at φ).  κ also speeds the film's return to the steady one
+    while sliding (the squeeze flow of a film thicker than the inlet makes, less of one that
+    is thinner: the linearised transient Reynolds equation).  Steady: φ = |v|."""
     speed = abs(v)
-    return (speed - phi) * (speed / max(b, FILM_MIN_LENGTH) + 1.0 / tau)
+    return (speed - phi) * (speed / max(b, FILM_MIN_LENGTH) + decay)
 
 
 @kernel
-def film_speed_affine(v, dt, b, tau):
-    """(a, c) with φ(t + dt) = a·φ(t) + c for v and b held over dt [s] (exact solution of
-    :func:`film_speed_rate`): a = exp(−(|v|/b + 1/τ)·dt), c = |v|·(1 − a)."""
+def film_speed_affine(v, dt, b, decay):
+    """(a, c) with φ(t + dt) = a·φ(t) + c for v, b and the decay rate κ [1/s] held over
+    dt [s] (exact solution of :func:`film_speed_rate` with κ frozen, e.g. at the step's start):
+    a = exp(−(|v|/b + κ)·dt), c = |v|·(1 − a)."""
     speed = abs(v)
-    decay = -math.expm1(-(speed / max(b, FILM_MIN_LENGTH) + 1.0 / tau) * dt)
-    return 1.0 - decay, speed * decay
+    rate = -math.expm1(-(speed / max(b, FILM_MIN_LENGTH) + decay) * dt)
+    return 1.0 - rate, speed * rate
 
 
 @kernel
@@ -562,15 +571,15 @@ def _loop_theta_contact_level(th, v, fss, fb, d, thss, fv, out):
 
 
 @kernel
-def _loop_film_speed_rate(phi, v, b, tau, out):
+def _loop_film_speed_rate(phi, v, b, decay, out):
     for i in range(out.shape[0]):
-        out[i] = film_speed_rate(_at(phi, i), _at(v, i), _at(b, i), _at(tau, i))
+        out[i] = film_speed_rate(_at(phi, i), _at(v, i), _at(b, i), _at(decay, i))
 
 
 @kernel
-def _loop_film_speed_affine(v, dt, b, tau, a, c):
+def _loop_film_speed_affine(v, dt, b, decay, a, c):
     for i in range(a.shape[0]):
-        a[i], c[i] = film_speed_affine(_at(v, i), _at(dt, i), _at(b, i), _at(tau, i))
+        a[i], c[i] = film_speed_affine(_at(v, i), _at(dt, i), _at(b, i), _at(decay, i))
 
 
 @kernel

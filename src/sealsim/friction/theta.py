@@ -644,7 +644,11 @@ class Theta(FrictionLaw):
     def has_stiction(self) -> bool:  # type: ignore[override]
         return not self.bristles
 
-    affine = True
+    @property
+    def affine(self) -> bool:  # type: ignore[override]
+        """A trajectory is an affine scan of the states, except on the contact: the film's
+        decay rate depends on the film (:meth:`film_decay`), stepped one step at a time."""
+        return not self.contact
 
     # -- inputs --------------------------------------------------------------------------
     def _fn(self, inputs: ContactInputs):
@@ -709,6 +713,27 @@ class Theta(FrictionLaw):
         return (circumference * (mu * load + viscous), circumference * mu * load,
                 circumference * viscous)
 
+    def film_decay(self, v, inputs: ContactInputs, film):
+        """Decay rate κ [1/s] of the film formed for the speed ``film`` = φ [m/s] (the state
+        ``film_speed``) from the seal's friction table (``steady = "contact"``): dφ/dt = −κ·φ
+        at rest (Reynolds' squeeze film, :mod:`sealsim.tribology.squeeze_film`), read in the
+        stroke direction of v, at rest the mean of both directions; φ below the table's
+        slowest speed (or no film): that speed."""
+        table = inputs.contact_table
+        if table is None:
+            self.contact_steady(v, inputs)          # the InputError that names what is missing
+        temperature = inputs.require("temperature", "theta (contact)", positive=True)
+        dp = inputs.pressure_difference
+        if dp is None:
+            dp = np.abs(np.asarray(inputs.pressure_a, float) - np.asarray(inputs.pressure_b,
+                                                                           float))
+        speed = np.asarray(inputs.table_orientation, dtype=float) * np.asarray(v, dtype=float)
+        formed = np.asarray(film, dtype=float)
+        formed = np.where(formed > table.speed[0], formed, table.speed[0])
+        up = table.film_decay(formed, dp, temperature)
+        down = table.film_decay(-formed, dp, temperature)
+        return np.where(speed > 0.0, up, np.where(speed < 0.0, down, 0.5 * (up + down)))
+
     def level(self, theta, inputs: ContactInputs, v=None, film=None):
         """Friction level [N] without the sign: the break-away force at rest.
 
@@ -750,7 +775,8 @@ class Theta(FrictionLaw):
         return z[-1] if self.contact else None
 
     def _film_rate(self, z, v, inputs):
-        return apply(_k._loop_film_speed_rate, z[-1], v, self._b(inputs), self.params.tau)
+        return apply(_k._loop_film_speed_rate, z[-1], v, self._b(inputs),
+                     self.film_decay(v, inputs, z[-1]))
 
     def derivatives(self, z, v, inputs: ContactInputs = NO_INPUTS):
         v = as_velocity(v)
@@ -808,10 +834,14 @@ class Theta(FrictionLaw):
             dg_df = (self.level(z[0], inputs, v, film + hf)
                      - self.level(z[0], inputs, v, np.maximum(film - hf, 0.0))) / (
                          film + hf - np.maximum(film - hf, 0.0))
-            # the film's speed: dφ/dt = (|v| − φ)·(|v|/b + 1/τ)
+            # the film's speed: dφ/dt = (|v| − φ)·(|v|/b + κ(φ)), κ's slope by central
+            # differences of the table
             length = np.maximum(self._b(inputs), _k.FILM_MIN_LENGTH)
-            rate = np.abs(v) / length + 1.0 / p.tau
-            jac[-1, -1] = -rate
+            rate = np.abs(v) / length + self.film_decay(v, inputs, film)
+            low = np.maximum(film - hf, 0.0)
+            dk_df = (self.film_decay(v, inputs, film + hf)
+                     - self.film_decay(v, inputs, low)) / (film + hf - low)
+            jac[-1, -1] = -rate + (np.abs(v) - film) * dk_df
             dzdv[-1] = np.sign(v) * (rate + (np.abs(v) - film) / length)
         else:
             dlevel = fn * (p.f_b - p.f_a)                       # ∂g_Θ/∂Θ
@@ -840,8 +870,10 @@ class Theta(FrictionLaw):
         return Partials(jac, dzdv, dfdz, np.broadcast_to(s1 * d_zv + viscous_dv, shape).copy())
 
     def _film_step(self, z_film, v, dt, inputs):
-        a, c = apply(_k._loop_film_speed_affine, v, dt, self._b(inputs), self.params.tau,
-                     outputs=2)
+        """φ after dt [s], exact for v, b and the film's decay rate κ held (κ frozen at the
+        step's start, as the compiled ``law_step``)."""
+        a, c = apply(_k._loop_film_speed_affine, v, dt, self._b(inputs),
+                     self.film_decay(v, inputs, z_film), outputs=2)
         return a * z_film + c
 
     def step(self, z, v, dt, inputs: ContactInputs = NO_INPUTS):
@@ -864,18 +896,10 @@ class Theta(FrictionLaw):
         a, b = _theta_affine(v, dt[:, None], *self._rate_args(inputs))
         theta = affine_scan(a, b, z0[0])
         states = [theta]
-        film = film_mid = None
-        if self.contact:
-            a_f, c_f = apply(_k._loop_film_speed_affine, v, dt[:, None], self._b(inputs),
-                             self.params.tau, outputs=2)
-            film = affine_scan(a_f, c_f, z0[-1])
-            film_mid = 0.5 * (film[:-1] + film[1:])
         if self.bristles:
-            g_mid = self.level(0.5 * (theta[:-1] + theta[1:]), inputs, v, film_mid)
+            g_mid = self.level(0.5 * (theta[:-1] + theta[1:]), inputs, v)
             a_z, b_z = _lugre_affine(v, dt[:, None], self.params.bristle_stiffness, g_mid)
             states.append(affine_scan(a_z, b_z, z0[1]))
-        if self.contact:
-            states.append(film)
         return np.stack(np.broadcast_arrays(*states), axis=1)
 
     def steady_state(self, v, inputs: ContactInputs = NO_INPUTS):

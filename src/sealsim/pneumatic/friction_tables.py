@@ -33,6 +33,11 @@ contacts are thicker than their base oil's at low speed and approach it at highe
 (Cann, Tribol. Int. 29 (1996); Vengudusamy, Enekes & Spallek, Tribol. Int. 129 (2019) 323:
 "all greases form a thicker film than the base oil at low speeds"): the default factor 1 is the
 base oil, the lower bound of those measurements.
+
+**At rest.**  Per speed the table also keeps how fast the film formed for it drains when the
+seal stops (:mod:`sealsim.tribology.squeeze_film`: Reynolds' squeeze film under the load the
+fluid carries), as the decay rate κ of the film's speed, dφ/dt = −κ·φ, which the friction
+laws' film state uses at rest.
 """
 
 from __future__ import annotations
@@ -46,12 +51,13 @@ from pathlib import Path
 import numpy as np
 
 from sealsim.errors import InputError
-from sealsim.friction.contact_table import TABLE_VARIABLES, SteadyFrictionTable
+from sealsim.friction.contact_table import FILM_DECAY, TABLE_VARIABLES, SteadyFrictionTable
 from sealsim.pneumatic.contact_maps import (AnalyticContactMap, FEContactMap, default_cache_dir,
                                            energised_contact_pressure)
 from sealsim.tribology.contact import DEFAULT_ROUGHNESS_DENSITY, DEFAULT_ROUGHNESS_SLOPE
 from sealsim.tribology.mixed_lubrication import reciprocating_friction
 from sealsim.tribology.rubber_friction import DEFAULT_ASPERITY_WAVELENGTH
+from sealsim.tribology.squeeze_film import film_speed_decay_rate
 
 __all__ = ["ContactTribology", "LAW_TABLE_FIELDS", "TABLE_SPEEDS", "build_friction_table",
            "contact_profiles", "friction_over_contact_force", "friction_table_for",
@@ -61,7 +67,7 @@ __all__ = ["ContactTribology", "LAW_TABLE_FIELDS", "TABLE_SPEEDS", "build_fricti
 #: 5: the inlet gradient no longer drops the secant ending on the pressure maximum for a profile
 #: at negative z, e.g. the − stroke of a contact at z > 0; 6: with a limited supply, each
 #: contact zone is fed by the layer the zone before it leaves)
-TABLE_VERSION = 6
+TABLE_VERSION = 7
 #: Speeds of a table [m/s]: 1e-7 to 10 m/s, six per decade
 TABLE_SPEEDS = np.logspace(-7.0, 1.0, 49)
 #: Largest temperature step of a table [K]: FE profiles are interpolated linearly between the
@@ -329,6 +335,7 @@ def build_friction_table(contact_map, tribology: ContactTribology,
                 if k == 1 and analytic and pressures[j] <= 0.0:    # symmetric: one film
                     values[i, j, :, 2:4] = values[i, j, :, 0:2]
                     values[i, j, :, 5] = values[i, j, :, 4]
+                    values[i, j, :, FILM_DECAY + 1] = values[i, j, :, FILM_DECAY]
                     continue
                 r = reciprocating_friction(z, p, speeds, eta, tribology.roughness, modulus,
                                            1.0, direction, sealed_pressure=pressures[j],
@@ -336,6 +343,8 @@ def build_friction_table(contact_map, tribology: ContactTribology,
                 values[i, j, :, 2 * k] = r.boundary          # μ_b = 1: the asperity load
                 values[i, j, :, 2 * k + 1] = r.viscous
                 values[i, j, :, 4 + k] = np.where(np.isfinite(r.film), r.film, 0.0)
+                values[i, j, :, FILM_DECAY + k] = film_speed_decay_rate(speeds, r.film,
+                                                                        r.squeeze)
     attrs = {"tribology": asdict(tribology), "table_version": TABLE_VERSION,
              "contact_map": contact_map.describe()}
     return SteadyFrictionTable(temps, pressures, speeds, values, attrs)

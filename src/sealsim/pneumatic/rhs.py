@@ -159,8 +159,8 @@ _speed_cell = jit(_compiled_laws.speed_cell.py_func, inline=True)
 #: the friction laws and the contact friction tables, inlined into the right-hand side (a
 #: call takes and releases a reference to every array it is passed: with three seals a
 #: tenth of an evaluation)
-_law_rates = jit(law_rates.py_func, inline=True, _theta_level=jit(
-    _compiled_laws._theta_level.py_func, inline=True,
+_law_rates = jit(law_rates.py_func, inline=True, _theta_contact=jit(
+    _compiled_laws._theta_contact.py_func, inline=True,
     contact_steady=jit(_compiled_laws.contact_steady.py_func, inline=True,
                        table_cell=jit(_compiled_laws.table_cell.py_func, inline=True),
                        speed_cell=_speed_cell,

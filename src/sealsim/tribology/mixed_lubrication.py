@@ -92,6 +92,7 @@ from sealsim.tribology.inverse_hydrodynamics import (
     max_inlet_gradient,
     starved_film,
 )
+from sealsim.tribology.squeeze_film import squeeze_resistance, squeeze_thinning_rate
 
 __all__ = ["ContactFriction", "contact_zone_slices", "ihl_load_share", "reciprocating_friction"]
 
@@ -288,6 +289,10 @@ class ContactFriction(NamedTuple):
         Steepest inlet gradient of the main zone w_max [Pa/m].
     film_profile : numpy.ndarray
         Film h(z) [m] at every point of the profile (inf outside the contact).
+    squeeze : numpy.ndarray
+        The film's relative thinning rate when sliding stops, s = −(dh*/dt)/h* [1/s]: the
+        load the film carries, (1 − α)·F'_N, squeezing it out of all zones at once
+        (:func:`~.squeeze_film.squeeze_thinning_rate`; 0 where the asperities carry it all).
     """
 
     friction: np.ndarray
@@ -299,6 +304,7 @@ class ContactFriction(NamedTuple):
     flow: np.ndarray
     max_gradient: float
     film_profile: np.ndarray
+    squeeze: np.ndarray
 
 
 def reciprocating_friction(position, pressure, speed, viscosity, roughness, asperity_modulus,
@@ -414,8 +420,10 @@ def reciprocating_friction(position, pressure, speed, viscosity, roughness, aspe
     if main is None:
         zero = np.zeros(n)
         return ContactFriction(zero, zero, zero, zero, np.full(n, np.inf), np.full(n, np.inf),
-                               zero, 0.0, h_profile)
+                               zero, 0.0, h_profile, zero)
     _, film, h0, w_max = main
+    squeeze = squeeze_thinning_rate(total_load - share_load, eta,
+                                    squeeze_resistance(z, h_profile), film)
     return ContactFriction(boundary + viscous, boundary, viscous,
                            share_load / total_load if total_load > 0 else share_load,
-                           film, h0, 0.5 * u * film, w_max, h_profile)
+                           film, h0, 0.5 * u * film, w_max, h_profile, squeeze)

@@ -12,7 +12,7 @@
  * widths of the differentiated axes, in axis order -- then sums in the kernel's order
  * (contact_table.cell_sums, terms of weight 0 skipped): the same operations, the same bits.
  * contact_steady (one cell search for the sliding speed and the speed the film has formed
- * for) and theta_contact_level are the ports of
+ * for; also the film's decay rate at rest, dphi/dt = -decay phi) and theta_contact_level are the ports of
  * sealsim.friction.compiled.contact_steady and the kernel theta_contact_level of
  * sealsim.friction.kernels; film_speed_rate and film_speed_affine those of the kernels of the
  * same names (the film state of the Theta law on its contact).  Tests compare them all with
@@ -83,6 +83,42 @@ static void table_cell_sums(const long *row, const double *data, long i, const d
     }
 }
 
+/* contact_table.cell_sum on the node layout for one variable var (the order and the
+ * operations of table_cell_sums) */
+static double table_cell_value(const long *row, const double *data, long i, const double *wa,
+                               long j, const double *wb, long k, const double *wc, long var) {
+    long nt = row[0], npr = row[1], nu = row[2], nv = row[3];
+    double h0 = data[i + 1] - data[i];
+    double h1 = data[nt + j + 1] - data[nt + j];
+    double h2 = data[nt + npr + k + 1] - data[nt + npr + k];
+    const double *nodes = data + nt + npr + nu;
+    double total = 0.0;
+    for (int q0 = 0; q0 < 4; q0++) {
+        double w0 = wa[q0];
+        if (w0 == 0.0) continue;
+        for (int q1 = 0; q1 < 4; q1++) {
+            double w01 = w0 * wb[q1];
+            if (w01 == 0.0) continue;
+            for (int q2 = 0; q2 < 4; q2++) {
+                double w = w01 * wc[q2];
+                if (w == 0.0) continue;
+                int mask = (q0 & 1) | (q1 & 1) << 1 | (q2 & 1) << 2;
+                const double *node = nodes + ((((i + (q0 >> 1)) * npr + j + (q1 >> 1)) * nu +
+                                               k + (q2 >> 1)) * 8 + mask) * nv;
+                double cv = node[var];
+                if (q0 & 1) cv *= h0;
+                if (q1 & 1) cv *= h1;
+                if (q2 & 1) cv *= h2;
+                total += w * cv;
+            }
+        }
+    }
+    return total;
+}
+
+/* contact_table.FILM_DECAY: the column of the film's decay rate of the + direction */
+#define FILM_DECAY 6
+
 void contact_table_point(const long *row, const double *data, double temperature,
                          double pressure, double speed, double *load, double *visc,
                          double *film) {
@@ -115,7 +151,7 @@ static long film_cell(const long *row, const double *data, double film, double *
 void contact_steady(const long *row, const double *data, double temperature, double pressure,
                     double oriented_speed, double film, double circumference,
                     double boundary_friction, double *steady, double *boundary,
-                    double *viscous) {
+                    double *viscous, double *decay) {
     double a, b, wa[4], wb[4], wc[4], load, visc = 0.0, unused0, unused1;
     long i = table_locate(data, 0, row[0], temperature, &a);       /* one cell search */
     long j = table_locate(data, row[0], row[1], pressure, &b);
@@ -133,12 +169,15 @@ void contact_steady(const long *row, const double *data, double temperature, dou
             table_cell_sums(row, data, i, wa, j, wb, k, wc, direction, 0, &load, &unused0,
                             &unused1);
         }
+        *decay = table_cell_value(row, data, i, wa, j, wb, k, wc, FILM_DECAY + direction / 2);
     } else {                   /* at rest: the larger load the film leaves of both ways */
         double up, down;
         k = film_cell(row, data, film, wc);
         table_cell_sums(row, data, i, wa, j, wb, k, wc, 0, 0, &up, &unused0, &unused1);
         table_cell_sums(row, data, i, wa, j, wb, k, wc, 2, 0, &down, &unused0, &unused1);
         load = fmax(up, down);
+        *decay = 0.5 * (table_cell_value(row, data, i, wa, j, wb, k, wc, FILM_DECAY)
+                        + table_cell_value(row, data, i, wa, j, wb, k, wc, FILM_DECAY + 1));
     }
     *steady = circumference * (boundary_friction * load + visc);
     *boundary = circumference * boundary_friction * load;
@@ -165,14 +204,14 @@ static double film_length(double b) {
     return FILM_MIN_LENGTH > b ? FILM_MIN_LENGTH : b;
 }
 
-double film_speed_rate(double phi, double v, double b, double tau) {
+double film_speed_rate(double phi, double v, double b, double decay) {
     double speed = fabs(v);
-    return (speed - phi) * (speed / film_length(b) + 1.0 / tau);
+    return (speed - phi) * (speed / film_length(b) + decay);
 }
 
-void film_speed_affine(double v, double dt, double b, double tau, double *a, double *c) {
+void film_speed_affine(double v, double dt, double b, double decay, double *a, double *c) {
     double speed = fabs(v);
-    double decay = -expm1(-(speed / film_length(b) + 1.0 / tau) * dt);
-    *a = 1.0 - decay;
-    *c = speed * decay;
+    double rate = -expm1(-(speed / film_length(b) + decay) * dt);
+    *a = 1.0 - rate;
+    *c = speed * rate;
 }

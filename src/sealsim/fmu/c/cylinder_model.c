@@ -115,10 +115,10 @@ static double law_rates(long law, const double *par, const double *z, double vv,
         fn = fmax_inline(fn, 1e-9);
         if (contact) {                      /* compiled._theta_level on the contact table */
             int last = par[7] > 0.0 ? 2 : 1;        /* the film's speed: the law's last state */
-            double film = z[last], fss, fb, fv;
-            dz[last] = film_speed_rate(film, vv, b, par[0]);
+            double film = z[last], fss, fb, fv, decay;
             contact_steady(frow, fdata, temp, dp, orient * vv, film, par[15], par[13], &fss,
-                           &fb, &fv);
+                           &fb, &fv, &decay);
+            dz[last] = film_speed_rate(film, vv, b, decay);
             level = theta_contact_level(th, vv, fss, fb, par[14],
                                         theta_steady(vv, par[0], par[1], fn, par[5], par[6]), fv);
         } else {

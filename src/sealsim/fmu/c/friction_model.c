@@ -20,7 +20,8 @@
  * F_ss(0+) (1 - d theta), dF = d pi D mu_b L: the dwell drop d of the boundary part at the
  * film's speed (sealsim.friction.theta, Theta.level).  The asperity
  * load L is read at the speed phi the contact's film has formed for, the law's last state
- * film_speed: dphi/dt = (|v| - phi)(|v|/b + 1/tau) (kernels.film_speed_rate), so F_ss depends
+ * film_speed: dphi/dt = (|v| - phi)(|v|/b + kappa) (kernels.film_speed_rate, kappa the
+ * film's decay rate at rest from the table: Reynolds' squeeze film), so F_ss depends
  * on a state and is computed at each evaluation, not cached with the inputs. */
 #include "sealsim_fmu.h"
 
@@ -150,10 +151,10 @@ static double theta_steady(Instance *c, const Contact *k) {
  * the table) */
 static double theta_level(Instance *c, double theta, double film, const Contact *k) {
 #if THETA_CONTACT
-    double steady, boundary, viscous;
+    double steady, boundary, viscous, decay;
     contact_steady(FRIC_ROW, FRIC_DATA, P(T_SEAL), k->dp, k->orient * k->v, film,
                    3.141592653589793 * P(SLIDING_DIAMETER), P(BOUNDARY_FRICTION), &steady,
-                   &boundary, &viscous);
+                   &boundary, &viscous, &decay);
     return theta_contact_level(theta, k->v, steady, boundary, P(DWELL_DROP),
                                theta_steady(c, k), viscous);
 #else
@@ -161,6 +162,17 @@ static double theta_level(Instance *c, double theta, double film, const Contact 
     return k->normal_force * (P(F_A) * (1.0 - theta) + P(F_B) * theta);
 #endif
 }
+
+#if THETA_CONTACT
+/* the decay rate [1/s] of the film formed for the speed film (compiled.contact_steady) */
+static double film_decay(Instance *c, double film, const Contact *k) {
+    double steady, boundary, viscous, decay;
+    contact_steady(FRIC_ROW, FRIC_DATA, P(T_SEAL), k->dp, k->orient * k->v, film,
+                   3.141592653589793 * P(SLIDING_DIAMETER), P(BOUNDARY_FRICTION), &steady,
+                   &boundary, &viscous, &decay);
+    return decay;
+}
+#endif
 
 /* the level at rest (the break-away force; the asperities carry the load the film leaves) */
 static double theta_rest_level(Instance *c, double theta, double film, const Contact *k) {
@@ -385,7 +397,8 @@ void model_derivatives(Instance *c, double *dx) {
                                theta_level(c, P(THETA), P(FILM_SPEED), &k));
 #endif
 #if THETA_CONTACT
-    dx[STATE_FILM_SPEED] = film_speed_rate(P(FILM_SPEED), k.v, k.contact_width, P(TAU));
+    dx[STATE_FILM_SPEED] = film_speed_rate(P(FILM_SPEED), k.v, k.contact_width,
+                                           film_decay(c, P(FILM_SPEED), &k));
 #endif
 #endif
 #else
@@ -406,9 +419,10 @@ FmuStatus model_step(Instance *c, double h) {
     double theta1 = theta_step(c, theta0, &k, h);
     double film_mid = P(FILM_SPEED);
 #if THETA_CONTACT
-    /* the film's speed: film_speed_affine, exact for v and b held (Theta.step) */
+    /* the film's speed: film_speed_affine, exact for v, b and the film's decay rate held
+     * (frozen at the step's start: Theta.step) */
     double a, b;
-    film_speed_affine(k.v, h, k.contact_width, P(TAU), &a, &b);
+    film_speed_affine(k.v, h, k.contact_width, film_decay(c, P(FILM_SPEED), &k), &a, &b);
     double film1 = a * P(FILM_SPEED) + b;
     film_mid = 0.5 * (P(FILM_SPEED) + film1);
 #endif

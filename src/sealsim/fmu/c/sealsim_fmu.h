@@ -83,11 +83,11 @@ void contact_table_point(const long *row, const double *data, double temperature
 void contact_steady(const long *row, const double *data, double temperature, double pressure,
                     double oriented_speed, double film, double circumference,
                     double boundary_friction, double *steady, double *boundary,
-                    double *viscous);
+                    double *viscous, double *decay);
 double theta_contact_level(double th, double v, double fss, double fb, double d,
                            double thss, double fv);
-double film_speed_rate(double phi, double v, double b, double tau);
-void film_speed_affine(double v, double dt, double b, double tau, double *a, double *c);
+double film_speed_rate(double phi, double v, double b, double decay);
+void film_speed_affine(double v, double dt, double b, double decay, double *a, double *c);
 
 #include "config.h"
 
