@@ -155,8 +155,8 @@ def test_contact_law_rates_and_step_are_the_law_objects(contact_seal, bristles):
                                    rtol=1e-12, atol=1e-18)
 
 
-def test_contact_steady_is_three_table_lookups_to_the_bit(contact_seal):
-    # the compiled contact_steady shares one cell search between its three sums; each is
+def test_contact_steady_is_four_table_lookups_to_the_bit(contact_seal):
+    # the compiled contact_steady shares one cell search between its four sums; each is
     # the kernel's own lookup (contact_table_point, what the law object's contact_steady
     # calls three times) bit for bit: inside and outside the axes (clamped), below the
     # slowest speed, at rest, both orientations
@@ -185,9 +185,11 @@ def test_contact_steady_is_three_table_lookups_to_the_bit(contact_seal):
         if v == 0.0:         # at rest: the larger load the film leaves of both directions
             load = max(contact_table_point(frow, fdata, temp, dp, s * max(film, slow))[0]
                        for s in (1.0, -1.0))
-        # the level, its boundary part (the dwell drop's base), its viscous part
+        # the level, its boundary part (the dwell drop's base), its viscous part, the film's
+        # decay rate at φ (the table's own lookup, table.film_decay)
+        decay = table.film_decay(max(film, slow), dp, temp).item()
         want = (circumference * (mu * load + visc), circumference * mu * load,
-                circumference * visc)
+                circumference * visc, decay)
         assert contact_steady(par, frow, fdata, temp, dp, orient, v, film) == want
 
 

@@ -110,8 +110,7 @@ def contact_steady(par, frow, fdata, temp, dp, orient, vv, film):
     (:func:`~sealsim.friction.kernels.film_speed_rate`; φ = |v| in steady sliding; no film,
     φ = 0: the table's slowest speed, its first node), the viscous shear V at the sliding
     speed; at rest (v = 0) π·D·μ_b times the larger asperity load of both directions at φ
-    (the level the film leaves, the sliding level's limit v → 0±) and the mean κ of both
-    directions -- the table lookups of
+    (the level the film leaves, the sliding level's limit v → 0±) -- the table lookups of
     :func:`~sealsim.friction.contact_table.contact_table_point` sharing one cell search."""
     i, wa, j, wb = table_cell(frow, fdata, temp, dp)       # one cell search for all
     speed = orient * vv
@@ -123,13 +122,11 @@ def contact_steady(par, frow, fdata, temp, dp, orient, vv, film):
         if film != abs(speed):
             k, wc = _film_cell(frow, fdata, film)
         load = cell_sum(frow, fdata, i, wa, j, wb, k, wc, direction)
-        decay = cell_sum(frow, fdata, i, wa, j, wb, k, wc, FILM_DECAY + direction // 2)
     else:                           # at rest: the larger load the film leaves of both directions
         k, wc = _film_cell(frow, fdata, film)
         load = max(cell_sum(frow, fdata, i, wa, j, wb, k, wc, 0),
                    cell_sum(frow, fdata, i, wa, j, wb, k, wc, 2))
-        decay = 0.5 * (cell_sum(frow, fdata, i, wa, j, wb, k, wc, FILM_DECAY)
-                       + cell_sum(frow, fdata, i, wa, j, wb, k, wc, FILM_DECAY + 1))
+    decay = cell_sum(frow, fdata, i, wa, j, wb, k, wc, FILM_DECAY)
     circumference, mu = par[TH_CIRCUMFERENCE], par[TH_MU_B]
     return (circumference * (mu * load + visc), circumference * mu * load,
             circumference * visc, decay)

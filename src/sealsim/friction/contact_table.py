@@ -18,9 +18,11 @@ viscous_pos         N/m     viscous friction ∫ η·u/h + h/2·(1 − α)·dp/d
 asperity_load_neg   N/m     the same for the other direction
 viscous_neg         N/m
 film_pos, film_neg  m       film at the pressure maximum h*
-film_decay_pos      1/s     decay rate κ of the speed φ the film stands for when the seal
-film_decay_neg              stops, dφ/dt = −κ·φ: the film squeezed out by the load it
-                            carries (:func:`sealsim.tribology.squeeze_film.film_speed_decay_rate`)
+film_decay_rate     1/s     decay rate κ of the speed φ the film stands for when the seal
+                            stops, dφ/dt = −κ·φ: the film squeezed out by the load it
+                            carries (:func:`sealsim.tribology.squeeze_film.film_speed_decay_rate`),
+                            the mean of both stroke directions' films (one rate whatever the
+                            direction: the film's state evolves continuously through v = 0)
 ==================  ======  ==========================================================
 
 over the axes temperature [K], pressure difference [Pa] and log10 of the speed [m/s].  The
@@ -53,8 +55,8 @@ __all__ = ["TABLE_VARIABLES", "SteadyFrictionTable", "cell_sum", "contact_table_
 
 #: variables of the table, in the order of its last axis (see the module docstring)
 TABLE_VARIABLES = ("asperity_load_pos", "viscous_pos", "asperity_load_neg", "viscous_neg",
-                   "film_pos", "film_neg", "film_decay_pos", "film_decay_neg")
-#: index of the film-decay column of the + direction (the − direction's is the next)
+                   "film_pos", "film_neg", "film_decay_rate")
+#: index of the film's decay-rate column
 FILM_DECAY = 6
 #: layout row: n_T, n_p, n_u, n_vars (the data array holds the three axes, then the cell
 #: coefficients, shape (n_T - 1, n_p - 1, n_u - 1, 4, 4, 4, n_vars), C order)
@@ -157,18 +159,11 @@ def _table_many(row, data, temperature, pressure, speed, load, visc, film):
 
 @njit(cache=True)
 def _decay_many(row, data, temperature, pressure, speed, out):
-    """The film-decay rate κ [1/s] of the stroke direction of each speed (at rest: the mean of
-    both directions) at the film's speed |speed| (clamped to the axes)."""
+    """The film's decay rate κ [1/s] at the film's speed |speed| (clamped to the axes)."""
     for n in range(speed.shape[0]):
         i, wa, j, wb = table_cell(row, data, temperature[n], pressure[n])
-        if speed[n] != 0.0:
-            k, wc = speed_cell(row, data, speed[n])
-            out[n] = cell_sum(row, data, i, wa, j, wb, k, wc,
-                              FILM_DECAY + (0 if speed[n] > 0.0 else 1))
-        else:
-            k, wc = 0, _ON_NODE
-            out[n] = 0.5 * (cell_sum(row, data, i, wa, j, wb, k, wc, FILM_DECAY)
-                            + cell_sum(row, data, i, wa, j, wb, k, wc, FILM_DECAY + 1))
+        k, wc = speed_cell(row, data, speed[n])
+        out[n] = cell_sum(row, data, i, wa, j, wb, k, wc, FILM_DECAY)
 
 
 @dataclass
@@ -184,14 +179,14 @@ class SteadyFrictionTable:
     speed : array_like
         Speed axis [m/s], > 0, ascending (>= 2 values; interpolated in log10 u).
     values : numpy.ndarray
-        Shape (n_T, n_p, n_u, 8): :data:`TABLE_VARIABLES` per unit circumference.
+        Shape (n_T, n_p, n_u, 7): :data:`TABLE_VARIABLES` per unit circumference.
     attrs : dict
         Where the table came from (JSON-friendly), stored with it.
 
     Examples
     --------
     >>> t, p, u = [290.0, 300.0], [0.0, 1e5], [1e-3, 1e-2, 1e-1]
-    >>> values = np.zeros((2, 2, 3, 8))
+    >>> values = np.zeros((2, 2, 3, 7))
     >>> values[..., 0] = values[..., 2] = 100.0        # asperities carry 100 N/m
     >>> values[..., 1] = values[..., 3] = np.array(u) * 50.0
     >>> table = SteadyFrictionTable(t, p, u, values)
@@ -272,8 +267,7 @@ class SteadyFrictionTable:
         return tuple(out)
 
     def film_decay(self, speed, pressure, temperature):
-        """Decay rate κ [1/s] at rest of the film formed for the signed speed [m/s] (its
-        stroke direction; speed 0: the mean of both directions at the slowest speed) at
+        """Decay rate κ [1/s] at rest of the film formed for the speed |speed| [m/s] (> 0) at
         pressure differences [Pa] and temperatures [K] (broadcast; clamped to the axes)."""
         row, data = self.tables()
         u, p, t = (np.array(a, dtype=float) for a in np.broadcast_arrays(

@@ -81,10 +81,11 @@ inlet moves through the contact with little change, so it is the one of the entr
 at the time its fluid entered -- both on hard EHD contacts, for a seal's soft contact an
 assumption), so the asperities carry the load of the speed φ [m/s]
 that the film has formed for, a state (``film_speed``, the law's last) that follows the
-sliding speed over a sliding distance of the contact width b and decays at rest with τ (the
-film squeezed out in a dwell)::
+sliding speed over a sliding distance of the contact width b and falls at rest as the seal
+squeezes the film out, at the decay rate κ(φ) of the seal's friction table (Reynolds'
+squeeze film under the load the fluid carries, :mod:`sealsim.tribology.squeeze_film`)::
 
-    dφ/dt = (|v| − φ)·(|v|/b + 1/τ),    F_ss,φ(v) = π·D·[μ_b·L(φ) + V(|v|)]·sgn(v)
+    dφ/dt = (|v| − φ)·(|v|/b + κ(φ)),    F_ss,φ(v) = π·D·[μ_b·L(φ) + V(|v|)]·sgn(v)
 
 (a first-order lag is sealsim's simplest form of that delay [M]).  In steady sliding φ = |v|.
 Without the lag the friction fell the instant the speed rose, dF/dv → −∞ as the film
@@ -716,8 +717,8 @@ class Theta(FrictionLaw):
     def film_decay(self, v, inputs: ContactInputs, film):
         """Decay rate κ [1/s] of the film formed for the speed ``film`` = φ [m/s] (the state
         ``film_speed``) from the seal's friction table (``steady = "contact"``): dφ/dt = −κ·φ
-        at rest (Reynolds' squeeze film, :mod:`sealsim.tribology.squeeze_film`), read in the
-        stroke direction of v, at rest the mean of both directions; φ below the table's
+        at rest (Reynolds' squeeze film, :mod:`sealsim.tribology.squeeze_film`; the mean of
+        both stroke directions' films, so independent of the sign of v); φ below the table's
         slowest speed (or no film): that speed."""
         table = inputs.contact_table
         if table is None:
@@ -727,12 +728,10 @@ class Theta(FrictionLaw):
         if dp is None:
             dp = np.abs(np.asarray(inputs.pressure_a, float) - np.asarray(inputs.pressure_b,
                                                                            float))
-        speed = np.asarray(inputs.table_orientation, dtype=float) * np.asarray(v, dtype=float)
         formed = np.asarray(film, dtype=float)
         formed = np.where(formed > table.speed[0], formed, table.speed[0])
-        up = table.film_decay(formed, dp, temperature)
-        down = table.film_decay(-formed, dp, temperature)
-        return np.where(speed > 0.0, up, np.where(speed < 0.0, down, 0.5 * (up + down)))
+        return np.broadcast_to(table.film_decay(formed, dp, temperature),
+                               np.broadcast_shapes(np.shape(v), formed.shape)).copy()
 
     def level(self, theta, inputs: ContactInputs, v=None, film=None):
         """Friction level [N] without the sign: the break-away force at rest.

@@ -335,7 +335,6 @@ def build_friction_table(contact_map, tribology: ContactTribology,
                 if k == 1 and analytic and pressures[j] <= 0.0:    # symmetric: one film
                     values[i, j, :, 2:4] = values[i, j, :, 0:2]
                     values[i, j, :, 5] = values[i, j, :, 4]
-                    values[i, j, :, FILM_DECAY + 1] = values[i, j, :, FILM_DECAY]
                     continue
                 r = reciprocating_friction(z, p, speeds, eta, tribology.roughness, modulus,
                                            1.0, direction, sealed_pressure=pressures[j],
@@ -343,8 +342,11 @@ def build_friction_table(contact_map, tribology: ContactTribology,
                 values[i, j, :, 2 * k] = r.boundary          # μ_b = 1: the asperity load
                 values[i, j, :, 2 * k + 1] = r.viscous
                 values[i, j, :, 4 + k] = np.where(np.isfinite(r.film), r.film, 0.0)
-                values[i, j, :, FILM_DECAY + k] = film_speed_decay_rate(speeds, r.film,
-                                                                        r.squeeze)
+                # the film's decay rate: the mean of both directions (one pass: the same)
+                values[i, j, :, FILM_DECAY] += 0.5 * film_speed_decay_rate(speeds, r.film,
+                                                                           r.squeeze)
+            if analytic and pressures[j] <= 0.0:
+                values[i, j, :, FILM_DECAY] *= 2.0
     attrs = {"tribology": asdict(tribology), "table_version": TABLE_VERSION,
              "contact_map": contact_map.describe()}
     return SteadyFrictionTable(temps, pressures, speeds, values, attrs)

@@ -12,7 +12,9 @@
 * :mod:`.inverse_hydrodynamics` -- the film of a reciprocating seal from its contact pressure
   profile (Blok; Müller & Nau 1998; Kanters 1990), the flow and fluid transport per stroke;
 * :mod:`.mixed_lubrication` -- asperity load share (Greenwood–Williamson with the rubber's
-  modulus) and the friction of a reciprocating seal from its contact pressure profile.
+  modulus) and the friction of a reciprocating seal from its contact pressure profile;
+* :mod:`.squeeze_film` -- how fast that film drains when the seal stops (Reynolds' squeeze
+  film under the load the fluid carries).
 
 The rotary lip seal model (:mod:`sealsim.rotary.friction`) and the friction tables of
 reciprocating seals (:mod:`sealsim.pneumatic.friction_tables`) compose them.

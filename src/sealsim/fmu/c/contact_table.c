@@ -116,7 +116,7 @@ static double table_cell_value(const long *row, const double *data, long i, cons
     return total;
 }
 
-/* contact_table.FILM_DECAY: the column of the film's decay rate of the + direction */
+/* contact_table.FILM_DECAY: the column of the film's decay rate */
 #define FILM_DECAY 6
 
 void contact_table_point(const long *row, const double *data, double temperature,
@@ -169,16 +169,14 @@ void contact_steady(const long *row, const double *data, double temperature, dou
             table_cell_sums(row, data, i, wa, j, wb, k, wc, direction, 0, &load, &unused0,
                             &unused1);
         }
-        *decay = table_cell_value(row, data, i, wa, j, wb, k, wc, FILM_DECAY + direction / 2);
     } else {                   /* at rest: the larger load the film leaves of both ways */
         double up, down;
         k = film_cell(row, data, film, wc);
         table_cell_sums(row, data, i, wa, j, wb, k, wc, 0, 0, &up, &unused0, &unused1);
         table_cell_sums(row, data, i, wa, j, wb, k, wc, 2, 0, &down, &unused0, &unused1);
         load = fmax(up, down);
-        *decay = 0.5 * (table_cell_value(row, data, i, wa, j, wb, k, wc, FILM_DECAY)
-                        + table_cell_value(row, data, i, wa, j, wb, k, wc, FILM_DECAY + 1));
     }
+    *decay = table_cell_value(row, data, i, wa, j, wb, k, wc, FILM_DECAY);
     *steady = circumference * (boundary_friction * load + visc);
     *boundary = circumference * boundary_friction * load;
     *viscous = circumference * visc;
