@@ -4,7 +4,7 @@ import warnings
 
 import numpy as np
 import pytest
-from hypothesis import given
+from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.integrate import quad
 from scipy.stats import norm
@@ -195,3 +195,64 @@ def test_duty_parameter_equals_guembel_number():
     # G = η ω b / W' is η ω / p̄ with p̄ = W'/b (the Gümbel number of lip seal Stribeck curves)
     eta, omega, b, w = 0.0124, 157.1, 0.15e-3, 119.4
     assert duty_parameter(eta, omega, b, w) == pytest.approx(eta * omega / (w / b))
+
+
+# -- squeeze film at rest --------------------------------------------------------------------
+def test_squeeze_resistance_of_a_cylinder_near_a_plane():
+    # Independent closed form: a long cylinder of radius R_c at the gap h0 from a plane, its
+    # film h = h0 + z²/(2·R_c), carries W' = 3·√2·π·η·V·(R_c/h0)^(3/2) per unit length when
+    # squeezed at V (Hamrock, Schmid & Jacobson 2004, normal squeeze film of a long cylinder;
+    # p = 0 far from the gap).  The zone is cut at ±30·√(2·R_c·h0) (the integrand's tail
+    # beyond is 1e-4 of the total) and integrated on 20001 points: 1e-3.
+    from sealsim.tribology.squeeze_film import squeeze_resistance
+
+    radius, gap = 5e-3, 1e-6
+    half = 30.0 * np.sqrt(2.0 * radius * gap)
+    z = np.linspace(-half, half, 20001)
+    film = gap + z ** 2 / (2.0 * radius)
+    want = 3.0 * np.sqrt(2.0) * np.pi * (radius / gap) ** 1.5
+    assert float(squeeze_resistance(z, film)) == pytest.approx(want, rel=1e-3)
+    # off-centre the same (z̄ follows the gap), and rows are independent films
+    both = squeeze_resistance(z + 1e-3, np.stack([film, 2.0 * film]))
+    assert both == pytest.approx([want, want / 8.0], rel=1e-3)
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.floats(0.2e-6, 5e-6), st.floats(0.1e-3, 3e-3), st.floats(10.0, 5e3),
+       st.floats(0.01, 1.0))
+def test_parallel_squeeze_film_thins_as_reynolds_closed_form(h0, width, load, eta):
+    # A uniform film squeezed by a constant load: dh/dt = −W'·h³/(η·b³), so
+    # h(t) = h0/√(1 + 2·W'·h0²·t/(η·b³)) (Reynolds 1886).  The thinning rate s = −(dh/dt)/h
+    # from squeeze_resistance and squeeze_thinning_rate, integrated (RK45, rtol 1e-10) to the
+    # time the film halves: 1e-4 (the trapezoidal rule on 201 points overestimates R = b³/h³
+    # by 1/(2·200²) = 1.25e-5, which shifts h at t_half by about that much).
+    from scipy.integrate import solve_ivp
+
+    from sealsim.tribology.squeeze_film import squeeze_resistance, squeeze_thinning_rate
+
+    z = np.linspace(0.0, width, 201)
+
+    def rate(t, h):
+        resistance = squeeze_resistance(z, np.full(z.size, h[0]))
+        return [-h[0] * float(squeeze_thinning_rate(load, eta, resistance, h[0]))]
+
+    t_half = 3.0 * eta * width ** 3 / (2.0 * load * h0 ** 2)
+    sol = solve_ivp(rate, (0.0, t_half), [h0], rtol=1e-10, atol=1e-20)
+    closed = h0 / np.sqrt(1.0 + 2.0 * load * h0 ** 2 * t_half / (eta * width ** 3))
+    assert closed == pytest.approx(0.5 * h0, rel=1e-12)
+    assert sol.y[0, -1] == pytest.approx(closed, rel=1e-4)
+
+
+def test_film_decay_rate_follows_the_film_slope():
+    # κ = s/(d ln h*/d ln u): 2·s in full film (h* ∝ √u), larger where the film grows more
+    # slowly with the speed (the mixed range), bounded where it does not grow at all
+    # (a starved inlet: MIN_FILM_SLOPE); 0 without a film
+    from sealsim.tribology.squeeze_film import MIN_FILM_SLOPE, film_speed_decay_rate
+
+    u = np.geomspace(1e-4, 1.0, 41)
+    s = 30.0 * u
+    assert film_speed_decay_rate(u, 1e-6 * np.sqrt(u), s) == pytest.approx(2.0 * s, rel=1e-9)
+    assert film_speed_decay_rate(u, 1e-6 * u ** 0.25, s) == pytest.approx(4.0 * s, rel=1e-9)
+    assert film_speed_decay_rate(u, np.full(u.size, 1e-6), s) == pytest.approx(
+        s / MIN_FILM_SLOPE, rel=1e-12)
+    assert np.all(film_speed_decay_rate(u, np.zeros(u.size), s) == 0.0)

@@ -133,6 +133,27 @@ def contact_steady(par, frow, fdata, temp, dp, orient, vv, film):
 
 
 @njit(cache=True)
+def film_trajectory(frow, fdata, temp, dp, speed, dt, width, film0, out):
+    """The film's speed φ [m/s] of a Θ law on its contact table over N steps of n contacts
+    into ``out`` (shape (N + 1, n)): the exact step of
+    :func:`~sealsim.friction.kernels.film_speed_affine` with the film's decay rate κ(φ) of the
+    table held over each step, at its start -- the law's ``step`` one step after the other
+    (the rate depends on φ, so no parallel scan).  ``temp``, ``dp``, ``speed``, ``width``:
+    T [K], Δp [Pa], v [m/s], b [m] per step and contact (shape (N, n)); ``dt`` (N,) [s];
+    ``film0`` (n,) the start."""
+    for col in range(out.shape[1]):
+        film = film0[col]
+        out[0, col] = film
+        for k in range(dt.shape[0]):
+            i, wa, j, wb = table_cell(frow, fdata, temp[k, col], dp[k, col])
+            kk, wc = _film_cell(frow, fdata, film)
+            decay = cell_sum(frow, fdata, i, wa, j, wb, kk, wc, FILM_DECAY)
+            a, c = fk.film_speed_affine(speed[k, col], dt[k], width[k, col], decay)
+            film = a * film + c
+            out[k + 1, col] = film
+
+
+@njit(cache=True)
 def _film_cell(frow, fdata, film):
     """Speed cell of the film's speed φ [m/s] in a contact table; no film (φ ≤ 0 or not a
     number): the table's slowest speed, its first node."""

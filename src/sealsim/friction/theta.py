@@ -645,11 +645,7 @@ class Theta(FrictionLaw):
     def has_stiction(self) -> bool:  # type: ignore[override]
         return not self.bristles
 
-    @property
-    def affine(self) -> bool:  # type: ignore[override]
-        """A trajectory is an affine scan of the states, except on the contact: the film's
-        decay rate depends on the film (:meth:`film_decay`), stepped one step at a time."""
-        return not self.contact
+    affine = True
 
     # -- inputs --------------------------------------------------------------------------
     def _fn(self, inputs: ContactInputs):
@@ -672,6 +668,21 @@ class Theta(FrictionLaw):
         return theta_viscous_coefficient(temperature, p.gamma, p.reference_temperature,
                                          *self.walther)
 
+    @staticmethod
+    def _table_conditions(inputs: ContactInputs):
+        """(the seal's friction table, T [K], Δp [Pa]) of ``inputs`` (``steady = "contact"``)."""
+        table = inputs.contact_table
+        if table is None:
+            raise InputError("inputs.contact_table: the theta law with steady = 'contact' needs "
+                             "the seal's friction table (sealsim.pneumatic.friction_tables), "
+                             "but none was given")
+        temperature = inputs.require("temperature", "theta (contact)", positive=True)
+        dp = inputs.pressure_difference
+        if dp is None:
+            dp = np.abs(np.asarray(inputs.pressure_a, float) - np.asarray(inputs.pressure_b,
+                                                                           float))
+        return table, temperature, dp
+
     def contact_steady(self, v, inputs: ContactInputs, film=None):
         """(|F_ss(v)| [N], its boundary part π·D·μ_b·L(φ) [N], its viscous part π·D·V(|v|)
         [N]) from the contact table of ``inputs`` (``steady = "contact"``):
@@ -685,17 +696,8 @@ class Theta(FrictionLaw):
         friction than held the seal (with the mean, a pressurised analytic O-ring, whose
         low-pressure inlet is steeper, chattered between stick and slip in its stronger
         direction)."""
-        table = inputs.contact_table
-        if table is None:
-            raise InputError("inputs.contact_table: the theta law with steady = 'contact' needs "
-                             "the seal's friction table (sealsim.pneumatic.friction_tables), "
-                             "but none was given")
+        table, temperature, dp = self._table_conditions(inputs)
         diameter = inputs.require("sliding_diameter", "theta (contact)", positive=True)
-        temperature = inputs.require("temperature", "theta (contact)", positive=True)
-        dp = inputs.pressure_difference
-        if dp is None:
-            dp = np.abs(np.asarray(inputs.pressure_a, float) - np.asarray(inputs.pressure_b,
-                                                                           float))
         orient = np.asarray(inputs.table_orientation, dtype=float)
         mu = self.params.boundary_friction
         speed = orient * np.asarray(v, dtype=float)
@@ -720,14 +722,7 @@ class Theta(FrictionLaw):
         at rest (Reynolds' squeeze film, :mod:`sealsim.tribology.squeeze_film`; the mean of
         both stroke directions' films, so independent of the sign of v); φ below the table's
         slowest speed (or no film): that speed."""
-        table = inputs.contact_table
-        if table is None:
-            self.contact_steady(v, inputs)          # the InputError that names what is missing
-        temperature = inputs.require("temperature", "theta (contact)", positive=True)
-        dp = inputs.pressure_difference
-        if dp is None:
-            dp = np.abs(np.asarray(inputs.pressure_a, float) - np.asarray(inputs.pressure_b,
-                                                                           float))
+        table, temperature, dp = self._table_conditions(inputs)
         formed = np.asarray(film, dtype=float)
         formed = np.where(formed > table.speed[0], formed, table.speed[0])
         return np.broadcast_to(table.film_decay(formed, dp, temperature),
@@ -891,14 +886,38 @@ class Theta(FrictionLaw):
             new.append(film1)
         return np.stack(np.broadcast_arrays(*new))
 
+    def _film_trajectory(self, z0_film, v, dt, inputs):
+        """φ over the steps (shape (N + 1, n)), as :meth:`_film_step` one step after the
+        other (:func:`sealsim.friction.compiled.film_trajectory`: its decay rate depends on
+        φ, so no affine scan)."""
+        from sealsim.friction.compiled import film_trajectory
+
+        table, temperature, dp = self._table_conditions(inputs)
+        shape = np.broadcast_shapes(v.shape, np.shape(z0_film)[-1:])
+        temperature, dp, v, width = (
+            np.ascontiguousarray(np.broadcast_to(np.asarray(x, dtype=float), shape))
+            for x in (temperature, dp, v, self._b(inputs)))
+        out = np.empty((shape[0] + 1, shape[1]))
+        film0 = np.ascontiguousarray(np.broadcast_to(np.asarray(z0_film, dtype=float),
+                                                     shape[1:]))
+        film_trajectory(*table.tables(), temperature, dp, v,
+                        np.ascontiguousarray(dt, dtype=float), width, film0, out)
+        return out
+
     def _affine_trajectory(self, z0, v, dt, inputs):
         a, b = _theta_affine(v, dt[:, None], *self._rate_args(inputs))
         theta = affine_scan(a, b, z0[0])
         states = [theta]
+        film = film_mid = None
+        if self.contact:
+            film = self._film_trajectory(z0[-1], v, dt, inputs)
+            film_mid = 0.5 * (film[:-1] + film[1:])
         if self.bristles:
-            g_mid = self.level(0.5 * (theta[:-1] + theta[1:]), inputs, v)
+            g_mid = self.level(0.5 * (theta[:-1] + theta[1:]), inputs, v, film_mid)
             a_z, b_z = _lugre_affine(v, dt[:, None], self.params.bristle_stiffness, g_mid)
             states.append(affine_scan(a_z, b_z, z0[1]))
+        if self.contact:
+            states.append(film)
         return np.stack(np.broadcast_arrays(*states), axis=1)
 
     def steady_state(self, v, inputs: ContactInputs = NO_INPUTS):
