@@ -940,3 +940,24 @@ def test_seal_friction_says_where_its_friction_passes_the_contact_force():
     assert f"{ratio.max():.2g}" in note and "supply_layer of 0.0684 µm" in note
     assert (default["friction_N"] < default["normal_force_N"]).all()
     assert not [n for n in default.attrs["notes"] if "passes the contact force" in n]
+
+
+def test_trajectory_on_the_contact_is_the_law_stepped(table):
+    # The velocity-driven trajectory (friction bench, calibration fits) runs the film's speed
+    # through a compiled loop (its decay rate depends on φ: no affine scan) and Θ and the
+    # bristles as scans: the same as the law's step one step after the other -- the film bit
+    # for bit (the same kernels), Θ and z to the scan's rounding (1e-12) -- over a stroke
+    # that reverses and then rests
+    for law in (Theta.from_parameter_set("seal_contact"),
+                Theta.from_parameter_set("seal_contact", bristle_stiffness=5e4)):
+        inputs = inputs_for(table)
+        t = np.arange(400) * 5e-3
+        v = np.where(t < 1.5, 0.1 * np.sin(2 * np.pi * t), 0.0)[:, None]
+        dt = np.full(t.size, 5e-3)
+        fast = law.trajectory(law.initial_state(1), v, dt, inputs)
+        z = law.initial_state(1)
+        for k in range(t.size):
+            z = law.step(z, v[k], dt[k], inputs)
+            assert fast[k + 1, -1, 0] == z[-1, 0]
+            np.testing.assert_allclose(fast[k + 1, :-1, 0], z[:-1, 0], rtol=1e-12, atol=1e-15)
+        assert 0.0 < fast[-1, -1, 0] < fast[300, -1, 0]      # the film drains at rest

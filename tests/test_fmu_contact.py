@@ -53,6 +53,8 @@ def c_table(tmp_path_factory):
     dbl, lng = ctypes.POINTER(ctypes.c_double), ctypes.POINTER(ctypes.c_long)
     so.contact_table_point.argtypes = [lng, dbl] + [ctypes.c_double] * 3 + [dbl] * 3
     so.contact_steady.argtypes = [lng, dbl] + [ctypes.c_double] * 6 + [dbl] * 4
+    so.film_decay_rate.argtypes = [lng, dbl] + [ctypes.c_double] * 3
+    so.film_decay_rate.restype = ctypes.c_double
     so.theta_contact_level.argtypes = [ctypes.c_double] * 7
     so.theta_contact_level.restype = ctypes.c_double
     so.film_speed_rate.argtypes = [ctypes.c_double] * 4
@@ -143,8 +145,9 @@ def test_c_table_reads_the_load_at_the_film_speed(c_table):
         assert out[0].value == pytest.approx(circumference * (mu * load + viscous), rel=1e-12)
         assert out[1].value == pytest.approx(circumference * mu * load, rel=1e-12)
         assert out[2].value == pytest.approx(circumference * viscous, abs=1e-12)
-        # the film's decay rate at φ, whatever the direction
+        # the film's decay rate at φ, whatever the direction (also alone: film_decay_rate)
         assert out[3].value == pytest.approx(30.0 + 3.0 * np.log10(phi), rel=1e-12)
+        assert c_table.film_decay_rate(row_c, data_c, 300.0, 2e5, film) == out[3].value
 
 
 def test_c_film_speed_is_the_numba_kernel(c_table):

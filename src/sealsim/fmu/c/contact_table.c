@@ -12,7 +12,8 @@
  * widths of the differentiated axes, in axis order -- then sums in the kernel's order
  * (contact_table.cell_sums, terms of weight 0 skipped): the same operations, the same bits.
  * contact_steady (one cell search for the sliding speed and the speed the film has formed
- * for; also the film's decay rate at rest, dphi/dt = -decay phi) and theta_contact_level are the ports of
+ * for; also the film's decay rate at rest, dphi/dt = -decay phi), film_decay_rate (that rate
+ * alone) and theta_contact_level are the ports of
  * sealsim.friction.compiled.contact_steady and the kernel theta_contact_level of
  * sealsim.friction.kernels; film_speed_rate and film_speed_affine those of the kernels of the
  * same names (the film state of the Theta law on its contact).  Tests compare them all with
@@ -180,6 +181,17 @@ void contact_steady(const long *row, const double *data, double temperature, dou
     *steady = circumference * (boundary_friction * load + visc);
     *boundary = circumference * boundary_friction * load;
     *viscous = circumference * visc;
+}
+
+double film_decay_rate(const long *row, const double *data, double temperature,
+                       double pressure, double film) {
+    double a, b, wa[4], wb[4], wc[4];
+    long i = table_locate(data, 0, row[0], temperature, &a);
+    long j = table_locate(data, row[0], row[1], pressure, &b);
+    table_basis(a, wa);
+    table_basis(b, wb);
+    long k = film_cell(row, data, film, wc);
+    return table_cell_value(row, data, i, wa, j, wb, k, wc, FILM_DECAY);
 }
 
 double theta_contact_level(double th, double v, double fss, double fb, double d,

@@ -151,10 +151,10 @@ static double theta_steady(Instance *c, const Contact *k) {
  * the table) */
 static double theta_level(Instance *c, double theta, double film, const Contact *k) {
 #if THETA_CONTACT
-    double steady, boundary, viscous, decay;
+    double steady, boundary, viscous, unused;
     contact_steady(FRIC_ROW, FRIC_DATA, P(T_SEAL), k->dp, k->orient * k->v, film,
                    3.141592653589793 * P(SLIDING_DIAMETER), P(BOUNDARY_FRICTION), &steady,
-                   &boundary, &viscous, &decay);
+                   &boundary, &viscous, &unused);
     return theta_contact_level(theta, k->v, steady, boundary, P(DWELL_DROP),
                                theta_steady(c, k), viscous);
 #else
@@ -164,13 +164,9 @@ static double theta_level(Instance *c, double theta, double film, const Contact 
 }
 
 #if THETA_CONTACT
-/* the decay rate [1/s] of the film formed for the speed film (compiled.contact_steady) */
+/* the decay rate [1/s] of the film formed for the speed film (compiled.contact_steady's) */
 static double film_decay(Instance *c, double film, const Contact *k) {
-    double steady, boundary, viscous, decay;
-    contact_steady(FRIC_ROW, FRIC_DATA, P(T_SEAL), k->dp, k->orient * k->v, film,
-                   3.141592653589793 * P(SLIDING_DIAMETER), P(BOUNDARY_FRICTION), &steady,
-                   &boundary, &viscous, &decay);
-    return decay;
+    return film_decay_rate(FRIC_ROW, FRIC_DATA, P(T_SEAL), k->dp, film);
 }
 #endif
 

@@ -84,6 +84,8 @@ void contact_steady(const long *row, const double *data, double temperature, dou
                     double oriented_speed, double film, double circumference,
                     double boundary_friction, double *steady, double *boundary,
                     double *viscous, double *decay);
+double film_decay_rate(const long *row, const double *data, double temperature,
+                       double pressure, double film);
 double theta_contact_level(double th, double v, double fss, double fb, double d,
                            double thss, double fv);
 double film_speed_rate(double phi, double v, double b, double decay);
