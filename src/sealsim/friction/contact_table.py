@@ -166,6 +166,13 @@ def _decay_many(row, data, temperature, pressure, speed, out):
         out[n] = cell_sum(row, data, i, wa, j, wb, k, wc, FILM_DECAY)
 
 
+def _flat_conditions(speed, pressure, temperature):
+    """Speed [m/s], pressure difference [Pa] and temperature [K] broadcast, as float copies."""
+    return (np.array(a, dtype=float) for a in np.broadcast_arrays(
+        np.asarray(speed, dtype=float), np.asarray(pressure, dtype=float),
+        np.asarray(temperature, dtype=float)))
+
+
 @dataclass
 class SteadyFrictionTable:
     """A seal's steady friction per unit circumference over (T, Δp, log10 u) and direction.
@@ -257,24 +264,19 @@ class SteadyFrictionTable:
     def evaluate(self, speed, pressure, temperature):
         """(asperity load [N/m], viscous friction [N/m], film [m]) at signed speeds [m/s],
         pressure differences [Pa] and temperatures [K] (broadcast; clamped to the axes)."""
-        row, data = self.tables()
-        u, p, t = (np.array(a, dtype=float) for a in np.broadcast_arrays(
-            np.asarray(speed, dtype=float), np.asarray(pressure, dtype=float),
-            np.asarray(temperature, dtype=float)))
+        u, p, t = _flat_conditions(speed, pressure, temperature)
         out = [np.empty(u.shape) for _ in range(3)]
-        _table_many(row, data, t.reshape(-1), p.reshape(-1), u.reshape(-1),
+        _table_many(*self.tables(), t.reshape(-1), p.reshape(-1), u.reshape(-1),
                     *(o.reshape(-1) for o in out))
         return tuple(out)
 
     def film_decay(self, speed, pressure, temperature):
         """Decay rate κ [1/s] at rest of the film formed for the speed |speed| [m/s] (> 0) at
         pressure differences [Pa] and temperatures [K] (broadcast; clamped to the axes)."""
-        row, data = self.tables()
-        u, p, t = (np.array(a, dtype=float) for a in np.broadcast_arrays(
-            np.asarray(speed, dtype=float), np.asarray(pressure, dtype=float),
-            np.asarray(temperature, dtype=float)))
+        u, p, t = _flat_conditions(speed, pressure, temperature)
         out = np.empty(u.shape)
-        _decay_many(row, data, t.reshape(-1), p.reshape(-1), u.reshape(-1), out.reshape(-1))
+        _decay_many(*self.tables(), t.reshape(-1), p.reshape(-1), u.reshape(-1),
+                    out.reshape(-1))
         return out
 
     def steady_force(self, speed, pressure, temperature, diameter, boundary_friction):

@@ -47,18 +47,18 @@ static long table_locate(const double *data, long pos, long n, double x, double 
     return i;
 }
 
-/* contact_table.cell_sums on the node layout: each basis term's coefficient is the corner
- * node's derivative entry times the widths of the differentiated axes (HermiteGrid) */
-static void table_cell_sums(const long *row, const double *data, long i, const double *wa,
-                            long j, const double *wb, long k, const double *wc, long off,
-                            int film, double *load, double *visc, double *thick) {
+/* contact_table.cell_sum on the node layout for the n variables vars[] at once into out[]:
+ * each basis term's coefficient is the corner node's derivative entry times the widths of
+ * the differentiated axes (HermiteGrid); each variable's sum in the kernel's order */
+static void table_cell_vars(const long *row, const double *data, long i, const double *wa,
+                            long j, const double *wb, long k, const double *wc,
+                            const long *vars, int n, double *out) {
     long nt = row[0], npr = row[1], nu = row[2], nv = row[3];
     double h0 = data[i + 1] - data[i];
     double h1 = data[nt + j + 1] - data[nt + j];
     double h2 = data[nt + npr + k + 1] - data[nt + npr + k];
     const double *nodes = data + nt + npr + nu;
-    long fv = 4 + off / 2;
-    *load = *visc = *thick = 0.0;
+    for (int m = 0; m < n; m++) out[m] = 0.0;
     for (int q0 = 0; q0 < 4; q0++) {
         double w0 = wa[q0];
         if (w0 == 0.0) continue;
@@ -72,49 +72,37 @@ static void table_cell_sums(const long *row, const double *data, long i, const d
                 int mask = (q0 & 1) | (q1 & 1) << 1 | (q2 & 1) << 2;
                 const double *node = nodes + ((((i + (q0 >> 1)) * npr + j + (q1 >> 1)) * nu +
                                                k + (q2 >> 1)) * 8 + mask) * nv;
-                double cl = node[off], cv = node[off + 1], cf = node[fv];
-                if (q0 & 1) { cl *= h0; cv *= h0; cf *= h0; }
-                if (q1 & 1) { cl *= h1; cv *= h1; cf *= h1; }
-                if (q2 & 1) { cl *= h2; cv *= h2; cf *= h2; }
-                *load += w * cl;
-                *visc += w * cv;
-                if (film) *thick += w * cf;
+                for (int m = 0; m < n; m++) {
+                    double coefficient = node[vars[m]];
+                    if (q0 & 1) coefficient *= h0;
+                    if (q1 & 1) coefficient *= h1;
+                    if (q2 & 1) coefficient *= h2;
+                    out[m] += w * coefficient;
+                }
             }
         }
     }
 }
 
-/* contact_table.cell_sum on the node layout for one variable var (the order and the
- * operations of table_cell_sums) */
+/* the asperity load and viscous friction of the direction whose load column is off (0: +,
+ * 2: -), and with film != 0 its film, in one pass (contact_table.cell_sum each) */
+static void table_cell_sums(const long *row, const double *data, long i, const double *wa,
+                            long j, const double *wb, long k, const double *wc, long off,
+                            int film, double *load, double *visc, double *thick) {
+    long vars[3] = {off, off + 1, 4 + off / 2};
+    double out[3];
+    table_cell_vars(row, data, i, wa, j, wb, k, wc, vars, film ? 3 : 2, out);
+    *load = out[0];
+    *visc = out[1];
+    *thick = film ? out[2] : 0.0;
+}
+
+/* contact_table.cell_sum of one variable var on the node layout */
 static double table_cell_value(const long *row, const double *data, long i, const double *wa,
                                long j, const double *wb, long k, const double *wc, long var) {
-    long nt = row[0], npr = row[1], nu = row[2], nv = row[3];
-    double h0 = data[i + 1] - data[i];
-    double h1 = data[nt + j + 1] - data[nt + j];
-    double h2 = data[nt + npr + k + 1] - data[nt + npr + k];
-    const double *nodes = data + nt + npr + nu;
-    double total = 0.0;
-    for (int q0 = 0; q0 < 4; q0++) {
-        double w0 = wa[q0];
-        if (w0 == 0.0) continue;
-        for (int q1 = 0; q1 < 4; q1++) {
-            double w01 = w0 * wb[q1];
-            if (w01 == 0.0) continue;
-            for (int q2 = 0; q2 < 4; q2++) {
-                double w = w01 * wc[q2];
-                if (w == 0.0) continue;
-                int mask = (q0 & 1) | (q1 & 1) << 1 | (q2 & 1) << 2;
-                const double *node = nodes + ((((i + (q0 >> 1)) * npr + j + (q1 >> 1)) * nu +
-                                               k + (q2 >> 1)) * 8 + mask) * nv;
-                double cv = node[var];
-                if (q0 & 1) cv *= h0;
-                if (q1 & 1) cv *= h1;
-                if (q2 & 1) cv *= h2;
-                total += w * cv;
-            }
-        }
-    }
-    return total;
+    double out;
+    table_cell_vars(row, data, i, wa, j, wb, k, wc, &var, 1, &out);
+    return out;
 }
 
 /* contact_table.FILM_DECAY: the column of the film's decay rate */
