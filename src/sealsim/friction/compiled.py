@@ -30,8 +30,8 @@ from numba import njit
 
 from sealsim.errors import InputError
 from sealsim.friction import kernels as fk
-from sealsim.friction.contact_table import (FILM_DECAY, _ON_NODE, cell_sum, speed_cell,
-                                            table_cell)
+from sealsim.friction.contact_table import (FILM_DECAY, _ON_NODE, cell_sum, cell_sum_pair,
+                                            speed_cell, table_cell)
 
 __all__ = ["LAW_CODES", "NO_TABLE", "contact_steady", "law_parameters", "law_rates", "law_step",
            "mass_step"]
@@ -121,12 +121,12 @@ def contact_steady(par, frow, fdata, temp, dp, orient, vv, film):
         visc = cell_sum(frow, fdata, i, wa, j, wb, k, wc, direction + 1)
         if film != abs(speed):
             k, wc = _film_cell(frow, fdata, film)
-        load = cell_sum(frow, fdata, i, wa, j, wb, k, wc, direction)
+        load, decay = cell_sum_pair(frow, fdata, i, wa, j, wb, k, wc, direction, FILM_DECAY)
     else:                           # at rest: the larger load the film leaves of both directions
         k, wc = _film_cell(frow, fdata, film)
-        load = max(cell_sum(frow, fdata, i, wa, j, wb, k, wc, 0),
-                   cell_sum(frow, fdata, i, wa, j, wb, k, wc, 2))
-    decay = cell_sum(frow, fdata, i, wa, j, wb, k, wc, FILM_DECAY)
+        up, down = cell_sum_pair(frow, fdata, i, wa, j, wb, k, wc, 0, 2)
+        load = max(up, down)
+        decay = cell_sum(frow, fdata, i, wa, j, wb, k, wc, FILM_DECAY)
     circumference, mu = par[TH_CIRCUMFERENCE], par[TH_MU_B]
     return (circumference * (mu * load + visc), circumference * mu * load,
             circumference * visc, decay)

@@ -50,7 +50,8 @@ from numba import njit
 
 from sealsim.errors import InputError
 
-__all__ = ["TABLE_VARIABLES", "SteadyFrictionTable", "cell_sum", "contact_table_point",
+__all__ = ["TABLE_VARIABLES", "SteadyFrictionTable", "cell_sum", "cell_sum_pair",
+           "contact_table_point",
            "hermite_basis", "locate_on_axis", "speed_cell", "table_cell"]
 
 #: variables of the table, in the order of its last axis (see the module docstring)
@@ -126,6 +127,32 @@ def cell_sum(row, data, i, wa, j, wb, k, wc, var):
                     continue
                 total += w * data[base + ((q0 * 4 + q1) * 4 + q2) * nv]
     return total
+
+
+@njit(cache=True)
+def cell_sum_pair(row, data, i, wa, j, wb, k, wc, var_a, var_b):
+    """:func:`cell_sum` of two variables in one pass over the cell's basis terms (each sum in
+    the same order, so each the same number as its own :func:`cell_sum`)."""
+    npr, nu, nv = row[1], row[2], row[3]
+    base = row[0] + npr + nu + (((i * (npr - 1) + j) * (nu - 1) + k) * 64) * nv
+    total_a = 0.0
+    total_b = 0.0
+    for q0 in range(4):
+        w0 = wa[q0]
+        if w0 == 0.0:
+            continue
+        for q1 in range(4):
+            w01 = w0 * wb[q1]
+            if w01 == 0.0:
+                continue
+            for q2 in range(4):
+                w = w01 * wc[q2]
+                if w == 0.0:
+                    continue
+                term = base + ((q0 * 4 + q1) * 4 + q2) * nv
+                total_a += w * data[term + var_a]
+                total_b += w * data[term + var_b]
+    return total_a, total_b
 
 
 @njit(cache=True)

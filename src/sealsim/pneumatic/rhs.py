@@ -166,7 +166,8 @@ _law_rates = jit(law_rates.py_func, inline=True, _theta_contact=jit(
                        speed_cell=_speed_cell,
                        _film_cell=jit(_compiled_laws._film_cell.py_func, inline=True,
                                       speed_cell=_speed_cell),
-                       cell_sum=jit(_compiled_laws.cell_sum.py_func, inline=True))))
+                       cell_sum=jit(_compiled_laws.cell_sum.py_func, inline=True),
+                       cell_sum_pair=jit(_compiled_laws.cell_sum_pair.py_func, inline=True))))
 #: gridded contact maps, inlined into :func:`_seal_loads`
 _grid_point = jit(hermite_grid_point.py_func, inline=True)
 

@@ -141,7 +141,7 @@ void contact_steady(const long *row, const double *data, double temperature, dou
                     double oriented_speed, double film, double circumference,
                     double boundary_friction, double *steady, double *boundary,
                     double *viscous, double *decay) {
-    double a, b, wa[4], wb[4], wc[4], load, visc = 0.0, unused0, unused1;
+    double a, b, wa[4], wb[4], wc[4], load, visc = 0.0, sums[3];
     long i = table_locate(data, 0, row[0], temperature, &a);       /* one cell search */
     long j = table_locate(data, row[0], row[1], pressure, &b);
     long k;
@@ -150,22 +150,27 @@ void contact_steady(const long *row, const double *data, double temperature, dou
     if (oriented_speed != 0.0) {
         double c;
         long direction = oriented_speed > 0.0 ? 0 : 2;
+        /* the asperity load and the film's decay rate at the film's speed, the viscous
+         * friction at the sliding speed (one pass where they are the same) */
+        long vars[3] = {direction, FILM_DECAY, direction + 1};
+        int steady_film = film == fabs(oriented_speed);
         k = table_locate(data, row[0] + row[1], row[2], log10(fabs(oriented_speed)), &c);
         table_basis(c, wc);
-        table_cell_sums(row, data, i, wa, j, wb, k, wc, direction, 0, &load, &visc, &unused0);
-        if (film != fabs(oriented_speed)) {   /* the asperity load of the film's speed */
+        if (!steady_film) {
+            visc = table_cell_value(row, data, i, wa, j, wb, k, wc, direction + 1);
             k = film_cell(row, data, film, wc);
-            table_cell_sums(row, data, i, wa, j, wb, k, wc, direction, 0, &load, &unused0,
-                            &unused1);
         }
+        table_cell_vars(row, data, i, wa, j, wb, k, wc, vars, steady_film ? 3 : 2, sums);
+        load = sums[0];
+        *decay = sums[1];
+        if (steady_film) visc = sums[2];
     } else {                   /* at rest: the larger load the film leaves of both ways */
-        double up, down;
+        long vars[3] = {0, 2, FILM_DECAY};
         k = film_cell(row, data, film, wc);
-        table_cell_sums(row, data, i, wa, j, wb, k, wc, 0, 0, &up, &unused0, &unused1);
-        table_cell_sums(row, data, i, wa, j, wb, k, wc, 2, 0, &down, &unused0, &unused1);
-        load = fmax(up, down);
+        table_cell_vars(row, data, i, wa, j, wb, k, wc, vars, 3, sums);
+        load = fmax(sums[0], sums[1]);
+        *decay = sums[2];
     }
-    *decay = table_cell_value(row, data, i, wa, j, wb, k, wc, FILM_DECAY);
     *steady = circumference * (boundary_friction * load + visc);
     *boundary = circumference * boundary_friction * load;
     *viscous = circumference * visc;
