@@ -11,6 +11,7 @@ from __future__ import annotations
 import os
 import re
 import shlex
+import shutil
 from pathlib import Path
 
 import pytest
@@ -96,3 +97,46 @@ def test_documented_make_targets_exist():
         target = line.split()[1]
         assert re.search(rf"^{target}:", makefile, flags=re.MULTILINE), line
     assert os.access(REPO / ".ci" / "run", os.X_OK)
+
+
+def _run_make(folder: Path, *targets: str) -> None:
+    import subprocess
+
+    done = subprocess.run(["make", "--no-print-directory", "-C", str(folder), *targets],
+                          capture_output=True, text=True, timeout=60)
+    assert done.returncode == 0, done.stdout + done.stderr
+
+
+@pytest.mark.skipif(not shutil.which("make"), reason="needs make")
+def test_ci_installs_the_environment_once(tmp_path):
+    # .ci/run's make targets, in its order, on a copy of the Makefile whose .venv/bin/python
+    # only logs its calls: one pip install (test and docs extras), then the tests and the
+    # documentation, installing nothing again.  Before, `make test` installed .[test] and
+    # `make docs` .[test,docs] again (sealsim's wheel rebuilt, everything resolved again).
+    # Without CI, `make test` and `make docs` still install what each needs on their own.
+    for name in ("Makefile", "pyproject.toml"):
+        (tmp_path / name).write_bytes((REPO / name).read_bytes())
+    bin_folder = tmp_path / ".venv" / "bin"
+    bin_folder.mkdir(parents=True)
+    log = tmp_path / "calls.log"
+    python = bin_folder / "python"
+    python.write_text(f'#!/bin/sh\necho "$*" >> "{log}"\n')
+    python.chmod(0o755)
+    ci = (REPO / ".ci" / "run").read_text(encoding="utf-8")
+    ci_targets = [line.split()[1:] for line in ci.splitlines() if line.startswith("make ")]
+    assert ci_targets[-2:] == [["test"], ["docs"]]
+    for targets in ci_targets:
+        _run_make(tmp_path, *targets)
+    calls = log.read_text().splitlines()
+    installs = [call for call in calls if call.startswith("-m pip install")]
+    assert len(installs) == 1 and installs[0].endswith('-e .[test,docs]'), calls
+    assert calls.index(installs[0]) == 0 and any(c.startswith("-m pytest") for c in calls)
+    assert any(c.startswith("-m sphinx") for c in calls)
+    # on their own, each target installs its extras: the README's `make test`, then `make docs`
+    for stamp in (tmp_path / ".venv").glob(".sealsim*"):
+        stamp.unlink()
+    log.unlink()
+    _run_make(tmp_path, "test")
+    _run_make(tmp_path, "docs")
+    installs = [c for c in log.read_text().splitlines() if c.startswith("-m pip install")]
+    assert [i.rsplit(" ", 1)[-1] for i in installs] == [".[test]", ".[test,docs]"], installs

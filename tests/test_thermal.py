@@ -2,6 +2,7 @@
 
 import numpy as np
 import pytest
+import scipy.sparse as sp
 import scipy.sparse.linalg as spla
 from hypothesis import given, settings
 from hypothesis import strategies as st
@@ -10,8 +11,10 @@ from sealsim.thermal.conduction import (
     AxisymmetricConduction,
     BackwardEulerStepper,
     Link,
+    PatternFactoriser,
     Solid,
     ThermalNetwork,
+    factorise,
     graded_edges,
 )
 from sealsim.thermal.convection import (
@@ -136,6 +139,50 @@ def test_heat_to_fixed_nodes_is_that_through_their_links():
                                     lambda: net.assemble({"surface": 100.0},
                                                          [Link("sump", "ambient", 2.0)]))
         assert heat_out == pytest.approx(2.0 * (t1[sump] - 290.0) * dt, rel=1e-12)
+
+
+def test_a_transients_factorisations_share_the_first_ordering(monkeypatch):
+    # Every step a new matrix of the network's one pattern (another Δt and convection
+    # coefficient): SuperLU's minimum-degree ordering is computed for the first only (before:
+    # for each of the 6), and each step equals the step with a fresh factorisation of its own
+    # ordering (factorise; independent reference) within 1e-10 relative: both are the same
+    # elimination, in another column order of SuperLU's supernodes (round-off, measured 1e-15).
+    import sealsim.thermal.conduction as conduction
+
+    orderings = []
+    splu = spla.splu
+
+    def counting_splu(matrix, permc_spec=None, **options):
+        orderings.append(permc_spec != "NATURAL")
+        return splu(matrix, permc_spec=permc_spec, **options)
+    monkeypatch.setattr(conduction.spla, "splu", counting_splu)
+    net = _small_network()
+    stepper = BackwardEulerStepper(net)
+    temps = np.full(net.n, 300.0)
+    fixed = np.array([290.0])
+    source = np.zeros(net.n)
+    source[0] = 50.0
+    for step, (dt, h) in enumerate([(0.5, 100.0), (2.0, 100.0), (2.0, 300.0), (7.0, 30.0),
+                                    (0.5, 300.0), (30.0, 1000.0)]):
+        def build(h=h):
+            return net.assemble({"surface": h}, [Link("sump", "ambient", 2.0)])
+        t1, _ = stepper.step(temps, dt, source, fixed, ("h", h), build)
+        k, f = build()
+        fresh = factorise((sp.diags(net.capacity / dt) + k).tocsc())
+        expected = fresh.solve(net.capacity / dt * temps + f @ fixed + source)
+        assert np.max(np.abs(t1 - expected)) < 1e-10 * np.max(np.abs(expected)), step
+        temps = t1
+    assert stepper.factorisations == 6
+    assert sum(orderings) - 6 == 1 and stepper.orderings == 1   # 6 were the reference's
+    # a matrix of another pattern is ordered anew and solved right: no convection on the
+    # surface (h = 0), whose zero couplings the sum with C/Δt drops
+    lu = PatternFactoriser()
+    rhs = net.capacity * temps + source
+    for h in (100.0, 0.0):
+        matrix = (sp.diags(net.capacity) + net.assemble({"surface": h})[0]).tocsc()
+        assert np.max(np.abs(lu(matrix).solve(rhs) - factorise(matrix).solve(rhs))) \
+            < 1e-10 * np.max(temps)
+    assert lu.orderings == 2
 
 
 @settings(max_examples=30, deadline=None)
