@@ -348,6 +348,21 @@ _analytic_loads = jit(analytic_loads,
                           hertz_line_half_width=jit(hertz_line_half_width)))
 
 
+def _analytic_loads_of(pressure_difference, preload, modulus, cord_diameter, diameter):
+    """:func:`analytic_loads` (compiled) for any shapes of Δp, preload and modulus, always
+    called with flat float64 arrays: numba compiles a function once per combination of
+    argument types (scalar, array, read-only, 2-D ...), six of them for this one before, about
+    40 s of compiling in a cold test session; now one.  Scalars in, floats out."""
+    shape = np.broadcast_shapes(np.shape(pressure_difference), np.shape(preload),
+                                np.shape(modulus))
+    flat = [np.array(np.broadcast_to(np.asarray(x, dtype=float), shape)).reshape(-1)
+            for x in (pressure_difference, preload, modulus)]
+    force, width = _analytic_loads(*flat, float(cord_diameter), float(diameter))
+    if shape == ():
+        return float(force[0]), float(width[0])
+    return force.reshape(shape), width.reshape(shape)
+
+
 @dataclass(frozen=True)
 class AnalyticContactMap:
     """Engineering estimate of F_N and b of an O-ring seal (no FE map needed) [R].
@@ -469,14 +484,12 @@ class AnalyticContactMap:
 
     def evaluate(self, pressure_difference, temperature):
         """(F_N [N], b [m]) at Δp [Pa] and T [K] (vectorised)."""
-        if np.ndim(pressure_difference) > 0:
-            pressure_difference = np.asarray(pressure_difference, dtype=float)
         if np.ndim(temperature) == 0:     # a seal's temperature is constant during a run
             preload, modulus = self.preload_at(float(temperature))
         else:
             preload, modulus = self._preload(np.asarray(temperature, dtype=float))
-        return _analytic_loads(pressure_difference, preload, modulus, self.cord_diameter,
-                               self.sliding_diameter)
+        return _analytic_loads_of(pressure_difference, preload, modulus, self.cord_diameter,
+                                  self.sliding_diameter)
 
     @property
     def temperature_kinks(self) -> tuple[float, ...]:
@@ -496,7 +509,7 @@ class AnalyticContactMap:
         d, diameter = self.cord_diameter, self.sliding_diameter
 
         def loads(pressure_difference):
-            return _analytic_loads(pressure_difference, preload, modulus, d, diameter)
+            return _analytic_loads_of(pressure_difference, preload, modulus, d, diameter)
         return loads
 
     def describe(self) -> dict[str, Any]:
