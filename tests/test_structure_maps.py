@@ -153,6 +153,61 @@ def test_shared_installation_gives_the_paths_solved_from_the_start():
         assert np.abs(a - b).max() <= 1e-12 * np.abs(b).max()
 
 
+SMALL_MAP = {**CASE, "mesh": {"level": "coarse"},
+             "map": {**CASE["map"], "pressure": ["0 bar", "5 bar"], "temperature": ["20 degC"],
+                     "workers": 1}}
+
+
+def test_a_map_with_another_grid_reuses_the_installation(monkeypatch):
+    """A second map of the same installation (seal, gland, material, mesh, solver,
+    installation temperature, squeeze and its increments) with another pressure and
+    temperature grid starts from the model this process installed for the first map.
+    Before, the installed model was keyed by the whole case incl. the grid, and a serial
+    build kept its own: every map solved the same installation again.  The second map is the
+    map built from scratch (1e-12, as above)."""
+    from sealsim.structure import mapping
+
+    installs = []
+    real = mapping.build_model
+    monkeypatch.setattr(mapping, "build_model",
+                        lambda *args, **kw: installs.append(args[1]) or real(*args, **kw))
+    monkeypatch.setattr(mapping, "_INSTALLED", {})
+    compute_map(validate_case(StructureCase, SMALL_MAP))
+    other = validate_case(StructureCase, {**SMALL_MAP, "title": "another grid", "map": {
+        **SMALL_MAP["map"], "pressure": ["0 bar", "2 bar", "4 bar"], "temperature": ["40 degC"],
+        "pressure_increments": 2, "profile_points": 11}})
+    second = compute_map(other)
+    assert installs == [0.15]
+    monkeypatch.setattr(mapping, "_INSTALLED", {})
+    fresh = compute_map(other)
+    assert installs == [0.15, 0.15]
+    for name in ("F_N", "b", "p_max", "contact_pressure"):
+        np.testing.assert_allclose(second[name].values, fresh[name].values, rtol=1e-12, atol=0)
+    # another installation (squeeze increments) is solved, not taken from the first
+    compute_map(validate_case(StructureCase, {**SMALL_MAP, "map": {
+        **SMALL_MAP["map"], "squeeze_increments": 5}}))
+    assert installs == [0.15, 0.15, 0.15]
+
+
+def test_a_reused_installation_is_checked_for_the_new_temperatures(monkeypatch):
+    """The installed model is shared by maps of other grids, so the gland fill of each map's
+    temperatures is checked by the map itself: a 4 mm groove holds the 4 mm cord at 17 %
+    squeeze at 20 degC (fill 94.6 %) but not at 100 degC (99.0 %, thermal expansion; limit
+    97 %): refused after a 20 degC map of the same installation, before any FE path."""
+    from sealsim.structure import mapping
+
+    monkeypatch.setattr(mapping, "_INSTALLED", {})
+    tight = {**SMALL_MAP, "gland": {**SMALL_MAP["gland"], "groove_width": "4 mm"},
+             "load": {"squeeze": [0.17]}}
+    compute_map(validate_case(StructureCase, tight))
+    assert len(mapping._INSTALLED) == 1
+    hot = validate_case(StructureCase, {**tight, "map": {**tight["map"],
+                                                         "temperature": ["100 degC"]}})
+    monkeypatch.setattr(mapping, "_map_task", lambda *args: pytest.fail("FE path started"))
+    with pytest.raises(InputError, match="gland too small.*squeeze 17 %"):
+        compute_map(hot)
+
+
 KILLED_MAP = """
 import os, sys, time
 import sealsim.structure.mapping as mapping

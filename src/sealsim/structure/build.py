@@ -28,6 +28,7 @@ __all__ = [
     "build_material",
     "build_model",
     "build_section",
+    "check_loads",
     "check_rubbery",
     "check_temperatures",
     "describe_seal",
@@ -259,6 +260,19 @@ def garter_spring(case: StructureCase, assembly: SealAssembly) -> GarterSpringSp
     return GarterSpringSpec(rate, tension)
 
 
+def check_loads(case: StructureCase, assembly: SealAssembly, material, squeezes,
+                temperatures=(), field: str = "load.squeeze") -> None:
+    """InputError unless every squeeze is in range and the seal, thermally expanded at every
+    temperature [K] (default: the installation temperature), fits its gland at every squeeze."""
+    temps = list(temperatures) or [case.load.installation_temperature]
+    check_temperatures(case, temps)
+    j = max(thermal_volume_ratio(t, case.load.installation_temperature,
+                                 material.thermal_expansion) for t in temps)
+    for s in squeezes:
+        assembly.check_squeeze(s, field)
+        assembly.check_fill(s, j)
+
+
 def build_model(case: StructureCase, install_squeeze: float | None = None, *, material=None,
                 squeezes=(), temperatures=()) -> SealModel:
     """Assembly, mesh and FE model for a case (geometry checks for the given loads)."""
@@ -268,13 +282,7 @@ def build_model(case: StructureCase, install_squeeze: float | None = None, *, ma
     assembly.check_squeeze(install_squeeze, "load.squeeze")
     if material is None:
         material = build_material(case)
-    alpha = material.thermal_expansion
-    temps = list(temperatures) or [case.load.installation_temperature]
-    check_temperatures(case, temps)
-    for s in [install_squeeze, *squeezes]:
-        assembly.check_squeeze(s, "load.squeeze")
-        j = max(thermal_volume_ratio(t, case.load.installation_temperature, alpha) for t in temps)
-        assembly.check_fill(s, j)
+    check_loads(case, assembly, material, [install_squeeze, *squeezes], temperatures)
     m = case.mesh
     if isinstance(assembly.seal, ORing):
         kwargs = {k: getattr(m, k) for k in ("n_arc", "n_wall", "n_radial") if getattr(m, k)}

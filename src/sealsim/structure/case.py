@@ -337,6 +337,9 @@ class SolverSpec(CaseModel):
         "anti-rolling spring in units of G·A·2πR (0: off; the gland friction holds the "
         "section)"))
     positioning_pressure: Pressure = 1e3
+    increment_growth: bool = Field(True, description=(
+        "a cut-back increment grows back after easy increments (false: it only doubles where "
+        "the load reaches the step's nominal grid, the control before sealsim's FE model 6)"))
 
 
 class StructureCase(CaseModel):

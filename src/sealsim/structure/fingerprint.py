@@ -34,8 +34,10 @@ __all__ = ["FE_MODEL_VERSION", "model_fingerprint", "results_key"]
 #: one modulus-temperature law for FE and analytic maps; 3 = seal profiles, Coulomb friction
 #: on the groove walls by default; 4 = the radial lip's sharp edge with a refined contact band,
 #: and contact results of bonded profiles mapped to the right loop nodes; 5 = the default
-#: X-ring section has the Quad-Ring area 0.8215 W² (valley depth 0.098 W, was 0.08 W).
-FE_MODEL_VERSION = 5
+#: X-ring section has the Quad-Ring area 0.8215 W² (valley depth 0.098 W, was 0.08 W); 6 = a
+#: cut-back increment grows back after easy increments (solver.GROWTH_FACTOR): cut-back paths
+#: end on other increments.
+FE_MODEL_VERSION = 6
 
 
 @functools.lru_cache(maxsize=1)

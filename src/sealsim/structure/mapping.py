@@ -38,8 +38,8 @@ from sealsim.structure.build import (
     build_assembly,
     build_material,
     build_model,
+    check_loads,
     check_rubbery,
-    check_temperatures,
     installation_squeeze,
 )
 from sealsim.structure.case import StructureCase
@@ -65,30 +65,44 @@ def profile_positions(case: StructureCase, assembly=None) -> np.ndarray:
     return np.linspace(-half, half, n)
 
 
-#: Installed model of the last (case, squeeze) of this process (a pool worker's; the
-#: in-process map keeps its own): the installation is solved once per squeeze and process.
+#: Installed models of this process (a pool worker's, or the process of a serial map build),
+#: the last few (case, squeeze): a map solves the installation once per squeeze and process,
+#: and a later map of the same installation with another grid does not solve it again.
 _INSTALLED: dict = {}
+_INSTALLED_KEPT = 2
+
+#: Fields of ``[map]`` that only set the grid and the paths after the installation.
+_GRID_FIELDS = ("pressure", "temperature", "squeeze", "temperature_increments",
+                "pressure_increments", "workers", "profile_points")
+
+
+def _installation_key(case_data: dict, squeeze: float | None) -> str:
+    """What the installation at ``squeeze`` depends on: the whole case (seal, gland, material,
+    mesh, solver, load incl. the installation temperature, map.squeeze_increments) without
+    its title and the map's grid."""
+    data = {k: v for k, v in case_data.items() if k != "title"}
+    data["map"] = {k: v for k, v in (data.get("map") or {}).items() if k not in _GRID_FIELDS}
+    return json.dumps([data, squeeze], sort_keys=True)
 
 
 def _installed_model(case: StructureCase, case_data: dict, squeeze: float | None,
                      installed: dict):
     """A copy of the model installed to ``squeeze`` at the installation temperature (solved
-    on first use and kept in ``installed``)."""
-    key = (json.dumps(case_data, sort_keys=True), squeeze)
+    on first use and kept in ``installed``, keyed by :func:`_installation_key`: not by the
+    map's grid, whose geometry checks :func:`compute_map` makes for every temperature)."""
+    key = _installation_key(case_data, squeeze)
     if key not in installed:
         spec, sv = case.map, case.solver
         material = build_material(case, equilibrium=True)
-        # geometry checks for every temperature of the map: the model serves them all
-        model = build_model(case, squeeze, material=material,
-                            temperatures=[case.load.installation_temperature,
-                                          *spec.temperature])
+        model = build_model(case, squeeze, material=material)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", category=UserWarning)
             solve(model, [LoadStep("installation", squeeze=model.installation_squeeze,
                                    increments=spec.squeeze_increments, record="none")],
                   on_state=extract, tol=sv.tolerance, maxiter=sv.max_iterations,
-                  max_cutbacks=sv.max_cutbacks)
-        installed.clear()
+                  max_cutbacks=sv.max_cutbacks, increment_growth=sv.increment_growth)
+        while len(installed) >= _INSTALLED_KEPT:
+            installed.pop(next(iter(installed)))
         installed[key] = model
     return copy.deepcopy(installed[key])
 
@@ -109,7 +123,8 @@ def _map_task(case_data: dict, squeeze: float | None, temperature: float,
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", category=UserWarning)
         states = solve(model, steps, on_state=extract, tol=sv.tolerance,
-                       maxiter=sv.max_iterations, max_cutbacks=sv.max_cutbacks)
+                       maxiter=sv.max_iterations, max_cutbacks=sv.max_cutbacks,
+                       increment_growth=sv.increment_growth)
     seal = [s.surfaces["sealing_surface"] for s in states]
     return {
         "F_N": [s.F_N for s in states],
@@ -213,9 +228,10 @@ def compute_map(case: StructureCase, *, workers: int | None = None,
     assembly = build_assembly(case)
     squeezes = spec.squeeze or [installation_squeeze(case, assembly)
                                 if case.load.squeeze is None else case.load.squeeze[-1]]
-    for s in squeezes:
-        assembly.check_squeeze(s, "map.squeeze")
-    check_temperatures(case, spec.temperature)
+    # every (squeeze, temperature) of the grid fits the gland (also for an installation a
+    # previous map of this process solved: _installed_model)
+    check_loads(case, assembly, build_material(case, equilibrium=True), squeezes,
+                [case.load.installation_temperature, *spec.temperature], field="map.squeeze")
     check_rubbery(case, spec.temperature)
     positions = profile_positions(case, assembly)
     tasks = [(s, t) for s in squeezes for t in spec.temperature]
@@ -258,9 +274,8 @@ def compute_map(case: StructureCase, *, workers: int | None = None,
         progress(done, len(tasks))
     n_workers = max(1, min(workers or spec.workers, len(todo)))
     if n_workers == 1:
-        installed: dict = {}
         for key in todo:
-            finished(key, _map_task(data, *key, positions, installed))
+            finished(key, _map_task(data, *key, positions))
     else:
         with cf.ProcessPoolExecutor(max_workers=n_workers,
                                     initializer=_end_with_parent) as pool:

@@ -61,7 +61,7 @@ def run_case(case: StructureCase, progress=None) -> RunResult:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", category=UserWarning)
         solve(model, steps, on_state=record, tol=sv.tolerance, maxiter=sv.max_iterations,
-              max_cutbacks=sv.max_cutbacks)
+              max_cutbacks=sv.max_cutbacks, increment_growth=sv.increment_growth)
     return RunResult(states, model.ndofs, time.perf_counter() - t0, model)
 
 
