@@ -317,7 +317,7 @@ def test_the_film_forms_over_the_contact_width(table):
     assert 1.0 - np.exp(-1.0) < sol.y[1, -1] / v < 1.0 - np.exp(-1.0 - most)
 
 
-def test_at_rest_the_film_thins_at_reynolds_squeeze_rate():
+def test_at_rest_the_film_thins_at_reynolds_squeeze_rate(table):
     # Stopped from a full film of 0.1 m/s, the film state falls as the seal squeezes the film
     # out.  Independent reference: the film h*(φ(t)) that reciprocating_friction gives at the
     # law's φ(t) must thin as Reynolds' squeeze film under the load the fluid carries,
@@ -329,7 +329,6 @@ def test_at_rest_the_film_thins_at_reynolds_squeeze_rate():
 
     from sealsim.tribology.squeeze_film import squeeze_resistance, squeeze_thinning_rate
 
-    table = build_friction_table(ROD, TRIBOLOGY)
     law = Theta.from_parameter_set("seal_contact")
     inputs = inputs_for(table, dp=0.0)
     sol = solve_ivp(lambda t, z: law.derivatives(z[:, None], [0.0], inputs)[:, 0],
