@@ -359,8 +359,7 @@ def test_break_away_rises_with_the_dwell_as_the_film_drains(table):
     # After sliding at 0.1 m/s the seal stops: its break-away force rises from the film's
     # (almost nothing) towards the long-dwell one as the film drains -- fast at first (a thick
     # film squeezes out quickly), then ever slower (a film at the roughness carries little of
-    # the load): the nearly logarithmic rise with the dwell time that seals show (Reynolds'
-    # φ(t) = φ0/(1 + κ0·t) in full film).  The Θ law's former film decay, e^(−t/τ) with
+    # the load): Reynolds' φ(t) = φ0/(1 + κ0·t) in full film, not one time constant.  The Θ law's former film decay, e^(−t/τ) with
     # τ = 2 s, left 0.18 N after 2 s and had no thin-film slow-down.
     law = Theta.from_parameter_set("seal_contact")
     inputs = inputs_for(table)

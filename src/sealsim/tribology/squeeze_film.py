@@ -38,8 +38,8 @@ curve; at rest it falls as the film thins,
 κ = 2·s.  With the IHL film h*² = 8·η·u/(9·w_max) and a film shape that does not change with
 the speed, s ∝ W'·h*²/(η·R·h*³) is proportional to u and independent of the viscosity (the
 same η that builds the film drains it): φ(t) = φ₀/(1 + κ(φ₀)·t) in full film, a film that
-stands for 0.1 m/s is gone to the 1 mm/s one in about 100/κ(φ₀) -- the slow, nearly
-logarithmic rise of a seal's break-away force with the dwell time.
+stands for 0.1 m/s is gone to the 1 mm/s one in about 100/κ(φ₀): the break-away force of a
+seal rises ever more slowly with the dwell time, not with one time constant.
 
 References
 ----------
