@@ -30,8 +30,8 @@ from numba import njit
 
 from sealsim.errors import InputError
 from sealsim.friction import kernels as fk
-from sealsim.friction.contact_table import (FILM_DECAY, _ON_NODE, cell_sum, cell_sum_pair,
-                                            speed_cell, table_cell)
+from sealsim.friction.contact_table import (FILM_DECAY, _film_cell, cell_sum, cell_sum_pair,
+                                            film_decay_rate, speed_cell, table_cell)
 
 __all__ = ["LAW_CODES", "NO_TABLE", "contact_steady", "law_parameters", "law_rates", "law_step",
            "mass_step"]
@@ -145,21 +145,10 @@ def film_trajectory(frow, fdata, temp, dp, speed, dt, width, film0, out):
         film = film0[col]
         out[0, col] = film
         for k in range(dt.shape[0]):
-            i, wa, j, wb = table_cell(frow, fdata, temp[k, col], dp[k, col])
-            kk, wc = _film_cell(frow, fdata, film)
-            decay = cell_sum(frow, fdata, i, wa, j, wb, kk, wc, FILM_DECAY)
+            decay = film_decay_rate(frow, fdata, temp[k, col], dp[k, col], film)
             a, c = fk.film_speed_affine(speed[k, col], dt[k], width[k, col], decay)
             film = a * film + c
             out[k + 1, col] = film
-
-
-@njit(cache=True)
-def _film_cell(frow, fdata, film):
-    """Speed cell of the film's speed φ [m/s] in a contact table; no film (φ ≤ 0 or not a
-    number): the table's slowest speed, its first node."""
-    if film > 0.0:
-        return speed_cell(frow, fdata, film)
-    return 0, _ON_NODE
 
 
 @njit(cache=True)
@@ -278,8 +267,7 @@ def law_step(law, par, z0, v, dt, contact, frow, fdata, z1):
         if par[TH_CONTACT] > 0.0:               # the film's speed (the law's last state)
             last = 2 if par[7] > 0.0 else 1
             # the film's decay rate frozen at the step's start
-            decay = contact_steady(par, frow, fdata, contact[K_TEMP], contact[K_DP],
-                                   contact[K_ORIENT], v, z0[last])[3]
+            decay = film_decay_rate(frow, fdata, contact[K_TEMP], contact[K_DP], z0[last])
             a, b = fk.film_speed_affine(v, dt, contact[K_WIDTH], decay)
             z1[last] = a * z0[last] + b
             film_mid = 0.5 * (z0[last] + z1[last])

@@ -51,7 +51,7 @@ from numba import njit
 from sealsim.errors import InputError
 
 __all__ = ["TABLE_VARIABLES", "SteadyFrictionTable", "cell_sum", "cell_sum_pair",
-           "contact_table_point",
+           "contact_table_point", "film_decay_rate",
            "hermite_basis", "locate_on_axis", "speed_cell", "table_cell"]
 
 #: variables of the table, in the order of its last axis (see the module docstring)
@@ -185,12 +185,28 @@ def _table_many(row, data, temperature, pressure, speed, load, visc, film):
 
 
 @njit(cache=True)
-def _decay_many(row, data, temperature, pressure, speed, out):
-    """The film's decay rate κ [1/s] at the film's speed |speed| (clamped to the axes)."""
-    for n in range(speed.shape[0]):
-        i, wa, j, wb = table_cell(row, data, temperature[n], pressure[n])
-        k, wc = speed_cell(row, data, speed[n])
-        out[n] = cell_sum(row, data, i, wa, j, wb, k, wc, FILM_DECAY)
+def _film_cell(row, data, film):
+    """Speed cell of the film's speed φ [m/s] in a contact table; no film (φ ≤ 0 or not a
+    number): the table's slowest speed, its first node."""
+    if film > 0.0:
+        return speed_cell(row, data, film)
+    return 0, _ON_NODE
+
+
+@njit(cache=True)
+def film_decay_rate(row, data, temperature, pressure, film):
+    """The film's decay rate κ [1/s] at rest of the film formed for the speed ``film`` = φ
+    [m/s] at (T [K], Δp [Pa]), the table clamped to its axes (no film, φ ≤ 0: the slowest
+    speed).  The C port is ``film_decay_rate`` of ``sealsim/fmu/c/contact_table.c``."""
+    i, wa, j, wb = table_cell(row, data, temperature, pressure)
+    k, wc = _film_cell(row, data, film)
+    return cell_sum(row, data, i, wa, j, wb, k, wc, FILM_DECAY)
+
+
+@njit(cache=True)
+def _decay_many(row, data, temperature, pressure, film, out):
+    for n in range(film.shape[0]):
+        out[n] = film_decay_rate(row, data, temperature[n], pressure[n], film[n])
 
 
 def _flat_conditions(speed, pressure, temperature):
@@ -298,8 +314,9 @@ class SteadyFrictionTable:
         return tuple(out)
 
     def film_decay(self, speed, pressure, temperature):
-        """Decay rate κ [1/s] at rest of the film formed for the speed |speed| [m/s] (> 0) at
-        pressure differences [Pa] and temperatures [K] (broadcast; clamped to the axes)."""
+        """Decay rate κ [1/s] at rest of the film formed for the speed ``speed`` [m/s] at
+        pressure differences [Pa] and temperatures [K] (broadcast; clamped to the axes; no
+        film, speed ≤ 0: the slowest speed) -- :func:`film_decay_rate`."""
         u, p, t = _flat_conditions(speed, pressure, temperature)
         out = np.empty(u.shape)
         _decay_many(*self.tables(), t.reshape(-1), p.reshape(-1), u.reshape(-1),

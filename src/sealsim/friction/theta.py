@@ -723,10 +723,8 @@ class Theta(FrictionLaw):
         both stroke directions' films, so independent of the sign of v); φ below the table's
         slowest speed (or no film): that speed."""
         table, temperature, dp = self._table_conditions(inputs)
-        formed = np.asarray(film, dtype=float)
-        formed = np.where(formed > table.speed[0], formed, table.speed[0])
-        return np.broadcast_to(table.film_decay(formed, dp, temperature),
-                               np.broadcast_shapes(np.shape(v), formed.shape)).copy()
+        return np.broadcast_to(table.film_decay(film, dp, temperature),
+                               np.broadcast_shapes(np.shape(v), np.shape(film))).copy()
 
     def level(self, theta, inputs: ContactInputs, v=None, film=None):
         """Friction level [N] without the sign: the break-away force at rest.

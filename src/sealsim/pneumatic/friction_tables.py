@@ -331,6 +331,7 @@ def build_friction_table(contact_map, tribology: ContactTribology,
                                                 speeds / tribology.asperity_wavelength))
         for j in range(pressures.size):
             z, p = profile(i, j)
+            decays = []                  # the film's decay rate of each direction's film
             for k, direction in enumerate((1, -1)):
                 if k == 1 and analytic and pressures[j] <= 0.0:    # symmetric: one film
                     values[i, j, :, 2:4] = values[i, j, :, 0:2]
@@ -342,11 +343,8 @@ def build_friction_table(contact_map, tribology: ContactTribology,
                 values[i, j, :, 2 * k] = r.boundary          # μ_b = 1: the asperity load
                 values[i, j, :, 2 * k + 1] = r.viscous
                 values[i, j, :, 4 + k] = np.where(np.isfinite(r.film), r.film, 0.0)
-                # the film's decay rate: the mean of both directions (one pass: the same)
-                values[i, j, :, FILM_DECAY] += 0.5 * film_speed_decay_rate(speeds, r.film,
-                                                                           r.squeeze)
-            if analytic and pressures[j] <= 0.0:
-                values[i, j, :, FILM_DECAY] *= 2.0
+                decays.append(film_speed_decay_rate(speeds, r.film, r.squeeze))
+            values[i, j, :, FILM_DECAY] = np.mean(decays, axis=0)     # one rate both ways
     attrs = {"tribology": asdict(tribology), "table_version": TABLE_VERSION,
              "contact_map": contact_map.describe()}
     return SteadyFrictionTable(temps, pressures, speeds, values, attrs)

@@ -124,7 +124,7 @@ void contact_table_point(const long *row, const double *data, double temperature
 }
 
 /* the speed cell of the film's speed film [m/s]; no film (film <= 0 or not a number): the
- * table's slowest speed, its first node (compiled._film_cell) */
+ * table's slowest speed, its first node (contact_table._film_cell) */
 static long film_cell(const long *row, const double *data, double film, double *wc) {
     if (film > 0.0) {
         double c;
